@@ -1,0 +1,40 @@
+/* Builds a version-1 pack from a model: per-patch boxes and derivative bounds,
+ * adjacency of patches that share a boundary curve, the section table with
+ * checksums; writes it to memory or, atomically, to a file. Host only. */
+#ifndef SW_PACK_WRITE_H
+#define SW_PACK_WRITE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sw_model.h"
+#include "sw_pack.h"
+
+/* The flat arrays of a pack, as the writer lays them out. Tests build these
+ * by hand to make packs with chosen faults. */
+typedef struct sw_pack_contents {
+    sw_pack_meta meta;                  /* counts must match the arrays */
+    const sw_pack_part *parts;
+    const sw_pack_patch *patches;
+    const float *control;               /* 4 floats per point */
+    const sw_pack_adjacency *adjacency;
+} sw_pack_contents;
+
+/* Serialises contents exactly as given (no validation, so tests can write
+ * broken packs): header, section table, sections 64-byte aligned, checksums.
+ * *out is malloc'd; the caller frees it. */
+sw_status sw_pack_serialize(const sw_pack_contents *contents, uint8_t **out, size_t *out_size,
+                            sw_error *err);
+
+/* Converts a model to contents: float control points, boxes, derivative bounds
+ * (sw_bezier_second_deriv_bounds), adjacency by matching boundary control rows
+ * within tolerance. Arrays are malloc'd; release with sw_pack_contents_free. */
+sw_status sw_pack_contents_from_model(const sw_model *model, sw_pack_contents *out,
+                                      sw_error *err);
+void sw_pack_contents_free(sw_pack_contents *contents);
+
+/* Writes bytes to path through path.tmp-XXXXXX and rename, so an existing good
+ * file is never left half-written. */
+sw_status sw_write_file_atomic(const char *path, const uint8_t *bytes, size_t size, sw_error *err);
+
+#endif

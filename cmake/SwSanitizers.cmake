@@ -1,0 +1,13 @@
+# Sanitizer builds apply to every target in the tree, libraries included, so a
+# report can point into any layer.
+if(SW_ASAN AND SW_TSAN)
+  message(FATAL_ERROR "SW_ASAN and SW_TSAN cannot be combined")
+endif()
+if(SW_ASAN)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+if(SW_TSAN)
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()

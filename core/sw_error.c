@@ -1,0 +1,50 @@
+#include "sw_error.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+sw_status sw_error_set(sw_error *err, sw_status status, const char *fmt, ...)
+{
+    if (!err)
+        return status;
+    err->status = status;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err->message, sizeof err->message, fmt, ap);
+    va_end(ap);
+    return status;
+}
+
+void sw_error_prefix(sw_error *err, const char *fmt, ...)
+{
+    if (!err)
+        return;
+    char prefix[SW_ERROR_MESSAGE_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(prefix, sizeof prefix, fmt, ap);
+    va_end(ap);
+    /* Truncation is fine: the message stays one readable line either way. */
+    char joined[2 * SW_ERROR_MESSAGE_MAX + 2];
+    snprintf(joined, sizeof joined, "%s: %s", prefix, err->message);
+    memcpy(err->message, joined, sizeof err->message - 1);
+    err->message[sizeof err->message - 1] = '\0';
+}
+
+const char *sw_status_name(sw_status status)
+{
+    switch (status) {
+    case SW_OK: return "ok";
+    case SW_ERR_ARG: return "invalid argument";
+    case SW_ERR_IO: return "i/o error";
+    case SW_ERR_FORMAT: return "format error";
+    case SW_ERR_VERSION: return "unsupported version";
+    case SW_ERR_CHECKSUM: return "checksum mismatch";
+    case SW_ERR_RANGE: return "out of range";
+    case SW_ERR_NO_MEMORY: return "out of memory";
+    case SW_ERR_UNSUPPORTED: return "unsupported";
+    case SW_ERR_GL: return "graphics error";
+    }
+    return "unknown status";
+}

@@ -1,0 +1,130 @@
+/* The pack: seamwalk's preprocessed model file, version 1, and its reader.
+ * Written by seamwalk-pack on the host (assets/pack_write.c), read here by the
+ * runtime and the host tools. The format is specified in assets/PACK_FORMAT.md;
+ * the structs below are its on-disk records (little-endian, no padding; the
+ * _Static_asserts in sw_pack_read.c pin every size and offset).
+ *
+ * A pack is untrusted input: sw_pack_open_memory checks the header, the section
+ * table, every checksum, every count and every index once, so code that walks
+ * a validated sw_pack needs no further checks. */
+#ifndef SW_PACK_H
+#define SW_PACK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sw_arena.h"
+#include "sw_error.h"
+
+#define SW_PACK_MAGIC "SWPACK\r\n"        /* 8 bytes, no terminator in the file */
+#define SW_PACK_VERSION 1u
+#define SW_PACK_BYTE_ORDER_MARK 0x01020304u /* reads 0x04030201 on a big-endian host */
+#define SW_PACK_ALIGN 64u                  /* every section offset is a multiple */
+#define SW_PACK_MAX_SECTIONS 256u
+
+enum sw_section_type {
+    SW_SECTION_META = 1,      /* one sw_pack_meta */
+    SW_SECTION_PARTS = 2,     /* sw_pack_part[part_count] */
+    SW_SECTION_PATCHES = 3,   /* sw_pack_patch[patch_count] */
+    SW_SECTION_CONTROL = 4,   /* float[4 * control_count]: x, y, z, w per point */
+    SW_SECTION_ADJACENCY = 5, /* sw_pack_adjacency[adjacency_count] */
+};
+
+typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
+    char magic[8];                    /* SW_PACK_MAGIC */
+    uint32_t version;                 /* SW_PACK_VERSION */
+    uint32_t byte_order;              /* SW_PACK_BYTE_ORDER_MARK */
+    uint64_t total_size;              /* bytes in the file */
+    uint64_t runtime_bytes;           /* arena bytes the runtime needs for this pack */
+    uint32_t section_count;           /* 1..SW_PACK_MAX_SECTIONS */
+    uint32_t section_table_offset;    /* 64: the table follows the header */
+    uint64_t header_checksum;         /* XXH3-64 of header (this field 0) + section table */
+    uint8_t reserved[16];             /* zero */
+} sw_pack_header;
+
+typedef struct sw_pack_section {      /* 32 bytes */
+    uint32_t type;                    /* enum sw_section_type; unknown types are skipped */
+    uint32_t flags;                   /* zero in version 1 */
+    uint64_t offset;                  /* from the file start, multiple of SW_PACK_ALIGN */
+    uint64_t size;                    /* bytes */
+    uint64_t checksum;                /* XXH3-64 of the section's bytes */
+} sw_pack_section;
+
+enum sw_pack_units { SW_UNITS_UNSPECIFIED = 0, SW_UNITS_MILLIMETRE = 1, SW_UNITS_METRE = 2 };
+
+typedef struct sw_pack_meta {         /* 64 bytes */
+    uint32_t part_count;
+    uint32_t patch_count;
+    uint32_t control_count;
+    uint32_t adjacency_count;
+    float box_min[3], box_max[3];     /* of all patches */
+    uint32_t units;                   /* enum sw_pack_units */
+    float model_tolerance;            /* from the source file, 0 if unknown */
+    uint8_t reserved[16];
+} sw_pack_meta;
+
+typedef struct sw_pack_part {         /* 80 bytes */
+    uint32_t first_patch;
+    uint32_t patch_count;
+    float color[4];                   /* linear RGBA, each in [0, 1] */
+    char name[56];                    /* NUL-terminated UTF-8 */
+} sw_pack_part;
+
+enum { SW_PATCH_RATIONAL = 1u };
+
+typedef struct sw_pack_patch {        /* 48 bytes */
+    uint32_t first_control;           /* index into CONTROL, in points */
+    uint8_t degree_u, degree_v;       /* 1..15 */
+    uint16_t flags;                   /* SW_PATCH_* */
+    uint32_t part;                    /* index into PARTS */
+    float box_min[3], box_max[3];     /* control-hull box */
+    float d2_bound[3];                /* bounds of |F_uu|, |F_uv|, |F_vv| (sw_deriv_bounds) */
+} sw_pack_patch;
+
+enum sw_patch_edge { SW_EDGE_V0 = 0, SW_EDGE_U1 = 1, SW_EDGE_V1 = 2, SW_EDGE_U0 = 3 };
+
+typedef struct sw_pack_adjacency {    /* 12 bytes: two patches share a boundary curve */
+    uint32_t patch_a, patch_b;
+    uint8_t edge_a, edge_b;           /* enum sw_patch_edge */
+    uint8_t reversed;                 /* 1: b's edge runs against a's */
+    uint8_t reserved;
+} sw_pack_adjacency;
+
+/* Arena bytes the runtime keeps per patch beyond the pack itself (tessellation
+ * level, visibility); the runtime asserts its per-patch state fits. */
+#define SW_RUNTIME_BYTES_PER_PATCH 16u
+
+/* A validated pack: typed views into the caller's bytes (not copied). */
+typedef struct sw_pack {
+    const uint8_t *data;
+    size_t size;
+    const sw_pack_header *header;
+    const sw_pack_section *sections;   /* header->section_count entries */
+    const sw_pack_meta *meta;
+    const sw_pack_part *parts;         /* meta->part_count */
+    const sw_pack_patch *patches;      /* meta->patch_count */
+    const float *control;              /* 4 * meta->control_count */
+    const sw_pack_adjacency *adjacency;/* meta->adjacency_count */
+} sw_pack;
+
+/* runtime_bytes for a pack of total_size bytes and patch_count patches: the
+ * pack itself, 64-byte aligned, plus the per-patch state. Writer and reader
+ * both use it. */
+uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count);
+
+/* Validates everything and fills out. data must be 8-byte aligned and stay
+ * alive as long as out is used. On failure err names the section or field. */
+sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_error *err);
+
+/* Reads and checks only the 64-byte header of the file at path (magic,
+ * version, byte order, total size against the file's size), for sizing the
+ * arena before sw_pack_load. */
+sw_status sw_pack_read_header(const char *path, sw_pack_header *out, sw_error *err);
+
+/* Reads the whole file into the arena (64-byte aligned) and validates it.
+ * Errors are prefixed with the path. */
+sw_status sw_pack_load(const char *path, sw_arena *arena, sw_pack *out, sw_error *err);
+
+const char *sw_section_type_name(uint32_t type); /* "META", ... or "unknown" */
+
+#endif

@@ -1,0 +1,42 @@
+/* The GLES2 renderer: one shader program with per-fragment lighting (a
+ * headlight plus a key light, two-sided so soups of patches with mixed
+ * orientation still shade), depth test, 16-bit indices, streaming vertex and
+ * index buffers. No VAOs, no extensions. Only the GL thread calls it. */
+#ifndef SW_RENDERER_H
+#define SW_RENDERER_H
+
+#include <stdint.h>
+
+#include "sw_error.h"
+#include "sw_tess.h"
+
+typedef struct sw_renderer {
+    unsigned int program;
+    int u_model_view, u_projection, u_color;
+    int a_position, a_normal;
+    unsigned int vertex_buffer, index_buffer;
+    uint32_t max_vertices, max_indices;
+    uint64_t draw_calls, triangles;   /* since init, for the stats */
+} sw_renderer;
+
+/* Compiles the program and creates buffers for batches of up to max_vertices
+ * (<= 65536) vertices and max_indices indices. */
+sw_status sw_renderer_init(sw_renderer *r, uint32_t max_vertices, uint32_t max_indices,
+                           sw_error *err);
+void sw_renderer_destroy(sw_renderer *r);
+
+/* Sets viewport, clears colour and depth, loads the camera matrices
+ * (column-major float, as sw_mat4_to_float writes them). */
+void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float clear_rgba[4],
+                             const float model_view[16], const float projection[16]);
+void sw_renderer_set_color(sw_renderer *r, const float rgba[4]);
+
+/* Uploads one batch (buffer orphaning, then glBufferSubData) and draws it as
+ * GL_TRIANGLES. vertex_count <= max_vertices, index_count <= max_indices. */
+void sw_renderer_draw(sw_renderer *r, const sw_vertex *verts, uint32_t vertex_count,
+                      const uint16_t *indices, uint32_t index_count);
+
+/* Waits for the GL to finish (glFinish), so frame times include the rendering. */
+void sw_renderer_finish(sw_renderer *r);
+
+#endif
