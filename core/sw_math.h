@@ -4,6 +4,8 @@
 #ifndef SW_MATH_H
 #define SW_MATH_H
 
+#define SW_PI 3.14159265358979323846
+
 typedef struct sw_vec3 { double x, y, z; } sw_vec3;
 typedef struct sw_vec4 { double x, y, z, w; } sw_vec4;
 
