@@ -1,0 +1,448 @@
+/* The pack container: header, section table, section bounds and checksums,
+ * and loading a file into the arena. The records inside the sections are
+ * checked by sw_pack_validate.c. Format: assets/PACK_FORMAT.md. */
+#include "sw_pack.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#define XXH_STATIC_LINKING_ONLY /* XXH3_state_t on the stack: no malloc here */
+#include <xxhash.h>
+
+#include "sw_pack_validate.h"
+
+/* The records are read in place, so their layout is the format. */
+#define SW_PIN(type, field, off) _Static_assert(offsetof(type, field) == (off), #type "." #field)
+_Static_assert(sizeof(sw_pack_header) == 64, "sw_pack_header");
+SW_PIN(sw_pack_header, magic, 0);
+SW_PIN(sw_pack_header, version, 8);
+SW_PIN(sw_pack_header, byte_order, 12);
+SW_PIN(sw_pack_header, total_size, 16);
+SW_PIN(sw_pack_header, runtime_bytes, 24);
+SW_PIN(sw_pack_header, section_count, 32);
+SW_PIN(sw_pack_header, section_table_offset, 36);
+SW_PIN(sw_pack_header, header_checksum, 40);
+SW_PIN(sw_pack_header, reserved, 48);
+_Static_assert(sizeof(sw_pack_section) == 32, "sw_pack_section");
+SW_PIN(sw_pack_section, type, 0);
+SW_PIN(sw_pack_section, flags, 4);
+SW_PIN(sw_pack_section, offset, 8);
+SW_PIN(sw_pack_section, size, 16);
+SW_PIN(sw_pack_section, checksum, 24);
+_Static_assert(sizeof(sw_pack_meta) == 64, "sw_pack_meta");
+SW_PIN(sw_pack_meta, part_count, 0);
+SW_PIN(sw_pack_meta, patch_count, 4);
+SW_PIN(sw_pack_meta, control_count, 8);
+SW_PIN(sw_pack_meta, adjacency_count, 12);
+SW_PIN(sw_pack_meta, box_min, 16);
+SW_PIN(sw_pack_meta, box_max, 28);
+SW_PIN(sw_pack_meta, units, 40);
+SW_PIN(sw_pack_meta, model_tolerance, 44);
+SW_PIN(sw_pack_meta, reserved, 48);
+_Static_assert(sizeof(sw_pack_part) == 80, "sw_pack_part");
+SW_PIN(sw_pack_part, first_patch, 0);
+SW_PIN(sw_pack_part, patch_count, 4);
+SW_PIN(sw_pack_part, color, 8);
+SW_PIN(sw_pack_part, name, 24);
+_Static_assert(sizeof(sw_pack_patch) == 48, "sw_pack_patch");
+SW_PIN(sw_pack_patch, first_control, 0);
+SW_PIN(sw_pack_patch, degree_u, 4);
+SW_PIN(sw_pack_patch, degree_v, 5);
+SW_PIN(sw_pack_patch, flags, 6);
+SW_PIN(sw_pack_patch, part, 8);
+SW_PIN(sw_pack_patch, box_min, 12);
+SW_PIN(sw_pack_patch, box_max, 24);
+SW_PIN(sw_pack_patch, d2_bound, 36);
+_Static_assert(sizeof(sw_pack_adjacency) == 12, "sw_pack_adjacency");
+SW_PIN(sw_pack_adjacency, patch_a, 0);
+SW_PIN(sw_pack_adjacency, patch_b, 4);
+SW_PIN(sw_pack_adjacency, edge_a, 8);
+SW_PIN(sw_pack_adjacency, edge_b, 9);
+SW_PIN(sw_pack_adjacency, reversed, 10);
+SW_PIN(sw_pack_adjacency, reserved, 11);
+_Static_assert(sizeof(float) == 4, "CONTROL holds IEEE binary32");
+_Static_assert(sizeof(SW_PACK_MAGIC) - 1 == 8, "magic is 8 bytes");
+
+enum { HEADER_BYTES = 64, SECTION_BYTES = 32, CONTROL_POINT_BYTES = 16 };
+
+const char *sw_section_type_name(uint32_t type)
+{
+    switch (type) {
+    case SW_SECTION_META: return "META";
+    case SW_SECTION_PARTS: return "PARTS";
+    case SW_SECTION_PATCHES: return "PATCHES";
+    case SW_SECTION_CONTROL: return "CONTROL";
+    case SW_SECTION_ADJACENCY: return "ADJACENCY";
+    }
+    return "unknown";
+}
+
+uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count)
+{
+    if (total_size > UINT64_MAX / 2)
+        return UINT64_MAX; /* no real pack; saturate instead of wrapping */
+    uint64_t pack = (total_size + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN;
+    return pack + (uint64_t)patch_count * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
+}
+
+/* The fields sw_pack_read_header and sw_pack_open_memory both check; what
+ * names the thing the size was measured on ("data" or "file"). */
+static sw_status check_header_identity(const sw_pack_header *h, uint64_t actual_size,
+                                       const char *what, sw_error *err)
+{
+    if (memcmp(h->magic, SW_PACK_MAGIC, 8) != 0)
+        return sw_error_set(err, SW_ERR_FORMAT,
+                            "header.magic: not a seamwalk pack (expected \"SWPACK\\r\\n\")");
+    if (h->byte_order != SW_PACK_BYTE_ORDER_MARK) {
+        if (h->byte_order == 0x04030201u)
+            return sw_error_set(err, SW_ERR_FORMAT,
+                                "header.byte_order: 0x04030201, the pack is little-endian and "
+                                "this host is big-endian");
+        return sw_error_set(err, SW_ERR_FORMAT, "header.byte_order: 0x%08x, expected 0x%08x",
+                            (unsigned)h->byte_order, SW_PACK_BYTE_ORDER_MARK);
+    }
+    if (h->version != SW_PACK_VERSION)
+        return sw_error_set(err, SW_ERR_VERSION, "header.version: %u, this build reads version %u",
+                            (unsigned)h->version, SW_PACK_VERSION);
+    if (h->total_size != actual_size)
+        return sw_error_set(err, SW_ERR_FORMAT,
+                            "header.total_size: %llu, but the %s is %llu bytes%s",
+                            (unsigned long long)h->total_size, what,
+                            (unsigned long long)actual_size,
+                            h->total_size > actual_size ? " (truncated)" : "");
+    return SW_OK;
+}
+
+/* XXH3-64 of the header with header_checksum read as zero, then the table. */
+static uint64_t header_checksum(const uint8_t *data, uint32_t section_count)
+{
+    sw_pack_header copy;
+    memcpy(&copy, data, sizeof copy);
+    copy.header_checksum = 0;
+    XXH3_state_t state;
+    XXH3_INITSTATE(&state);
+    XXH3_64bits_reset(&state);
+    XXH3_64bits_update(&state, &copy, sizeof copy);
+    XXH3_64bits_update(&state, data + HEADER_BYTES, (size_t)section_count * SECTION_BYTES);
+    return XXH3_64bits_digest(&state);
+}
+
+static sw_status check_header(const uint8_t *data, size_t size, sw_error *err)
+{
+    const sw_pack_header *h = (const sw_pack_header *)data;
+    sw_status s = check_header_identity(h, size, "data", err);
+    if (s != SW_OK)
+        return s;
+    if (h->section_count < 1 || h->section_count > SW_PACK_MAX_SECTIONS)
+        return sw_error_set(err, SW_ERR_FORMAT, "header.section_count: %u, expected 1..%u",
+                            (unsigned)h->section_count, SW_PACK_MAX_SECTIONS);
+    if (h->section_table_offset != HEADER_BYTES)
+        return sw_error_set(err, SW_ERR_FORMAT, "header.section_table_offset: %u, expected %d",
+                            (unsigned)h->section_table_offset, HEADER_BYTES);
+    uint64_t table_end = HEADER_BYTES + (uint64_t)h->section_count * SECTION_BYTES;
+    if (table_end > size)
+        return sw_error_set(err, SW_ERR_FORMAT,
+                            "header.section_count: %u sections end at byte %llu, past the "
+                            "end of the %zu-byte pack",
+                            (unsigned)h->section_count, (unsigned long long)table_end, size);
+    uint64_t computed = header_checksum(data, h->section_count);
+    if (computed != h->header_checksum)
+        return sw_error_set(err, SW_ERR_CHECKSUM,
+                            "header.header_checksum: mismatch (stored 0x%016llx, computed "
+                            "0x%016llx): the header or the section table is corrupt",
+                            (unsigned long long)h->header_checksum,
+                            (unsigned long long)computed);
+    for (size_t i = 0; i < sizeof h->reserved; i++)
+        if (h->reserved[i] != 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "header.reserved[%zu]: 0x%02x, expected 0",
+                                i, h->reserved[i]);
+    return SW_OK;
+}
+
+/* "section 2 (PATCHES)" or "section 7 (type 99)", for messages. */
+static const char *section_label(char *buf, size_t cap, uint32_t index, uint32_t type)
+{
+    const char *name = sw_section_type_name(type);
+    if (strcmp(name, "unknown") == 0)
+        snprintf(buf, cap, "section %u (type %u)", (unsigned)index, (unsigned)type);
+    else
+        snprintf(buf, cap, "section %u (%s)", (unsigned)index, name);
+    return buf;
+}
+
+static sw_status check_section(const uint8_t *data, size_t size, uint64_t table_end,
+                               uint32_t index, const sw_pack_section *s, sw_error *err)
+{
+    char label[48];
+    section_label(label, sizeof label, index, s->type);
+    if (s->offset % SW_PACK_ALIGN != 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: offset %llu is not a multiple of %u", label,
+                            (unsigned long long)s->offset, SW_PACK_ALIGN);
+    if (s->offset < table_end)
+        return sw_error_set(err, SW_ERR_FORMAT,
+                            "%s: offset %llu lies in the header or section table (ends at %llu)",
+                            label, (unsigned long long)s->offset, (unsigned long long)table_end);
+    if (s->offset > size || s->size > size - s->offset)
+        return sw_error_set(err, SW_ERR_FORMAT,
+                            "%s: offset %llu + size %llu exceeds the pack size %zu", label,
+                            (unsigned long long)s->offset, (unsigned long long)s->size, size);
+    if (s->flags != 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: flags 0x%x, expected 0 in version %u", label,
+                            (unsigned)s->flags, SW_PACK_VERSION);
+    uint64_t computed = XXH3_64bits(data + s->offset, (size_t)s->size);
+    if (computed != s->checksum)
+        return sw_error_set(err, SW_ERR_CHECKSUM,
+                            "%s: checksum mismatch (stored 0x%016llx, computed 0x%016llx)", label,
+                            (unsigned long long)s->checksum, (unsigned long long)computed);
+    return SW_OK;
+}
+
+/* At most 256 sections, so comparing every pair costs nothing worth sorting
+ * for. Empty sections occupy no bytes and overlap nothing. */
+static sw_status check_overlaps(const sw_pack_section *sections, uint32_t count, sw_error *err)
+{
+    for (uint32_t i = 0; i < count; i++) {
+        for (uint32_t j = i + 1; j < count; j++) {
+            const sw_pack_section *a = &sections[i], *b = &sections[j];
+            if (a->size == 0 || b->size == 0)
+                continue;
+            if (a->offset < b->offset + b->size && b->offset < a->offset + a->size) {
+                char la[48], lb[48];
+                return sw_error_set(err, SW_ERR_FORMAT, "%s: bytes %llu..%llu overlap %s",
+                                    section_label(la, sizeof la, j, b->type),
+                                    (unsigned long long)b->offset,
+                                    (unsigned long long)(b->offset + b->size - 1),
+                                    section_label(lb, sizeof lb, i, a->type));
+            }
+        }
+    }
+    return SW_OK;
+}
+
+/* Finds the known sections: required ones exactly once, ADJACENCY at most
+ * once; unknown types are left alone (they passed the bounds and checksum
+ * checks already). index[type] is the table index, or -1. */
+static sw_status find_sections(const sw_pack_section *sections, uint32_t count,
+                               int32_t index[SW_SECTION_ADJACENCY + 1], sw_error *err)
+{
+    for (uint32_t t = 0; t <= SW_SECTION_ADJACENCY; t++)
+        index[t] = -1;
+    for (uint32_t i = 0; i < count; i++) {
+        uint32_t t = sections[i].type;
+        if (t < SW_SECTION_META || t > SW_SECTION_ADJACENCY)
+            continue;
+        if (index[t] >= 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): a second %s section "
+                                "(the first is section %d)", (unsigned)i,
+                                sw_section_type_name(t), sw_section_type_name(t), (int)index[t]);
+        index[t] = (int32_t)i;
+    }
+    for (uint32_t t = SW_SECTION_META; t < SW_SECTION_ADJACENCY; t++)
+        if (index[t] < 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "section table: no %s section (required)",
+                                sw_section_type_name(t));
+    return SW_OK;
+}
+
+/* Each known section's size must be its META count times its record size. */
+static sw_status check_section_size(const sw_pack_section *sections, int32_t index,
+                                    uint32_t type, uint32_t count, uint64_t record,
+                                    const char *count_name, sw_error *err)
+{
+    uint64_t expected = (uint64_t)count * record;
+    uint64_t actual = index >= 0 ? sections[index].size : 0;
+    if (actual == expected)
+        return SW_OK;
+    if (index < 0)
+        return sw_error_set(err, SW_ERR_FORMAT,
+                            "META.%s: %u, but there is no %s section", count_name,
+                            (unsigned)count, sw_section_type_name(type));
+    return sw_error_set(err, SW_ERR_FORMAT,
+                        "section %d (%s): %llu bytes, expected META.%s %u x %llu = %llu",
+                        (int)index, sw_section_type_name(type), (unsigned long long)actual,
+                        count_name, (unsigned)count, (unsigned long long)record,
+                        (unsigned long long)expected);
+}
+
+static sw_status map_sections(const uint8_t *data, const int32_t index[], sw_pack *out,
+                              sw_error *err)
+{
+    const sw_pack_section *sec = out->sections;
+    const sw_pack_section *meta = &sec[index[SW_SECTION_META]];
+    if (meta->size != sizeof(sw_pack_meta))
+        return sw_error_set(err, SW_ERR_FORMAT, "section %d (META): %llu bytes, expected %zu",
+                            (int)index[SW_SECTION_META], (unsigned long long)meta->size,
+                            sizeof(sw_pack_meta));
+    const sw_pack_meta *m = (const sw_pack_meta *)(data + meta->offset);
+    sw_status s;
+    if ((s = check_section_size(sec, index[SW_SECTION_PARTS], SW_SECTION_PARTS, m->part_count,
+                                sizeof(sw_pack_part), "part_count", err)) != SW_OK ||
+        (s = check_section_size(sec, index[SW_SECTION_PATCHES], SW_SECTION_PATCHES,
+                                m->patch_count, sizeof(sw_pack_patch), "patch_count",
+                                err)) != SW_OK ||
+        (s = check_section_size(sec, index[SW_SECTION_CONTROL], SW_SECTION_CONTROL,
+                                m->control_count, CONTROL_POINT_BYTES, "control_count",
+                                err)) != SW_OK ||
+        (s = check_section_size(sec, index[SW_SECTION_ADJACENCY], SW_SECTION_ADJACENCY,
+                                m->adjacency_count, sizeof(sw_pack_adjacency),
+                                "adjacency_count", err)) != SW_OK)
+        return s;
+    out->meta = m;
+    out->parts = (const sw_pack_part *)(data + sec[index[SW_SECTION_PARTS]].offset);
+    out->patches = (const sw_pack_patch *)(data + sec[index[SW_SECTION_PATCHES]].offset);
+    out->control = (const float *)(data + sec[index[SW_SECTION_CONTROL]].offset);
+    out->adjacency = index[SW_SECTION_ADJACENCY] >= 0
+                         ? (const sw_pack_adjacency *)(data +
+                                                       sec[index[SW_SECTION_ADJACENCY]].offset)
+                         : NULL;
+    return SW_OK;
+}
+
+static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
+{
+    uint64_t expected = sw_pack_runtime_bytes(pack->header->total_size, pack->meta->patch_count);
+    if (pack->header->runtime_bytes != expected)
+        return sw_error_set(err, SW_ERR_FORMAT,
+                            "header.runtime_bytes: %llu, expected %llu for %llu bytes and %u "
+                            "patches", (unsigned long long)pack->header->runtime_bytes,
+                            (unsigned long long)expected,
+                            (unsigned long long)pack->header->total_size,
+                            (unsigned)pack->meta->patch_count);
+    return SW_OK;
+}
+
+sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_error *err)
+{
+    if (!out)
+        return sw_error_set(err, SW_ERR_ARG, "sw_pack_open_memory: out is NULL");
+    memset(out, 0, sizeof *out);
+    if (size < HEADER_BYTES || !data)
+        return sw_error_set(err, SW_ERR_FORMAT, "header: %zu bytes, a pack is at least %d",
+                            data ? size : 0, HEADER_BYTES);
+    if ((uintptr_t)data % 8 != 0)
+        return sw_error_set(err, SW_ERR_ARG, "sw_pack_open_memory: data at %p is not 8-byte "
+                            "aligned", data);
+    const uint8_t *bytes = data;
+    sw_status s = check_header(bytes, size, err);
+    if (s != SW_OK)
+        return s;
+    const sw_pack_header *h = data;
+    const sw_pack_section *sections = (const sw_pack_section *)(bytes + HEADER_BYTES);
+    uint64_t table_end = HEADER_BYTES + (uint64_t)h->section_count * SECTION_BYTES;
+    for (uint32_t i = 0; i < h->section_count; i++)
+        if ((s = check_section(bytes, size, table_end, i, &sections[i], err)) != SW_OK)
+            return s;
+    if ((s = check_overlaps(sections, h->section_count, err)) != SW_OK)
+        return s;
+    int32_t index[SW_SECTION_ADJACENCY + 1];
+    if ((s = find_sections(sections, h->section_count, index, err)) != SW_OK)
+        return s;
+    sw_pack pack = { .data = bytes, .size = size, .header = h, .sections = sections };
+    if ((s = map_sections(bytes, index, &pack, err)) != SW_OK ||
+        (s = check_runtime_bytes(&pack, err)) != SW_OK ||
+        (s = sw_pack_validate_records(&pack, err)) != SW_OK)
+        return s;
+    *out = pack;
+    return SW_OK;
+}
+
+/* read(2) until n bytes arrived; a short file is an error, not a retry. */
+static sw_status read_exactly(int fd, void *buf, size_t n, sw_error *err)
+{
+    size_t got = 0;
+    while (got < n) {
+        ssize_t r = read(fd, (uint8_t *)buf + got, n - got);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r < 0)
+            return sw_error_set(err, SW_ERR_IO, "read failed after %zu of %zu bytes: %s", got, n,
+                                strerror(errno));
+        if (r == 0)
+            return sw_error_set(err, SW_ERR_IO, "file ended after %zu of %zu bytes", got, n);
+        got += (size_t)r;
+    }
+    return SW_OK;
+}
+
+/* Opens path read-only and returns its size; a directory or device is refused
+ * because its size says nothing about its contents. */
+static sw_status open_regular(const char *path, int *fd_out, uint64_t *size, sw_error *err)
+{
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return sw_error_set(err, SW_ERR_IO, "cannot open: %s", strerror(errno));
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        return sw_error_set(err, SW_ERR_IO, "not a regular file");
+    }
+    *fd_out = fd;
+    *size = (uint64_t)st.st_size;
+    return SW_OK;
+}
+
+static sw_status read_header_fd(int fd, uint64_t file_size, sw_pack_header *out, sw_error *err)
+{
+    if (file_size < HEADER_BYTES)
+        return sw_error_set(err, SW_ERR_FORMAT, "header: the file is %llu bytes, a pack is at "
+                            "least %d", (unsigned long long)file_size, HEADER_BYTES);
+    sw_status s = read_exactly(fd, out, sizeof *out, err);
+    if (s != SW_OK)
+        return s;
+    return check_header_identity(out, file_size, "file", err);
+}
+
+sw_status sw_pack_read_header(const char *path, sw_pack_header *out, sw_error *err)
+{
+    uint64_t file_size = 0;
+    int fd = -1;
+    sw_status s = open_regular(path, &fd, &file_size, err);
+    if (s != SW_OK) {
+        sw_error_prefix(err, "%s", path);
+        return s;
+    }
+    s = read_header_fd(fd, file_size, out, err);
+    close(fd);
+    if (s != SW_OK)
+        sw_error_prefix(err, "%s", path);
+    return s;
+}
+
+static sw_status load_fd(int fd, uint64_t file_size, sw_arena *arena, sw_pack *out,
+                         sw_error *err)
+{
+    uint8_t *buf = file_size <= SIZE_MAX ? sw_arena_alloc(arena, (size_t)file_size, 64) : NULL;
+    if (!buf)
+        return sw_error_set(err, SW_ERR_NO_MEMORY,
+                            "the pack is %llu bytes, the arena has %zu of %zu bytes free",
+                            (unsigned long long)file_size, arena->size - arena->used,
+                            arena->size);
+    sw_status s = read_exactly(fd, buf, (size_t)file_size, err);
+    if (s != SW_OK)
+        return s;
+    return sw_pack_open_memory(buf, (size_t)file_size, out, err);
+}
+
+sw_status sw_pack_load(const char *path, sw_arena *arena, sw_pack *out, sw_error *err)
+{
+    uint64_t file_size = 0;
+    int fd = -1;
+    sw_status s = open_regular(path, &fd, &file_size, err);
+    if (s != SW_OK) {
+        sw_error_prefix(err, "%s", path);
+        return s;
+    }
+    /* A failed load gives its bytes back, so the caller can try another pack. */
+    size_t mark = sw_arena_mark(arena);
+    s = load_fd(fd, file_size, arena, out, err);
+    close(fd);
+    if (s != SW_OK) {
+        sw_arena_reset_to(arena, mark);
+        sw_error_prefix(err, "%s", path);
+    }
+    return s;
+}

@@ -1,0 +1,224 @@
+/* The record checks of sw_pack_open_memory: every value the runtime indexes
+ * with, divides by or draws is checked here once, so the walk over a
+ * validated pack needs no checks of its own. Messages name the record and
+ * field: "PATCHES[17].first_control: ...". Rules: assets/PACK_FORMAT.md. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "sw_pack_validate.h"
+
+static const char axis_name[4] = { 'x', 'y', 'z', 'w' };
+
+/* Strict UTF-8 (no overlong forms, no surrogates, at most U+10FFFF), so a
+ * part name can go to any text renderer as it is. Returns the byte offset of
+ * the first bad sequence, or -1. */
+static int utf8_error_at(const unsigned char *s, size_t n)
+{
+    size_t i = 0;
+    while (i < n) {
+        unsigned c = s[i];
+        size_t len = c < 0x80 ? 1 : (c >= 0xC2 && c <= 0xDF) ? 2 : (c >= 0xE0 && c <= 0xEF) ? 3
+                                 : (c >= 0xF0 && c <= 0xF4) ? 4 : 0;
+        if (len == 0 || len > n - i)
+            return (int)i;
+        for (size_t k = 1; k < len; k++)
+            if ((s[i + k] & 0xC0) != 0x80)
+                return (int)i;
+        unsigned c1 = s[i + 1];
+        if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 > 0x9F) || (c == 0xF0 && c1 < 0x90) ||
+            (c == 0xF4 && c1 > 0x8F))
+            return (int)i;
+        i += len;
+    }
+    return -1;
+}
+
+static sw_status check_box(const char *rec, uint32_t i, const float *min, const float *max,
+                           int need_ordered, sw_error *err)
+{
+    for (int k = 0; k < 3; k++) {
+        if (!isfinite(min[k]) || !isfinite(max[k]))
+            return sw_error_set(err, SW_ERR_FORMAT, "%s[%u].box: %c range %g..%g is not finite",
+                                rec, (unsigned)i, axis_name[k], (double)min[k], (double)max[k]);
+        if (need_ordered && !(min[k] <= max[k]))
+            return sw_error_set(err, SW_ERR_FORMAT, "%s[%u].box: box_min.%c %g > box_max.%c %g",
+                                rec, (unsigned)i, axis_name[k], (double)min[k], axis_name[k],
+                                (double)max[k]);
+    }
+    return SW_OK;
+}
+
+static sw_status validate_meta(const sw_pack_meta *m, sw_error *err)
+{
+    for (size_t i = 0; i < sizeof m->reserved; i++)
+        if (m->reserved[i] != 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "META.reserved[%zu]: 0x%02x, expected 0", i,
+                                m->reserved[i]);
+    sw_status s = check_box("META", 0, m->box_min, m->box_max, m->patch_count > 0, err);
+    if (s != SW_OK)
+        return s;
+    if (m->units > SW_UNITS_METRE)
+        return sw_error_set(err, SW_ERR_FORMAT, "META.units: %u, expected 0..%d",
+                            (unsigned)m->units, SW_UNITS_METRE);
+    if (!isfinite(m->model_tolerance) || !(m->model_tolerance >= 0.0f))
+        return sw_error_set(err, SW_ERR_FORMAT, "META.model_tolerance: %g, expected finite >= 0",
+                            (double)m->model_tolerance);
+    return SW_OK;
+}
+
+static sw_status validate_part(const sw_pack *pack, uint32_t i, sw_error *err)
+{
+    const sw_pack_part *p = &pack->parts[i];
+    uint64_t end = (uint64_t)p->first_patch + p->patch_count;
+    if (end > pack->meta->patch_count)
+        return sw_error_set(err, SW_ERR_RANGE,
+                            "PARTS[%u].first_patch: %u + patch_count %u exceeds PATCHES count %u",
+                            (unsigned)i, (unsigned)p->first_patch, (unsigned)p->patch_count,
+                            (unsigned)pack->meta->patch_count);
+    for (int k = 0; k < 4; k++)
+        if (!(p->color[k] >= 0.0f && p->color[k] <= 1.0f))
+            return sw_error_set(err, SW_ERR_FORMAT, "PARTS[%u].color[%d]: %g, expected 0..1",
+                                (unsigned)i, k, (double)p->color[k]);
+    const char *nul = memchr(p->name, '\0', sizeof p->name);
+    if (!nul)
+        return sw_error_set(err, SW_ERR_FORMAT, "PARTS[%u].name: no NUL in its %zu bytes",
+                            (unsigned)i, sizeof p->name);
+    int bad = utf8_error_at((const unsigned char *)p->name, (size_t)(nul - p->name));
+    if (bad >= 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "PARTS[%u].name: invalid UTF-8 at byte %d",
+                            (unsigned)i, bad);
+    return SW_OK;
+}
+
+/* The fields of one patch record, before its control points are looked at. */
+static sw_status validate_patch_fields(const sw_pack *pack, uint32_t i, sw_error *err)
+{
+    const sw_pack_patch *p = &pack->patches[i];
+    const sw_pack_meta *m = pack->meta;
+    if (p->degree_u < 1 || p->degree_u > 15 || p->degree_v < 1 || p->degree_v > 15)
+        return sw_error_set(err, SW_ERR_FORMAT, "PATCHES[%u].degree: %u x %u, expected 1..15 each",
+                            (unsigned)i, p->degree_u, p->degree_v);
+    if (p->flags & ~(uint16_t)SW_PATCH_RATIONAL)
+        return sw_error_set(err, SW_ERR_FORMAT, "PATCHES[%u].flags: 0x%x has unknown bits",
+                            (unsigned)i, p->flags);
+    if (p->part >= m->part_count)
+        return sw_error_set(err, SW_ERR_RANGE, "PATCHES[%u].part: %u, but PARTS has %u entries",
+                            (unsigned)i, (unsigned)p->part, (unsigned)m->part_count);
+    const sw_pack_part *part = &pack->parts[p->part];
+    if (i < part->first_patch || i - part->first_patch >= part->patch_count)
+        return sw_error_set(err, SW_ERR_RANGE,
+                            "PATCHES[%u].part: %u, but that part holds patches [%u, %llu)",
+                            (unsigned)i, (unsigned)p->part, (unsigned)part->first_patch,
+                            (unsigned long long)part->first_patch + part->patch_count);
+    uint64_t points = (uint64_t)(p->degree_u + 1) * (p->degree_v + 1);
+    if ((uint64_t)p->first_control + points > m->control_count)
+        return sw_error_set(err, SW_ERR_RANGE,
+                            "PATCHES[%u].first_control: %u + %llu points exceeds CONTROL count %u",
+                            (unsigned)i, (unsigned)p->first_control, (unsigned long long)points,
+                            (unsigned)m->control_count);
+    sw_status s = check_box("PATCHES", i, p->box_min, p->box_max, 1, err);
+    if (s != SW_OK)
+        return s;
+    for (int k = 0; k < 3; k++) {
+        if (p->box_min[k] < m->box_min[k] || p->box_max[k] > m->box_max[k])
+            return sw_error_set(err, SW_ERR_FORMAT, "PATCHES[%u].box: %c range %g..%g is outside "
+                                "META's %g..%g", (unsigned)i, axis_name[k], (double)p->box_min[k],
+                                (double)p->box_max[k], (double)m->box_min[k],
+                                (double)m->box_max[k]);
+        if (!isfinite(p->d2_bound[k]) || !(p->d2_bound[k] >= 0.0f))
+            return sw_error_set(err, SW_ERR_FORMAT, "PATCHES[%u].d2_bound[%d]: %g, expected "
+                                "finite >= 0", (unsigned)i, k, (double)p->d2_bound[k]);
+    }
+    return SW_OK;
+}
+
+/* Weights and the box of one patch's control points (all already finite). */
+static sw_status validate_patch_control(const sw_pack *pack, uint32_t i, sw_error *err)
+{
+    const sw_pack_patch *p = &pack->patches[i];
+    uint32_t points = (uint32_t)(p->degree_u + 1) * (p->degree_v + 1);
+    int rational = (p->flags & SW_PATCH_RATIONAL) != 0;
+    for (uint32_t k = 0; k < points; k++) {
+        uint32_t index = p->first_control + k;
+        const float *c = &pack->control[(size_t)index * 4];
+        if (rational && !(c[3] > 0.0f))
+            return sw_error_set(err, SW_ERR_RANGE, "CONTROL[%u].w: %g, but rational PATCHES[%u] "
+                                "needs weights > 0", (unsigned)index, (double)c[3], (unsigned)i);
+        if (!rational && c[3] != 1.0f)
+            return sw_error_set(err, SW_ERR_FORMAT, "CONTROL[%u].w: %g, but non-rational "
+                                "PATCHES[%u] needs weight 1", (unsigned)index, (double)c[3],
+                                (unsigned)i);
+        for (int a = 0; a < 3; a++)
+            if (c[a] < p->box_min[a] || c[a] > p->box_max[a])
+                return sw_error_set(err, SW_ERR_FORMAT, "PATCHES[%u].box: control point %u "
+                                    "(CONTROL[%u]).%c = %g is outside %g..%g", (unsigned)i,
+                                    (unsigned)k, (unsigned)index, axis_name[a], (double)c[a],
+                                    (double)p->box_min[a], (double)p->box_max[a]);
+    }
+    return SW_OK;
+}
+
+static sw_status validate_control_finite(const sw_pack *pack, sw_error *err)
+{
+    size_t n = (size_t)pack->meta->control_count * 4;
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(pack->control[i]))
+            return sw_error_set(err, SW_ERR_FORMAT, "CONTROL[%zu].%c: %g, expected a finite number",
+                                i / 4, axis_name[i % 4], (double)pack->control[i]);
+    return SW_OK;
+}
+
+static sw_status validate_adjacency(const sw_pack *pack, uint32_t i, sw_error *err)
+{
+    const sw_pack_adjacency *a = &pack->adjacency[i];
+    uint32_t n = pack->meta->patch_count;
+    if (a->patch_a >= n || a->patch_b >= n)
+        return sw_error_set(err, SW_ERR_RANGE, "ADJACENCY[%u].%s: %u, but PATCHES has %u entries",
+                            (unsigned)i, a->patch_a >= n ? "patch_a" : "patch_b",
+                            (unsigned)(a->patch_a >= n ? a->patch_a : a->patch_b), (unsigned)n);
+    if (a->patch_a == a->patch_b)
+        return sw_error_set(err, SW_ERR_FORMAT, "ADJACENCY[%u].patch_b: %u, the same as patch_a",
+                            (unsigned)i, (unsigned)a->patch_b);
+    if (a->edge_a > SW_EDGE_U0 || a->edge_b > SW_EDGE_U0)
+        return sw_error_set(err, SW_ERR_RANGE, "ADJACENCY[%u].%s: %u, expected 0..3", (unsigned)i,
+                            a->edge_a > SW_EDGE_U0 ? "edge_a" : "edge_b",
+                            a->edge_a > SW_EDGE_U0 ? a->edge_a : a->edge_b);
+    if (a->reversed > 1)
+        return sw_error_set(err, SW_ERR_FORMAT, "ADJACENCY[%u].reversed: %u, expected 0 or 1",
+                            (unsigned)i, a->reversed);
+    if (a->reserved != 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "ADJACENCY[%u].reserved: %u, expected 0",
+                            (unsigned)i, a->reserved);
+    /* Seam code walks both boundary rows in step, so they must be equally long. */
+    uint32_t na = sw_pack_edge_points(&pack->patches[a->patch_a], a->edge_a);
+    uint32_t nb = sw_pack_edge_points(&pack->patches[a->patch_b], a->edge_b);
+    if (na != nb)
+        return sw_error_set(err, SW_ERR_FORMAT, "ADJACENCY[%u].edge_b: patch %u edge %u has %u "
+                            "points, patch %u edge %u has %u", (unsigned)i, (unsigned)a->patch_a,
+                            a->edge_a, (unsigned)na, (unsigned)a->patch_b, a->edge_b,
+                            (unsigned)nb);
+    return SW_OK;
+}
+
+sw_status sw_pack_validate_records(const sw_pack *pack, sw_error *err)
+{
+    const sw_pack_meta *m = pack->meta;
+    sw_status s = validate_meta(m, err);
+    if (s != SW_OK)
+        return s;
+    for (uint32_t i = 0; i < m->part_count; i++)
+        if ((s = validate_part(pack, i, err)) != SW_OK)
+            return s;
+    if ((s = validate_control_finite(pack, err)) != SW_OK)
+        return s;
+    for (uint32_t i = 0; i < m->patch_count; i++)
+        if ((s = validate_patch_fields(pack, i, err)) != SW_OK ||
+            (s = validate_patch_control(pack, i, err)) != SW_OK)
+            return s;
+    /* Patches before adjacency: edge lengths come from checked degrees. */
+    for (uint32_t i = 0; i < m->adjacency_count; i++)
+        if ((s = validate_adjacency(pack, i, err)) != SW_OK)
+            return s;
+    return SW_OK;
+}
