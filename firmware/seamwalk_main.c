@@ -1,0 +1,316 @@
+/* seamwalk: the walkthrough runtime. Sizes one arena from the pack header and
+ * the options, refuses at once if it does not fit --memory-mb, loads and
+ * validates the pack into it, then walks the camera path (or an orbit) frame
+ * by frame: select -> tessellate -> draw -> optional PNG and measurement.
+ * After start-up nothing in our code calls malloc (sw_alloc_count proves it).
+ * This build renders headless only (EGL surfaceless); device displays and
+ * input come with later work. The main thread is the GL thread. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "sw_alloc_count.h"
+#include "sw_camera_path.h"
+#include "sw_egl_headless.h"
+#include "sw_measure.h"
+#include "sw_options.h"
+#include "sw_pack.h"
+#include "sw_png.h"
+#include "sw_renderer.h"
+#include "sw_stats.h"
+#include "sw_walk.h"
+
+typedef struct runtime {
+    sw_options opt;
+    sw_arena arena;
+    void *block;
+    sw_pack pack;
+    sw_camera_path path;
+    sw_walk walk;
+    sw_measure measure;
+    sw_stats stats;
+    sw_egl_headless egl;
+    sw_renderer renderer;
+    int egl_up, renderer_up;
+    uint8_t *pixels;          /* read-back, width * height * 4, only with --png-dir */
+    size_t png_scratch;       /* bytes kept free in the arena for sw_png_write */
+    sw_box model_box;
+    double start_s;
+} runtime;
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static sw_status file_size(const char *path, size_t *size, sw_error *err)
+{
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", path, strerror(errno));
+    *size = (size_t)st.st_size;
+    return SW_OK;
+}
+
+/* Everything the walk will take from the arena, from the pack header and the
+ * options alone, so the decision to run is made before any allocation. */
+static size_t arena_bytes_needed(const runtime *rt, const sw_pack_header *h, size_t path_bytes,
+                                 size_t path_keys)
+{
+    uint32_t patches = (uint32_t)((h->runtime_bytes > h->total_size)
+                                      ? (h->runtime_bytes - h->total_size) / SW_RUNTIME_BYTES_PER_PATCH
+                                      : 0);
+    size_t bytes = (size_t)h->runtime_bytes + sw_walk_arena_bytes(patches) +
+                   sw_measure_arena_bytes() + sw_stats_arena_bytes(rt->opt.frames);
+    bytes += sw_arena_worst_case(path_bytes + 1, 8) +
+             sw_arena_worst_case(path_keys * sizeof(sw_camera_key) + 1, 8);
+    if (rt->opt.png_dir)
+        bytes += sw_arena_worst_case((size_t)rt->opt.width * rt->opt.height * 4, 64) +
+                 rt->png_scratch;
+    return bytes + 4096;
+}
+
+static sw_status read_into_arena(const char *path, sw_arena *a, char **text, size_t size,
+                                 sw_error *err)
+{
+    *text = sw_arena_alloc(a, size + 1, 8);
+    FILE *f = fopen(path, "rb");
+    size_t got = f && *text ? fread(*text, 1, size, f) : 0;
+    if (f)
+        fclose(f);
+    if (!*text || got != size)
+        return sw_error_set(err, SW_ERR_IO, "%s: cannot read %zu bytes", path, size);
+    return SW_OK;
+}
+
+static sw_status load_path(runtime *rt, size_t path_bytes, sw_error *err)
+{
+    char *text;
+    sw_status st = read_into_arena(rt->opt.path_file, &rt->arena, &text, path_bytes, err);
+    if (st != SW_OK)
+        return st;
+    size_t n = sw_camera_path_count_keys(text, path_bytes);
+    sw_camera_key *keys = sw_arena_alloc(&rt->arena, n * sizeof *keys + 1, 8);
+    if (!keys)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the camera path");
+    return sw_camera_path_parse(text, path_bytes, rt->opt.path_file, keys, n, &rt->path, err);
+}
+
+static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
+{
+    sw_pack_header h;
+    sw_status st = sw_pack_read_header(rt->opt.pack_path, &h, err);
+    if (st != SW_OK)
+        return st;
+    size_t keys = 0;
+    *path_bytes = 0;
+    if (rt->opt.path_file) {
+        if ((st = file_size(rt->opt.path_file, path_bytes, err)) != SW_OK)
+            return st;
+        keys = *path_bytes / 20 + 1; /* a key line has at least 10 numbers and 10 separators */
+    }
+    if (rt->opt.png_dir)
+        rt->png_scratch = sw_png_scratch_bytes(rt->opt.width, rt->opt.height, 3);
+    size_t need = arena_bytes_needed(rt, &h, *path_bytes, keys);
+    double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
+    if ((double)need > limit)
+        return sw_error_set(err, SW_ERR_NO_MEMORY,
+                            "needs %.1f MiB of memory (%zu bytes), more than --memory-mb %.1f",
+                            need / (1024.0 * 1024.0), need, rt->opt.memory_mb);
+    rt->block = malloc(need);
+    if (!rt->block)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the arena", need);
+    sw_arena_init(&rt->arena, rt->block, need);
+    return SW_OK;
+}
+
+static sw_box pack_box(const sw_pack *p)
+{
+    return (sw_box){ sw_v3(p->meta->box_min[0], p->meta->box_min[1], p->meta->box_min[2]),
+                     sw_v3(p->meta->box_max[0], p->meta->box_max[1], p->meta->box_max[2]) };
+}
+
+static sw_status start(runtime *rt, sw_error *err)
+{
+    size_t path_bytes;
+    sw_status st = size_arena(rt, &path_bytes, err);
+    if (st != SW_OK)
+        return st;
+    double t0 = now_s();
+    if ((st = sw_pack_load(rt->opt.pack_path, &rt->arena, &rt->pack, err)) != SW_OK)
+        return st;
+    rt->stats.pack_open_ms = (now_s() - t0) * 1000.0;
+    if (rt->pack.meta->patch_count == 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: the pack has no patches to show",
+                            rt->opt.pack_path);
+    rt->model_box = pack_box(&rt->pack);
+    if (rt->opt.path_file && (st = load_path(rt, path_bytes, err)) != SW_OK)
+        return st;
+    double pack_ms = rt->stats.pack_open_ms;
+    if ((st = sw_stats_init(&rt->stats, &rt->arena, rt->opt.frames, rt->opt.max_error_px, err)))
+        return st;
+    rt->stats.pack_open_ms = pack_ms;
+    if ((st = sw_walk_init(&rt->walk, &rt->pack, &rt->arena, rt->opt.max_error_px, err)) ||
+        (st = sw_measure_init(&rt->measure, &rt->arena, &rt->pack, err)))
+        return st;
+    if (rt->opt.png_dir) {
+        rt->pixels = sw_arena_alloc(&rt->arena, (size_t)rt->opt.width * rt->opt.height * 4, 64);
+        if (!rt->pixels)
+            return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the read-back");
+        if (mkdir(rt->opt.png_dir, 0777) != 0 && errno != EEXIST)
+            return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.png_dir, strerror(errno));
+    }
+    if ((st = sw_egl_headless_init(&rt->egl, SW_GL_API_GLES2, rt->opt.width, rt->opt.height,
+                                   err)))
+        return st;
+    rt->egl_up = 1;
+    if ((st = sw_renderer_init(&rt->renderer, SW_BATCH_VERTICES, SW_BATCH_INDICES, err)))
+        return st;
+    rt->renderer_up = 1;
+    return SW_OK;
+}
+
+static sw_camera_pose pose_at(const runtime *rt, int frame)
+{
+    double fovy = rt->opt.fov_deg * SW_PI / 180.0;
+    if (rt->opt.orbit)
+        return sw_camera_orbit(&rt->model_box, fovy, (double)rt->opt.width / rt->opt.height,
+                               (double)frame / rt->opt.frames);
+    double t0 = sw_camera_path_start(&rt->path), t1 = sw_camera_path_end(&rt->path);
+    double t = rt->opt.frames > 1 ? t0 + (t1 - t0) * frame / (rt->opt.frames - 1) : t0;
+    return sw_camera_path_at(&rt->path, t);
+}
+
+static sw_status write_png(runtime *rt, int frame, sw_error *err)
+{
+    sw_status st = sw_egl_headless_read_rgba(&rt->egl, rt->pixels, err);
+    if (st != SW_OK)
+        return st;
+    size_t n = (size_t)rt->opt.width * rt->opt.height;
+    for (size_t i = 0; i < n; i++) /* RGBA to RGB in place: the alpha is always opaque */
+        memmove(rt->pixels + i * 3, rt->pixels + i * 4, 3);
+    char name[4096];
+    snprintf(name, sizeof name, "%s/frame_%05d.png", rt->opt.png_dir, frame);
+    return sw_png_write(name, rt->opt.width, rt->opt.height, 3, rt->pixels,
+                        (size_t)rt->opt.width * 3, &rt->arena, err);
+}
+
+static sw_status run_frame(runtime *rt, int frame, sw_error *err)
+{
+    static const float background[4] = { 0.93f, 0.94f, 0.96f, 1.0f };
+    double t0 = now_s();
+    sw_camera_pose pose = pose_at(rt, frame);
+    sw_view view = sw_view_make(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
+                                rt->opt.height, &rt->model_box);
+    sw_frame_counts counts = sw_walk_select(&rt->walk, &view);
+    float mv[16], proj[16];
+    sw_mat4_to_float(&view.view, mv);
+    sw_mat4_to_float(&view.proj, proj);
+    sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv, proj);
+    sw_walk_draw(&rt->walk, &rt->renderer);
+    sw_renderer_finish(&rt->renderer);
+    double ms = (now_s() - t0) * 1000.0;
+    sw_stats_add_frame(&rt->stats, ms, (uint32_t)counts.triangles, counts.visible);
+    if (frame == 0)
+        rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0;
+    if (counts.capped > rt->stats.capped_patches_max)
+        rt->stats.capped_patches_max = counts.capped;
+    if (frame % rt->opt.measure_every == 0) {
+        sw_measure_error(&rt->measure, &rt->walk, &view, &rt->stats);
+        uint64_t cracks = sw_measure_cracks(&rt->measure, &rt->walk);
+        if (cracks > rt->stats.cracks_max)
+            rt->stats.cracks_max = cracks;
+    }
+    if (rt->opt.png_dir && frame % rt->opt.png_every == 0)
+        return write_png(rt, frame, err);
+    return SW_OK;
+}
+
+static sw_status walk(runtime *rt, sw_error *err)
+{
+    uint64_t allocs_before = sw_alloc_count_allocs();
+    double t0 = now_s();
+    for (int f = 0; f < rt->opt.frames; f++) {
+        sw_status st = run_frame(rt, f, err);
+        if (st != SW_OK)
+            return st;
+    }
+    rt->stats.walk_s = now_s() - t0;
+    rt->stats.mallocs_after_init = sw_alloc_count_active()
+                                       ? (int64_t)(sw_alloc_count_allocs() - allocs_before)
+                                       : -1;
+    return SW_OK;
+}
+
+static sw_status write_stats(runtime *rt, sw_error *err)
+{
+    sw_stats *s = &rt->stats;
+    s->patches_total = rt->pack.meta->patch_count;
+    s->measure_every = rt->opt.measure_every;
+    s->arena_bytes = rt->arena.size;
+    s->arena_peak_bytes = rt->arena.peak;
+    s->width = rt->opt.width;
+    s->height = rt->opt.height;
+    if (!rt->opt.stats_path)
+        return SW_OK;
+    FILE *f = fopen(rt->opt.stats_path, "w");
+    if (!f)
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.stats_path, strerror(errno));
+    sw_status st = sw_stats_write_json(s, f, &rt->arena, err);
+    if (fclose(f) != 0 && st == SW_OK)
+        st = sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.stats_path, strerror(errno));
+    return st;
+}
+
+static void stop(runtime *rt)
+{
+    if (rt->renderer_up)
+        sw_renderer_destroy(&rt->renderer);
+    if (rt->egl_up)
+        sw_egl_headless_destroy(&rt->egl);
+    free(rt->block);
+}
+
+static void print_summary(const runtime *rt)
+{
+    const sw_stats *s = &rt->stats;
+    printf("seamwalk: %d frames of %u patches at %dx%d in %.2f s; error max %.3f px (bound %.2f);"
+           " cracks max %llu; arena %.1f MiB; mallocs after init %lld\n",
+           s->frames, s->patches_total, s->width, s->height, s->walk_s, s->error_max_px,
+           s->error_bound_px, (unsigned long long)s->cracks_max, s->arena_bytes / 1048576.0,
+           (long long)s->mallocs_after_init);
+    if (rt->opt.png_dir)
+        printf("seamwalk: pictures in %s/\n", rt->opt.png_dir);
+    if (rt->opt.stats_path)
+        printf("seamwalk: stats in %s\n", rt->opt.stats_path);
+}
+
+int main(int argc, char **argv)
+{
+    static runtime rt;
+    sw_error err = { SW_OK, "" };
+    rt.start_s = now_s();
+    sw_status st = sw_options_parse(argc, argv, &rt.opt, &err);
+    if (st != SW_OK || rt.opt.help) {
+        if (st != SW_OK)
+            fprintf(stderr, "seamwalk: %s\n", err.message);
+        sw_options_print_usage(argv[0]);
+        return st != SW_OK ? 2 : 0;
+    }
+    st = start(&rt, &err);
+    if (st == SW_OK)
+        st = walk(&rt, &err);
+    if (st == SW_OK)
+        st = write_stats(&rt, &err);
+    if (st == SW_OK)
+        print_summary(&rt);
+    else
+        fprintf(stderr, "seamwalk: %s\n", err.message);
+    stop(&rt);
+    return st == SW_OK ? 0 : 1;
+}

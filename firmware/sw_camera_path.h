@@ -1,0 +1,59 @@
+/* Camera paths for walks: timed key frames read from a text file, interpolated
+ * smoothly, and the orbit around a model. Called by the runtime at start-up
+ * (parsing, into caller memory) and every frame (evaluation, no allocation).
+ *
+ * Path file format (text, UTF-8/ASCII):
+ *   - '#' starts a comment to the end of the line; blank lines are ignored;
+ *   - every other line is one key frame of ten numbers separated by spaces or
+ *     tabs:  time_s  eye_x eye_y eye_z  target_x target_y target_z  up_x up_y up_z
+ *   - times strictly increase; at least one key; eye != target; up not zero and
+ *     not parallel to the view direction;
+ *   - at most SW_CAMERA_PATH_MAX_KEYS keys.
+ * Between keys, eye and target follow Catmull-Rom splines with tangents
+ * from the neighbouring keys scaled for uneven spacing (C1 in time), and up is
+ * interpolated the same way and renormalised. Before the first key and after
+ * the last the camera holds still. */
+#ifndef SW_CAMERA_PATH_H
+#define SW_CAMERA_PATH_H
+
+#include <stddef.h>
+
+#include "sw_error.h"
+#include "sw_math.h"
+
+#define SW_CAMERA_PATH_MAX_KEYS 100000
+
+typedef struct sw_camera_key {
+    double time_s;
+    sw_vec3 eye, target, up;
+} sw_camera_key;
+
+typedef struct sw_camera_path {
+    sw_camera_key *keys;   /* caller-owned */
+    size_t key_count;
+} sw_camera_path;
+
+typedef struct sw_camera_pose {
+    sw_vec3 eye, target, up;
+} sw_camera_pose;
+
+/* Number of key lines in text (an upper bound when the text is malformed), so
+ * the caller can size the key array before parsing. */
+size_t sw_camera_path_count_keys(const char *text, size_t size);
+
+/* Parses text (not NUL-terminated) into keys[0..capacity). file_name is used
+ * in messages ("walk.path:7: expected 10 numbers, found 9"). */
+sw_status sw_camera_path_parse(const char *text, size_t size, const char *file_name,
+                               sw_camera_key *keys, size_t capacity, sw_camera_path *out,
+                               sw_error *err);
+
+double sw_camera_path_start(const sw_camera_path *path);
+double sw_camera_path_end(const sw_camera_path *path);
+sw_camera_pose sw_camera_path_at(const sw_camera_path *path, double time_s);
+
+/* A circle around box's centre at a distance where the whole box fits a view
+ * of fovy_rad, 25 degrees above the horizon (y up), starting on +z.
+ * turn in [0, 1) is the fraction of the revolution. */
+sw_camera_pose sw_camera_orbit(const sw_box *box, double fovy_rad, double aspect, double turn);
+
+#endif

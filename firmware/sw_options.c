@@ -1,0 +1,131 @@
+#include "sw_options.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static sw_status parse_int(const char *opt, const char *text, int min, int max, int *out,
+                           sw_error *err)
+{
+    char *end;
+    errno = 0;
+    long v = text ? strtol(text, &end, 10) : 0;
+    if (!text || *end != '\0' || end == text || errno || v < min || v > max)
+        return sw_error_set(err, SW_ERR_ARG, "%s expects an integer in %d..%d, got '%s'", opt, min,
+                            max, text ? text : "");
+    *out = (int)v;
+    return SW_OK;
+}
+
+static sw_status parse_real(const char *opt, const char *text, double min, double max,
+                            double *out, sw_error *err)
+{
+    char *end;
+    double v = text ? strtod(text, &end) : 0;
+    if (!text || *end != '\0' || end == text || !isfinite(v) || v < min || v > max)
+        return sw_error_set(err, SW_ERR_ARG, "%s expects a number in %g..%g, got '%s'", opt, min,
+                            max, text ? text : "");
+    *out = v;
+    return SW_OK;
+}
+
+static sw_status parse_size(const char *text, int *w, int *h, sw_error *err)
+{
+    const char *x = text ? strchr(text, 'x') : NULL;
+    char width[16];
+    if (!x || (size_t)(x - text) >= sizeof width)
+        return sw_error_set(err, SW_ERR_ARG, "--headless expects WIDTHxHEIGHT, got '%s'",
+                            text ? text : "");
+    memcpy(width, text, (size_t)(x - text));
+    width[x - text] = '\0';
+    sw_status st = parse_int("--headless width", width, 16, 8192, w, err);
+    return st != SW_OK ? st : parse_int("--headless height", x + 1, 16, 8192, h, err);
+}
+
+static void set_defaults(sw_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->frames = 120;
+    o->png_every = 1;
+    o->memory_mb = 256;
+    o->max_error_px = 0.5;
+    o->measure_every = 4;
+    o->fov_deg = 45;
+}
+
+static sw_status check_complete(const sw_options *o, sw_error *err)
+{
+    if (!o->pack_path)
+        return sw_error_set(err, SW_ERR_ARG, "--pack FILE is required");
+    if (!o->width)
+        return sw_error_set(err, SW_ERR_ARG,
+                            "--headless WxH is required: this build has no device display yet");
+    if (!o->orbit == !o->path_file)
+        return sw_error_set(err, SW_ERR_ARG, "give exactly one of --path FILE and --orbit");
+    return SW_OK;
+}
+
+sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
+{
+    set_defaults(o);
+    sw_status st = SW_OK;
+    for (int i = 1; i < argc && st == SW_OK; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes_value = 1;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            o->help = 1;
+            return SW_OK;
+        } else if (!strcmp(a, "--orbit")) {
+            o->orbit = 1;
+            takes_value = 0;
+        } else if (!v) {
+            return sw_error_set(err, SW_ERR_ARG, "%s: unknown option or missing value", a);
+        } else if (!strcmp(a, "--pack")) {
+            o->pack_path = v;
+        } else if (!strcmp(a, "--headless")) {
+            st = parse_size(v, &o->width, &o->height, err);
+        } else if (!strcmp(a, "--path")) {
+            o->path_file = v;
+        } else if (!strcmp(a, "--frames")) {
+            st = parse_int(a, v, 1, 10000000, &o->frames, err);
+        } else if (!strcmp(a, "--png-dir")) {
+            o->png_dir = v;
+        } else if (!strcmp(a, "--png-every")) {
+            st = parse_int(a, v, 1, INT_MAX, &o->png_every, err);
+        } else if (!strcmp(a, "--stats")) {
+            o->stats_path = v;
+        } else if (!strcmp(a, "--memory-mb")) {
+            st = parse_real(a, v, 1, 1 << 20, &o->memory_mb, err);
+        } else if (!strcmp(a, "--max-error-px")) {
+            st = parse_real(a, v, 0.01, 100, &o->max_error_px, err);
+        } else if (!strcmp(a, "--measure-every")) {
+            st = parse_int(a, v, 1, INT_MAX, &o->measure_every, err);
+        } else if (!strcmp(a, "--fov-deg")) {
+            st = parse_real(a, v, 5, 150, &o->fov_deg, err);
+        } else {
+            return sw_error_set(err, SW_ERR_ARG, "unknown option '%s'", a);
+        }
+        i += takes_value;
+    }
+    return st != SW_OK ? st : check_complete(o, err);
+}
+
+void sw_options_print_usage(const char *argv0)
+{
+    fprintf(stderr,
+            "usage: %s --pack FILE --headless WxH (--path FILE | --orbit) [--frames N]\n"
+            "          [--png-dir DIR] [--png-every K] [--stats FILE.json] [--memory-mb M]\n"
+            "          [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
+            "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
+            "  --frames N          frames to render (default 120)\n"
+            "  --png-dir DIR       write frame_NNNNN.png every --png-every frames\n"
+            "  --stats FILE.json   write the walk's statistics\n"
+            "  --memory-mb M       refuse to start if the arena needs more (default 256)\n"
+            "  --max-error-px E    screen-space tessellation error bound (default 0.5)\n"
+            "  --measure-every K   measure error and cracks every K-th frame (default 4)\n",
+            argv0);
+}

@@ -1,0 +1,30 @@
+/* The seamwalk command line, parsed into a struct where zero means default.
+ * Called once by main before anything else. */
+#ifndef SW_OPTIONS_H
+#define SW_OPTIONS_H
+
+#include "sw_error.h"
+
+typedef struct sw_options {
+    const char *pack_path;
+    int width, height;           /* from --headless WxH */
+    const char *path_file;       /* --path FILE, or NULL with orbit set */
+    int orbit;
+    int frames;                  /* default 120 */
+    const char *png_dir;         /* NULL: no pictures */
+    int png_every;               /* default 1 */
+    const char *stats_path;      /* NULL: no stats file */
+    double memory_mb;            /* arena limit; default 256 */
+    double max_error_px;         /* default 0.5 */
+    int measure_every;           /* error and crack measurement every K-th frame; default 4 */
+    double fov_deg;              /* vertical field of view; default 45 */
+    int help;
+} sw_options;
+
+/* Fills opts from argv. On a usage error returns SW_ERR_ARG with a message
+ * naming the option and what it expects. */
+sw_status sw_options_parse(int argc, char **argv, sw_options *opts, sw_error *err);
+
+void sw_options_print_usage(const char *argv0);
+
+#endif

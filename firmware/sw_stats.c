@@ -1,0 +1,145 @@
+#include "sw_stats.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+size_t sw_stats_arena_bytes(int frames)
+{
+    size_t n = (size_t)frames;
+    return sw_arena_worst_case(n * sizeof(float), 8) + 2 * sw_arena_worst_case(n * 4, 8) +
+           sw_arena_worst_case(SW_ERROR_BINS * sizeof(uint64_t), 8) +
+           3 * sw_arena_worst_case(n * sizeof(float), 8); /* sorting scratch at the end */
+}
+
+sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_bound_px,
+                        sw_error *err)
+{
+    memset(s, 0, sizeof *s);
+    s->frame_capacity = frames;
+    s->frame_ms = sw_arena_alloc(arena, (size_t)frames * sizeof(float), 8);
+    s->tris = sw_arena_alloc(arena, (size_t)frames * 4, 8);
+    s->visible = sw_arena_alloc(arena, (size_t)frames * 4, 8);
+    s->error_bins = sw_arena_alloc(arena, SW_ERROR_BINS * sizeof(uint64_t), 8);
+    if (!s->frame_ms || !s->tris || !s->visible || !s->error_bins)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the statistics");
+    memset(s->error_bins, 0, SW_ERROR_BINS * sizeof(uint64_t));
+    s->error_bound_px = error_bound_px;
+    /* Bins cover four times the bound at 1/1024 of it: fine enough for p99. */
+    s->error_bin_px = 4.0 * error_bound_px / SW_ERROR_BINS;
+    s->mallocs_after_init = -1;
+    return SW_OK;
+}
+
+void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible)
+{
+    if (s->frames >= s->frame_capacity)
+        return;
+    s->frame_ms[s->frames] = (float)ms;
+    s->tris[s->frames] = tris;
+    s->visible[s->frames] = visible;
+    s->frames++;
+}
+
+void sw_stats_add_error_px(sw_stats *s, double e)
+{
+    if (e > s->error_max_px)
+        s->error_max_px = e;
+    s->error_samples++;
+    double bin = e / s->error_bin_px;
+    if (bin >= SW_ERROR_BINS)
+        s->error_overflow++;
+    else
+        s->error_bins[(size_t)bin]++;
+}
+
+static int compare_float(const void *a, const void *b)
+{
+    float x = *(const float *)a, y = *(const float *)b;
+    return (x > y) - (x < y);
+}
+
+static double nearest_rank(const float *sorted, int count, double p)
+{
+    int rank = (int)(p * count + 0.999999);
+    if (rank < 1)
+        rank = 1;
+    if (rank > count)
+        rank = count;
+    return sorted[rank - 1];
+}
+
+sw_percentiles sw_percentiles_of(float *v, int count)
+{
+    sw_percentiles p = { 0, 0, 0, 0 };
+    if (count <= 0)
+        return p;
+    qsort(v, (size_t)count, sizeof *v, compare_float);
+    p.p50 = nearest_rank(v, count, 0.50);
+    p.p90 = nearest_rank(v, count, 0.90);
+    p.p99 = nearest_rank(v, count, 0.99);
+    p.max = v[count - 1];
+    return p;
+}
+
+double sw_stats_error_p99(const sw_stats *s)
+{
+    if (!s->error_samples)
+        return 0.0;
+    uint64_t need = (uint64_t)(0.99 * (double)s->error_samples + 0.999999), seen = 0;
+    for (size_t i = 0; i < SW_ERROR_BINS; i++) {
+        seen += s->error_bins[i];
+        if (seen >= need) {
+            double upper = (double)(i + 1) * s->error_bin_px;
+            return upper < s->error_max_px ? upper : s->error_max_px;
+        }
+    }
+    return s->error_max_px;
+}
+
+static float *copy_as_float_u32(const uint32_t *v, int n, sw_arena *a)
+{
+    float *out = sw_arena_alloc(a, (size_t)n * sizeof(float) + 1, 8);
+    for (int i = 0; out && i < n; i++)
+        out[i] = (float)v[i];
+    return out;
+}
+
+sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_error *err)
+{
+    size_t mark = sw_arena_mark(scratch);
+    int n = s->frames;
+    float *ms = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *tris = copy_as_float_u32(s->tris, n, scratch);
+    float *vis = copy_as_float_u32(s->visible, n, scratch);
+    if (!ms || !tris || !vis) {
+        sw_arena_reset_to(scratch, mark);
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small to sort the statistics");
+    }
+    memcpy(ms, s->frame_ms, (size_t)n * sizeof(float));
+    sw_percentiles fms = sw_percentiles_of(ms, n), tri = sw_percentiles_of(tris, n);
+    sw_percentiles visible = sw_percentiles_of(vis, n);
+    fprintf(f, "{\n  \"frames\": %d,\n", n);
+    fprintf(f, "  \"frame_ms\": {\"p50\": %.3f, \"p90\": %.3f, \"p99\": %.3f, \"max\": %.3f},\n",
+            fms.p50, fms.p90, fms.p99, fms.max);
+    fprintf(f, "  \"fps_median\": %.2f,\n", fms.p50 > 0 ? 1000.0 / fms.p50 : 0.0);
+    fprintf(f, "  \"tris_per_frame\": {\"median\": %.0f, \"max\": %.0f},\n", tri.p50, tri.max);
+    fprintf(f, "  \"patches\": {\"total\": %u, \"visible_median\": %.0f},\n", s->patches_total,
+            visible.p50);
+    fprintf(f, "  \"error_px\": {\"max\": %.5f, \"p99\": %.5f, \"bound\": %.5f, \"samples\": %llu, "
+               "\"measured_frames\": %d, \"measure_every\": %d},\n",
+            s->error_max_px, sw_stats_error_p99(s), s->error_bound_px,
+            (unsigned long long)s->error_samples, s->measured_frames, s->measure_every);
+    fprintf(f, "  \"cracks_max\": %llu,\n", (unsigned long long)s->cracks_max);
+    fprintf(f, "  \"capped_patches_max\": %llu,\n", (unsigned long long)s->capped_patches_max);
+    fprintf(f, "  \"arena_bytes\": %llu,\n  \"arena_peak_bytes\": %llu,\n",
+            (unsigned long long)s->arena_bytes, (unsigned long long)s->arena_peak_bytes);
+    fprintf(f, "  \"mallocs_after_init\": %lld,\n", (long long)s->mallocs_after_init);
+    fprintf(f, "  \"pack_open_ms\": %.3f,\n  \"first_frame_ms\": %.3f,\n", s->pack_open_ms,
+            s->first_frame_ms);
+    fprintf(f, "  \"walk_s\": %.3f,\n  \"viewport\": [%d, %d]\n}\n", s->walk_s, s->width,
+            s->height);
+    sw_arena_reset_to(scratch, mark);
+    if (ferror(f))
+        return sw_error_set(err, SW_ERR_IO, "writing the statistics failed");
+    return SW_OK;
+}

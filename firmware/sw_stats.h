@@ -1,0 +1,58 @@
+/* Walk statistics: per-frame samples kept in arena arrays sized at start, an
+ * error histogram, and the stats JSON (a contract: fields are added, never
+ * renamed). The frame loop records; main writes the file after the walk. */
+#ifndef SW_STATS_H
+#define SW_STATS_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "sw_arena.h"
+#include "sw_error.h"
+
+/* Histogram of measured per-sample error in pixels: SW_ERROR_BINS bins of
+ * width bin_px from 0, plus an overflow count; p99 is read from it as the
+ * upper edge of the bin holding the 99th percentile (so it never
+ * understates), while max is kept exactly. */
+#define SW_ERROR_BINS 4096
+
+typedef struct sw_stats {
+    int frame_capacity, frames;
+    float *frame_ms;            /* per frame: tessellate + draw + finish */
+    uint32_t *tris;             /* per frame */
+    uint32_t *visible;          /* per frame: patches drawn */
+    uint32_t patches_total;
+
+    uint64_t *error_bins;       /* SW_ERROR_BINS */
+    double error_bin_px;
+    uint64_t error_samples, error_overflow;
+    double error_max_px;
+    int measured_frames, measure_every;
+    double error_bound_px;
+
+    uint64_t cracks_max;
+    uint64_t capped_patches_max; /* patches whose grid hit SW_TESS_MAX_SEGMENTS */
+
+    double pack_open_ms, first_frame_ms, walk_s;
+    uint64_t arena_bytes, arena_peak_bytes;
+    int64_t mallocs_after_init;  /* -1 when the binary could not count */
+    int width, height;
+} sw_stats;
+
+/* Arena bytes sw_stats_init takes for frames frames. */
+size_t sw_stats_arena_bytes(int frames);
+sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_bound_px,
+                        sw_error *err);
+
+void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible);
+void sw_stats_add_error_px(sw_stats *s, double error_px);
+
+typedef struct sw_percentiles { double p50, p90, p99, max; } sw_percentiles;
+/* Nearest-rank percentiles; sorts values in place. */
+sw_percentiles sw_percentiles_of(float *values, int count);
+double sw_stats_error_p99(const sw_stats *s);
+
+/* Writes the JSON object. Uses scratch (3 * frames * 4 bytes) to sort. */
+sw_status sw_stats_write_json(const sw_stats *s, FILE *out, sw_arena *scratch, sw_error *err);
+
+#endif

@@ -1,0 +1,41 @@
+/* One frame's view: camera matrices, frustum, clip planes fitted to the model,
+ * and the screen-space error rule. Computed once per frame by the frame loop;
+ * pure math, no GL. */
+#ifndef SW_VIEW_H
+#define SW_VIEW_H
+
+#include "sw_camera_path.h"
+#include "sw_math.h"
+
+typedef struct sw_view {
+    sw_vec3 eye, forward;         /* forward: unit view direction */
+    sw_mat4 view, proj, view_proj;
+    sw_frustum frustum;
+    double near_z, far_z;
+    double fovy_rad;
+    int width, height;
+    /* Pixels covered by one unit of length at eye-space depth 1: an object of
+     * size s at depth z spans s * px_per_unit / z pixels. */
+    double px_per_unit;
+} sw_view;
+
+/* Near and far are fitted to model_box so the 16-bit depth buffer keeps its
+ * precision: far just past the farthest box corner, near at the nearest
+ * corner's depth but never below far / 2000. */
+sw_view sw_view_make(const sw_camera_pose *pose, double fovy_rad, int width, int height,
+                     const sw_box *model_box);
+
+/* Eye-space depth of p (distance along forward). */
+double sw_view_depth(const sw_view *v, sw_vec3 p);
+
+/* Smallest eye-space depth of the box's corners, clamped to near_z: every
+ * visible point of the box is at least this deep. */
+double sw_view_box_min_depth(const sw_view *v, const sw_box *box);
+
+/* The object-space error that projects to error_px pixels at depth (paper
+ * 004, section 6.1: half a pixel by default). The paper uses the Euclidean
+ * distance to the box; we use eye-space depth, which is what perspective
+ * divides by, so the bound also holds off the view axis. */
+double sw_view_error_world(const sw_view *v, double error_px, double depth);
+
+#endif
