@@ -1,0 +1,39 @@
+/* The heap-call counter sees our code's malloc family through --wrap, so a
+ * zero mallocs_after_init is evidence, not an absence of counting. */
+#include <stdlib.h>
+
+#include "sw_alloc_count.h"
+#include "sw_test.h"
+
+static void test_counts_each_heap_call(void)
+{
+    uint64_t a0 = sw_alloc_count_allocs(), f0 = sw_alloc_count_frees();
+    void *p = malloc(16);
+    void *q = calloc(2, 8);
+    p = realloc(p, 64);
+    void *r = NULL;
+    SW_CHECK(posix_memalign(&r, 64, 128) == 0);
+    free(p);
+    free(q);
+    free(r);
+    free(NULL);
+    SW_CHECK(sw_alloc_count_active() == 1);
+    SW_CHECK(sw_alloc_count_allocs() - a0 == 4);
+    SW_CHECK(sw_alloc_count_frees() - f0 == 3);
+}
+
+static void test_no_calls_no_count(void)
+{
+    uint64_t a0 = sw_alloc_count_allocs();
+    volatile int x = 0;
+    for (int i = 0; i < 1000; i++)
+        x += i;
+    SW_CHECK(sw_alloc_count_allocs() == a0);
+}
+
+int main(void)
+{
+    SW_RUN(test_counts_each_heap_call);
+    SW_RUN(test_no_calls_no_count);
+    return sw_test_finish();
+}

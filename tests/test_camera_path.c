@@ -1,0 +1,123 @@
+/* Camera path files: parsing, errors with file:line, interpolation through
+ * the keys, smoothness, and the orbit. */
+#include <string.h>
+
+#include "sw_camera_path.h"
+#include "sw_test.h"
+
+static sw_status parse(const char *text, sw_camera_key *keys, size_t cap, sw_camera_path *p,
+                       sw_error *err)
+{
+    return sw_camera_path_parse(text, strlen(text), "walk.path", keys, cap, p, err);
+}
+
+static const char *three_keys = "# a walk\n"
+                                "0  0 1 10   0 0 0   0 1 0\n"
+                                "\n"
+                                "2  10 1 0   0 0 0   0 1 0  # quarter turn\n"
+                                "3  0 1 -10  0 0 0   0 1 0\n";
+
+static void test_parses_keys_and_skips_comments(void)
+{
+    sw_camera_key keys[8];
+    sw_camera_path p;
+    sw_error err;
+    SW_CHECK(sw_camera_path_count_keys(three_keys, strlen(three_keys)) == 3);
+    SW_CHECK(parse(three_keys, keys, 8, &p, &err) == SW_OK);
+    SW_CHECK(p.key_count == 3);
+    SW_CHECK(keys[1].time_s == 2.0 && keys[1].eye.x == 10.0 && keys[2].eye.z == -10.0);
+    SW_CHECK(sw_camera_path_start(&p) == 0.0 && sw_camera_path_end(&p) == 3.0);
+}
+
+static void test_interpolation_passes_through_keys_and_holds_outside(void)
+{
+    sw_camera_key keys[8];
+    sw_camera_path p;
+    SW_CHECK(parse(three_keys, keys, 8, &p, NULL) == SW_OK);
+    for (size_t k = 0; k < 3; k++) {
+        sw_camera_pose pose = sw_camera_path_at(&p, keys[k].time_s);
+        SW_CHECK_NEAR(pose.eye.x, keys[k].eye.x, 1e-12);
+        SW_CHECK_NEAR(pose.eye.z, keys[k].eye.z, 1e-12);
+    }
+    sw_camera_pose before = sw_camera_path_at(&p, -5), after = sw_camera_path_at(&p, 50);
+    SW_CHECK(before.eye.z == 10.0 && after.eye.z == -10.0);
+}
+
+static void test_interpolation_is_continuous_in_velocity(void)
+{
+    sw_camera_key keys[8];
+    sw_camera_path p;
+    SW_CHECK(parse(three_keys, keys, 8, &p, NULL) == SW_OK);
+    double h = 1e-6;
+    sw_vec3 l0 = sw_camera_path_at(&p, 2 - 2 * h).eye, l1 = sw_camera_path_at(&p, 2 - h).eye;
+    sw_vec3 r0 = sw_camera_path_at(&p, 2 + h).eye, r1 = sw_camera_path_at(&p, 2 + 2 * h).eye;
+    double vl = (l1.z - l0.z) / h, vr = (r1.z - r0.z) / h;
+    SW_CHECK_NEAR(vl, vr, 1e-3 * (fabs(vl) + 1));
+    sw_camera_pose mid = sw_camera_path_at(&p, 1.0);
+    SW_CHECK_NEAR(sw_v3_length(mid.up), 1.0, 1e-12);
+}
+
+static void expect_error(const char *text, const char *fragment)
+{
+    sw_camera_key keys[4];
+    sw_camera_path p;
+    sw_error err = { SW_OK, "" };
+    sw_status st = parse(text, keys, 4, &p, &err);
+    SW_CHECK_MSG(st != SW_OK, "accepted: %s", text);
+    SW_CHECK_MSG(strstr(err.message, fragment) != NULL, "message '%s' lacks '%s'", err.message,
+                 fragment);
+}
+
+static void test_malformed_paths_name_line_and_problem(void)
+{
+    expect_error("", "no key frames");
+    expect_error("# only a comment\n", "no key frames");
+    expect_error("0 0 0 1 0 0 0 0 1\n", "walk.path:1: expected 10 numbers");
+    expect_error("0 0 0 1 0 0 0 0 1 0 7\n", "found more than 10");
+    expect_error("\n0 0 0 1 0 0 0 0 1 zero\n", "walk.path:2: expected numbers");
+    expect_error("0 0 0 1 0 0 0 0 1 0\n0 0 0 2 0 0 0 0 1 0\n", "walk.path:2: time 0 does not");
+    expect_error("0 1 1 1 1 1 1 0 1 0\n", "same point");
+    expect_error("0 0 0 1 0 0 0 0 0 1\n", "parallel");
+    expect_error("0 0 0 1 0 0 0 0 1 nan\n", "expected numbers");
+    expect_error("0 0 0 1e999 0 0 0 0 1 0\n", "expected numbers");
+    const char *five = "0 0 0 1 0 0 0 0 1 0\n1 0 0 1 0 0 0 0 1 0\n2 0 0 1 0 0 0 0 1 0\n"
+                       "3 0 0 1 0 0 0 0 1 0\n4 0 0 1 0 0 0 0 1 0\n";
+    expect_error(five, "more than 4 key frames");
+}
+
+static void test_unterminated_last_line_is_read(void)
+{
+    const char text[] = "0 0 0 5 0 0 0 0 1 0"; /* no newline */
+    sw_camera_key keys[2];
+    sw_camera_path p;
+    SW_CHECK(sw_camera_path_parse(text, sizeof text - 1, "x", keys, 2, &p, NULL) == SW_OK);
+    SW_CHECK(p.key_count == 1 && keys[0].eye.z == 5.0);
+}
+
+static void test_orbit_sees_whole_box_from_constant_distance(void)
+{
+    sw_box box = { sw_v3(-1, -2, -3), sw_v3(3, 2, 1) };
+    sw_vec3 c = sw_box_center(&box);
+    double fovy = 45 * SW_PI / 180, r = 0.5 * sw_box_diagonal(&box);
+    for (int i = 0; i < 8; i++) {
+        sw_camera_pose pose = sw_camera_orbit(&box, fovy, 16.0 / 9.0, i / 8.0);
+        double d = sw_v3_length(sw_v3_sub(pose.eye, c));
+        SW_CHECK_NEAR(pose.target.x, c.x, 0);
+        SW_CHECK(d * sin(fovy / 2) >= r);         /* the bounding sphere fits */
+        SW_CHECK(pose.eye.y > c.y);               /* looks down at the model */
+    }
+    sw_camera_pose a = sw_camera_orbit(&box, fovy, 1.0, 0.0), b = sw_camera_orbit(&box, fovy, 1.0, 0.5);
+    SW_CHECK_NEAR(a.eye.x - c.x, -(b.eye.x - c.x), 1e-9);
+    SW_CHECK_NEAR(a.eye.z - c.z, -(b.eye.z - c.z), 1e-9);
+}
+
+int main(void)
+{
+    SW_RUN(test_parses_keys_and_skips_comments);
+    SW_RUN(test_interpolation_passes_through_keys_and_holds_outside);
+    SW_RUN(test_interpolation_is_continuous_in_velocity);
+    SW_RUN(test_malformed_paths_name_line_and_problem);
+    SW_RUN(test_unterminated_last_line_is_read);
+    SW_RUN(test_orbit_sees_whole_box_from_constant_distance);
+    return sw_test_finish();
+}
