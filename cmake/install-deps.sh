@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages seamwalk builds and tests with, only those
+# missing, so it is quiet and fast when run again. Needs root (or sudo) only
+# when something is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config   # compiler, build system
+  libegl-dev libgles-dev             # EGL and GLES2 headers and loaders (glvnd)
+  libegl-mesa0 libgl1-mesa-dri       # Mesa's EGL and llvmpipe: headless rendering
+  libxxhash-dev                      # pack section checksums (XXH3-64)
+  libstb-dev                         # stb_image_write (PNG frames), stb_image (tests)
+  libinih-dev                        # showroom scene files (INI)
+  libgl-dev libglu1-mesa-dev         # the benchmark's reference: GLU's NURBS tessellator
+  python3                            # tests read the stats JSON
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "seamwalk: installing ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
