@@ -1,0 +1,83 @@
+/* image_compare A.png B.png [--level L] [--max-fraction F]
+ * Compares two pictures of the same size for the golden-image tests: a pixel
+ * differs when any channel differs by more than L levels (default 8); the
+ * pictures match when at most F of the pixels differ (default 0.005 = 0.5%).
+ * That tolerance absorbs llvmpipe's rasterisation changes between Mesa
+ * versions (edge pixels, rounding) but not a moved, missing or recoloured
+ * object. `image_compare --coverage A.png MIN` checks instead that at least MIN
+ * of the pixels differ from the background. Prints the figures; exit 0 on a match, 1 on a mismatch, 2 on error. */
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb_image.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int channel_diff(const unsigned char *a, const unsigned char *b, int level)
+{
+    for (int c = 0; c < 3; c++) {
+        int d = a[c] - b[c];
+        if (d > level || d < -level)
+            return 1;
+    }
+    return 0;
+}
+
+/* --coverage A.png MIN: the share of pixels that differ from the top-left
+ * (background) pixel must be at least MIN: the model is in the picture. */
+static int coverage(const char *path, double min_fraction)
+{
+    int w, h, n;
+    unsigned char *a = stbi_load(path, &w, &h, &n, 3);
+    if (!a) {
+        fprintf(stderr, "image_compare: cannot read %s\n", path);
+        return 2;
+    }
+    long covered = 0, total = (long)w * h;
+    for (long p = 0; p < total; p++)
+        covered += channel_diff(a + p * 3, a, 8);
+    stbi_image_free(a);
+    double fraction = (double)covered / total;
+    printf("%s: %.2f%% of pixels show something other than the background (need %.2f%%)\n", path,
+           100 * fraction, 100 * min_fraction);
+    return fraction >= min_fraction ? 0 : 1;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 4 && !strcmp(argv[1], "--coverage"))
+        return coverage(argv[2], atof(argv[3]));
+    int level = 8;
+    double max_fraction = 0.005;
+    if (argc < 3) {
+        fprintf(stderr, "usage: %s A.png B.png [--level L] [--max-fraction F]\n", argv[0]);
+        return 2;
+    }
+    for (int i = 3; i + 1 < argc; i += 2) {
+        if (!strcmp(argv[i], "--level"))
+            level = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--max-fraction"))
+            max_fraction = atof(argv[i + 1]);
+    }
+    int wa, ha, wb, hb, n;
+    unsigned char *a = stbi_load(argv[1], &wa, &ha, &n, 3);
+    unsigned char *b = stbi_load(argv[2], &wb, &hb, &n, 3);
+    if (!a || !b || wa != wb || ha != hb) {
+        fprintf(stderr, "image_compare: %s\n",
+                !a ? "cannot read the first picture"
+                   : !b ? "cannot read the second picture" : "pictures differ in size");
+        stbi_image_free(a);
+        stbi_image_free(b);
+        return 2;
+    }
+    long differing = 0, total = (long)wa * ha;
+    for (long p = 0; p < total; p++)
+        differing += channel_diff(a + p * 3, b + p * 3, level);
+    double fraction = (double)differing / total;
+    printf("%s vs %s: %ld of %ld pixels differ by more than %d levels (%.3f%%, limit %.3f%%)\n",
+           argv[1], argv[2], differing, total, level, 100 * fraction, 100 * max_fraction);
+    stbi_image_free(a);
+    stbi_image_free(b);
+    return fraction <= max_fraction ? 0 : 1;
+}

@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# End-to-end tests of the two programs, one mode per CTest test:
+#   test_walk.sh MODE BUILD_DIR SOURCE_DIR
+# MODE: teaset | teapot | golden | errors. Exit 77 means skipped.
+set -uo pipefail
+mode=$1 build=$2 src=$3
+pack_tool=$build/assets/seamwalk-pack
+walker=$build/firmware/seamwalk
+compare=$build/tests/image_compare
+work=$build/tests/walk_$mode
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+
+# walk_model INPUT FRAMES: pack, info, orbit walk with pictures and stats, checks.
+walk_model() {
+  local input=$1 frames=$2
+  "$pack_tool" build "$input" -o "$work/model.swpack" || fail "build $input"
+  "$pack_tool" info --json "$work/model.swpack" > "$work/info.json" || fail "info"
+  python3 -m json.tool "$work/info.json" > /dev/null || fail "info --json is not JSON"
+  "$pack_tool" verify "$work/model.swpack" || fail "verify"
+  "$walker" --pack "$work/model.swpack" --headless 320x240 --orbit --frames "$frames" \
+    --png-dir "$work/png" --png-every 8 --stats "$work/stats.json" || fail "walk"
+  python3 "$src/tests/check_stats.py" "$work/stats.json" "$frames" || fail "stats"
+  local pngs
+  pngs=$(ls "$work/png"/frame_*.png | wc -l)
+  [ "$pngs" -eq $(( (frames + 7) / 8 )) ] || fail "expected $(( (frames + 7) / 8 )) PNGs, found $pngs"
+  for f in "$work/png"/frame_*.png; do
+    "$compare" --coverage "$f" 0.02 || fail "the model is not in $f"
+  done
+}
+
+# expect_failure CODE FRAGMENT COMMAND...: exits with CODE, one stderr line containing FRAGMENT.
+expect_failure() {
+  local code=$1 fragment=$2; shift 2
+  "$@" 2> "$work/stderr" > /dev/null
+  local got=$?
+  [ "$got" -eq "$code" ] || fail "'$*' exited $got, expected $code"
+  grep -q -- "$fragment" "$work/stderr" || fail "'$*' said '$(cat "$work/stderr")', expected '$fragment'"
+  echo "ok   $(head -n 1 "$work/stderr")"
+}
+
+case $mode in
+teaset)
+  walk_model "$src/assets/samples/teaset.ini" 24 ;;
+teapot)
+  model=$src/../shared/models/newell_teapot.txt
+  [ -f "$model" ] || { echo "skipped: $model is absent"; exit 77; }
+  walk_model "$model" 16 ;;
+golden)
+  "$pack_tool" build "$src/assets/samples/teaset.ini" -o "$work/teaset.swpack" || fail "build"
+  "$walker" --pack "$work/teaset.swpack" --headless 320x240 --path "$src/tests/golden/views.path" \
+    --frames 3 --png-dir "$work/png" --stats "$work/stats.json" || fail "walk"
+  for i in 0 1 2; do
+    "$compare" "$work/png/frame_0000$i.png" "$src/tests/golden/teaset_view$i.png" \
+      || fail "view $i differs from its reference"
+  done
+  # The comparison must be able to fail: two different views do not match.
+  if "$compare" "$src/tests/golden/teaset_view0.png" "$src/tests/golden/teaset_view1.png"; then
+    fail "the comparison cannot tell two views apart"
+  fi ;;
+errors)
+  "$pack_tool" build "$src/assets/samples/teaset.ini" -o "$work/good.swpack" || fail "build"
+  size=$(stat -c %s "$work/good.swpack")
+  expect_failure 1 "needs" "$walker" --pack "$work/good.swpack" --headless 320x240 --orbit --memory-mb 1
+  head -c $((size / 2)) "$work/good.swpack" > "$work/short.swpack"
+  expect_failure 1 "short.swpack" "$walker" --pack "$work/short.swpack" --headless 320x240 --orbit
+  cp "$work/good.swpack" "$work/flipped.swpack"
+  printf '\xff' | dd of="$work/flipped.swpack" bs=1 seek=$((size - 7)) conv=notrunc status=none
+  expect_failure 1 "checksum" "$walker" --pack "$work/flipped.swpack" --headless 320x240 --orbit
+  expect_failure 1 "missing.swpack" "$walker" --pack "$work/missing.swpack" --headless 320x240 --orbit
+  printf '0 0 0 5 0 0 0 0 1 0\n1 0 0 5\n' > "$work/bad.path"
+  expect_failure 1 "bad.path:2" "$walker" --pack "$work/good.swpack" --headless 320x240 --path "$work/bad.path"
+  expect_failure 2 "exactly one of" "$walker" --pack "$work/good.swpack" --headless 320x240
+  expect_failure 2 "--headless" "$walker" --pack "$work/good.swpack" --headless 12x9999 --orbit
+  expect_failure 2 "unknown option" "$walker" --pack "$work/good.swpack" --orbit --bogus 1
+  ;;
+*) fail "unknown mode $mode" ;;
+esac
+echo "test_walk $mode: passed"
