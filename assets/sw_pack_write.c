@@ -1,0 +1,341 @@
+/* The pack writer: model -> contents (float control points, boxes, second
+ * derivative bounds, adjacency), contents -> bytes (header, section table,
+ * 64-byte aligned sections, checksums), bytes -> file (atomically). Host only;
+ * allocates with malloc. Format: assets/PACK_FORMAT.md. */
+#include "sw_pack_write.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <xxhash.h>
+
+#include "sw_pack_adjacency.h"
+#include "sw_pack_validate.h"
+
+enum { SECTION_COUNT = 5, HEADER_BYTES = 64, SECTION_BYTES = 32 };
+
+static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
+
+sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *out_size,
+                            sw_error *err)
+{
+    *out = NULL;
+    *out_size = 0;
+    const sw_pack_meta *m = &c->meta;
+    struct { uint32_t type; const void *bytes; uint64_t size; } src[SECTION_COUNT] = {
+        { SW_SECTION_META, m, sizeof *m },
+        { SW_SECTION_PARTS, c->parts, (uint64_t)m->part_count * sizeof(sw_pack_part) },
+        { SW_SECTION_PATCHES, c->patches, (uint64_t)m->patch_count * sizeof(sw_pack_patch) },
+        { SW_SECTION_CONTROL, c->control, (uint64_t)m->control_count * 4 * sizeof(float) },
+        { SW_SECTION_ADJACENCY, c->adjacency,
+          (uint64_t)m->adjacency_count * sizeof(sw_pack_adjacency) },
+    };
+    sw_pack_section table[SECTION_COUNT];
+    uint64_t cursor = HEADER_BYTES + SECTION_COUNT * SECTION_BYTES;
+    for (int i = 0; i < SECTION_COUNT; i++) {
+        if (src[i].size > 0 && !src[i].bytes)
+            return sw_error_set(err, SW_ERR_ARG, "sw_pack_serialize: META counts %llu bytes of "
+                                "%s but the array is NULL", (unsigned long long)src[i].size,
+                                sw_section_type_name(src[i].type));
+        cursor = align_up(cursor);
+        table[i] = (sw_pack_section){ .type = src[i].type, .offset = cursor, .size = src[i].size,
+                                      .checksum = XXH3_64bits(src[i].bytes ? src[i].bytes : "",
+                                                              (size_t)src[i].size) };
+        cursor += src[i].size;
+    }
+    if (cursor > SIZE_MAX)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "sw_pack_serialize: %llu bytes",
+                            (unsigned long long)cursor);
+    uint8_t *buf = calloc(1, (size_t)cursor); /* zero padding between sections */
+    if (!buf)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "sw_pack_serialize: cannot allocate %llu "
+                            "bytes", (unsigned long long)cursor);
+    for (int i = 0; i < SECTION_COUNT; i++)
+        if (src[i].size > 0)
+            memcpy(buf + table[i].offset, src[i].bytes, (size_t)src[i].size);
+    sw_pack_header h = { .version = SW_PACK_VERSION, .byte_order = SW_PACK_BYTE_ORDER_MARK,
+                         .total_size = cursor,
+                         .runtime_bytes = sw_pack_runtime_bytes(cursor, m->patch_count),
+                         .section_count = SECTION_COUNT, .section_table_offset = HEADER_BYTES };
+    memcpy(h.magic, SW_PACK_MAGIC, sizeof h.magic);
+    memcpy(buf, &h, sizeof h);
+    memcpy(buf + HEADER_BYTES, table, sizeof table);
+    /* header_checksum is still 0 in buf, and the table follows the header. */
+    h.header_checksum = XXH3_64bits(buf, HEADER_BYTES + sizeof table);
+    memcpy(buf, &h, sizeof h);
+    *out = buf;
+    *out_size = (size_t)cursor;
+    return SW_OK;
+}
+
+/* Copies a model part name, replacing bytes that are not valid UTF-8 with
+ * '?' (the model may cut a multi-byte character at its 55-byte limit, and
+ * importers pass through whatever encoding the source file used). */
+static void copy_name(char dst[56], const char *src)
+{
+    size_t n = strnlen(src, 55), o = 0;
+    for (size_t i = 0; i < n;) {
+        size_t len = sw_utf8_sequence_length((const unsigned char *)src + i, n - i);
+        if (len == 0) {
+            dst[o++] = '?';
+            i++;
+            continue;
+        }
+        memcpy(dst + o, src + i, len);
+        o += len;
+        i += len;
+    }
+    memset(dst + o, 0, 56 - o);
+}
+
+static sw_status convert_parts(const sw_model *model, sw_pack_part *parts, sw_error *err)
+{
+    for (size_t i = 0; i < model->part_count; i++) {
+        const sw_model_part *mp = &model->parts[i];
+        if (mp->first_patch > UINT32_MAX || mp->patch_count > UINT32_MAX - mp->first_patch)
+            return sw_error_set(err, SW_ERR_RANGE, "part %zu: patches %zu..+%zu out of range", i,
+                                mp->first_patch, mp->patch_count);
+        parts[i].first_patch = (uint32_t)mp->first_patch;
+        parts[i].patch_count = (uint32_t)mp->patch_count;
+        for (int k = 0; k < 4; k++) {
+            float c = mp->color[k];
+            parts[i].color[k] = c >= 0.0f ? (c <= 1.0f ? c : 1.0f) : 0.0f; /* NaN -> 0 */
+        }
+        copy_name(parts[i].name, mp->name);
+    }
+    return SW_OK;
+}
+
+/* The float nearest d that is not below it: bounds must stay bounds. */
+static float float_up(double d)
+{
+    float f = (float)d;
+    return (double)f < d ? nextafterf(f, INFINITY) : f;
+}
+
+/* Rounds one patch's control points to float into pack_ctrl (4 per point) and
+ * exact_out (the same values as doubles), so the box and derivative bounds
+ * describe the surface the runtime will evaluate. */
+static sw_status convert_control(const sw_model_patch *mp, size_t index, float *pack_ctrl,
+                                 double *exact_out, sw_error *err)
+{
+    size_t points = (size_t)(mp->degree_u + 1) * (size_t)(mp->degree_v + 1);
+    for (size_t k = 0; k < points * 4; k++) {
+        double d = (k % 4 == 3 && !mp->rational) ? 1.0 : mp->ctrl[k];
+        float f = (float)d;
+        if (!isfinite(f))
+            return sw_error_set(err, SW_ERR_RANGE, "patch %zu: control point %zu.%c = %g is "
+                                "not a finite float", index, k / 4, "xyzw"[k % 4], d);
+        if (k % 4 == 3 && !(f > 0.0f))
+            return sw_error_set(err, SW_ERR_RANGE, "patch %zu: control point %zu has weight %g, "
+                                "expected > 0 as a float", index, k / 4, d);
+        pack_ctrl[k] = f;
+        exact_out[k] = f;
+    }
+    return SW_OK;
+}
+
+static sw_status convert_patch(const sw_model *model, size_t i, uint32_t first_control,
+                               sw_pack_patch *pp, float *pack_ctrl, sw_error *err)
+{
+    const sw_model_patch *mp = &model->patches[i];
+    double exact[SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER * 4];
+    sw_status s = convert_control(mp, i, pack_ctrl, exact, err);
+    if (s != SW_OK)
+        return s;
+    sw_bezier_patch view = { mp->degree_u, mp->degree_v, mp->rational != 0, exact };
+    sw_deriv_bounds d2;
+    if ((s = sw_bezier_second_deriv_bounds(&view, &d2, err)) != SW_OK) {
+        sw_error_prefix(err, "patch %zu", i);
+        return s;
+    }
+    sw_box box = sw_bezier_control_box(&view);
+    *pp = (sw_pack_patch){ .first_control = first_control, .degree_u = (uint8_t)mp->degree_u,
+                           .degree_v = (uint8_t)mp->degree_v,
+                           .flags = mp->rational ? SW_PATCH_RATIONAL : 0,
+                           .part = (uint32_t)mp->part };
+    /* Exact: the box corners are control coordinates, already floats. */
+    const double lo[3] = { box.min.x, box.min.y, box.min.z }, hi[3] = { box.max.x, box.max.y,
+                                                                          box.max.z };
+    const double bound[3] = { d2.uu, d2.uv, d2.vv };
+    for (int k = 0; k < 3; k++) {
+        pp->box_min[k] = (float)lo[k];
+        pp->box_max[k] = (float)hi[k];
+        pp->d2_bound[k] = float_up(bound[k]);
+        if (!isfinite(pp->d2_bound[k]))
+            return sw_error_set(err, SW_ERR_RANGE, "patch %zu: second derivative bound %g does "
+                                "not fit a float", i, bound[k]);
+    }
+    return SW_OK;
+}
+
+/* Checks what the pack format cannot hold and counts control points. */
+static sw_status check_model(const sw_model *model, uint64_t *control_count, sw_error *err)
+{
+    if (model->part_count > UINT32_MAX || model->patch_count > UINT32_MAX)
+        return sw_error_set(err, SW_ERR_RANGE, "model: %zu parts, %zu patches; a pack holds at "
+                            "most %u of each", model->part_count, model->patch_count, UINT32_MAX);
+    uint64_t total = 0;
+    for (size_t i = 0; i < model->patch_count; i++) {
+        const sw_model_patch *p = &model->patches[i];
+        if (p->degree_u < 1 || p->degree_u > SW_BEZIER_MAX_DEGREE || p->degree_v < 1 ||
+            p->degree_v > SW_BEZIER_MAX_DEGREE)
+            return sw_error_set(err, SW_ERR_UNSUPPORTED, "patch %zu: degree %d x %d, a pack "
+                                "holds 1..%d", i, p->degree_u, p->degree_v, SW_BEZIER_MAX_DEGREE);
+        if (p->part >= model->part_count)
+            return sw_error_set(err, SW_ERR_RANGE, "patch %zu: part %zu of %zu", i, p->part,
+                                model->part_count);
+        total += (uint64_t)(p->degree_u + 1) * (uint64_t)(p->degree_v + 1);
+    }
+    if (total > UINT32_MAX)
+        return sw_error_set(err, SW_ERR_RANGE, "model: %llu control points; a pack holds at "
+                            "most %u", (unsigned long long)total, UINT32_MAX);
+    *control_count = total;
+    return SW_OK;
+}
+
+static void add_box(sw_pack_meta *m, const sw_pack_patch *p, int first)
+{
+    for (int k = 0; k < 3; k++) {
+        m->box_min[k] = first || p->box_min[k] < m->box_min[k] ? p->box_min[k] : m->box_min[k];
+        m->box_max[k] = first || p->box_max[k] > m->box_max[k] ? p->box_max[k] : m->box_max[k];
+    }
+}
+
+static sw_status fill_contents(const sw_model *model, sw_pack_part *parts, sw_pack_patch *patches,
+                               float *control, sw_pack_meta *m, sw_error *err)
+{
+    sw_status s = convert_parts(model, parts, err);
+    uint32_t next = 0;
+    for (size_t i = 0; s == SW_OK && i < model->patch_count; i++) {
+        s = convert_patch(model, i, next, &patches[i], control + (size_t)next * 4, err);
+        next += (uint32_t)(model->patches[i].degree_u + 1) * (uint32_t)(model->patches[i].degree_v + 1);
+        if (s == SW_OK)
+            add_box(m, &patches[i], i == 0);
+    }
+    return s;
+}
+
+sw_status sw_pack_contents_from_model(const sw_model *model, sw_pack_contents *out, sw_error *err)
+{
+    memset(out, 0, sizeof *out);
+    uint64_t control_count = 0;
+    sw_status s = check_model(model, &control_count, err);
+    if (s != SW_OK)
+        return s;
+    sw_pack_meta *m = &out->meta;
+    m->part_count = (uint32_t)model->part_count;
+    m->patch_count = (uint32_t)model->patch_count;
+    m->control_count = (uint32_t)control_count;
+    m->units = SW_UNITS_UNSPECIFIED; /* the model does not record units */
+    m->model_tolerance = isfinite(model->model_tolerance) && model->model_tolerance > 0
+                             ? model->model_tolerance : 0.0f;
+    /* calloc(n + 1) so an empty model still gets a pointer to free. */
+    sw_pack_part *parts = calloc(model->part_count + 1, sizeof *parts);
+    sw_pack_patch *patches = calloc(model->patch_count + 1, sizeof *patches);
+    float *control = calloc((size_t)control_count * 4 + 1, sizeof *control);
+    out->parts = parts;
+    out->patches = patches;
+    out->control = control;
+    if (!parts || !patches || !control)
+        s = sw_error_set(err, SW_ERR_NO_MEMORY, "model: cannot allocate pack arrays for %zu "
+                         "patches", model->patch_count);
+    if (s == SW_OK)
+        s = fill_contents(model, parts, patches, control, m, err);
+    sw_pack_adjacency *adjacency = NULL;
+    if (s == SW_OK)
+        s = sw_pack_find_adjacency(model, &adjacency, &m->adjacency_count, err);
+    out->adjacency = adjacency;
+    if (s != SW_OK)
+        sw_pack_contents_free(out);
+    return s;
+}
+
+void sw_pack_contents_free(sw_pack_contents *contents)
+{
+    free((void *)contents->parts);
+    free((void *)contents->patches);
+    free((void *)contents->control);
+    free((void *)contents->adjacency);
+    memset(contents, 0, sizeof *contents);
+}
+
+static sw_status write_all(int fd, const uint8_t *bytes, size_t size, sw_error *err)
+{
+    size_t done = 0;
+    while (done < size) {
+        ssize_t w = write(fd, bytes + done, size - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0)
+            return sw_error_set(err, SW_ERR_IO, "write failed after %zu of %zu bytes: %s", done,
+                                size, w < 0 ? strerror(errno) : "no progress");
+        done += (size_t)w;
+    }
+    return SW_OK;
+}
+
+/* Makes the rename itself durable; the new file is complete either way, so a
+ * failure here is not reported. */
+static void sync_parent_dir(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    char dir[4096] = ".";
+    if (slash && (size_t)(slash - path) < sizeof dir) {
+        size_t n = slash == path ? 1 : (size_t)(slash - path);
+        memcpy(dir, path, n);
+        dir[n] = '\0';
+    }
+    int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd >= 0) {
+        fsync(fd);
+        close(fd);
+    }
+}
+
+static sw_status write_temp(int fd, const char *tmp, const uint8_t *bytes, size_t size,
+                            sw_error *err)
+{
+    sw_status s = write_all(fd, bytes, size, err);
+    /* mkstemp creates 0600; a pack is read by the runtime, often as another user. */
+    if (s == SW_OK && fchmod(fd, 0644) != 0)
+        s = sw_error_set(err, SW_ERR_IO, "chmod %s: %s", tmp, strerror(errno));
+    if (s == SW_OK && fsync(fd) != 0)
+        s = sw_error_set(err, SW_ERR_IO, "fsync %s: %s", tmp, strerror(errno));
+    if (close(fd) != 0 && s == SW_OK)
+        s = sw_error_set(err, SW_ERR_IO, "close %s: %s", tmp, strerror(errno));
+    return s;
+}
+
+sw_status sw_write_file_atomic(const char *path, const uint8_t *bytes, size_t size, sw_error *err)
+{
+    size_t len = strlen(path);
+    char *tmp = malloc(len + sizeof ".tmp-XXXXXX");
+    if (!tmp)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: cannot allocate a temporary name", path);
+    memcpy(tmp, path, len);
+    memcpy(tmp + len, ".tmp-XXXXXX", sizeof ".tmp-XXXXXX");
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        sw_status s = sw_error_set(err, SW_ERR_IO, "%s: cannot create a temporary file: %s",
+                                   path, strerror(errno));
+        free(tmp);
+        return s;
+    }
+    sw_status s = write_temp(fd, tmp, bytes, size, err);
+    if (s == SW_OK && rename(tmp, path) != 0)
+        s = sw_error_set(err, SW_ERR_IO, "rename from %s: %s", tmp, strerror(errno));
+    if (s != SW_OK) {
+        unlink(tmp);
+        sw_error_prefix(err, "%s", path);
+    } else {
+        sync_parent_dir(path);
+    }
+    free(tmp);
+    return s;
+}

@@ -10,24 +10,13 @@
 
 static const char axis_name[4] = { 'x', 'y', 'z', 'w' };
 
-/* Strict UTF-8 (no overlong forms, no surrogates, at most U+10FFFF), so a
- * part name can go to any text renderer as it is. Returns the byte offset of
- * the first bad sequence, or -1. */
+/* Offset of the first byte of s[0..n) that does not start a valid UTF-8
+ * sequence, or -1 when all of it is valid. */
 static int utf8_error_at(const unsigned char *s, size_t n)
 {
-    size_t i = 0;
-    while (i < n) {
-        unsigned c = s[i];
-        size_t len = c < 0x80 ? 1 : (c >= 0xC2 && c <= 0xDF) ? 2 : (c >= 0xE0 && c <= 0xEF) ? 3
-                                 : (c >= 0xF0 && c <= 0xF4) ? 4 : 0;
-        if (len == 0 || len > n - i)
-            return (int)i;
-        for (size_t k = 1; k < len; k++)
-            if ((s[i + k] & 0xC0) != 0x80)
-                return (int)i;
-        unsigned c1 = s[i + 1];
-        if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 > 0x9F) || (c == 0xF0 && c1 < 0x90) ||
-            (c == 0xF4 && c1 > 0x8F))
+    for (size_t i = 0; i < n;) {
+        size_t len = sw_utf8_sequence_length(s + i, n - i);
+        if (len == 0)
             return (int)i;
         i += len;
     }

@@ -1,7 +1,9 @@
-/* Internal to the pack reader (sw_pack_read.c): the checks of the records
- * themselves, run once the header, the section table and every checksum have
- * been verified and each view's byte size matches its META count. Split out
- * so each file keeps one job: sw_pack_read.c the container, this the model. */
+/* Internal to the pack format code: the checks of the records themselves,
+ * which sw_pack_read.c runs once the header, the section table and every
+ * checksum have been verified and each view's byte size matches its META
+ * count, and two small rules the writer (assets/sw_pack_write.c) shares.
+ * Split out so each file keeps one job: sw_pack_read.c the container,
+ * sw_pack_validate.c the records. */
 #ifndef SW_PACK_VALIDATE_H
 #define SW_PACK_VALIDATE_H
 
@@ -16,6 +18,27 @@ static inline uint32_t sw_pack_edge_points(const sw_pack_patch *patch, uint32_t 
 {
     return (edge == SW_EDGE_V0 || edge == SW_EDGE_V1) ? patch->degree_u + 1u
                                                       : patch->degree_v + 1u;
+}
+
+/* Length of the valid UTF-8 sequence at s (n bytes available), or 0 when
+ * there is none: strict, so no overlong forms, no surrogates, nothing past
+ * U+10FFFF. Part names must be valid so any text renderer can show them; the
+ * writer uses this to repair names cut short by the 55-byte limit. */
+static inline size_t sw_utf8_sequence_length(const unsigned char *s, size_t n)
+{
+    unsigned c = s[0];
+    size_t len = c < 0x80 ? 1 : (c >= 0xC2 && c <= 0xDF) ? 2 : (c >= 0xE0 && c <= 0xEF) ? 3
+                            : (c >= 0xF0 && c <= 0xF4) ? 4 : 0;
+    if (len == 0 || len > n)
+        return 0;
+    for (size_t k = 1; k < len; k++)
+        if ((s[k] & 0xC0) != 0x80)
+            return 0;
+    unsigned c1 = len > 1 ? s[1] : 0;
+    if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 > 0x9F) || (c == 0xF0 && c1 < 0x90) ||
+        (c == 0xF4 && c1 > 0x8F))
+        return 0;
+    return len;
 }
 
 #endif
