@@ -1,1 +1,4 @@
 # tests of the pack area
+sw_add_test(test_pack SOURCES test_pack.c LIBS sw_assets sw_core)
+sw_add_fuzz_target(fuzz_pack SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pack.c LIBS sw_core
+  CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack)

@@ -1,0 +1,78 @@
+/* Fuzz target for sw_pack_open_memory. Each input is tried twice: as it is,
+ * and with every checksum recomputed, because random mutations almost never
+ * keep an XXH3 checksum valid and would otherwise stop at the first
+ * checksum, never reaching the record checks behind it. An accepted pack is
+ * walked end to end, so a view the validator let out of bounds shows up
+ * under AddressSanitizer. */
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <xxhash.h>
+
+#include "sw_pack.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+static volatile float sink;
+
+static void walk(const sw_pack *pack)
+{
+    float sum = 0;
+    for (uint32_t i = 0; i < pack->meta->patch_count; i++) {
+        const sw_pack_patch *p = &pack->patches[i];
+        size_t n = (size_t)(p->degree_u + 1) * (size_t)(p->degree_v + 1);
+        const float *c = &pack->control[(size_t)p->first_control * 4];
+        for (size_t k = 0; k < n * 4; k++)
+            sum += c[k];
+        sum += pack->parts[p->part].color[0];
+    }
+    for (uint32_t i = 0; i < pack->meta->part_count; i++)
+        sum += (float)strlen(pack->parts[i].name);
+    for (uint32_t i = 0; i < pack->meta->adjacency_count; i++)
+        sum += pack->patches[pack->adjacency[i].patch_a].box_min[0] +
+               pack->patches[pack->adjacency[i].patch_b].box_max[0];
+    sink = sum;
+}
+
+/* Recomputes what it can: section checksums whose ranges lie in the buffer,
+ * then the header checksum if the table fits. Touches nothing else. */
+static void reseal(uint8_t *buf, size_t size)
+{
+    sw_pack_header h;
+    memcpy(&h, buf, sizeof h);
+    if (h.section_count > SW_PACK_MAX_SECTIONS || 64 + (size_t)h.section_count * 32 > size)
+        return;
+    for (uint32_t i = 0; i < h.section_count; i++) {
+        sw_pack_section s;
+        memcpy(&s, buf + 64 + (size_t)i * 32, sizeof s);
+        if (s.offset <= size && s.size <= size - s.offset) {
+            s.checksum = XXH3_64bits(buf + s.offset, (size_t)s.size);
+            memcpy(buf + 64 + (size_t)i * 32, &s, sizeof s);
+        }
+    }
+    h.header_checksum = 0;
+    memcpy(buf, &h, sizeof h);
+    h.header_checksum = XXH3_64bits(buf, 64 + (size_t)h.section_count * 32);
+    memcpy(buf, &h, sizeof h);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    uint8_t *buf = malloc(size ? size : 1); /* malloc: aligned for any type */
+    if (!buf)
+        return 0;
+    if (size)
+        memcpy(buf, data, size);
+    sw_pack pack;
+    sw_error err;
+    if (sw_pack_open_memory(buf, size, &pack, &err) == SW_OK)
+        walk(&pack);
+    if (size >= sizeof(sw_pack_header)) {
+        reseal(buf, size);
+        if (sw_pack_open_memory(buf, size, &pack, &err) == SW_OK)
+            walk(&pack);
+    }
+    free(buf);
+    return 0;
+}
