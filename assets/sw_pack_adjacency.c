@@ -253,7 +253,8 @@ sw_status sw_pack_find_adjacency(const sw_model *model, sw_pack_adjacency **out,
         return sw_error_set(err, SW_ERR_RANGE, "adjacency: %zu pairs, a pack holds at most %u",
                             f.pair_count, UINT32_MAX);
     }
-    qsort(f.pairs, f.pair_count, sizeof *f.pairs, compare_pairs);
+    if (f.pair_count > 1) /* pairs is NULL when none were found */
+        qsort(f.pairs, f.pair_count, sizeof *f.pairs, compare_pairs);
     *out = f.pairs;
     *count = (uint32_t)f.pair_count;
     return SW_OK;
