@@ -1,1 +1,16 @@
-# tests of the assets area
+# tests of the assets area: host model, importers, scenes, seamwalk-pack
+sw_add_test(test_import SOURCES test_import.c LIBS sw_assets sw_core
+  ARGS ${SW_SAMPLES} ${SW_SHARED_MODELS})
+sw_add_test(test_scene SOURCES test_scene.c LIBS sw_assets sw_core ARGS ${SW_SAMPLES})
+
+sw_add_fuzz_target(fuzz_newell SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_newell.c
+  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/newell)
+sw_add_fuzz_target(fuzz_bpt SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_bpt.c
+  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/bpt)
+# Scenes name model files; the fuzzer's resolve against the bundled samples.
+sw_add_fuzz_target(fuzz_scene SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_scene.c
+  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/scene)
+target_compile_definitions(fuzz_scene_replay PRIVATE SW_FUZZ_SCENE_DIR="${SW_SAMPLES}")
+if(TARGET fuzz_scene)
+  target_compile_definitions(fuzz_scene PRIVATE SW_FUZZ_SCENE_DIR="${SW_SAMPLES}")
+endif()

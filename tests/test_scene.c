@@ -1,0 +1,307 @@
+/* Specification of showroom scene files (sw_scene.h).
+ * Usage: test_scene SAMPLES_DIR (run in a scratch folder: it writes files). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "sw_scene.h"
+#include "sw_test.h"
+
+static const char *samples_dir;
+
+/* Loads a scene from an exactly sized heap copy (no NUL terminator, so
+ * reading past the end trips AddressSanitizer), resolving against samples. */
+static sw_status load(const char *text, sw_model *model, sw_error *err)
+{
+    size_t size = strlen(text);
+    char *copy = malloc(size ? size : 1);
+    memcpy(copy, text, size);
+    sw_status st = sw_scene_load_memory(copy, size, "s.ini", samples_dir, model, err);
+    free(copy);
+    return st;
+}
+
+static void write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "wb");
+    SW_CHECK_MSG(f != NULL, "cannot write %s", path);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
+static void check_error(sw_status st, const sw_error *err, sw_status want, const char *piece1,
+                        const char *piece2)
+{
+    SW_CHECK_MSG(st == want, "status %s, want %s (%s)", sw_status_name(st), sw_status_name(want),
+                 err->message);
+    SW_CHECK_MSG(strstr(err->message, piece1) != NULL, "'%s' not in '%s'", piece1, err->message);
+    if (piece2)
+        SW_CHECK_MSG(strstr(err->message, piece2) != NULL, "'%s' not in '%s'", piece2,
+                     err->message);
+}
+
+static const double *first_ctrl(const sw_model *m, size_t part)
+{
+    return m->patches[m->parts[part].first_patch].ctrl;
+}
+
+static void teaset_sample_has_three_parts_standing_on_one_floor(void)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/teaset.ini", samples_dir);
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(sw_scene_load(path, &m, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(m.part_count == 3 && m.patch_count == 28 + 26 + 16);
+    if (m.part_count != 3) {
+        sw_model_free(&m);
+        return;
+    }
+    static const char *const names[3] = {"teapot", "teacup", "teaspoon"};
+    static const size_t patches[3] = {28, 26, 16};
+    for (size_t p = 0; p < 3; p++) {
+        SW_CHECK(strcmp(m.parts[p].name, names[p]) == 0);
+        SW_CHECK(m.parts[p].patch_count == patches[p]);
+        double min_y = INFINITY;
+        const sw_model_part *part = &m.parts[p];
+        for (size_t i = part->first_patch; i < part->first_patch + part->patch_count; i++) {
+            for (int k = 0; k < 16; k++)
+                min_y = fmin(min_y, m.patches[i].ctrl[4 * k + 1]);
+        }
+        SW_CHECK_NEAR(min_y, 0.0, 1e-6);
+    }
+    SW_CHECK(m.parts[0].color[0] == 0.16f && m.parts[0].color[2] == 0.62f);
+    SW_CHECK(m.parts[0].color[3] == 1.0f);
+    sw_box box = sw_model_box(&m);
+    SW_CHECK(box.max.z > 1.0 && box.min.x < -0.8);
+    sw_model_free(&m);
+}
+
+/* scale 2, then 90 degrees about z, then translate: the saddle's first point
+ * (-1, 1.5, -1.5) becomes (-2, 3, -3), then (-3, -2, -3), then (7, -2, -6). */
+static void transforms_apply_scale_then_rotate_then_translate(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(load("[part s]\nfile = saddle.bpt\ntranslate = 10 0 -3\nscale = 2\n"
+                      "rotate = 0 0 1 90\n",
+                      &m, &err) == SW_OK,
+                 "%s", err.message);
+    if (m.part_count == 1) {
+        const double *c = first_ctrl(&m, 0);
+        SW_CHECK_NEAR(c[0], 7.0, 1e-12);
+        SW_CHECK_NEAR(c[1], -2.0, 1e-12);
+        SW_CHECK_NEAR(c[2], -6.0, 1e-12);
+        SW_CHECK(c[3] == 1.0);
+    }
+    sw_model_free(&m);
+}
+
+static void scale_and_translate_are_exact(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK(load("[part s]\nfile = saddle.bpt\nscale = 2 4 0.5\ntranslate = 1 2 3\n", &m,
+                  &err) == SW_OK);
+    if (m.part_count == 1) {
+        const double *c = first_ctrl(&m, 0); /* (-1, 1.5, -1.5) */
+        SW_CHECK(c[0] == -1.0 && c[1] == 8.0 && c[2] == 2.25);
+    }
+    sw_model_free(&m);
+}
+
+static void rotation_is_right_handed_in_degrees(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    /* about +y by 90: +x goes to -z */
+    SW_CHECK(load("[part s]\nfile = saddle.bpt\nrotate = 0 2 0 90\n", &m, &err) == SW_OK);
+    if (m.part_count == 1) {
+        const double *c = m.patches[0].ctrl + 4 * 2; /* (1, -1.5, -1.5) */
+        SW_CHECK_NEAR(c[0], -1.5, 1e-12);
+        SW_CHECK_NEAR(c[1], -1.5, 1e-12);
+        SW_CHECK_NEAR(c[2], -1.0, 1e-12);
+    }
+    sw_model_free(&m);
+}
+
+static void colours_names_and_defaults(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK(load("# two parts\n[part first one]\nfile = saddle.bpt\ncolor = 0.25 0.5 1 0.75"
+                  "  ; translucent\n\n[part second]\nfile=saddle.bpt\n",
+                  &m, &err) == SW_OK);
+    SW_CHECK(m.part_count == 2);
+    if (m.part_count == 2) {
+        SW_CHECK(strcmp(m.parts[0].name, "first one") == 0);
+        SW_CHECK(m.parts[0].color[0] == 0.25f && m.parts[0].color[1] == 0.5f);
+        SW_CHECK(m.parts[0].color[2] == 1.0f && m.parts[0].color[3] == 0.75f);
+        float want[4];
+        sw_scene_default_color(1, want);
+        SW_CHECK(memcmp(m.parts[1].color, want, sizeof want) == 0);
+        SW_CHECK(m.parts[1].first_patch == 2 && m.parts[1].patch_count == 2);
+    }
+    sw_model_free(&m);
+}
+
+static void files_resolve_against_the_scene_folder(void)
+{
+    /* the test runs in a scratch folder: a scene here naming a file here */
+    write_file("here.bpt", "1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 7\n");
+    write_file("here.ini", "[part h]\nfile = here.bpt\n");
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(sw_scene_load("here.ini", &m, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(m.patch_count == 1 && m.patches[0].ctrl[14] == 7);
+    sw_model_free(&m);
+    /* an absolute path ignores the base folder */
+    char text[4096], cwd[1024] = "";
+    if (samples_dir[0] != '/')
+        SW_CHECK(getcwd(cwd, sizeof cwd) != NULL);
+    snprintf(text, sizeof text, "[part a]\nfile = %s%s%s/saddle.bpt\n", cwd, cwd[0] ? "/" : "",
+             samples_dir);
+    sw_model_init(&m);
+    SW_CHECK(sw_scene_load_memory(text, strlen(text), "a.ini", "/nonexistent", &m, &err) ==
+             SW_OK);
+    SW_CHECK(m.patch_count == 2);
+    sw_model_free(&m);
+}
+
+static void errors_name_file_and_line(void)
+{
+    static const struct {
+        const char *text;
+        sw_status status;
+        const char *piece1, *piece2;
+    } cases[] = {
+        {"[part a]\nfile = saddle.bpt\ncolour = 1 0 0\n", SW_ERR_FORMAT, "s.ini:3:",
+         "unknown key 'colour'"},
+        {"[part a]\nfile = saddle.bpt\nscale = big\n", SW_ERR_FORMAT, "s.ini:3:",
+         "scale: 'big' is not a finite number"},
+        {"[part a]\nfile = saddle.bpt\nscale = 1 2\n", SW_ERR_FORMAT, "s.ini:3:",
+         "expected 1 or 3 numbers"},
+        {"[part a]\nfile = saddle.bpt\nscale = 0\n", SW_ERR_RANGE, "s.ini:3:", "not be zero"},
+        {"[part a]\nfile = saddle.bpt\ntranslate = 1 2\n", SW_ERR_FORMAT, "s.ini:3:",
+         "translate: expected 3 numbers, found 2"},
+        {"[part a]\nfile = saddle.bpt\ntranslate = 1 2 3 4\n", SW_ERR_FORMAT, "s.ini:3:",
+         "at most 3"},
+        {"[part a]\nfile = saddle.bpt\nrotate = 0 0 0 90\n", SW_ERR_RANGE, "s.ini:3:", "axis"},
+        {"[part a]\nfile = saddle.bpt\ncolor = 1 0 2\n", SW_ERR_RANGE, "s.ini:3:",
+         "color: 2 is outside 0..1"},
+        {"[part a]\nfile = saddle.bpt\ncolor = 1 0 nan\n", SW_ERR_FORMAT, "s.ini:3:", "nan"},
+        {"\n[part a]\nfile = nope.txt\n", SW_ERR_IO, "s.ini:3: part 'a':", "nope.txt"},
+        {"[part a]\nfile = saddle.igs\n", SW_ERR_UNSUPPORTED, "s.ini:2: part 'a':", ".igs"},
+        {"[part a]\nscale = 2\n", SW_ERR_FORMAT, "s.ini:1:", "part 'a' has no file"},
+        {"[part a]\nfile = saddle.bpt\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:3:",
+         "given twice"},
+        {"[part a]\nfile = saddle.bpt\n[part a]\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:3:",
+         "already defined at line 1"},
+        {"[part a]\n[part b]\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "no keys"},
+        {"[part b]\nfile = saddle.bpt\n[part c]\n", SW_ERR_FORMAT, "s.ini:3:", "no keys"},
+        {"[view a]\neye = 0 0 0\n", SW_ERR_FORMAT, "s.ini:1:", "unknown section [view a]"},
+        {"[part]\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "no name"},
+        {"[party a]\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "unknown section"},
+        {"file = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "outside any section"},
+        {"[part a\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "']'"},
+        {"[part a]\nfile saddle.bpt\n", SW_ERR_FORMAT, "s.ini:2:", "key = value"},
+        {"[part a]\nfile = saddle.bpt\n  scale = 2\n", SW_ERR_FORMAT, "s.ini:3:", "indentation"},
+        {"; nothing\n", SW_ERR_FORMAT, "s.ini:", "at least one [part NAME]"},
+        {"", SW_ERR_FORMAT, "s.ini:", "at least one"},
+        {"[part a]\nfile = saddle.bpt\n[part this name is much too long for a pack part name]\n"
+         "file = saddle.bpt\n",
+         SW_ERR_FORMAT, "s.ini:3:", "longer than 49"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        sw_model m;
+        sw_model_init(&m);
+        sw_error err = {0};
+        sw_status st = load(cases[k].text, &m, &err);
+        check_error(st, &err, cases[k].status, cases[k].piece1, cases[k].piece2);
+        sw_model_free(&m);
+    }
+}
+
+static void long_lines_and_nul_bytes_are_errors(void)
+{
+    char text[600];
+    int n = snprintf(text, sizeof text, "[part a]\nfile = saddle.bpt\n; ");
+    memset(text + n, 'x', 300);
+    text[n + 300] = '\0';
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    check_error(load(text, &m, &err), &err, SW_ERR_FORMAT, "s.ini:3:", "line longer than");
+    sw_model_free(&m);
+    const char with_nul[] = "[part a]\nfile = sad\0dle.bpt\n";
+    sw_model_init(&m);
+    check_error(sw_scene_load_memory(with_nul, sizeof with_nul - 1, "s.ini", samples_dir, &m,
+                                     &err),
+                &err, SW_ERR_FORMAT, "s.ini:2:", "NUL");
+    sw_model_free(&m);
+}
+
+static void errors_inside_part_files_name_both_files(void)
+{
+    write_file("broken.bpt", "1\n1 1\n0 0 0\n1 0 0\n0 one 0\n1 1 1\n");
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    sw_status st = sw_scene_load_memory("[part b]\nfile = broken.bpt\n", 26, "b.ini", ".", &m,
+                                        &err);
+    check_error(st, &err, SW_ERR_FORMAT, "b.ini:2: part 'b': ./broken.bpt:5:3:",
+                "expected control point y, found 'one'");
+    sw_model_free(&m);
+    sw_model_init(&m);
+    check_error(sw_scene_load("no_such_scene.ini", &m, &err), &err, SW_ERR_IO,
+                "no_such_scene.ini", "cannot open");
+    sw_model_free(&m);
+}
+
+static void import_file_picks_the_importer_by_extension(void)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/teacup.txt", samples_dir);
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK(sw_scene_import_file(path, &m, &err) == SW_OK && m.patch_count == 26);
+    write_file("SPOON.BPT", "1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n");
+    SW_CHECK(sw_scene_import_file("SPOON.BPT", &m, &err) == SW_OK && m.patch_count == 27);
+    check_error(sw_scene_import_file("x.step", &m, &err), &err, SW_ERR_UNSUPPORTED, "x.step",
+                "unsupported");
+    check_error(sw_scene_import_file("noext", &m, &err), &err, SW_ERR_UNSUPPORTED, "noext",
+                NULL);
+    SW_CHECK(sw_scene_is_scene_path("a/b/TEASET.INI") && !sw_scene_is_scene_path("a.ini/b"));
+    sw_model_free(&m);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "usage: test_scene SAMPLES_DIR\n");
+        return 2;
+    }
+    samples_dir = argv[1];
+    SW_RUN(teaset_sample_has_three_parts_standing_on_one_floor);
+    SW_RUN(transforms_apply_scale_then_rotate_then_translate);
+    SW_RUN(scale_and_translate_are_exact);
+    SW_RUN(rotation_is_right_handed_in_degrees);
+    SW_RUN(colours_names_and_defaults);
+    SW_RUN(files_resolve_against_the_scene_folder);
+    SW_RUN(errors_name_file_and_line);
+    SW_RUN(long_lines_and_nul_bytes_are_errors);
+    SW_RUN(errors_inside_part_files_name_both_files);
+    SW_RUN(import_file_picks_the_importer_by_extension);
+    return sw_test_finish();
+}
