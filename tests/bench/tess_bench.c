@@ -1,0 +1,507 @@
+/* Tessellation benchmark: seamwalk's uniform bicubic grid against GLU's NURBS
+ * tessellator, on the Newell teaset and on a grid of random bicubic patches,
+ * at the same object-space tolerance (a fraction of the model's size).
+ *
+ * Both sides produce positions and normals. seamwalk: sw_tess_segments_for_error
+ * + sw_tess_grid per patch, timed; the second-derivative bounds are computed
+ * before timing because the pack builder stores them (the runtime never
+ * recomputes them). GLU: GLU_NURBS_TESSELLATOR mode with
+ * GLU_OBJECT_PARAMETRIC_ERROR sampling, triangles counted in the callbacks,
+ * normals generated because a normal callback is set (GLU's surface evaluator
+ * turns auto-normals on exactly then). GLU needs a desktop compatibility
+ * context (it pushes GL_EVAL_BIT), which sw_egl_headless provides headless.
+ *
+ * Usage: tess_bench [--quick] [--repeats N] [--json FILE] [--samples DIR]
+ * Prints figures; never fails on timing, only when a side cannot run. */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L   /* clock_gettime */
+#endif
+#include <GL/gl.h>
+#include <GL/glu.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "sw_bezier.h"
+#include "sw_egl_headless.h"
+#include "sw_import_newell.h"
+#include "sw_model.h"
+#include "sw_tess.h"
+
+#ifndef SW_SAMPLES_DIR
+#define SW_SAMPLES_DIR "assets/samples"
+#endif
+
+enum { MAX_REPEATS = 31, MAX_RESULTS = 16 };
+
+/* One bicubic patch in both forms the two tessellators take. */
+typedef struct bench_patch {
+    float ctrl[64];            /* sw_bezier_patch layout: (j * 4 + i) * 4 + xyzw */
+    sw_deriv_bounds bounds;
+} bench_patch;
+
+typedef struct bench_model {
+    const char *name;
+    bench_patch *patches;
+    size_t count;
+    double size;               /* control-box diagonal: tolerances are fractions of it */
+} bench_model;
+
+typedef struct timing {
+    double median_s, min_s, max_s;
+    uint64_t triangles, normals, capped;
+} timing;
+
+typedef struct result {
+    const char *model;
+    size_t patches;
+    double size, tol_rel, tol_abs;
+    timing sw, glu;
+} result;
+
+typedef struct options {
+    int quick, repeats;
+    const char *json_path;
+    const char *samples;
+} options;
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- models ---------------------------------------------------------------- */
+
+static int add_patch(bench_model *m, const double *ctrl, sw_error *err)
+{
+    bench_patch *p = &m->patches[m->count];
+    for (int k = 0; k < 64; k++)
+        p->ctrl[k] = (float)ctrl[k];
+    /* Bounds of the float patch, the one both tessellators see. */
+    double exact[64];
+    sw_bezier_patchf pf = { 3, 3, 0, p->ctrl };
+    sw_bezier_patch pd = sw_bezier_patch_from_float(&pf, exact);
+    if (sw_bezier_second_deriv_bounds(&pd, &p->bounds, err) != SW_OK)
+        return 0;
+    m->count++;
+    return 1;
+}
+
+static void measure_size(bench_model *m)
+{
+    double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+    for (size_t i = 0; i < m->count; i++)
+        for (int c = 0; c < 16; c++)
+            for (int k = 0; k < 3; k++) {
+                double x = m->patches[i].ctrl[c * 4 + k];
+                lo[k] = x < lo[k] ? x : lo[k];
+                hi[k] = x > hi[k] ? x : hi[k];
+            }
+    m->size = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+/* The teaset through the project's importer; 0 (and a note) when the sample
+ * files are not there, so the random grid still runs. */
+static int load_teaset(const char *dir, bench_model *m)
+{
+    static const char *const files[3] = { "teapot.txt", "teacup.txt", "teaspoon.txt" };
+    sw_model model;
+    sw_model_init(&model);
+    sw_error err = { 0 };
+    for (int f = 0; f < 3; f++) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", dir, files[f]);
+        if (sw_model_begin_part(&model, files[f], NULL, &err) != SW_OK ||
+            sw_import_newell_file(path, &model, &err) != SW_OK) {
+            printf("teaset: skipped (%s)\n", err.message);
+            sw_model_free(&model);
+            return 0;
+        }
+    }
+    m->name = "teaset";
+    m->patches = calloc(model.patch_count, sizeof *m->patches);
+    m->count = 0;
+    int ok = m->patches != NULL;
+    for (size_t i = 0; ok && i < model.patch_count; i++)
+        ok = add_patch(m, model.patches[i].ctrl, &err);
+    sw_model_free(&model);
+    if (!ok) {
+        printf("teaset: skipped (%s)\n", err.message[0] ? err.message : "out of memory");
+        free(m->patches);
+        return 0;
+    }
+    measure_size(m);
+    return 1;
+}
+
+/* g x g unit cells, one bicubic per cell: x, y on the cell's 4 x 4 lattice,
+ * z random in [-0.5, 0.5] (xorshift, fixed seed, so every run is the same). */
+static int make_random_grid(int g, bench_model *m)
+{
+    uint64_t state = 0x2545F4914F6CDD1Dull;
+    m->name = "random-grid";
+    m->patches = calloc((size_t)g * (size_t)g, sizeof *m->patches);
+    m->count = 0;
+    if (!m->patches)
+        return 0;
+    sw_error err = { 0 };
+    for (int cy = 0; cy < g; cy++)
+        for (int cx = 0; cx < g; cx++) {
+            double ctrl[64];
+            for (int j = 0; j < 4; j++)
+                for (int i = 0; i < 4; i++) {
+                    state ^= state >> 12, state ^= state << 25, state ^= state >> 27;
+                    double r = (double)((state * 2685821657736338717ull) >> 11) / 9007199254740992.0;
+                    double *c = ctrl + (j * 4 + i) * 4;
+                    c[0] = cx + i / 3.0;
+                    c[1] = cy + j / 3.0;
+                    c[2] = r - 0.5;
+                    c[3] = 1.0;
+                }
+            if (!add_patch(m, ctrl, &err)) {
+                fprintf(stderr, "random grid: %s\n", err.message);
+                free(m->patches);
+                m->patches = NULL;
+                return 0;
+            }
+        }
+    measure_size(m);
+    return 1;
+}
+
+/* ---- seamwalk -------------------------------------------------------------- */
+
+typedef struct sw_buffers {
+    sw_vertex *verts;
+    uint16_t *indices;
+} sw_buffers;
+
+static void run_seamwalk(const bench_model *m, double tol, const sw_buffers *b, timing *t)
+{
+    uint64_t tris = 0, capped = 0, normals = 0;
+    for (size_t i = 0; i < m->count; i++) {
+        const bench_patch *p = &m->patches[i];
+        uint32_t nu, nv;
+        capped += !sw_tess_segments_for_error(&p->bounds, tol, &nu, &nv);
+        sw_bezier_patchf pf = { 3, 3, 0, p->ctrl };
+        sw_tess_grid(&pf, nu, nv, 0, b->verts, b->indices);
+        tris += 2ull * nu * nv;
+        normals += (uint64_t)(nu + 1) * (nv + 1);   /* one per grid vertex */
+    }
+    t->triangles = tris;
+    t->normals = normals;
+    t->capped = capped;
+}
+
+/* ---- GLU ------------------------------------------------------------------- */
+
+typedef struct glu_counter {
+    GLenum type;
+    uint64_t run, vertices, normals, triangles;
+    GLenum error;
+    float sink;                /* touches the data, as a real consumer would */
+} glu_counter;
+
+static uint64_t triangles_in(GLenum type, uint64_t n)
+{
+    switch (type) {
+    case GL_TRIANGLES: return n / 3;
+    case GL_TRIANGLE_STRIP:
+    case GL_TRIANGLE_FAN:
+    case GL_POLYGON: return n >= 3 ? n - 2 : 0;
+    case GL_QUAD_STRIP: return n >= 4 ? 2 * ((n - 2) / 2) : 0;
+    case GL_QUADS: return 2 * (n / 4);
+    default: return 0;   /* points and lines (trim curves) are not surface */
+    }
+}
+
+static void GLAPIENTRY glu_begin(GLenum type, void *data)
+{
+    glu_counter *c = data;
+    c->type = type;
+    c->run = 0;
+}
+
+static void GLAPIENTRY glu_vertex(GLfloat *v, void *data)
+{
+    glu_counter *c = data;
+    c->run++;
+    c->vertices++;
+    c->sink += v[0];
+}
+
+static void GLAPIENTRY glu_normal(GLfloat *n, void *data)
+{
+    glu_counter *c = data;
+    c->normals++;
+    c->sink += n[2];
+}
+
+static void GLAPIENTRY glu_end(void *data)
+{
+    glu_counter *c = data;
+    c->triangles += triangles_in(c->type, c->run);
+}
+
+static void GLAPIENTRY glu_error(GLenum code, void *data)
+{
+    glu_counter *c = data;
+    c->error = code;
+}
+
+/* A fresh tessellator per run, so no setting or cache carries over. */
+static GLUnurbs *glu_create(double tol, glu_counter *c)
+{
+    GLUnurbs *nurb = gluNewNurbsRenderer();
+    if (!nurb)
+        return NULL;
+    gluNurbsProperty(nurb, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR);
+    gluNurbsProperty(nurb, GLU_SAMPLING_METHOD, GLU_OBJECT_PARAMETRIC_ERROR);
+    gluNurbsProperty(nurb, GLU_PARAMETRIC_TOLERANCE, (GLfloat)tol);
+    /* Object-space sampling already turned GLU_AUTO_LOAD_MATRIX off and the
+     * sampling matrix to identity; loading matrices here would rescale it. */
+    gluNurbsProperty(nurb, GLU_CULLING, GL_FALSE);
+    gluNurbsCallbackData(nurb, c);
+    /* _GLUfuncptr is void (*)(void), which GCC lets any function pointer become. */
+    gluNurbsCallback(nurb, GLU_NURBS_BEGIN_DATA, (_GLUfuncptr)glu_begin);
+    gluNurbsCallback(nurb, GLU_NURBS_VERTEX_DATA, (_GLUfuncptr)glu_vertex);
+    gluNurbsCallback(nurb, GLU_NURBS_NORMAL_DATA, (_GLUfuncptr)glu_normal);
+    gluNurbsCallback(nurb, GLU_NURBS_END_DATA, (_GLUfuncptr)glu_end);
+    gluNurbsCallback(nurb, GLU_NURBS_ERROR, (_GLUfuncptr)glu_error);
+    return nurb;
+}
+
+/* A Bezier patch is a NURBS patch with knots {0,0,0,0,1,1,1,1}. Our layout
+ * steps 4 floats along u and 16 along v; GL_MAP2_VERTEX_3 reads x, y, z. */
+static void run_glu(const bench_model *m, GLUnurbs *nurb)
+{
+    static GLfloat knots[8] = { 0, 0, 0, 0, 1, 1, 1, 1 };
+    for (size_t i = 0; i < m->count; i++) {
+        gluBeginSurface(nurb);
+        gluNurbsSurface(nurb, 8, knots, 8, knots, 4, 16, (GLfloat *)m->patches[i].ctrl, 4, 4,
+                        GL_MAP2_VERTEX_3);
+        gluEndSurface(nurb);
+    }
+}
+
+/* ---- measurement ------------------------------------------------------------ */
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static void summarise(double *s, int n, timing *t)
+{
+    qsort(s, (size_t)n, sizeof *s, cmp_double);
+    t->min_s = s[0];
+    t->max_s = s[n - 1];
+    t->median_s = n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+}
+
+static void time_seamwalk(const bench_model *m, double tol, int repeats, const sw_buffers *b,
+                          timing *t)
+{
+    double s[MAX_REPEATS];
+    for (int r = 0; r < repeats; r++) {
+        double t0 = now_s();
+        run_seamwalk(m, tol, b, t);
+        s[r] = now_s() - t0;
+    }
+    summarise(s, repeats, t);
+}
+
+static int time_glu(const bench_model *m, double tol, int repeats, timing *t)
+{
+    double s[MAX_REPEATS];
+    for (int r = 0; r < repeats; r++) {
+        glu_counter c = { 0 };
+        GLUnurbs *nurb = glu_create(tol, &c);
+        if (!nurb) {
+            fprintf(stderr, "gluNewNurbsRenderer failed\n");
+            return 0;
+        }
+        double t0 = now_s();
+        run_glu(m, nurb);
+        s[r] = now_s() - t0;
+        gluDeleteNurbsRenderer(nurb);
+        if (c.error) {
+            fprintf(stderr, "GLU NURBS error %u: %s\n", (unsigned)c.error,
+                    (const char *)gluErrorString(c.error));
+            return 0;
+        }
+        t->triangles = c.triangles;
+        t->normals = c.normals;
+        t->capped = 0;
+        if (c.normals != c.vertices) {
+            fprintf(stderr, "GLU gave %llu normals for %llu vertices\n",
+                    (unsigned long long)c.normals, (unsigned long long)c.vertices);
+            return 0;
+        }
+    }
+    summarise(s, repeats, t);
+    return 1;
+}
+
+static double mtri_per_s(const timing *t)
+{
+    return t->median_s > 0 ? (double)t->triangles / t->median_s * 1e-6 : 0.0;
+}
+
+static void print_timing(const char *name, const timing *t)
+{
+    printf("  %-9s triangles %10llu  median %.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s",
+           name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s, mtri_per_s(t));
+    if (t->capped)
+        printf("  [%llu patches capped at %u segments]", (unsigned long long)t->capped,
+               SW_TESS_MAX_SEGMENTS);
+    printf("\n");
+}
+
+static void print_result(const result *r)
+{
+    printf("%s (%zu patches, size %.4g), tolerance %.0e of size = %.4g\n", r->model, r->patches,
+           r->size, r->tol_rel, r->tol_abs);
+    print_timing("seamwalk", &r->sw);
+    print_timing("glu", &r->glu);
+    double mt = mtri_per_s(&r->glu) > 0 ? mtri_per_s(&r->sw) / mtri_per_s(&r->glu) : 0.0;
+    double tr = r->glu.triangles ? (double)r->sw.triangles / (double)r->glu.triangles : 0.0;
+    double ti = r->glu.median_s > 0 ? r->sw.median_s / r->glu.median_s : 0.0;
+    printf("  ratio seamwalk/GLU: Mtri/s %.2f, triangles %.2f, time %.3f\n", mt, tr, ti);
+}
+
+/* ---- JSON ------------------------------------------------------------------ */
+
+static void json_timing(FILE *f, const char *name, const timing *t, int last)
+{
+    fprintf(f,
+            "      \"%s\": {\"triangles\": %llu, \"median_s\": %.9f, \"min_s\": %.9f, "
+            "\"max_s\": %.9f, \"mtri_per_s\": %.4f, \"capped_patches\": %llu}%s\n",
+            name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s,
+            mtri_per_s(t), (unsigned long long)t->capped, last ? "" : ",");
+}
+
+static int write_json(const char *path, const options *o, const char *renderer, const result *r,
+                      int n)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        perror(path);
+        return 0;
+    }
+    fprintf(f, "{\n  \"benchmark\": \"tess_bench\",\n  \"quick\": %s,\n  \"repeats\": %d,\n",
+            o->quick ? "true" : "false", o->repeats);
+    fprintf(f, "  \"gl_renderer\": \"%s\",\n  \"results\": [\n", renderer);
+    for (int i = 0; i < n; i++) {
+        double glu_rate = mtri_per_s(&r[i].glu);
+        fprintf(f, "    {\n      \"model\": \"%s\", \"patches\": %zu, \"size\": %.9g,\n",
+                r[i].model, r[i].patches, r[i].size);
+        fprintf(f, "      \"tolerance_rel\": %.3g, \"tolerance_abs\": %.9g,\n", r[i].tol_rel,
+                r[i].tol_abs);
+        json_timing(f, "seamwalk", &r[i].sw, 0);
+        json_timing(f, "glu", &r[i].glu, 0);
+        fprintf(f, "      \"ratio_mtri_per_s\": %.4f\n    }%s\n",
+                glu_rate > 0 ? mtri_per_s(&r[i].sw) / glu_rate : 0.0, i + 1 < n ? "," : "");
+    }
+    fprintf(f, "  ]\n}\n");
+    int ok = !ferror(f);
+    ok = (fclose(f) == 0) && ok;
+    if (!ok)
+        fprintf(stderr, "%s: write failed\n", path);
+    return ok;
+}
+
+/* ---- main ------------------------------------------------------------------ */
+
+static int parse_options(int argc, char **argv, options *o)
+{
+    *o = (options){ .repeats = 0, .samples = SW_SAMPLES_DIR };
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--quick"))
+            o->quick = 1;
+        else if (!strcmp(argv[i], "--json") && i + 1 < argc)
+            o->json_path = argv[++i];
+        else if (!strcmp(argv[i], "--samples") && i + 1 < argc)
+            o->samples = argv[++i];
+        else if (!strcmp(argv[i], "--repeats") && i + 1 < argc)
+            o->repeats = atoi(argv[++i]);
+        else {
+            fprintf(stderr,
+                    "usage: %s [--quick] [--repeats N] [--json FILE] [--samples DIR]\n", argv[0]);
+            return 0;
+        }
+    }
+    if (!o->repeats)
+        o->repeats = o->quick ? 3 : 7;
+    if (o->repeats < 1 || o->repeats > MAX_REPEATS) {
+        fprintf(stderr, "--repeats must be 1..%d\n", MAX_REPEATS);
+        return 0;
+    }
+    return 1;
+}
+
+static int bench_model_all(const bench_model *m, const options *o, const sw_buffers *b,
+                           result *out, int *n)
+{
+    static const double full[] = { 1e-2, 1e-3, 1e-4 };
+    static const double quick[] = { 1e-2 };
+    const double *tols = o->quick ? quick : full;
+    int count = o->quick ? 1 : 3;
+    for (int k = 0; k < count && *n < MAX_RESULTS; k++) {
+        result *r = &out[(*n)++];
+        *r = (result){ .model = m->name, .patches = m->count, .size = m->size,
+                       .tol_rel = tols[k], .tol_abs = tols[k] * m->size };
+        time_seamwalk(m, r->tol_abs, o->repeats, b, &r->sw);
+        if (!time_glu(m, r->tol_abs, o->repeats, &r->glu))
+            return 0;
+        if (!r->sw.triangles || !r->glu.triangles) {
+            fprintf(stderr, "%s: a tessellator produced no triangles\n", m->name);
+            return 0;
+        }
+        print_result(r);
+    }
+    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    if (!parse_options(argc, argv, &o))
+        return 2;
+    sw_egl_headless egl;
+    sw_error err = { 0 };
+    if (sw_egl_headless_init(&egl, SW_GL_API_DESKTOP, 16, 16, &err) != SW_OK) {
+        fprintf(stderr, "tess_bench: %s\n", err.message);
+        return 1;
+    }
+    printf("tess_bench: GL_RENDERER %s, %d repeats, median and min..max of them%s\n",
+           egl.renderer, o.repeats, o.quick ? " (quick)" : "");
+    sw_buffers b = {
+        .verts = malloc(sizeof(sw_vertex) * 65536),
+        .indices = malloc(sizeof(uint16_t) * 6 * SW_TESS_MAX_SEGMENTS * SW_TESS_MAX_SEGMENTS),
+    };
+    bench_model models[2] = { 0 };
+    int model_count = 0;
+    if (load_teaset(o.samples, &models[model_count]))
+        model_count++;
+    int ok = b.verts && b.indices && make_random_grid(o.quick ? 2 : 16, &models[model_count]);
+    model_count += ok;
+    result results[MAX_RESULTS];
+    int n = 0;
+    for (int i = 0; ok && i < model_count; i++)
+        ok = bench_model_all(&models[i], &o, &b, results, &n);
+    if (ok && o.json_path)
+        ok = write_json(o.json_path, &o, egl.renderer, results, n);
+    for (int i = 0; i < model_count; i++)
+        free(models[i].patches);
+    free(b.verts);
+    free(b.indices);
+    sw_egl_headless_destroy(&egl);
+    return ok ? 0 : 1;
+}
