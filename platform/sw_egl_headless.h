@@ -30,7 +30,8 @@ sw_status sw_egl_headless_init(sw_egl_headless *egl, sw_gl_api api, int width, i
 void sw_egl_headless_destroy(sw_egl_headless *egl);
 
 /* Reads the framebuffer into rgba (width * height * 4 bytes), top row first
- * (GL's bottom-up rows are flipped). Waits for rendering to finish. */
+ * (GL's bottom-up rows are flipped). Waits for rendering to finish.
+ * SW_ERR_UNSUPPORTED for the desktop variant, which has no framebuffer. */
 sw_status sw_egl_headless_read_rgba(const sw_egl_headless *egl, uint8_t *rgba, sw_error *err);
 
 #endif
