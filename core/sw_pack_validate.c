@@ -23,17 +23,27 @@ static int utf8_error_at(const unsigned char *s, size_t n)
     return -1;
 }
 
-static sw_status check_box(const char *rec, uint32_t i, const float *min, const float *max,
+enum { NO_INDEX = -1 };
+
+/* The box of record rec (index i, or NO_INDEX for META). The label is only
+ * formatted on failure: this runs once per patch at load time. */
+static sw_status check_box(const char *rec, int64_t i, const float *min, const float *max,
                            int need_ordered, sw_error *err)
 {
     for (int k = 0; k < 3; k++) {
-        if (!isfinite(min[k]) || !isfinite(max[k]))
-            return sw_error_set(err, SW_ERR_FORMAT, "%s[%u].box: %c range %g..%g is not finite",
-                                rec, (unsigned)i, axis_name[k], (double)min[k], (double)max[k]);
-        if (need_ordered && !(min[k] <= max[k]))
-            return sw_error_set(err, SW_ERR_FORMAT, "%s[%u].box: box_min.%c %g > box_max.%c %g",
-                                rec, (unsigned)i, axis_name[k], (double)min[k], axis_name[k],
-                                (double)max[k]);
+        int finite = isfinite(min[k]) && isfinite(max[k]);
+        if (finite && (!need_ordered || min[k] <= max[k]))
+            continue;
+        char label[32];
+        if (i == NO_INDEX)
+            snprintf(label, sizeof label, "%s", rec);
+        else
+            snprintf(label, sizeof label, "%s[%lld]", rec, (long long)i);
+        if (!finite)
+            return sw_error_set(err, SW_ERR_FORMAT, "%s.box: %c range %g..%g is not finite",
+                                label, axis_name[k], (double)min[k], (double)max[k]);
+        return sw_error_set(err, SW_ERR_FORMAT, "%s.box: box_min.%c %g > box_max.%c %g", label,
+                            axis_name[k], (double)min[k], axis_name[k], (double)max[k]);
     }
     return SW_OK;
 }
@@ -44,7 +54,7 @@ static sw_status validate_meta(const sw_pack_meta *m, sw_error *err)
         if (m->reserved[i] != 0)
             return sw_error_set(err, SW_ERR_FORMAT, "META.reserved[%zu]: 0x%02x, expected 0", i,
                                 m->reserved[i]);
-    sw_status s = check_box("META", 0, m->box_min, m->box_max, m->patch_count > 0, err);
+    sw_status s = check_box("META", NO_INDEX, m->box_min, m->box_max, m->patch_count > 0, err);
     if (s != SW_OK)
         return s;
     if (m->units > SW_UNITS_METRE)

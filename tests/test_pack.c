@@ -448,6 +448,15 @@ static void test_record_fields_out_of_range(void)
     s.patches[2].box_max[1] = 0.5f; /* the hull reaches y = 1 */
     expect_rejected(&s, SW_ERR_FORMAT, "PATCHES[2].box: control point");
     make_sample(&s);
+    s.meta.box_max[0] = NAN;
+    expect_rejected(&s, SW_ERR_FORMAT, "META.box: x range 0..nan is not finite");
+    make_sample(&s);
+    s.meta.box_max[2] = 0.1f; /* patch 0 reaches z = 0.3 */
+    expect_rejected(&s, SW_ERR_FORMAT, "PATCHES[0].box: z range 0..0.3 is outside META's");
+    make_sample(&s);
+    s.patches[1].box_min[0] = 2.0f;
+    expect_rejected(&s, SW_ERR_FORMAT, "PATCHES[1].box: box_min.x 2 > box_max.x 1");
+    make_sample(&s);
     s.patches[2].d2_bound[2] = -1.0f;
     expect_rejected(&s, SW_ERR_FORMAT, "PATCHES[2].d2_bound[2]: -1");
     make_sample(&s);
