@@ -14,3 +14,6 @@ target_compile_definitions(fuzz_scene_replay PRIVATE SW_FUZZ_SCENE_DIR="${SW_SAM
 if(TARGET fuzz_scene)
   target_compile_definitions(fuzz_scene PRIVATE SW_FUZZ_SCENE_DIR="${SW_SAMPLES}")
 endif()
+add_test(NAME test_pack_cli
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_pack_cli.sh $<TARGET_FILE:seamwalk-pack>
+          ${SW_SAMPLES} ${SW_SHARED_MODELS})
