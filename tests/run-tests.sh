@@ -17,8 +17,6 @@ run_suite() {  # run_suite BUILD_DIR CMAKE_ARGS...
 
 run_suite build -DCMAKE_BUILD_TYPE=Release
 if [ "${1:-}" = "--sanitizers" ]; then
-  # Mesa's own allocations at exit are not ours to fix; tests/lsan.supp names them.
-  export LSAN_OPTIONS="suppressions=$top/tests/lsan.supp:print_suppressions=0"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
   run_suite build-asan -DCMAKE_BUILD_TYPE=Debug -DSW_ASAN=ON
 fi

@@ -1,9 +1,6 @@
 /* The headless GLES2 display and the renderer, read back pixel by pixel.
  * One 64x48 context serves every case; the camera sits at the origin looking
  * down -z (model-view identity) with a 60 degree vertical field of view. */
-#define _GNU_SOURCE   /* dl_iterate_phdr, RTLD_NODELETE */
-#include <dlfcn.h>
-#include <link.h>
 #include <math.h>
 #include <string.h>
 
@@ -222,20 +219,6 @@ static void test_desktop_context_comes_up(void)
     SW_CHECK(d.display == NULL && d.context == NULL);
 }
 
-/* Mesa dlcloses its DRI driver in eglTerminate. Blocks the driver still
- * points to from its own globals then look leaked to LeakSanitizer, in an
- * "<unknown module>" no suppression can name (the driver is unmapped by the
- * time of the check). Keeping the driver loaded, as any program that exits
- * without eglTerminate does, keeps them reachable; leaks of ours still show. */
-static int pin_dri_driver(struct dl_phdr_info *info, size_t size, void *data)
-{
-    (void)size;
-    (void)data;
-    if (info->dlpi_name && strstr(info->dlpi_name, "/dri/"))
-        dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-    return 0;
-}
-
 int main(void)
 {
     sw_error err = { 0 };
@@ -243,7 +226,6 @@ int main(void)
     SW_CHECK_MSG(st == SW_OK, "%s", err.message);
     if (st != SW_OK)
         return sw_test_finish();
-    dl_iterate_phdr(pin_dri_driver, NULL);
     st = sw_renderer_init(&renderer, 1024, 3072, &err);
     SW_CHECK_MSG(st == SW_OK, "%s", err.message);
     if (st == SW_OK) {

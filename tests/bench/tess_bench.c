@@ -13,11 +13,9 @@
  *
  * Usage: tess_bench [--quick] [--repeats N] [--json FILE] [--samples DIR]
  * Prints figures; never fails on timing, only when a side cannot run. */
-#define _GNU_SOURCE   /* clock_gettime, dl_iterate_phdr, RTLD_NODELETE */
+#define _GNU_SOURCE   /* clock_gettime */
 #include <GL/gl.h>
 #include <GL/glu.h>
-#include <dlfcn.h>
-#include <link.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -417,18 +415,6 @@ static int write_json(const char *path, const options *o, const char *renderer, 
     return ok;
 }
 
-/* Mesa dlcloses its DRI driver in eglTerminate, after which LeakSanitizer
- * reports the driver's own bookkeeping as leaks in an unnameable "<unknown
- * module>" (test_render does the same). Keeping the driver mapped avoids it. */
-static int pin_dri_driver(struct dl_phdr_info *info, size_t size, void *data)
-{
-    (void)size;
-    (void)data;
-    if (info->dlpi_name && strstr(info->dlpi_name, "/dri/"))
-        dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-    return 0;
-}
-
 /* ---- main ------------------------------------------------------------------ */
 
 static int parse_options(int argc, char **argv, options *o)
@@ -492,7 +478,6 @@ int main(int argc, char **argv)
         fprintf(stderr, "tess_bench: %s\n", err.message);
         return 1;
     }
-    dl_iterate_phdr(pin_dri_driver, NULL);
     printf("tess_bench: GL_RENDERER %s, %d repeats, median and min..max of them%s\n",
            egl.renderer, o.repeats, o.quick ? " (quick)" : "");
     sw_buffers b = {
