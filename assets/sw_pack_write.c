@@ -190,6 +190,11 @@ static sw_status check_model(const sw_model *model, uint64_t *control_count, sw_
         if (p->part >= model->part_count)
             return sw_error_set(err, SW_ERR_RANGE, "patch %zu: part %zu of %zu", i, p->part,
                                 model->part_count);
+        /* The reader requires it; say so here, where the cause is visible. */
+        const sw_model_part *part = &model->parts[p->part];
+        if (i < part->first_patch || i - part->first_patch >= part->patch_count)
+            return sw_error_set(err, SW_ERR_RANGE, "patch %zu: outside its part %zu (patches "
+                                "%zu..+%zu)", i, p->part, part->first_patch, part->patch_count);
         total += (uint64_t)(p->degree_u + 1) * (uint64_t)(p->degree_v + 1);
     }
     if (total > UINT32_MAX)

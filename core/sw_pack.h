@@ -1,6 +1,6 @@
 /* The pack: seamwalk's preprocessed model file, version 1, and its reader.
- * Written by seamwalk-pack on the host (assets/pack_write.c), read here by the
- * runtime and the host tools. The format is specified in assets/PACK_FORMAT.md;
+ * Written by seamwalk-pack on the host (assets/sw_pack_write.c), read here by
+ * the runtime and the host tools (core/sw_pack_read.c, sw_pack_validate.c). The format is specified in assets/PACK_FORMAT.md;
  * the structs below are its on-disk records (little-endian, no padding; the
  * _Static_asserts in sw_pack_read.c pin every size and offset).
  *
@@ -35,7 +35,7 @@ typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
     uint32_t version;                 /* SW_PACK_VERSION */
     uint32_t byte_order;              /* SW_PACK_BYTE_ORDER_MARK */
     uint64_t total_size;              /* bytes in the file */
-    uint64_t runtime_bytes;           /* arena bytes the runtime needs for this pack */
+    uint64_t runtime_bytes;           /* sw_pack_runtime_bytes(total_size, patch_count) */
     uint32_t section_count;           /* 1..SW_PACK_MAX_SECTIONS */
     uint32_t section_table_offset;    /* 64: the table follows the header */
     uint64_t header_checksum;         /* XXH3-64 of header (this field 0) + section table */
@@ -112,8 +112,13 @@ typedef struct sw_pack {
  * both use it. */
 uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count);
 
-/* Validates everything and fills out. data must be 8-byte aligned and stay
- * alive as long as out is used. On failure err names the section or field. */
+/* Validates everything (every rule in PACK_FORMAT.md, "Validation rules")
+ * and fills out with views into data; nothing is copied or allocated. data
+ * must be 8-byte aligned (SW_ERR_ARG otherwise) and stay alive as long as out
+ * is used. On failure out is zeroed, and err holds one line naming the
+ * section or field: SW_ERR_FORMAT for malformed or truncated data,
+ * SW_ERR_VERSION, SW_ERR_CHECKSUM, SW_ERR_RANGE for an index or count out of
+ * range. */
 sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_error *err);
 
 /* Reads and checks only the 64-byte header of the file at path (magic,
@@ -122,7 +127,8 @@ sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_er
 sw_status sw_pack_read_header(const char *path, sw_pack_header *out, sw_error *err);
 
 /* Reads the whole file into the arena (64-byte aligned) and validates it.
- * Errors are prefixed with the path. */
+ * Errors are prefixed with the path; SW_ERR_NO_MEMORY when the arena cannot
+ * hold the file. On failure the arena is reset to where it was. */
 sw_status sw_pack_load(const char *path, sw_arena *arena, sw_pack *out, sw_error *err);
 
 const char *sw_section_type_name(uint32_t type); /* "META", ... or "unknown" */

@@ -1,0 +1,310 @@
+/* The pack writer: model conversion and adjacency, and writing files
+ * atomically. Run with --write-corpus DIR to (re)write the fuzz seeds in
+ * tests/fuzz/corpus/pack. */
+#include <signal.h>
+#include <stdint.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "sw_test.h"
+#include "pack_sample.h"
+
+/* ---- writing files ---- */
+
+static void test_write_atomic_replaces_existing_file(void)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s", scratch("replace.bin"));
+    write_plain(path, "old", 3);
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_write_file_atomic(path, (const uint8_t *)"new contents", 12, &err) == SW_OK,
+                 "%s", err.message);
+    SW_CHECK(file_holds(path, "new contents"));
+    struct stat st;
+    SW_CHECK(stat(path, &st) == 0 && (st.st_mode & 0777) == 0644);
+    SW_CHECK(leftover_temp_files() == 0);
+}
+
+static void test_write_atomic_failure_leaves_existing_file(void)
+{
+    char keep[256], path[300];
+    snprintf(keep, sizeof keep, "%s", scratch("keep.bin"));
+    write_plain(keep, "old", 3);
+    sw_error err = { 0 };
+    /* The parent is a file: no temporary file can be made. */
+    snprintf(path, sizeof path, "%s/child", keep);
+    SW_CHECK(sw_write_file_atomic(path, (const uint8_t *)"new", 3, &err) == SW_ERR_IO);
+    SW_CHECK_MSG(strstr(err.message, "temporary file"), "%s", err.message);
+    SW_CHECK(file_holds(keep, "old"));
+    /* The parent is missing. */
+    SW_CHECK(sw_write_file_atomic(scratch("no/such/dir/x"), (const uint8_t *)"new", 3, &err) ==
+             SW_ERR_IO);
+    /* The target is a directory: the rename fails after the data was written. */
+    SW_CHECK(mkdir(scratch("adir"), 0755) == 0);
+    SW_CHECK(sw_write_file_atomic(scratch("adir"), (const uint8_t *)"new", 3, &err) == SW_ERR_IO);
+    SW_CHECK_MSG(strstr(err.message, "rename"), "%s", err.message);
+    struct stat st;
+    SW_CHECK(stat(scratch("adir"), &st) == 0 && S_ISDIR(st.st_mode));
+    SW_CHECK(leftover_temp_files() == 0);
+}
+
+/* A write that fails half-way (file size limit, works as root too) must not
+ * touch the existing file and must not leave the temporary file behind. */
+static void test_write_atomic_failed_write_leaves_existing_file(void)
+{
+    char keep[256];
+    snprintf(keep, sizeof keep, "%s", scratch("limited.bin"));
+    write_plain(keep, "old", 3);
+    struct rlimit saved;
+    SW_CHECK(getrlimit(RLIMIT_FSIZE, &saved) == 0);
+    struct rlimit small = { .rlim_cur = 4096, .rlim_max = saved.rlim_max };
+    signal(SIGXFSZ, SIG_IGN); /* so write returns EFBIG instead of killing us */
+    SW_CHECK(setrlimit(RLIMIT_FSIZE, &small) == 0);
+    uint8_t *big = calloc(1, 65536);
+    sw_error err = { 0 };
+    sw_status st = sw_write_file_atomic(keep, big, 65536, &err);
+    setrlimit(RLIMIT_FSIZE, &saved);
+    signal(SIGXFSZ, SIG_DFL);
+    SW_CHECK(st == SW_ERR_IO);
+    SW_CHECK_MSG(strstr(err.message, "write failed after 4096 of 65536 bytes"), "%s", err.message);
+    SW_CHECK(file_holds(keep, "old"));
+    SW_CHECK(leftover_temp_files() == 0);
+    free(big);
+}
+
+/* ---- adjacency from a model ---- */
+
+/* Bicubic patch over [x0, x0+1] x [y0, y0+1] on the surface z = 0.2xy + dz;
+ * flip_v runs v downwards, so its u = 0 and u = 1 edges are reversed. */
+static void add_bicubic(sw_model *model, double x0, double y0, double dz, int flip_v)
+{
+    double ctrl[16 * 4];
+    for (int j = 0; j < 4; j++)
+        for (int i = 0; i < 4; i++) {
+            double *c = &ctrl[(j * 4 + i) * 4];
+            c[0] = x0 + i / 3.0;
+            c[1] = y0 + (flip_v ? 3 - j : j) / 3.0;
+            c[2] = 0.2 * c[0] * c[1] + dz;
+            c[3] = 1.0;
+        }
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_model_add_patch(model, 3, 3, 0, ctrl, &err) == SW_OK, "%s", err.message);
+}
+
+/* Runs the writer's model conversion; returns the adjacency count. */
+static uint32_t adjacency_of(const sw_model *model, sw_pack_adjacency *first)
+{
+    sw_pack_contents c;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_contents_from_model(model, &c, &err) == SW_OK, "%s", err.message);
+    uint32_t n = c.meta.adjacency_count;
+    if (n > 0 && first)
+        *first = c.adjacency[0];
+    sw_pack_contents_free(&c);
+    return n;
+}
+
+static void start_model(sw_model *model)
+{
+    sw_model_init(model);
+    sw_error err = { 0 };
+    const float grey[4] = { 0.5f, 0.5f, 0.5f, 1.0f };
+    SW_CHECK_MSG(sw_model_begin_part(model, "part", grey, &err) == SW_OK, "%s", err.message);
+}
+
+static void test_adjacency_finds_shared_edge(void)
+{
+    sw_model model;
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    add_bicubic(&model, 1, 0, 0, 0);
+    sw_pack_adjacency a = { 0 };
+    SW_CHECK(adjacency_of(&model, &a) == 1);
+    SW_CHECK(a.patch_a == 0 && a.edge_a == SW_EDGE_U1 && a.patch_b == 1 &&
+             a.edge_b == SW_EDGE_U0 && a.reversed == 0);
+    sw_model_free(&model);
+}
+
+static void test_adjacency_finds_reversed_edge(void)
+{
+    sw_model model;
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    add_bicubic(&model, 1, 0, 0, 1); /* right neighbour, its v running down */
+    sw_pack_adjacency a = { 0 };
+    SW_CHECK(adjacency_of(&model, &a) == 1);
+    SW_CHECK(a.patch_a == 0 && a.edge_a == SW_EDGE_U1 && a.patch_b == 1 &&
+             a.edge_b == SW_EDGE_U0 && a.reversed == 1);
+    sw_model_free(&model);
+    /* The neighbour above with v running down meets patch 0 with its own
+     * v = 1 row (y = 1), u running the same way: V1 against V1, not reversed. */
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    add_bicubic(&model, 0, 1, 0, 1);
+    SW_CHECK(adjacency_of(&model, &a) == 1);
+    SW_CHECK(a.patch_a == 0 && a.edge_a == SW_EDGE_V1 && a.patch_b == 1 &&
+             a.edge_b == SW_EDGE_V1 && a.reversed == 0);
+    sw_model_free(&model);
+}
+
+static void test_adjacency_skips_collapsed_edges(void)
+{
+    sw_model model;
+    start_model(&model);
+    /* Two bilinear triangles whose v = 1 edges both collapse to one pole,
+     * as the patches around the teapot's lid knob do. */
+    const double pole[3] = { 1.5, 1.5, 1.0 };
+    for (int p = 0; p < 2; p++) {
+        double ctrl[4 * 4] = { 2.0 * p, 0, 0, 1, 2.0 * p + 1, 0, 0, 1,
+                               pole[0], pole[1], pole[2], 1, pole[0], pole[1], pole[2], 1 };
+        sw_error err = { 0 };
+        SW_CHECK_MSG(sw_model_add_patch(&model, 1, 1, 0, ctrl, &err) == SW_OK, "%s", err.message);
+    }
+    SW_CHECK(adjacency_of(&model, NULL) == 0);
+    sw_model_free(&model);
+}
+
+static void test_adjacency_ignores_patches_apart(void)
+{
+    sw_model model;
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    add_bicubic(&model, 1, 0, 1e-6, 0); /* a gap of ~5e-7 of the diagonal */
+    SW_CHECK(adjacency_of(&model, NULL) == 0);
+    sw_model_free(&model);
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    add_bicubic(&model, 1, 0, 1e-11, 0); /* well inside 1e-9 of the diagonal */
+    SW_CHECK(adjacency_of(&model, NULL) == 1);
+    sw_model_free(&model);
+}
+
+static void test_adjacency_compares_weights(void)
+{
+    sw_model model;
+    start_model(&model);
+    double ctrl[4 * 4] = { 0, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 1, 1, 1, 0, 1 };
+    sw_error err = { 0 };
+    SW_CHECK(sw_model_add_patch(&model, 1, 1, 1, ctrl, &err) == SW_OK);
+    double right[4 * 4] = { 1, 0, 0, 2, 2, 0, 0, 1, 1, 1, 0, 1, 2, 1, 0, 1 };
+    SW_CHECK(sw_model_add_patch(&model, 1, 1, 1, right, &err) == SW_OK);
+    SW_CHECK(adjacency_of(&model, NULL) == 0); /* same positions, weight 2 against 1 */
+    sw_model_free(&model);
+    right[3] = 1;
+    start_model(&model);
+    SW_CHECK(sw_model_add_patch(&model, 1, 1, 1, ctrl, &err) == SW_OK);
+    SW_CHECK(sw_model_add_patch(&model, 1, 1, 1, right, &err) == SW_OK);
+    SW_CHECK(adjacency_of(&model, NULL) == 1);
+    sw_model_free(&model);
+}
+
+/* A 250 x 400 grid of bilinear patches: 100,000 patches, every inner edge
+ * shared once. Proves the candidate search is not quadratic. */
+static void test_adjacency_scales_to_100k_patches(void)
+{
+    enum { NX = 250, NY = 400 };
+    sw_model model;
+    start_model(&model);
+    sw_error err = { 0 };
+    for (int y = 0; y < NY; y++)
+        for (int x = 0; x < NX; x++) {
+            double ctrl[16] = { x, y, 0, 1, x + 1, y, 0, 1, x, y + 1, 0, 1, x + 1, y + 1, 0, 1 };
+            if (sw_model_add_patch(&model, 1, 1, 0, ctrl, &err) != SW_OK)
+                break;
+        }
+    SW_CHECK(model.patch_count == NX * NY);
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    uint32_t n = adjacency_of(&model, NULL);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double seconds = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    SW_CHECK_MSG(n == (NX - 1) * NY + NX * (NY - 1), "%u pairs", n);
+    SW_CHECK_MSG(seconds < 30.0, "%.1f s", seconds); /* quadratic would take hours */
+    printf("     100,000 patches: %u adjacencies in %.2f s\n", n, seconds);
+    sw_model_free(&model);
+}
+
+static void test_model_pack_opens_and_matches_model(void)
+{
+    sw_model model;
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    add_bicubic(&model, 1, 0, 0, 1);
+    sw_pack_contents c;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_contents_from_model(&model, &c, &err) == SW_OK, "%s", err.message);
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    SW_CHECK(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK);
+    sw_pack pack;
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.meta->patch_count == 2 && pack.meta->control_count == 32);
+    SW_CHECK(pack.meta->adjacency_count == 1 && pack.adjacency[0].reversed == 1);
+    SW_CHECK(pack.patches[1].first_control == 16 && pack.patches[1].box_min[0] == 1.0f);
+    SW_CHECK(pack.meta->box_max[0] == 2.0f && pack.meta->box_max[1] == 1.0f);
+    for (int k = 0; k < 64; k++)
+        SW_CHECK(pack.control[k] == (float)model.patches[0].ctrl[k]);
+    SW_CHECK(strcmp(pack.parts[0].name, "part") == 0 && pack.parts[0].patch_count == 2);
+    free(bytes);
+    sw_pack_contents_free(&c);
+    sw_model_free(&model);
+}
+
+/* ---- fuzz seeds ---- */
+
+static int write_corpus(const char *dir)
+{
+    sample s;
+    make_sample(&s);
+    size_t size = 0, grown_size = 0;
+    uint8_t *bytes = serialize_sample(&s, &size);
+    uint8_t *grown = add_unknown_section(bytes, size, &grown_size);
+    char path[512];
+    snprintf(path, sizeof path, "%s/sample.swpack", dir);
+    write_plain(path, bytes, size);
+    snprintf(path, sizeof path, "%s/unknown-section.swpack", dir);
+    write_plain(path, grown, grown_size);
+    free(grown);
+    free(bytes);
+    sw_model model;
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    add_bicubic(&model, 1, 0, 0, 1);
+    sw_pack_contents c;
+    sw_error err = { 0 };
+    if (sw_pack_contents_from_model(&model, &c, &err) != SW_OK ||
+        sw_pack_serialize(&c, &bytes, &size, &err) != SW_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    snprintf(path, sizeof path, "%s/two-patches.swpack", dir);
+    write_plain(path, bytes, size);
+    free(bytes);
+    sw_pack_contents_free(&c);
+    sw_model_free(&model);
+    return sw_test_failures ? 1 : 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 3 && strcmp(argv[1], "--write-corpus") == 0)
+        return write_corpus(argv[2]);
+    if (!mkdtemp(scratch_dir)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    SW_RUN(test_write_atomic_replaces_existing_file);
+    SW_RUN(test_write_atomic_failure_leaves_existing_file);
+    SW_RUN(test_write_atomic_failed_write_leaves_existing_file);
+    SW_RUN(test_adjacency_finds_shared_edge);
+    SW_RUN(test_adjacency_finds_reversed_edge);
+    SW_RUN(test_adjacency_skips_collapsed_edges);
+    SW_RUN(test_adjacency_ignores_patches_apart);
+    SW_RUN(test_adjacency_compares_weights);
+    SW_RUN(test_adjacency_scales_to_100k_patches);
+    SW_RUN(test_model_pack_opens_and_matches_model);
+    remove_scratch();
+    return sw_test_finish();
+}
