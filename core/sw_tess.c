@@ -8,15 +8,6 @@
  * control-point copies: keep it in mind for threads with small stacks. */
 enum { MAXO = SW_BEZIER_MAX_ORDER, MAXV = SW_TESS_MAX_SEGMENTS + 1 };
 
-/* Binomial coefficients C(n, i) for n <= 15, exact in double. */
-static double binomial(int n, int i)
-{
-    double c = 1;
-    for (int k = 1; k <= i; k++)
-        c = c * (n - i + k) / k;
-    return c;
-}
-
 /* B^n_i(a / segs), i = 0..n, as C(n, i) * (s^(n-i) * t^i) with t = a / segs and
  * s = (segs - a) / segs each divided exactly: index segs - a swaps s and t,
  * so the values are bit-symmetric and a reversed edge sees the same numbers. */
@@ -29,8 +20,13 @@ static void bernstein(int n, uint32_t a, uint32_t segs, float *out)
         tp[k] = tp[k - 1] * t;
         sp[k] = sp[k - 1] * s;
     }
-    for (int i = 0; i <= n; i++)
-        out[i] = (float)(binomial(n, i) * (sp[n - i] * tp[i]));
+    /* C(n, i) by the recurrence C(n, i + 1) = C(n, i) (n - i) / (i + 1),
+     * exact in double for n <= 15. */
+    double c = 1;
+    for (int i = 0; i <= n; i++) {
+        out[i] = (float)(c * (sp[n - i] * tp[i]));
+        c = c * (n - i) / (i + 1);
+    }
 }
 
 /* sum_i b[i] x[i * stride], i = 0..n, added in pairs from both ends inward:
@@ -66,9 +62,17 @@ typedef struct tess_patch {
     float pts[MAXO][MAXO][4];
     float local[MAXO][MAXO][4];  /* rational only: w (P - c), w */
     float dv[MAXO][MAXO - 1][4]; /* from local (rational) or pts (polynomial) */
-    float bu[MAXV][MAXO];        /* B^n_i(a / nu) */
-    float bud[MAXV][MAXO - 1];   /* B^(n-1)_i(a / nu): the hodograph's basis */
+    /* Indexed [i][a], contiguous along the grid row so the column loops
+     * below vectorise. */
+    float bu[MAXO][MAXV];        /* B^n_i(a / nu) */
+    float bud[MAXO - 1][MAXV];   /* B^(n-1)_i(a / nu): the hodograph's basis */
 } tess_patch;
+
+/* One grid row's results before packing, a float per column a. */
+enum { PX, PY, PZ, UX, UY, UZ, VX, VY, VZ, W, LX, LY, LZ, COLS };
+typedef struct tess_cols {
+    float c[COLS][MAXV];
+} tess_cols;
 
 /* One row of the grid (v fixed) reduced to curves along u. */
 typedef struct tess_row {
@@ -108,8 +112,13 @@ static void prepare_patch(const sw_bezier_patchf *patch, uint32_t nu, tess_patch
             for (int k = 0; k < 4; k++)
                 tp->dv[i][j][k] = d[i][j + 1][k] - d[i][j][k];
     for (uint32_t a = 0; a <= nu; a++) {
-        bernstein(n, a, nu, tp->bu[a]);
-        bernstein(n - 1, a, nu, tp->bud[a]);
+        float bv[MAXO], bd[MAXO];
+        bernstein(n, a, nu, bv);
+        bernstein(n - 1, a, nu, bd);
+        for (int i = 0; i <= n; i++)
+            tp->bu[i][a] = bv[i];
+        for (int i = 0; i < n; i++)
+            tp->bud[i][a] = bd[i];
     }
 }
 
@@ -154,97 +163,136 @@ static __attribute__((noinline)) void fallback_normal(const sw_bezier_patchf *pa
     out[3] = 0;
 }
 
-/* Writes the normal of du x dv; returns 0 when it is degenerate: du and dv
- * (nearly) parallel, or one of them below 1e-5 of the other (noise). */
-static inline int write_normal(float ux, float uy, float uz, float vx, float vy, float vz,
-                               sw_vertex *out)
+/* Column-wise sym_sum: out[a] = sum_i b[i][a] x[i * stride] with exactly
+ * sym_sum's order of operations for every a. */
+static void sym_cols(const float (*b)[MAXV], const float *x, int stride, int n, uint32_t cnt,
+                     float *restrict out)
 {
-    float cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-    float cc = cx * cx + cy * cy + cz * cz;
-    float uu = ux * ux + uy * uy + uz * uz, vv = vx * vx + vy * vy + vz * vz;
-    if (!(cc > 1e-8f * uu * vv) || !(uu > 1e-10f * vv) || !(vv > 1e-10f * uu))
-        return 0;
-    float inv = 1.0f / sqrtf(cc);
-    out->normal[0] = pack_snorm(cx * inv);
-    out->normal[1] = pack_snorm(cy * inv);
-    out->normal[2] = pack_snorm(cz * inv);
-    out->normal[3] = 0;
-    return 1;
+    float x0 = x[0], xn = x[n * stride];
+    const float *b0 = b[0], *bn = b[n];
+    for (uint32_t a = 0; a < cnt; a++)
+        out[a] = b0[a] * x0 + bn[a] * xn;
+    int lo = 1, hi = n - 1;
+    for (; lo < hi; lo++, hi--) {
+        float xl = x[lo * stride], xh = x[hi * stride];
+        const float *bl = b[lo], *bh = b[hi];
+        for (uint32_t a = 0; a < cnt; a++)
+            out[a] += bl[a] * xl + bh[a] * xh;
+    }
+    if (lo == hi) {
+        float xl = x[lo * stride];
+        const float *bl = b[lo];
+        for (uint32_t a = 0; a < cnt; a++)
+            out[a] += bl[a] * xl;
+    }
+}
+
+/* Column-wise dot_sum over count terms. */
+static void dot_cols(const float (*b)[MAXV], const float *x, int stride, int count, uint32_t cnt,
+                     float *restrict out)
+{
+    for (uint32_t a = 0; a < cnt; a++)
+        out[a] = 0;
+    for (int i = 0; i < count; i++) {
+        float xi = x[i * stride];
+        const float *bi = b[i];
+        for (uint32_t a = 0; a < cnt; a++)
+            out[a] += bi[a] * xi;
+    }
+}
+
+/* Packs one row: positions as they are, normals from du x dv. A normal is
+ * degenerate when du and dv are (nearly) parallel or one is below 1e-5 of
+ * the other (rounding noise at a collapsed edge); those take the double
+ * evaluator's limit normal. */
+static void finish_row(const tess_patch *tp, tess_cols *restrict t, uint32_t nu, uint32_t b,
+                       uint32_t nv, sw_vertex *out)
+{
+    float *ux = t->c[UX], *uy = t->c[UY], *uz = t->c[UZ];
+    float *vx = t->c[VX], *vy = t->c[VY], *vz = t->c[VZ];
+    float *cx = t->c[W], *cy = t->c[LX], *cz = t->c[LY], *ok = t->c[LZ];
+    for (uint32_t a = 0; a <= nu; a++) {
+        float x = uy[a] * vz[a] - uz[a] * vy[a], y = uz[a] * vx[a] - ux[a] * vz[a];
+        float z = ux[a] * vy[a] - uy[a] * vx[a];
+        float cc = x * x + y * y + z * z;
+        float uu = ux[a] * ux[a] + uy[a] * uy[a] + uz[a] * uz[a];
+        float vv = vx[a] * vx[a] + vy[a] * vy[a] + vz[a] * vz[a];
+        int good = cc > 1e-8f * uu * vv && uu > 1e-10f * vv && vv > 1e-10f * uu;
+        cx[a] = x, cy[a] = y, cz[a] = z;
+        ok[a] = good ? cc : 0.0f;
+    }
+    for (uint32_t a = 0; a <= nu; a++) {
+        sw_vertex *o = &out[a];
+        o->pos[0] = t->c[PX][a], o->pos[1] = t->c[PY][a], o->pos[2] = t->c[PZ][a];
+        if (!(ok[a] > 0)) {
+            fallback_normal(tp->src, (double)a / nu, (double)b / nv, o->normal);
+            continue;
+        }
+        float inv = 1.0f / sqrtf(ok[a]);
+        o->normal[0] = pack_snorm(cx[a] * inv);
+        o->normal[1] = pack_snorm(cy[a] * inv);
+        o->normal[2] = pack_snorm(cz[a] * inv);
+        o->normal[3] = 0;
+    }
 }
 
 /* Generic polynomial row: tensor sums with the precomputed u tables. */
-static void row_polynomial(const tess_patch *tp, const tess_row *row, uint32_t nu, uint32_t b,
-                           uint32_t nv, sw_vertex *out)
+static void row_polynomial(const tess_patch *tp, const tess_row *row, uint32_t nu,
+                           tess_cols *t)
 {
     int n = tp->n;
-    for (uint32_t a = 0; a <= nu; a++) {
-        const float *bu = tp->bu[a], *bud = tp->bud[a];
-        sw_vertex *o = &out[a];
-        o->pos[0] = sym_sum(bu, &row->q[0][0], 4, n);
-        o->pos[1] = sym_sum(bu, &row->q[0][1], 4, n);
-        o->pos[2] = sym_sum(bu, &row->q[0][2], 4, n);
-        float ux = dot_sum(bud, &row->dq[0][0], 4, n), uy = dot_sum(bud, &row->dq[0][1], 4, n);
-        float uz = dot_sum(bud, &row->dq[0][2], 4, n);
-        float vx = dot_sum(bu, &row->qv[0][0], 4, n + 1);
-        float vy = dot_sum(bu, &row->qv[0][1], 4, n + 1);
-        float vz = dot_sum(bu, &row->qv[0][2], 4, n + 1);
-        if (!write_normal(ux, uy, uz, vx, vy, vz, o))
-            fallback_normal(tp->src, (double)a / nu, (double)b / nv, o->normal);
+    for (int k = 0; k < 3; k++) {
+        sym_cols(tp->bu, &row->q[0][k], 4, n, nu + 1, t->c[PX + k]);
+        dot_cols(tp->bud, &row->dq[0][k], 4, n, nu + 1, t->c[UX + k]);
+        dot_cols(tp->bu, &row->qv[0][k], 4, n + 1, nu + 1, t->c[VX + k]);
     }
 }
 
 /* Generic rational row: homogeneous sums, one division for the position and
- * the quotient rule (without the common 1/w) for the normal's direction. */
-static void row_rational(const tess_patch *tp, const tess_row *row, uint32_t nu, uint32_t b,
-                         uint32_t nv, sw_vertex *out)
+ * the quotient rule F_u ~ X_u - w_u F (the common 1/w dropped, it does not
+ * turn the normal) on the copy translated to the hull centre. */
+static void row_rational(const tess_patch *tp, const tess_row *row, uint32_t nu, tess_cols *t)
 {
     int n = tp->n;
-    for (uint32_t a = 0; a <= nu; a++) {
-        const float *bu = tp->bu[a], *bud = tp->bud[a];
-        sw_vertex *o = &out[a];
-        float x[4], l[3], du[4], dv[4];
-        for (int k = 0; k < 4; k++) {
-            x[k] = sym_sum(bu, &row->q[0][k], 4, n);
-            du[k] = dot_sum(bud, &row->dq[0][k], 4, n);
-            dv[k] = dot_sum(bu, &row->qv[0][k], 4, n + 1);
+    uint32_t cnt = nu + 1;
+    float du_w[MAXV], dv_w[MAXV];
+    sym_cols(tp->bu, &row->q[0][3], 4, n, cnt, t->c[W]);
+    dot_cols(tp->bud, &row->dq[0][3], 4, n, cnt, du_w);
+    dot_cols(tp->bu, &row->qv[0][3], 4, n + 1, cnt, dv_w);
+    for (int k = 0; k < 3; k++) {
+        float *p = t->c[PX + k], *l = t->c[LX + k], *u = t->c[UX + k], *v = t->c[VX + k];
+        const float *w = t->c[W];
+        sym_cols(tp->bu, &row->q[0][k], 4, n, cnt, p);
+        dot_cols(tp->bu, &row->ql[0][k], 4, n + 1, cnt, l);
+        dot_cols(tp->bud, &row->dq[0][k], 4, n, cnt, u);
+        dot_cols(tp->bu, &row->qv[0][k], 4, n + 1, cnt, v);
+        for (uint32_t a = 0; a < cnt; a++) {
+            float inv_w = 1.0f / w[a];
+            p[a] *= inv_w;
+            u[a] -= du_w[a] * (l[a] * inv_w);
+            v[a] -= dv_w[a] * (l[a] * inv_w);
         }
-        float inv_w = 1.0f / x[3];
-        for (int k = 0; k < 3; k++) {
-            o->pos[k] = x[k] * inv_w;
-            l[k] = dot_sum(bu, &row->ql[0][k], 4, n + 1) * inv_w;
-        }
-        /* F_u ~ X_u - w_u F (quotient rule without the 1/w), on the translated copy. */
-        if (!write_normal(du[0] - du[3] * l[0], du[1] - du[3] * l[1], du[2] - du[3] * l[2],
-                          dv[0] - dv[3] * l[0], dv[1] - dv[3] * l[1], dv[2] - dv[3] * l[2], o))
-            fallback_normal(tp->src, (double)a / nu, (double)b / nv, o->normal);
     }
 }
 
 /* Bicubic polynomial row, unrolled. Positions use sym_sum's exact order. */
-static void row_bicubic(const tess_patch *tp, const tess_row *row, uint32_t nu, uint32_t b,
-                        uint32_t nv, sw_vertex *out)
+static void row_bicubic(const tess_patch *tp, const tess_row *row, uint32_t nu,
+                        tess_cols *restrict t)
 {
     const float(*q)[4] = row->q, (*dq)[4] = row->dq, (*qv)[4] = row->qv;
-    for (uint32_t a = 0; a <= nu; a++) {
-        const float *bu = tp->bu[a], *bud = tp->bud[a];
-        float b0 = bu[0], b1 = bu[1], b2 = bu[2], b3 = bu[3];
-        float d0 = bud[0], d1 = bud[1], d2 = bud[2];
-        sw_vertex *o = &out[a];
-        float px = b0 * q[0][0] + b3 * q[3][0];
-        float py = b0 * q[0][1] + b3 * q[3][1];
-        float pz = b0 * q[0][2] + b3 * q[3][2];
-        px += b1 * q[1][0] + b2 * q[2][0];
-        py += b1 * q[1][1] + b2 * q[2][1];
-        pz += b1 * q[1][2] + b2 * q[2][2];
-        o->pos[0] = px, o->pos[1] = py, o->pos[2] = pz;
-        float ux = d0 * dq[0][0] + d1 * dq[1][0] + d2 * dq[2][0];
-        float uy = d0 * dq[0][1] + d1 * dq[1][1] + d2 * dq[2][1];
-        float uz = d0 * dq[0][2] + d1 * dq[1][2] + d2 * dq[2][2];
-        float vx = b0 * qv[0][0] + b1 * qv[1][0] + b2 * qv[2][0] + b3 * qv[3][0];
-        float vy = b0 * qv[0][1] + b1 * qv[1][1] + b2 * qv[2][1] + b3 * qv[3][1];
-        float vz = b0 * qv[0][2] + b1 * qv[1][2] + b2 * qv[2][2] + b3 * qv[3][2];
-        if (!write_normal(ux, uy, uz, vx, vy, vz, o))
-            fallback_normal(tp->src, (double)a / nu, (double)b / nv, o->normal);
+    const float *b0 = tp->bu[0], *b1 = tp->bu[1], *b2 = tp->bu[2], *b3 = tp->bu[3];
+    const float *d0 = tp->bud[0], *d1 = tp->bud[1], *d2 = tp->bud[2];
+    for (int k = 0; k < 3; k++) {
+        float q0 = q[0][k], q1 = q[1][k], q2 = q[2][k], q3 = q[3][k];
+        float e0 = dq[0][k], e1 = dq[1][k], e2 = dq[2][k];
+        float v0 = qv[0][k], v1 = qv[1][k], v2 = qv[2][k], v3 = qv[3][k];
+        float *p = t->c[PX + k], *u = t->c[UX + k], *v = t->c[VX + k];
+        for (uint32_t a = 0; a <= nu; a++) {
+            float s = b0[a] * q0 + b3[a] * q3;
+            p[a] = s + (b1[a] * q1 + b2[a] * q2);
+            u[a] = d0[a] * e0 + d1[a] * e1 + d2[a] * e2;
+            v[a] = b0[a] * v0 + b1[a] * v1 + b2[a] * v2 + b3[a] * v3;
+        }
     }
 }
 
@@ -273,17 +321,18 @@ void sw_tess_grid(const sw_bezier_patchf *patch, uint32_t nu, uint32_t nv, uint3
 {
     tess_patch tp;
     tess_row row;
+    tess_cols cols;
     prepare_patch(patch, nu, &tp);
     int bicubic = !patch->rational && patch->degree_u == 3 && patch->degree_v == 3;
     for (uint32_t b = 0; b <= nv; b++) {
-        sw_vertex *out = verts + (size_t)b * (nu + 1);
         prepare_row(&tp, b, nv, &row);
         if (bicubic)
-            row_bicubic(&tp, &row, nu, b, nv, out);
+            row_bicubic(&tp, &row, nu, &cols);
         else if (patch->rational)
-            row_rational(&tp, &row, nu, b, nv, out);
+            row_rational(&tp, &row, nu, &cols);
         else
-            row_polynomial(&tp, &row, nu, b, nv, out);
+            row_polynomial(&tp, &row, nu, &cols);
+        finish_row(&tp, &cols, nu, b, nv, verts + (size_t)b * (nu + 1));
     }
     write_indices(nu, nv, base_vertex, indices);
 }
