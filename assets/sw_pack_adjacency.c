@@ -84,7 +84,10 @@ static int edge_collapsed(const finder *f, const sw_model_patch *p, int edge)
 
 static int64_t cell_coord(const finder *f, double x, int axis)
 {
-    return (int64_t)floor((x - f->origin[axis]) / f->cell_size);
+    double c = floor((x - f->origin[axis]) / f->cell_size);
+    /* Within the box c is at most 2.5e8; clamp anyway, since converting an
+     * out-of-range double to an integer is undefined behaviour. */
+    return c > -4e18 ? (c < 4e18 ? (int64_t)c : (int64_t)4e18) : (int64_t)-4e18;
 }
 
 static size_t cell_hash(const int64_t c[3])
