@@ -1,5 +1,6 @@
 #include "sw_bezier.h"
 
+#include <assert.h>
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -129,6 +130,8 @@ static void eval_plain(const sw_bezier_patch *patch, double u, double v, sw_eval
 void sw_bezier_eval(const sw_bezier_patch *patch, double u, double v, sw_eval_order order,
                     sw_surface_point *out)
 {
+    assert(patch->degree_u >= 1 && patch->degree_u <= SW_BEZIER_MAX_DEGREE);
+    assert(patch->degree_v >= 1 && patch->degree_v <= SW_BEZIER_MAX_DEGREE);
     eval_plain(patch, u, v, order, out);
     if (order == SW_EVAL_POINT || sw_v3_dot(out->normal, out->normal) > 0)
         return;

@@ -1,11 +1,12 @@
 #include "sw_tess.h"
 
+#include <assert.h>
 #include <math.h>
 #include <string.h>
 
-/* Float Bernstein tables and sums. Stack use of sw_tess_grid is bounded by
- * the u tables below (about 32 KB at degree 15, 7 KB bicubic) plus a few KB of
- * control-point copies: keep it in mind for threads with small stacks. */
+/* Float Bernstein tables and sums. sw_tess_grid keeps its tables on the
+ * stack, about 60 KB (u tables 32 KB, one row's columns 13 KB, control-point
+ * copies 12 KB): keep it in mind for threads with small stacks. */
 enum { MAXO = SW_BEZIER_MAX_ORDER, MAXV = SW_TESS_MAX_SEGMENTS + 1 };
 
 /* B^n_i(a / segs), i = 0..n, as C(n, i) * (s^(n-i) * t^i) with t = a / segs and
@@ -319,6 +320,10 @@ sw_tess_sizes sw_tess_grid_sizes(uint32_t nu, uint32_t nv)
 void sw_tess_grid(const sw_bezier_patchf *patch, uint32_t nu, uint32_t nv, uint32_t base_vertex,
                   sw_vertex *verts, uint16_t *indices)
 {
+    assert(nu >= 1 && nu <= SW_TESS_MAX_SEGMENTS && nv >= 1 && nv <= SW_TESS_MAX_SEGMENTS);
+    assert(base_vertex + (nu + 1) * (nv + 1) <= 65536u);
+    assert(patch->degree_u >= 1 && patch->degree_u <= SW_BEZIER_MAX_DEGREE);
+    assert(patch->degree_v >= 1 && patch->degree_v <= SW_BEZIER_MAX_DEGREE);
     tess_patch tp;
     tess_row row;
     tess_cols cols;
