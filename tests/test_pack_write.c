@@ -254,6 +254,9 @@ static void test_model_pack_opens_and_matches_model(void)
 
 /* ---- fuzz seeds ---- */
 
+/* Named without .swpack, which .gitignore keeps out of the repository for
+ * generated packs; these few are committed on purpose. */
+
 static int write_corpus(const char *dir)
 {
     sample s;
@@ -262,9 +265,9 @@ static int write_corpus(const char *dir)
     uint8_t *bytes = serialize_sample(&s, &size);
     uint8_t *grown = add_unknown_section(bytes, size, &grown_size);
     char path[512];
-    snprintf(path, sizeof path, "%s/sample.swpack", dir);
+    snprintf(path, sizeof path, "%s/seed-sample", dir);
     write_plain(path, bytes, size);
-    snprintf(path, sizeof path, "%s/unknown-section.swpack", dir);
+    snprintf(path, sizeof path, "%s/seed-unknown-section", dir);
     write_plain(path, grown, grown_size);
     free(grown);
     free(bytes);
@@ -279,7 +282,7 @@ static int write_corpus(const char *dir)
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
-    snprintf(path, sizeof path, "%s/two-patches.swpack", dir);
+    snprintf(path, sizeof path, "%s/seed-two-patches", dir);
     write_plain(path, bytes, size);
     free(bytes);
     sw_pack_contents_free(&c);
