@@ -6,6 +6,7 @@
 #include "sw_scene.h"
 
 #include <ini.h>
+#include <ctype.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -36,6 +37,7 @@ typedef struct scene_state {
     const char *file_name;
     long line;                /* of the line inih is working on */
     long pending_section;     /* line of a header no key has followed yet, or 0 */
+    char section[64];         /* inih's name of the section being filled */
     scene_part *parts;
     size_t part_count, part_capacity;
     sw_error *err;
@@ -118,16 +120,23 @@ static char *scene_read_line(char *str, int num, void *stream)
     memcpy(str, start, len);
     str[len] = '\0';
     st->pos += len;
-    size_t lead = strspn(str, " \t");
-    char first = str[lead];
-    int blank = first == '\0' || first == '\n' || first == '\r';
+    /* Classify the line as inih will: after a UTF-8 BOM on line 1, and with
+     * isspace() as its idea of blank. */
+    size_t lead = 0;
+    if (st->line == 1 && len >= 3 && memcmp(str, "\xEF\xBB\xBF", 3) == 0)
+        lead = 3;
+    size_t indent = 0;
+    while (isspace((unsigned char)str[lead + indent]))
+        indent++;
+    char first = str[lead + indent];
+    int blank = first == '\0';
     /* Continuation lines would make inih call us for a key again on a line
      * that does not say so; nothing in a scene needs them. */
-    if (lead > 0 && !blank && first != ';' && first != '#') {
+    if (indent > 0 && !blank && first != ';' && first != '#') {
         scene_fail(st, SW_ERR_FORMAT, "unexpected indentation");
         return NULL;
     }
-    if (first == '[' && !note_section_header(st, str + lead, len - lead))
+    if (first == '[' && !note_section_header(st, str + lead + indent, len - lead - indent))
         return NULL;
     return str;
 }
@@ -321,10 +330,15 @@ static int scene_handler(void *user, const char *section, const char *name, cons
     if (!kind)
         return section_fail(st, SW_ERR_FORMAT, "unknown section [%s] (expected [part NAME])",
                             section);
-    if (st->pending_section) {
+    /* A new section: the reader saw its header, or (belt and braces, should
+     * inih and the reader ever disagree on a header) the name changed. */
+    if (st->pending_section || strcmp(section, st->section) != 0) {
+        if (!st->pending_section)
+            st->pending_section = st->line;
         if (!kind->begin(st, part_name))
             return 0;
         st->pending_section = 0;
+        snprintf(st->section, sizeof st->section, "%s", section);
     }
     return kind->key(st, name, value);
 }

@@ -232,6 +232,25 @@ static void errors_name_file_and_line(void)
     }
 }
 
+/* inih skips a BOM, and any isspace() before a header; our reader must agree
+ * (indented lines, \v and \f included, are errors; a BOM is not). */
+static void a_bom_is_skipped_and_odd_blanks_are_indentation(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(load("\xEF\xBB\xBF[part a]\nfile = saddle.bpt\n", &m, &err) == SW_OK, "%s",
+                 err.message);
+    SW_CHECK(m.part_count == 1 && strcmp(m.parts[0].name, "a") == 0);
+    sw_model_free(&m);
+    sw_model_init(&m);
+    check_error(load("\v[part a]\nfile = saddle.bpt\n", &m, &err), &err, SW_ERR_FORMAT,
+                "s.ini:1:", "indentation");
+    check_error(load("[part z]\nfile = saddle.bpt\n\f[part a]\nfile = saddle.bpt\n", &m, &err),
+                &err, SW_ERR_FORMAT, "s.ini:3:", "indentation");
+    sw_model_free(&m);
+}
+
 static void long_lines_and_nul_bytes_are_errors(void)
 {
     char text[600];
@@ -300,6 +319,7 @@ int main(int argc, char **argv)
     SW_RUN(colours_names_and_defaults);
     SW_RUN(files_resolve_against_the_scene_folder);
     SW_RUN(errors_name_file_and_line);
+    SW_RUN(a_bom_is_skipped_and_odd_blanks_are_indentation);
     SW_RUN(long_lines_and_nul_bytes_are_errors);
     SW_RUN(errors_inside_part_files_name_both_files);
     SW_RUN(import_file_picks_the_importer_by_extension);
