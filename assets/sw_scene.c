@@ -20,7 +20,13 @@
 
 enum { SCENE_NAME_MAX = 44, SCENE_SECTION_MAX = 49, SCENE_PATH_MAX = 4096 };
 
-enum scene_key_bit { KEY_FILE = 1, KEY_TRANSLATE = 2, KEY_ROTATE = 4, KEY_SCALE = 8, KEY_COLOR = 16 };
+enum scene_key_bit {
+    KEY_FILE = 1,
+    KEY_TRANSLATE = 2,
+    KEY_ROTATE = 4,
+    KEY_SCALE = 8,
+    KEY_COLOR = 16,
+};
 
 typedef struct scene_part {
     char name[SCENE_NAME_MAX + 1];
@@ -272,8 +278,8 @@ static int begin_part(scene_state *st, const char *name)
         return section_fail(st, SW_ERR_FORMAT, "part name longer than %d bytes", SCENE_NAME_MAX);
     for (size_t i = 0; i < st->part_count; i++) {
         if (strlen(st->parts[i].name) == len && memcmp(st->parts[i].name, name, len) == 0)
-            return section_fail(st, SW_ERR_FORMAT, "part '%.*s' already defined at line %ld", (int)len, name,
-                              st->parts[i].line);
+            return section_fail(st, SW_ERR_FORMAT, "part '%.*s' already defined at line %ld",
+                                (int)len, name, st->parts[i].line);
     }
     if (st->part_count == st->part_capacity) {
         size_t cap = st->part_capacity ? st->part_capacity * 2 : 8;
