@@ -1,5 +1,6 @@
 /* Specification of showroom scene files (sw_scene.h).
- * Usage: test_scene SAMPLES_DIR (run in a scratch folder: it writes files). */
+ * Usage: test_scene SAMPLES_DIR. Files the cases need are written to a
+ * scratch folder under /tmp, removed at the end. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -166,11 +167,8 @@ static void files_resolve_against_the_scene_folder(void)
     SW_CHECK(m.patch_count == 1 && m.patches[0].ctrl[14] == 7);
     sw_model_free(&m);
     /* an absolute path ignores the base folder */
-    char text[4096], cwd[1024] = "";
-    if (samples_dir[0] != '/')
-        SW_CHECK(getcwd(cwd, sizeof cwd) != NULL);
-    snprintf(text, sizeof text, "[part a]\nfile = %s%s%s/saddle.bpt\n", cwd, cwd[0] ? "/" : "",
-             samples_dir);
+    char text[4200];
+    snprintf(text, sizeof text, "[part a]\nfile = %s/saddle.bpt\n", samples_dir);
     sw_model_init(&m);
     SW_CHECK(sw_scene_load_memory(text, strlen(text), "a.ini", "/nonexistent", &m, &err) ==
              SW_OK);
@@ -311,7 +309,16 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: test_scene SAMPLES_DIR\n");
         return 2;
     }
-    samples_dir = argv[1];
+    /* Work in a scratch folder of our own: some cases write files. */
+    static char samples[4096], cwd[2048], scratch[] = "/tmp/sw_test_scene.XXXXXX";
+    if (argv[1][0] != '/' && !getcwd(cwd, sizeof cwd))
+        return 2;
+    snprintf(samples, sizeof samples, "%s%s%s", cwd, cwd[0] ? "/" : "", argv[1]);
+    samples_dir = samples;
+    if (!mkdtemp(scratch) || chdir(scratch) != 0) {
+        fprintf(stderr, "test_scene: cannot make a scratch folder\n");
+        return 2;
+    }
     SW_RUN(teaset_sample_has_three_parts_standing_on_one_floor);
     SW_RUN(transforms_apply_scale_then_rotate_then_translate);
     SW_RUN(scale_and_translate_are_exact);
@@ -323,5 +330,10 @@ int main(int argc, char **argv)
     SW_RUN(long_lines_and_nul_bytes_are_errors);
     SW_RUN(errors_inside_part_files_name_both_files);
     SW_RUN(import_file_picks_the_importer_by_extension);
+    static const char *const written[] = {"here.bpt", "here.ini", "broken.bpt", "SPOON.BPT"};
+    for (size_t k = 0; k < sizeof written / sizeof written[0]; k++)
+        remove(written[k]);
+    if (chdir("/") == 0)
+        rmdir(scratch);
     return sw_test_finish();
 }
