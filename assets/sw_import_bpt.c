@@ -64,7 +64,7 @@ static sw_status parse_patch(sw_text_scan *s, long number, bpt_data *d, sw_error
         return sw_error_set(err, SW_ERR_FORMAT,
                             "%s:%ld: expected the degrees of patch %ld, found the end of the file",
                             s->file, s->line, number);
-    long du, dv;
+    long du = 0, dv = 0;
     sw_status st;
     if ((st = sw_scan_long(s, &du, 1, SW_BEZIER_MAX_DEGREE, "degree u", err)) ||
         (st = sw_scan_long(s, &dv, 1, SW_BEZIER_MAX_DEGREE, "degree v", err)) ||

@@ -40,7 +40,7 @@ static sw_status parse_vertices(sw_text_scan *s, long count, double *xyz, sw_err
 {
     for (long v = 1; v <= count; v++) {
         sw_scan_skip_empty_lines(s);
-        long number, line = s->line, column = sw_scan_column(s);
+        long number = 0, line = s->line, column = sw_scan_column(s);
         sw_status st = sw_scan_long(s, &number, LONG_MIN, LONG_MAX, "vertex number", err);
         if (st != SW_OK)
             return st;
@@ -137,7 +137,7 @@ sw_status sw_import_newell_memory(const char *text, size_t size, const char *fil
         return sw_error_set(err, SW_ERR_ARG, "sw_import_newell_memory: NULL argument");
     sw_text_scan s;
     sw_scan_init(&s, text, size, file_name);
-    newell_counts counts;
+    newell_counts counts = { 0 };
     sw_status st = parse_header(&s, &counts, err);
     if (st != SW_OK)
         return st;

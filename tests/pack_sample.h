@@ -147,7 +147,7 @@ static char scratch_dir[] = "/tmp/test_pack-XXXXXX";
 static inline const char *scratch(const char *name)
 {
     static char path[256];
-    snprintf(path, sizeof path, "%s/%s", scratch_dir, name);
+    snprintf(path, sizeof path, "%s/%.200s", scratch_dir, name);
     return path;
 }
 

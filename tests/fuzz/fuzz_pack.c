@@ -59,7 +59,7 @@ static void reseal(uint8_t *buf, size_t size)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    uint8_t *buf = malloc(size ? size : 1); /* malloc: aligned for any type */
+    uint8_t *buf = calloc(1, size ? size : 1); /* malloc family: aligned for any type */
     if (!buf)
         return 0;
     if (size)
