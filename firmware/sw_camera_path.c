@@ -189,17 +189,47 @@ sw_camera_pose sw_camera_path_at(const sw_camera_path *path, double t)
     return pose;
 }
 
-sw_camera_pose sw_camera_orbit(const sw_box *box, double fovy_rad, double aspect, double turn)
+/* Unit vector from the centre toward the camera at this azimuth. */
+static sw_vec3 orbit_direction(double azimuth, double elevation)
+{
+    return sw_v3(cos(elevation) * sin(azimuth), sin(elevation), cos(elevation) * cos(azimuth));
+}
+
+/* Smallest distance from the centre, along dir, at which all eight box corners
+ * lie inside the view: a corner at (a, b) across and c toward the camera is
+ * seen when |a| <= (d - c) tan(half_x) and |b| <= (d - c) tan(half_y). Tighter
+ * than fitting the bounding sphere, which leaves flat scenes small. */
+static double fit_distance(const sw_box *box, sw_vec3 dir, double tan_x, double tan_y)
 {
     sw_vec3 centre = sw_box_center(box);
-    double radius = 0.5 * sw_box_diagonal(box);
-    /* The bounding sphere fits the narrower of the two fields of view. */
-    double half = 0.5 * fovy_rad;
-    if (aspect < 1.0)
-        half = atan(tan(half) * aspect);
-    double distance = radius / sin(half) * 1.05;
-    double elevation = 25.0 * SW_PI / 180.0, azimuth = 2.0 * SW_PI * turn;
-    sw_vec3 offset = sw_v3(distance * cos(elevation) * sin(azimuth), distance * sin(elevation),
-                           distance * cos(elevation) * cos(azimuth));
-    return (sw_camera_pose){ sw_v3_add(centre, offset), centre, sw_v3(0, 1, 0) };
+    sw_vec3 right = sw_v3_normalize(sw_v3_cross(sw_v3(0, 1, 0), dir));
+    sw_vec3 up = sw_v3_cross(dir, right);
+    double d = 0;
+    for (int i = 0; i < 8; i++) {
+        sw_vec3 corner = sw_v3(i & 1 ? box->max.x : box->min.x, i & 2 ? box->max.y : box->min.y,
+                               i & 4 ? box->max.z : box->min.z);
+        sw_vec3 rel = sw_v3_sub(corner, centre);
+        double a = fabs(sw_v3_dot(rel, right)), b = fabs(sw_v3_dot(rel, up));
+        double need = sw_v3_dot(rel, dir) + fmax(a / tan_x, b / tan_y);
+        d = fmax(d, need);
+    }
+    return d;
+}
+
+sw_camera_pose sw_camera_orbit(const sw_box *box, double fovy_rad, double aspect, double turn)
+{
+    const double elevation = 25.0 * SW_PI / 180.0, samples = 64;
+    double tan_y = tan(0.5 * fovy_rad), tan_x = tan_y * aspect;
+    /* One distance for the whole revolution, so the camera circles steadily:
+     * the largest fit over the orbit, plus a margin. */
+    double distance = 0;
+    for (int k = 0; k < samples; k++)
+        distance = fmax(distance, fit_distance(box, orbit_direction(2 * SW_PI * k / samples,
+                                                                     elevation),
+                                               tan_x, tan_y));
+    distance = fmax(distance * 1.08, 1e-6 * (1 + sw_box_diagonal(box)));
+    sw_vec3 centre = sw_box_center(box);
+    sw_vec3 eye = sw_v3_add(centre, sw_v3_scale(orbit_direction(2 * SW_PI * turn, elevation),
+                                                distance));
+    return (sw_camera_pose){ eye, centre, sw_v3(0, 1, 0) };
 }

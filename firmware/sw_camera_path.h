@@ -51,8 +51,9 @@ double sw_camera_path_start(const sw_camera_path *path);
 double sw_camera_path_end(const sw_camera_path *path);
 sw_camera_pose sw_camera_path_at(const sw_camera_path *path, double time_s);
 
-/* A circle around box's centre at a distance where the whole box fits a view
- * of fovy_rad, 25 degrees above the horizon (y up), starting on +z.
+/* A circle around box's centre, 25 degrees above the horizon (y up),
+ * starting on +z, at one distance for the whole circle: the nearest at which
+ * every corner of the box is in view from every point of it, plus 8%.
  * turn in [0, 1) is the fraction of the revolution. */
 sw_camera_pose sw_camera_orbit(const sw_box *box, double fovy_rad, double aspect, double turn);
 

@@ -98,17 +98,31 @@ static void test_orbit_sees_whole_box_from_constant_distance(void)
 {
     sw_box box = { sw_v3(-1, -2, -3), sw_v3(3, 2, 1) };
     sw_vec3 c = sw_box_center(&box);
-    double fovy = 45 * SW_PI / 180, r = 0.5 * sw_box_diagonal(&box);
-    for (int i = 0; i < 8; i++) {
-        sw_camera_pose pose = sw_camera_orbit(&box, fovy, 16.0 / 9.0, i / 8.0);
+    double fovy = 45 * SW_PI / 180, aspect = 16.0 / 9.0, d0 = -1;
+    for (int i = 0; i < 16; i++) {
+        sw_camera_pose pose = sw_camera_orbit(&box, fovy, aspect, i / 16.0);
         double d = sw_v3_length(sw_v3_sub(pose.eye, c));
-        SW_CHECK_NEAR(pose.target.x, c.x, 0);
-        SW_CHECK(d * sin(fovy / 2) >= r);         /* the bounding sphere fits */
+        SW_CHECK_NEAR(d, d0 < 0 ? d : d0, 1e-9); /* the same distance all round */
+        d0 = d;
         SW_CHECK(pose.eye.y > c.y);               /* looks down at the model */
+        sw_mat4 view = sw_mat4_look_at(pose.eye, pose.target, pose.up);
+        sw_mat4 proj = sw_mat4_perspective(fovy, aspect, 0.01, 100);
+        sw_mat4 vp = sw_mat4_mul(&proj, &view);
+        for (int k = 0; k < 8; k++) {             /* every corner projects inside */
+            sw_vec4 q = sw_mat4_mul_v4(&vp, (sw_vec4){ k & 1 ? 3 : -1, k & 2 ? 2 : -2,
+                                                       k & 4 ? 1 : -3, 1 });
+            SW_CHECK(q.w > 0 && fabs(q.x / q.w) <= 1 && fabs(q.y / q.w) <= 1);
+        }
     }
     sw_camera_pose a = sw_camera_orbit(&box, fovy, 1.0, 0.0), b = sw_camera_orbit(&box, fovy, 1.0, 0.5);
     SW_CHECK_NEAR(a.eye.x - c.x, -(b.eye.x - c.x), 1e-9);
     SW_CHECK_NEAR(a.eye.z - c.z, -(b.eye.z - c.z), 1e-9);
+    /* For a flat showroom-like box, nearer than fitting the bounding sphere,
+     * which would leave the model small in the picture. */
+    sw_box flat = { sw_v3(-2, 0, -1), sw_v3(2, 0.5, 1) };
+    sw_camera_pose f = sw_camera_orbit(&flat, fovy, aspect, 0.0);
+    double sphere = 0.5 * sw_box_diagonal(&flat) / sin(fovy / 2);
+    SW_CHECK(sw_v3_length(sw_v3_sub(f.eye, sw_box_center(&flat))) < 0.9 * sphere);
 }
 
 int main(void)
