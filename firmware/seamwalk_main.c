@@ -6,6 +6,7 @@
  * This build renders headless only (EGL surfaceless); device displays and
  * input come with later work. The main thread is the GL thread. */
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,10 +63,8 @@ static sw_status file_size(const char *path, size_t *size, sw_error *err)
 static size_t arena_bytes_needed(const runtime *rt, const sw_pack_header *h, size_t path_bytes,
                                  size_t path_keys)
 {
-    uint32_t patches = (uint32_t)((h->runtime_bytes > h->total_size)
-                                      ? (h->runtime_bytes - h->total_size) / SW_RUNTIME_BYTES_PER_PATCH
-                                      : 0);
-    size_t bytes = (size_t)h->runtime_bytes + sw_walk_arena_bytes(patches) +
+    /* runtime_bytes covers the pack and every patch's state (sw_pack.h). */
+    size_t bytes = (size_t)h->runtime_bytes + sw_walk_arena_bytes() +
                    sw_measure_arena_bytes() + sw_stats_arena_bytes(rt->opt.frames);
     bytes += sw_arena_worst_case(path_bytes + 1, 8) +
              sw_arena_worst_case(path_keys * sizeof(sw_camera_key) + 1, 8);
@@ -116,8 +115,14 @@ static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
     }
     if (rt->opt.png_dir)
         rt->png_scratch = sw_png_scratch_bytes(rt->opt.width, rt->opt.height, 3);
-    size_t need = arena_bytes_needed(rt, &h, *path_bytes, keys);
     double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
+    /* Checked alone first so a huge header value cannot overflow the sum. */
+    size_t need = (double)h.runtime_bytes > limit ? SIZE_MAX
+                                                  : arena_bytes_needed(rt, &h, *path_bytes, keys);
+    if (need == SIZE_MAX)
+        return sw_error_set(err, SW_ERR_NO_MEMORY,
+                            "the pack alone needs %.1f MiB, more than --memory-mb %.1f",
+                            h.runtime_bytes / (1024.0 * 1024.0), rt->opt.memory_mb);
     if ((double)need > limit)
         return sw_error_set(err, SW_ERR_NO_MEMORY,
                             "needs %.1f MiB of memory (%zu bytes), more than --memory-mb %.1f",

@@ -5,10 +5,9 @@
 _Static_assert(sizeof(sw_patch_state) <= SW_RUNTIME_BYTES_PER_PATCH,
                "per-patch runtime state must fit what the pack header budgets");
 
-size_t sw_walk_arena_bytes(uint32_t patch_count)
+size_t sw_walk_arena_bytes(void)
 {
-    return sw_arena_worst_case((size_t)patch_count * sizeof(sw_patch_state) + 1, 64) +
-           sw_arena_worst_case(SW_BATCH_VERTICES * sizeof(sw_vertex), 64) +
+    return sw_arena_worst_case(SW_BATCH_VERTICES * sizeof(sw_vertex), 64) +
            sw_arena_worst_case(SW_BATCH_INDICES * sizeof(uint16_t), 64);
 }
 

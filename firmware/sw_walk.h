@@ -40,8 +40,9 @@ typedef struct sw_frame_counts {
     uint64_t triangles;
 } sw_frame_counts;
 
-/* Arena bytes sw_walk_init takes (beyond the pack itself). */
-size_t sw_walk_arena_bytes(uint32_t patch_count);
+/* Arena bytes sw_walk_init takes beyond the pack's runtime_bytes, which
+ * already budgets SW_RUNTIME_BYTES_PER_PATCH for each patch's state. */
+size_t sw_walk_arena_bytes(void);
 sw_status sw_walk_init(sw_walk *walk, const sw_pack *pack, sw_arena *arena, double error_px,
                        sw_error *err);
 
