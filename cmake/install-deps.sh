@@ -13,6 +13,7 @@ packages=(
   libinih-dev                        # showroom scene files (INI)
   libgl-dev libglu1-mesa-dev         # the benchmark's reference: GLU's NURBS tessellator
   python3                            # tests read the stats JSON
+  clang libclang-rt-14-dev           # libFuzzer runs of the parsers (tests/fuzz)
 )
 
 missing=()
