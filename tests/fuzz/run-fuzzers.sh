@@ -7,6 +7,7 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$top"
+bash cmake/install-deps.sh
 seconds=${1:-30}
 shift || true
 targets=("$@")
