@@ -28,6 +28,17 @@ enum sw_section_type {
     SW_SECTION_PATCHES = 3,   /* sw_pack_patch[patch_count] */
     SW_SECTION_CONTROL = 4,   /* float[4 * control_count]: x, y, z, w per point */
     SW_SECTION_ADJACENCY = 5, /* sw_pack_adjacency[adjacency_count] */
+    /* Trimmed-surface sections (issue 3). Optional as a group: a pack of
+     * untrimmed Bezier patches may omit them all; if SURFACES is present,
+     * PATCH_DOMAINS must be too. Their record counts are size / record size. */
+    SW_SECTION_SURFACES = 6,        /* sw_pack_surface[] */
+    SW_SECTION_TRIM_LOOPS = 7,      /* sw_pack_trim_loop[] */
+    SW_SECTION_TRIM_CURVES = 8,     /* sw_pack_trim_curve[] */
+    SW_SECTION_TRIM_DATA = 9,       /* float[]: the trim curves' knots and (u, v, w) points */
+    SW_SECTION_PATCH_DOMAINS = 10,  /* sw_pack_patch_domain[patch_count] */
+    SW_SECTION_TRIM_MASKS = 11,     /* sw_pack_trim_mask[] */
+    SW_SECTION_VIEWPOINTS = 12,     /* sw_pack_viewpoint[] */
+    SW_SECTION_PART_TRANSFORMS = 13,/* float[16 * part_count], column-major, as sw_mat4 */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
@@ -90,6 +101,57 @@ typedef struct sw_pack_adjacency {    /* 12 bytes: two patches share a boundary 
     uint8_t reserved;
 } sw_pack_adjacency;
 
+enum { SW_SURFACE_NO_LOOPS = 0 };
+
+typedef struct sw_pack_surface {      /* 40 bytes: one trimmed NURBS surface of the source */
+    uint32_t part;                    /* index into PARTS */
+    uint32_t first_patch, patch_count;/* its Bezier patches, within the part's range */
+    uint32_t first_loop, loop_count;  /* into TRIM_LOOPS; 0 loops: untrimmed */
+    uint32_t flags;                   /* zero in version 1 */
+    float domain[4];                  /* u0, u1, v0, v1, u0 < u1, v0 < v1 */
+} sw_pack_surface;
+
+enum { SW_LOOP_OUTER = 1u };
+
+typedef struct sw_pack_trim_loop {    /* 12 bytes */
+    uint32_t first_curve, curve_count;/* into TRIM_CURVES, head to tail, count >= 1 */
+    uint32_t flags;                   /* SW_LOOP_* */
+} sw_pack_trim_loop;
+
+enum { SW_TRIM_RATIONAL = 1u, SW_TRIM_COMPUTED = 2u };
+
+typedef struct sw_pack_trim_curve {   /* 16 bytes: a clamped B-spline in (u, v) */
+    uint32_t first_float;             /* into TRIM_DATA: count + degree + 1 knots, */
+    uint32_t count;                   /* then count points of (u, v, w) */
+    uint8_t degree;                   /* 1..15 */
+    uint8_t flags;                    /* SW_TRIM_* */
+    uint16_t reserved;                /* zero */
+    uint32_t reserved2;               /* zero */
+} sw_pack_trim_curve;
+
+enum { SW_MASK_NONE = 0xFFFFFFFFu };
+
+typedef struct sw_pack_patch_domain { /* 24 bytes, one per patch */
+    uint32_t surface;                 /* into SURFACES */
+    uint32_t mask;                    /* into TRIM_MASKS, or SW_MASK_NONE: wholly inside */
+    float domain[4];                  /* u0, u1, v0, v1 within the surface's domain */
+} sw_pack_patch_domain;
+
+/* Which of the 32 x 32 equal cells of a patch's domain touch the trimmed
+ * face: bit i of rows[j] is cell i along u, row j along v. Conservative: a
+ * cell the trim boundary crosses is set. The runtime drops grid cells that
+ * overlap no set cell; exact trimmed tessellation is the Seam Graph's job. */
+typedef struct sw_pack_trim_mask {    /* 128 bytes */
+    uint32_t rows[32];
+} sw_pack_trim_mask;
+
+typedef struct sw_pack_viewpoint {    /* 96 bytes: a named camera of a showroom scene */
+    char name[48];                    /* NUL-terminated UTF-8 */
+    float eye[3], target[3], up[3];
+    float fov_deg;                    /* vertical; 0: the runtime's default */
+    uint8_t reserved[8];              /* zero */
+} sw_pack_viewpoint;
+
 /* Arena bytes the runtime keeps per patch beyond the pack itself (tessellation
  * level, visibility); the runtime asserts its per-patch state fits. */
 #define SW_RUNTIME_BYTES_PER_PATCH 16u
@@ -105,6 +167,21 @@ typedef struct sw_pack {
     const sw_pack_patch *patches;      /* meta->patch_count */
     const float *control;              /* 4 * meta->control_count */
     const sw_pack_adjacency *adjacency;/* meta->adjacency_count */
+    /* Optional sections: NULL with count 0 when absent. */
+    const sw_pack_surface *surfaces;
+    uint32_t surface_count;
+    const sw_pack_trim_loop *trim_loops;
+    uint32_t trim_loop_count;
+    const sw_pack_trim_curve *trim_curves;
+    uint32_t trim_curve_count;
+    const float *trim_data;
+    uint32_t trim_data_count;
+    const sw_pack_patch_domain *patch_domains;   /* patch_count entries, or NULL */
+    const sw_pack_trim_mask *trim_masks;
+    uint32_t trim_mask_count;
+    const sw_pack_viewpoint *viewpoints;
+    uint32_t viewpoint_count;
+    const float *part_transforms;                /* 16 * part_count, or NULL */
 } sw_pack;
 
 /* runtime_bytes for a pack of total_size bytes and patch_count patches: the
