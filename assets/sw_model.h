@@ -62,6 +62,13 @@ typedef struct sw_model_part {
     size_t first_surface, surface_count;
 } sw_model_part;
 
+/* A named camera of a showroom scene. */
+typedef struct sw_model_viewpoint {
+    char name[48];
+    double eye[3], target[3], up[3];
+    double fov_deg;          /* 0: the runtime's default */
+} sw_model_viewpoint;
+
 typedef struct sw_model {
     sw_model_patch *patches;
     size_t patch_count, patch_capacity;
@@ -73,6 +80,8 @@ typedef struct sw_model {
     size_t curve_count, curve_capacity;
     sw_model_part *parts;
     size_t part_count, part_capacity;
+    sw_model_viewpoint *viewpoints;
+    size_t viewpoint_count, viewpoint_capacity;
     float model_tolerance;   /* millimetres; 0 when the sources say nothing */
 } sw_model;
 
@@ -113,6 +122,10 @@ sw_status sw_model_add_surface(sw_model *model, const sw_nurbs_surface *surface,
  * (positions only; weights unchanged, so rational geometry stays exact under
  * affine maps) and records it: part.transform = m * part.transform. */
 void sw_model_transform_part(sw_model *model, size_t part, const sw_mat4 *m);
+
+/* Appends a named viewpoint (name truncated to 47 bytes); names are unique:
+ * SW_ERR_FORMAT when one is repeated. */
+sw_status sw_model_add_viewpoint(sw_model *model, const sw_model_viewpoint *view, sw_error *err);
 
 sw_bezier_patch sw_model_patch_view(const sw_model_patch *patch);
 sw_nurbs_surface sw_model_surface_view(const sw_model_surface *surface);
