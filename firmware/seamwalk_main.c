@@ -39,6 +39,7 @@ typedef struct runtime {
     uint8_t *pixels;          /* read-back, width * height * 4, only with --png-dir */
     size_t png_scratch;       /* bytes kept free in the arena for sw_png_write */
     sw_box model_box;
+    const sw_pack_viewpoint *view;   /* with --view */
     double start_s;
 } runtime;
 
@@ -140,6 +141,20 @@ static sw_box pack_box(const sw_pack *p)
                      sw_v3(p->meta->box_max[0], p->meta->box_max[1], p->meta->box_max[2]) };
 }
 
+static sw_status find_view(runtime *rt, sw_error *err)
+{
+    for (uint32_t i = 0; i < rt->pack.viewpoint_count; i++)
+        if (!strcmp(rt->pack.viewpoints[i].name, rt->opt.view_name)) {
+            rt->view = &rt->pack.viewpoints[i];
+            if (rt->view->fov_deg > 0)
+                rt->opt.fov_deg = rt->view->fov_deg;
+            return SW_OK;
+        }
+    return sw_error_set(err, SW_ERR_ARG, "%s has no viewpoint named '%s' (it has %u%s)",
+                        rt->opt.pack_path, rt->opt.view_name, rt->pack.viewpoint_count,
+                        rt->pack.viewpoint_count ? ": see seamwalk-pack info" : "");
+}
+
 static sw_status start(runtime *rt, sw_error *err)
 {
     size_t path_bytes;
@@ -155,6 +170,8 @@ static sw_status start(runtime *rt, sw_error *err)
                             rt->opt.pack_path);
     rt->model_box = pack_box(&rt->pack);
     if (rt->opt.path_file && (st = load_path(rt, path_bytes, err)) != SW_OK)
+        return st;
+    if (rt->opt.view_name && (st = find_view(rt, err)) != SW_OK)
         return st;
     double pack_ms = rt->stats.pack_open_ms;
     if ((st = sw_stats_init(&rt->stats, &rt->arena, rt->opt.frames, rt->opt.max_error_px, err)))
@@ -180,9 +197,14 @@ static sw_status start(runtime *rt, sw_error *err)
     return SW_OK;
 }
 
+static sw_vec3 vec3_of(const float v[3]) { return sw_v3(v[0], v[1], v[2]); }
+
 static sw_camera_pose pose_at(const runtime *rt, int frame)
 {
     double fovy = rt->opt.fov_deg * SW_PI / 180.0;
+    if (rt->view)
+        return (sw_camera_pose){ vec3_of(rt->view->eye), vec3_of(rt->view->target),
+                                 sw_v3_normalize(vec3_of(rt->view->up)) };
     if (rt->opt.orbit)
         return sw_camera_orbit(&rt->model_box, fovy, (double)rt->opt.width / rt->opt.height,
                                (double)frame / rt->opt.frames);
@@ -217,10 +239,10 @@ static sw_status run_frame(runtime *rt, int frame, sw_error *err)
     sw_mat4_to_float(&view.view, mv);
     sw_mat4_to_float(&view.proj, proj);
     sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv, proj);
-    sw_walk_draw(&rt->walk, &rt->renderer);
+    uint64_t triangles = sw_walk_draw(&rt->walk, &rt->renderer);
     sw_renderer_finish(&rt->renderer);
     double ms = (now_s() - t0) * 1000.0;
-    sw_stats_add_frame(&rt->stats, ms, (uint32_t)counts.triangles, counts.visible);
+    sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, counts.visible);
     if (frame == 0)
         rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0;
     if (counts.capped > rt->stats.capped_patches_max)

@@ -2,6 +2,8 @@
 
 #include <math.h>
 
+#include "sw_cell_filter.h"
+
 size_t sw_measure_arena_bytes(void)
 {
     return 2 * sw_arena_worst_case(SW_BATCH_VERTICES * sizeof(sw_vertex), 64) +
@@ -83,9 +85,12 @@ void sw_measure_error(sw_measure *m, const sw_walk *walk, const sw_view *view, s
         sw_bezier_patch exact = sw_bezier_patch_from_float(&pf, ctrl);
         sw_tess_grid(&pf, s->nu, s->nv, 0, m->grid_a, m->indices);
         grid_sampler g = { &exact, m->grid_a, s->nu, s->nv, view, stats };
+        sw_cell_filter filter; /* only the triangles the frame drew */
+        sw_cell_filter_init(&filter, sw_walk_patch_mask(walk, i), s->nu, s->nv);
         for (uint32_t b = 0; b < s->nv; b++)
             for (uint32_t a = 0; a < s->nu; a++)
-                sample_cell(&g, a, b);
+                if (sw_cell_filter_keep(&filter, a, b))
+                    sample_cell(&g, a, b);
     }
     stats->measured_frames++;
 }

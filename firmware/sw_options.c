@@ -63,8 +63,9 @@ static sw_status check_complete(const sw_options *o, sw_error *err)
     if (!o->width)
         return sw_error_set(err, SW_ERR_ARG,
                             "--headless WxH is required: this build has no device display yet");
-    if (!o->orbit == !o->path_file)
-        return sw_error_set(err, SW_ERR_ARG, "give exactly one of --path FILE and --orbit");
+    if (!!o->orbit + !!o->path_file + !!o->view_name != 1)
+        return sw_error_set(err, SW_ERR_ARG,
+                            "give exactly one of --path FILE, --orbit and --view NAME");
     return SW_OK;
 }
 
@@ -90,6 +91,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_size(v, &o->width, &o->height, err);
         } else if (!strcmp(a, "--path")) {
             o->path_file = v;
+        } else if (!strcmp(a, "--view")) {
+            o->view_name = v;
         } else if (!strcmp(a, "--frames")) {
             st = parse_int(a, v, 1, 10000000, &o->frames, err);
         } else if (!strcmp(a, "--png-dir")) {
@@ -117,10 +120,13 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
 void sw_options_print_usage(const char *argv0)
 {
     fprintf(stderr,
-            "usage: %s --pack FILE --headless WxH (--path FILE | --orbit) [--frames N]\n"
-            "          [--png-dir DIR] [--png-every K] [--stats FILE.json] [--memory-mb M]\n"
-            "          [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
+            "usage: %s --pack FILE --headless WxH (--path FILE | --orbit | --view NAME)\n"
+            "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
+            "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
+            "  --path FILE         follow a camera path (format: firmware/sw_camera_path.h)\n"
+            "  --orbit             circle the model\n"
+            "  --view NAME         stand at one of the pack's named viewpoints\n"
             "  --frames N          frames to render (default 120)\n"
             "  --png-dir DIR       write frame_NNNNN.png every --png-every frames\n"
             "  --stats FILE.json   write the walk's statistics\n"

@@ -2,6 +2,8 @@
 
 #include <string.h>
 
+#include "sw_cell_filter.h"
+
 _Static_assert(sizeof(sw_patch_state) <= SW_RUNTIME_BYTES_PER_PATCH,
                "per-patch runtime state must fit what the pack header budgets");
 
@@ -70,6 +72,14 @@ sw_frame_counts sw_walk_select(sw_walk *walk, const sw_view *view)
     return c;
 }
 
+const sw_pack_trim_mask *sw_walk_patch_mask(const sw_walk *walk, uint32_t i)
+{
+    const sw_pack *pack = walk->pack;
+    if (!pack->patch_domains || pack->patch_domains[i].mask == SW_MASK_NONE)
+        return NULL;
+    return &pack->trim_masks[pack->patch_domains[i].mask];
+}
+
 static void flush(sw_walk *walk, sw_renderer *r)
 {
     if (walk->batch_index_count)
@@ -79,8 +89,26 @@ static void flush(sw_walk *walk, sw_renderer *r)
     walk->batch_index_count = 0;
 }
 
-static void draw_part(sw_walk *walk, sw_renderer *r, const sw_pack_part *part)
+/* Tessellates patch i at the end of the batch; returns the triangles kept. */
+static uint32_t add_patch(sw_walk *walk, uint32_t i)
 {
+    const sw_patch_state *s = &walk->state[i];
+    sw_tess_sizes need = sw_tess_grid_sizes(s->nu, s->nv);
+    sw_bezier_patchf patch = sw_walk_patch(walk, i);
+    uint16_t *indices = walk->batch_indices + walk->batch_index_count;
+    sw_tess_grid(&patch, s->nu, s->nv, walk->batch_vertex_count,
+                 walk->batch_vertices + walk->batch_vertex_count, indices);
+    sw_cell_filter filter;
+    sw_cell_filter_init(&filter, sw_walk_patch_mask(walk, i), s->nu, s->nv);
+    uint32_t kept = sw_cell_filter_compact(&filter, indices);
+    walk->batch_vertex_count += need.vertex_count;
+    walk->batch_index_count += kept;
+    return kept / 3;
+}
+
+static uint64_t draw_part(sw_walk *walk, sw_renderer *r, const sw_pack_part *part)
+{
+    uint64_t triangles = 0;
     sw_renderer_set_color(r, part->color);
     for (uint32_t i = part->first_patch; i < part->first_patch + part->patch_count; i++) {
         const sw_patch_state *s = &walk->state[i];
@@ -90,18 +118,16 @@ static void draw_part(sw_walk *walk, sw_renderer *r, const sw_pack_part *part)
         if (walk->batch_vertex_count + need.vertex_count > SW_BATCH_VERTICES ||
             walk->batch_index_count + need.index_count > SW_BATCH_INDICES)
             flush(walk, r);
-        sw_bezier_patchf patch = sw_walk_patch(walk, i);
-        sw_tess_grid(&patch, s->nu, s->nv, walk->batch_vertex_count,
-                     walk->batch_vertices + walk->batch_vertex_count,
-                     walk->batch_indices + walk->batch_index_count);
-        walk->batch_vertex_count += need.vertex_count;
-        walk->batch_index_count += need.index_count;
+        triangles += add_patch(walk, i);
     }
     flush(walk, r);
+    return triangles;
 }
 
-void sw_walk_draw(sw_walk *walk, sw_renderer *r)
+uint64_t sw_walk_draw(sw_walk *walk, sw_renderer *r)
 {
+    uint64_t triangles = 0;
     for (uint32_t p = 0; p < walk->pack->meta->part_count; p++)
-        draw_part(walk, r, &walk->pack->parts[p]);
+        triangles += draw_part(walk, r, &walk->pack->parts[p]);
+    return triangles;
 }

@@ -50,8 +50,12 @@ sw_status sw_walk_init(sw_walk *walk, const sw_pack *pack, sw_arena *arena, doub
 sw_frame_counts sw_walk_select(sw_walk *walk, const sw_view *view);
 
 /* Tessellates the visible patches and draws them in batches, one colour per
- * part. GL thread only. */
-void sw_walk_draw(sw_walk *walk, sw_renderer *renderer);
+ * part, leaving out grid cells outside a patch's trim mask. Returns the
+ * triangles drawn. GL thread only. */
+uint64_t sw_walk_draw(sw_walk *walk, sw_renderer *renderer);
+
+/* Patch i's trim mask, or NULL when the whole patch is drawn. */
+const sw_pack_trim_mask *sw_walk_patch_mask(const sw_walk *walk, uint32_t i);
 
 /* The float view of patch i, as the tessellator takes it. */
 sw_bezier_patchf sw_walk_patch(const sw_walk *walk, uint32_t i);

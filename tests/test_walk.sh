@@ -70,7 +70,8 @@ errors)
   expect_failure 1 "missing.swpack" "$walker" --pack "$work/missing.swpack" --headless 320x240 --orbit
   printf '0 0 0 5 0 0 0 0 1 0\n1 0 0 5\n' > "$work/bad.path"
   expect_failure 1 "bad.path:2" "$walker" --pack "$work/good.swpack" --headless 320x240 --path "$work/bad.path"
-  expect_failure 2 "exactly one of" "$walker" --pack "$work/good.swpack" --headless 320x240
+  expect_failure 1 "no viewpoint named 'lobby'" "$walker" --pack "$work/good.swpack" --headless 320x240 --view lobby
+  expect_failure 2 "exactly one of --path" "$walker" --pack "$work/good.swpack" --headless 320x240
   expect_failure 2 "--headless" "$walker" --pack "$work/good.swpack" --headless 12x9999 --orbit
   expect_failure 2 "unknown option" "$walker" --pack "$work/good.swpack" --orbit --bogus 1
   ;;
