@@ -283,3 +283,51 @@ sw_status sw_bezier_second_deriv_bounds(const sw_bezier_patch *patch, sw_deriv_b
     out->vv = out->vv * (1 + 1e-12) + (m > 1 ? slack : 0);
     return SW_OK;
 }
+
+/* Control points of the piece [t0, t1] of a Bezier curve of degree n given by
+ * homogeneous points pts (overwritten): split at t0 and keep the right part
+ * (b_i^(n-i) of the de Casteljau triangle), then split that at the rescaled
+ * t1 and keep the left part (b_0^r). */
+static void curve_segment(double pts[][4], int n, double t0, double t1)
+{
+    double tail[SW_BEZIER_MAX_ORDER][4];
+    for (int r = 0; r <= n; r++) {
+        memcpy(tail[n - r], pts[n - r], sizeof tail[0]);
+        for (int i = 0; i < n - r; i++)
+            for (int k = 0; k < 4; k++)
+                pts[i][k] = (1 - t0) * pts[i][k] + t0 * pts[i + 1][k];
+    }
+    double s = t0 < 1 ? (t1 - t0) / (1 - t0) : 0;
+    for (int r = 0; r <= n; r++) {
+        memcpy(pts[r], tail[0], sizeof tail[0]);
+        for (int i = 0; i < n - r; i++)
+            for (int k = 0; k < 4; k++)
+                tail[i][k] = (1 - s) * tail[i][k] + s * tail[i + 1][k];
+    }
+}
+
+void sw_bezier_subpatch(const sw_bezier_patch *patch, double u0, double u1, double v0, double v1,
+                        double *ctrl_out)
+{
+    assert(patch && ctrl_out && u0 < u1 && v0 < v1);
+    int n = patch->degree_u, m = patch->degree_v;
+    double net[SW_BEZIER_MAX_ORDER][SW_BEZIER_MAX_ORDER][4]; /* [j][i] */
+    for (int j = 0; j <= m; j++) {
+        for (int i = 0; i <= n; i++)
+            homogeneous_ctrl(patch, i, j, net[j][i]);
+        curve_segment(net[j], n, u0, u1);
+    }
+    double col[SW_BEZIER_MAX_ORDER][4];
+    for (int i = 0; i <= n; i++) {
+        for (int j = 0; j <= m; j++)
+            memcpy(col[j], net[j][i], sizeof col[j]);
+        curve_segment(col, m, v0, v1);
+        for (int j = 0; j <= m; j++) {
+            double *c = ctrl_out + ((size_t)j * (size_t)(n + 1) + (size_t)i) * 4;
+            c[0] = col[j][0] / col[j][3];
+            c[1] = col[j][1] / col[j][3];
+            c[2] = col[j][2] / col[j][3];
+            c[3] = patch->rational ? col[j][3] : 1.0;
+        }
+    }
+}

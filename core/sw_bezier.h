@@ -66,4 +66,12 @@ sw_status sw_bezier_second_deriv_bounds(const sw_bezier_patch *patch, sw_deriv_b
 /* Box of the control points (contains the patch: convex hull property). */
 sw_box sw_bezier_control_box(const sw_bezier_patch *patch);
 
+/* The same surface restricted to [u0, u1] x [v0, v1] (within [0,1]^2, u0 < u1,
+ * v0 < v1), reparameterised to [0,1]^2: the control points of the sub-patch,
+ * same degrees, written to ctrl_out (4 * (degree_u + 1) * (degree_v + 1)
+ * doubles, Cartesian x, y, z and w; w = 1 when the patch is not rational).
+ * Exact: de Casteljau subdivision on homogeneous points. */
+void sw_bezier_subpatch(const sw_bezier_patch *patch, double u0, double u1, double v0, double v1,
+                        double *ctrl_out);
+
 #endif

@@ -285,6 +285,40 @@ static void test_eval_order_leaves_unrequested_zero(void)
     SW_CHECK(q.duu.x == 0 && q.duv.y == 0 && q.dvv.z == 0 && q.du.x != 0);
 }
 
+/* A sub-patch is the same surface on the sub-rectangle: its point at (s, t)
+ * equals the original's at (u0 + s (u1 - u0), v0 + t (v1 - v0)), for every
+ * degree, rational or not, including sub-rectangles touching the border. */
+static void test_subpatch_matches_original_on_subrect(void)
+{
+    double ctrl[MAXN * MAXN * 4], sub[MAXN * MAXN * 4];
+    for (int trial = 0; trial < 200; trial++) {
+        int n = 1 + (int)(sw_test_random() * 15), m = 1 + (int)(sw_test_random() * 15);
+        sw_bezier_patch p;
+        random_patch(ctrl, n, m, trial & 1, &p);
+        double a = sw_test_random(), b = sw_test_random();
+        double u0 = trial % 5 == 0 ? 0 : fmin(a, b) * 0.9, u1 = trial % 7 == 0 ? 1 : fmax(a, b);
+        double v0 = 0.3 * sw_test_random(), v1 = v0 + 0.05 + 0.65 * sw_test_random();
+        if (u1 - u0 < 0.01)
+            u1 = u0 + 0.01;
+        sw_bezier_subpatch(&p, u0, u1, v0, v1, sub);
+        sw_bezier_patch q = {n, m, p.rational, sub};
+        double worst = 0;
+        for (int s = 0; s < 8; s++) {
+            double su = s < 2 ? s : sw_test_random(), tv = s < 2 ? 1 - s : sw_test_random();
+            long double r[3];
+            sw_surface_point e;
+            reference_point(&p, u0 + su * (u1 - u0), v0 + tv * (v1 - v0), r);
+            sw_bezier_eval(&q, su, tv, SW_EVAL_POINT, &e);
+            worst = fmax(worst, fabs((double)(r[0] - e.p.x)) + fabs((double)(r[1] - e.p.y)) +
+                                    fabs((double)(r[2] - e.p.z)));
+        }
+        SW_CHECK_MSG(worst < 1e-9, "degree %d x %d rational %d: off by %g", n, m, p.rational,
+                     worst);
+        if (!p.rational)
+            SW_CHECK(sub[3] == 1.0 && sub[4 * ((n + 1) * (m + 1)) - 1] == 1.0);
+    }
+}
+
 int main(void)
 {
     SW_RUN(test_eval_matches_long_double_reference);
@@ -298,5 +332,6 @@ int main(void)
     SW_RUN(test_control_box_contains_patch);
     SW_RUN(test_patch_from_float_copies);
     SW_RUN(test_eval_order_leaves_unrequested_zero);
+    SW_RUN(test_subpatch_matches_original_on_subrect);
     return sw_test_finish();
 }
