@@ -17,30 +17,60 @@
 #include "sw_pack_adjacency.h"
 #include "sw_pack_validate.h"
 
-enum { SECTION_COUNT = 5, HEADER_BYTES = 64, SECTION_BYTES = 32 };
+enum { MAX_SECTIONS = 13, HEADER_BYTES = 64, SECTION_BYTES = 32 };
 
 static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
 
-sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *out_size,
-                            sw_error *err)
+typedef struct section_source {
+    uint32_t type;
+    const void *bytes;
+    uint64_t size;
+} section_source;
+
+/* The sections contents asks for, in the order they are written: the five
+ * of the walking skeleton always, each optional one when its array is set. */
+static int list_sections(const sw_pack_contents *c, section_source src[MAX_SECTIONS])
 {
-    *out = NULL;
-    *out_size = 0;
     const sw_pack_meta *m = &c->meta;
-    struct { uint32_t type; const void *bytes; uint64_t size; } src[SECTION_COUNT] = {
+    const section_source all[MAX_SECTIONS] = {
         { SW_SECTION_META, m, sizeof *m },
         { SW_SECTION_PARTS, c->parts, (uint64_t)m->part_count * sizeof(sw_pack_part) },
         { SW_SECTION_PATCHES, c->patches, (uint64_t)m->patch_count * sizeof(sw_pack_patch) },
         { SW_SECTION_CONTROL, c->control, (uint64_t)m->control_count * 4 * sizeof(float) },
         { SW_SECTION_ADJACENCY, c->adjacency,
           (uint64_t)m->adjacency_count * sizeof(sw_pack_adjacency) },
+        { SW_SECTION_SURFACES, c->surfaces, (uint64_t)c->surface_count * sizeof(sw_pack_surface) },
+        { SW_SECTION_TRIM_LOOPS, c->trim_loops,
+          (uint64_t)c->trim_loop_count * sizeof(sw_pack_trim_loop) },
+        { SW_SECTION_TRIM_CURVES, c->trim_curves,
+          (uint64_t)c->trim_curve_count * sizeof(sw_pack_trim_curve) },
+        { SW_SECTION_TRIM_DATA, c->trim_data, (uint64_t)c->trim_data_count * sizeof(float) },
+        { SW_SECTION_PATCH_DOMAINS, c->patch_domains,
+          (uint64_t)m->patch_count * sizeof(sw_pack_patch_domain) },
+        { SW_SECTION_TRIM_MASKS, c->trim_masks,
+          (uint64_t)c->trim_mask_count * sizeof(sw_pack_trim_mask) },
+        { SW_SECTION_VIEWPOINTS, c->viewpoints,
+          (uint64_t)c->viewpoint_count * sizeof(sw_pack_viewpoint) },
+        { SW_SECTION_PART_TRANSFORMS, c->part_transforms,
+          (uint64_t)m->part_count * 16 * sizeof(float) },
     };
-    sw_pack_section table[SECTION_COUNT];
-    uint64_t cursor = HEADER_BYTES + SECTION_COUNT * SECTION_BYTES;
-    for (int i = 0; i < SECTION_COUNT; i++) {
+    int n = 0;
+    for (int i = 0; i < MAX_SECTIONS; i++)
+        if (i < 5 || all[i].bytes)
+            src[n++] = all[i];
+    return n;
+}
+
+/* Places the sections after the table, each at the next multiple of 64;
+ * returns the file size. */
+static sw_status lay_out(const section_source *src, int n, sw_pack_section *table,
+                         uint64_t *total, sw_error *err)
+{
+    uint64_t cursor = HEADER_BYTES + (uint64_t)n * SECTION_BYTES;
+    for (int i = 0; i < n; i++) {
         if (src[i].size > 0 && !src[i].bytes)
-            return sw_error_set(err, SW_ERR_ARG, "sw_pack_serialize: META counts %llu bytes of "
-                                "%s but the array is NULL", (unsigned long long)src[i].size,
+            return sw_error_set(err, SW_ERR_ARG, "sw_pack_serialize: the counts give %llu bytes "
+                                "of %s but the array is NULL", (unsigned long long)src[i].size,
                                 sw_section_type_name(src[i].type));
         cursor = align_up(cursor);
         table[i] = (sw_pack_section){ .type = src[i].type, .offset = cursor, .size = src[i].size,
@@ -51,25 +81,42 @@ sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *ou
     if (cursor > SIZE_MAX)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "sw_pack_serialize: %llu bytes",
                             (unsigned long long)cursor);
-    uint8_t *buf = calloc(1, (size_t)cursor); /* zero padding between sections */
+    *total = cursor;
+    return SW_OK;
+}
+
+sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *out_size,
+                            sw_error *err)
+{
+    *out = NULL;
+    *out_size = 0;
+    section_source src[MAX_SECTIONS];
+    sw_pack_section table[MAX_SECTIONS];
+    int n = list_sections(c, src);
+    uint64_t total = 0;
+    sw_status s = lay_out(src, n, table, &total, err);
+    if (s != SW_OK)
+        return s;
+    uint8_t *buf = calloc(1, (size_t)total); /* zero padding between sections */
     if (!buf)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "sw_pack_serialize: cannot allocate %llu "
-                            "bytes", (unsigned long long)cursor);
-    for (int i = 0; i < SECTION_COUNT; i++)
+                            "bytes", (unsigned long long)total);
+    for (int i = 0; i < n; i++)
         if (src[i].size > 0)
             memcpy(buf + table[i].offset, src[i].bytes, (size_t)src[i].size);
     sw_pack_header h = { .version = SW_PACK_VERSION, .byte_order = SW_PACK_BYTE_ORDER_MARK,
-                         .total_size = cursor,
-                         .runtime_bytes = sw_pack_runtime_bytes(cursor, m->patch_count),
-                         .section_count = SECTION_COUNT, .section_table_offset = HEADER_BYTES };
+                         .total_size = total,
+                         .runtime_bytes = sw_pack_runtime_bytes(total, c->meta.patch_count),
+                         .section_count = (uint32_t)n, .section_table_offset = HEADER_BYTES };
     memcpy(h.magic, SW_PACK_MAGIC, sizeof h.magic);
     memcpy(buf, &h, sizeof h);
-    memcpy(buf + HEADER_BYTES, table, sizeof table);
+    size_t table_bytes = (size_t)n * SECTION_BYTES;
+    memcpy(buf + HEADER_BYTES, table, table_bytes);
     /* header_checksum is still 0 in buf, and the table follows the header. */
-    h.header_checksum = XXH3_64bits(buf, HEADER_BYTES + sizeof table);
+    h.header_checksum = XXH3_64bits(buf, HEADER_BYTES + table_bytes);
     memcpy(buf, &h, sizeof h);
     *out = buf;
-    *out_size = (size_t)cursor;
+    *out_size = (size_t)total;
     return SW_OK;
 }
 

@@ -18,17 +18,38 @@ typedef struct sw_pack_contents {
     const sw_pack_patch *patches;
     const float *control;               /* 4 floats per point */
     const sw_pack_adjacency *adjacency;
+    /* Optional sections: each is written when its pointer is not NULL (even
+     * with a count of 0) and left out when it is NULL. */
+    const sw_pack_surface *surfaces;
+    uint32_t surface_count;
+    const sw_pack_trim_loop *trim_loops;
+    uint32_t trim_loop_count;
+    const sw_pack_trim_curve *trim_curves;
+    uint32_t trim_curve_count;
+    const float *trim_data;
+    uint32_t trim_data_count;
+    const sw_pack_patch_domain *patch_domains;  /* meta.patch_count records */
+    const sw_pack_trim_mask *trim_masks;
+    uint32_t trim_mask_count;
+    const sw_pack_viewpoint *viewpoints;
+    uint32_t viewpoint_count;
+    const float *part_transforms;               /* 16 * meta.part_count floats */
 } sw_pack_contents;
 
 /* Serialises contents exactly as given (no validation, so tests can write
- * broken packs): header, section table, sections 64-byte aligned, checksums.
- * *out is malloc'd; the caller frees it. */
+ * broken packs): header, section table (META, PARTS, PATCHES, CONTROL,
+ * ADJACENCY, then the optional sections present in sw_section_type order),
+ * sections 64-byte aligned, checksums. *out is malloc'd; the caller frees it. */
 sw_status sw_pack_serialize(const sw_pack_contents *contents, uint8_t **out, size_t *out_size,
                             sw_error *err);
 
 /* Converts a model to contents: float control points, boxes, derivative bounds
  * (sw_bezier_second_deriv_bounds), adjacency by matching boundary control rows
- * within tolerance. Arrays are malloc'd; release with sw_pack_contents_free. */
+ * within tolerance, and every optional section (surfaces, trimming loops and
+ * curves, patch domains and masks, viewpoints, part transforms), also for
+ * models of plain Bezier patches, so every pack it makes has the same
+ * sections. META.units is millimetres (the model's unit). Arrays are
+ * malloc'd; release with sw_pack_contents_free. */
 sw_status sw_pack_contents_from_model(const sw_model *model, sw_pack_contents *out,
                                       sw_error *err);
 void sw_pack_contents_free(sw_pack_contents *contents);

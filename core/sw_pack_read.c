@@ -1,6 +1,7 @@
 /* The pack container: header, section table, section bounds and checksums,
- * and loading a file into the arena. The records inside the sections are
- * checked by sw_pack_validate.c. Format: assets/PACK_FORMAT.md. */
+ * which sections must or may appear, and loading a file into the arena. The
+ * records inside the sections are checked by sw_pack_validate.c and, for the
+ * trimmed-surface group, sw_pack_validate_trim.c. Format: assets/PACK_FORMAT.md. */
 #include "sw_pack.h"
 
 #include <errno.h>
@@ -64,10 +65,42 @@ SW_PIN(sw_pack_adjacency, edge_a, 8);
 SW_PIN(sw_pack_adjacency, edge_b, 9);
 SW_PIN(sw_pack_adjacency, reversed, 10);
 SW_PIN(sw_pack_adjacency, reserved, 11);
+_Static_assert(sizeof(sw_pack_surface) == 40, "sw_pack_surface");
+SW_PIN(sw_pack_surface, part, 0);
+SW_PIN(sw_pack_surface, first_patch, 4);
+SW_PIN(sw_pack_surface, patch_count, 8);
+SW_PIN(sw_pack_surface, first_loop, 12);
+SW_PIN(sw_pack_surface, loop_count, 16);
+SW_PIN(sw_pack_surface, flags, 20);
+SW_PIN(sw_pack_surface, domain, 24);
+_Static_assert(sizeof(sw_pack_trim_loop) == 12, "sw_pack_trim_loop");
+SW_PIN(sw_pack_trim_loop, first_curve, 0);
+SW_PIN(sw_pack_trim_loop, curve_count, 4);
+SW_PIN(sw_pack_trim_loop, flags, 8);
+_Static_assert(sizeof(sw_pack_trim_curve) == 16, "sw_pack_trim_curve");
+SW_PIN(sw_pack_trim_curve, first_float, 0);
+SW_PIN(sw_pack_trim_curve, count, 4);
+SW_PIN(sw_pack_trim_curve, degree, 8);
+SW_PIN(sw_pack_trim_curve, flags, 9);
+SW_PIN(sw_pack_trim_curve, reserved, 10);
+SW_PIN(sw_pack_trim_curve, reserved2, 12);
+_Static_assert(sizeof(sw_pack_patch_domain) == 24, "sw_pack_patch_domain");
+SW_PIN(sw_pack_patch_domain, surface, 0);
+SW_PIN(sw_pack_patch_domain, mask, 4);
+SW_PIN(sw_pack_patch_domain, domain, 8);
+_Static_assert(sizeof(sw_pack_trim_mask) == 128, "sw_pack_trim_mask");
+_Static_assert(sizeof(sw_pack_viewpoint) == 96, "sw_pack_viewpoint");
+SW_PIN(sw_pack_viewpoint, name, 0);
+SW_PIN(sw_pack_viewpoint, eye, 48);
+SW_PIN(sw_pack_viewpoint, target, 60);
+SW_PIN(sw_pack_viewpoint, up, 72);
+SW_PIN(sw_pack_viewpoint, fov_deg, 84);
+SW_PIN(sw_pack_viewpoint, reserved, 88);
 _Static_assert(sizeof(float) == 4, "CONTROL holds IEEE binary32");
 _Static_assert(sizeof(SW_PACK_MAGIC) - 1 == 8, "magic is 8 bytes");
 
-enum { HEADER_BYTES = 64, SECTION_BYTES = 32, CONTROL_POINT_BYTES = 16 };
+enum { HEADER_BYTES = 64, SECTION_BYTES = 32, CONTROL_POINT_BYTES = 16,
+       TRANSFORM_BYTES = 16 * 4, LAST_KNOWN = SW_SECTION_PART_TRANSFORMS };
 
 const char *sw_section_type_name(uint32_t type)
 {
@@ -77,6 +110,14 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_PATCHES: return "PATCHES";
     case SW_SECTION_CONTROL: return "CONTROL";
     case SW_SECTION_ADJACENCY: return "ADJACENCY";
+    case SW_SECTION_SURFACES: return "SURFACES";
+    case SW_SECTION_TRIM_LOOPS: return "TRIM_LOOPS";
+    case SW_SECTION_TRIM_CURVES: return "TRIM_CURVES";
+    case SW_SECTION_TRIM_DATA: return "TRIM_DATA";
+    case SW_SECTION_PATCH_DOMAINS: return "PATCH_DOMAINS";
+    case SW_SECTION_TRIM_MASKS: return "TRIM_MASKS";
+    case SW_SECTION_VIEWPOINTS: return "VIEWPOINTS";
+    case SW_SECTION_PART_TRANSFORMS: return "PART_TRANSFORMS";
     }
     return "unknown";
 }
@@ -223,17 +264,18 @@ static sw_status check_overlaps(const sw_pack_section *sections, uint32_t count,
     return SW_OK;
 }
 
-/* Finds the known sections: required ones exactly once, ADJACENCY at most
- * once; unknown types are left alone (they passed the bounds and checksum
- * checks already). index[type] is the table index, or -1. */
+/* Finds the known sections: every known type at most once, META, PARTS,
+ * PATCHES and CONTROL exactly once; unknown types are left alone (they passed
+ * the bounds and checksum checks already). index[type] is the table index,
+ * or -1. */
 static sw_status find_sections(const sw_pack_section *sections, uint32_t count,
-                               int32_t index[SW_SECTION_ADJACENCY + 1], sw_error *err)
+                               int32_t index[LAST_KNOWN + 1], sw_error *err)
 {
-    for (uint32_t t = 0; t <= SW_SECTION_ADJACENCY; t++)
+    for (uint32_t t = 0; t <= LAST_KNOWN; t++)
         index[t] = -1;
     for (uint32_t i = 0; i < count; i++) {
         uint32_t t = sections[i].type;
-        if (t < SW_SECTION_META || t > SW_SECTION_ADJACENCY)
+        if (t < SW_SECTION_META || t > LAST_KNOWN)
             continue;
         if (index[t] >= 0)
             return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): a second %s section "
@@ -245,6 +287,27 @@ static sw_status find_sections(const sw_pack_section *sections, uint32_t count,
         if (index[t] < 0)
             return sw_error_set(err, SW_ERR_FORMAT, "section table: no %s section (required)",
                                 sw_section_type_name(t));
+    return SW_OK;
+}
+
+/* The trimmed-surface group: its records index SURFACES, and every patch of
+ * a pack with surfaces needs its domain, so the others are meaningless
+ * alone. VIEWPOINTS and PART_TRANSFORMS stand on their own. */
+static sw_status check_groups(const int32_t index[LAST_KNOWN + 1], sw_error *err)
+{
+    static const uint32_t needs_surfaces[] = { SW_SECTION_TRIM_LOOPS, SW_SECTION_TRIM_CURVES,
+                                               SW_SECTION_TRIM_DATA, SW_SECTION_PATCH_DOMAINS,
+                                               SW_SECTION_TRIM_MASKS };
+    int32_t surfaces = index[SW_SECTION_SURFACES];
+    for (size_t k = 0; surfaces < 0 && k < sizeof needs_surfaces / sizeof *needs_surfaces; k++) {
+        uint32_t t = needs_surfaces[k];
+        if (index[t] >= 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "section %d (%s): present without a "
+                                "SURFACES section", (int)index[t], sw_section_type_name(t));
+    }
+    if (surfaces >= 0 && index[SW_SECTION_PATCH_DOMAINS] < 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "section %d (SURFACES): no PATCH_DOMAINS "
+                            "section (required with SURFACES)", (int)surfaces);
     return SW_OK;
 }
 
@@ -302,6 +365,82 @@ static sw_status map_sections(const uint8_t *data, const int32_t index[], sw_pac
     return SW_OK;
 }
 
+/* An optional section of whole records whose count is its size / record:
+ * *view is NULL and *count 0 when it is absent. */
+static sw_status record_view(const uint8_t *data, const sw_pack_section *sections, int32_t index,
+                             uint64_t record, const void **view, uint32_t *count, sw_error *err)
+{
+    *view = NULL;
+    *count = 0;
+    if (index < 0)
+        return SW_OK;
+    const sw_pack_section *s = &sections[index];
+    const char *name = sw_section_type_name(s->type);
+    if (s->size % record != 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "section %d (%s): %llu bytes, not a multiple "
+                            "of its %llu-byte record", (int)index, name,
+                            (unsigned long long)s->size, (unsigned long long)record);
+    if (s->size / record > UINT32_MAX)
+        return sw_error_set(err, SW_ERR_RANGE, "section %d (%s): %llu records, at most %u",
+                            (int)index, name, (unsigned long long)(s->size / record),
+                            UINT32_MAX);
+    *view = data + s->offset;
+    *count = (uint32_t)(s->size / record);
+    return SW_OK;
+}
+
+/* The optional sections sized by META's counts (one record per patch or
+ * per part): NULL when absent. */
+static sw_status counted_view(const uint8_t *data, const sw_pack_section *sections, int32_t index,
+                              uint32_t type, uint32_t count, uint64_t record,
+                              const char *count_name, const void **view, sw_error *err)
+{
+    *view = NULL;
+    if (index < 0)
+        return SW_OK;
+    sw_status s = check_section_size(sections, index, type, count, record, count_name, err);
+    if (s == SW_OK)
+        *view = data + sections[index].offset;
+    return s;
+}
+
+static sw_status map_optional(const uint8_t *data, const int32_t index[], sw_pack *out,
+                              sw_error *err)
+{
+    const sw_pack_section *sec = out->sections;
+    const void *v[8];
+    sw_status s;
+    if ((s = check_groups(index, err)) != SW_OK ||
+        (s = record_view(data, sec, index[SW_SECTION_SURFACES], sizeof(sw_pack_surface), &v[0],
+                         &out->surface_count, err)) != SW_OK ||
+        (s = record_view(data, sec, index[SW_SECTION_TRIM_LOOPS], sizeof(sw_pack_trim_loop),
+                         &v[1], &out->trim_loop_count, err)) != SW_OK ||
+        (s = record_view(data, sec, index[SW_SECTION_TRIM_CURVES], sizeof(sw_pack_trim_curve),
+                         &v[2], &out->trim_curve_count, err)) != SW_OK ||
+        (s = record_view(data, sec, index[SW_SECTION_TRIM_DATA], sizeof(float), &v[3],
+                         &out->trim_data_count, err)) != SW_OK ||
+        (s = counted_view(data, sec, index[SW_SECTION_PATCH_DOMAINS], SW_SECTION_PATCH_DOMAINS,
+                          out->meta->patch_count, sizeof(sw_pack_patch_domain), "patch_count",
+                          &v[4], err)) != SW_OK ||
+        (s = record_view(data, sec, index[SW_SECTION_TRIM_MASKS], sizeof(sw_pack_trim_mask),
+                         &v[5], &out->trim_mask_count, err)) != SW_OK ||
+        (s = record_view(data, sec, index[SW_SECTION_VIEWPOINTS], sizeof(sw_pack_viewpoint),
+                         &v[6], &out->viewpoint_count, err)) != SW_OK ||
+        (s = counted_view(data, sec, index[SW_SECTION_PART_TRANSFORMS],
+                          SW_SECTION_PART_TRANSFORMS, out->meta->part_count, TRANSFORM_BYTES,
+                          "part_count", &v[7], err)) != SW_OK)
+        return s;
+    out->surfaces = v[0];
+    out->trim_loops = v[1];
+    out->trim_curves = v[2];
+    out->trim_data = v[3];
+    out->patch_domains = v[4];
+    out->trim_masks = v[5];
+    out->viewpoints = v[6];
+    out->part_transforms = v[7];
+    return SW_OK;
+}
+
 static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
 {
     uint64_t expected = sw_pack_runtime_bytes(pack->header->total_size, pack->meta->patch_count);
@@ -338,13 +477,15 @@ sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_er
             return s;
     if ((s = check_overlaps(sections, h->section_count, err)) != SW_OK)
         return s;
-    int32_t index[SW_SECTION_ADJACENCY + 1];
+    int32_t index[LAST_KNOWN + 1];
     if ((s = find_sections(sections, h->section_count, index, err)) != SW_OK)
         return s;
     sw_pack pack = { .data = bytes, .size = size, .header = h, .sections = sections };
     if ((s = map_sections(bytes, index, &pack, err)) != SW_OK ||
+        (s = map_optional(bytes, index, &pack, err)) != SW_OK ||
         (s = check_runtime_bytes(&pack, err)) != SW_OK ||
-        (s = sw_pack_validate_records(&pack, err)) != SW_OK)
+        (s = sw_pack_validate_records(&pack, err)) != SW_OK ||
+        (s = sw_pack_validate_trim(&pack, err)) != SW_OK)
         return s;
     *out = pack;
     return SW_OK;

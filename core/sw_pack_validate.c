@@ -10,19 +10,6 @@
 
 static const char axis_name[4] = { 'x', 'y', 'z', 'w' };
 
-/* Offset of the first byte of s[0..n) that does not start a valid UTF-8
- * sequence, or -1 when all of it is valid. */
-static int utf8_error_at(const unsigned char *s, size_t n)
-{
-    for (size_t i = 0; i < n;) {
-        size_t len = sw_utf8_sequence_length(s + i, n - i);
-        if (len == 0)
-            return (int)i;
-        i += len;
-    }
-    return -1;
-}
-
 enum { NO_INDEX = -1 };
 
 /* The box of record rec (index i, or NO_INDEX for META). The label is only
@@ -83,9 +70,9 @@ static sw_status validate_part(const sw_pack *pack, uint32_t i, sw_error *err)
     if (!nul)
         return sw_error_set(err, SW_ERR_FORMAT, "PARTS[%u].name: no NUL in its %zu bytes",
                             (unsigned)i, sizeof p->name);
-    int bad = utf8_error_at((const unsigned char *)p->name, (size_t)(nul - p->name));
+    long bad = sw_utf8_error_at((const unsigned char *)p->name, (size_t)(nul - p->name));
     if (bad >= 0)
-        return sw_error_set(err, SW_ERR_FORMAT, "PARTS[%u].name: invalid UTF-8 at byte %d",
+        return sw_error_set(err, SW_ERR_FORMAT, "PARTS[%u].name: invalid UTF-8 at byte %ld",
                             (unsigned)i, bad);
     return SW_OK;
 }
@@ -200,6 +187,77 @@ static sw_status validate_adjacency(const sw_pack *pack, uint32_t i, sw_error *e
     return SW_OK;
 }
 
+static sw_status check_vec3_finite(uint32_t i, const char *field, const float *v, sw_error *err)
+{
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(v[k]))
+            return sw_error_set(err, SW_ERR_FORMAT, "VIEWPOINTS[%u].%s.%c: %g, expected a "
+                                "finite number", (unsigned)i, field, axis_name[k], (double)v[k]);
+    return SW_OK;
+}
+
+static sw_status validate_viewpoint(const sw_pack_viewpoint *v, uint32_t i, sw_error *err)
+{
+    const char *nul = memchr(v->name, '\0', sizeof v->name);
+    if (!nul)
+        return sw_error_set(err, SW_ERR_FORMAT, "VIEWPOINTS[%u].name: no NUL in its %zu bytes",
+                            (unsigned)i, sizeof v->name);
+    long bad = sw_utf8_error_at((const unsigned char *)v->name, (size_t)(nul - v->name));
+    if (bad >= 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "VIEWPOINTS[%u].name: invalid UTF-8 at byte %ld",
+                            (unsigned)i, bad);
+    sw_status s;
+    if ((s = check_vec3_finite(i, "eye", v->eye, err)) != SW_OK ||
+        (s = check_vec3_finite(i, "target", v->target, err)) != SW_OK ||
+        (s = check_vec3_finite(i, "up", v->up, err)) != SW_OK)
+        return s;
+    /* A camera needs a direction to look in and an up to roll by. */
+    if (v->eye[0] == v->target[0] && v->eye[1] == v->target[1] && v->eye[2] == v->target[2])
+        return sw_error_set(err, SW_ERR_FORMAT, "VIEWPOINTS[%u].target: equals eye (%g, %g, %g)",
+                            (unsigned)i, (double)v->eye[0], (double)v->eye[1],
+                            (double)v->eye[2]);
+    if (v->up[0] == 0.0f && v->up[1] == 0.0f && v->up[2] == 0.0f)
+        return sw_error_set(err, SW_ERR_FORMAT, "VIEWPOINTS[%u].up: the zero vector",
+                            (unsigned)i);
+    if (!(v->fov_deg >= 0.0f && v->fov_deg < 180.0f))
+        return sw_error_set(err, SW_ERR_FORMAT, "VIEWPOINTS[%u].fov_deg: %g, expected 0 "
+                            "(the default) or between 0 and 180", (unsigned)i, (double)v->fov_deg);
+    for (size_t k = 0; k < sizeof v->reserved; k++)
+        if (v->reserved[k] != 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "VIEWPOINTS[%u].reserved[%zu]: 0x%02x, "
+                                "expected 0", (unsigned)i, k, v->reserved[k]);
+    return SW_OK;
+}
+
+/* Column-major 4 x 4 (sw_mat4): finite and affine, so the runtime can place
+ * and invert a part without a projective divide. */
+static sw_status validate_part_transform(const float *m, uint32_t i, sw_error *err)
+{
+    for (int k = 0; k < 16; k++)
+        if (!isfinite(m[k]))
+            return sw_error_set(err, SW_ERR_FORMAT, "PART_TRANSFORMS[%u][%d]: %g, expected a "
+                                "finite number", (unsigned)i, k, (double)m[k]);
+    static const int row3[4] = { 3, 7, 11, 15 };
+    for (int c = 0; c < 4; c++) {
+        float want = c == 3 ? 1.0f : 0.0f;
+        if (m[row3[c]] != want)
+            return sw_error_set(err, SW_ERR_FORMAT, "PART_TRANSFORMS[%u][%d]: %g, expected %g "
+                                "(the last row of an affine map is 0 0 0 1)", (unsigned)i,
+                                row3[c], (double)m[row3[c]], (double)want);
+    }
+    return SW_OK;
+}
+
+static sw_status validate_scene_records(const sw_pack *pack, sw_error *err)
+{
+    sw_status s = SW_OK;
+    for (uint32_t i = 0; s == SW_OK && i < pack->viewpoint_count; i++)
+        s = validate_viewpoint(&pack->viewpoints[i], i, err);
+    for (uint32_t i = 0; s == SW_OK && pack->part_transforms && i < pack->meta->part_count; i++)
+        s = validate_part_transform(&pack->part_transforms[(size_t)i * 16], i, err);
+    return s;
+}
+
 sw_status sw_pack_validate_records(const sw_pack *pack, sw_error *err)
 {
     const sw_pack_meta *m = pack->meta;
@@ -219,5 +277,5 @@ sw_status sw_pack_validate_records(const sw_pack *pack, sw_error *err)
     for (uint32_t i = 0; i < m->adjacency_count; i++)
         if ((s = validate_adjacency(pack, i, err)) != SW_OK)
             return s;
-    return SW_OK;
+    return validate_scene_records(pack, err);
 }

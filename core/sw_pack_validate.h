@@ -3,15 +3,22 @@
  * checksum have been verified and each view's byte size matches its META
  * count, and two small rules the writer (assets/sw_pack_write.c) shares.
  * Split out so each file keeps one job: sw_pack_read.c the container,
- * sw_pack_validate.c the records. */
+ * sw_pack_validate.c and sw_pack_validate_trim.c the records. */
 #ifndef SW_PACK_VALIDATE_H
 #define SW_PACK_VALIDATE_H
 
 #include "sw_pack.h"
 
 /* pack's views and counts are in bounds; checks every record of META, PARTS,
- * PATCHES, CONTROL and ADJACENCY for values the runtime relies on. */
+ * PATCHES, CONTROL, ADJACENCY, VIEWPOINTS and PART_TRANSFORMS for values the
+ * runtime relies on. */
 sw_status sw_pack_validate_records(const sw_pack *pack, sw_error *err);
+
+/* The trimmed-surface group (SURFACES, TRIM_LOOPS, TRIM_CURVES, TRIM_DATA,
+ * PATCH_DOMAINS, TRIM_MASKS), in sw_pack_validate_trim.c; runs after
+ * sw_pack_validate_records, so parts and patches are known good. Nothing to
+ * check when the pack has no SURFACES section. */
+sw_status sw_pack_validate_trim(const sw_pack *pack, sw_error *err);
 
 /* Number of control points along edge (enum sw_patch_edge) of patch. */
 static inline uint32_t sw_pack_edge_points(const sw_pack_patch *patch, uint32_t edge)
@@ -39,6 +46,19 @@ static inline size_t sw_utf8_sequence_length(const unsigned char *s, size_t n)
         (c == 0xF4 && c1 > 0x8F))
         return 0;
     return len;
+}
+
+/* Offset of the first byte of s[0..n) that does not start a valid UTF-8
+ * sequence, or -1 when all of it is valid. */
+static inline long sw_utf8_error_at(const unsigned char *s, size_t n)
+{
+    for (size_t i = 0; i < n;) {
+        size_t len = sw_utf8_sequence_length(s + i, n - i);
+        if (len == 0)
+            return (long)i;
+        i += len;
+    }
+    return -1;
 }
 
 #endif

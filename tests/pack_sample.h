@@ -15,9 +15,16 @@
 #include "sw_pack.h"
 #include "sw_pack_write.h"
 
-/* ---- a small pack built by hand: 2 parts, 3 patches, 1 adjacency ---- */
+/* ---- a small pack built by hand: 2 parts, 3 patches, 1 adjacency ----
+ * and every optional section: surface 0 (part 0, patches 0..1, domain
+ * [0, 2] x [0, 1]) trimmed by an outer rectangle (a degree-1 curve) and an
+ * inner circle (a rational quadratic, computed); surface 1 (part 1, patch 2)
+ * untrimmed; one mask, one viewpoint, two part transforms. */
 
-enum { SAMPLE_CONTROL = 16 + 9 + 16 };
+enum { SAMPLE_CONTROL = 16 + 9 + 16, SAMPLE_SECTIONS = 13 };
+/* TRIM_DATA: the rectangle's 7 knots and 5 points, the circle's 12 knots
+ * and 9 points. */
+enum { RECT_AT = 0, CIRCLE_AT = 7 + 5 * 3, SAMPLE_TRIM_DATA = CIRCLE_AT + 12 + 9 * 3 };
 
 typedef struct sample {
     sw_pack_meta meta;
@@ -25,6 +32,15 @@ typedef struct sample {
     sw_pack_patch patches[3];
     float control[SAMPLE_CONTROL * 4];
     sw_pack_adjacency adjacency[1];
+    sw_pack_surface surfaces[2];
+    sw_pack_trim_loop loops[2];
+    sw_pack_trim_curve curves[2];
+    float trim_data[SAMPLE_TRIM_DATA];
+    sw_pack_patch_domain domains[3];
+    sw_pack_trim_mask masks[1];
+    sw_pack_viewpoint viewpoints[1];
+    float transforms[2 * 16];
+    int bezier_only;   /* 1: serialise without the optional sections */
 } sample;
 
 static inline void set_grid(float *ctrl, int du, int dv, float x0, float z_bump, float w_mid)
@@ -60,6 +76,50 @@ static inline void fit_boxes(sample *s)
     }
 }
 
+static inline void set_trim_curves(sample *s)
+{
+    static const float rect[7 + 5 * 3] = {
+        0, 0, 1, 2, 3, 4, 4,
+        0.1f, 0.1f, 1, 1.9f, 0.1f, 1, 1.9f, 0.9f, 1, 0.1f, 0.9f, 1, 0.1f, 0.1f, 1 };
+    /* A full circle of radius 0.2 about (1, 0.5): four rational quarter arcs. */
+    static const float circle[12 + 9 * 3] = {
+        0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4,
+        1.2f, 0.5f, 1, 1.2f, 0.7f, 0.70710678f, 1.0f, 0.7f, 1, 0.8f, 0.7f, 0.70710678f,
+        0.8f, 0.5f, 1, 0.8f, 0.3f, 0.70710678f, 1.0f, 0.3f, 1, 1.2f, 0.3f, 0.70710678f,
+        1.2f, 0.5f, 1 };
+    memcpy(&s->trim_data[RECT_AT], rect, sizeof rect);
+    memcpy(&s->trim_data[CIRCLE_AT], circle, sizeof circle);
+    s->curves[0] = (sw_pack_trim_curve){ .first_float = RECT_AT, .count = 5, .degree = 1 };
+    s->curves[1] = (sw_pack_trim_curve){ .first_float = CIRCLE_AT, .count = 9, .degree = 2,
+                                         .flags = SW_TRIM_RATIONAL | SW_TRIM_COMPUTED };
+    s->loops[0] = (sw_pack_trim_loop){ .first_curve = 0, .curve_count = 1, .flags = SW_LOOP_OUTER };
+    s->loops[1] = (sw_pack_trim_loop){ .first_curve = 1, .curve_count = 1 };
+}
+
+static inline void set_trim_sections(sample *s)
+{
+    set_trim_curves(s);
+    s->surfaces[0] = (sw_pack_surface){ .part = 0, .first_patch = 0, .patch_count = 2,
+                                        .first_loop = 0, .loop_count = 2,
+                                        .domain = { 0, 2, 0, 1 } };
+    s->surfaces[1] = (sw_pack_surface){ .part = 1, .first_patch = 2, .patch_count = 1,
+                                        .domain = { 0, 1, 0, 1 } };
+    s->domains[0] = (sw_pack_patch_domain){ .surface = 0, .mask = 0, .domain = { 0, 1, 0, 1 } };
+    s->domains[1] = (sw_pack_patch_domain){ .surface = 0, .mask = SW_MASK_NONE,
+                                            .domain = { 1, 2, 0, 1 } };
+    s->domains[2] = (sw_pack_patch_domain){ .surface = 1, .mask = SW_MASK_NONE,
+                                            .domain = { 0, 1, 0, 1 } };
+    for (int j = 0; j < 32; j++)
+        s->masks[0].rows[j] = j >= 3 && j <= 28 ? 0xFFFFFFF8u : 0; /* inside the rectangle */
+    s->viewpoints[0] = (sw_pack_viewpoint){ .name = "front", .eye = { 1, 0.5f, 3 },
+                                            .target = { 1, 0.5f, 0 }, .up = { 0, 1, 0 },
+                                            .fov_deg = 50 };
+    for (int p = 0; p < 2; p++)
+        for (int k = 0; k < 16; k++)
+            s->transforms[p * 16 + k] = k % 5 == 0 ? 1.0f : 0.0f;
+    s->transforms[16 + 12] = 1.0f; /* part 1 moved by +1 along x */
+}
+
 static inline void make_sample(sample *s)
 {
     memset(s, 0, sizeof *s);
@@ -83,12 +143,30 @@ static inline void make_sample(sample *s)
     s->adjacency[0] = (sw_pack_adjacency){ .patch_a = 0, .patch_b = 2, .edge_a = SW_EDGE_U1,
                                            .edge_b = SW_EDGE_U0 };
     fit_boxes(s);
+    set_trim_sections(s);
 }
 
 static inline sw_pack_contents sample_contents(const sample *s)
 {
-    return (sw_pack_contents){ .meta = s->meta, .parts = s->parts, .patches = s->patches,
-                               .control = s->control, .adjacency = s->adjacency };
+    sw_pack_contents c = { .meta = s->meta, .parts = s->parts, .patches = s->patches,
+                           .control = s->control, .adjacency = s->adjacency };
+    if (s->bezier_only)
+        return c;
+    c.surfaces = s->surfaces;
+    c.surface_count = 2;
+    c.trim_loops = s->loops;
+    c.trim_loop_count = 2;
+    c.trim_curves = s->curves;
+    c.trim_curve_count = 2;
+    c.trim_data = s->trim_data;
+    c.trim_data_count = SAMPLE_TRIM_DATA;
+    c.patch_domains = s->domains;
+    c.trim_masks = s->masks;
+    c.trim_mask_count = 1;
+    c.viewpoints = s->viewpoints;
+    c.viewpoint_count = 1;
+    c.part_transforms = s->transforms;
+    return c;
 }
 
 /* Serialised sample; malloc'd, so 8-byte aligned as the reader requires. */
@@ -117,9 +195,9 @@ static inline void reseal(uint8_t *bytes)
 
 /* ---- forward compatibility ---- */
 
-/* Adds a 64-byte section of type 99 at the end. The sample's table ends at
- * byte 224 and its first section starts at 256, so a sixth entry fits
- * without moving anything. */
+/* Adds a 64-byte section of type 99 at the end. The sample's table of 13
+ * entries ends at byte 480 and its first section starts at 512, so a 14th
+ * entry fits without moving anything (and a 6th after a Bezier-only table). */
 static inline uint8_t *add_unknown_section(const uint8_t *bytes, size_t size, size_t *new_size)
 {
     size_t at = (size + 63) / 64 * 64;

@@ -41,7 +41,7 @@ static void test_round_trip_keeps_every_field(void)
     SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
     SW_CHECK(pack.header->total_size == size);
     SW_CHECK(pack.header->runtime_bytes == sw_pack_runtime_bytes(size, 3));
-    SW_CHECK(pack.header->section_count == 5);
+    SW_CHECK(pack.header->section_count == SAMPLE_SECTIONS);
     SW_CHECK(memcmp(pack.meta, &s.meta, sizeof s.meta) == 0);
     SW_CHECK(memcmp(pack.parts, s.parts, sizeof s.parts) == 0);
     SW_CHECK(memcmp(pack.patches, s.patches, sizeof s.patches) == 0);
@@ -53,7 +53,52 @@ static void test_round_trip_keeps_every_field(void)
     for (uint32_t i = 0; i < pack.header->section_count; i++) {
         SW_CHECK(pack.sections[i].offset % 64 == 0);
         SW_CHECK(pack.sections[i].flags == 0);
+        SW_CHECK(pack.sections[i].type == i + 1); /* written in type order */
     }
+    free(bytes);
+}
+
+static void test_round_trip_keeps_optional_sections(void)
+{
+    sample s;
+    make_sample(&s);
+    size_t size = 0;
+    uint8_t *bytes = serialize_sample(&s, &size);
+    sw_pack pack;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.surface_count == 2 && memcmp(pack.surfaces, s.surfaces, sizeof s.surfaces) == 0);
+    SW_CHECK(pack.trim_loop_count == 2 && memcmp(pack.trim_loops, s.loops, sizeof s.loops) == 0);
+    SW_CHECK(pack.trim_curve_count == 2 &&
+             memcmp(pack.trim_curves, s.curves, sizeof s.curves) == 0);
+    SW_CHECK(pack.trim_data_count == SAMPLE_TRIM_DATA &&
+             memcmp(pack.trim_data, s.trim_data, sizeof s.trim_data) == 0);
+    SW_CHECK(memcmp(pack.patch_domains, s.domains, sizeof s.domains) == 0);
+    SW_CHECK(pack.trim_mask_count == 1 && memcmp(pack.trim_masks, s.masks, sizeof s.masks) == 0);
+    SW_CHECK(pack.viewpoint_count == 1 &&
+             memcmp(pack.viewpoints, s.viewpoints, sizeof s.viewpoints) == 0);
+    SW_CHECK(memcmp(pack.part_transforms, s.transforms, sizeof s.transforms) == 0);
+    SW_CHECK(strcmp(pack.viewpoints[0].name, "front") == 0);
+    SW_CHECK(pack.patch_domains[1].mask == SW_MASK_NONE && pack.trim_masks[0].rows[3] == 0xFFFFFFF8u);
+    SW_CHECK(pack.trim_curves[1].flags == (SW_TRIM_RATIONAL | SW_TRIM_COMPUTED));
+    free(bytes);
+}
+
+static void test_bezier_only_pack_has_no_optional_views(void)
+{
+    sample s;
+    make_sample(&s);
+    s.bezier_only = 1;
+    size_t size = 0;
+    uint8_t *bytes = serialize_sample(&s, &size);
+    sw_pack pack;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.header->section_count == 5);
+    SW_CHECK(!pack.surfaces && !pack.trim_loops && !pack.trim_curves && !pack.trim_data &&
+             !pack.patch_domains && !pack.trim_masks && !pack.viewpoints && !pack.part_transforms);
+    SW_CHECK(pack.surface_count == 0 && pack.trim_loop_count == 0 && pack.trim_curve_count == 0 &&
+             pack.trim_data_count == 0 && pack.trim_mask_count == 0 && pack.viewpoint_count == 0);
     free(bytes);
 }
 
@@ -69,6 +114,10 @@ static void test_section_type_names(void)
 {
     SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_META), "META") == 0);
     SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_ADJACENCY), "ADJACENCY") == 0);
+    SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_SURFACES), "SURFACES") == 0);
+    SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_PATCH_DOMAINS), "PATCH_DOMAINS") == 0);
+    SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_PART_TRANSFORMS), "PART_TRANSFORMS") == 0);
+    SW_CHECK(strcmp(sw_section_type_name(14), "unknown") == 0);
     SW_CHECK(strcmp(sw_section_type_name(0), "unknown") == 0);
     SW_CHECK(strcmp(sw_section_type_name(99), "unknown") == 0);
 }
@@ -102,7 +151,9 @@ static void test_flipped_byte_in_each_section_names_it(void)
     size_t size = 0;
     uint8_t *bytes = serialize_sample(&s, &size);
     const sw_pack_section *table = table_of(bytes);
-    for (int i = 0; i < 5; i++) {
+    for (uint32_t i = 0; i < header_of(bytes)->section_count; i++) {
+        if (table[i].size == 0)
+            continue;
         uint64_t at[3] = { table[i].offset, table[i].offset + table[i].size / 2,
                            table[i].offset + table[i].size - 1 };
         char name[32];
@@ -125,7 +176,7 @@ static void test_flipped_byte_in_header_or_table_is_rejected(void)
     make_sample(&s);
     size_t size = 0;
     uint8_t *bytes = serialize_sample(&s, &size);
-    for (size_t at = 0; at < 64 + 5 * 32; at++) {
+    for (size_t at = 0; at < 64 + SAMPLE_SECTIONS * 32; at++) {
         bytes[at] ^= 0x01;
         sw_error err;
         sw_status st = open_bytes(bytes, size, &err);
@@ -403,12 +454,12 @@ static void test_unknown_section_is_skipped(void)
     sw_pack pack;
     sw_error err = { 0 };
     SW_CHECK_MSG(sw_pack_open_memory(grown, grown_size, &pack, &err) == SW_OK, "%s", err.message);
-    SW_CHECK(pack.header->section_count == 6);
+    SW_CHECK(pack.header->section_count == SAMPLE_SECTIONS + 1);
     SW_CHECK(memcmp(pack.patches, s.patches, sizeof s.patches) == 0);
     /* Skipped, but still checked: its bytes are covered by its checksum. */
     grown[grown_size - 1] ^= 1;
     SW_CHECK(sw_pack_open_memory(grown, grown_size, &pack, &err) == SW_ERR_CHECKSUM);
-    SW_CHECK_MSG(strstr(err.message, "section 5 (type 99): checksum mismatch"), "%s", err.message);
+    SW_CHECK_MSG(strstr(err.message, "section 13 (type 99): checksum mismatch"), "%s", err.message);
     free(grown);
     free(bytes);
 }
@@ -491,6 +542,8 @@ int main(void)
         return 1;
     }
     SW_RUN(test_round_trip_keeps_every_field);
+    SW_RUN(test_round_trip_keeps_optional_sections);
+    SW_RUN(test_bezier_only_pack_has_no_optional_views);
     SW_RUN(test_runtime_bytes_formula);
     SW_RUN(test_section_type_names);
     SW_RUN(test_every_truncation_is_rejected);

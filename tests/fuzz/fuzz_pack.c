@@ -16,6 +16,46 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 static volatile float sink;
 
+/* Each trimming curve's knots and points, through the loops of each surface,
+ * the way a trimming tessellator would reach them. */
+static float walk_trims(const sw_pack *pack)
+{
+    float sum = 0;
+    for (uint32_t i = 0; i < pack->surface_count; i++) {
+        const sw_pack_surface *s = &pack->surfaces[i];
+        sum += pack->parts[s->part].color[1];
+        for (uint32_t p = 0; p < s->patch_count; p++)
+            sum += pack->patches[s->first_patch + p].box_min[1];
+        for (uint32_t l = 0; l < s->loop_count; l++) {
+            const sw_pack_trim_loop *loop = &pack->trim_loops[s->first_loop + l];
+            for (uint32_t c = 0; c < loop->curve_count; c++) {
+                const sw_pack_trim_curve *curve = &pack->trim_curves[loop->first_curve + c];
+                size_t n = (size_t)curve->count * 4 + curve->degree + 1;
+                for (size_t k = 0; k < n; k++)
+                    sum += pack->trim_data[curve->first_float + k];
+            }
+        }
+    }
+    for (uint32_t i = 0; pack->patch_domains && i < pack->meta->patch_count; i++) {
+        const sw_pack_patch_domain *d = &pack->patch_domains[i];
+        sum += pack->surfaces[d->surface].domain[0] + d->domain[1];
+        if (d->mask != SW_MASK_NONE)
+            sum += (float)pack->trim_masks[d->mask].rows[31];
+    }
+    return sum;
+}
+
+/* Viewpoint names as strings, part transforms by part. */
+static float walk_scene(const sw_pack *pack)
+{
+    float sum = 0;
+    for (uint32_t i = 0; i < pack->viewpoint_count; i++)
+        sum += (float)strlen(pack->viewpoints[i].name) + pack->viewpoints[i].up[2];
+    for (uint32_t i = 0; pack->part_transforms && i < pack->meta->part_count; i++)
+        sum += pack->part_transforms[(size_t)i * 16 + 15];
+    return sum;
+}
+
 static void walk(const sw_pack *pack)
 {
     float sum = 0;
@@ -32,7 +72,7 @@ static void walk(const sw_pack *pack)
     for (uint32_t i = 0; i < pack->meta->adjacency_count; i++)
         sum += pack->patches[pack->adjacency[i].patch_a].box_min[0] +
                pack->patches[pack->adjacency[i].patch_b].box_max[0];
-    sink = sum;
+    sink = sum + walk_trims(pack) + walk_scene(pack);
 }
 
 /* Recomputes what it can: section checksums whose ranges lie in the buffer,
