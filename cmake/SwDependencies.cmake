@@ -18,3 +18,4 @@ pkg_check_modules(GLU IMPORTED_TARGET glu)
 pkg_check_modules(OPENGL IMPORTED_TARGET opengl)
 
 find_library(MATH_LIBRARY m REQUIRED)
+include(SwOcct)   # OpenCASCADE for STEP import (optional, see cmake/SwOcct.cmake)

@@ -1,0 +1,908 @@
+/* STEP (AP203, AP214, AP242) and IGES through OpenCASCADE 7.6 behind the C
+ * interface of sw_import_occt.h and sw_occt_measure.h.
+ *
+ * Reading: STEP through STEPCAFControl_Reader into an XCAF document, whose
+ * assembly tree gives one model part per leaf shape instance with its name and
+ * location (STEPControl_Reader's roots when the document holds no shapes).
+ * IGES has no assembly tree worth the name: its roots become one part named
+ * after the file. OCCT scales everything to millimetres ("xstep.cascade.unit").
+ *
+ * Converting: each face to NURBS (BRepBuilderAPI_NurbsConvert); each edge's
+ * parameter-space curve from the converted face, built with ShapeFix first
+ * where the shape has none; 2D curves as clamped B-splines (Geom2dConvert),
+ * reversed for reversed edges; loops from the face's wires in wire order.
+ *
+ * No C++ exception crosses the C interface: every entry point catches
+ * Standard_Failure, std::exception and anything else. OCCT's messages are
+ * captured (not printed) while we run, so an error can quote them. */
+extern "C" {
+#include "sw_import_occt.h"
+#include "sw_math.h"
+#include "sw_occt_measure.h"
+}
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom2dConvert.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
+#include <Message_ProgressIndicator.hxx>
+#include <Message_ProgressScope.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <STEPControl_Reader.hxx>
+#include <ShapeFix_Wire.hxx>
+#include <Standard_Failure.hxx>
+#include <StepBasic_UncertaintyMeasureWithUnit.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepGeom_Pcurve.hxx>
+#include <StepGeom_Surface.hxx>
+#include <StepGeom_SurfaceCurve.hxx>
+#include <StepShape_AdvancedFace.hxx>
+#include <StepShape_EdgeCurve.hxx>
+#include <StepShape_EdgeLoop.hxx>
+#include <StepShape_FaceBound.hxx>
+#include <StepShape_OrientedEdge.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_SequenceOfAsciiString.hxx>
+#include <TCollection_AsciiString.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeInteger.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Wire.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <TransferBRep.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+/* ---- OCCT's messages and progress ------------------------------------- */
+
+/* Keeps OCCT's fail and alarm messages instead of printing them: a library
+ * must not write to the tool's stdout, and the first failure is the best
+ * description of a malformed file we get. */
+class CapturePrinter : public Message_Printer {
+public:
+    mutable std::vector<std::string> lines;
+
+protected:
+    void send(const TCollection_AsciiString &text, const Message_Gravity gravity) const override
+    {
+        if (gravity >= Message_Alarm && lines.size() < 16)
+            lines.emplace_back(text.ToCString());
+    }
+};
+
+/* Replaces the default messenger's printers for the lifetime of one call. */
+class MessageCapture {
+public:
+    MessageCapture() : printer_(new CapturePrinter)
+    {
+        const Handle(Message_Messenger) &messenger = Message::DefaultMessenger();
+        saved_ = messenger->Printers();
+        messenger->ChangePrinters().Clear();
+        messenger->AddPrinter(printer_);
+    }
+    ~MessageCapture()
+    {
+        const Handle(Message_Messenger) &messenger = Message::DefaultMessenger();
+        messenger->ChangePrinters() = saved_;
+    }
+    MessageCapture(const MessageCapture &) = delete;
+    MessageCapture &operator=(const MessageCapture &) = delete;
+
+    /* The first captured line, trimmed, or "" when OCCT said nothing. */
+    std::string first() const
+    {
+        for (const std::string &line : printer_->lines) {
+            size_t b = line.find_first_not_of(" \t\r\n*");
+            size_t e = line.find_last_not_of(" \t\r\n");
+            if (b != std::string::npos)
+                return line.substr(b, e - b + 1);
+        }
+        return std::string();
+    }
+
+private:
+    Handle(CapturePrinter) printer_;
+    Message_SequenceOfPrinters saved_;
+};
+
+/* Forwards OCCT's transfer progress to options->progress, at most once per
+ * percent so the callback stays cheap. */
+class ProgressForward : public Message_ProgressIndicator {
+public:
+    ProgressForward(const sw_import_options *options, const char *stage)
+        : options_(options), stage_(stage)
+    {
+    }
+
+protected:
+    void Show(const Message_ProgressScope &, const Standard_Boolean force) override
+    {
+        double position = GetPosition();
+        if (!force && position - last_ < 0.01)
+            return;
+        last_ = position;
+        options_->progress(options_->progress_user, stage_, position);
+    }
+
+private:
+    const sw_import_options *options_;
+    const char *stage_;
+    double last_ = -1.0;
+};
+
+void report_progress(const sw_import_options *options, const char *stage, double fraction)
+{
+    if (options && options->progress)
+        options->progress(options->progress_user, stage, fraction);
+}
+
+/* ---- small helpers ----------------------------------------------------- */
+
+std::string lower_extension(const char *path)
+{
+    const char *dot = std::strrchr(path, '.');
+    const char *slash = std::strrchr(path, '/');
+    if (!dot || (slash && dot < slash))
+        return std::string();
+    std::string ext(dot + 1);
+    for (char &c : ext)
+        c = (char)std::tolower((unsigned char)c);
+    return ext;
+}
+
+/* "dir/linkrods.step" -> "linkrods": the part name when the file has none. */
+std::string file_stem(const char *path)
+{
+    const char *slash = std::strrchr(path, '/');
+    std::string name(slash ? slash + 1 : path);
+    size_t dot = name.rfind('.');
+    return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
+sw_mat4 matrix_of(const gp_Trsf &t)
+{
+    sw_mat4 m = sw_mat4_identity();
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+            m.m[c * 4 + r] = t.Value(r + 1, c + 1);
+    return m;
+}
+
+/* ---- geometry: OCCT B-splines as seamwalk's clamped NURBS -------------- */
+
+/* A 2D curve's points as (u, v, 0, w) and its flat knot vector. */
+struct TrimCurve {
+    int degree = 0, count = 0;
+    std::vector<double> knots, ctrl;
+};
+
+Handle(Geom2d_BSplineCurve) clamped_pcurve(const Handle(Geom2d_Curve) &curve, double first,
+                                           double last)
+{
+    Handle(Geom2d_BSplineCurve) b = Handle(Geom2d_BSplineCurve)::DownCast(curve);
+    if (b.IsNull()) {
+        Handle(Geom2d_TrimmedCurve) piece = new Geom2d_TrimmedCurve(curve, first, last);
+        return Geom2dConvert::CurveToBSplineCurve(piece);
+    }
+    b = Handle(Geom2d_BSplineCurve)::DownCast(b->Copy());
+    if (std::fabs(first - b->FirstParameter()) > 1e-12 ||
+        std::fabs(last - b->LastParameter()) > 1e-12)
+        b->Segment(first, last);
+    /* OCCT's non-periodic B-splines always have end knots of full
+     * multiplicity, so this is what clamps a periodic one. */
+    if (b->IsPeriodic())
+        b->SetNotPeriodic();
+    return b;
+}
+
+TrimCurve trim_curve_of(const Handle(Geom2d_BSplineCurve) &b)
+{
+    TrimCurve t;
+    t.degree = b->Degree();
+    t.count = b->NbPoles();
+    TColStd_Array1OfReal flat(1, b->NbPoles() + b->Degree() + 1);
+    b->KnotSequence(flat);
+    t.knots.assign(flat.begin(), flat.end());
+    t.ctrl.reserve((size_t)t.count * 4);
+    for (int i = 1; i <= t.count; i++) {
+        gp_Pnt2d p = b->Pole(i);
+        t.ctrl.insert(t.ctrl.end(), {p.X(), p.Y(), 0.0, b->Weight(i)});
+    }
+    return t;
+}
+
+struct Surface {
+    std::vector<double> knots_u, knots_v, ctrl;
+    sw_nurbs_surface view{};
+};
+
+Handle(Geom_BSplineSurface) bspline_surface_of(const TopoDS_Face &face)
+{
+    Handle(Geom_Surface) s = BRep_Tool::Surface(face);   /* the face's location applied */
+    Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(s);
+    if (b.IsNull())
+        b = GeomConvert::SurfaceToBSplineSurface(s);
+    else
+        b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
+    if (b->IsUPeriodic())
+        b->SetUNotPeriodic();
+    if (b->IsVPeriodic())
+        b->SetVNotPeriodic();
+    return b;
+}
+
+void fill_surface(const Handle(Geom_BSplineSurface) &b, Surface *out)
+{
+    int nu = b->NbUPoles(), nv = b->NbVPoles();
+    TColStd_Array1OfReal ku(1, nu + b->UDegree() + 1), kv(1, nv + b->VDegree() + 1);
+    b->UKnotSequence(ku);
+    b->VKnotSequence(kv);
+    out->knots_u.assign(ku.begin(), ku.end());
+    out->knots_v.assign(kv.begin(), kv.end());
+    out->ctrl.resize((size_t)nu * (size_t)nv * 4);
+    for (int j = 0; j < nv; j++)
+        for (int i = 0; i < nu; i++) {
+            gp_Pnt p = b->Pole(i + 1, j + 1);
+            double *c = &out->ctrl[((size_t)j * (size_t)nu + (size_t)i) * 4];
+            c[0] = p.X();
+            c[1] = p.Y();
+            c[2] = p.Z();
+            c[3] = b->Weight(i + 1, j + 1);
+        }
+    out->view.degree_u = b->UDegree();
+    out->view.degree_v = b->VDegree();
+    out->view.count_u = nu;
+    out->view.count_v = nv;
+    out->view.knots_u = out->knots_u.data();
+    out->view.knots_v = out->knots_v.data();
+    out->view.ctrl = out->ctrl.data();
+}
+
+/* ---- faces -------------------------------------------------------------- */
+
+/* What the file itself said about p-curves: for STEP, the number of edge uses
+ * of each face (keyed by the face's TShape) whose edge carries no PCURVE on
+ * that face's surface, so OCCT's reader had to project one. */
+typedef TopTools_DataMapOfShapeInteger FilePcurveGaps;
+
+struct ImportContext {
+    const char *path;
+    const sw_import_options *options;
+    sw_model *model;
+    sw_import_report *report;
+    sw_error *err;
+    FilePcurveGaps gaps;
+    size_t faces_total = 0, faces_done = 0;
+};
+
+/* Edge uses of the wire (in the original face) without a p-curve, given one
+ * with ShapeFix; returns how many were missing. Planes need none stored (OCCT
+ * projects on the fly), but those projections are computed all the same. */
+int fix_missing_pcurves(const TopoDS_Wire &wire, const TopoDS_Face &face)
+{
+    int missing = 0, absent = 0;
+    for (TopoDS_Iterator it(wire); it.More(); it.Next()) {
+        const TopoDS_Edge &edge = TopoDS::Edge(it.Value());
+        Standard_Real f, l;
+        Standard_Boolean stored = Standard_False;
+        Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(edge, face, f, l, &stored);
+        if (!stored)
+            missing++;
+        if (c.IsNull())
+            absent++;
+    }
+    if (absent > 0) {
+        Handle(ShapeFix_Wire) fix = new ShapeFix_Wire(wire, face, Precision::Confusion());
+        fix->FixEdgeCurves();
+    }
+    return missing;
+}
+
+struct Loop {
+    std::vector<TrimCurve> curves;
+    std::vector<int> computed;
+    int outer = 0;
+};
+
+/* The loop of one wire: each edge's p-curve on the converted face, in wire
+ * order, reversed where the edge runs against its curve. */
+bool loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
+                  const BRepBuilderAPI_NurbsConvert &conv, const TopoDS_Face &converted,
+                  int computed, Loop *loop)
+{
+    int edges_in_wire = 0, explored = 0;
+    for (TopoDS_Iterator it(wire); it.More(); it.Next())
+        edges_in_wire++;
+    for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next()) {
+        const TopoDS_Edge &edge = ex.Current();
+        TopoDS_Edge moved = TopoDS::Edge(conv.ModifiedShape(edge));
+        moved.Orientation(edge.Orientation());
+        Standard_Real f, l;
+        Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(moved, converted, f, l);
+        if (c.IsNull())
+            return false;
+        Handle(Geom2d_BSplineCurve) b = clamped_pcurve(c, f, l);
+        if (edge.Orientation() == TopAbs_REVERSED)
+            b->Reverse();
+        loop->curves.push_back(trim_curve_of(b));
+        loop->computed.push_back(computed);
+        explored++;
+    }
+    /* BRepTools_WireExplorer skips edges of wires it cannot chain; a loop
+     * with a gap would trim wrongly, so that is a failure, not a loop. */
+    return explored == edges_in_wire && explored > 0;
+}
+
+/* Adds one face to the current part. mirrored: the part's placement flips
+ * handedness, which flips the face's normal once more. */
+sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
+{
+    TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+    int reversed = (face.Orientation() == TopAbs_REVERSED) != mirrored;
+    if (face.Location().Transformation().IsNegative())
+        reversed = !reversed;
+
+    int file_gaps = 0;
+    ctx->gaps.Find(forward.Located(TopLoc_Location()), file_gaps);
+    int missing = 0;
+    for (TopoDS_Iterator it(forward); it.More(); it.Next())
+        if (it.Value().ShapeType() == TopAbs_WIRE)
+            missing += fix_missing_pcurves(TopoDS::Wire(it.Value()), forward);
+    ctx->report->pcurves_computed += (size_t)std::max(missing, file_gaps);
+    int computed = missing > 0 || file_gaps > 0;
+
+    BRepBuilderAPI_NurbsConvert conv(forward, Standard_True);
+    TopoDS_Face converted = TopoDS::Face(conv.Shape().Oriented(TopAbs_FORWARD));
+    Surface surface;
+    fill_surface(bspline_surface_of(converted), &surface);
+
+    TopoDS_Wire outer = BRepTools::OuterWire(forward);
+    std::vector<Loop> loops;
+    for (TopoDS_Iterator it(forward); it.More(); it.Next()) {
+        if (it.Value().ShapeType() != TopAbs_WIRE)
+            continue;
+        Loop loop;
+        const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
+        loop.outer = wire.IsSame(outer);
+        if (!loop_of_wire(wire, forward, conv, converted, computed, &loop))
+            return sw_error_set(ctx->err, SW_ERR_FORMAT,
+                                "a wire without a closed chain of parameter curves");
+        loops.push_back(std::move(loop));
+    }
+
+    std::vector<std::vector<sw_nurbs_curve>> views(loops.size());
+    std::vector<sw_model_loop_input> inputs(loops.size());
+    for (size_t i = 0; i < loops.size(); i++) {
+        for (const TrimCurve &t : loops[i].curves)
+            views[i].push_back({t.degree, t.count, t.knots.data(), t.ctrl.data()});
+        inputs[i] = {views[i].data(), loops[i].computed.data(), views[i].size(),
+                     loops[i].outer};
+    }
+    return sw_model_add_surface(ctx->model, &surface.view, reversed, inputs.data(),
+                                inputs.size(), ctx->err);
+}
+
+/* The report's "OCCT face" kind. Done here rather than through
+ * sw_import_report_unsupported so this file does not depend on which
+ * importer's C file defines that helper. */
+void count_skipped_face(sw_import_report *report)
+{
+    static const char kind[] = "OCCT face";
+    report->unsupported++;
+    for (size_t i = 0; i < report->unsupported_kinds; i++)
+        if (std::strcmp(report->unsupported_kind[i], kind) == 0) {
+            report->unsupported_count[i]++;
+            return;
+        }
+    if (report->unsupported_kinds == SW_IMPORT_KINDS)
+        return;
+    std::snprintf(report->unsupported_kind[report->unsupported_kinds], sizeof report->unsupported_kind[0], "%s", kind);
+    report->unsupported_count[report->unsupported_kinds++] = 1;
+}
+
+/* A face OCCT cannot convert is skipped and counted (an error when strict):
+ * one bad face should not lose a whole assembly. */
+sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mirrored,
+                           size_t index)
+{
+    sw_status status;
+    std::string why;
+    try {
+        status = add_face(ctx, face, mirrored);
+        if (status == SW_OK) {
+            ctx->report->faces++;
+            return SW_OK;
+        }
+        why = ctx->err ? ctx->err->message : sw_status_name(status);
+    } catch (const Standard_Failure &e) {
+        why = std::string("OCCT: ") + e.GetMessageString();
+    }
+    if (ctx->options && ctx->options->strict)
+        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: face %zu: %s", ctx->path, index + 1,
+                            why.c_str());
+    count_skipped_face(ctx->report);
+    if (ctx->err)
+        ctx->err->status = SW_OK;
+    return SW_OK;
+}
+
+/* One part per leaf: its faces in its own frame, then the placement applied
+ * through the model so the part records where it was put. */
+sw_status add_part(ImportContext *ctx, const TopoDS_Shape &shape, const TopLoc_Location &placement,
+                   const std::string &name)
+{
+    sw_status status = sw_model_begin_part(ctx->model, name.c_str(), nullptr, ctx->err);
+    if (status != SW_OK)
+        return status;
+    size_t part = ctx->model->part_count - 1;
+    TopLoc_Location total = placement * shape.Location();
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(shape.Located(TopLoc_Location()), TopAbs_FACE, faces);
+    for (int i = 1; i <= faces.Extent(); i++) {
+        status = add_face_guarded(ctx, TopoDS::Face(faces(i)), total.Transformation().IsNegative(), (size_t)i - 1);
+        if (status != SW_OK)
+            return status;
+        ctx->faces_done++;
+        if (ctx->faces_done % 16 == 0 && ctx->faces_total > 0)
+            report_progress(ctx->options, "faces", (double)ctx->faces_done / (double)ctx->faces_total);
+    }
+    sw_mat4 m = matrix_of(total.Transformation());
+    sw_model_transform_part(ctx->model, part, &m);
+    return SW_OK;
+}
+
+}  // namespace
+
+namespace {
+
+/* ---- what the STEP file says ------------------------------------------- */
+
+/* Edge uses of a STEP face whose edge carries no PCURVE on the face's own
+ * surface: OCCT's reader projected those (the NIST files have none at all). */
+int step_face_pcurve_gaps(const Handle(StepShape_FaceSurface) &face)
+{
+    Handle(StepGeom_Surface) surface = face->FaceGeometry();
+    int gaps = 0;
+    for (int b = 1; b <= face->NbBounds(); b++) {
+        Handle(StepShape_EdgeLoop) loop =
+            Handle(StepShape_EdgeLoop)::DownCast(face->BoundsValue(b)->Bound());
+        if (loop.IsNull())
+            continue;
+        for (int e = 1; e <= loop->NbEdgeList(); e++) {
+            Handle(StepShape_EdgeCurve) edge =
+                Handle(StepShape_EdgeCurve)::DownCast(loop->EdgeListValue(e)->EdgeElement());
+            Handle(StepGeom_SurfaceCurve) sc = edge.IsNull()
+                ? Handle(StepGeom_SurfaceCurve)()
+                : Handle(StepGeom_SurfaceCurve)::DownCast(edge->EdgeGeometry());
+            bool found = false;
+            for (int g = 1; !sc.IsNull() && g <= sc->NbAssociatedGeometry(); g++) {
+                Handle(StepGeom_Pcurve) pc = sc->AssociatedGeometryValue(g).Pcurve();
+                found = found || (!pc.IsNull() && pc->BasisSurface() == surface);
+            }
+            gaps += !found;
+        }
+    }
+    return gaps;
+}
+
+/* Maps every transferred face to its p-curve gaps in the file. */
+void map_step_pcurve_gaps(const Handle(XSControl_WorkSession) &ws, FilePcurveGaps *gaps)
+{
+    Handle(Transfer_TransientProcess) tp = ws->TransferReader()->TransientProcess();
+    if (tp.IsNull())
+        return;
+    for (int i = 1; i <= tp->NbMapped(); i++) {
+        Handle(StepShape_FaceSurface) face = Handle(StepShape_FaceSurface)::DownCast(tp->Mapped(i));
+        if (face.IsNull())
+            continue;
+        TopoDS_Shape shape = TransferBRep::ShapeResult(tp, face);
+        if (!shape.IsNull() && shape.ShapeType() == TopAbs_FACE)
+            gaps->Bind(shape.Located(TopLoc_Location()), step_face_pcurve_gaps(face));
+    }
+}
+
+/* Millimetres per file length unit, from the names OCCT's reader reports. */
+double step_units_to_mm(STEPControl_Reader &reader)
+{
+    TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
+    reader.FileUnits(lengths, angles, solid_angles);
+    if (lengths.IsEmpty())
+        return 1.0;
+    TCollection_AsciiString unit = lengths.First();
+    unit.UpperCase();
+    static const struct { const char *name; double mm; } known[] = {
+        {"MM", 1.0},     {"MILLIMETRE", 1.0}, {"CM", 10.0},       {"CENTIMETRE", 10.0},
+        {"M", 1000.0},   {"METRE", 1000.0},   {"KM", 1e6},        {"KILOMETRE", 1e6},
+        {"UM", 1e-3},    {"MICRON", 1e-3},    {"MICROMETRE", 1e-3},
+        {"INCH", 25.4},  {"IN", 25.4},        {"FT", 304.8},      {"FOOT", 304.8},
+        {"MI", 1609344.0}, {"MILE", 1609344.0}, {"MIL", 0.0254},
+    };
+    for (const auto &k : known)
+        if (unit.IsEqual(k.name))
+            return k.mm;
+    return 1.0;
+}
+
+/* The largest UNCERTAINTY_MEASURE_WITH_UNIT, in file units (0: none). */
+double step_uncertainty(const Handle(StepData_StepModel) &model)
+{
+    double tolerance = 0.0;
+    for (int i = 1; i <= model->NbEntities(); i++) {
+        Handle(StepBasic_UncertaintyMeasureWithUnit) u =
+            Handle(StepBasic_UncertaintyMeasureWithUnit)::DownCast(model->Value(i));
+        if (!u.IsNull() && u->ValueComponent() > tolerance)
+            tolerance = u->ValueComponent();
+    }
+    return tolerance;
+}
+
+/* "#123: <what OCCT says>" for the first failing check of the loaded model;
+ * IGES entities are named by their directory entry's D line instead. */
+std::string first_check_failure(const Handle(XSControl_WorkSession) &ws, bool step)
+{
+    Interface_CheckIterator checks = ws->ModelCheckList();
+    Handle(Interface_InterfaceModel) model = ws->Model();
+    for (checks.Start(); checks.More(); checks.Next()) {
+        const Handle(Interface_Check) &check = checks.Value();
+        if (!check->HasFailed())
+            continue;
+        std::string where;
+        int number = checks.Number();
+        if (number > 0 && !model.IsNull() && number <= model->NbEntities()) {
+            Handle(StepData_StepModel) sm = Handle(StepData_StepModel)::DownCast(model);
+            char buf[48];
+            if (step && !sm.IsNull())
+                std::snprintf(buf, sizeof buf, "#%d: ", sm->IdentLabel(sm->Value(number)));
+            else
+                std::snprintf(buf, sizeof buf, "entity at D%d: ", 2 * number - 1);
+            where = buf;
+        }
+        return where + check->CFail(1);
+    }
+    return std::string();
+}
+
+/* ---- truncation --------------------------------------------------------- */
+
+/* OCCT's STEP parser accepts a file cut after any complete entity, and its
+ * IGES reader one cut anywhere in the parameter section, so a truncated file
+ * would silently import as part of the model. Both formats end with a fixed
+ * trailer (STEP: END-ISO-10303-21;, IGES: the T record), checked here. */
+bool file_tail_has(const char *path, bool step)
+{
+    FILE *f = std::fopen(path, "rb");
+    if (!f)
+        return false;
+    char tail[512] = {0};
+    size_t n = 0;
+    if (std::fseek(f, -(long)(sizeof tail - 1), SEEK_END) != 0)
+        std::rewind(f);
+    n = std::fread(tail, 1, sizeof tail - 1, f);
+    std::fclose(f);
+    tail[n] = '\0';
+    std::string text(tail, n);
+    if (step)
+        return text.find("END-ISO-10303-21") != std::string::npos;
+    size_t end = text.find_last_not_of(" \r\n\t\x1a");
+    if (end == std::string::npos)
+        return false;
+    size_t start = text.find_last_of('\n', end);
+    std::string last = text.substr(start == std::string::npos ? 0 : start + 1,
+                                   end + 1 - (start == std::string::npos ? 0 : start + 1));
+    return last.size() >= 73 && last[72] == 'T';
+}
+
+/* The #id of the last entity that starts in the file, for "cut after #id". */
+int last_step_entity(const Handle(StepData_StepModel) &model)
+{
+    int last = 0;
+    for (int i = 1; !model.IsNull() && i <= model->NbEntities(); i++)
+        last = std::max(last, model->IdentLabel(model->Value(i)));
+    return last;
+}
+
+}  // namespace
+
+namespace {
+
+/* ---- reading and the assembly tree ------------------------------------- */
+
+struct Leaf {
+    TopoDS_Shape shape;
+    TopLoc_Location placement;
+    std::string name;
+};
+
+std::string label_name(const TDF_Label &label)
+{
+    Handle(TDataStd_Name) name;
+    if (!label.FindAttribute(TDataStd_Name::GetID(), name))
+        return std::string();
+    /* With no replacement character the conversion gives UTF-8. */
+    return TCollection_AsciiString(name->Get()).ToCString();
+}
+
+/* Depth-first over the assembly: every component's location composes with
+ * its parents'; a shape that is not an assembly is a leaf. The depth limit
+ * guards against a malformed file whose assembly refers to itself. */
+void collect_leaves(const TDF_Label &label, const TopLoc_Location &placement,
+                    const std::string &instance, int depth, std::vector<Leaf> *leaves)
+{
+    if (depth > 64)
+        return;
+    if (XCAFDoc_ShapeTool::IsAssembly(label)) {
+        TDF_LabelSequence components;
+        XCAFDoc_ShapeTool::GetComponents(label, components);
+        for (const TDF_Label &component : components) {
+            TDF_Label referred;
+            if (XCAFDoc_ShapeTool::GetReferredShape(component, referred))
+                collect_leaves(referred, placement * XCAFDoc_ShapeTool::GetLocation(component),
+                               label_name(component), depth + 1, leaves);
+        }
+        return;
+    }
+    TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
+    if (shape.IsNull())
+        return;
+    std::string name = label_name(label);
+    leaves->push_back({shape, placement, name.empty() ? instance : name});
+}
+
+/* A read that failed or was cut short: one line naming the file and, where
+ * OCCT tells us, the entity. */
+sw_status read_failure(const ImportContext *ctx, const Handle(XSControl_WorkSession) &ws,
+                       bool step, const MessageCapture &messages)
+{
+    std::string why = first_check_failure(ws, step);
+    if (why.empty())
+        why = messages.first();
+    if (why.empty())
+        why = step ? "not a STEP file OCCT can read" : "not an IGES file OCCT can read";
+    return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %s", ctx->path, why.c_str());
+}
+
+sw_status truncated(const ImportContext *ctx, const Handle(Interface_InterfaceModel) &model,
+                    bool step)
+{
+    if (step) {
+        int last = last_step_entity(Handle(StepData_StepModel)::DownCast(model));
+        return sw_error_set(ctx->err, SW_ERR_FORMAT,
+                            "%s: truncated: ends after #%d without END-ISO-10303-21;",
+                            ctx->path, last);
+    }
+    return sw_error_set(ctx->err, SW_ERR_FORMAT,
+                        "%s: truncated: no terminate (T) section at the end", ctx->path);
+}
+
+sw_status read_step(ImportContext *ctx, const MessageCapture &messages, std::vector<Leaf> *leaves)
+{
+    STEPCAFControl_Reader reader;
+    reader.SetNameMode(Standard_True);
+    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    STEPControl_Reader &basic = reader.ChangeReader();
+    report_progress(ctx->options, "read", 0.0);
+    if (reader.ReadFile(ctx->path) != IFSelect_RetDone)
+        return read_failure(ctx, basic.WS(), true, messages);
+    if (!file_tail_has(ctx->path, true))
+        return truncated(ctx, basic.Model(), true);
+    if (ctx->options && ctx->options->strict && !first_check_failure(basic.WS(), true).empty())
+        return read_failure(ctx, basic.WS(), true, messages);
+
+    ctx->report->units_to_mm = step_units_to_mm(basic);
+    ctx->report->model_tolerance_mm = step_uncertainty(basic.StepModel()) * ctx->report->units_to_mm;
+
+    Handle(TDocStd_Document) doc;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+    bool transferred;
+    if (ctx->options && ctx->options->progress) {
+        Handle(ProgressForward) progress = new ProgressForward(ctx->options, "transfer");
+        transferred = reader.Transfer(doc, progress->Start());
+    } else {
+        transferred = reader.Transfer(doc);
+    }
+    if (transferred) {
+        TDF_LabelSequence free_shapes;
+        XCAFDoc_DocumentTool::ShapeTool(doc->Main())->GetFreeShapes(free_shapes);
+        for (const TDF_Label &label : free_shapes)
+            collect_leaves(label, TopLoc_Location(), std::string(), 0, leaves);
+    }
+    XCAFApp_Application::GetApplication()->Close(doc);
+    /* No XDE data (or an XDE transfer that failed): the plain reader's roots. */
+    if (leaves->empty() && basic.TransferRoots() > 0)
+        for (int i = 1; i <= basic.NbShapes(); i++)
+            leaves->push_back({basic.Shape(i), TopLoc_Location(), std::string()});
+    map_step_pcurve_gaps(basic.WS(), &ctx->gaps);
+    return SW_OK;
+}
+
+sw_status read_iges(ImportContext *ctx, const MessageCapture &messages, std::vector<Leaf> *leaves)
+{
+    IGESControl_Reader reader;
+    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    report_progress(ctx->options, "read", 0.0);
+    if (reader.ReadFile(ctx->path) != IFSelect_RetDone)
+        return read_failure(ctx, reader.WS(), false, messages);
+    if (!file_tail_has(ctx->path, false))
+        return truncated(ctx, reader.Model(), false);
+    const IGESData_GlobalSection &global = reader.IGESModel()->GlobalSection();
+    /* UnitValue is the file unit in metres (IGES 5.3 table 3). */
+    ctx->report->units_to_mm = global.UnitValue() * 1000.0;
+    ctx->report->model_tolerance_mm = global.Resolution() * ctx->report->units_to_mm;
+    report_progress(ctx->options, "transfer", 0.0);
+    reader.TransferRoots();
+    TopoDS_Shape shape = reader.OneShape();
+    if (!shape.IsNull())
+        leaves->push_back({shape, TopLoc_Location(), std::string()});
+    return SW_OK;
+}
+
+sw_status import_file(ImportContext *ctx)
+{
+    std::string ext = lower_extension(ctx->path);
+    bool step = ext == "stp" || ext == "step" || ext == "p21";
+    if (!step && ext != "igs" && ext != "iges")
+        return sw_error_set(ctx->err, SW_ERR_ARG,
+                            "%s: not a STEP (.stp, .step) or IGES (.igs, .iges) file name",
+                            ctx->path);
+    FILE *f = std::fopen(ctx->path, "rb");
+    if (!f)
+        return sw_error_set(ctx->err, SW_ERR_IO, "%s: %s", ctx->path, std::strerror(errno));
+    std::fclose(f);
+
+    MessageCapture messages;
+    std::vector<Leaf> leaves;
+    sw_status status = step ? read_step(ctx, messages, &leaves) : read_iges(ctx, messages, &leaves);
+    if (status != SW_OK)
+        return status;
+    for (const Leaf &leaf : leaves) {
+        TopTools_IndexedMapOfShape faces;
+        TopExp::MapShapes(leaf.shape, TopAbs_FACE, faces);
+        ctx->faces_total += (size_t)faces.Extent();
+    }
+    if (ctx->faces_total == 0)
+        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: OCCT found no faces in the file",
+                            ctx->path);
+    for (const Leaf &leaf : leaves) {
+        std::string name = leaf.name.empty() ? file_stem(ctx->path) : leaf.name;
+        status = add_part(ctx, leaf.shape, leaf.placement, name);
+        if (status != SW_OK)
+            return status;
+    }
+    if (ctx->report->model_tolerance_mm > (double)ctx->model->model_tolerance)
+        ctx->model->model_tolerance = (float)ctx->report->model_tolerance_mm;
+    report_progress(ctx->options, "faces", 1.0);
+    return SW_OK;
+}
+
+/* The one place exceptions stop: whatever OCCT or the C++ library throws
+ * becomes an error naming the file. */
+template <typename Fn>
+sw_status guarded(const char *path, sw_error *err, Fn fn)
+{
+    try {
+        return fn();
+    } catch (const Standard_Failure &e) {
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: OCCT: %s (%s)", path, e.GetMessageString(),
+                            e.DynamicType()->Name());
+    } catch (const std::bad_alloc &) {
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: out of memory", path);
+    } catch (const std::exception &e) {
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: %s", path, e.what());
+    } catch (...) {
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: unknown exception in OCCT", path);
+    }
+}
+
+}  // namespace
+
+extern "C" int sw_import_occt_available(void)
+{
+    return 1;
+}
+
+extern "C" sw_status sw_import_occt_file(const char *path, const sw_import_options *options,
+                                         sw_model *model, sw_import_report *report, sw_error *err)
+{
+    if (!path || !model)
+        return sw_error_set(err, SW_ERR_ARG, "sw_import_occt_file: no path or model");
+    sw_import_report local_report;
+    if (!report)
+        report = &local_report;
+    std::memset(report, 0, sizeof *report);
+    report->units_to_mm = 1.0;
+    return guarded(path, err, [&]() {
+        ImportContext ctx{path, options, model, report, err, FilePcurveGaps()};
+        return import_file(&ctx);
+    });
+}
+
+/* ---- measurement --------------------------------------------------------- */
+
+namespace {
+
+sw_status measure_file(const char *path, sw_occt_measure *out, sw_error *err)
+{
+    std::string ext = lower_extension(path);
+    bool step = ext == "stp" || ext == "step" || ext == "p21";
+    MessageCapture messages;
+    TopoDS_Shape shape;
+    if (step) {
+        STEPControl_Reader reader;
+        Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+        if (reader.ReadFile(path) != IFSelect_RetDone)
+            return sw_error_set(err, SW_ERR_FORMAT, "%s: OCCT cannot read it", path);
+        reader.TransferRoots();
+        shape = reader.OneShape();
+    } else {
+        IGESControl_Reader reader;
+        Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+        if (reader.ReadFile(path) != IFSelect_RetDone)
+            return sw_error_set(err, SW_ERR_FORMAT, "%s: OCCT cannot read it", path);
+        reader.TransferRoots();
+        shape = reader.OneShape();
+    }
+    *out = sw_occt_measure{};
+    if (shape.IsNull())
+        return SW_OK;   /* an empty shape: no faces, the caller decides */
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(shape, TopAbs_FACE, faces);
+    out->faces = (size_t)faces.Extent();
+    Bnd_Box box;
+    BRepBndLib::AddOptimal(shape, box, Standard_False, Standard_False);
+    if (!box.IsVoid())
+        box.Get(out->box_min[0], out->box_min[1], out->box_min[2], out->box_max[0],
+                out->box_max[1], out->box_max[2]);
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(shape, props);
+    out->area_mm2 = props.Mass();
+    return SW_OK;
+}
+
+}  // namespace
+
+extern "C" sw_status sw_occt_measure_file(const char *path, sw_occt_measure *out, sw_error *err)
+{
+    if (!path || !out)
+        return sw_error_set(err, SW_ERR_ARG, "sw_occt_measure_file: no path or output");
+    return guarded(path, err, [&]() { return measure_file(path, out, err); });
+}

@@ -1,0 +1,13 @@
+# tests of the OpenCASCADE importer (assets/sw_import_occt.cpp), or, in a build
+# without OCCT, of its "built without STEP support" fallback.
+set(SW_OCCT_SCRATCH ${CMAKE_CURRENT_BINARY_DIR}/occt-scratch)
+sw_add_test(test_import_occt SOURCES test_import_occt.c LIBS sw_assets sw_core
+  ARGS ${SW_SHARED_MODELS} ${SW_OCCT_SCRATCH})
+set_tests_properties(test_import_occt PROPERTIES SKIP_RETURN_CODE 77)
+
+if(SW_OCCT_FOUND)
+  # 120 truncated STEP files, each parsed by OCCT.
+  add_test(NAME test_import_occt_truncations
+    COMMAND test_import_occt ${SW_SHARED_MODELS} ${SW_OCCT_SCRATCH}/cuts --truncations)
+  set_tests_properties(test_import_occt_truncations PROPERTIES SKIP_RETURN_CODE 77)
+endif()
