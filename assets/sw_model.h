@@ -11,6 +11,7 @@
 #define SW_MODEL_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "sw_bezier.h"
 #include "sw_error.h"
@@ -24,6 +25,11 @@ typedef struct sw_model_patch {
     size_t part;       /* index into parts */
     size_t surface;    /* index into surfaces */
     double domain[4];  /* u0, u1, v0, v1: the part of the surface's domain it covers */
+    /* Trimmed surfaces: which of 32 x 32 equal cells of domain touch the face
+     * (bit i of mask[j]: cell i along u, row j along v; conservative, as
+     * sw_pack_trim_mask). masked 0: the whole domain is inside, mask unused. */
+    uint32_t mask[32];
+    int masked;
 } sw_model_patch;
 
 /* A trimming curve: a clamped rational B-spline in the surface's (u, v)
@@ -52,6 +58,7 @@ typedef struct sw_model_surface {
     size_t first_loop, loop_count;     /* into loops; 0 loops: the whole domain */
     size_t first_patch, patch_count;   /* the Bezier patches split from it */
     double domain[4];                  /* u0, u1, v0, v1 */
+    int reversed;                      /* 1: u was mirrored to flip the normal */
 } sw_model_surface;
 
 typedef struct sw_model_part {
@@ -113,7 +120,11 @@ typedef struct sw_model_loop_input {
  * its loops, and splits it into Bezier patches. reversed: the face's normal is
  * opposite to the surface's; the surface is reparameterised (u mirrored, the
  * trims with it) so every patch's du x dv points out of the face.
- * loop_count 0: untrimmed. On failure the model is unchanged. */
+ * loop_count 0: untrimmed. Trimmed: patches that do not touch the face are
+ * dropped, the others shrunk to the trims' parameter box (sw_bezier_subpatch)
+ * and given a trim mask (sw_trim_mask). Every loop must close within 1% of the
+ * domain's size; trims that leave no patch are an error (SW_ERR_FORMAT). On
+ * failure the model is unchanged. */
 sw_status sw_model_add_surface(sw_model *model, const sw_nurbs_surface *surface, int reversed,
                                const sw_model_loop_input *loops, size_t loop_count,
                                sw_error *err);
