@@ -15,6 +15,7 @@
 #include <xxhash.h>
 
 #include "sw_pack_adjacency.h"
+#include "sw_pack_sections.h"
 #include "sw_pack_validate.h"
 
 enum { MAX_SECTIONS = 13, HEADER_BYTES = 64, SECTION_BYTES = 32 };
@@ -120,26 +121,6 @@ sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *ou
     return SW_OK;
 }
 
-/* Copies a model part name, replacing bytes that are not valid UTF-8 with
- * '?' (the model may cut a multi-byte character at its 55-byte limit, and
- * importers pass through whatever encoding the source file used). */
-static void copy_name(char dst[56], const char *src)
-{
-    size_t n = strnlen(src, 55), o = 0;
-    for (size_t i = 0; i < n;) {
-        size_t len = sw_utf8_sequence_length((const unsigned char *)src + i, n - i);
-        if (len == 0) {
-            dst[o++] = '?';
-            i++;
-            continue;
-        }
-        memcpy(dst + o, src + i, len);
-        o += len;
-        i += len;
-    }
-    memset(dst + o, 0, 56 - o);
-}
-
 static sw_status convert_parts(const sw_model *model, sw_pack_part *parts, sw_error *err)
 {
     for (size_t i = 0; i < model->part_count; i++) {
@@ -153,7 +134,7 @@ static sw_status convert_parts(const sw_model *model, sw_pack_part *parts, sw_er
             float c = mp->color[k];
             parts[i].color[k] = c >= 0.0f ? (c <= 1.0f ? c : 1.0f) : 0.0f; /* NaN -> 0 */
         }
-        copy_name(parts[i].name, mp->name);
+        sw_pack_copy_name(parts[i].name, sizeof parts[i].name, mp->name);
     }
     return SW_OK;
 }
@@ -284,7 +265,7 @@ sw_status sw_pack_contents_from_model(const sw_model *model, sw_pack_contents *o
     m->part_count = (uint32_t)model->part_count;
     m->patch_count = (uint32_t)model->patch_count;
     m->control_count = (uint32_t)control_count;
-    m->units = SW_UNITS_UNSPECIFIED; /* the model does not record units */
+    m->units = SW_UNITS_MILLIMETRE; /* importers convert to the model's unit, sw_model.h */
     m->model_tolerance = isfinite(model->model_tolerance) && model->model_tolerance > 0
                              ? model->model_tolerance : 0.0f;
     /* calloc(n + 1) so an empty model still gets a pointer to free. */
@@ -303,18 +284,21 @@ sw_status sw_pack_contents_from_model(const sw_model *model, sw_pack_contents *o
     if (s == SW_OK)
         s = sw_pack_find_adjacency(model, &adjacency, &m->adjacency_count, err);
     out->adjacency = adjacency;
+    if (s == SW_OK)
+        s = sw_pack_sections_from_model(model, out, err);
     if (s != SW_OK)
         sw_pack_contents_free(out);
     return s;
 }
 
-void sw_pack_contents_free(sw_pack_contents *contents)
+void sw_pack_contents_free(sw_pack_contents *c)
 {
-    free((void *)contents->parts);
-    free((void *)contents->patches);
-    free((void *)contents->control);
-    free((void *)contents->adjacency);
-    memset(contents, 0, sizeof *contents);
+    const void *arrays[] = { c->parts, c->patches, c->control, c->adjacency, c->surfaces,
+                             c->trim_loops, c->trim_curves, c->trim_data, c->patch_domains,
+                             c->trim_masks, c->viewpoints, c->part_transforms };
+    for (size_t i = 0; i < sizeof arrays / sizeof *arrays; i++)
+        free((void *)arrays[i]);
+    memset(c, 0, sizeof *c);
 }
 
 static sw_status write_all(int fd, const uint8_t *bytes, size_t size, sw_error *err)

@@ -30,7 +30,10 @@ enum sw_section_type {
     SW_SECTION_ADJACENCY = 5, /* sw_pack_adjacency[adjacency_count] */
     /* Trimmed-surface sections (issue 3). Optional as a group: a pack of
      * untrimmed Bezier patches may omit them all; if SURFACES is present,
-     * PATCH_DOMAINS must be too. Their record counts are size / record size. */
+     * PATCH_DOMAINS must be too, and the other four need SURFACES (absent
+     * ones count as empty). Each known type appears at most once. Their
+     * record counts are size / record size, exact multiples; PATCH_DOMAINS
+     * and PART_TRANSFORMS have one record per patch and per part. */
     SW_SECTION_SURFACES = 6,        /* sw_pack_surface[] */
     SW_SECTION_TRIM_LOOPS = 7,      /* sw_pack_trim_loop[] */
     SW_SECTION_TRIM_CURVES = 8,     /* sw_pack_trim_curve[] */
@@ -38,7 +41,7 @@ enum sw_section_type {
     SW_SECTION_PATCH_DOMAINS = 10,  /* sw_pack_patch_domain[patch_count] */
     SW_SECTION_TRIM_MASKS = 11,     /* sw_pack_trim_mask[] */
     SW_SECTION_VIEWPOINTS = 12,     /* sw_pack_viewpoint[] */
-    SW_SECTION_PART_TRANSFORMS = 13,/* float[16 * part_count], column-major, as sw_mat4 */
+    SW_SECTION_PART_TRANSFORMS = 13,/* float[16 * part_count], column-major, as sw_mat4, affine */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */

@@ -252,6 +252,178 @@ static void test_model_pack_opens_and_matches_model(void)
     sw_model_free(&model);
 }
 
+/* ---- the optional sections from a model ---- */
+
+/* Serialises model and opens the result; the caller frees *bytes. */
+static int open_model_pack(const sw_model *model, uint8_t **bytes, sw_pack *pack)
+{
+    sw_pack_contents c;
+    sw_error err = { 0 };
+    size_t size = 0;
+    *bytes = NULL;
+    if (sw_pack_contents_from_model(model, &c, &err) != SW_OK) {
+        SW_CHECK_MSG(0, "%s", err.message);
+        return 0;
+    }
+    SW_CHECK(sw_pack_serialize(&c, bytes, &size, &err) == SW_OK);
+    sw_pack_contents_free(&c);
+    sw_status st = sw_pack_open_memory(*bytes, size, pack, &err);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    return st == SW_OK;
+}
+
+static void test_bezier_model_gets_one_untrimmed_surface_per_patch(void)
+{
+    sw_model model;
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    add_bicubic(&model, 1, 0, 0, 0);
+    uint8_t *bytes;
+    sw_pack pack;
+    if (open_model_pack(&model, &bytes, &pack)) {
+        SW_CHECK(pack.header->section_count == 13);
+        SW_CHECK(pack.meta->units == SW_UNITS_MILLIMETRE);
+        SW_CHECK(pack.surface_count == 2 && pack.trim_loop_count == 0 &&
+                 pack.trim_curve_count == 0 && pack.trim_data_count == 0 &&
+                 pack.trim_mask_count == 0 && pack.viewpoint_count == 0);
+        for (uint32_t i = 0; i < 2; i++) {
+            const sw_pack_surface *s = &pack.surfaces[i];
+            SW_CHECK(s->part == 0 && s->first_patch == i && s->patch_count == 1 &&
+                     s->loop_count == 0);
+            SW_CHECK(s->domain[0] == 0 && s->domain[1] == 1 && s->domain[2] == 0 &&
+                     s->domain[3] == 1);
+            SW_CHECK(pack.patch_domains[i].surface == i &&
+                     pack.patch_domains[i].mask == SW_MASK_NONE &&
+                     memcmp(pack.patch_domains[i].domain, s->domain, sizeof s->domain) == 0);
+        }
+        for (int k = 0; k < 16; k++)
+            SW_CHECK(pack.part_transforms[k] == (k % 5 == 0 ? 1.0f : 0.0f));
+    }
+    free(bytes);
+    sw_model_free(&model);
+}
+
+/* A biquadratic plane over [0, 4] x [0, 2] in two spans along u, trimmed by
+ * an outer rectangle (degree 1) and an inner circle (rational quadratic,
+ * marked as computed by point inversion). */
+static sw_status add_trimmed_plate(sw_model *model, sw_error *err)
+{
+    static const double ku[] = { 0, 0, 0, 1, 2, 2, 2 }, kv[] = { 0, 0, 0, 1, 1, 1 };
+    double ctrl[4 * 3 * 4];
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 4; i++) {
+            double *c = &ctrl[(j * 4 + i) * 4];
+            c[0] = 4.0 * i / 3.0, c[1] = j, c[2] = 0, c[3] = 1;
+        }
+    sw_nurbs_surface plate = { 2, 2, 4, 3, ku, kv, ctrl };
+    static const double rect_k[] = { 0, 0, 1, 2, 3, 4, 4 };
+    static const double rect_p[] = { 0.1, 0.1, 0, 1, 1.9, 0.1, 0, 1, 1.9, 0.9, 0, 1,
+                                     0.1, 0.9, 0, 1, 0.1, 0.1, 0, 1 };
+    static const double circ_k[] = { 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4 };
+    const double h = 0.70710678118654752;
+    const double circ_p[] = { 1.2, 0.5, 0, 1, 1.2, 0.7, 0, h, 1.0, 0.7, 0, 1, 0.8, 0.7, 0, h,
+                              0.8, 0.5, 0, 1, 0.8, 0.3, 0, h, 1.0, 0.3, 0, 1, 1.2, 0.3, 0, h,
+                              1.2, 0.5, 0, 1 };
+    sw_nurbs_curve rect = { 1, 5, rect_k, rect_p }, circle = { 2, 9, circ_k, circ_p };
+    static const int computed = 1;
+    sw_model_loop_input loops[2] = { { &rect, NULL, 1, 1 }, { &circle, &computed, 1, 0 } };
+    return sw_model_add_surface(model, &plate, 0, loops, 2, err);
+}
+
+static void test_trimmed_surface_round_trips(void)
+{
+    sw_model model;
+    start_model(&model);
+    sw_error err = { 0 };
+    SW_CHECK_MSG(add_trimmed_plate(&model, &err) == SW_OK, "%s", err.message);
+    uint8_t *bytes;
+    sw_pack pack;
+    if (model.surface_count == 1 && open_model_pack(&model, &bytes, &pack)) {
+        const sw_pack_surface *s = &pack.surfaces[0];
+        SW_CHECK(pack.surface_count == 1 && s->loop_count == 2 && s->patch_count >= 1 &&
+                 s->patch_count == model.patch_count);
+        SW_CHECK(s->domain[0] == 0 && s->domain[1] == 2 && s->domain[2] == 0 && s->domain[3] == 1);
+        SW_CHECK(pack.trim_loops[0].flags == SW_LOOP_OUTER && pack.trim_loops[1].flags == 0);
+        SW_CHECK(pack.trim_curve_count == 2 && pack.trim_curves[0].flags == 0 &&
+                 pack.trim_curves[1].flags == (SW_TRIM_RATIONAL | SW_TRIM_COMPUTED));
+        SW_CHECK(pack.trim_data_count == (7 + 15) + (12 + 27));
+        const sw_model_trim_curve *mc = &model.curves[1];
+        const float *d = &pack.trim_data[pack.trim_curves[1].first_float];
+        SW_CHECK(pack.trim_curves[1].first_float == 22 && d[3] == (float)mc->knots[3]);
+        SW_CHECK(d[12 + 3] == (float)mc->ctrl[4] && d[12 + 4] == (float)mc->ctrl[5] &&
+                 d[12 + 5] == (float)mc->ctrl[7]);
+        uint32_t masked = 0;
+        for (uint32_t i = 0; i < pack.meta->patch_count; i++) {
+            const sw_pack_patch_domain *pd = &pack.patch_domains[i];
+            SW_CHECK(pd->surface == 0 && pd->domain[0] >= 0 && pd->domain[1] <= 2);
+            masked += pd->mask != SW_MASK_NONE;
+            if (pd->mask != SW_MASK_NONE)
+                SW_CHECK(memcmp(pack.trim_masks[pd->mask].rows, model.patches[i].mask, 128) == 0);
+        }
+        SW_CHECK(masked == pack.trim_mask_count && masked >= 1);
+        free(bytes);
+    }
+    sw_model_free(&model);
+}
+
+static void test_viewpoints_and_part_transforms_are_written(void)
+{
+    sw_model model;
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    sw_mat4 shift = sw_mat4_translate(sw_v3(10, 0, -2));
+    sw_model_transform_part(&model, 0, &shift);
+    sw_model_viewpoint view = { .name = "entrance", .eye = { 0, 1, 5 }, .target = { 0, 0, 0 },
+                                .up = { 0, 1, 0 }, .fov_deg = 45 };
+    sw_error err = { 0 };
+    SW_CHECK(sw_model_add_viewpoint(&model, &view, &err) == SW_OK);
+    uint8_t *bytes;
+    sw_pack pack;
+    if (open_model_pack(&model, &bytes, &pack)) {
+        SW_CHECK(pack.viewpoint_count == 1 && strcmp(pack.viewpoints[0].name, "entrance") == 0);
+        SW_CHECK(pack.viewpoints[0].eye[2] == 5 && pack.viewpoints[0].fov_deg == 45);
+        SW_CHECK(pack.part_transforms[12] == 10 && pack.part_transforms[14] == -2 &&
+                 pack.part_transforms[15] == 1);
+        SW_CHECK(pack.patches[0].box_min[0] == 10.0f);
+        free(bytes);
+    }
+    sw_model_free(&model);
+}
+
+/* Converts model and expects the writer to refuse with needle. */
+static void expect_model_refused(const sw_model *model, const char *needle)
+{
+    sw_pack_contents c;
+    sw_error err = { 0 };
+    sw_status st = sw_pack_contents_from_model(model, &c, &err);
+    SW_CHECK_MSG(st != SW_OK && strstr(err.message, needle), "\"%s\" not in \"%s\"", needle,
+                 err.message);
+    SW_CHECK(c.parts == NULL && c.surfaces == NULL); /* freed on failure */
+}
+
+static void test_writer_refuses_what_floats_cannot_hold(void)
+{
+    sw_model model;
+    start_model(&model);
+    add_bicubic(&model, 0, 0, 0, 0);
+    sw_model_viewpoint view = { .name = "v", .eye = { 1, 1, 1 }, .target = { 1, 1, 1 + 1e-12 },
+                                .up = { 0, 1, 0 } };
+    sw_error err = { 0 };
+    SW_CHECK(sw_model_add_viewpoint(&model, &view, &err) == SW_OK);
+    expect_model_refused(&model, "viewpoint 0 (v): eye, target and up must be finite floats, "
+                                 "eye apart from target");
+    model.viewpoints[0].target[2] = 0;
+    model.viewpoints[0].fov_deg = 180;
+    expect_model_refused(&model, "viewpoint 0 (v): fov 180");
+    model.viewpoint_count = 0;
+    model.parts[0].transform[3] = 0.5;
+    expect_model_refused(&model, "part 0 (part): transform element 3 is 0.5");
+    model.parts[0].transform[3] = 0;
+    model.surfaces[0].domain[0] = 1.0, model.surfaces[0].domain[1] = 1.0 + 1e-12;
+    expect_model_refused(&model, "surface 0: u range 1..1.000000000001");
+    sw_model_free(&model);
+}
+
 /* ---- fuzz seeds ---- */
 
 /* Named without .swpack, which .gitignore keeps out of the repository for
@@ -308,6 +480,10 @@ int main(int argc, char **argv)
     SW_RUN(test_adjacency_compares_weights);
     SW_RUN(test_adjacency_scales_to_100k_patches);
     SW_RUN(test_model_pack_opens_and_matches_model);
+    SW_RUN(test_bezier_model_gets_one_untrimmed_surface_per_patch);
+    SW_RUN(test_trimmed_surface_round_trips);
+    SW_RUN(test_viewpoints_and_part_transforms_are_written);
+    SW_RUN(test_writer_refuses_what_floats_cannot_hold);
     remove_scratch();
     return sw_test_finish();
 }
