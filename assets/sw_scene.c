@@ -1,8 +1,9 @@
 /* Showroom scene files (sw_scene.h). inih splits lines into sections and
  * key = value pairs; our line reader feeds it from memory and counts lines, so
  * every message can name file:line even though this inih build does not pass
- * line numbers to the handler. Parsing collects the parts first; files are
- * imported only when the whole scene parsed. */
+ * line numbers to the handler. Parsing collects the sections first (their keys
+ * are in sw_scene_keys.c); files are imported and objects generated only when
+ * the whole scene parsed and checked. */
 #include "sw_scene.h"
 
 #include <ini.h>
@@ -16,40 +17,9 @@
 
 #include "sw_import_bpt.h"
 #include "sw_import_newell.h"
+#include "sw_import_occt.h"
+#include "sw_scene_internal.h"
 #include "sw_text_scan.h"
-
-enum { SCENE_NAME_MAX = 44, SCENE_SECTION_MAX = 49, SCENE_PATH_MAX = 4096 };
-
-enum scene_key_bit {
-    KEY_FILE = 1,
-    KEY_TRANSLATE = 2,
-    KEY_ROTATE = 4,
-    KEY_SCALE = 8,
-    KEY_COLOR = 16,
-};
-
-typedef struct scene_part {
-    char name[SCENE_NAME_MAX + 1];
-    char file[256];           /* as written; inih lines are shorter */
-    long line, file_line;     /* of the section header and of `file =` */
-    unsigned keys_seen;       /* enum scene_key_bit */
-    double translate[3], axis[3], angle_deg, scale[3];
-    float color[4];
-} scene_part;
-
-typedef struct scene_state {
-    const char *text;
-    size_t size, pos;
-    const char *file_name;
-    long line;                /* of the line inih is working on */
-    long pending_section;     /* line of a header no key has followed yet, or 0 */
-    char section[64];         /* inih's name of the section being filled */
-    scene_part *parts;
-    size_t part_count, part_capacity;
-    sw_error *err;
-    long error_line;          /* 0 while no error is recorded */
-    sw_status status;         /* of the recorded error */
-} scene_state;
 
 /* Records the first error only (later ones are usually its consequences) and
  * returns 0, inih's "handler failed". */
@@ -68,10 +38,7 @@ static int scene_vfail(scene_state *st, long line, sw_status status, const char 
     return 0;
 }
 
-/* Fails at the line being read. */
-static int scene_fail(scene_state *st, sw_status status, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int scene_fail(scene_state *st, sw_status status, const char *fmt, ...)
+int scene_fail(scene_state *st, sw_status status, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -80,14 +47,21 @@ static int scene_fail(scene_state *st, sw_status status, const char *fmt, ...)
     return 0;
 }
 
-/* Fails at the header of the section that is starting (or the current line). */
-static int section_fail(scene_state *st, sw_status status, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int section_fail(scene_state *st, sw_status status, const char *fmt, ...)
+/* At the header of the section that is starting (or the current line). */
+int section_fail(scene_state *st, sw_status status, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
     scene_vfail(st, st->pending_section ? st->pending_section : st->line, status, fmt, ap);
+    va_end(ap);
+    return 0;
+}
+
+int scene_fail_at(scene_state *st, long line, sw_status status, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    scene_vfail(st, line, status, fmt, ap);
     va_end(ap);
     return 0;
 }
@@ -147,179 +121,18 @@ static char *scene_read_line(char *str, int num, void *stream)
     return str;
 }
 
-/* Parses between min and max whitespace-separated finite numbers from value. */
-static int parse_numbers(scene_state *st, const char *key, const char *value, double *out,
-                         int min, int max, int *count)
-{
-    const char *p = value;
-    int n = 0;
-    for (;;) {
-        p += strspn(p, " \t");
-        if (*p == '\0')
-            break;
-        size_t len = strcspn(p, " \t");
-        char *stop;
-        double v = strtod(p, &stop);
-        if (stop != p + len || !isfinite(v))
-            return scene_fail(st, SW_ERR_FORMAT, "%s: '%.*s' is not a finite number", key,
-                              (int)(len > 32 ? 32 : len), p);
-        if (n == max)
-            return scene_fail(st, SW_ERR_FORMAT, "%s: expected at most %d numbers", key, max);
-        out[n++] = v;
-        p += len;
-    }
-    if (n < min)
-        return scene_fail(st, SW_ERR_FORMAT, "%s: expected %s%d numbers, found %d", key,
-                          min == max ? "" : "at least ", min, n);
-    *count = n;
-    return 1;
-}
-
-static int key_file(scene_state *st, scene_part *part, const char *value)
-{
-    size_t len = strlen(value);
-    if (len == 0)
-        return scene_fail(st, SW_ERR_FORMAT, "file: expected a file name");
-    if (len >= sizeof part->file)
-        return scene_fail(st, SW_ERR_FORMAT, "file: name longer than %zu bytes",
-                          sizeof part->file - 1);
-    memcpy(part->file, value, len + 1);
-    part->file_line = st->line;
-    return 1;
-}
-
-static int key_translate(scene_state *st, scene_part *part, const char *value)
-{
-    int n;
-    return parse_numbers(st, "translate", value, part->translate, 3, 3, &n);
-}
-
-static int key_rotate(scene_state *st, scene_part *part, const char *value)
-{
-    double v[4];
-    int n;
-    if (!parse_numbers(st, "rotate", value, v, 4, 4, &n))
-        return 0;
-    if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0)
-        return scene_fail(st, SW_ERR_RANGE, "rotate: the axis must not be zero");
-    memcpy(part->axis, v, sizeof part->axis);
-    part->angle_deg = v[3];
-    return 1;
-}
-
-static int key_scale(scene_state *st, scene_part *part, const char *value)
-{
-    double v[3];
-    int n;
-    if (!parse_numbers(st, "scale", value, v, 1, 3, &n))
-        return 0;
-    if (n == 2)
-        return scene_fail(st, SW_ERR_FORMAT, "scale: expected 1 or 3 numbers, found 2");
-    for (int k = 0; k < 3; k++) {
-        part->scale[k] = v[n == 1 ? 0 : k];
-        if (part->scale[k] == 0.0)
-            return scene_fail(st, SW_ERR_RANGE, "scale: factors must not be zero");
-    }
-    return 1;
-}
-
-static int key_color(scene_state *st, scene_part *part, const char *value)
-{
-    double v[4] = {0, 0, 0, 1};
-    int n;
-    if (!parse_numbers(st, "color", value, v, 3, 4, &n))
-        return 0;
-    for (int k = 0; k < 4; k++) {
-        if (v[k] < 0.0 || v[k] > 1.0)
-            return scene_fail(st, SW_ERR_RANGE, "color: %g is outside 0..1", v[k]);
-        part->color[k] = (float)v[k];
-    }
-    return 1;
-}
-
-typedef struct scene_key {
-    const char *name;
-    unsigned bit;
-    int (*parse)(scene_state *st, scene_part *part, const char *value);
-} scene_key;
-
-static const scene_key part_keys[] = {
-    {"file", KEY_FILE, key_file},       {"translate", KEY_TRANSLATE, key_translate},
-    {"rotate", KEY_ROTATE, key_rotate}, {"scale", KEY_SCALE, key_scale},
-    {"color", KEY_COLOR, key_color},
-};
-
-static int part_key(scene_state *st, const char *name, const char *value)
-{
-    scene_part *part = &st->parts[st->part_count - 1];
-    for (size_t k = 0; k < sizeof part_keys / sizeof part_keys[0]; k++) {
-        if (strcmp(name, part_keys[k].name) != 0)
-            continue;
-        if (part->keys_seen & part_keys[k].bit)
-            return scene_fail(st, SW_ERR_FORMAT, "key '%s' given twice in part '%s'", name,
-                              part->name);
-        part->keys_seen |= part_keys[k].bit;
-        return part_keys[k].parse(st, part, value);
-    }
-    return scene_fail(st, SW_ERR_FORMAT,
-                      "unknown key '%s' in part '%s' (expected file, translate, rotate, "
-                      "scale or color)",
-                      name, part->name);
-}
-
-static int begin_part(scene_state *st, const char *name)
-{
-    size_t len = strlen(name);
-    while (len > 0 && (name[len - 1] == ' ' || name[len - 1] == '\t'))
-        len--;
-    if (len == 0)
-        return section_fail(st, SW_ERR_FORMAT, "expected [part NAME], found no name");
-    if (len > SCENE_NAME_MAX)
-        return section_fail(st, SW_ERR_FORMAT, "part name longer than %d bytes", SCENE_NAME_MAX);
-    for (size_t i = 0; i < st->part_count; i++) {
-        if (strlen(st->parts[i].name) == len && memcmp(st->parts[i].name, name, len) == 0)
-            return section_fail(st, SW_ERR_FORMAT, "part '%.*s' already defined at line %ld",
-                                (int)len, name, st->parts[i].line);
-    }
-    if (st->part_count == st->part_capacity) {
-        size_t cap = st->part_capacity ? st->part_capacity * 2 : 8;
-        scene_part *bigger = realloc(st->parts, cap * sizeof *bigger);
-        if (!bigger)
-            return section_fail(st, SW_ERR_NO_MEMORY, "out of memory for %zu parts", cap);
-        st->parts = bigger;
-        st->part_capacity = cap;
-    }
-    scene_part *part = &st->parts[st->part_count++];
-    *part = (scene_part){.line = st->pending_section, .scale = {1, 1, 1}, .axis = {0, 1, 0}};
-    memcpy(part->name, name, len);
-    part->name[len] = '\0';
-    sw_scene_default_color(st->part_count - 1, part->color);
-    return 1;
-}
-
-/* Section kinds by their first word; "[view NAME]" and the like go here. */
-typedef struct scene_section_kind {
-    const char *word;
-    int (*begin)(scene_state *st, const char *name);
-    int (*key)(scene_state *st, const char *name, const char *value);
-} scene_section_kind;
-
-static const scene_section_kind section_kinds[] = {
-    {"part", begin_part, part_key},
-};
-
 static const scene_section_kind *find_section_kind(const char *section, const char **name)
 {
-    for (size_t k = 0; k < sizeof section_kinds / sizeof section_kinds[0]; k++) {
-        size_t len = strlen(section_kinds[k].word);
-        if (strncmp(section, section_kinds[k].word, len) != 0)
+    for (size_t k = 0; k < scene_section_kind_count; k++) {
+        size_t len = strlen(scene_section_kinds[k].word);
+        if (strncmp(section, scene_section_kinds[k].word, len) != 0)
             continue;
         const char *rest = section + len;
         if (*rest != '\0' && *rest != ' ' && *rest != '\t')
             continue;
         rest += strspn(rest, " \t");
         *name = rest;
-        return &section_kinds[k];
+        return &scene_section_kinds[k];
     }
     return NULL;
 }
@@ -334,7 +147,7 @@ static int scene_handler(void *user, const char *section, const char *name, cons
     const char *part_name = NULL;
     const scene_section_kind *kind = find_section_kind(section, &part_name);
     if (!kind)
-        return section_fail(st, SW_ERR_FORMAT, "unknown section [%s] (expected [part NAME])",
+        return section_fail(st, SW_ERR_FORMAT, "unknown section [%s] (expected [part NAME] or [view NAME])",
                             section);
     /* A new section: the reader saw its header, or (belt and braces, should
      * inih and the reader ever disagree on a header) the name changed. */
@@ -363,8 +176,7 @@ void sw_scene_default_color(size_t index, float out[4])
     memcpy(out, palette[index % (sizeof palette / sizeof palette[0])], 4 * sizeof(float));
 }
 
-/* The extension of path's last component, including the dot, or "". */
-static const char *extension(const char *path)
+const char *scene_extension(const char *path)
 {
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
@@ -374,33 +186,103 @@ static const char *extension(const char *path)
 
 int sw_scene_is_scene_path(const char *path)
 {
-    return path && strcasecmp(extension(path), ".ini") == 0;
+    return path && strcasecmp(scene_extension(path), ".ini") == 0;
 }
 
-typedef sw_status (*import_fn)(const char *path, sw_model *model, sw_error *err);
+/* ---- importers ---------------------------------------------------------- */
 
-/* Importers by extension; IGES and STEP join here. */
+typedef sw_status (*import_fn)(const char *path, const sw_import_options *options,
+                               sw_model *model, sw_import_report *report, sw_error *err);
+
+static sw_status import_newell(const char *path, const sw_import_options *options,
+                               sw_model *model, sw_import_report *report, sw_error *err)
+{
+    (void)options, (void)report;
+    return sw_import_newell_file(path, model, err);
+}
+
+static sw_status import_bpt(const char *path, const sw_import_options *options, sw_model *model,
+                            sw_import_report *report, sw_error *err)
+{
+    (void)options, (void)report;
+    return sw_import_bpt_file(path, model, err);
+}
+
+/* Importers by extension; has_units: the format declares its units, so a
+ * scene must not (sw_scene.h). */
 static const struct {
     const char *ext;
     import_fn import;
+    int has_units;
 } importers[] = {
-    {".txt", sw_import_newell_file},
-    {".bpt", sw_import_bpt_file},
+    {".txt", import_newell, 0},         {".bpt", import_bpt, 0},
+    {".igs", sw_import_occt_file, 1},   {".iges", sw_import_occt_file, 1},
+    {".stp", sw_import_occt_file, 1},   {".step", sw_import_occt_file, 1},
 };
 
-sw_status sw_scene_import_file(const char *path, sw_model *model, sw_error *err)
+int scene_file_has_units(const char *path)
+{
+    const char *ext = scene_extension(path);
+    for (size_t k = 0; k < sizeof importers / sizeof importers[0]; k++) {
+        if (strcasecmp(ext, importers[k].ext) == 0)
+            return importers[k].has_units;
+    }
+    return 0;
+}
+
+/* Adds one import's report to the scene's running total. */
+static void report_add(sw_import_report *total, const sw_import_report *one)
+{
+    total->faces += one->faces;
+    total->pcurves_computed += one->pcurves_computed;
+    total->unsupported += one->unsupported;
+    for (size_t k = 0; k < one->unsupported_kinds && k < SW_IMPORT_KINDS; k++) {
+        size_t i = 0;
+        while (i < total->unsupported_kinds &&
+               strcmp(total->unsupported_kind[i], one->unsupported_kind[k]) != 0)
+            i++;
+        if (i == SW_IMPORT_KINDS)
+            continue;
+        if (i == total->unsupported_kinds) {
+            memcpy(total->unsupported_kind[i], one->unsupported_kind[k],
+                   sizeof total->unsupported_kind[i]);
+            total->unsupported_kinds++;
+        }
+        total->unsupported_count[i] += one->unsupported_count[k];
+    }
+    total->units_to_mm = one->units_to_mm;
+    if (one->model_tolerance_mm > total->model_tolerance_mm)
+        total->model_tolerance_mm = one->model_tolerance_mm;
+}
+
+sw_status sw_scene_import_file_with(const char *path, const sw_import_options *options,
+                                    sw_import_report *report, sw_model *model, sw_error *err)
 {
     if (!path || !model)
         return sw_error_set(err, SW_ERR_ARG, "sw_scene_import_file: NULL argument");
-    const char *ext = extension(path);
+    static const sw_import_options defaults = {0};
+    const char *ext = scene_extension(path);
     for (size_t k = 0; k < sizeof importers / sizeof importers[0]; k++) {
-        if (strcasecmp(ext, importers[k].ext) == 0)
-            return importers[k].import(path, model, err);
+        if (strcasecmp(ext, importers[k].ext) != 0)
+            continue;
+        sw_import_report one = {.units_to_mm = 1.0};
+        sw_status st = importers[k].import(path, options ? options : &defaults, model, &one, err);
+        if (report)
+            report_add(report, &one);
+        return st;
     }
     return sw_error_set(err, SW_ERR_UNSUPPORTED,
-                        "%s: unsupported file type '%s' (expected .txt Newell listing or .bpt)",
+                        "%s: unsupported file type '%s' (expected .txt Newell listing, .bpt, "
+                        ".igs/.iges or .stp/.step)",
                         path, ext);
 }
+
+sw_status sw_scene_import_file(const char *path, sw_model *model, sw_error *err)
+{
+    return sw_scene_import_file_with(path, NULL, NULL, model, err);
+}
+
+/* ---- loading ------------------------------------------------------------ */
 
 /* base_dir/file, or file itself when it is absolute or there is no base. */
 static sw_status resolve_path(const char *base_dir, const char *file, char out[SCENE_PATH_MAX],
@@ -417,10 +299,11 @@ static sw_status resolve_path(const char *base_dir, const char *file, char out[S
     return SW_OK;
 }
 
-/* Scale, then rotate, then translate: M = T * R * S. */
+/* Units, then scale, then rotate, then translate: M = T * R * S * U. */
 static sw_mat4 part_matrix(const scene_part *part)
 {
-    sw_mat4 s = sw_mat4_scale(sw_v3(part->scale[0], part->scale[1], part->scale[2]));
+    double u = part->units_to_mm;
+    sw_mat4 s = sw_mat4_scale(sw_v3(part->scale[0] * u, part->scale[1] * u, part->scale[2] * u));
     sw_mat4 r = sw_mat4_rotate(sw_v3(part->axis[0], part->axis[1], part->axis[2]),
                                part->angle_deg * (SW_PI / 180.0));
     sw_mat4 t = sw_mat4_translate(sw_v3(part->translate[0], part->translate[1],
@@ -429,25 +312,54 @@ static sw_mat4 part_matrix(const scene_part *part)
     return sw_mat4_mul(&t, &rs);
 }
 
-static sw_status load_part(const scene_state *st, const scene_part *part, const char *base_dir,
+/* The part's geometry: its file (relative to base_dir) or generated object. */
+static sw_status fill_part(const scene_part *part, const char *base_dir,
+                           const sw_import_options *options, sw_import_report *report,
                            sw_model *model, sw_error *err)
 {
+    if (part->key_line[PK_GENERATE])
+        return sw_proc_add(model, &part->proc, err);
     char path[SCENE_PATH_MAX];
-    sw_status status = resolve_path(base_dir, part->file, path, err);
+    sw_status st = resolve_path(base_dir, part->file, path, err);
+    return st != SW_OK ? st : sw_scene_import_file_with(path, options, report, model, err);
+}
+
+/* An importer may split a file into several parts (assemblies); all of them
+ * get the scene part's placement. */
+static sw_status load_part(const scene_state *st, const scene_part *part, const char *base_dir,
+                           const sw_import_options *options, sw_import_report *report,
+                           sw_model *model, sw_error *err)
+{
+    size_t first = model->part_count;
+    sw_status status = sw_model_begin_part(model, part->name, part->color, err);
     if (status == SW_OK)
-        status = sw_model_begin_part(model, part->name, part->color, err);
-    if (status == SW_OK)
-        status = sw_scene_import_file(path, model, err);
+        status = fill_part(part, base_dir, options, report, model, err);
     if (status != SW_OK) {
-        sw_error_prefix(err, "%s:%ld: part '%s'", st->file_name, part->file_line, part->name);
+        long line = part->key_line[part->key_line[PK_FILE] ? PK_FILE : PK_GENERATE];
+        sw_error_prefix(err, "%s:%ld: part '%s'", st->file_name, line, part->name);
         return status;
     }
     sw_mat4 m = part_matrix(part);
-    sw_model_transform_part(model, model->part_count - 1, &m);
+    for (size_t p = first; p < model->part_count; p++)
+        sw_model_transform_part(model, p, &m);
     return SW_OK;
 }
 
-/* Runs inih over the text; on success st->parts holds every part. */
+static sw_status load_view(const scene_state *st, const scene_view *view, sw_model *model,
+                           sw_error *err)
+{
+    sw_model_viewpoint vp = {.fov_deg = view->fov_deg};
+    snprintf(vp.name, sizeof vp.name, "%s", view->name);
+    memcpy(vp.eye, view->eye, sizeof vp.eye);
+    memcpy(vp.target, view->target, sizeof vp.target);
+    memcpy(vp.up, view->up, sizeof vp.up);
+    sw_status status = sw_model_add_viewpoint(model, &vp, err);
+    if (status != SW_OK)
+        sw_error_prefix(err, "%s:%ld: view '%s'", st->file_name, view->line, view->name);
+    return status;
+}
+
+/* Runs inih over the text; on success st holds every checked section. */
 static sw_status parse_scene(scene_state *st)
 {
     const char *nul = memchr(st->text, '\0', st->size);
@@ -468,19 +380,14 @@ static sw_status parse_scene(scene_state *st)
     }
     if (!st->error_line && st->pending_section)
         section_fail(st, SW_ERR_FORMAT, "section has no keys");
-    if (!st->error_line && st->part_count == 0)
-        scene_fail(st, SW_ERR_FORMAT, "expected at least one [part NAME] section");
-    for (size_t i = 0; !st->error_line && i < st->part_count; i++) {
-        if (!(st->parts[i].keys_seen & KEY_FILE)) {
-            st->line = st->parts[i].line;
-            scene_fail(st, SW_ERR_FORMAT, "part '%s' has no file", st->parts[i].name);
-        }
-    }
+    if (!st->error_line)
+        scene_check_sections(st);
     return st->error_line ? st->status : SW_OK;
 }
 
-sw_status sw_scene_load_memory(const char *text, size_t size, const char *file_name,
-                               const char *base_dir, sw_model *model, sw_error *err)
+sw_status sw_scene_load_memory_with(const char *text, size_t size, const char *file_name,
+                                    const char *base_dir, const sw_import_options *options,
+                                    sw_import_report *report, sw_model *model, sw_error *err)
 {
     if (!model || (!text && size))
         return sw_error_set(err, SW_ERR_ARG, "sw_scene_load_memory: NULL argument");
@@ -492,12 +399,22 @@ sw_status sw_scene_load_memory(const char *text, size_t size, const char *file_n
     };
     sw_status status = parse_scene(&st);
     for (size_t i = 0; status == SW_OK && i < st.part_count; i++)
-        status = load_part(&st, &st.parts[i], base_dir, model, err);
+        status = load_part(&st, &st.parts[i], base_dir, options, report, model, err);
+    for (size_t i = 0; status == SW_OK && i < st.view_count; i++)
+        status = load_view(&st, &st.views[i], model, err);
     free(st.parts);
+    free(st.views);
     return status;
 }
 
-sw_status sw_scene_load(const char *path, sw_model *model, sw_error *err)
+sw_status sw_scene_load_memory(const char *text, size_t size, const char *file_name,
+                               const char *base_dir, sw_model *model, sw_error *err)
+{
+    return sw_scene_load_memory_with(text, size, file_name, base_dir, NULL, NULL, model, err);
+}
+
+sw_status sw_scene_load_with(const char *path, const sw_import_options *options,
+                             sw_import_report *report, sw_model *model, sw_error *err)
 {
     if (!path)
         return sw_error_set(err, SW_ERR_ARG, "sw_scene_load: path is NULL");
@@ -519,7 +436,12 @@ sw_status sw_scene_load(const char *path, sw_model *model, sw_error *err)
         memcpy(base_dir, path, len);
         base_dir[len] = '\0';
     }
-    status = sw_scene_load_memory(text, size, path, base_dir, model, err);
+    status = sw_scene_load_memory_with(text, size, path, base_dir, options, report, model, err);
     free(text);
     return status;
+}
+
+sw_status sw_scene_load(const char *path, sw_model *model, sw_error *err)
+{
+    return sw_scene_load_with(path, NULL, NULL, model, err);
 }

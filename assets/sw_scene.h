@@ -1,43 +1,83 @@
-/* Showroom scenes: an INI file that places several model files as parts of
- * one sw_model. Host only; called by seamwalk-pack and the fuzz target. Later
- * formats (IGES, STEP) plug into sw_scene_import_file, later section kinds
- * (named viewpoints) into the section table in sw_scene.c.
+/* Showroom scenes: an INI file that places parts (model files or generated
+ * objects) and named viewpoints in one sw_model. Host only; called by
+ * seamwalk-pack build, the showroom generator and the fuzz target. The format
+ * in full (assets/SCENE_FORMAT.md says the same with examples):
  *
- *   [part teapot]                ; one section per part; the name is the part's
- *   file = teapot.txt            ; required; relative to the scene's folder
- *   translate = 0 0 0            ; optional, default 0 0 0
- *   rotate = 0 1 0 90            ; optional: axis x y z, angle in degrees
- *   scale = 1                    ; optional: s, or sx sy sz (non-zero)
- *   color = 0.8 0.3 0.2          ; optional: linear RGB in 0..1, optional alpha
+ *   [part teapot]          ; one section per part; the name is the part's
+ *   file = teapot.txt      ; a model file, relative to the scene's folder, or
+ *   generate = vase        ; a procedural object: plate, vase or rail
+ *   units = in             ; mm (default), cm, m, in or ft: the unit of a
+ *                          ; unitless file (.txt, .bpt); an error for .igs,
+ *                          ; .iges, .stp, .step (they carry units) and for
+ *                          ; generated parts (millimetres)
+ *   translate = 0 0 0      ; millimetres, default 0 0 0
+ *   rotate = 0 1 0 90      ; axis x y z (not zero), angle in degrees
+ *   scale = 1              ; s, or sx sy sz (none zero)
+ *   color = 0.8 0.3 0.2    ; linear RGB in 0..1, optional alpha
+ *   ; generated parts only (sw_procedural.h says what each kind reads):
+ *   size = 300             ; mm: plate side, vase widest diameter, rail length
+ *   height = 600           ; mm: plate height above the floor, vase height,
+ *                          ;     rail section height
+ *   holes = 4              ; plate: circular holes, rail: slots (not vase)
+ *   segments = 6           ; B-spline spans: plate per side, vase profile,
+ *                          ;     rail path
+ *   seed = 7               ; 0 .. 2^64-1; the same seed, the same object
  *
- * Transforms apply scale, then rotate, then translate. Comments start with ';'
- * or '#' at the start of a line, or ';' after a blank inside a line. Unknown
- * sections and keys, repeated keys or parts, a section without keys, indented
+ *   [view entrance]        ; a named viewpoint (sw_model_add_viewpoint)
+ *   eye = 0 1600 -5000     ; required, millimetres in the scene
+ *   target = 0 800 0       ; required, not equal to eye
+ *   up = 0 1 0             ; optional, default 0 1 0, not along eye->target
+ *   fov = 60               ; optional: vertical field of view in degrees,
+ *                          ; 0 < fov < 180; absent: the runtime's default
+ *
+ * A part has exactly one of file and generate. File types go by extension,
+ * case-insensitive: .txt Newell listing, .bpt Bezier patch text, .igs/.iges
+ * IGES (native reader), .stp/.step STEP (OpenCASCADE). Everything in the model
+ * is millimetres: a part's points are mapped by units, then scale, then
+ * rotate, then translate. Size parameters out of range (sw_proc_check) and
+ * parameters a kind does not take are errors at their line.
+ *
+ * Comments start with ';' or '#' at the start of a line, or ';' after a blank
+ * inside a line. Unknown sections and keys, repeated keys, parts or views
+ * (parts and views are named separately), a section without keys, indented
  * (continuation) lines and lines longer than 198 bytes are errors naming
- * file:line. Part names are at most 44 bytes, because inih keeps only 49 bytes
- * of a section name. */
+ * file:line; so are errors inside part files ("s.ini:3: part 'a': a.bpt:5:3:
+ * ..."). Names are at most 44 bytes, because inih keeps only 49 bytes of a
+ * section name. At least one part is required. */
 #ifndef SW_SCENE_H
 #define SW_SCENE_H
 
 #include <stddef.h>
 
 #include "sw_error.h"
+#include "sw_import.h"
 #include "sw_model.h"
 
-/* Loads the scene at path, adding one part per [part] section to model.
- * Relative file names resolve against the scene file's folder. On failure the
- * model may hold the parts loaded before the error; the caller frees it. */
+/* Loads the scene at path, adding one part per [part] section to the model
+ * (more if an importer splits a file into several) and one viewpoint per
+ * [view]. Relative file names resolve against the scene file's folder. On
+ * failure the model may hold the parts loaded before the error; the caller
+ * frees it. options (NULL: defaults) go to the IGES and STEP importers;
+ * report (may be NULL) sums their reports over all parts. */
+sw_status sw_scene_load_with(const char *path, const sw_import_options *options,
+                             sw_import_report *report, sw_model *model, sw_error *err);
 sw_status sw_scene_load(const char *path, sw_model *model, sw_error *err);
 
 /* The same from size bytes of text (need not be NUL-terminated). file_name is
  * used in messages; relative part files resolve against base_dir (NULL or ""
  * for the working directory). */
+sw_status sw_scene_load_memory_with(const char *text, size_t size, const char *file_name,
+                                    const char *base_dir, const sw_import_options *options,
+                                    sw_import_report *report, sw_model *model, sw_error *err);
 sw_status sw_scene_load_memory(const char *text, size_t size, const char *file_name,
                                const char *base_dir, sw_model *model, sw_error *err);
 
 /* Imports one model file into the model's current part, chosen by extension
- * (case-insensitive): .txt Newell listing, .bpt Bezier patch text. Other
- * extensions give SW_ERR_UNSUPPORTED. */
+ * (case-insensitive): .txt, .bpt, .igs/.iges, .stp/.step; others give
+ * SW_ERR_UNSUPPORTED. Unitless files are taken as millimetres. report (may be
+ * NULL) gets the importer's report added to it. */
+sw_status sw_scene_import_file_with(const char *path, const sw_import_options *options,
+                                    sw_import_report *report, sw_model *model, sw_error *err);
 sw_status sw_scene_import_file(const char *path, sw_model *model, sw_error *err);
 
 /* 1 when path names a scene (.ini), 0 otherwise. */

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "sw_procedural.h"
 #include "sw_scene.h"
 #include "sw_test.h"
 
@@ -199,7 +200,7 @@ static void errors_name_file_and_line(void)
          "color: 2 is outside 0..1"},
         {"[part a]\nfile = saddle.bpt\ncolor = 1 0 nan\n", SW_ERR_FORMAT, "s.ini:3:", "nan"},
         {"\n[part a]\nfile = nope.txt\n", SW_ERR_IO, "s.ini:3: part 'a':", "nope.txt"},
-        {"[part a]\nfile = saddle.igs\n", SW_ERR_UNSUPPORTED, "s.ini:2: part 'a':", ".igs"},
+        {"[part a]\nfile = saddle.obj\n", SW_ERR_UNSUPPORTED, "s.ini:2: part 'a':", ".obj"},
         {"[part a]\nscale = 2\n", SW_ERR_FORMAT, "s.ini:1:", "part 'a' has no file"},
         {"[part a]\nfile = saddle.bpt\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:3:",
          "given twice"},
@@ -207,7 +208,7 @@ static void errors_name_file_and_line(void)
          "already defined at line 1"},
         {"[part a]\n[part b]\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "no keys"},
         {"[part b]\nfile = saddle.bpt\n[part c]\n", SW_ERR_FORMAT, "s.ini:3:", "no keys"},
-        {"[view a]\neye = 0 0 0\n", SW_ERR_FORMAT, "s.ini:1:", "unknown section [view a]"},
+        {"[views a]\neye = 0 0 0\n", SW_ERR_FORMAT, "s.ini:1:", "unknown section [views a]"},
         {"[part]\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "no name"},
         {"[party a]\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "unknown section"},
         {"file = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:1:", "outside any section"},
@@ -295,12 +296,240 @@ static void import_file_picks_the_importer_by_extension(void)
     SW_CHECK(sw_scene_import_file(path, &m, &err) == SW_OK && m.patch_count == 26);
     write_file("SPOON.BPT", "1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n");
     SW_CHECK(sw_scene_import_file("SPOON.BPT", &m, &err) == SW_OK && m.patch_count == 27);
-    check_error(sw_scene_import_file("x.step", &m, &err), &err, SW_ERR_UNSUPPORTED, "x.step",
+    check_error(sw_scene_import_file("x.3dm", &m, &err), &err, SW_ERR_UNSUPPORTED, "x.3dm",
                 "unsupported");
     check_error(sw_scene_import_file("noext", &m, &err), &err, SW_ERR_UNSUPPORTED, "noext",
                 NULL);
     SW_CHECK(sw_scene_is_scene_path("a/b/TEASET.INI") && !sw_scene_is_scene_path("a.ini/b"));
     sw_model_free(&m);
+}
+
+/* ---- viewpoints --------------------------------------------------------- */
+
+static void views_become_named_viewpoints(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(load("[view entrance]\neye = 0 1600 -5000\ntarget = 0 800 0\nfov = 55\n"
+                      "[part a]\nfile = saddle.bpt\n"
+                      "[view top]\neye = 1 20000 2\ntarget = 1 0 2\nup = 0 0 -1\n",
+                      &m, &err) == SW_OK,
+                 "%s", err.message);
+    SW_CHECK(m.viewpoint_count == 2 && m.part_count == 1);
+    if (m.viewpoint_count == 2) {
+        const sw_model_viewpoint *a = &m.viewpoints[0], *b = &m.viewpoints[1];
+        SW_CHECK(strcmp(a->name, "entrance") == 0 && strcmp(b->name, "top") == 0);
+        SW_CHECK(a->eye[0] == 0 && a->eye[1] == 1600 && a->eye[2] == -5000);
+        SW_CHECK(a->target[1] == 800 && a->fov_deg == 55);
+        /* up defaults to +y, fov to 0 (the runtime's default) */
+        SW_CHECK(a->up[0] == 0 && a->up[1] == 1 && a->up[2] == 0);
+        SW_CHECK(b->up[2] == -1 && b->fov_deg == 0);
+    }
+    sw_model_free(&m);
+}
+
+static void view_errors_name_file_and_line(void)
+{
+    static const struct {
+        const char *text;
+        sw_status status;
+        const char *piece1, *piece2;
+    } cases[] = {
+        {"[part a]\nfile = saddle.bpt\n[view v]\ntarget = 0 0 0\n", SW_ERR_FORMAT, "s.ini:3:",
+         "view 'v' has no eye"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\n", SW_ERR_FORMAT, "s.ini:3:",
+         "view 'v' has no target"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\ntarget = 0 0 0\n[view v]\n"
+         "eye = 1 1 1\n",
+         SW_ERR_FORMAT, "s.ini:6:", "view 'v' already defined at line 3"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1x\ntarget = 0 0 0\n", SW_ERR_FORMAT,
+         "s.ini:4:", "eye: '1x' is not a finite number"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0\ntarget = 0 0 0\n", SW_ERR_FORMAT,
+         "s.ini:4:", "eye: expected 3 numbers, found 2"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\ntarget = 0 0 0\nfov = 180\n",
+         SW_ERR_RANGE, "s.ini:6:", "fov: 180 degrees"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\ntarget = 0 0 0\nfov = inf\n",
+         SW_ERR_FORMAT, "s.ini:6:", "not a finite number"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\ntarget = 0 0 1\n", SW_ERR_RANGE,
+         "s.ini:5:", "target: equals the eye"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 5 0\ntarget = 0 0 0\n", SW_ERR_RANGE,
+         "s.ini:5:", "up: parallel to the view direction"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\nup = 0 0 2\ntarget = 0 0 0\n",
+         SW_ERR_RANGE, "s.ini:5:", "up: parallel"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\nup = 0 0 0\n", SW_ERR_RANGE,
+         "s.ini:5:", "up: the vector must not be zero"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\nlook = 0 0 0\n", SW_ERR_FORMAT,
+         "s.ini:5:", "unknown key 'look' in view 'v'"},
+        {"[part a]\nfile = saddle.bpt\n[view v]\neye = 0 0 1\neye = 0 0 1\n", SW_ERR_FORMAT,
+         "s.ini:5:", "given twice in view 'v' (first at line 4)"},
+        {"[view v]\neye = 0 0 1\ntarget = 0 0 0\n", SW_ERR_FORMAT, "s.ini:",
+         "at least one [part NAME]"},
+        {"[part a]\nfile = saddle.bpt\n[view]\neye = 0 0 1\n", SW_ERR_FORMAT, "s.ini:3:",
+         "expected [view NAME], found no name"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        sw_model m;
+        sw_model_init(&m);
+        sw_error err = {0};
+        check_error(load(cases[k].text, &m, &err), &err, cases[k].status, cases[k].piece1,
+                    cases[k].piece2);
+        sw_model_free(&m);
+    }
+}
+
+/* A part and a view may share a name: they are named separately. */
+static void parts_and_views_have_separate_names(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(load("[part a]\nfile = saddle.bpt\n[view a]\neye = 0 0 1\ntarget = 0 0 0\n", &m,
+                      &err) == SW_OK,
+                 "%s", err.message);
+    SW_CHECK(m.part_count == 1 && m.viewpoint_count == 1);
+    sw_model_free(&m);
+}
+
+/* ---- units -------------------------------------------------------------- */
+
+/* Units scale unitless files to millimetres before the part's own scale:
+ * every coordinate is multiplied by exactly the unit's millimetres. */
+static void units_scale_unitless_files_exactly(void)
+{
+    static const struct {
+        const char *unit;
+        double mm;
+    } units[] = {{"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0}, {"in", 25.4}, {"ft", 304.8}};
+    for (size_t k = 0; k < sizeof units / sizeof units[0]; k++) {
+        char text[128];
+        snprintf(text, sizeof text, "[part s]\nfile = saddle.bpt\nunits = %s\n", units[k].unit);
+        sw_model m;
+        sw_model_init(&m);
+        sw_error err = {0};
+        SW_CHECK_MSG(load(text, &m, &err) == SW_OK, "%s", err.message);
+        if (m.part_count == 1) {
+            const double *c = first_ctrl(&m, 0); /* (-1, 1.5, -1.5) */
+            SW_CHECK_MSG(c[0] == -1.0 * units[k].mm && c[1] == 1.5 * units[k].mm &&
+                             c[2] == -1.5 * units[k].mm,
+                         "%s: (%.17g %.17g %.17g)", units[k].unit, c[0], c[1], c[2]);
+        }
+        sw_model_free(&m);
+    }
+    /* then scale and translate: (-1, 1.5, -1.5) in -> x -25.4 * 2 + 1 */
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK(load("[part s]\nfile = saddle.bpt\nunits = in\nscale = 2\ntranslate = 1 0 0\n", &m,
+                  &err) == SW_OK);
+    if (m.part_count == 1)
+        SW_CHECK(first_ctrl(&m, 0)[0] == 2.0 * 25.4 * -1.0 + 1.0);
+    sw_model_free(&m);
+}
+
+static void units_errors_name_the_line(void)
+{
+    static const struct {
+        const char *text;
+        const char *piece1, *piece2;
+    } cases[] = {
+        {"[part a]\nfile = saddle.bpt\nunits = inch\n", "s.ini:3:", "unknown unit 'inch'"},
+        {"[part a]\nunits = mm\nfile = bracket.igs\n", "s.ini:2:",
+         "units: .igs files carry their own units"},
+        {"[part a]\nfile = BRACKET.STEP\nunits = m\n", "s.ini:3:", ".STEP files carry"},
+        {"[part a]\nfile = b.iges\n\nunits = cm\n", "s.ini:4:", ".iges"},
+        {"[part a]\nfile = b.stp\nunits = cm\n", "s.ini:3:", ".stp"},
+        {"[part a]\ngenerate = vase\nunits = cm\n", "s.ini:3:",
+         "units: generated parts are in millimetres"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        sw_model m;
+        sw_model_init(&m);
+        sw_error err = {0};
+        check_error(load(cases[k].text, &m, &err), &err, SW_ERR_FORMAT, cases[k].piece1,
+                    cases[k].piece2);
+        SW_CHECK(m.part_count == 0); /* found while parsing: nothing was imported */
+        sw_model_free(&m);
+    }
+}
+
+/* ---- generated parts ---------------------------------------------------- */
+
+static void generated_parts_have_the_announced_patches_and_placement(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(load("[part p]\ngenerate = plate\nsize = 500\nheight = 700\nholes = 2\n"
+                      "segments = 3\nseed = 18446744073709551615\ntranslate = 1000 0 0\n"
+                      "[part v]\ngenerate = vase\n[part r]\ngenerate = rail\nsegments = 5\n",
+                      &m, &err) == SW_OK,
+                 "%s", err.message);
+    SW_CHECK(m.part_count == 3);
+    if (m.part_count == 3) {
+        sw_proc_params plate = sw_proc_defaults(SW_PROC_PLATE);
+        plate.segments = 3;
+        sw_proc_params vase = sw_proc_defaults(SW_PROC_VASE);
+        sw_proc_params rail = sw_proc_defaults(SW_PROC_RAIL);
+        rail.segments = 5;
+        SW_CHECK(m.parts[0].patch_count == sw_proc_patch_count(&plate));
+        SW_CHECK(m.parts[1].patch_count == sw_proc_patch_count(&vase));
+        SW_CHECK(m.parts[2].patch_count == sw_proc_patch_count(&rail));
+        /* the plate is 500 wide around x = 1000, at y = 700 */
+        const sw_model_part *p = &m.parts[0];
+        double min_x = INFINITY, max_x = -INFINITY;
+        for (size_t i = p->first_patch; i < p->first_patch + p->patch_count; i++) {
+            for (int k = 0; k < 16; k++) {
+                min_x = fmin(min_x, m.patches[i].ctrl[4 * k]);
+                max_x = fmax(max_x, m.patches[i].ctrl[4 * k]);
+                SW_CHECK(m.patches[i].ctrl[4 * k + 1] == 700.0);
+            }
+        }
+        SW_CHECK_NEAR(min_x, 750.0, 1e-9);
+        SW_CHECK_NEAR(max_x, 1250.0, 1e-9);
+    }
+    sw_model_free(&m);
+}
+
+static void generator_errors_name_the_key(void)
+{
+    static const struct {
+        const char *text;
+        sw_status status;
+        const char *piece1, *piece2;
+    } cases[] = {
+        {"[part a]\ngenerate = cube\n", SW_ERR_FORMAT, "s.ini:2:", "unknown kind 'cube'"},
+        {"[part a]\ngenerate = vase\nholes = 2\n", SW_ERR_FORMAT, "s.ini:3:",
+         "holes: a generated vase takes no holes"},
+        {"[part a]\nsize = 10\nfile = saddle.bpt\n", SW_ERR_FORMAT, "s.ini:2:",
+         "size: only generated parts take it"},
+        {"[part a]\nfile = saddle.bpt\ngenerate = plate\n", SW_ERR_FORMAT, "s.ini:3:",
+         "has both file and generate"},
+        {"[part a]\ncolor = 1 1 1\n", SW_ERR_FORMAT, "s.ini:1:", "has no file (or generate)"},
+        {"[part a]\ngenerate = plate\nholes = 65\n", SW_ERR_RANGE, "s.ini:3:",
+         "plate: holes 65 outside 0..64"},
+        {"[part a]\nsegments = 0\ngenerate = rail\n", SW_ERR_RANGE, "s.ini:2:",
+         "rail: segments 0 outside"},
+        {"[part a]\ngenerate = rail\nsize = 0.5\n", SW_ERR_RANGE, "s.ini:3:", "size 0.5 mm"},
+        {"[part a]\ngenerate = vase\nheight = 0\n", SW_ERR_RANGE, "s.ini:3:", "height 0 mm"},
+        {"[part a]\ngenerate = plate\nholes = -1\n", SW_ERR_FORMAT, "s.ini:3:",
+         "holes: expected a whole number, found '-1'"},
+        {"[part a]\ngenerate = plate\nsegments = 2.5\n", SW_ERR_FORMAT, "s.ini:3:",
+         "segments: expected a whole number"},
+        {"[part a]\ngenerate = plate\nseed = 18446744073709551616\n", SW_ERR_RANGE, "s.ini:3:",
+         "seed: 18446744073709551616 is larger than"},
+        {"[part a]\ngenerate = plate\nsegments = 99999999\n", SW_ERR_RANGE, "s.ini:3:",
+         "larger than"},
+        {"[part a]\ngenerate = plate\nsize = 1 2\n", SW_ERR_FORMAT, "s.ini:3:", "at most 1"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        sw_model m;
+        sw_model_init(&m);
+        sw_error err = {0};
+        check_error(load(cases[k].text, &m, &err), &err, cases[k].status, cases[k].piece1,
+                    cases[k].piece2);
+        sw_model_free(&m);
+    }
 }
 
 int main(int argc, char **argv)
@@ -330,6 +559,13 @@ int main(int argc, char **argv)
     SW_RUN(long_lines_and_nul_bytes_are_errors);
     SW_RUN(errors_inside_part_files_name_both_files);
     SW_RUN(import_file_picks_the_importer_by_extension);
+    SW_RUN(views_become_named_viewpoints);
+    SW_RUN(view_errors_name_file_and_line);
+    SW_RUN(parts_and_views_have_separate_names);
+    SW_RUN(units_scale_unitless_files_exactly);
+    SW_RUN(units_errors_name_the_line);
+    SW_RUN(generated_parts_have_the_announced_patches_and_placement);
+    SW_RUN(generator_errors_name_the_key);
     static const char *const written[] = {"here.bpt", "here.ini", "broken.bpt", "SPOON.BPT"};
     for (size_t k = 0; k < sizeof written / sizeof written[0]; k++)
         remove(written[k]);

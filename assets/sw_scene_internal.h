@@ -1,0 +1,98 @@
+/* What the two halves of the scene reader share: sw_scene.c reads lines,
+ * drives inih and loads parts; sw_scene_keys.c understands sections and keys
+ * and checks each section once the whole file is read. Internal to assets/. */
+#ifndef SW_SCENE_INTERNAL_H
+#define SW_SCENE_INTERNAL_H
+
+#include <stddef.h>
+
+#include "sw_error.h"
+#include "sw_procedural.h"
+
+enum { SCENE_NAME_MAX = 44, SCENE_SECTION_MAX = 49, SCENE_PATH_MAX = 4096 };
+
+/* Keys of a [part], by bit number; key_line[k] is where key k was given. */
+enum scene_part_key {
+    PK_FILE,
+    PK_GENERATE,
+    PK_TRANSLATE,
+    PK_ROTATE,
+    PK_SCALE,
+    PK_COLOR,
+    PK_UNITS,
+    PK_SIZE,
+    PK_HEIGHT,
+    PK_HOLES,
+    PK_SEGMENTS,
+    PK_SEED,
+    PK_COUNT
+};
+
+/* Keys of a [view]. */
+enum scene_view_key { VK_EYE, VK_TARGET, VK_UP, VK_FOV, VK_COUNT };
+
+typedef struct scene_part {
+    char name[SCENE_NAME_MAX + 1];
+    char file[256];             /* as written; inih lines are shorter */
+    long line;                  /* of the section header */
+    long key_line[PK_COUNT];    /* 0: not given */
+    double translate[3], axis[3], angle_deg, scale[3];
+    double units_to_mm;         /* 1 unless `units` says otherwise */
+    float color[4];
+    sw_proc_params proc;        /* kind 0 unless `generate` */
+} scene_part;
+
+typedef struct scene_view {
+    char name[SCENE_NAME_MAX + 1];
+    long line;
+    long key_line[VK_COUNT];
+    double eye[3], target[3], up[3], fov_deg;
+} scene_view;
+
+typedef struct scene_state {
+    const char *text;
+    size_t size, pos;
+    const char *file_name;
+    long line;                  /* of the line inih is working on */
+    long pending_section;       /* line of a header no key has followed yet, or 0 */
+    char section[64];           /* inih's name of the section being filled */
+    int section_kind;           /* index into the section table of the section being filled */
+    scene_part *parts;
+    size_t part_count, part_capacity;
+    scene_view *views;
+    size_t view_count, view_capacity;
+    sw_error *err;
+    long error_line;            /* 0 while no error is recorded */
+    sw_status status;           /* of the recorded error */
+} scene_state;
+
+/* Record the first error at the current line, at the header of the section
+ * being started, or at a given line; all return 0 (inih's "failed"). */
+int scene_fail(scene_state *st, sw_status status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+int section_fail(scene_state *st, sw_status status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+int scene_fail_at(scene_state *st, long line, sw_status status, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+/* Section kinds by their first word: "[part NAME]", "[view NAME]". */
+typedef struct scene_section_kind {
+    const char *word;
+    int (*begin)(scene_state *st, const char *name);
+    int (*key)(scene_state *st, const char *name, const char *value);
+} scene_section_kind;
+
+extern const scene_section_kind scene_section_kinds[];
+extern const size_t scene_section_kind_count;
+
+/* Checks every section once the file is read (required keys, keys that do
+ * not go together); 0 after recording an error. */
+int scene_check_sections(scene_state *st);
+
+/* The extension of path's last component, including the dot, or "". */
+const char *scene_extension(const char *path);
+
+/* 1 when the file's format declares its own units (IGES, STEP). */
+int scene_file_has_units(const char *path);
+
+#endif
