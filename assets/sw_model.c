@@ -448,7 +448,11 @@ static sw_status stage_restrict(staged *s, sw_error *err)
             free(p.ctrl);
             continue;
         }
-        p.masked = cover == SW_TRIM_PARTIAL;
+        /* A mask of all ones filters nothing (trims along the domain's border). */
+        uint32_t all = 0xFFFFFFFFu;
+        for (int j = 0; j < 32; j++)
+            all &= p.mask[j];
+        p.masked = cover == SW_TRIM_PARTIAL && all != 0xFFFFFFFFu;
         st = shrink_patch(&p, rect, err);
         s->patches[kept++] = p;
         /* On failure the unvisited patches stay listed so staged_free frees them. */

@@ -27,7 +27,8 @@ typedef struct sw_model_patch {
     double domain[4];  /* u0, u1, v0, v1: the part of the surface's domain it covers */
     /* Trimmed surfaces: which of 32 x 32 equal cells of domain touch the face
      * (bit i of mask[j]: cell i along u, row j along v; conservative, as
-     * sw_pack_trim_mask). masked 0: the whole domain is inside, mask unused. */
+     * sw_pack_trim_mask). masked 0: every cell touches the face (the whole
+     * domain is inside, or the trims only run along its border): mask unused. */
     uint32_t mask[32];
     int masked;
 } sw_model_patch;

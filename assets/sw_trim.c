@@ -101,7 +101,7 @@ sw_status sw_trim_flatten_curve(const sw_nurbs_curve *curve, double tolerance, d
             h[i][0] = c[0] * c[3], h[i][1] = c[1] * c[3], h[i][2] = c[3];
         }
         if (p == 0)
-            emit(&e, h[0][0] / h[0][2], h[0][1] / h[0][2]);
+            emit(&e, curve->ctrl[0], curve->ctrl[1]); /* exact: clamped start */
         if (!flatten_piece((const double(*)[3])h, n, tolerance, 0, &e))
             st = sw_error_set(err, SW_ERR_RANGE,
                               "trim curve piece %d cannot be flattened to %g: below the "
