@@ -483,7 +483,7 @@ static int parse_gen_args(int argc, char **argv, gen_args *a)
         if (i + 1 == argc)
             return gen_usage_error("%s needs a value", opt);
         const char *val = argv[++i];
-        unsigned long long v;
+        unsigned long long v = 0;
         if (!strcmp(opt, "--patches")) {
             if (have_patches++ || !parse_count(val, SW_GEN_MAX_PATCHES, &v) || v == 0)
                 return gen_usage_error("--patches: expected one count in 1..10000000, found '%s'", val);

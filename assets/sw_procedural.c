@@ -306,15 +306,17 @@ static void set_point(double *ctrl, int nu, int i, int j, double x, double y, do
 
 /* Holes on a g x g grid of cells, each a circle of seeded radius and centre
  * at least a tenth of a cell away from its cell's edges, so holes never touch
- * each other or the plate's boundary. */
+ * each other or the plate's boundary. A radius under half a patch's side
+ * keeps every patch partly on the plate: the model drops patches wholly
+ * outside the face, and the announced count must hold. */
 static int plate_holes(sw_proc_shape *shape, const sw_proc_params *p, uint64_t *rng)
 {
     int g = 1;
     while (g * g < p->holes)
         g++;
-    double cell = p->size_mm / g;
+    double cell = p->size_mm / g, patch = p->size_mm / p->segments;
     for (int k = 0; k < p->holes; k++) {
-        double r = cell * rng_range(rng, 0.12, 0.3);
+        double r = fmin(cell * rng_range(rng, 0.12, 0.3), 0.45 * patch);
         double slack = 0.4 * cell - r;
         double cu = cell * (k % g + 0.5) + rng_range(rng, -slack, slack);
         double cv = cell * (k / g + 0.5) + rng_range(rng, -slack, slack);

@@ -170,7 +170,7 @@ static int key_height(scene_state *st, scene_part *part, const char *value)
 /* Counts are range-checked per kind later; here only "a small whole number". */
 static int key_holes(scene_state *st, scene_part *part, const char *value)
 {
-    unsigned long long v;
+    unsigned long long v = 0;
     if (!parse_uint(st, "holes", value, 1000000, &v))
         return 0;
     part->proc.holes = (int)v;
@@ -179,7 +179,7 @@ static int key_holes(scene_state *st, scene_part *part, const char *value)
 
 static int key_segments(scene_state *st, scene_part *part, const char *value)
 {
-    unsigned long long v;
+    unsigned long long v = 0;
     if (!parse_uint(st, "segments", value, 1000000, &v))
         return 0;
     part->proc.segments = (int)v;
@@ -188,7 +188,7 @@ static int key_segments(scene_state *st, scene_part *part, const char *value)
 
 static int key_seed(scene_state *st, scene_part *part, const char *value)
 {
-    unsigned long long v;
+    unsigned long long v = 0;
     if (!parse_uint(st, "seed", value, UINT64_MAX, &v))
         return 0;
     part->proc.seed = v;
@@ -325,7 +325,7 @@ static int grow(scene_state *st, void **array, size_t *capacity, size_t count, s
 
 static int begin_part(scene_state *st, const char *name)
 {
-    size_t len;
+    size_t len = 0;
     if (!check_name(st, "part", name, &len))
         return 0;
     for (size_t i = 0; i < st->part_count; i++) {
@@ -349,7 +349,7 @@ static int begin_part(scene_state *st, const char *name)
 
 static int begin_view(scene_state *st, const char *name)
 {
-    size_t len;
+    size_t len = 0;
     if (!check_name(st, "view", name, &len))
         return 0;
     for (size_t i = 0; i < st->view_count; i++) {

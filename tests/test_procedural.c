@@ -174,6 +174,9 @@ static void plate_holes_are_exact_circles_inside_the_plate(void)
     }
     /* rounding only: the centres are hundreds of millimetres from the origin */
     SW_CHECK_MSG(worst <= 1e-12, "relative radius error %g", worst);
+    /* no hole can swallow a whole patch (the model would drop it) */
+    for (size_t h = 0; h < shape.circle_count; h++)
+        SW_CHECK(shape.circles[3 * h + 2] < 0.5 * p.size_mm / p.segments);
     sw_proc_shape_free(&shape);
 }
 
@@ -348,9 +351,42 @@ static void out_of_range_parameters_are_named(void)
                                                   ~(unsigned)SW_PROC_USES_HOLES));
 }
 
+/* Patches the model holds after adding the object to an empty part. */
+static size_t added_patches(const sw_proc_params *p)
+{
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    sw_status st = sw_model_begin_part(&m, "obj", NULL, &err);
+    if (st == SW_OK)
+        st = sw_proc_add(&m, p, &err);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    size_t n = m.patch_count;
+    sw_model_free(&m);
+    return n;
+}
+
 /* What the model receives: the announced patches, one surface per shape
  * surface with its loops, in the current part. */
 static void adding_to_a_model_gives_the_announced_patches(void)
+{
+    for (int kind = SW_PROC_PLATE; kind <= SW_PROC_RAIL; kind++) {
+        sw_proc_params p = params((sw_proc_kind)kind, 5, kind == SW_PROC_VASE ? 0 : 2, 3);
+        SW_CHECK(added_patches(&p) == sw_proc_patch_count(&p));
+    }
+    /* many small patches under big holes and slots: none is trimmed away */
+    for (uint64_t seed = 1; seed <= 40; seed++) {
+        sw_proc_params plate = params(SW_PROC_PLATE, 3 + (int)(seed % 14), 1 + (int)(seed % 9), seed);
+        sw_proc_params rail = params(SW_PROC_RAIL, 8 + (int)seed, (int)(seed % 17), seed);
+        SW_CHECK_MSG(added_patches(&plate) == sw_proc_patch_count(&plate), "plate seed %llu",
+                     (unsigned long long)seed);
+        SW_CHECK_MSG(added_patches(&rail) == sw_proc_patch_count(&rail), "rail seed %llu",
+                     (unsigned long long)seed);
+    }
+}
+
+/* The loops and surfaces the model holds after sw_proc_add. */
+static void adding_to_a_model_keeps_surfaces_and_loops(void)
 {
     for (int kind = SW_PROC_PLATE; kind <= SW_PROC_RAIL; kind++) {
         sw_proc_params p = params((sw_proc_kind)kind, 5, kind == SW_PROC_VASE ? 0 : 2, 3);
@@ -383,5 +419,6 @@ int main(void)
     SW_RUN(the_seed_decides_everything);
     SW_RUN(out_of_range_parameters_are_named);
     SW_RUN(adding_to_a_model_gives_the_announced_patches);
+    SW_RUN(adding_to_a_model_keeps_surfaces_and_loops);
     return sw_test_finish();
 }

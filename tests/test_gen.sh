@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# Specification of the showroom generator (sw_gen_showroom.h): the scene it
+# writes builds with seamwalk-pack into a pack of N Bezier patches (within 5%;
+# the plan is exact), with its viewpoints; the seed decides the scene; bad
+# arguments and part files fail cleanly and write nothing.
+#   test_gen.sh GEN SEAMWALK_PACK procedural       generated objects only
+#   test_gen.sh GEN SEAMWALK_PACK parts MODELS_DIR with copies of real parts
+# GEN runs the generator's command (`seamwalk-pack gen` or the sw_gen_cli
+# program that calls the same function). The parts mode exits 77 (skipped)
+# when MODELS_DIR is absent.
+set -uo pipefail
+gen=$1 pack=$2 mode=$3 models=${4:-}
+work=$(mktemp -d "${TMPDIR:-/tmp}/sw_test_gen.XXXXXX") || exit 1
+trap 'rm -rf "$work"' EXIT
+failures=0 checks=0
+
+check() { # check DESCRIPTION COMMAND...
+  local what=$1; shift
+  checks=$((checks + 1))
+  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; failures=$((failures + 1)); fi
+}
+
+# patches_of PACK: the Bezier patch count seamwalk-pack info reports.
+patches_of() {
+  "$pack" info --json "$1" | sed -n 's/^ *"bezier_patches": \([0-9]*\),*$/\1/p'
+}
+
+# within_5_percent GOT WANT
+within_5_percent() {
+  [ -n "$1" ] && [ $(( ($1 - $2) * ($1 - $2) * 400 )) -le $(( $2 * $2 )) ] ||
+    { echo "  $1 patches for $2 asked"; false; }
+}
+
+# gen_and_build N NAME [GEN ARGS...]: generates NAME.ini, builds NAME.swpack.
+gen_and_build() {
+  local n=$1 name=$2; shift 2
+  "$gen" showroom --patches "$n" -o "$work/$name.ini" "$@" > "$work/$name.gen" 2>&1 &&
+    "$pack" build "$work/$name.ini" -o "$work/$name.swpack" > "$work/$name.build" 2>&1 ||
+    { cat "$work/$name.gen" "$work/$name.build" 2>/dev/null; false; }
+}
+
+builds_to() { # builds_to N NAME [GEN ARGS...]
+  local n=$1 name=$2
+  gen_and_build "$@" && within_5_percent "$(patches_of "$work/$name.swpack")" "$n"
+}
+
+has_views() { # the three viewpoints, in the scene and in the pack
+  for v in entrance overview closeup; do grep -q "^\[view $v\]$" "$work/$1.ini" || return 1; done
+  "$pack" info --json "$work/$1.swpack" | grep -q '"name": "VIEWPOINTS", .*"size": [1-9]'
+}
+
+fails_with() { # fails_with CODE FRAGMENT GEN ARGS...: exit CODE, FRAGMENT on stderr, no output
+  local want=$1 fragment=$2; shift 2
+  rm -f "$work/bad.ini"
+  "$gen" "$@" > "$work/out" 2> "$work/err"
+  local got=$?
+  [ "$got" -eq "$want" ] && grep -q -- "$fragment" "$work/err" && [ ! -e "$work/bad.ini" ] ||
+    { echo "  exit $got: $(head -c 300 "$work/err")"; false; }
+}
+
+procedural() {
+  check "2000 patches asked, 2000 built" builds_to 2000 small
+  check "the scene has entrance, overview and closeup views" has_views small
+  check "the same seed writes the same scene" \
+    bash -c "'$gen' showroom --patches 2000 -o '$work/again.ini' > /dev/null &&
+             cmp -s '$work/small.ini' '$work/again.ini'"
+  check "another seed writes another scene" \
+    bash -c "'$gen' showroom --patches 2000 --seed 2 -o '$work/other.ini' > /dev/null &&
+             ! cmp -s '$work/small.ini' '$work/other.ini'"
+  check "a tiny showroom (7 patches) builds exactly" builds_to 7 tiny
+  check "40000 patches asked, within 5% built" builds_to 40000 large --seed 40
+  check "missing --patches is a usage error" fails_with 2 "missing --patches" showroom -o "$work/bad.ini"
+  check "--patches 0 is a usage error" fails_with 2 "--patches" showroom --patches 0 -o "$work/bad.ini"
+  check "--patches 12x is a usage error" fails_with 2 "12x" showroom --patches 12x -o "$work/bad.ini"
+  check "only showrooms are generated" fails_with 2 "expected 'showroom'" garden --patches 5 -o "$work/bad.ini"
+  check "an unknown option is a usage error" fails_with 2 "'--fast'" showroom --fast --patches 5 -o "$work/bad.ini"
+  check "a missing part file fails naming it" \
+    fails_with 1 "no_such_part.bpt" showroom --patches 50 --part "$work/no_such_part.bpt" -o "$work/bad.ini"
+  printf '1\n1 1\n0 0 0\n1 0 0\n0 one 0\n1 1 1\n' > "$work/broken.bpt"
+  check "a broken part file fails naming file and line" \
+    fails_with 1 "broken.bpt:5:" showroom --patches 50 --part "$work/broken.bpt" -o "$work/bad.ini"
+}
+
+parts() {
+  [ -d "$models" ] || { echo "skip: no models folder '$models'"; exit 77; }
+  local teapot=$models/newell_teapot.txt
+  [ -f "$teapot" ] || { echo "skip: no $teapot"; exit 77; }
+  check "copies of the Newell teapot and objects: 2000 patches" \
+    builds_to 2000 teapots --part "$teapot" --seed 3
+  check "the teapot is copied" grep -q "^file = .*newell_teapot.txt$" "$work/teapots.ini"
+  local step=$models/occt_screw.step
+  if [ -f "$step" ] && "$pack" build "$step" -o "$work/screw.swpack" > /dev/null 2>&1; then
+    check "copies of a STEP part and the teapot: 3000 patches" \
+      builds_to 3000 mixed --part "$teapot" --part "$step" --seed 4
+  else
+    echo "skip STEP parts: this seamwalk-pack does not build $step"
+  fi
+}
+
+case $mode in
+  procedural) procedural ;;
+  parts) parts ;;
+  *) echo "usage: test_gen.sh GEN SEAMWALK_PACK procedural|parts [MODELS_DIR]"; exit 2 ;;
+esac
+echo "$checks checks, $failures failed"
+[ "$checks" -gt 0 ] && [ "$failures" -eq 0 ]
