@@ -339,25 +339,26 @@ static void mark_edge(const double a[2], const double b[2], const double domain[
     }
 }
 
-/* Cells whose centre is inside, by the crossing rule of sw_trim_point_inside
- * applied to a whole row of centres at once: a crossing at x toggles every
- * centre left of x. */
-static void mark_inside_centres(const sw_trim_polyline *poly, const double domain[4],
-                                uint32_t rows[32])
+/* Toggles, in row j's parity, every cell centre left of where edge a-b
+ * crosses the row's centre line (the crossing rule of sw_trim_point_inside,
+ * for 32 centres at once). Only the rows the edge spans are visited. */
+static void toggle_rows(const double a[2], const double b[2], const double domain[4],
+                        uint32_t parity[32])
 {
     double w = (domain[1] - domain[0]) / 32, h = (domain[3] - domain[2]) / 32;
-    for (int j = 0; j < 32; j++) {
+    double lo = (fmin(a[1], b[1]) - domain[2]) / h - 0.5;
+    double hi = (fmax(a[1], b[1]) - domain[2]) / h - 0.5;
+    if (hi < -1 || lo > 32)
+        return;
+    int j0 = lo < 0 ? 0 : (int)lo, j1 = hi > 31 ? 31 : (int)ceil(hi);
+    for (int j = j0; j <= j1; j++) {
         double v = domain[2] + (j + 0.5) * h;
-        uint32_t parity = 0;
-        FOR_EACH_EDGE(poly, a, b, {
-            if ((a[1] > v) != (b[1] > v)) {
-                double x = a[0] + (v - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
-                double t = ceil((x - domain[0]) / w - 0.5);
-                int k = t < 0 ? 0 : t > 32 ? 32 : (int)t;
-                parity ^= k == 32 ? 0xFFFFFFFFu : (1u << k) - 1u;
-            }
-        })
-        rows[j] = parity;
+        if ((a[1] > v) == (b[1] > v))
+            continue;
+        double x = a[0] + (v - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+        double t = ceil((x - domain[0]) / w - 0.5);
+        int k = t < 0 ? 0 : t > 32 ? 32 : (int)t;
+        parity[j] ^= k == 32 ? 0xFFFFFFFFu : (1u << k) - 1u;
     }
 }
 
@@ -365,8 +366,11 @@ sw_trim_coverage sw_trim_mask(const sw_trim_polyline *poly, const double domain[
                               uint32_t rows[32])
 {
     uint32_t band[32] = {0};
-    FOR_EACH_EDGE(poly, a, b, { mark_edge(a, b, domain, poly->tolerance, band); })
-    mark_inside_centres(poly, domain, rows);
+    memset(rows, 0, 32 * sizeof *rows);
+    FOR_EACH_EDGE(poly, a, b, {
+        mark_edge(a, b, domain, poly->tolerance, band);
+        toggle_rows(a, b, domain, rows);
+    })
     uint32_t any_band = 0, all_inside = 0xFFFFFFFFu, any = 0;
     for (int j = 0; j < 32; j++) {
         any_band |= band[j];

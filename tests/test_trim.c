@@ -231,15 +231,15 @@ static void test_mask_is_conservative_and_tight(void)
 }
 
 /* Unit square with a hole of radius r: area 1 - pi r^2, on a plane split
- * into 3 x 3 bicubic patches (the hole crosses patch boundaries) and through
- * the model's convenience call. */
+ * into 3 x 2 and 3 x 4 bicubic patches (the hole crosses patch boundaries,
+ * some vertices lie on them) and through the model's convenience call. */
 static void test_area_square_with_circular_hole(void)
 {
     for (int cw = 0; cw < 2; cw++) {
         holed_square h;
         holed_square_init(&h, 0.3, cw);
         shape_plane plane;
-        shape_plane_init(&plane, 3, 3, 3, 1, 1);
+        shape_plane_init(&plane, 3, 3, 2 + 2 * cw, 1, 1); /* 2 x 4: vertices on knot lines */
         sw_trim_polyline poly;
         sw_error err = {0};
         SW_CHECK(sw_trim_polyline_build(h.loops, 2, 1e-6, 0, &poly, &err) == SW_OK);
@@ -349,6 +349,29 @@ static void test_area_boundary_loop_equals_untrimmed(void)
     sw_trim_polyline_free(&poly);
 }
 
+/* Square holes whose edges lie on knot lines (patch edges), in both
+ * orientations, and one touching the domain's border: exact areas. */
+static void test_area_trims_on_knot_lines(void)
+{
+    const double holes[3][4] = {{0.25, 0.75, 0.25, 0.75}, {0.5, 1.0, 0.0, 0.5}, {0, 0.25, 0.5, 1}};
+    for (int k = 0; k < 3; k++) {
+        shape_plane plane;
+        shape_plane_init(&plane, 1, 4, 4, 1, 1);
+        shape_rect outer, hole;
+        shape_rect_init(&outer, 0, 1, 0, 1);
+        shape_rect_init(&hole, holes[k][0], holes[k][1], holes[k][2], holes[k][3]);
+        sw_model_loop_input loops[2] = {{.curves = outer.curves, .curve_count = 4, .outer = 1},
+                                        {.curves = hole.curves, .curve_count = 4}};
+        sw_trim_polyline poly;
+        sw_error err = {0};
+        SW_CHECK(sw_trim_polyline_build(loops, 2, 1e-6, 0, &poly, &err) == SW_OK);
+        double area = 0, exact = 1 - (holes[k][1] - holes[k][0]) * (holes[k][3] - holes[k][2]);
+        SW_CHECK(sw_trim_area(&plane.surface, &poly, 1e-10, &area, &err) == SW_OK);
+        SW_CHECK_NEAR(area, exact, 1e-12);
+        sw_trim_polyline_free(&poly);
+    }
+}
+
 int main(void)
 {
     SW_RUN(test_circle_polyline_within_tolerance);
@@ -362,5 +385,6 @@ int main(void)
     SW_RUN(test_area_rational_cylinder_quarter);
     SW_RUN(test_area_random_bicubic_matches_grid);
     SW_RUN(test_area_boundary_loop_equals_untrimmed);
+    SW_RUN(test_area_trims_on_knot_lines);
     return sw_test_finish();
 }
