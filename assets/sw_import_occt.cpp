@@ -133,7 +133,11 @@ public:
     {
         for (const std::string &line : printer_->lines) {
             size_t b = line.find_first_not_of(" \t\r\n*");
-            size_t e = line.find_last_not_of(" \t\r\n");
+            /* "ERR StepFile : Undefined Parsing: ...": the tag is noise. */
+            size_t tag = line.find(" : ", b);
+            if (line.compare(b, 4, "ERR ") == 0 && tag != std::string::npos)
+                b = tag + 3;
+            size_t e = line.find_last_not_of(" \t\r\n*");
             if (b != std::string::npos)
                 return line.substr(b, e - b + 1);
         }
@@ -216,22 +220,55 @@ struct TrimCurve {
     std::vector<double> knots, ctrl;
 };
 
+/* seamwalk's B-splines are clamped (end knots of multiplicity degree + 1).
+ * OCCT's need not be: SetNotPeriodic leaves the periodic knot pattern, and
+ * files may hold unclamped ones. Segmenting to the valid range clamps. */
+bool clamped(const TColStd_Array1OfReal &flat, int degree, int poles)
+{
+    int lo = flat.Lower();
+    return flat(lo) == flat(lo + degree) && flat(lo + poles) == flat(lo + poles + degree);
+}
+
+void clamp_curve(const Handle(Geom2d_BSplineCurve) &b)
+{
+    if (b->IsPeriodic())
+        b->SetNotPeriodic();
+    TColStd_Array1OfReal flat(1, b->NbPoles() + b->Degree() + 1);
+    b->KnotSequence(flat);
+    if (!clamped(flat, b->Degree(), b->NbPoles()))
+        b->Segment(flat(1 + b->Degree()), flat(1 + b->NbPoles()));
+}
+
+void clamp_surface(const Handle(Geom_BSplineSurface) &b)
+{
+    if (b->IsUPeriodic())
+        b->SetUNotPeriodic();
+    if (b->IsVPeriodic())
+        b->SetVNotPeriodic();
+    int du = b->UDegree(), dv = b->VDegree(), nu = b->NbUPoles(), nv = b->NbVPoles();
+    TColStd_Array1OfReal ku(1, nu + du + 1), kv(1, nv + dv + 1);
+    b->UKnotSequence(ku);
+    b->VKnotSequence(kv);
+    if (!clamped(ku, du, nu) || !clamped(kv, dv, nv))
+        b->Segment(ku(1 + du), ku(1 + nu), kv(1 + dv), kv(1 + nv));
+}
+
+/* The p-curve's used range [first, last] as a clamped B-spline. A periodic
+ * one is cut first: its range may cross the period's start. */
 Handle(Geom2d_BSplineCurve) clamped_pcurve(const Handle(Geom2d_Curve) &curve, double first,
                                            double last)
 {
     Handle(Geom2d_BSplineCurve) b = Handle(Geom2d_BSplineCurve)::DownCast(curve);
     if (b.IsNull()) {
         Handle(Geom2d_TrimmedCurve) piece = new Geom2d_TrimmedCurve(curve, first, last);
-        return Geom2dConvert::CurveToBSplineCurve(piece);
+        b = Geom2dConvert::CurveToBSplineCurve(piece);
+    } else {
+        b = Handle(Geom2d_BSplineCurve)::DownCast(b->Copy());
+        if (std::fabs(first - b->FirstParameter()) > 1e-12 ||
+            std::fabs(last - b->LastParameter()) > 1e-12)
+            b->Segment(first, last);
     }
-    b = Handle(Geom2d_BSplineCurve)::DownCast(b->Copy());
-    if (std::fabs(first - b->FirstParameter()) > 1e-12 ||
-        std::fabs(last - b->LastParameter()) > 1e-12)
-        b->Segment(first, last);
-    /* OCCT's non-periodic B-splines always have end knots of full
-     * multiplicity, so this is what clamps a periodic one. */
-    if (b->IsPeriodic())
-        b->SetNotPeriodic();
+    clamp_curve(b);
     return b;
 }
 
@@ -264,10 +301,7 @@ Handle(Geom_BSplineSurface) bspline_surface_of(const TopoDS_Face &face)
         b = GeomConvert::SurfaceToBSplineSurface(s);
     else
         b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
-    if (b->IsUPeriodic())
-        b->SetUNotPeriodic();
-    if (b->IsVPeriodic())
-        b->SetVNotPeriodic();
+    clamp_surface(b);
     return b;
 }
 
@@ -344,13 +378,55 @@ struct Loop {
     int outer = 0;
 };
 
+/* A degree-1 trim from one (u, v) point to another. */
+TrimCurve segment(const double *from, const double *to)
+{
+    TrimCurve t;
+    t.degree = 1;
+    t.count = 2;
+    t.knots = {0.0, 0.0, 1.0, 1.0};
+    t.ctrl = {from[0], from[1], 0.0, 1.0, to[0], to[1], 0.0, 1.0};
+    return t;
+}
+
+/* Closes the loop in (u, v). NurbsConvert re-approximates p-curves, and at a
+ * surface's pole (nist_mbe_pmi_4 face 186) the ends of neighbouring curves
+ * drift apart in parameter space (0.09 in v there) while meeting in 3D. Such
+ * a gap gets a straight trim across it; one that is also a gap in 3D (beyond
+ * the edges' tolerance) means the face is broken. */
+const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double tolerance)
+{
+    std::vector<TrimCurve> closed;
+    std::vector<int> computed;
+    size_t n = loop->curves.size();
+    for (size_t i = 0; i < n; i++) {
+        closed.push_back(std::move(loop->curves[i]));
+        computed.push_back(loop->computed[i]);
+        const TrimCurve &a = closed.back(), &b = loop->curves[(i + 1) % n];
+        const double *end = &a.ctrl[a.ctrl.size() - 4];
+        const double *start = i + 1 < n ? &b.ctrl[0] : &closed.front().ctrl[0];
+        if (std::hypot(end[0] - start[0], end[1] - start[1]) <= 1e-9)
+            continue;
+        gp_Pnt p = surface->Value(end[0], end[1]), q = surface->Value(start[0], start[1]);
+        if (p.Distance(q) > tolerance)
+            return "trim curves do not meet in 3D";
+        closed.push_back(segment(end, start));
+        computed.push_back(1);
+    }
+    loop->curves = std::move(closed);
+    loop->computed = std::move(computed);
+    return nullptr;
+}
+
 /* The loop of one wire: each edge's p-curve on the converted face, in wire
- * order, reversed where the edge runs against its curve. */
-bool loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
-                  const BRepBuilderAPI_NurbsConvert &conv, const TopoDS_Face &converted,
-                  int computed, Loop *loop)
+ * order, reversed where the edge runs against its curve. Returns why it
+ * failed, or nullptr. */
+const char *loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
+                         const BRepBuilderAPI_NurbsConvert &conv, const TopoDS_Face &converted,
+                         int computed, Loop *loop)
 {
     int edges_in_wire = 0, explored = 0;
+    double tolerance = Precision::Confusion();
     for (TopoDS_Iterator it(wire); it.More(); it.Next())
         edges_in_wire++;
     for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next()) {
@@ -360,17 +436,20 @@ bool loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
         Standard_Real f, l;
         Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(moved, converted, f, l);
         if (c.IsNull())
-            return false;
+            return "an edge without a parameter curve";
         Handle(Geom2d_BSplineCurve) b = clamped_pcurve(c, f, l);
         if (edge.Orientation() == TopAbs_REVERSED)
             b->Reverse();
         loop->curves.push_back(trim_curve_of(b));
         loop->computed.push_back(computed);
+        tolerance = std::max(tolerance, BRep_Tool::Tolerance(moved));
         explored++;
     }
     /* BRepTools_WireExplorer skips edges of wires it cannot chain; a loop
-     * with a gap would trim wrongly, so that is a failure, not a loop. */
-    return explored == edges_in_wire && explored > 0;
+     * missing some would trim wrongly, so that is a failure, not a loop. */
+    if (explored != edges_in_wire || explored == 0)
+        return "a wire whose edges do not chain";
+    return close_gaps(loop, BRep_Tool::Surface(converted), 2.0 * tolerance);
 }
 
 /* Adds one face to the current part. mirrored: the part's placement flips
@@ -388,7 +467,6 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
     for (TopoDS_Iterator it(forward); it.More(); it.Next())
         if (it.Value().ShapeType() == TopAbs_WIRE)
             missing += fix_missing_pcurves(TopoDS::Wire(it.Value()), forward);
-    ctx->report->pcurves_computed += (size_t)std::max(missing, file_gaps);
     int computed = missing > 0 || file_gaps > 0;
 
     BRepBuilderAPI_NurbsConvert conv(forward, Standard_True);
@@ -404,9 +482,9 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
         Loop loop;
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
-        if (!loop_of_wire(wire, forward, conv, converted, computed, &loop))
-            return sw_error_set(ctx->err, SW_ERR_FORMAT,
-                                "a wire without a closed chain of parameter curves");
+        const char *why = loop_of_wire(wire, forward, conv, converted, computed, &loop);
+        if (why)
+            return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s", why);
         loops.push_back(std::move(loop));
     }
 
@@ -418,16 +496,18 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
         inputs[i] = {views[i].data(), loops[i].computed.data(), views[i].size(),
                      loops[i].outer};
     }
-    return sw_model_add_surface(ctx->model, &surface.view, reversed, inputs.data(),
-                                inputs.size(), ctx->err);
+    sw_status status = sw_model_add_surface(ctx->model, &surface.view, reversed, inputs.data(),
+                                            inputs.size(), ctx->err);
+    if (status == SW_OK)
+        ctx->report->pcurves_computed += (size_t)std::max(missing, file_gaps);
+    return status;
 }
 
-/* The report's "OCCT face" kind. Done here rather than through
- * sw_import_report_unsupported so this file does not depend on which
- * importer's C file defines that helper. */
-void count_skipped_face(sw_import_report *report)
+/* Counts one skipped or repaired entity of a kind in the report. Done here
+ * rather than through sw_import_report_unsupported so this file does not
+ * depend on which importer's C file defines that helper. */
+void count_unsupported(sw_import_report *report, const char *kind)
 {
-    static const char kind[] = "OCCT face";
     report->unsupported++;
     for (size_t i = 0; i < report->unsupported_kinds; i++)
         if (std::strcmp(report->unsupported_kind[i], kind) == 0) {
@@ -460,7 +540,7 @@ sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mir
     if (ctx->options && ctx->options->strict)
         return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: face %zu: %s", ctx->path, index + 1,
                             why.c_str());
-    count_skipped_face(ctx->report);
+    count_unsupported(ctx->report, "OCCT face");
     if (ctx->err)
         ctx->err->status = SW_OK;
     return SW_OK;
@@ -576,38 +656,101 @@ double step_uncertainty(const Handle(StepData_StepModel) &model)
     return tolerance;
 }
 
-/* "#123: <what OCCT says>" for the first failing check of the loaded model;
- * IGES entities are named by their directory entry's D line instead. */
-std::string first_check_failure(const Handle(XSControl_WorkSession) &ws, bool step)
+/* The STEP entity (#id) that starts last at or before a line of the file
+ * (0: none; line 0: the whole file). */
+int step_entity_at_line(const char *path, long line)
+{
+    FILE *f = std::fopen(path, "rb");
+    if (!f)
+        return 0;
+    int id = 0;
+    long n = 1;
+    bool line_start = true;
+    for (int c; (line == 0 || n <= line) && (c = std::fgetc(f)) != EOF;) {
+        if (line_start && c == '#') {
+            int value = 0;
+            if (std::fscanf(f, "%d", &value) == 1)
+                id = value;
+        }
+        line_start = c == '\n';
+        n += c == '\n';
+    }
+    std::fclose(f);
+    return id;
+}
+
+/* The line number in one of OCCT's parser messages ("... Line 745: ..."). */
+long message_line(const std::string &message)
+{
+    size_t at = message.find("Line ");
+    return at == std::string::npos ? 0 : std::strtol(message.c_str() + at + 5, nullptr, 10);
+}
+
+/* Names where a check points: "#172: " (STEP) or "entity at D325: " (IGES
+ * directory entry). The parser's own messages name a line, which OCCT 7.6
+ * counts a line or two off, so those say "near #id", except at the end of
+ * the file, where the entity cut short is the last one that starts. */
+std::string check_place(const Handle(Interface_InterfaceModel) &model, int number, bool step,
+                        const char *path, const std::string &message)
+{
+    char buf[48] = "";
+    Handle(StepData_StepModel) sm = Handle(StepData_StepModel)::DownCast(model);
+    if (number > 0 && step && !sm.IsNull() && number <= sm->NbEntities()) {
+        std::snprintf(buf, sizeof buf, "#%d: ", sm->IdentLabel(sm->Value(number)));
+    } else if (number > 0 && !step) {
+        std::snprintf(buf, sizeof buf, "entity at D%d: ", 2 * number - 1);
+    } else if (step && message.find("end of file") != std::string::npos) {
+        int id = step_entity_at_line(path, 0);
+        if (id > 0)
+            std::snprintf(buf, sizeof buf, "cut short in #%d: ", id);
+    } else if (step && message_line(message) > 0) {
+        int id = step_entity_at_line(path, message_line(message));
+        if (id > 0)
+            std::snprintf(buf, sizeof buf, "near #%d: ", id);
+    }
+    return buf;
+}
+
+/* The loaded model's first failing check that makes it unreadable, as one
+ * phrase naming the entity ("" when there is none). OCCT transfers entities
+ * with failed checks as best it can, and a CARTESIAN_POINT with a bad
+ * coordinate list crashes its transfer, so any such fail is an error. Only
+ * string parameters that are not strings are tolerated, as repairs counted in
+ * the report (Rhino writes $ for names): names carry no geometry; and for
+ * IGES, global section fails (a date format): units and tolerance, the
+ * global values that matter, OCCT reads or defaults on its own. */
+std::string fatal_check_failure(const Handle(XSControl_WorkSession) &ws, bool step,
+                                const char *path, sw_import_report *report)
 {
     Interface_CheckIterator checks = ws->ModelCheckList();
     Handle(Interface_InterfaceModel) model = ws->Model();
     for (checks.Start(); checks.More(); checks.Next()) {
         const Handle(Interface_Check) &check = checks.Value();
-        if (!check->HasFailed())
-            continue;
-        std::string where;
-        int number = checks.Number();
-        if (number > 0 && !model.IsNull() && number <= model->NbEntities()) {
-            Handle(StepData_StepModel) sm = Handle(StepData_StepModel)::DownCast(model);
-            char buf[48];
-            if (step && !sm.IsNull())
-                std::snprintf(buf, sizeof buf, "#%d: ", sm->IdentLabel(sm->Value(number)));
-            else
-                std::snprintf(buf, sizeof buf, "entity at D%d: ", 2 * number - 1);
-            where = buf;
+        for (int i = 1; i <= check->NbFails(); i++) {
+            std::string fail = check->CFail(i);
+            if (step && checks.Number() > 0 &&
+                fail.find("not a quoted String") != std::string::npos) {
+                if (report)
+                    count_unsupported(report, "STEP bad string");
+                continue;
+            }
+            if (!step && fail.find("Global Section") != std::string::npos) {
+                if (report)
+                    count_unsupported(report, "IGES global section");
+                continue;
+            }
+            return check_place(model, checks.Number(), step, path, fail) + fail;
         }
-        return where + check->CFail(1);
     }
     return std::string();
 }
 
 /* ---- truncation --------------------------------------------------------- */
 
-/* OCCT's STEP parser accepts a file cut after any complete entity, and its
- * IGES reader one cut anywhere in the parameter section, so a truncated file
- * would silently import as part of the model. Both formats end with a fixed
- * trailer (STEP: END-ISO-10303-21;, IGES: the T record), checked here. */
+/* Both formats end with a fixed trailer (STEP: END-ISO-10303-21;, IGES: the
+ * T record), checked before OCCT parses anything: its IGES reader accepts a
+ * file cut in the parameter section and transfers what it got, and its STEP
+ * parser reports a cut as a syntax error at a line that may be off. */
 bool file_tail_has(const char *path, bool step)
 {
     FILE *f = std::fopen(path, "rb");
@@ -632,13 +775,29 @@ bool file_tail_has(const char *path, bool step)
     return last.size() >= 73 && last[72] == 'T';
 }
 
-/* The #id of the last entity that starts in the file, for "cut after #id". */
-int last_step_entity(const Handle(StepData_StepModel) &model)
+/* The #id of the last entity whose text ends (its ';' outside a string):
+ * where a truncated file was cut. 0 when none is complete. */
+int last_complete_step_entity(const char *path)
 {
-    int last = 0;
-    for (int i = 1; !model.IsNull() && i <= model->NbEntities(); i++)
-        last = std::max(last, model->IdentLabel(model->Value(i)));
-    return last;
+    FILE *f = std::fopen(path, "rb");
+    if (!f)
+        return 0;
+    int current = 0, complete = 0;
+    bool line_start = true, quoted = false;
+    for (int c; (c = std::fgetc(f)) != EOF;) {
+        if (line_start && c == '#' && !quoted) {
+            int value = 0;
+            if (std::fscanf(f, "%d", &value) == 1)
+                current = value;
+        } else if (c == '\'') {
+            quoted = !quoted;
+        } else if (c == ';' && !quoted) {
+            complete = current;
+        }
+        line_start = c == '\n';
+    }
+    std::fclose(f);
+    return complete;
 }
 
 }  // namespace
@@ -688,30 +847,44 @@ void collect_leaves(const TDF_Label &label, const TopLoc_Location &placement,
     leaves->push_back({shape, placement, name.empty() ? instance : name});
 }
 
-/* A read that failed or was cut short: one line naming the file and, where
- * OCCT tells us, the entity. */
+/* A read that failed: one line naming the file and, where OCCT tells us,
+ * the entity. loaded: OCCT built a model (and a check list) despite errors;
+ * otherwise only its parser's messages say what went wrong. */
 sw_status read_failure(const ImportContext *ctx, const Handle(XSControl_WorkSession) &ws,
-                       bool step, const MessageCapture &messages)
+                       bool step, bool loaded, const MessageCapture &messages)
 {
-    std::string why = first_check_failure(ws, step);
-    if (why.empty())
+    std::string why = loaded ? fatal_check_failure(ws, step, ctx->path, nullptr) : "";
+    if (why.empty()) {
         why = messages.first();
+        if (!why.empty())
+            why = check_place(ws->Model(), 0, step, ctx->path, why) + why;
+    }
     if (why.empty())
         why = step ? "not a STEP file OCCT can read" : "not an IGES file OCCT can read";
     return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %s", ctx->path, why.c_str());
 }
 
-sw_status truncated(const ImportContext *ctx, const Handle(Interface_InterfaceModel) &model,
-                    bool step)
+sw_status truncated(const ImportContext *ctx, bool step)
 {
-    if (step) {
-        int last = last_step_entity(Handle(StepData_StepModel)::DownCast(model));
+    if (step)
         return sw_error_set(ctx->err, SW_ERR_FORMAT,
-                            "%s: truncated: ends after #%d without END-ISO-10303-21;",
-                            ctx->path, last);
-    }
+                            "%s: truncated: ends after #%d without END-ISO-10303-21;", ctx->path,
+                            last_complete_step_entity(ctx->path));
     return sw_error_set(ctx->err, SW_ERR_FORMAT,
                         "%s: truncated: no terminate (T) section at the end", ctx->path);
+}
+
+/* After a successful parse: fails that make the model unreadable, then
+ * (strict) the repairs fatal_check_failure tolerated. */
+sw_status check_loaded(ImportContext *ctx, const Handle(XSControl_WorkSession) &ws, bool step,
+                       const MessageCapture &messages)
+{
+    if (!fatal_check_failure(ws, step, ctx->path, ctx->report).empty())
+        return read_failure(ctx, ws, step, true, messages);
+    if (ctx->options && ctx->options->strict && ctx->report->unsupported > 0)
+        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %zu entities repaired on reading (strict)",
+                            ctx->path, ctx->report->unsupported);
+    return SW_OK;
 }
 
 sw_status read_step(ImportContext *ctx, const MessageCapture &messages, std::vector<Leaf> *leaves)
@@ -722,11 +895,10 @@ sw_status read_step(ImportContext *ctx, const MessageCapture &messages, std::vec
     STEPControl_Reader &basic = reader.ChangeReader();
     report_progress(ctx->options, "read", 0.0);
     if (reader.ReadFile(ctx->path) != IFSelect_RetDone)
-        return read_failure(ctx, basic.WS(), true, messages);
-    if (!file_tail_has(ctx->path, true))
-        return truncated(ctx, basic.Model(), true);
-    if (ctx->options && ctx->options->strict && !first_check_failure(basic.WS(), true).empty())
-        return read_failure(ctx, basic.WS(), true, messages);
+        return read_failure(ctx, basic.WS(), true, false, messages);
+    sw_status status = check_loaded(ctx, basic.WS(), true, messages);
+    if (status != SW_OK)
+        return status;
 
     ctx->report->units_to_mm = step_units_to_mm(basic);
     ctx->report->model_tolerance_mm = step_uncertainty(basic.StepModel()) * ctx->report->units_to_mm;
@@ -761,12 +933,14 @@ sw_status read_iges(ImportContext *ctx, const MessageCapture &messages, std::vec
     Interface_Static::SetCVal("xstep.cascade.unit", "MM");
     report_progress(ctx->options, "read", 0.0);
     if (reader.ReadFile(ctx->path) != IFSelect_RetDone)
-        return read_failure(ctx, reader.WS(), false, messages);
-    if (!file_tail_has(ctx->path, false))
-        return truncated(ctx, reader.Model(), false);
+        return read_failure(ctx, reader.WS(), false, false, messages);
+    sw_status status = check_loaded(ctx, reader.WS(), false, messages);
+    if (status != SW_OK)
+        return status;
     const IGESData_GlobalSection &global = reader.IGESModel()->GlobalSection();
-    /* UnitValue is the file unit in metres (IGES 5.3 table 3). */
-    ctx->report->units_to_mm = global.UnitValue() * 1000.0;
+    /* OCCT gives the file unit (flag, name and scale combined) in
+     * millimetres, the unit it converts to. */
+    ctx->report->units_to_mm = global.UnitValue();
     ctx->report->model_tolerance_mm = global.Resolution() * ctx->report->units_to_mm;
     report_progress(ctx->options, "transfer", 0.0);
     reader.TransferRoots();
@@ -788,6 +962,8 @@ sw_status import_file(ImportContext *ctx)
     if (!f)
         return sw_error_set(ctx->err, SW_ERR_IO, "%s: %s", ctx->path, std::strerror(errno));
     std::fclose(f);
+    if (!file_tail_has(ctx->path, step))
+        return truncated(ctx, step);
 
     MessageCapture messages;
     std::vector<Leaf> leaves;
@@ -860,28 +1036,35 @@ extern "C" sw_status sw_import_occt_file(const char *path, const sw_import_optio
 
 namespace {
 
+/* OCCT's plain reader of either kind, all roots as one shape. STEP files
+ * with failed checks are refused (their transfer can crash); IGES ones are
+ * transferred as OCCT would, which is what a cross-check wants to see. */
+template <typename Reader>
+sw_status read_one_shape(const char *path, bool step, TopoDS_Shape *shape, sw_error *err)
+{
+    Reader reader;
+    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    if (reader.ReadFile(path) != IFSelect_RetDone)
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: OCCT cannot read it", path);
+    std::string fail = step ? fatal_check_failure(reader.WS(), true, path, nullptr) : "";
+    if (!fail.empty())
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: %s", path, fail.c_str());
+    reader.TransferRoots();
+    *shape = reader.OneShape();
+    return SW_OK;
+}
+
 sw_status measure_file(const char *path, sw_occt_measure *out, sw_error *err)
 {
     std::string ext = lower_extension(path);
     bool step = ext == "stp" || ext == "step" || ext == "p21";
     MessageCapture messages;
     TopoDS_Shape shape;
-    if (step) {
-        STEPControl_Reader reader;
-        Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-        if (reader.ReadFile(path) != IFSelect_RetDone)
-            return sw_error_set(err, SW_ERR_FORMAT, "%s: OCCT cannot read it", path);
-        reader.TransferRoots();
-        shape = reader.OneShape();
-    } else {
-        IGESControl_Reader reader;
-        Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-        if (reader.ReadFile(path) != IFSelect_RetDone)
-            return sw_error_set(err, SW_ERR_FORMAT, "%s: OCCT cannot read it", path);
-        reader.TransferRoots();
-        shape = reader.OneShape();
-    }
     *out = sw_occt_measure{};
+    sw_status status = step ? read_one_shape<STEPControl_Reader>(path, true, &shape, err)
+                            : read_one_shape<IGESControl_Reader>(path, false, &shape, err);
+    if (status != SW_OK)
+        return status;
     if (shape.IsNull())
         return SW_OK;   /* an empty shape: no faces, the caller decides */
     TopTools_IndexedMapOfShape faces;
