@@ -21,6 +21,8 @@ if(SW_WITH_OCCT)
   else()
     message(STATUS "seamwalk: OpenCASCADE not found: STEP import off (install libocct-data-exchange-dev)")
   endif()
+else()
+  message(STATUS "seamwalk: SW_WITH_OCCT=OFF: STEP import off")
 endif()
 
 if(SW_OCCT_FOUND)
