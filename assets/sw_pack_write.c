@@ -240,12 +240,22 @@ static void add_box(sw_pack_meta *m, const sw_pack_patch *p, int first)
     }
 }
 
+/* Reports progress of a stage, if anyone listens. */
+static void report(const sw_pack_progress *progress, const char *stage, double fraction)
+{
+    if (progress && progress->fn)
+        progress->fn(progress->user, stage, fraction);
+}
+
 static sw_status fill_contents(const sw_model *model, sw_pack_part *parts, sw_pack_patch *patches,
-                               float *control, sw_pack_meta *m, sw_error *err)
+                               float *control, sw_pack_meta *m,
+                               const sw_pack_progress *progress, sw_error *err)
 {
     sw_status s = convert_parts(model, parts, err);
     uint32_t next = 0;
     for (size_t i = 0; s == SW_OK && i < model->patch_count; i++) {
+        if (i % 4096 == 0) /* a few hundred microseconds of work between reports */
+            report(progress, "patches", (double)i / (double)model->patch_count);
         s = convert_patch(model, i, next, &patches[i], control + (size_t)next * 4, err);
         next += (uint32_t)(model->patches[i].degree_u + 1) * (uint32_t)(model->patches[i].degree_v + 1);
         if (s == SW_OK)
@@ -255,6 +265,13 @@ static sw_status fill_contents(const sw_model *model, sw_pack_part *parts, sw_pa
 }
 
 sw_status sw_pack_contents_from_model(const sw_model *model, sw_pack_contents *out, sw_error *err)
+{
+    return sw_pack_contents_from_model_progress(model, NULL, out, err);
+}
+
+sw_status sw_pack_contents_from_model_progress(const sw_model *model,
+                                               const sw_pack_progress *progress,
+                                               sw_pack_contents *out, sw_error *err)
 {
     memset(out, 0, sizeof *out);
     uint64_t control_count = 0;
@@ -279,13 +296,19 @@ sw_status sw_pack_contents_from_model(const sw_model *model, sw_pack_contents *o
         s = sw_error_set(err, SW_ERR_NO_MEMORY, "model: cannot allocate pack arrays for %zu "
                          "patches", model->patch_count);
     if (s == SW_OK)
-        s = fill_contents(model, parts, patches, control, m, err);
+        s = fill_contents(model, parts, patches, control, m, progress, err);
     sw_pack_adjacency *adjacency = NULL;
-    if (s == SW_OK)
+    if (s == SW_OK) {
+        report(progress, "adjacency", 0.0);
         s = sw_pack_find_adjacency(model, &adjacency, &m->adjacency_count, err);
+    }
     out->adjacency = adjacency;
-    if (s == SW_OK)
+    if (s == SW_OK) {
+        report(progress, "trims", 0.0);
         s = sw_pack_sections_from_model(model, out, err);
+    }
+    if (s == SW_OK)
+        report(progress, "trims", 1.0);
     if (s != SW_OK)
         sw_pack_contents_free(out);
     return s;

@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "sw_import.h"
 #include "sw_model.h"
 #include "sw_pack.h"
 
@@ -52,6 +53,18 @@ sw_status sw_pack_serialize(const sw_pack_contents *contents, uint8_t **out, siz
  * malloc'd; release with sw_pack_contents_free. */
 sw_status sw_pack_contents_from_model(const sw_model *model, sw_pack_contents *out,
                                       sw_error *err);
+
+/* Where sw_pack_contents_from_model_progress reports its stages ("patches",
+ * "adjacency", "trims") and the fraction of each done. */
+typedef struct sw_pack_progress {
+    sw_progress_fn fn;          /* may be NULL */
+    void *user;
+} sw_pack_progress;
+
+/* The same, reporting progress (progress may be NULL). */
+sw_status sw_pack_contents_from_model_progress(const sw_model *model,
+                                               const sw_pack_progress *progress,
+                                               sw_pack_contents *out, sw_error *err);
 void sw_pack_contents_free(sw_pack_contents *contents);
 
 /* Writes bytes to path through path.tmp-XXXXXX and rename, so an existing good

@@ -1,0 +1,324 @@
+/* seamwalk-pack info (sw_pack_info.h): stats per part and for the pack, as
+ * aligned text and as JSON. Keys are added, never renamed: scripts read them. */
+#include "sw_pack_info.h"
+
+#include <inttypes.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *sw_pack_units_name(uint32_t units)
+{
+    return units == SW_UNITS_MILLIMETRE ? "mm" : units == SW_UNITS_METRE ? "m" : "unspecified";
+}
+
+static void stats_init(sw_pack_part_stats *s)
+{
+    memset(s, 0, sizeof *s);
+    s->degree_min[0] = s->degree_min[1] = s->trim_degree_min = INT32_MAX;
+}
+
+static void stats_finish(sw_pack_part_stats *s)
+{
+    for (int k = 0; k < 2; k++)
+        if (s->patches == 0)
+            s->degree_min[k] = s->degree_max[k] = 0;
+    if (s->curves == 0)
+        s->trim_degree_min = s->trim_degree_max = 0;
+}
+
+static void add_patch(sw_pack_part_stats *s, const sw_pack_patch *p)
+{
+    int d[2] = { p->degree_u, p->degree_v };
+    for (int k = 0; k < 2; k++) {
+        s->degree_min[k] = d[k] < s->degree_min[k] ? d[k] : s->degree_min[k];
+        s->degree_max[k] = d[k] > s->degree_max[k] ? d[k] : s->degree_max[k];
+    }
+    for (int k = 0; k < 3; k++) {
+        int first = s->patches == 0;
+        s->box_min[k] = first || p->box_min[k] < s->box_min[k] ? p->box_min[k] : s->box_min[k];
+        s->box_max[k] = first || p->box_max[k] > s->box_max[k] ? p->box_max[k] : s->box_max[k];
+    }
+    s->patches++;
+    s->rational_patches += (p->flags & SW_PATCH_RATIONAL) != 0;
+}
+
+static void add_curve(sw_pack_part_stats *s, const sw_pack_trim_curve *c)
+{
+    s->curves++;
+    s->rational_curves += (c->flags & SW_TRIM_RATIONAL) != 0;
+    s->computed_curves += (c->flags & SW_TRIM_COMPUTED) != 0;
+    s->trim_degree_min = c->degree < s->trim_degree_min ? c->degree : s->trim_degree_min;
+    s->trim_degree_max = c->degree > s->trim_degree_max ? c->degree : s->trim_degree_max;
+}
+
+/* A surface's counts into both its part's stats and the total. */
+static void add_surface(const sw_pack *pack, const sw_pack_surface *sf, sw_pack_part_stats *ps,
+                        sw_pack_part_stats *total)
+{
+    int rational = 0;
+    for (uint32_t p = 0; p < sf->patch_count; p++)
+        rational |= (pack->patches[sf->first_patch + p].flags & SW_PATCH_RATIONAL) != 0;
+    sw_pack_part_stats *both[2] = { ps, total };
+    for (int b = 0; b < 2; b++) {
+        both[b]->surfaces++;
+        both[b]->trimmed_surfaces += sf->loop_count > 0;
+        both[b]->rational_surfaces += (uint32_t)rational;
+        both[b]->loops += sf->loop_count;
+    }
+    for (uint32_t l = 0; l < sf->loop_count; l++) {
+        const sw_pack_trim_loop *loop = &pack->trim_loops[sf->first_loop + l];
+        for (uint32_t c = 0; c < loop->curve_count; c++) {
+            add_curve(ps, &pack->trim_curves[loop->first_curve + c]);
+            add_curve(total, &pack->trim_curves[loop->first_curve + c]);
+        }
+    }
+}
+
+void sw_pack_gather_stats(const sw_pack *pack, sw_pack_part_stats *parts,
+                          sw_pack_part_stats *total)
+{
+    uint32_t n = pack->meta->part_count;
+    for (uint32_t i = 0; i < n; i++)
+        stats_init(&parts[i]);
+    stats_init(total);
+    for (uint32_t i = 0; i < pack->meta->patch_count; i++) {
+        add_patch(&parts[pack->patches[i].part], &pack->patches[i]);
+        add_patch(total, &pack->patches[i]);
+    }
+    for (uint32_t i = 0; i < pack->surface_count; i++)
+        add_surface(pack, &pack->surfaces[i], &parts[pack->surfaces[i].part], total);
+    /* Without SURFACES every patch is an untrimmed surface of its own. */
+    for (uint32_t i = 0; !pack->surfaces && i <= n; i++) {
+        sw_pack_part_stats *s = i < n ? &parts[i] : total;
+        s->surfaces = s->patches;
+        s->rational_surfaces = s->rational_patches;
+    }
+    for (uint32_t i = 0; i < n; i++)
+        stats_finish(&parts[i]);
+    stats_finish(total);
+}
+
+/* ---- text ---------------------------------------------------------------- */
+
+static void print_degrees(FILE *out, const sw_pack_part_stats *s)
+{
+    fprintf(out, "u %d..%d, v %d..%d", s->degree_min[0], s->degree_max[0], s->degree_min[1],
+            s->degree_max[1]);
+    if (s->curves)
+        fprintf(out, "; trims %d..%d", s->trim_degree_min, s->trim_degree_max);
+    fputc('\n', out);
+}
+
+static void print_part_text(FILE *out, const sw_pack *pack, uint32_t i, const sw_pack_part_stats *s)
+{
+    const char *units = sw_pack_units_name(pack->meta->units);
+    fprintf(out, "  part %" PRIu32 ": %s\n", i, pack->parts[i].name);
+    fprintf(out, "    %-16s %" PRIu32 " (%" PRIu32 " trimmed, %" PRIu32 " rational)\n",
+            "surfaces", s->surfaces, s->trimmed_surfaces, s->rational_surfaces);
+    fprintf(out, "    %-16s %" PRIu32 " (%" PRIu32 " rational)\n", "bezier patches", s->patches,
+            s->rational_patches);
+    fprintf(out, "    %-16s %" PRIu32 "\n", "trim loops", s->loops);
+    fprintf(out, "    %-16s %" PRIu32 " (%" PRIu32 " rational, %" PRIu32 " computed)\n",
+            "trim curves", s->curves, s->rational_curves, s->computed_curves);
+    fprintf(out, "    %-16s ", "degrees");
+    print_degrees(out, s);
+    fprintf(out, "    %-16s min %g %g %g, max %g %g %g %s\n", "box", s->box_min[0],
+            s->box_min[1], s->box_min[2], s->box_max[0], s->box_max[1], s->box_max[2], units);
+}
+
+static void print_sections_text(FILE *out, const sw_pack *pack)
+{
+    fprintf(out, "  %-16s %" PRIu32 "\n", "sections", pack->header->section_count);
+    for (uint32_t i = 0; i < pack->header->section_count; i++) {
+        const sw_pack_section *sec = &pack->sections[i];
+        fprintf(out, "    %-15s offset %10" PRIu64 "  size %10" PRIu64 "\n",
+                sw_section_type_name(sec->type), sec->offset, sec->size);
+    }
+}
+
+static void print_text(FILE *out, const char *path, const sw_pack *pack,
+                       const sw_pack_part_stats *parts, const sw_pack_part_stats *t)
+{
+    const sw_pack_meta *m = pack->meta;
+    fprintf(out, "%s: seamwalk pack version %" PRIu32 ", %" PRIu64 " bytes\n", path,
+            pack->header->version, pack->header->total_size);
+    fprintf(out, "  %-16s %" PRIu32 "\n", "parts", m->part_count);
+    for (uint32_t i = 0; i < m->part_count; i++) {
+        const sw_pack_part *p = &pack->parts[i];
+        fprintf(out, "    %-20s %6" PRIu32 " patches  colour %.3f %.3f %.3f %.3f\n", p->name,
+                p->patch_count, p->color[0], p->color[1], p->color[2], p->color[3]);
+    }
+    fprintf(out, "  %-16s %" PRIu32 " (%" PRIu32 " trimmed)\n", "surfaces", t->surfaces,
+            t->trimmed_surfaces);
+    fprintf(out, "  %-16s %" PRIu32 "\n", "bezier patches", m->patch_count);
+    fprintf(out, "  %-16s %" PRIu32 "\n", "control points", m->control_count);
+    fprintf(out, "  %-16s %" PRIu32 "\n", "rational", t->rational_patches);
+    fprintf(out, "  %-16s ", "degrees");
+    print_degrees(out, t);
+    fprintf(out, "  %-16s %" PRIu32 " loops, %" PRIu32 " curves (%" PRIu32 " computed), %" PRIu32
+            " masks\n", "trimming", t->loops, t->curves, t->computed_curves, pack->trim_mask_count);
+    fprintf(out, "  %-16s %" PRIu32 "\n", "adjacency", m->adjacency_count);
+    fprintf(out, "  %-16s %" PRIu32, "viewpoints", pack->viewpoint_count);
+    for (uint32_t i = 0; i < pack->viewpoint_count; i++)
+        fprintf(out, "%s%s", i ? ", " : ": ", pack->viewpoints[i].name);
+    fputc('\n', out);
+    print_sections_text(out, pack);
+    const float *lo = m->box_min, *hi = m->box_max;
+    double dx = (double)hi[0] - lo[0], dy = (double)hi[1] - lo[1], dz = (double)hi[2] - lo[2];
+    fprintf(out, "  %-16s %s (model tolerance %g)\n", "units", sw_pack_units_name(m->units),
+            m->model_tolerance);
+    fprintf(out, "  %-16s min %g %g %g, max %g %g %g\n", "box", lo[0], lo[1], lo[2], hi[0], hi[1],
+            hi[2]);
+    fprintf(out, "  %-16s %g (box diagonal)\n", "model size", sqrt(dx * dx + dy * dy + dz * dz));
+    fprintf(out, "  %-16s %" PRIu64 " bytes\n", "runtime memory", pack->header->runtime_bytes);
+    for (uint32_t i = 0; i < m->part_count; i++)
+        print_part_text(out, pack, i, &parts[i]);
+}
+
+/* ---- JSON ------------------------------------------------------------------ */
+
+/* Writes s as a JSON string; names are UTF-8 but may hold anything. */
+static void json_string(FILE *out, const char *s, size_t max)
+{
+    fputc('"', out);
+    for (size_t i = 0; i < max && s[i]; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if (c == '"' || c == '\\')
+            fprintf(out, "\\%c", c);
+        else if (c < 0x20 || c == 0x7f)
+            fprintf(out, "\\u%04x", c);
+        else
+            fputc(c, out);
+    }
+    fputc('"', out);
+}
+
+static void json_floats(FILE *out, const float *v, int n)
+{
+    fputc('[', out);
+    for (int k = 0; k < n; k++)
+        fprintf(out, "%s%.9g", k ? ", " : "", v[k]);
+    fputc(']', out);
+}
+
+/* The counts a part and the whole pack share, as "key": value pairs. */
+static void json_counts(FILE *out, const sw_pack_part_stats *s, const char *indent)
+{
+    fprintf(out, "%s\"trimmed_surfaces\": %" PRIu32 ", \"rational_surfaces\": %" PRIu32 ",\n",
+            indent, s->trimmed_surfaces, s->rational_surfaces);
+    fprintf(out, "%s\"trim_loops\": %" PRIu32 ", \"trim_curves\": %" PRIu32
+            ", \"rational_trim_curves\": %" PRIu32 ", \"pcurves_computed\": %" PRIu32 ",\n",
+            indent, s->loops, s->curves, s->rational_curves, s->computed_curves);
+    fprintf(out, "%s\"trim_degree\": [%d, %d]", indent, s->trim_degree_min, s->trim_degree_max);
+}
+
+static void json_part(FILE *out, const sw_pack *pack, uint32_t i, const sw_pack_part_stats *s)
+{
+    const sw_pack_part *p = &pack->parts[i];
+    fprintf(out, "%s\n    {\"name\": ", i ? "," : "");
+    json_string(out, p->name, sizeof p->name);
+    fprintf(out, ", \"first_patch\": %" PRIu32 ", \"patches\": %" PRIu32 ", \"color\": ",
+            p->first_patch, p->patch_count);
+    json_floats(out, p->color, 4);
+    fprintf(out, ",\n     \"surfaces\": %" PRIu32 ", \"bezier_patches\": %" PRIu32
+            ", \"rational_patches\": %" PRIu32 ",\n", s->surfaces, s->patches,
+            s->rational_patches);
+    fprintf(out, "     \"degree_u\": [%d, %d], \"degree_v\": [%d, %d],\n", s->degree_min[0],
+            s->degree_max[0], s->degree_min[1], s->degree_max[1]);
+    json_counts(out, s, "     ");
+    fprintf(out, ",\n     \"box\": {\"min\": ");
+    json_floats(out, s->box_min, 3);
+    fprintf(out, ", \"max\": ");
+    json_floats(out, s->box_max, 3);
+    if (pack->part_transforms) {
+        fprintf(out, "},\n     \"transform\": ");
+        json_floats(out, &pack->part_transforms[(size_t)i * 16], 16);
+        fputc('}', out);
+    } else {
+        fprintf(out, "}}");
+    }
+}
+
+static void json_sections(FILE *out, const sw_pack *pack)
+{
+    fprintf(out, "  \"sections\": [");
+    for (uint32_t i = 0; i < pack->header->section_count; i++) {
+        const sw_pack_section *sec = &pack->sections[i];
+        fprintf(out, "%s\n    {\"type\": %" PRIu32 ", \"name\": \"%s\", \"offset\": %" PRIu64
+                ", \"size\": %" PRIu64 "}", i ? "," : "", sec->type,
+                sw_section_type_name(sec->type), sec->offset, sec->size);
+    }
+    fprintf(out, "\n  ],\n");
+}
+
+static void json_viewpoints(FILE *out, const sw_pack *pack)
+{
+    fprintf(out, "  \"viewpoints\": [");
+    for (uint32_t i = 0; i < pack->viewpoint_count; i++) {
+        const sw_pack_viewpoint *v = &pack->viewpoints[i];
+        fprintf(out, "%s\n    {\"name\": ", i ? "," : "");
+        json_string(out, v->name, sizeof v->name);
+        fprintf(out, ", \"eye\": ");
+        json_floats(out, v->eye, 3);
+        fprintf(out, ", \"target\": ");
+        json_floats(out, v->target, 3);
+        fprintf(out, ", \"up\": ");
+        json_floats(out, v->up, 3);
+        fprintf(out, ", \"fov_deg\": %.9g}", v->fov_deg);
+    }
+    fprintf(out, "%s],\n", pack->viewpoint_count ? "\n  " : "");
+}
+
+static void print_json(FILE *out, const char *path, const sw_pack *pack,
+                       const sw_pack_part_stats *parts, const sw_pack_part_stats *t)
+{
+    const sw_pack_meta *m = pack->meta;
+    fprintf(out, "{\n  \"file\": ");
+    json_string(out, path, SIZE_MAX);
+    fprintf(out, ",\n  \"version\": %" PRIu32 ",\n  \"total_bytes\": %" PRIu64 ",\n",
+            pack->header->version, pack->header->total_size);
+    fprintf(out, "  \"part_count\": %" PRIu32 ",\n  \"parts\": [", m->part_count);
+    for (uint32_t i = 0; i < m->part_count; i++)
+        json_part(out, pack, i, &parts[i]);
+    fprintf(out, "%s],\n", m->part_count ? "\n  " : "");
+    fprintf(out, "  \"surfaces\": %" PRIu32 ",\n", t->surfaces);
+    fprintf(out, "  \"surfaces_note\": \"one per Bezier patch for Bezier inputs\",\n");
+    fprintf(out, "  \"bezier_patches\": %" PRIu32 ",\n", m->patch_count);
+    fprintf(out, "  \"control_points\": %" PRIu32 ",\n", m->control_count);
+    fprintf(out, "  \"rational_patches\": %" PRIu32 ",\n", t->rational_patches);
+    fprintf(out, "  \"degree_u\": [%d, %d],\n  \"degree_v\": [%d, %d],\n", t->degree_min[0],
+            t->degree_max[0], t->degree_min[1], t->degree_max[1]);
+    json_counts(out, t, "  ");
+    fprintf(out, ",\n  \"trim_masks\": %" PRIu32 ",\n", pack->trim_mask_count);
+    fprintf(out, "  \"adjacency\": %" PRIu32 ",\n", m->adjacency_count);
+    json_viewpoints(out, pack);
+    json_sections(out, pack);
+    fprintf(out, "  \"units\": \"%s\",\n  \"model_tolerance\": %.9g,\n",
+            sw_pack_units_name(m->units), m->model_tolerance);
+    fprintf(out, "  \"box\": {\"min\": ");
+    json_floats(out, m->box_min, 3);
+    fprintf(out, ", \"max\": ");
+    json_floats(out, m->box_max, 3);
+    double dx = (double)m->box_max[0] - m->box_min[0], dy = (double)m->box_max[1] - m->box_min[1],
+           dz = (double)m->box_max[2] - m->box_min[2];
+    fprintf(out, "},\n  \"model_size\": %.9g,\n", sqrt(dx * dx + dy * dy + dz * dz));
+    fprintf(out, "  \"runtime_bytes\": %" PRIu64 "\n}\n", pack->header->runtime_bytes);
+}
+
+sw_status sw_pack_print_info(FILE *out, const char *path, const sw_pack *pack, int json,
+                             sw_error *err)
+{
+    sw_pack_part_stats total;
+    sw_pack_part_stats *parts = calloc((size_t)pack->meta->part_count + 1, sizeof *parts);
+    if (!parts)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: cannot allocate stats for %u parts",
+                            path, (unsigned)pack->meta->part_count);
+    sw_pack_gather_stats(pack, parts, &total);
+    if (json)
+        print_json(out, path, pack, parts, &total);
+    else
+        print_text(out, path, pack, parts, &total);
+    free(parts);
+    return SW_OK;
+}

@@ -1,0 +1,42 @@
+/* What `seamwalk-pack info` reports about a validated pack: counts for the
+ * whole pack and per part (surfaces, Bezier patches, trimming loops and
+ * curves, degrees, rational counts, parameter curves computed by point
+ * inversion, bounding box), printed as aligned text or as JSON with stable
+ * snake_case keys. Split from seamwalk_pack_main.c so the numbers can be
+ * tested without parsing output. Host only. */
+#ifndef SW_PACK_INFO_H
+#define SW_PACK_INFO_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "sw_pack.h"
+
+typedef struct sw_pack_part_stats {
+    uint32_t surfaces;            /* SURFACES of the part; without that section one per patch */
+    uint32_t trimmed_surfaces;    /* of them, with at least one loop */
+    uint32_t patches;             /* Bezier patches after knot insertion */
+    uint32_t rational_patches;
+    uint32_t rational_surfaces;   /* surfaces with a rational patch */
+    uint32_t loops, curves;       /* trimming loops and curves of its surfaces */
+    uint32_t rational_curves;
+    uint32_t computed_curves;     /* SW_TRIM_COMPUTED: made by point inversion */
+    int degree_min[2], degree_max[2]; /* patches, u and v; 0 when there are none */
+    int trim_degree_min, trim_degree_max; /* 0 when there are no curves */
+    float box_min[3], box_max[3]; /* of its patches; zero when it has none */
+} sw_pack_part_stats;
+
+/* One pass over the pack: parts[i] for each of META.part_count parts (the
+ * caller's array), *total for the whole pack. */
+void sw_pack_gather_stats(const sw_pack *pack, sw_pack_part_stats *parts,
+                          sw_pack_part_stats *total);
+
+/* "mm", "m" or "unspecified" for META.units. */
+const char *sw_pack_units_name(uint32_t units);
+
+/* The info report of the pack read from path, to out. SW_ERR_NO_MEMORY when
+ * the per-part table cannot be allocated (nothing printed then). */
+sw_status sw_pack_print_info(FILE *out, const char *path, const sw_pack *pack, int json,
+                             sw_error *err);
+
+#endif
