@@ -429,6 +429,29 @@ static void test_writer_refuses_what_floats_cannot_hold(void)
 /* Named without .swpack, which .gitignore keeps out of the repository for
  * generated packs; these few are committed on purpose. */
 
+/* Serialises the model into dir/name; 0 on success. */
+static int write_model_seed(const sw_model *model, const char *dir, const char *name)
+{
+    sw_pack_contents c;
+    sw_error err = { 0 };
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    if (sw_pack_contents_from_model(model, &c, &err) != SW_OK ||
+        sw_pack_serialize(&c, &bytes, &size, &err) != SW_OK) {
+        fprintf(stderr, "%s: %s\n", name, err.message);
+        return 1;
+    }
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    write_plain(path, bytes, size);
+    free(bytes);
+    sw_pack_contents_free(&c);
+    return 0;
+}
+
+/* The hand-made sample with every optional section, without them, with an
+ * unknown section; packs the writer makes of Bezier patches and of a trimmed
+ * surface with a viewpoint. */
 static int write_corpus(const char *dir)
 {
     sample s;
@@ -443,23 +466,29 @@ static int write_corpus(const char *dir)
     write_plain(path, grown, grown_size);
     free(grown);
     free(bytes);
+    s.bezier_only = 1;
+    bytes = serialize_sample(&s, &size);
+    snprintf(path, sizeof path, "%s/seed-bezier-only", dir);
+    write_plain(path, bytes, size);
+    free(bytes);
     sw_model model;
     start_model(&model);
     add_bicubic(&model, 0, 0, 0, 0);
     add_bicubic(&model, 1, 0, 0, 1);
-    sw_pack_contents c;
-    sw_error err = { 0 };
-    if (sw_pack_contents_from_model(&model, &c, &err) != SW_OK ||
-        sw_pack_serialize(&c, &bytes, &size, &err) != SW_OK) {
-        fprintf(stderr, "%s\n", err.message);
-        return 1;
-    }
-    snprintf(path, sizeof path, "%s/seed-two-patches", dir);
-    write_plain(path, bytes, size);
-    free(bytes);
-    sw_pack_contents_free(&c);
+    int failed = write_model_seed(&model, dir, "seed-two-patches");
     sw_model_free(&model);
-    return sw_test_failures ? 1 : 0;
+    start_model(&model);
+    sw_error err = { 0 };
+    sw_model_viewpoint view = { .name = "above", .eye = { 1, 5, 0.5 }, .target = { 1, 0, 0.5 },
+                                .up = { 0, 0, 1 }, .fov_deg = 40 };
+    if (add_trimmed_plate(&model, &err) != SW_OK ||
+        sw_model_add_viewpoint(&model, &view, &err) != SW_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        failed = 1;
+    }
+    failed |= write_model_seed(&model, dir, "seed-trimmed-plate");
+    sw_model_free(&model);
+    return failed || sw_test_failures ? 1 : 0;
 }
 
 int main(int argc, char **argv)
