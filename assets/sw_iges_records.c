@@ -161,10 +161,14 @@ static sw_status d_field(iges_reader *r, int entity, int k, int *out)
         v = v * 10 + (*s++ - '0'), digits++;
     while (*s == ' ')
         s++;
-    if (*s != '\0' || (!digits && sign < 0))
+    if (*s != '\0' || (!digits && sign < 0)) {
+        const char *shown = text;
+        while (*shown == ' ')
+            shown++;
         return sw_error_set(r->err, SW_ERR_FORMAT,
                             "%s: D line %d: expected %s in columns %d-%d, found '%s'", r->file,
-                            line + 1, field_names[k], col + 1, col + 8, text);
+                            line + 1, field_names[k], col + 1, col + 8, shown);
+    }
     *out = (int)(sign * v);
     return SW_OK;
 }
