@@ -1,28 +1,42 @@
 /* seamwalk-pack: the host tool that turns model files into packs and looks
- * inside packs. Commands: build, info, verify (usage below). Exit status: 0
- * success, 1 failure (one line on stderr naming the file), 2 usage error.
+ * inside packs. Commands: build, info, verify, gen (usage below). Exit status:
+ * 0 success, 1 failure (one line on stderr naming the file), 2 usage error.
  * A failed build never leaves a partial or damaged output file: the pack is
- * written through sw_write_file_atomic only after everything succeeded. */
+ * written through sw_write_file_atomic only after everything succeeded.
+ * Warnings (entities an importer skipped) are printed after a successful
+ * build; --strict makes them failures. */
 #include <inttypes.h>
-#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <time.h>
 
+#include "sw_gen_showroom.h"
+#include "sw_import.h"
+#include "sw_import_iges.h"
+#include "sw_import_occt.h"
 #include "sw_model.h"
 #include "sw_pack.h"
+#include "sw_pack_info.h"
 #include "sw_pack_write.h"
+#include "sw_progress.h"
 #include "sw_scene.h"
 #include "sw_text_scan.h"
 
 static const char usage_text[] =
-    "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet]\n"
+    "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
+    "                           [--iges-reader native|occt]\n"
     "       seamwalk-pack info [--json] PACK\n"
     "       seamwalk-pack verify PACK\n"
+    "       seamwalk-pack gen showroom --patches N -o SCENE.ini [--part FILE]... [--seed S]\n"
     "       seamwalk-pack --help\n"
-    "INPUT: a Newell listing (.txt), Bezier patch text (.bpt) or a scene (.ini).\n"
-    "Each .txt/.bpt input becomes one part named after the file; a scene adds its parts.\n";
+    "INPUT: a Newell listing (.txt), Bezier patch text (.bpt), IGES (.igs, .iges),\n"
+    "STEP (.stp, .step) or a scene (.ini). Each file becomes one part named after\n"
+    "it; a scene adds its parts. IGES is read by the native reader unless\n"
+    "--iges-reader occt; STEP always through OpenCASCADE. --strict: entities an\n"
+    "importer would skip are errors. --quiet: no progress bar, no summary.\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -39,13 +53,39 @@ static int fail(const sw_error *err)
     return 1;
 }
 
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 /* ---- build -------------------------------------------------------------- */
+
+enum input_kind { INPUT_SCENE, INPUT_IGES, INPUT_STEP, INPUT_OTHER };
+
+static const char *base_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+static enum input_kind kind_of(const char *path)
+{
+    const char *dot = strrchr(base_name(path), '.');
+    if (sw_scene_is_scene_path(path))
+        return INPUT_SCENE;
+    if (dot && (strcasecmp(dot, ".igs") == 0 || strcasecmp(dot, ".iges") == 0))
+        return INPUT_IGES;
+    if (dot && (strcasecmp(dot, ".stp") == 0 || strcasecmp(dot, ".step") == 0))
+        return INPUT_STEP;
+    return INPUT_OTHER;
+}
 
 /* The part name for a model file: its base name without the extension. */
 static void part_name_for(const char *path, char name[56])
 {
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
+    const char *base = base_name(path);
     const char *dot = strrchr(base, '.');
     size_t len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
     if (len > 55)
@@ -54,78 +94,245 @@ static void part_name_for(const char *path, char name[56])
     name[len] = '\0';
 }
 
-static sw_status add_input(sw_model *model, const char *path, sw_error *err)
+typedef struct build_options {
+    const char *out_path;
+    const char **inputs;
+    int input_count;
+    int quiet, strict, iges_occt;
+} build_options;
+
+/* What the progress callbacks need to label a stage and count its rate:
+ * faces are the surfaces the importer added so far, patches the fraction of
+ * the model's. */
+typedef struct progress_context {
+    sw_progress bar;
+    const sw_model *model;
+    char prefix[80];            /* "importing hammer.iges" or "packing" */
+    size_t surfaces_before;
+    int importing;
+} progress_context;
+
+static void on_progress(void *user, const char *stage, double fraction)
 {
-    if (sw_scene_is_scene_path(path))
-        return sw_scene_load(path, model, err);
+    progress_context *c = user;
+    char label[160];
+    snprintf(label, sizeof label, "%s%s%s", c->prefix, stage && *stage ? ": " : "",
+             stage ? stage : "");
+    if (c->importing)
+        sw_progress_update(&c->bar, label, fraction,
+                           (double)(c->model->surface_count - c->surfaces_before), "faces");
+    else
+        sw_progress_update(&c->bar, label, fraction,
+                           strcmp(stage, "patches") == 0
+                               ? fraction * (double)c->model->patch_count : -1.0,
+                           "patches");
+}
+
+/* OpenCASCADE makes one part per leaf product of the file's assembly tree
+ * (placed where the assembly puts it). The file is still what the user
+ * named: a single product takes the file's name, several get it as a
+ * prefix, and each gets the next default colour like any other file. */
+static void name_occt_parts(sw_model *model, size_t first, const char *path)
+{
+    char stem[56];
+    part_name_for(path, stem);
+    size_t added = model->part_count - first;
+    for (size_t p = first; p < model->part_count; p++) {
+        sw_model_part *part = &model->parts[p];
+        char joined[2 * sizeof part->name]; /* cut to the name's 55 bytes below */
+        snprintf(joined, sizeof joined, "%s/%s", stem, part->name);
+        memcpy(part->name, added == 1 ? stem : joined, sizeof part->name - 1);
+        part->name[sizeof part->name - 1] = '\0';
+        sw_scene_default_color(p, part->color);
+    }
+}
+
+static sw_status import_cad(const build_options *o, const char *path, enum input_kind kind,
+                            const sw_import_options *opts, sw_model *model,
+                            sw_import_report *report, sw_error *err)
+{
     char name[56];
     float color[4];
     part_name_for(path, name);
     sw_scene_default_color(model->part_count, color);
-    sw_status st = sw_model_begin_part(model, name, color, err);
-    return st != SW_OK ? st : sw_scene_import_file(path, model, err);
+    if (kind == INPUT_IGES && !o->iges_occt) {
+        sw_status st = sw_model_begin_part(model, name, color, err);
+        return st != SW_OK ? st : sw_import_iges_file(path, opts, model, report, err);
+    }
+    size_t first = model->part_count;
+    sw_status st = sw_import_occt_file(path, opts, model, report, err);
+    if (st == SW_OK && model->part_count == first) /* nothing in it: still its part */
+        st = sw_model_begin_part(model, name, color, err);
+    if (st == SW_OK)
+        name_occt_parts(model, first, path);
+    return st;
 }
 
-static sw_status build_pack(const char *const *inputs, int input_count, const char *out_path,
-                            size_t *bytes_out, sw_model *model, sw_error *err)
+/* --strict: an importer that skipped entities anyway fails the build here. */
+static sw_status check_strict(const char *path, const sw_import_report *r, sw_error *err)
 {
-    sw_status st = SW_OK;
-    for (int i = 0; st == SW_OK && i < input_count; i++)
-        st = add_input(model, inputs[i], err);
-    if (st != SW_OK)
-        return st;
+    if (r->unsupported == 0)
+        return SW_OK;
+    return sw_error_set(err, SW_ERR_UNSUPPORTED, "%s: %zu unsupported entities (%s%s) and "
+                        "--strict is set", path, r->unsupported,
+                        r->unsupported_kinds ? r->unsupported_kind[0] : "unknown kind",
+                        r->unsupported_kinds > 1 ? ", ..." : "");
+}
+
+static sw_status add_input(const build_options *o, int i, progress_context *pc, sw_model *model,
+                           sw_import_report *report, sw_error *err)
+{
+    const char *path = o->inputs[i];
+    enum input_kind kind = kind_of(path);
+    sw_import_options opts = { .strict = o->strict, .progress = on_progress,
+                               .progress_user = pc };
+    snprintf(pc->prefix, sizeof pc->prefix, "importing %s", base_name(path));
+    pc->surfaces_before = model->surface_count;
+    pc->importing = 1;
+    sw_status st;
+    if (kind == INPUT_SCENE) {
+        st = sw_scene_load_with(path, &opts, report, model, err);
+    } else if (kind == INPUT_OTHER) {
+        char name[56];
+        float color[4];
+        part_name_for(path, name);
+        sw_scene_default_color(model->part_count, color);
+        st = sw_model_begin_part(model, name, color, err);
+        if (st == SW_OK)
+            st = sw_scene_import_file(path, model, err);
+    } else {
+        st = import_cad(o, path, kind, &opts, model, report, err);
+    }
+    if (st == SW_OK && o->strict)
+        st = check_strict(path, report, err);
+    /* The pack keeps one tolerance: the loosest any source was modelled to. */
+    if (st == SW_OK && report->model_tolerance_mm > model->model_tolerance)
+        model->model_tolerance = (float)report->model_tolerance_mm;
+    return st;
+}
+
+static sw_status pack_model(const build_options *o, progress_context *pc, sw_model *model,
+                            size_t *bytes_out, sw_error *err)
+{
+    snprintf(pc->prefix, sizeof pc->prefix, "packing");
+    pc->importing = 0;
+    sw_pack_progress progress = { on_progress, pc };
     sw_pack_contents contents;
-    memset(&contents, 0, sizeof contents);
     uint8_t *bytes = NULL;
-    st = sw_pack_contents_from_model(model, &contents, err);
+    sw_status st = sw_pack_contents_from_model_progress(model, &progress, &contents, err);
     if (st == SW_OK) {
+        on_progress(pc, "serialising", 0.0);
         st = sw_pack_serialize(&contents, &bytes, bytes_out, err);
         sw_pack_contents_free(&contents);
     }
-    if (st == SW_OK)
-        st = sw_write_file_atomic(out_path, bytes, *bytes_out, err); /* names the path */
+    if (st == SW_OK) {
+        on_progress(pc, "writing", 0.0);
+        st = sw_write_file_atomic(o->out_path, bytes, *bytes_out, err); /* names the path */
+    }
     free(bytes);
     return st;
 }
 
-static int cmd_build(int argc, char **argv)
+static sw_status build_pack(const build_options *o, sw_model *model, sw_import_report *reports,
+                            size_t *bytes_out, sw_error *err)
 {
-    const char *out_path = NULL;
-    int quiet = 0, input_count = 0;
-    const char **inputs = calloc((size_t)argc + 1, sizeof *inputs);
-    if (!inputs)
-        return fail(&(sw_error){SW_ERR_NO_MEMORY, "out of memory"});
+    progress_context pc = { .model = model };
+    sw_progress_init(&pc.bar, stderr, o->quiet);
+    sw_status st = SW_OK;
+    for (int i = 0; st == SW_OK && i < o->input_count; i++)
+        st = add_input(o, i, &pc, model, &reports[i], err);
+    if (st == SW_OK)
+        st = pack_model(o, &pc, model, bytes_out, err);
+    sw_progress_clear(&pc.bar);
+    return st;
+}
+
+/* One line per kind of skipped entity, per input, on stderr. */
+static void print_warnings(const build_options *o, const sw_import_report *reports)
+{
+    for (int i = 0; i < o->input_count; i++) {
+        const sw_import_report *r = &reports[i];
+        const char *name = base_name(o->inputs[i]);
+        size_t listed = 0;
+        for (size_t k = 0; k < r->unsupported_kinds && k < SW_IMPORT_KINDS; k++) {
+            fprintf(stderr, "warning: %s: %zu x %s skipped\n", name, r->unsupported_count[k],
+                    r->unsupported_kind[k]);
+            listed += r->unsupported_count[k];
+        }
+        if (r->unsupported > listed)
+            fprintf(stderr, "warning: %s: %zu entities of other kinds skipped\n", name,
+                    r->unsupported - listed);
+    }
+}
+
+static void print_summary(const build_options *o, const sw_model *model,
+                          const sw_import_report *reports, size_t bytes, double seconds)
+{
+    for (int i = 0; i < o->input_count; i++)
+        if (reports[i].pcurves_computed > 0)
+            printf("seamwalk-pack: %s: %zu parameter curves computed from model-space curves\n",
+                   base_name(o->inputs[i]), reports[i].pcurves_computed);
+    printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
+           model->patch_count, bytes, o->out_path, seconds);
+}
+
+/* Parses build's arguments into o; returns 0 or the usage exit status. */
+static int parse_build(int argc, char **argv, build_options *o)
+{
     for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0) {
-            if (i + 1 == argc || out_path) {
-                free(inputs);
+        const char *a = argv[i];
+        if (strcmp(a, "-o") == 0) {
+            if (i + 1 == argc || o->out_path)
                 return usage_error("build: %s needs exactly one OUT.swpack", "-o");
-            }
-            out_path = argv[++i];
-        } else if (strcmp(argv[i], "--quiet") == 0) {
-            quiet = 1;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            free(inputs);
-            return usage_error("build: unknown option '%s'", argv[i]);
+            o->out_path = argv[++i];
+        } else if (strcmp(a, "--iges-reader") == 0) {
+            const char *r = i + 1 < argc ? argv[++i] : "";
+            if (strcmp(r, "native") != 0 && strcmp(r, "occt") != 0)
+                return usage_error("build: --iges-reader takes native or occt, not '%s'", r);
+            o->iges_occt = strcmp(r, "occt") == 0;
+        } else if (strcmp(a, "--quiet") == 0) {
+            o->quiet = 1;
+        } else if (strcmp(a, "--strict") == 0) {
+            o->strict = 1;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            return usage_error("build: unknown option '%s'", a);
         } else {
-            inputs[input_count++] = argv[i];
+            o->inputs[o->input_count++] = a;
         }
     }
-    if (!out_path || input_count == 0) {
-        free(inputs);
-        return usage_error("build: %s", !out_path ? "missing -o OUT.swpack" : "no INPUT");
+    if (!o->out_path || o->input_count == 0)
+        return usage_error("build: %s", !o->out_path ? "missing -o OUT.swpack" : "no INPUT");
+    return 0;
+}
+
+static int cmd_build(int argc, char **argv)
+{
+    build_options o = { .inputs = calloc((size_t)argc + 1, sizeof(char *)) };
+    sw_import_report *reports = calloc((size_t)argc + 1, sizeof *reports);
+    if (!o.inputs || !reports) {
+        free(o.inputs);
+        free(reports);
+        return fail(&(sw_error){SW_ERR_NO_MEMORY, "out of memory"});
     }
-    sw_model model;
-    sw_model_init(&model);
-    sw_error err = {0};
-    size_t bytes = 0;
-    sw_status st = build_pack(inputs, input_count, out_path, &bytes, &model, &err);
-    if (st == SW_OK && !quiet)
-        printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s\n", model.part_count,
-               model.patch_count, bytes, out_path);
-    sw_model_free(&model);
-    free(inputs);
-    return st == SW_OK ? 0 : fail(&err);
+    int rc = parse_build(argc, argv, &o);
+    if (rc == 0) {
+        sw_model model;
+        sw_model_init(&model);
+        sw_error err = {0};
+        size_t bytes = 0;
+        double t0 = now_s();
+        sw_status st = build_pack(&o, &model, reports, &bytes, &err);
+        if (st == SW_OK) {
+            print_warnings(&o, reports);
+            if (!o.quiet)
+                print_summary(&o, &model, reports, bytes, now_s() - t0);
+        }
+        rc = st == SW_OK ? 0 : fail(&err);
+        sw_model_free(&model);
+    }
+    free(o.inputs);
+    free(reports);
+    return rc;
 }
 
 /* ---- reading a pack --------------------------------------------------- */
@@ -142,144 +349,6 @@ static sw_status open_pack(const char *path, char **bytes, sw_pack *pack, sw_err
     if (st != SW_OK)
         sw_error_prefix(err, "%s", path);
     return st;
-}
-
-typedef struct pack_stats {
-    uint32_t rational;
-    int degree_min[2], degree_max[2]; /* u, v */
-    double diagonal;
-} pack_stats;
-
-static pack_stats gather_stats(const sw_pack *pack)
-{
-    pack_stats s = {.degree_min = {SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE}};
-    for (uint32_t i = 0; i < pack->meta->patch_count; i++) {
-        const sw_pack_patch *p = &pack->patches[i];
-        s.rational += (p->flags & SW_PATCH_RATIONAL) != 0;
-        int d[2] = {p->degree_u, p->degree_v};
-        for (int k = 0; k < 2; k++) {
-            s.degree_min[k] = d[k] < s.degree_min[k] ? d[k] : s.degree_min[k];
-            s.degree_max[k] = d[k] > s.degree_max[k] ? d[k] : s.degree_max[k];
-        }
-    }
-    if (pack->meta->patch_count == 0)
-        s.degree_min[0] = s.degree_min[1] = 0;
-    const float *lo = pack->meta->box_min, *hi = pack->meta->box_max;
-    double dx = (double)hi[0] - lo[0], dy = (double)hi[1] - lo[1], dz = (double)hi[2] - lo[2];
-    s.diagonal = sqrt(dx * dx + dy * dy + dz * dz);
-    return s;
-}
-
-/* ---- info, plain text --------------------------------------------------- */
-
-static void print_info_text(const char *path, const sw_pack *pack, const pack_stats *s)
-{
-    const sw_pack_meta *m = pack->meta;
-    printf("%s: seamwalk pack version %" PRIu32 ", %" PRIu64 " bytes\n", path,
-           pack->header->version, pack->header->total_size);
-    printf("  %-16s %" PRIu32 "\n", "parts", m->part_count);
-    for (uint32_t i = 0; i < m->part_count; i++) {
-        const sw_pack_part *p = &pack->parts[i];
-        printf("    %-20s %6" PRIu32 " patches  colour %.3f %.3f %.3f %.3f\n", p->name,
-               p->patch_count, p->color[0], p->color[1], p->color[2], p->color[3]);
-    }
-    printf("  %-16s %" PRIu32 " (one per Bezier patch for Bezier inputs)\n", "surfaces",
-           m->patch_count);
-    printf("  %-16s %" PRIu32 "\n", "bezier patches", m->patch_count);
-    printf("  %-16s %" PRIu32 "\n", "control points", m->control_count);
-    printf("  %-16s %" PRIu32 "\n", "rational", s->rational);
-    printf("  %-16s u %d..%d, v %d..%d\n", "degrees", s->degree_min[0], s->degree_max[0],
-           s->degree_min[1], s->degree_max[1]);
-    printf("  %-16s %" PRIu32 "\n", "adjacency", m->adjacency_count);
-    printf("  %-16s %" PRIu32 "\n", "sections", pack->header->section_count);
-    for (uint32_t i = 0; i < pack->header->section_count; i++) {
-        const sw_pack_section *sec = &pack->sections[i];
-        printf("    %-12s offset %10" PRIu64 "  size %10" PRIu64 "\n",
-               sw_section_type_name(sec->type), sec->offset, sec->size);
-    }
-    printf("  %-16s min %g %g %g, max %g %g %g\n", "box", m->box_min[0], m->box_min[1],
-           m->box_min[2], m->box_max[0], m->box_max[1], m->box_max[2]);
-    printf("  %-16s %g (box diagonal)\n", "model size", s->diagonal);
-    printf("  %-16s %" PRIu64 " bytes\n", "runtime memory", pack->header->runtime_bytes);
-}
-
-/* ---- info, JSON ------------------------------------------------------------ */
-
-/* Writes s as a JSON string; part names are UTF-8 but may hold anything. */
-static void print_json_string(const char *s, size_t max)
-{
-    putchar('"');
-    for (size_t i = 0; i < max && s[i]; i++) {
-        unsigned char c = (unsigned char)s[i];
-        if (c == '"' || c == '\\')
-            printf("\\%c", c);
-        else if (c < 0x20 || c == 0x7f)
-            printf("\\u%04x", c);
-        else
-            putchar(c);
-    }
-    putchar('"');
-}
-
-static void print_json_floats(const float *v, int n)
-{
-    putchar('[');
-    for (int k = 0; k < n; k++)
-        printf("%s%.9g", k ? ", " : "", v[k]);
-    putchar(']');
-}
-
-static void print_json_parts(const sw_pack *pack)
-{
-    printf("  \"parts\": [");
-    for (uint32_t i = 0; i < pack->meta->part_count; i++) {
-        const sw_pack_part *p = &pack->parts[i];
-        printf("%s\n    {\"name\": ", i ? "," : "");
-        print_json_string(p->name, sizeof p->name);
-        printf(", \"first_patch\": %" PRIu32 ", \"patches\": %" PRIu32 ", \"color\": ",
-               p->first_patch, p->patch_count);
-        print_json_floats(p->color, 4);
-        putchar('}');
-    }
-    printf("%s],\n", pack->meta->part_count ? "\n  " : "");
-}
-
-static void print_json_sections(const sw_pack *pack)
-{
-    printf("  \"sections\": [");
-    for (uint32_t i = 0; i < pack->header->section_count; i++) {
-        const sw_pack_section *sec = &pack->sections[i];
-        printf("%s\n    {\"type\": %" PRIu32 ", \"name\": \"%s\", \"offset\": %" PRIu64
-               ", \"size\": %" PRIu64 "}",
-               i ? "," : "", sec->type, sw_section_type_name(sec->type), sec->offset, sec->size);
-    }
-    printf("\n  ],\n");
-}
-
-static void print_info_json(const char *path, const sw_pack *pack, const pack_stats *s)
-{
-    const sw_pack_meta *m = pack->meta;
-    printf("{\n  \"file\": ");
-    print_json_string(path, SIZE_MAX);
-    printf(",\n  \"version\": %" PRIu32 ",\n  \"total_bytes\": %" PRIu64 ",\n",
-           pack->header->version, pack->header->total_size);
-    printf("  \"part_count\": %" PRIu32 ",\n", m->part_count);
-    print_json_parts(pack);
-    printf("  \"surfaces\": %" PRIu32 ",\n", m->patch_count);
-    printf("  \"surfaces_note\": \"one per Bezier patch for Bezier inputs\",\n");
-    printf("  \"bezier_patches\": %" PRIu32 ",\n", m->patch_count);
-    printf("  \"control_points\": %" PRIu32 ",\n", m->control_count);
-    printf("  \"rational_patches\": %" PRIu32 ",\n", s->rational);
-    printf("  \"degree_u\": [%d, %d],\n  \"degree_v\": [%d, %d],\n", s->degree_min[0],
-           s->degree_max[0], s->degree_min[1], s->degree_max[1]);
-    printf("  \"adjacency\": %" PRIu32 ",\n", m->adjacency_count);
-    print_json_sections(pack);
-    printf("  \"box\": {\"min\": ");
-    print_json_floats(m->box_min, 3);
-    printf(", \"max\": ");
-    print_json_floats(m->box_max, 3);
-    printf("},\n  \"model_size\": %.9g,\n", s->diagonal);
-    printf("  \"runtime_bytes\": %" PRIu64 "\n}\n", pack->header->runtime_bytes);
 }
 
 static int cmd_info(int argc, char **argv)
@@ -305,13 +374,9 @@ static int cmd_info(int argc, char **argv)
         free(bytes);
         return fail(&err);
     }
-    pack_stats stats = gather_stats(&pack);
-    if (json)
-        print_info_json(path, &pack, &stats);
-    else
-        print_info_text(path, &pack, &stats);
+    sw_status st = sw_pack_print_info(stdout, path, &pack, json, &err);
     free(bytes);
-    return 0;
+    return st == SW_OK ? 0 : fail(&err);
 }
 
 /* ---- verify --------------------------------------------------------------- */
@@ -347,6 +412,8 @@ int main(int argc, char **argv)
         rc = cmd_info(argc - 2, argv + 2);
     else if (strcmp(cmd, "verify") == 0)
         rc = cmd_verify(argc - 2, argv + 2);
+    else if (strcmp(cmd, "gen") == 0)
+        rc = sw_pack_cmd_gen(argc - 2, argv + 2);
     else
         return usage_error("unknown command '%s'", cmd);
     /* A full disk or closed pipe on stdout is a failure, not a silent success. */

@@ -132,7 +132,7 @@ typedef struct sw_pack_trim_curve {   /* 16 bytes: a clamped B-spline in (u, v) 
     uint32_t reserved2;               /* zero */
 } sw_pack_trim_curve;
 
-enum { SW_MASK_NONE = 0xFFFFFFFFu };
+#define SW_MASK_NONE 0xFFFFFFFFu /* a macro: enumerators must fit an int */
 
 typedef struct sw_pack_patch_domain { /* 24 bytes, one per patch */
     uint32_t surface;                 /* into SURFACES */

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Specification of the seamwalk-pack command line: build, info, verify, and
 # how it fails (exit 1 with one stderr line, exit 2 for usage, no partial or
-# damaged output file).
+# damaged output file); per-part info on trimmed packs, --strict, --quiet,
+# the progress bar (only on a terminal), and IGES/STEP files from the shared
+# models when the readers are built (skipped otherwise).
 #   test_pack_cli.sh SEAMWALK_PACK SAMPLES_DIR [SHARED_MODELS_DIR]
 set -uo pipefail
 tool=$1 samples=$2 shared=${3:-}
@@ -121,10 +123,125 @@ run build "$samples/teaset.ini" "$work/bad.bpt" -o "$work/keep.swpack"
 check "a failed build keeps the existing output" eval '[ "$(code)" -eq 1 ] && cmp -s "$teaset" "$work/keep.swpack"'
 run build "$work/nope.txt" -o "$work/new.swpack"
 check "a missing input fails in one line" one_line_failure "nope.txt: cannot open"
-run build "$samples/teapot.igs" -o "$work/new.swpack"
+run build "$work/model.obj" -o "$work/new.swpack"
 check "an unsupported input fails in one line" one_line_failure "unsupported file type"
 run build "$samples/teaset.ini" -o "$work/no/such/dir/x.swpack"
 check "an unwritable output fails in one line" one_line_failure "x.swpack"
+
+# -- info per part ---------------------------------------------------------------
+run info "$teaset"
+check "info has a block per part" eval 'has "$work/out" "^  part 2: teaspoon$" && has "$work/out" "^    surfaces  *16 (0 trimmed, 0 rational)$" && has "$work/out" "^    box  *min .* mm$" && has "$work/out" "^  units  *mm"'
+check "info --json has per-part counts and units" python3 - "$work/teaset.json" <<'EOF'
+import json, sys
+j = json.load(open(sys.argv[1]))
+p = j["parts"][2]
+assert p["surfaces"] == 16 and p["bezier_patches"] == 16 and p["trimmed_surfaces"] == 0, p
+assert p["trim_loops"] == 0 and p["trim_curves"] == 0 and p["pcurves_computed"] == 0, p
+assert p["degree_u"] == [3, 3] and p["rational_patches"] == 0 and len(p["transform"]) == 16
+assert all(lo <= hi for lo, hi in zip(p["box"]["min"], p["box"]["max"]))
+assert j["units"] == "mm" and j["trim_loops"] == 0 and j["viewpoints"] == []
+assert [s["name"] for s in j["sections"]][4:] == ["ADJACENCY", "SURFACES", "TRIM_LOOPS",
+  "TRIM_CURVES", "TRIM_DATA", "PATCH_DOMAINS", "TRIM_MASKS", "VIEWPOINTS", "PART_TRANSFORMS"]
+EOF
+
+# A trimmed pack without any CAD reader: a generated plate with holes.
+cat > "$work/plates.ini" <<INI
+[part holed]
+generate = plate
+size = 400
+height = 700
+holes = 3
+segments = 2
+seed = 5
+
+[part tea]
+file = $(cd "$samples" && pwd)/teacup.txt
+
+[view front]
+eye = 0 800 -1500
+target = 0 700 0
+INI
+run build "$work/plates.ini" -o "$work/plates.swpack"
+check "build a scene with a trimmed plate" eval '[ "$(code)" -eq 0 ] && has "$work/out" "2 parts"'
+run info --json "$work/plates.swpack"
+cp "$work/out" "$work/plates.json"
+check "info --json counts the plate's trims per part" python3 - "$work/plates.json" <<'EOF'
+import json, sys
+j = json.load(open(sys.argv[1]))
+plate, cup = j["parts"]
+assert plate["name"] == "holed" and plate["trimmed_surfaces"] >= 1, plate
+assert plate["trim_loops"] == 4 and plate["trim_curves"] >= 4, plate
+assert plate["trim_degree"][0] >= 1 and plate["bezier_patches"] >= 4, plate
+assert cup["trim_loops"] == 0 and cup["surfaces"] == cup["bezier_patches"] == 26, cup
+assert j["trim_loops"] == 4 and j["trimmed_surfaces"] == plate["trimmed_surfaces"]
+assert [v["name"] for v in j["viewpoints"]] == ["front"] and j["units"] == "mm"
+assert plate["box"]["min"][1] > 690 and plate["box"]["max"][1] < 710, plate["box"]
+EOF
+run info "$work/plates.swpack"
+check "info text shows the plate's trim loops and the viewpoint" eval 'has "$work/out" "^    trim loops  *4$" && has "$work/out" "^  viewpoints  *1: front$"'
+run verify "$work/plates.swpack"
+check "verify accepts the trimmed pack" [ "$(code)" -eq 0 ]
+
+# -- --quiet, --strict, the progress bar ---------------------------------------------
+run build "$samples/teaset.ini" -o "$work/loud.swpack"
+check "no progress bar on a pipe" eval '[ "$(code)" -eq 0 ] && [ ! -s "$work/err" ]'
+run build "$samples/teaset.ini" -o "$work/strict.swpack" --strict --quiet
+check "--strict --quiet builds a clean input silently" eval '[ "$(code)" -eq 0 ] && [ ! -s "$work/out" ] && [ ! -s "$work/err" ] && cmp -s "$teaset" "$work/strict.swpack"'
+run build "$samples/teaset.ini" -o "$work/x.swpack" --iges-reader fast
+check "--iges-reader takes native or occt" eval '[ "$(code)" -eq 2 ] && has "$work/err" "native or occt"'
+cr=$(printf '\r')
+if command -v script > /dev/null; then
+  # script(1) gives the tool a terminal; what it captures is that terminal.
+  script -qec "'$tool' build '$samples/teaset.ini' -o '$work/tty.swpack'" /dev/null > "$work/tty" 2>&1
+  check "a terminal gets a progress bar" eval 'grep -q "${cr}packing: patches" "$work/tty" && grep -q "3 parts, 70 patches" "$work/tty"'
+  script -qec "'$tool' build '$samples/teaset.ini' -o '$work/tty.swpack' --quiet" /dev/null > "$work/ttyq" 2>&1
+  check "--quiet silences the bar on a terminal" eval '! grep -q "${cr}[a-z]" "$work/ttyq"'
+else
+  echo "skip progress bar on a terminal: no script(1)"
+fi
+
+# -- CAD files from the shared models (when the readers are built) -------------------
+# cad_build NAME FILE [ARGS...]: 0 built, 1 this build lacks the reader (skip), 2 failed.
+cad_build() {
+  local name=$1 file=$2; shift 2
+  run build "$file" -o "$work/$name.swpack" "$@"
+  if [ "$(code)" -eq 0 ]; then return 0; fi
+  if has "$work/err" "built without STEP support" || has "$work/err" "reader not linked"; then
+    echo "skip $name: $(cat "$work/err")"; return 1
+  fi
+  echo "  $name failed: $(cat "$work/err")"; return 2
+}
+for model in occt_hammer.iges:native occt_hammer.iges:occt occt_screw.step:occt; do
+  file=${model%%:*} reader=${model##*:}
+  if [ -z "$shared" ] || [ ! -f "$shared/$file" ]; then echo "skip $file: not in ${shared:-(no folder)}"; continue; fi
+  name=${file%%.*}_$reader
+  cad_build "$name" "$shared/$file" --iges-reader "$reader"; rc=$?
+  [ $rc -eq 1 ] && continue
+  check "build $file ($reader reader)" [ $rc -eq 0 ]
+  [ $rc -eq 0 ] || continue
+  cp "$work/err" "$work/$name.warnings"
+  check "$file: every stderr line is a warning with a count" eval '! grep -qv "^warning: $file: [0-9][0-9]* x .* skipped$" "$work/$name.warnings"'
+  run info --json "$work/$name.swpack"
+  check "$file: info per part" python3 - "$work/out" "${file%%.*}" <<'EOF'
+import json, sys
+j = json.load(open(sys.argv[1]))
+p = j["parts"][0]
+assert j["part_count"] >= 1 and p["name"] == sys.argv[2], p["name"]
+assert p["surfaces"] >= 1 and p["bezier_patches"] >= 1, p
+assert p["trim_loops"] >= p["trimmed_surfaces"] and p["pcurves_computed"] <= p["trim_curves"], p
+assert j["units"] == "mm" and j["model_tolerance"] >= 0
+EOF
+  run build "$shared/$file" -o "$work/$name.strict.swpack" --iges-reader "$reader" --strict
+  if [ -s "$work/$name.warnings" ]; then
+    check "$file: --strict turns its warnings into one failure, no pack" eval 'one_line_failure "$file" && [ ! -e "$work/$name.strict.swpack" ]'
+  else
+    check "$file: --strict builds a file without warnings" [ "$(code)" -eq 0 ]
+  fi
+  size=$(stat -c %s "$shared/$file")
+  head -c $((size * 2 / 3)) "$shared/$file" > "$work/cut_$file"
+  run build "$work/cut_$file" -o "$work/cut.swpack" --iges-reader "$reader"
+  check "$file cut short: one-line failure naming it, no pack, no temporary" eval 'one_line_failure "cut_$file" && [ -z "$(ls "$work" | grep cut.swpack)" ]'
+done
 
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]
