@@ -294,7 +294,7 @@ sw_status iges_param_real_or(iges_reader *r, const iges_params *p, int i, const 
 sw_status iges_param_int(iges_reader *r, const iges_params *p, int i, const char *what, int lo,
                          int hi, int *out)
 {
-    double v;
+    double v = 0;
     sw_status st = iges_param_real(r, p, i, what, &v);
     if (st != SW_OK)
         return st;
@@ -319,7 +319,7 @@ sw_status iges_param_int_or(iges_reader *r, const iges_params *p, int i, const c
 sw_status iges_param_entity(iges_reader *r, const iges_params *p, int i, const char *what,
                             int allow_null, int *out)
 {
-    int v;
+    int v = 0;
     sw_status st = iges_param_int(r, p, i, what, allow_null ? 0 : 1, 2 * r->ent_count - 1, &v);
     if (st != SW_OK)
         return st;

@@ -259,7 +259,7 @@ static sw_status emit(iges_reader *r, iges_faces *faces, sw_model *model)
     return SW_OK;
 }
 
-static void set_tolerance(iges_reader *r, sw_model *model)
+static void set_tolerance(iges_reader *r)
 {
     double file_mm = r->resolution * r->units_to_mm;
     r->report->units_to_mm = r->units_to_mm;
@@ -267,8 +267,6 @@ static void set_tolerance(iges_reader *r, sw_model *model)
     double tol_mm = r->opt && r->opt->tolerance_mm > 0 ? r->opt->tolerance_mm
                   : file_mm > 0 ? file_mm : 0.01;
     r->tol = tol_mm / r->units_to_mm;
-    if (file_mm > model->model_tolerance)
-        model->model_tolerance = (float)file_mm;
 }
 
 static const char *base_name(const char *path)
@@ -298,11 +296,13 @@ sw_status sw_import_iges_memory(const char *text, size_t size, const char *file_
     if (st == SW_OK)
         st = iges_read_directory(&r);
     if (st == SW_OK) {
-        set_tolerance(&r, model);
+        set_tolerance(&r);
         st = read_faces(&r, &faces);
     }
     if (st == SW_OK)
         st = emit(&r, &faces, model);
+    if (st == SW_OK && r.report->model_tolerance_mm > model->model_tolerance)
+        model->model_tolerance = (float)r.report->model_tolerance_mm;
     if (st == SW_OK && options && options->progress)
         options->progress(options->progress_user, "IGES", 1.0);
     iges_faces_free(&faces);

@@ -49,7 +49,9 @@ static int iges_text_lines(iges_text *t, const char *text, int width, char secti
             iges_text_record(t, cur, width, section, seq + n++, de);
             cur[0] = '\0';
         }
-        strncat(cur, p, tok < 80 ? tok : 80);
+        size_t have = strlen(cur), take = tok < 80 - have ? tok : 80 - have;
+        memcpy(cur + have, p, take);
+        cur[have + take] = '\0';
         p += tok;
     }
     if (cur[0])
