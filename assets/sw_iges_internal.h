@@ -33,8 +33,11 @@ typedef struct iges_entity {
 } iges_entity;
 
 /* Entity references nest (144 -> 142 -> 102 -> 126 -> 124 -> 124 ...);
- * real files go a few levels deep, a cycle would go forever. */
-enum { IGES_MAX_DEPTH = 32 };
+ * real files go a few levels deep, a cycle would go forever. Shared
+ * references could also multiply (a 102 naming another 102 a thousand
+ * times, and so on), so the total number of entities entered is bounded by
+ * IGES_VISITS_PER_ENTITY per entity in the file. */
+enum { IGES_MAX_DEPTH = 32, IGES_VISITS_PER_ENTITY = 64 };
 
 typedef struct iges_reader {
     const char *file;               /* base name, for messages */
@@ -49,6 +52,7 @@ typedef struct iges_reader {
     iges_entity *ents;
     int ent_count;
     int depth;
+    long visits;                    /* entities entered so far: shared references */
     int unsupported_type;           /* set with SW_ERR_UNSUPPORTED */
     const sw_import_options *opt;
     sw_import_report *report;

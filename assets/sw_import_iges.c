@@ -39,6 +39,11 @@ sw_status iges_enter(iges_reader *r, int e)
         return iges_fail_entity(r, e, SW_ERR_FORMAT,
                                 "expected entity references nested at most %d deep",
                                 IGES_MAX_DEPTH);
+    if (++r->visits > (long)IGES_VISITS_PER_ENTITY * r->ent_count + 1000)
+        return iges_fail_entity(r, e, SW_ERR_FORMAT,
+                                "expected each entity to be referenced a few times, found "
+                                "references that expand to more than %ld entities",
+                                (long)IGES_VISITS_PER_ENTITY * r->ent_count + 1000);
     r->ents[e].busy = 1;
     r->depth++;
     return SW_OK;

@@ -363,6 +363,25 @@ static void test_bad_number(void)
                                  "Hollerith string, found '1.x'");
 }
 
+/* 102s naming each other 40 times over three levels would expand to 64 000
+ * lines: refused as a whole rather than expanded. */
+static void test_shared_references_bounded(void)
+{
+    static char buf[16384], p102[3][512];
+    for (int k = 0; k < 3; k++) {
+        int n = snprintf(p102[k], sizeof p102[k], "102,40");
+        for (int i = 0; i < 40; i++)
+            n += snprintf(p102[k] + n, sizeof p102[k] - (size_t)n, ",%d", 2 * k + 3);
+        snprintf(p102[k] + n, sizeof p102[k] - (size_t)n, ";");
+    }
+    const iges_text_entity e[] = {{102, 0, 0, 1, p102[0]}, {102, 0, 0, 1, p102[1]},
+                                  {102, 0, 0, 1, p102[2]},
+                                  {110, 0, 0, 1, "110,0.,0.,0.,1.,0.,0.;"},
+                                  {122, 0, 0, 0, "122,1,0.,0.,1.;"}};
+    size_t len = build(e, 5, buf, sizeof buf);
+    expect_error(buf, len, NULL, "references that expand to more than");
+}
+
 /* An independent 406 is skipped with a count; strict makes it an error. */
 static void test_unsupported_entity(void)
 {
@@ -620,6 +639,7 @@ int main(int argc, char **argv)
     SW_RUN(test_reference_cycle);
     SW_RUN(test_pointer_to_even_line);
     SW_RUN(test_bad_number);
+    SW_RUN(test_shared_references_bounded);
     SW_RUN(test_unsupported_entity);
     struct stat st;
     if (!shared_dir || stat(shared_dir, &st) != 0) {
