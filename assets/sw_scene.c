@@ -16,6 +16,7 @@
 #include <strings.h>
 
 #include "sw_import_bpt.h"
+#include "sw_import_iges.h"
 #include "sw_import_newell.h"
 #include "sw_import_occt.h"
 #include "sw_scene_internal.h"
@@ -216,7 +217,7 @@ static const struct {
     int has_units;
 } importers[] = {
     {".txt", import_newell, 0},         {".bpt", import_bpt, 0},
-    {".igs", sw_import_occt_file, 1},   {".iges", sw_import_occt_file, 1},
+    {".igs", sw_import_iges_file, 1},   {".iges", sw_import_iges_file, 1},
     {".stp", sw_import_occt_file, 1},   {".step", sw_import_occt_file, 1},
 };
 
@@ -312,28 +313,26 @@ static sw_mat4 part_matrix(const scene_part *part)
     return sw_mat4_mul(&t, &rs);
 }
 
-/* The part's geometry: its file (relative to base_dir) or generated object. */
-static sw_status fill_part(const scene_part *part, const char *base_dir,
-                           const sw_import_options *options, sw_import_report *report,
-                           sw_model *model, sw_error *err)
-{
-    if (part->key_line[PK_GENERATE])
-        return sw_proc_add(model, &part->proc, err);
-    char path[SCENE_PATH_MAX];
-    sw_status st = resolve_path(base_dir, part->file, path, err);
-    return st != SW_OK ? st : sw_scene_import_file_with(path, options, report, model, err);
-}
-
-/* An importer may split a file into several parts (assemblies); all of them
- * get the scene part's placement. */
+/* The part's geometry: its file (relative to base_dir, read once per scene)
+ * or its generated object. An importer may split a file into several parts
+ * (assemblies); all of them get the scene part's placement. */
 static sw_status load_part(const scene_state *st, const scene_part *part, const char *base_dir,
                            const sw_import_options *options, sw_import_report *report,
-                           sw_model *model, sw_error *err)
+                           scene_cache *cache, sw_model *model, sw_error *err)
 {
     size_t first = model->part_count;
-    sw_status status = sw_model_begin_part(model, part->name, part->color, err);
-    if (status == SW_OK)
-        status = fill_part(part, base_dir, options, report, model, err);
+    sw_status status;
+    if (part->key_line[PK_GENERATE]) {
+        status = sw_model_begin_part(model, part->name, part->color, err);
+        if (status == SW_OK)
+            status = sw_proc_add(model, &part->proc, err);
+    } else {
+        char path[SCENE_PATH_MAX];
+        status = resolve_path(base_dir, part->file, path, err);
+        if (status == SW_OK)
+            status = scene_cache_place(cache, path, part->name, part->color, options, report,
+                                       model, err);
+    }
     if (status != SW_OK) {
         long line = part->key_line[part->key_line[PK_FILE] ? PK_FILE : PK_GENERATE];
         sw_error_prefix(err, "%s:%ld: part '%s'", st->file_name, line, part->name);
@@ -398,8 +397,10 @@ sw_status sw_scene_load_memory_with(const char *text, size_t size, const char *f
         .err = err,
     };
     sw_status status = parse_scene(&st);
+    scene_cache cache = {0};
     for (size_t i = 0; status == SW_OK && i < st.part_count; i++)
-        status = load_part(&st, &st.parts[i], base_dir, options, report, model, err);
+        status = load_part(&st, &st.parts[i], base_dir, options, report, &cache, model, err);
+    scene_cache_free(&cache);
     for (size_t i = 0; status == SW_OK && i < st.view_count; i++)
         status = load_view(&st, &st.views[i], model, err);
     free(st.parts);

@@ -7,6 +7,8 @@
 #include <stddef.h>
 
 #include "sw_error.h"
+#include "sw_import.h"
+#include "sw_model.h"
 #include "sw_procedural.h"
 
 enum { SCENE_NAME_MAX = 44, SCENE_SECTION_MAX = 49, SCENE_PATH_MAX = 4096 };
@@ -94,5 +96,28 @@ const char *scene_extension(const char *path);
 
 /* 1 when the file's format declares its own units (IGES, STEP). */
 int scene_file_has_units(const char *path);
+
+/* Part files read once per scene load (sw_scene_cache.c): a showroom names
+ * one file for many parts, and STEP or IGES import costs far more than
+ * copying surfaces. Each file is imported into a model of its own, then
+ * copied into the scene's model for every part that names it. */
+typedef struct scene_cache_entry {
+    char *path;
+    sw_model model;
+} scene_cache_entry;
+
+typedef struct scene_cache {
+    scene_cache_entry *entries;
+    size_t count, capacity;
+} scene_cache;
+
+void scene_cache_free(scene_cache *cache);
+
+/* Adds the file's parts to model, untransformed: the first named name and
+ * coloured color, any more (an assembly) as the importer named them. The
+ * file is imported on first use (report gets that import's report). */
+sw_status scene_cache_place(scene_cache *cache, const char *path, const char *name,
+                            const float color[4], const sw_import_options *options,
+                            sw_import_report *report, sw_model *model, sw_error *err);
 
 #endif

@@ -3,13 +3,11 @@
 # writes builds with seamwalk-pack into a pack of N Bezier patches (within 5%;
 # the plan is exact), with its viewpoints; the seed decides the scene; bad
 # arguments and part files fail cleanly and write nothing.
-#   test_gen.sh GEN SEAMWALK_PACK procedural       generated objects only
-#   test_gen.sh GEN SEAMWALK_PACK parts MODELS_DIR with copies of real parts
-# GEN runs the generator's command (`seamwalk-pack gen` or the sw_gen_cli
-# program that calls the same function). The parts mode exits 77 (skipped)
-# when MODELS_DIR is absent.
+#   test_gen.sh SEAMWALK_PACK procedural       generated objects only
+#   test_gen.sh SEAMWALK_PACK parts MODELS_DIR with copies of real parts
+# The parts mode exits 77 (skipped) when MODELS_DIR is absent.
 set -uo pipefail
-gen=$1 pack=$2 mode=$3 models=${4:-}
+pack=$1 mode=$2 models=${3:-}
 work=$(mktemp -d "${TMPDIR:-/tmp}/sw_test_gen.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT
 failures=0 checks=0
@@ -34,7 +32,7 @@ within_5_percent() {
 # gen_and_build N NAME [GEN ARGS...]: generates NAME.ini, builds NAME.swpack.
 gen_and_build() {
   local n=$1 name=$2; shift 2
-  "$gen" showroom --patches "$n" -o "$work/$name.ini" "$@" > "$work/$name.gen" 2>&1 &&
+  "$pack" gen showroom --patches "$n" -o "$work/$name.ini" "$@" > "$work/$name.gen" 2>&1 &&
     "$pack" build "$work/$name.ini" -o "$work/$name.swpack" > "$work/$name.build" 2>&1 ||
     { cat "$work/$name.gen" "$work/$name.build" 2>/dev/null; false; }
 }
@@ -52,7 +50,7 @@ has_views() { # the three viewpoints, in the scene and in the pack
 fails_with() { # fails_with CODE FRAGMENT GEN ARGS...: exit CODE, FRAGMENT on stderr, no output
   local want=$1 fragment=$2; shift 2
   rm -f "$work/bad.ini"
-  "$gen" "$@" > "$work/out" 2> "$work/err"
+  "$pack" gen "$@" > "$work/out" 2> "$work/err"
   local got=$?
   [ "$got" -eq "$want" ] && grep -q -- "$fragment" "$work/err" && [ ! -e "$work/bad.ini" ] ||
     { echo "  exit $got: $(head -c 300 "$work/err")"; false; }
@@ -62,10 +60,10 @@ procedural() {
   check "2000 patches asked, 2000 built" builds_to 2000 small
   check "the scene has entrance, overview and closeup views" has_views small
   check "the same seed writes the same scene" \
-    bash -c "'$gen' showroom --patches 2000 -o '$work/again.ini' > /dev/null &&
+    bash -c "'$pack' gen showroom --patches 2000 -o '$work/again.ini' > /dev/null &&
              cmp -s '$work/small.ini' '$work/again.ini'"
   check "another seed writes another scene" \
-    bash -c "'$gen' showroom --patches 2000 --seed 2 -o '$work/other.ini' > /dev/null &&
+    bash -c "'$pack' gen showroom --patches 2000 --seed 2 -o '$work/other.ini' > /dev/null &&
              ! cmp -s '$work/small.ini' '$work/other.ini'"
   check "a tiny showroom (7 patches) builds exactly" builds_to 7 tiny
   check "40000 patches asked, within 5% built" builds_to 40000 large --seed 40
@@ -88,10 +86,14 @@ parts() {
   check "copies of the Newell teapot and objects: 2000 patches" \
     builds_to 2000 teapots --part "$teapot" --seed 3
   check "the teapot is copied" grep -q "^file = .*newell_teapot.txt$" "$work/teapots.ini"
+  local iges=$models/occt_bearing.iges
+  [ -f "$iges" ] && check "copies of an IGES part (trimmed) and the teapot: 3000 patches" \
+    builds_to 3000 bearings --part "$teapot" --part "$iges" --seed 5
   local step=$models/occt_screw.step
-  if [ -f "$step" ] && "$pack" build "$step" -o "$work/screw.swpack" > /dev/null 2>&1; then
-    check "copies of a STEP part and the teapot: 3000 patches" \
-      builds_to 3000 mixed --part "$teapot" --part "$step" --seed 4
+  if [ -f "$step" ] && [ -f "$iges" ] &&
+     "$pack" build "$step" -o "$work/screw.swpack" > /dev/null 2>&1; then
+    check "copies of a STEP part, an IGES part and the teapot: 4000 patches" \
+      builds_to 4000 mixed --part "$teapot" --part "$iges" --part "$step" --seed 4
   else
     echo "skip STEP parts: this seamwalk-pack does not build $step"
   fi
@@ -100,7 +102,7 @@ parts() {
 case $mode in
   procedural) procedural ;;
   parts) parts ;;
-  *) echo "usage: test_gen.sh GEN SEAMWALK_PACK procedural|parts [MODELS_DIR]"; exit 2 ;;
+  *) echo "usage: test_gen.sh SEAMWALK_PACK procedural|parts [MODELS_DIR]"; exit 2 ;;
 esac
 echo "$checks checks, $failures failed"
 [ "$checks" -gt 0 ] && [ "$failures" -eq 0 ]

@@ -304,6 +304,36 @@ static void import_file_picks_the_importer_by_extension(void)
     sw_model_free(&m);
 }
 
+/* A file named by several parts is read once; every copy holds what a fresh
+ * import would (placed by its own part), in its own part. */
+static void a_file_used_twice_gives_two_equal_copies(void)
+{
+    sw_model one, two;
+    sw_model_init(&one);
+    sw_model_init(&two);
+    sw_error err = {0};
+    SW_CHECK(load("[part a]\nfile = teacup.txt\n", &one, &err) == SW_OK);
+    SW_CHECK_MSG(load("[part a]\nfile = teacup.txt\n[part b]\nfile = saddle.bpt\n"
+                      "[part c]\nfile = teacup.txt\ntranslate = 0 5 0\ncolor = 1 0 0\n",
+                      &two, &err) == SW_OK,
+                 "%s", err.message);
+    SW_CHECK(two.part_count == 3 && one.patch_count == 26);
+    if (two.part_count == 3 && one.patch_count == 26) {
+        const sw_model_part *a = &two.parts[0], *c = &two.parts[2];
+        SW_CHECK(strcmp(c->name, "c") == 0 && c->color[0] == 1.0f && c->color[1] == 0.0f);
+        SW_CHECK(a->patch_count == 26 && c->patch_count == 26 && c->surface_count == 26);
+        for (size_t i = 0; i < 26; i++) {
+            const double *p = one.patches[i].ctrl, *q = two.patches[a->first_patch + i].ctrl,
+                         *r = two.patches[c->first_patch + i].ctrl;
+            SW_CHECK(memcmp(p, q, 64 * sizeof *p) == 0);
+            SW_CHECK(r[0] == p[0] && r[1] == p[1] + 5.0 && r[2] == p[2]);
+            SW_CHECK(two.patches[c->first_patch + i].rational == one.patches[i].rational);
+        }
+    }
+    sw_model_free(&one);
+    sw_model_free(&two);
+}
+
 /* ---- viewpoints --------------------------------------------------------- */
 
 static void views_become_named_viewpoints(void)
@@ -559,6 +589,7 @@ int main(int argc, char **argv)
     SW_RUN(long_lines_and_nul_bytes_are_errors);
     SW_RUN(errors_inside_part_files_name_both_files);
     SW_RUN(import_file_picks_the_importer_by_extension);
+    SW_RUN(a_file_used_twice_gives_two_equal_copies);
     SW_RUN(views_become_named_viewpoints);
     SW_RUN(view_errors_name_file_and_line);
     SW_RUN(parts_and_views_have_separate_names);

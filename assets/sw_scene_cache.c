@@ -1,0 +1,125 @@
+/* Part files read once per scene load (sw_scene_internal.h). Copies go
+ * through the model's public calls: sw_model_add_surface re-splits and
+ * re-trims each surface, which is cheap next to reading a STEP file, and
+ * single-patch untrimmed surfaces (Bezier inputs) go back through
+ * sw_model_add_patch, so a copy holds exactly what a fresh import would. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "sw_scene.h"
+#include "sw_scene_internal.h"
+
+void scene_cache_free(scene_cache *cache)
+{
+    for (size_t i = 0; i < cache->count; i++) {
+        free(cache->entries[i].path);
+        sw_model_free(&cache->entries[i].model);
+    }
+    free(cache->entries);
+    memset(cache, 0, sizeof *cache);
+}
+
+/* The file's entry in *out, importing the file the first time. */
+static sw_status cache_entry(scene_cache *cache, const char *path,
+                             const sw_import_options *options, sw_import_report *report,
+                             const scene_cache_entry **out, sw_error *err)
+{
+    for (size_t i = 0; i < cache->count; i++) {
+        if (strcmp(cache->entries[i].path, path) == 0) {
+            *out = &cache->entries[i];
+            return SW_OK;
+        }
+    }
+    if (cache->count == cache->capacity) {
+        size_t cap = cache->capacity ? 2 * cache->capacity : 8;
+        scene_cache_entry *bigger = realloc(cache->entries, cap * sizeof *bigger);
+        if (!bigger)
+            return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for %zu part files", cap);
+        cache->entries = bigger;
+        cache->capacity = cap;
+    }
+    scene_cache_entry *e = &cache->entries[cache->count];
+    sw_model_init(&e->model);
+    e->path = malloc(strlen(path) + 1);
+    sw_status st = e->path ? sw_model_begin_part(&e->model, "", NULL, err)
+                           : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    if (st == SW_OK)
+        st = sw_scene_import_file_with(path, options, report, &e->model, err);
+    if (st != SW_OK) {
+        free(e->path);
+        sw_model_free(&e->model);
+        return st;
+    }
+    memcpy(e->path, path, strlen(path) + 1);
+    cache->count++;
+    *out = e;
+    return SW_OK;
+}
+
+/* A surface as sw_model_add_patch makes it: untrimmed, one span on [0,1]^2. */
+static int is_bezier_input(const sw_model_surface *s)
+{
+    return s->loop_count == 0 && s->count_u == s->degree_u + 1 &&
+           s->count_v == s->degree_v + 1 && s->knots_u[0] == 0.0 && s->knots_v[0] == 0.0 &&
+           s->knots_u[s->count_u] == 1.0 && s->knots_v[s->count_v] == 1.0;
+}
+
+static sw_status copy_surface(const sw_model *from, const sw_model_surface *s, sw_model *to,
+                              sw_error *err)
+{
+    if (is_bezier_input(s))
+        return sw_model_add_patch(to, s->degree_u, s->degree_v, s->rational, s->ctrl, err);
+    const sw_model_loop *loops = from->loops + s->first_loop;
+    size_t curves = 0;
+    for (size_t l = 0; l < s->loop_count; l++)
+        curves += loops[l].curve_count;
+    sw_model_loop_input *in = calloc(s->loop_count + 1, sizeof *in);
+    sw_nurbs_curve *views = calloc(curves + 1, sizeof *views);
+    int *computed = calloc(curves + 1, sizeof *computed);
+    sw_status st = SW_OK;
+    if (!in || !views || !computed)
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory copying a surface");
+    for (size_t l = 0, k = 0; st == SW_OK && l < s->loop_count; l++) {
+        in[l] = (sw_model_loop_input){.curves = views + k, .computed = computed + k,
+                                      .curve_count = loops[l].curve_count, .outer = loops[l].outer};
+        for (size_t c = 0; c < loops[l].curve_count; c++, k++) {
+            const sw_model_trim_curve *curve = &from->curves[loops[l].first_curve + c];
+            views[k] = sw_model_curve_view(curve);
+            computed[k] = curve->computed;
+        }
+    }
+    if (st == SW_OK) {
+        sw_nurbs_surface view = sw_model_surface_view(s);
+        /* Already oriented: the stored surface is the reparameterised one. */
+        st = sw_model_add_surface(to, &view, 0, in, s->loop_count, err);
+    }
+    if (st == SW_OK)
+        to->surfaces[to->surface_count - 1].reversed = s->reversed;
+    free(in);
+    free(views);
+    free(computed);
+    return st;
+}
+
+sw_status scene_cache_place(scene_cache *cache, const char *path, const char *name,
+                            const float color[4], const sw_import_options *options,
+                            sw_import_report *report, sw_model *model, sw_error *err)
+{
+    const scene_cache_entry *e = NULL;
+    sw_status st = cache_entry(cache, path, options, report, &e, err);
+    if (st != SW_OK)
+        return st;
+    const sw_model *from = &e->model;
+    for (size_t p = 0; st == SW_OK && p < from->part_count; p++) {
+        const sw_model_part *part = &from->parts[p];
+        /* The placeholder part the import began may stay empty when the
+         * importer starts parts of its own; keep it so the scene part exists. */
+        st = sw_model_begin_part(model, p == 0 ? name : part->name, p == 0 ? color : part->color,
+                                 err);
+        for (size_t s = 0; st == SW_OK && s < part->surface_count; s++)
+            st = copy_surface(from, &from->surfaces[part->first_surface + s], model, err);
+    }
+    if (from->model_tolerance > model->model_tolerance)
+        model->model_tolerance = from->model_tolerance;
+    return st;
+}
