@@ -165,6 +165,66 @@ static void test_mirror_reverses_face(void)
     sw_model_free(&m);
 }
 
+/* A 126 on the unclamped uniform knots 0..7 (periodic style), range [3, 4]:
+ * clamping by knot insertion keeps the uniform cubic B-spline segment
+ * ((1-x)^3 P0 + (3x^3 - 6x^2 + 4) P1 + (-3x^3 + 3x^2 + 3x + 1) P2 + x^3 P3) / 6. */
+static void test_unclamped_knots_clamped(void)
+{
+    const iges_text_entity e[] = {
+        {126, 0, 0, 1, "126,3,3,0,0,1,1,0.,1.,2.,3.,4.,5.,6.,7.,1.,1.,1.,1.,"
+                       "0.,0.,0.,1.,2.,0.,3.,-1.,0.,5.,1.,0.,3.,4.;"},
+        {122, 0, 0, 0, "122,1,0.,0.,1.;"},
+    };
+    static const double P[4][2] = {{0, 0}, {1, 2}, {3, -1}, {5, 1}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(import_ents(e, 2, NULL, &m, NULL, &err) == SW_OK, "%s", err.message);
+    double worst = 0;
+    for (int i = 0; m.surface_count && i <= 20; i++) {
+        double x = i / 20.0, b[4] = {(1 - x) * (1 - x) * (1 - x), 3 * x * x * x - 6 * x * x + 4,
+                                     -3 * x * x * x + 3 * x * x + 3 * x + 1, x * x * x};
+        double wx = 0, wy = 0;
+        for (int k = 0; k < 4; k++)
+            wx += b[k] * P[k][0] / 6, wy += b[k] * P[k][1] / 6;
+        sw_vec3 p = surface_point(&m, 0, x, 0.0);
+        worst = fmax(worst, fabs(p.x - wx) + fabs(p.y - wy));
+    }
+    SW_CHECK(m.surface_count == 1 && m.surfaces[0].domain[0] == 3.0);
+    SW_CHECK_MSG(worst <= 1e-12, "off by %g", worst);
+    sw_model_free(&m);
+}
+
+/* A 114 patch in power form X = 2s, Y = t, Z = s t (s, t in [0, 1]), the
+ * coefficients AX..SX, AY..SY, AZ..SZ (s^k t^l at k + 4 l). */
+static void test_spline_surface_power_form(void)
+{
+    char params[1024];
+    int n = snprintf(params, sizeof params, "114,3,1,1,1,0.,1.,0.,1.");
+    for (int c = 0; c < 48 + 48 + 96; c++) {
+        int k = c % 16, xyz = c / 16;
+        double v = c >= 48 ? 0.0 : xyz == 0 ? (k == 1 ? 2.0 : 0.0)
+                 : xyz == 1 ? (k == 4 ? 1.0 : 0.0) : (k == 5 ? 1.0 : 0.0);
+        n += snprintf(params + n, sizeof params - (size_t)n, ",%g", v);
+    }
+    snprintf(params + n, sizeof params - (size_t)n, ";");
+    const iges_text_entity e[] = {{114, 0, 0, 0, params}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    SW_CHECK_MSG(import_ents(e, 1, NULL, &m, NULL, &err) == SW_OK, "%s", err.message);
+    double worst = 0;
+    for (int i = 0; m.surface_count && i <= 8; i++)
+        for (int j = 0; j <= 8; j++) {
+            double s = i / 8.0, t = j / 8.0;
+            sw_vec3 p = surface_point(&m, 0, s, t);
+            worst = fmax(worst, fabs(p.x - 2 * s) + fabs(p.y - t) + fabs(p.z - s * t));
+        }
+    SW_CHECK(m.surface_count == 1);
+    SW_CHECK_MSG(worst <= 1e-12, "off by %g", worst);
+    sw_model_free(&m);
+}
+
 /* ---- trims ----------------------------------------------------------- */
 
 /* The plane z = 0 over [0, 20]^2 as a bilinear 128 on [0, 10]^2. */
@@ -252,6 +312,27 @@ static void test_natural_boundary_with_hole(void)
     SW_CHECK(m.loop_count == 2);
     SW_CHECK(m.loop_count == 2 && m.loops[0].outer == 1 && m.loops[0].curve_count == 4);
     SW_CHECK(m.loop_count == 2 && m.loops[1].outer == 0);
+    sw_model_free(&m);
+}
+
+/* A 143 whose one 141 boundary has only the model-space circle: its
+ * parameter curve is computed. */
+static void test_bounded_surface(void)
+{
+    const iges_text_entity e[] = {
+        {143, 0, 0, 0, "143,1,3,1,5;"},
+        {128, 0, 0, 1, PLANE_128},
+        {141, 0, 0, 1, "141,0,2,3,1,7,1,0;"},
+        {100, 0, 0, 1, "100,0.,10.,10.,16.,10.,16.,10.;"},
+    };
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    sw_import_report rep;
+    SW_CHECK_MSG(import_ents(e, 4, NULL, &m, &rep, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(rep.faces == 1 && rep.pcurves_computed == 1 && m.loop_count == 1);
+    if (m.surface_count)
+        SW_CHECK(loop_error(&m, 10, 10, 6) <= 0.001);
     sw_model_free(&m);
 }
 
@@ -629,9 +710,12 @@ int main(int argc, char **argv)
     SW_RUN(test_revolution_is_exact);
     SW_RUN(test_matrix_chain_applied);
     SW_RUN(test_mirror_reverses_face);
+    SW_RUN(test_spline_surface_power_form);
+    SW_RUN(test_unclamped_knots_clamped);
     SW_RUN(test_trim_computed_from_model_curve);
     SW_RUN(test_trim_written_in_parameter_space);
     SW_RUN(test_natural_boundary_with_hole);
+    SW_RUN(test_bounded_surface);
     SW_RUN(test_brep_face);
     SW_RUN(test_bad_entity_type_field);
     SW_RUN(test_too_few_knots);
