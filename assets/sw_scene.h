@@ -58,7 +58,8 @@
  * [view]. Relative file names resolve against the scene file's folder. On
  * failure the model may hold the parts loaded before the error; the caller
  * frees it. options (NULL: defaults) go to the IGES and STEP importers;
- * report (may be NULL) sums their reports over all parts. */
+ * report (may be NULL) sums their reports over the files read. A file named
+ * by several parts is read once and copied. */
 sw_status sw_scene_load_with(const char *path, const sw_import_options *options,
                              sw_import_report *report, sw_model *model, sw_error *err);
 sw_status sw_scene_load(const char *path, sw_model *model, sw_error *err);
