@@ -18,6 +18,7 @@ packages=(
   # C++17); the build works without it (SW_WITH_OCCT, "built without STEP support")
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
   libocct-foundation-dev libocct-ocaf-dev g++
+  libtbb-dev                         # OCCT's CMake targets link libtbb.so, which only -dev ships
 )
 
 missing=()
