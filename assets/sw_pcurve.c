@@ -152,6 +152,23 @@ static void newton_step(const sw_surface_point *sp, sw_vec3 r, double step[2])
     step[1] = c > 0 ? -g1 / c : 0;
 }
 
+/* Projected Newton: a parameter on the domain's edge whose step points out
+ * stays there, and the other one takes the 1D Newton step along the edge
+ * (closest points on boundaries, where a clamped 2D step would stall). */
+static void bound_step(const sw_surface_point *sp, sw_vec3 r, const double uv[2],
+                       const double *d, double step[2])
+{
+    int stuck_u = (uv[0] <= d[0] && step[0] < 0) || (uv[0] >= d[1] && step[0] > 0);
+    int stuck_v = (uv[1] <= d[2] && step[1] < 0) || (uv[1] >= d[3] && step[1] > 0);
+    if (stuck_u == stuck_v)
+        return;
+    int k = stuck_u ? 1 : 0;
+    sw_vec3 t = k ? sp->dv : sp->du, tt = k ? sp->dvv : sp->duu;
+    double g = sw_v3_dot(t, r), h = sw_v3_dot(t, t) + sw_v3_dot(tt, r), a = sw_v3_dot(t, t);
+    step[1 - k] = 0;
+    step[k] = h > 0 ? -g / h : a > 0 ? -g / a : 0;
+}
+
 static double newton(const sw_pcurve_surface *ps, sw_vec3 p, double uv[2])
 {
     const double *d = ps->domain;
@@ -161,6 +178,7 @@ static double newton(const sw_pcurve_surface *ps, sw_vec3 p, double uv[2])
     for (int it = 0; it < 40 && best > 1e-15 * ps->size; it++) {
         double step[2];
         newton_step(&sp, sw_v3_sub(sp.p, p), step);
+        bound_step(&sp, sw_v3_sub(sp.p, p), uv, d, step);
         /* Backtracking: a full step that makes things worse is halved. */
         double lambda = 1.0, trial[2], dist = best;
         int improved = 0;
@@ -222,7 +240,7 @@ double sw_pcurve_invert(const sw_pcurve_surface *ps, sw_vec3 p, const double *st
 
 /* ---- fitting ---------------------------------------------------------- */
 
-enum { FIT_MAX_CTRL = 256, POLY_MAX_POINTS = 16384 };
+enum { FIT_MAX_CTRL = 256, POLY_MAX_POINTS = 4096 };
 
 /* Parameters on the surface for the target's point at t, and the distance
  * of that point from the surface. warm carries the previous answer along the
@@ -457,7 +475,7 @@ static sw_status try_fits(const sw_pcurve_surface *ps, const sw_pcurve_target *t
             return SW_OK;
         sw_pcurve_result_free(out);
     }
-    for (int n = 16 * FIT_MAX_CTRL; n <= POLY_MAX_POINTS; n *= 2) {
+    for (int n = 4 * FIT_MAX_CTRL; n <= POLY_MAX_POINTS; n *= 2) {
         sw_status st = take_samples(ps, tg, tol, n, s, err);
         if (st == SW_OK)
             st = polyline(s->n, s->t, s->uv, out, err);
