@@ -13,7 +13,7 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_pack fuzz_newell fuzz_bpt fuzz_scene fuzz_camera_path fuzz_iges)
 
-CC=clang cmake -S . -B build-fuzz -DSW_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSW_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build build-fuzz -j"$(nproc 2>/dev/null || echo 2)" --target "${targets[@]}"
 
 mkdir -p build-fuzz/crashes
