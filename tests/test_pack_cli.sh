@@ -202,6 +202,12 @@ else
   echo "skip progress bar on a terminal: no script(1)"
 fi
 
+# -- gen: the showroom generator's scene builds into a pack of that size ---------------
+run gen showroom --patches 300 -o "$work/gen.ini"
+check "gen showroom writes a scene" eval '[ "$(code)" -eq 0 ] && [ -s "$work/gen.ini" ]'
+run build "$work/gen.ini" -o "$work/gen.swpack"
+check "the generated scene builds to 300 patches" eval '[ "$(code)" -eq 0 ] && has "$work/out" " 300 patches"'
+
 # -- CAD files from the shared models (when the readers are built) -------------------
 # cad_build NAME FILE [ARGS...]: 0 built, 1 this build lacks the reader (skip), 2 failed.
 cad_build() {
