@@ -16,3 +16,8 @@ foreach(mode teaset teapot golden errors)
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_walk.sh ${mode} ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
   set_tests_properties(walk_${mode} PROPERTIES SKIP_RETURN_CODE 77)
 endforeach()
+
+# The native IGES reader against OpenCASCADE on the shared models.
+sw_add_test(test_iges_crosscheck SOURCES test_iges_crosscheck.c LIBS sw_assets sw_core
+  ARGS ${SW_SHARED_MODELS})
+set_tests_properties(test_iges_crosscheck PROPERTIES SKIP_RETURN_CODE 77)
