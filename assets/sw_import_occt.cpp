@@ -1075,8 +1075,10 @@ sw_status measure_file(const char *path, sw_occt_measure *out, sw_error *err)
     if (!box.IsVoid())
         box.Get(out->box_min[0], out->box_min[1], out->box_min[2], out->box_max[0],
                 out->box_max[1], out->box_max[2]);
+    /* The adaptive form: the plain one integrates each face at a fixed Gauss
+     * order and was 0.01-0.2% short on the hammer's faces. */
     GProp_GProps props;
-    BRepGProp::SurfaceProperties(shape, props);
+    BRepGProp::SurfaceProperties(shape, props, 1e-9);
     out->area_mm2 = props.Mass();
     return SW_OK;
 }

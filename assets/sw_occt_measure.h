@@ -16,7 +16,7 @@ typedef struct sw_occt_measure {
     size_t faces;          /* distinct faces (each placed instance counts) */
     double box_min[3];     /* tight bounding box of the geometry, millimetres */
     double box_max[3];     /* (BRepBndLib::AddOptimal, no tolerance enlargement) */
-    double area_mm2;       /* total face area (BRepGProp::SurfaceProperties) */
+    double area_mm2;       /* total face area (BRepGProp::SurfaceProperties, adaptive to 1e-9) */
 } sw_occt_measure;
 
 /* Reads path (STEP or IGES by extension) with OCCT's plain readers, in

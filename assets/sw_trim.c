@@ -122,6 +122,7 @@ void sw_trim_polyline_free(sw_trim_polyline *poly)
         return;
     free(poly->points);
     free(poly->loop_start);
+    free(poly->chunks);
     memset(poly, 0, sizeof *poly);
 }
 
@@ -182,6 +183,39 @@ static sw_status flatten_loop(const sw_model_loop_input *loop, size_t l, double 
     return SW_OK;
 }
 
+static const double *edge_end(const sw_trim_polyline *poly, const sw_trim_chunk *c, size_t k)
+{
+    return poly->points + 2 * (k + 1 < c->loop_end ? k + 1 : c->loop_first);
+}
+
+static sw_status build_chunks(sw_trim_polyline *poly, sw_error *err)
+{
+    size_t n = 0;
+    for (size_t l = 0; l < poly->loop_count; l++) {
+        size_t edges = poly->loop_start[l + 1] - poly->loop_start[l];
+        n += (edges + SW_TRIM_CHUNK_EDGES - 1) / SW_TRIM_CHUNK_EDGES;
+    }
+    poly->chunks = malloc((n + 1) * sizeof *poly->chunks);
+    if (!poly->chunks)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for trim chunks");
+    for (size_t l = 0; l < poly->loop_count; l++) {
+        size_t s = poly->loop_start[l], e = poly->loop_start[l + 1];
+        for (size_t k = s; k < e; k += SW_TRIM_CHUNK_EDGES) {
+            sw_trim_chunk *c = &poly->chunks[poly->chunk_count++];
+            *c = (sw_trim_chunk){k, k + SW_TRIM_CHUNK_EDGES < e ? k + SW_TRIM_CHUNK_EDGES : e, s, e,
+                                 {INFINITY, -INFINITY, INFINITY, -INFINITY}};
+            for (size_t j = c->first; j <= c->end; j++) {
+                const double *p = j < c->end ? poly->points + 2 * j : edge_end(poly, c, j - 1);
+                c->box[0] = p[0] < c->box[0] ? p[0] : c->box[0];
+                c->box[1] = p[0] > c->box[1] ? p[0] : c->box[1];
+                c->box[2] = p[1] < c->box[2] ? p[1] : c->box[2];
+                c->box[3] = p[1] > c->box[3] ? p[1] : c->box[3];
+            }
+        }
+    }
+    return SW_OK;
+}
+
 static void polyline_box(sw_trim_polyline *poly, size_t count)
 {
     double b[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
@@ -228,7 +262,10 @@ sw_status sw_trim_polyline_build(const sw_model_loop_input *loops, size_t loop_c
     out->loop_start[loop_count] = count;
     out->loop_count = loop_count;
     polyline_box(out, count);
-    return SW_OK;
+    st = build_chunks(out, err);
+    if (st != SW_OK)
+        sw_trim_polyline_free(out);
+    return st;
 }
 
 sw_status sw_trim_polyline_from_model(const sw_model *model, size_t surface, double tolerance,
@@ -260,23 +297,30 @@ sw_status sw_trim_polyline_from_model(const sw_model *model, size_t surface, dou
     return st;
 }
 
-/* Calls fn on every edge of every loop, the closing edges included. */
-#define FOR_EACH_EDGE(poly, a, b, body)                                                      \
-    for (size_t l_ = 0; l_ < (poly)->loop_count; l_++) {                                     \
-        size_t s_ = (poly)->loop_start[l_], e_ = (poly)->loop_start[l_ + 1];                 \
-        for (size_t k_ = s_; k_ < e_; k_++) {                                                \
+/* Runs body on every edge of every loop, the closing edges included, of the
+ * chunks whose box passes keep (an expression of the chunk's box cb). */
+#define FOR_EACH_EDGE_KEPT(poly, cb, keep, a, b, body)                                      \
+    for (size_t c_ = 0; c_ < (poly)->chunk_count; c_++) {                                   \
+        const sw_trim_chunk *ch_ = &(poly)->chunks[c_];                                      \
+        const double *cb = ch_->box;                                                         \
+        if (!(keep))                                                                         \
+            continue;                                                                        \
+        for (size_t k_ = ch_->first; k_ < ch_->end; k_++) {                                  \
             const double *a = (poly)->points + 2 * k_;                                       \
-            const double *b = (poly)->points + 2 * (k_ + 1 < e_ ? k_ + 1 : s_);              \
+            const double *b = edge_end(poly, ch_, k_);                                       \
             body                                                                             \
         }                                                                                    \
     }
+#define FOR_EACH_EDGE(poly, a, b, body) FOR_EACH_EDGE_KEPT(poly, cb_, ((void)cb_, 1), a, b, body)
 
 int sw_trim_point_inside(const sw_trim_polyline *poly, double u, double v)
 {
     int inside = 0;
     /* Crossing number with a ray towards +u; an edge counts when one end is
-     * above v and the other not (half-open, so vertices on the ray count once). */
-    FOR_EACH_EDGE(poly, a, b, {
+     * above v and the other not (half-open, so vertices on the ray count once).
+     * A chunk wholly above v, wholly at or below it, or wholly left of u has
+     * no edge that counts. */
+    FOR_EACH_EDGE_KEPT(poly, cb, cb[2] <= v && cb[3] > v && cb[1] >= u, a, b, {
         if ((a[1] > v) != (b[1] > v)) {
             double x = a[0] + (v - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
             if (u < x)
@@ -290,8 +334,9 @@ int sw_trim_point_inside(const sw_trim_polyline *poly, double u, double v)
  * not all strictly on one side of the segment's line. */
 static int segment_hits_box(const double a[2], const double b[2], const double box[4])
 {
-    if (fmax(a[0], b[0]) < box[0] || fmin(a[0], b[0]) > box[1] || fmax(a[1], b[1]) < box[2] ||
-        fmin(a[1], b[1]) > box[3])
+    /* Plain comparisons rather than fmin/fmax: they are libm calls here. */
+    if ((a[0] < box[0] && b[0] < box[0]) || (a[0] > box[1] && b[0] > box[1]) ||
+        (a[1] < box[2] && b[1] < box[2]) || (a[1] > box[3] && b[1] > box[3]))
         return 0;
     double dx = b[0] - a[0], dy = b[1] - a[1];
     int pos = 0, neg = 0;
@@ -304,16 +349,24 @@ static int segment_hits_box(const double a[2], const double b[2], const double b
     return pos && neg;
 }
 
-int sw_trim_box_touches(const sw_trim_polyline *poly, const double box[4])
+sw_trim_coverage sw_trim_box_classify(const sw_trim_polyline *poly, const double box[4])
 {
     double t = poly->tolerance;
     double grown[4] = {box[0] - t, box[1] + t, box[2] - t, box[3] + t};
-    FOR_EACH_EDGE(poly, a, b, {
+    FOR_EACH_EDGE_KEPT(poly, cb, cb[1] >= grown[0] && cb[0] <= grown[1] && cb[3] >= grown[2] &&
+                                     cb[2] <= grown[3], a, b, {
         if (segment_hits_box(a, b, grown))
-            return 1;
+            return SW_TRIM_PARTIAL;
     })
     /* No trim within tolerance: the box is wholly in or wholly out. */
-    return sw_trim_point_inside(poly, 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]));
+    return sw_trim_point_inside(poly, 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]))
+               ? SW_TRIM_INSIDE
+               : SW_TRIM_OUTSIDE;
+}
+
+int sw_trim_box_touches(const sw_trim_polyline *poly, const double box[4])
+{
+    return sw_trim_box_classify(poly, box) != SW_TRIM_OUTSIDE;
 }
 
 /* Sets the cells of rows that the edge's tolerance band may touch. */

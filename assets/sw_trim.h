@@ -37,10 +37,23 @@ sw_status sw_trim_flatten_curve(const sw_nurbs_curve *curve, double tolerance, d
 /* A face's loops as closed polylines: loop l has the vertices
  * points[2 * loop_start[l] ...] up to loop_start[l + 1] (the closing edge
  * from the last vertex back to the first is implied). */
+/* A run of at most SW_TRIM_CHUNK_EDGES consecutive edges of one loop and the
+ * box of their vertices: queries skip whole runs whose box cannot matter, so
+ * a point or box test costs about sqrt(n) edge tests on a smooth loop rather
+ * than n (fine tolerances give loops of many thousand vertices). */
+enum { SW_TRIM_CHUNK_EDGES = 32 };
+typedef struct sw_trim_chunk {
+    size_t first, end;           /* edges first..end-1: edge k runs from vertex k to k + 1 */
+    size_t loop_first, loop_end; /* the loop's vertices: the last edge closes to loop_first */
+    double box[4];               /* u0, u1, v0, v1 of the edges' end points */
+} sw_trim_chunk;
+
 typedef struct sw_trim_polyline {
     double *points;       /* owned: u, v per vertex */
     size_t *loop_start;   /* owned: loop_count + 1 entries */
     size_t loop_count;
+    sw_trim_chunk *chunks; /* owned: every edge in exactly one chunk, in loop order */
+    size_t chunk_count;
     double tolerance;     /* as promised above */
     double box[4];        /* u0, u1, v0, v1 of the vertices, grown by tolerance: holds every trim */
 } sw_trim_polyline;
@@ -64,15 +77,20 @@ void sw_trim_polyline_free(sw_trim_polyline *poly);
  * promised farther than tolerance from it. */
 int sw_trim_point_inside(const sw_trim_polyline *poly, double u, double v);
 
-/* Conservative: 0 only when no point of the box [u0, u1] x [v0, v1] (box[4]
- * as u0, u1, v0, v1) is in the true trimmed face. */
-int sw_trim_box_touches(const sw_trim_polyline *poly, const double box[4]);
-
 typedef enum sw_trim_coverage {
     SW_TRIM_OUTSIDE = 0,  /* no cell touches the face: mask all zero */
     SW_TRIM_PARTIAL = 1,  /* some cells set */
     SW_TRIM_INSIDE = 2,   /* the whole domain is inside and no trim comes near it */
 } sw_trim_coverage;
+
+/* Conservative class of the box [u0, u1] x [v0, v1] (box[4] as u0, u1, v0,
+ * v1): OUTSIDE only when no point of it is in the true trimmed face, INSIDE
+ * only when every point is, PARTIAL when the polyline's tolerance band
+ * crosses it. */
+sw_trim_coverage sw_trim_box_classify(const sw_trim_polyline *poly, const double box[4]);
+
+/* sw_trim_box_classify(poly, box) != SW_TRIM_OUTSIDE. */
+int sw_trim_box_touches(const sw_trim_polyline *poly, const double box[4]);
 
 /* The 32 x 32 cell mask of a patch domain (u0, u1, v0, v1): bit i of rows[j]
  * is cell i along u, row j along v, set when the cell may touch the true face

@@ -372,6 +372,47 @@ static void test_area_trims_on_knot_lines(void)
     }
 }
 
+/* A loop along the domain's border whose right-side vertices sit an ulp
+ * either side of the domain's edge, on a domain not starting at 0 (the
+ * hammer's faces: their vertices round onto the patch's right side in the
+ * patch's local coordinates). The side must count once: the whole area. */
+static void test_area_trim_an_ulp_off_the_right_side(void)
+{
+    const double u0 = -6.5890918110000003, u1 = 1.421085e-14, v0 = 0, v1 = 2.82743;
+    double ku[4] = {u0, u0, u1, u1}, kv[4] = {v0, v0, v1, v1};
+    double ctrl[16] = {u0, v0, 0, 1, u1, v0, 0, 1, u0, v1, 0, 1, u1, v1, 0, 1};
+    sw_nurbs_surface plane = {1, 1, 2, 2, ku, kv, ctrl};
+    enum { SIDE = 12, N = SIDE + 4 };
+    double pts[N * 4], knots[N + 2];
+    int n = 0;
+    const double fixed[3][2] = {{u0, v0}, {u1, v0}, {u1, v1}};
+    for (int k = 0; k < 2; k++)
+        pts[4 * n] = fixed[k][0], pts[4 * n + 1] = fixed[k][1], n++;
+    for (int k = 1; k < SIDE; k++) {
+        double off = k % 3 == 0 ? u1 : nextafter(u1, k % 3 == 1 ? INFINITY : -INFINITY);
+        pts[4 * n] = off, pts[4 * n + 1] = v0 + (v1 - v0) * k / SIDE, n++;
+    }
+    pts[4 * n] = fixed[2][0], pts[4 * n + 1] = fixed[2][1], n++;
+    pts[4 * n] = u0, pts[4 * n + 1] = v1, n++;
+    pts[4 * n] = u0, pts[4 * n + 1] = v0, n++;
+    for (int k = 0; k < n; k++)
+        pts[4 * k + 2] = 0, pts[4 * k + 3] = 1;
+    knots[0] = 0;
+    for (int k = 0; k < n; k++)
+        knots[k + 1] = k;
+    knots[n + 1] = n - 1;
+    sw_nurbs_curve curve = {1, n, knots, pts};
+    sw_model_loop_input loop = {.curves = &curve, .curve_count = 1, .outer = 1};
+    sw_trim_polyline poly;
+    sw_error err = {0};
+    SW_CHECK_MSG(sw_trim_polyline_build(&loop, 1, 1e-9, 0, &poly, &err) == SW_OK, "%s",
+                 err.message);
+    double area = 0, exact = (u1 - u0) * (v1 - v0);
+    SW_CHECK(sw_trim_area(&plane, &poly, 1e-10, &area, &err) == SW_OK);
+    SW_CHECK_MSG(fabs(area - exact) <= 1e-9 * exact, "area %.12g, exact %.12g", area, exact);
+    sw_trim_polyline_free(&poly);
+}
+
 int main(void)
 {
     SW_RUN(test_circle_polyline_within_tolerance);
@@ -386,5 +427,6 @@ int main(void)
     SW_RUN(test_area_random_bicubic_matches_grid);
     SW_RUN(test_area_boundary_loop_equals_untrimmed);
     SW_RUN(test_area_trims_on_knot_lines);
+    SW_RUN(test_area_trim_an_ulp_off_the_right_side);
     return sw_test_finish();
 }
