@@ -126,10 +126,13 @@ static int face_rank(int type)
     }
 }
 
-/* Read as parts of something else, or carry no shape. */
+/* Read as parts of something else, or carry no shape: a 402 associativity (the
+ * exporters' group of faces) carries no geometry and the faces it gathers
+ * are read on their own, so it is not warned about (--strict accepts the
+ * OCCT sample files, which each hold one group). */
 static int known_type(int type)
 {
-    static const int types[] = {0, 116, 124, 141, 142, 502, 504, 508};
+    static const int types[] = {0, 116, 124, 141, 142, 402, 502, 504, 508};
     for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
         if (types[i] == type)
             return 1;

@@ -219,7 +219,7 @@ cad_build() {
   fi
   echo "  $name failed: $(cat "$work/err")"; return 2
 }
-for model in occt_hammer.iges:native occt_hammer.iges:occt occt_screw.step:occt; do
+for model in occt_hammer.iges:native occt_hammer.iges:occt occt_screw.step:occt axom_boxed_sphere.step:occt; do
   file=${model%%:*} reader=${model##*:}
   if [ -z "$shared" ] || [ ! -f "$shared/$file" ]; then echo "skip $file: not in ${shared:-(no folder)}"; continue; fi
   name=${file%%.*}_$reader
