@@ -21,3 +21,16 @@ endforeach()
 sw_add_test(test_iges_crosscheck SOURCES test_iges_crosscheck.c LIBS sw_assets sw_core
   ARGS ${SW_SHARED_MODELS})
 set_tests_properties(test_iges_crosscheck PROPERTIES SKIP_RETURN_CODE 77)
+
+# Every shared CAD model built, walked headless and checked (tests/test_models.sh).
+add_executable(occt_measure occt_measure.c)
+target_link_libraries(occt_measure PRIVATE sw_assets sw_core)
+sw_apply_warnings(occt_measure)
+file(GLOB SW_SHARED_MODEL_FILES ${SW_SHARED_MODELS}/*.igs ${SW_SHARED_MODELS}/*.iges
+  ${SW_SHARED_MODELS}/*.stp ${SW_SHARED_MODELS}/*.step ${SW_SHARED_MODELS}/*.txt)
+foreach(file ${SW_SHARED_MODEL_FILES})
+  get_filename_component(model ${file} NAME)
+  add_test(NAME model_${model}
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_models.sh ${file} ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+  set_tests_properties(model_${model} PROPERTIES SKIP_RETURN_CODE 77)
+endforeach()

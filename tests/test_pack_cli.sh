@@ -8,7 +8,7 @@
 set -uo pipefail
 tool=$1 samples=$2 shared=${3:-}
 # Under ASan: OpenCASCADE's own allocations are not ours to chase (see the file).
-export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")" && pwd)/lsan_occt.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")" && pwd)/occt-lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 work=$(mktemp -d "${TMPDIR:-/tmp}/swpack_cli.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT
 failures=0 checks=0
