@@ -3,6 +3,7 @@
  * re-trims each surface, which is cheap next to reading a STEP file, and
  * single-patch untrimmed surfaces (Bezier inputs) go back through
  * sw_model_add_patch, so a copy holds exactly what a fresh import would. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -110,12 +111,17 @@ sw_status scene_cache_place(scene_cache *cache, const char *path, const char *na
     if (st != SW_OK)
         return st;
     const sw_model *from = &e->model;
-    for (size_t p = 0; st == SW_OK && p < from->part_count; p++) {
+    /* The import began a placeholder part (0); an importer that starts parts
+     * of its own (OCCT: one per STEP product) leaves it empty. Then the scene
+     * part is those parts, named "scene part/product" and in the scene's
+     * colour; an empty placeholder is dropped unless the file gave nothing. */
+    size_t named = from->part_count > 1 && from->parts[0].surface_count == 0 ? 1 : 0;
+    for (size_t p = named; st == SW_OK && p < from->part_count; p++) {
         const sw_model_part *part = &from->parts[p];
-        /* The placeholder part the import began may stay empty when the
-         * importer starts parts of its own; keep it so the scene part exists. */
-        st = sw_model_begin_part(model, p == 0 ? name : part->name, p == 0 ? color : part->color,
-                                 err);
+        char full[sizeof part->name];
+        if (named)
+            snprintf(full, sizeof full, "%.27s/%.27s", name, part->name);
+        st = sw_model_begin_part(model, named ? full : name, color, err);
         for (size_t s = 0; st == SW_OK && s < part->surface_count; s++)
             st = copy_surface(from, &from->surfaces[part->first_surface + s], model, err);
     }

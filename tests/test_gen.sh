@@ -94,6 +94,17 @@ parts() {
      "$pack" build "$step" -o "$work/screw.swpack" > /dev/null 2>&1; then
     check "copies of a STEP part, an IGES part and the teapot: 4000 patches" \
       builds_to 4000 mixed --part "$teapot" --part "$iges" --part "$step" --seed 4
+    check "a STEP part is named scene part/product, and no part is empty" \
+      python3 - "$work/mixed.swpack" "$pack" <<'PY'
+import json, subprocess, sys
+j = json.loads(subprocess.run([sys.argv[2], "info", "--json", sys.argv[1]], capture_output=True,
+                              text=True, check=True).stdout)
+names = [p["name"] for p in j["parts"]]
+empty = [p["name"] for p in j["parts"] if p["patches"] == 0]
+screws = [n for n in names if n.startswith("occt_screw")]
+assert not empty, "empty parts: %s" % empty[:5]
+assert screws and all("/" in n for n in screws), screws[:5]
+PY
   else
     echo "skip STEP parts: this seamwalk-pack does not build $step"
   fi
