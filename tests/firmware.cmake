@@ -20,7 +20,8 @@ endforeach()
 # The native IGES reader against OpenCASCADE on the shared models.
 sw_add_test(test_iges_crosscheck SOURCES test_iges_crosscheck.c LIBS sw_assets sw_core
   ARGS ${SW_SHARED_MODELS})
-set_tests_properties(test_iges_crosscheck PROPERTIES SKIP_RETURN_CODE 77)
+set_tests_properties(test_iges_crosscheck PROPERTIES SKIP_RETURN_CODE 77
+  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/occt-lsan.supp:print_suppressions=0")
 
 # Every shared CAD model built, walked headless and checked (tests/test_models.sh).
 add_executable(occt_measure occt_measure.c)
