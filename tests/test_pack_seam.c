@@ -149,6 +149,26 @@ static void test_no_graph_writes_no_seam_sections(void)
     free(with);
 }
 
+/* A graph with nothing in it (every section empty, both surfaces without
+ * loops) is valid: empty sections are views of zero records. */
+static void test_empty_graph_is_valid(void)
+{
+    sample s;
+    sample_seam g;
+    make_sample(&s);
+    make_sample_seam(&g);
+    g.surface_loops[1] = g.surface_loops[2] = 0;
+    g.graph = (sw_seam_graph){ .surface_loops = g.surface_loops, .surface_count = 2 };
+    size_t size = 0;
+    uint8_t *bytes = serialize_with_seam(&s, &g, &size);
+    sw_pack pack;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.seam_header && pack.seam.vertex_count == 0 && pack.seam.loop_count == 0 &&
+             pack.seam.surface_loops[2] == 0);
+    free(bytes);
+}
+
 /* A version-1 reader that predates the seam sections sees unknown types;
  * moving them to unknown numbers shows such a pack is still accepted. */
 static void renumber_seam(uint8_t *b)
@@ -215,8 +235,14 @@ static void test_group_rules(void)
     free(bytes);
 }
 
+static void claim_all_vertices(uint8_t *b) { seam_record_of(b)->vertex_count = UINT32_MAX; }
+
 static void test_section_sizes(void)
 {
+    /* 64-bit products: a huge count cannot wrap around to the real size. */
+    expect_bytes_rejected(claim_all_vertices, SW_ERR_FORMAT, "section 14 (SEAM_VERTICES): 448 "
+                                                             "bytes, expected SEAM.vertex_count "
+                                                             "4294967295 x 32 = 137438953440");
     expect_bytes_rejected(shrink_seam, SW_ERR_FORMAT, "section 13 (SEAM): 60 bytes, expected 64");
     expect_bytes_rejected(shrink_vertices, SW_ERR_FORMAT, "section 14 (SEAM_VERTICES): 416 bytes, "
                                                           "expected SEAM.vertex_count 14 x 32 = "
@@ -480,6 +506,7 @@ int main(void)
 {
     SW_RUN(test_graph_round_trips);
     SW_RUN(test_no_graph_writes_no_seam_sections);
+    SW_RUN(test_empty_graph_is_valid);
     SW_RUN(test_seam_sections_are_skippable);
     SW_RUN(test_group_rules);
     SW_RUN(test_section_sizes);
