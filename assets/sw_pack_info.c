@@ -99,6 +99,30 @@ void sw_pack_gather_stats(const sw_pack *pack, sw_pack_part_stats *parts,
     stats_finish(total);
 }
 
+static double ratio(uint64_t bytes, uint32_t n) { return n ? (double)bytes / n : 0.0; }
+
+int sw_pack_gather_seam_stats(const sw_pack *pack, sw_pack_seam_stats *out)
+{
+    memset(out, 0, sizeof *out);
+    if (!pack->seam_header)
+        return 0;
+    const sw_seam_graph *g = &pack->seam;
+    for (uint32_t i = 0; i < pack->header->section_count; i++) {
+        uint32_t t = pack->sections[i].type;
+        if (t >= SW_SECTION_SEAM && t <= SW_SECTION_SEAM_SURFACE_LOOPS)
+            out->bytes += pack->sections[i].size;
+    }
+    *out = (sw_pack_seam_stats){
+        .vertices = g->vertex_count, .original_vertices = g->original_count,
+        .created_vertices = g->vertex_count - g->original_count, .slots = g->slot_count,
+        .loops = g->loop_count, .edges = g->edge_count, .collapses = g->collapse_count,
+        .tolerance = g->tolerance, .bytes = out->bytes,
+        .bytes_per_edge = ratio(out->bytes, g->edge_count),
+        .bytes_per_surface = ratio(out->bytes, g->surface_count),
+        .bytes_per_bezier_patch = ratio(out->bytes, pack->meta->patch_count) };
+    return 1;
+}
+
 /* ---- text ---------------------------------------------------------------- */
 
 static void print_degrees(FILE *out, const sw_pack_part_stats *s)
@@ -130,11 +154,33 @@ static void print_part_text(FILE *out, const sw_pack *pack, uint32_t i, const sw
 static void print_sections_text(FILE *out, const sw_pack *pack)
 {
     fprintf(out, "  %-16s %" PRIu32 "\n", "sections", pack->header->section_count);
+    /* 15 fits every name up to PART_TRANSFORMS; only the seam group's
+     * longer names widen the column. */
+    int width = 15;
+    for (uint32_t i = 0; i < pack->header->section_count; i++) {
+        int len = (int)strlen(sw_section_type_name(pack->sections[i].type));
+        width = len > width ? len : width;
+    }
     for (uint32_t i = 0; i < pack->header->section_count; i++) {
         const sw_pack_section *sec = &pack->sections[i];
-        fprintf(out, "    %-15s offset %10" PRIu64 "  size %10" PRIu64 "\n",
+        fprintf(out, "    %-*s offset %10" PRIu64 "  size %10" PRIu64 "\n", width,
                 sw_section_type_name(sec->type), sec->offset, sec->size);
     }
+}
+
+/* Only for packs with a Seam Graph, so other packs' reports are unchanged. */
+static void print_seam_text(FILE *out, const sw_pack *pack)
+{
+    sw_pack_seam_stats s;
+    if (!sw_pack_gather_seam_stats(pack, &s))
+        return;
+    fprintf(out, "  %-16s %" PRIu32 " vertices (%" PRIu32 " original, %" PRIu32 " created), %"
+            PRIu32 " slots, %" PRIu32 " loops, %" PRIu32 " edges, %" PRIu32 " collapses, "
+            "tolerance %g\n", "seam graph", s.vertices, s.original_vertices, s.created_vertices,
+            s.slots, s.loops, s.edges, s.collapses, s.tolerance);
+    fprintf(out, "  %-16s %" PRIu64 " bytes: %.1f per boundary edge, %.1f per surface, %.1f per "
+            "bezier patch\n", "seam memory", s.bytes, s.bytes_per_edge, s.bytes_per_surface,
+            s.bytes_per_bezier_patch);
 }
 
 static void print_text(FILE *out, const char *path, const sw_pack *pack,
@@ -159,6 +205,7 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
     fprintf(out, "  %-16s %" PRIu32 " loops, %" PRIu32 " curves (%" PRIu32 " computed), %" PRIu32
             " masks\n", "trimming", t->loops, t->curves, t->computed_curves, pack->trim_mask_count);
     fprintf(out, "  %-16s %" PRIu32 "\n", "adjacency", m->adjacency_count);
+    print_seam_text(out, pack);
     fprintf(out, "  %-16s %" PRIu32, "viewpoints", pack->viewpoint_count);
     for (uint32_t i = 0; i < pack->viewpoint_count; i++)
         fprintf(out, "%s%s", i ? ", " : ": ", pack->viewpoints[i].name);
@@ -270,6 +317,22 @@ static void json_viewpoints(FILE *out, const sw_pack *pack)
     fprintf(out, "%s],\n", pack->viewpoint_count ? "\n  " : "");
 }
 
+/* "seam": {...}, only for packs with a Seam Graph. */
+static void json_seam(FILE *out, const sw_pack *pack)
+{
+    sw_pack_seam_stats s;
+    if (!sw_pack_gather_seam_stats(pack, &s))
+        return;
+    fprintf(out, "  \"seam\": {\"vertices\": %" PRIu32 ", \"original_vertices\": %" PRIu32
+            ", \"created_vertices\": %" PRIu32 ", \"slots\": %" PRIu32 ", \"loops\": %" PRIu32
+            ", \"edges\": %" PRIu32 ", \"collapses\": %" PRIu32 ",\n", s.vertices,
+            s.original_vertices, s.created_vertices, s.slots, s.loops, s.edges, s.collapses);
+    fprintf(out, "           \"tolerance\": %.9g, \"bytes\": %" PRIu64 ", \"bytes_per_edge\": "
+            "%.9g, \"bytes_per_surface\": %.9g, \"bytes_per_bezier_patch\": %.9g},\n",
+            s.tolerance, s.bytes, s.bytes_per_edge, s.bytes_per_surface,
+            s.bytes_per_bezier_patch);
+}
+
 static void print_json(FILE *out, const char *path, const sw_pack *pack,
                        const sw_pack_part_stats *parts, const sw_pack_part_stats *t)
 {
@@ -292,6 +355,7 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack,
     json_counts(out, t, "  ");
     fprintf(out, ",\n  \"trim_masks\": %" PRIu32 ",\n", pack->trim_mask_count);
     fprintf(out, "  \"adjacency\": %" PRIu32 ",\n", m->adjacency_count);
+    json_seam(out, pack);
     json_viewpoints(out, pack);
     json_sections(out, pack);
     fprintf(out, "  \"units\": \"%s\",\n  \"model_tolerance\": %.9g,\n",

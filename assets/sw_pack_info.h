@@ -1,7 +1,8 @@
 /* What `seamwalk-pack info` reports about a validated pack: counts for the
  * whole pack and per part (surfaces, Bezier patches, trimming loops and
  * curves, degrees, rational counts, parameter curves computed by point
- * inversion, bounding box), printed as aligned text or as JSON with stable
+ * inversion, bounding box) and the Seam Graph's counts and bytes when the
+ * pack has one, printed as aligned text or as JSON with stable
  * snake_case keys. Split from seamwalk_pack_main.c so the numbers can be
  * tested without parsing output. Host only. */
 #ifndef SW_PACK_INFO_H
@@ -30,6 +31,21 @@ typedef struct sw_pack_part_stats {
  * caller's array), *total for the whole pack. */
 void sw_pack_gather_stats(const sw_pack *pack, sw_pack_part_stats *parts,
                           sw_pack_part_stats *total);
+
+/* The Seam Graph's size, for comparing with the paper's memory figures
+ * (Guthe et al. 2002, section 7: about 320 bytes per boundary edge). */
+typedef struct sw_pack_seam_stats {
+    uint32_t vertices, original_vertices, created_vertices;
+    uint32_t slots, loops, edges, collapses;
+    float tolerance;
+    uint64_t bytes;                 /* the eight seam sections' sizes, padding not counted */
+    double bytes_per_edge;          /* bytes / edges (the paper's boundary edges) */
+    double bytes_per_surface;       /* bytes / surfaces (the paper's patches) */
+    double bytes_per_bezier_patch;  /* bytes / Bezier patches; each ratio 0 when dividing by 0 */
+} sw_pack_seam_stats;
+
+/* Fills *out and returns 1 when the pack has a Seam Graph; 0 otherwise. */
+int sw_pack_gather_seam_stats(const sw_pack *pack, sw_pack_seam_stats *out);
 
 /* "mm", "m" or "unspecified" for META.units. */
 const char *sw_pack_units_name(uint32_t units);

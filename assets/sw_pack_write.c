@@ -18,7 +18,9 @@
 #include "sw_pack_sections.h"
 #include "sw_pack_validate.h"
 
-enum { MAX_SECTIONS = 13, HEADER_BYTES = 64, SECTION_BYTES = 32 };
+/* Types 1..13 (the first five always written), then the seam group's eight. */
+enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8,
+       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS, HEADER_BYTES = 64, SECTION_BYTES = 32 };
 
 static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
 
@@ -28,12 +30,44 @@ typedef struct section_source {
     uint64_t size;
 } section_source;
 
+/* SEAM's record of g, for the writer to store. */
+static sw_pack_seam seam_record(const sw_seam_graph *g)
+{
+    return (sw_pack_seam){ .vertex_count = g->vertex_count, .original_count = g->original_count,
+                           .slot_count = g->slot_count, .loop_count = g->loop_count,
+                           .edge_count = g->edge_count, .collapse_count = g->collapse_count,
+                           .slot_ref_count = g->slot_ref_count,
+                           .surface_count = g->surface_count, .tolerance = g->tolerance };
+}
+
+/* The eight seam sections of g (whose record is *record) into src[0..8). */
+static void list_seam_sections(const sw_seam_graph *g, const sw_pack_seam *record,
+                               section_source src[SEAM_SECTIONS])
+{
+    const section_source all[SEAM_SECTIONS] = {
+        { SW_SECTION_SEAM, record, sizeof *record },
+        { SW_SECTION_SEAM_VERTICES, g->vertices,
+          (uint64_t)g->vertex_count * sizeof(sw_seam_vertex) },
+        { SW_SECTION_SEAM_SLOTS, g->slots, (uint64_t)g->slot_count * sizeof(sw_seam_slot) },
+        { SW_SECTION_SEAM_LOOPS, g->loops, (uint64_t)g->loop_count * sizeof(sw_seam_loop) },
+        { SW_SECTION_SEAM_EDGES, g->edges, (uint64_t)g->edge_count * sizeof(sw_seam_edge) },
+        { SW_SECTION_SEAM_COLLAPSES, g->collapses,
+          (uint64_t)g->collapse_count * sizeof(sw_seam_collapse) },
+        { SW_SECTION_SEAM_SLOT_REFS, g->slot_refs, (uint64_t)g->slot_ref_count * sizeof(uint32_t) },
+        { SW_SECTION_SEAM_SURFACE_LOOPS, g->surface_loops,
+          ((uint64_t)g->surface_count + 1) * sizeof(uint32_t) },
+    };
+    memcpy(src, all, sizeof all);
+}
+
 /* The sections contents asks for, in the order they are written: the five
- * of the walking skeleton always, each optional one when its array is set. */
-static int list_sections(const sw_pack_contents *c, section_source src[MAX_SECTIONS])
+ * of the walking skeleton always, each optional one when its array is set,
+ * the seam group when there is a graph (seam_rec holds its SEAM record). */
+static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
+                         section_source src[MAX_SECTIONS])
 {
     const sw_pack_meta *m = &c->meta;
-    const section_source all[MAX_SECTIONS] = {
+    const section_source all[PLAIN_SECTIONS] = {
         { SW_SECTION_META, m, sizeof *m },
         { SW_SECTION_PARTS, c->parts, (uint64_t)m->part_count * sizeof(sw_pack_part) },
         { SW_SECTION_PATCHES, c->patches, (uint64_t)m->patch_count * sizeof(sw_pack_patch) },
@@ -56,9 +90,14 @@ static int list_sections(const sw_pack_contents *c, section_source src[MAX_SECTI
           (uint64_t)m->part_count * 16 * sizeof(float) },
     };
     int n = 0;
-    for (int i = 0; i < MAX_SECTIONS; i++)
-        if (i < 5 || all[i].bytes)
+    for (int i = 0; i < PLAIN_SECTIONS; i++)
+        if (i < FIXED_SECTIONS || all[i].bytes)
             src[n++] = all[i];
+    if (c->seam) {
+        *seam_rec = seam_record(c->seam);
+        list_seam_sections(c->seam, seam_rec, &src[n]);
+        n += SEAM_SECTIONS;
+    }
     return n;
 }
 
@@ -93,7 +132,8 @@ sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *ou
     *out_size = 0;
     section_source src[MAX_SECTIONS];
     sw_pack_section table[MAX_SECTIONS];
-    int n = list_sections(c, src);
+    sw_pack_seam seam_rec;
+    int n = list_sections(c, &seam_rec, src);
     uint64_t total = 0;
     sw_status s = lay_out(src, n, table, &total, err);
     if (s != SW_OK)

@@ -35,11 +35,17 @@ typedef struct sw_pack_contents {
     const sw_pack_viewpoint *viewpoints;
     uint32_t viewpoint_count;
     const float *part_transforms;               /* 16 * meta.part_count floats */
+    /* The Seam Graph, or NULL for none: written as the SEAM header (its
+     * counts and tolerance) and the seven SEAM_* sections. Not owned:
+     * sw_pack_contents_free leaves it alone; the graph's surface_count must
+     * be surface_count above for the pack to validate. */
+    const sw_seam_graph *seam;
 } sw_pack_contents;
 
 /* Serialises contents exactly as given (no validation, so tests can write
  * broken packs): header, section table (META, PARTS, PATCHES, CONTROL,
- * ADJACENCY, then the optional sections present in sw_section_type order),
+ * ADJACENCY, then the optional sections present in sw_section_type order,
+ * the seam sections last when contents->seam is set),
  * sections 64-byte aligned, checksums. *out is malloc'd; the caller frees it. */
 sw_status sw_pack_serialize(const sw_pack_contents *contents, uint8_t **out, size_t *out_size,
                             sw_error *err);

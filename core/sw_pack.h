@@ -15,6 +15,7 @@
 
 #include "sw_arena.h"
 #include "sw_error.h"
+#include "sw_seam_graph.h"
 
 #define SW_PACK_MAGIC "SWPACK\r\n"        /* 8 bytes, no terminator in the file */
 #define SW_PACK_VERSION 1u
@@ -42,6 +43,19 @@ enum sw_section_type {
     SW_SECTION_TRIM_MASKS = 11,     /* sw_pack_trim_mask[] */
     SW_SECTION_VIEWPOINTS = 12,     /* sw_pack_viewpoint[] */
     SW_SECTION_PART_TRANSFORMS = 13,/* float[16 * part_count], column-major, as sw_mat4, affine */
+    /* The Seam Graph (core/sw_seam_graph.h). Optional as a group: all eight
+     * appear together or none does, and they need SURFACES (loops index it).
+     * SEAM holds every count; each other section is exactly its count times
+     * its record size. An older version-1 reader skips them as unknown types
+     * and draws with the trim masks instead. */
+    SW_SECTION_SEAM = 14,               /* one sw_pack_seam */
+    SW_SECTION_SEAM_VERTICES = 15,      /* sw_seam_vertex[vertex_count] */
+    SW_SECTION_SEAM_SLOTS = 16,         /* sw_seam_slot[slot_count] */
+    SW_SECTION_SEAM_LOOPS = 17,         /* sw_seam_loop[loop_count] */
+    SW_SECTION_SEAM_EDGES = 18,         /* sw_seam_edge[edge_count] */
+    SW_SECTION_SEAM_COLLAPSES = 19,     /* sw_seam_collapse[collapse_count] */
+    SW_SECTION_SEAM_SLOT_REFS = 20,     /* uint32_t[slot_ref_count] */
+    SW_SECTION_SEAM_SURFACE_LOOPS = 21, /* uint32_t[surface_count + 1] */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
@@ -155,6 +169,20 @@ typedef struct sw_pack_viewpoint {    /* 96 bytes: a named camera of a showroom 
     uint8_t reserved[8];              /* zero */
 } sw_pack_viewpoint;
 
+/* The Seam Graph's counts and sewing tolerance (section SEAM). */
+typedef struct sw_pack_seam {         /* 64 bytes */
+    uint32_t vertex_count;            /* original_count + collapse_count */
+    uint32_t original_count;
+    uint32_t slot_count;
+    uint32_t loop_count;
+    uint32_t edge_count;
+    uint32_t collapse_count;
+    uint32_t slot_ref_count;          /* == slot_count: every slot is listed once */
+    uint32_t surface_count;           /* == the SURFACES count */
+    float tolerance;                  /* the sewing tolerance, finite >= 0 */
+    uint8_t reserved[28];             /* zero */
+} sw_pack_seam;
+
 /* Arena bytes the runtime keeps per patch beyond the pack itself (tessellation
  * level, visibility); the runtime asserts its per-patch state fits. */
 #define SW_RUNTIME_BYTES_PER_PATCH 16u
@@ -185,11 +213,21 @@ typedef struct sw_pack {
     const sw_pack_viewpoint *viewpoints;
     uint32_t viewpoint_count;
     const float *part_transforms;                /* 16 * part_count, or NULL */
+    /* The Seam Graph: views into the SEAM_* sections, every pointer NULL and
+     * every count 0 when the pack has none. */
+    const sw_pack_seam *seam_header;             /* NULL when absent */
+    sw_seam_graph seam;
 } sw_pack;
 
 /* runtime_bytes for a pack of total_size bytes and patch_count patches: the
  * pack itself, 64-byte aligned, plus the per-patch state. Writer and reader
- * both use it. */
+ * both use it.
+ * SEAM RUNTIME HOOK: the Seam Graph's per-frame selection state (the active
+ * front, one entry per seam vertex, core/sw_seam_select.c) is not counted
+ * yet; its owner adds it here once its size is known. Mind that the reader
+ * requires equality with this formula, so a pack whose runtime_bytes counts
+ * seam state is refused by readers built before the change: that change
+ * needs a version bump or a relaxed rule (see PACK_FORMAT.md, runtime_bytes). */
 uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count);
 
 /* Validates everything (every rule in PACK_FORMAT.md, "Validation rules")

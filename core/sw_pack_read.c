@@ -1,7 +1,8 @@
 /* The pack container: header, section table, section bounds and checksums,
  * which sections must or may appear, and loading a file into the arena. The
  * records inside the sections are checked by sw_pack_validate.c and, for the
- * trimmed-surface group, sw_pack_validate_trim.c. Format: assets/PACK_FORMAT.md. */
+ * trimmed-surface group and the Seam Graph, sw_pack_validate_trim.c and
+ * sw_pack_validate_seam.c. Format: assets/PACK_FORMAT.md. */
 #include "sw_pack.h"
 
 #include <errno.h>
@@ -96,11 +97,45 @@ SW_PIN(sw_pack_viewpoint, target, 60);
 SW_PIN(sw_pack_viewpoint, up, 72);
 SW_PIN(sw_pack_viewpoint, fov_deg, 84);
 SW_PIN(sw_pack_viewpoint, reserved, 88);
+_Static_assert(sizeof(sw_pack_seam) == 64, "sw_pack_seam");
+SW_PIN(sw_pack_seam, vertex_count, 0);
+SW_PIN(sw_pack_seam, original_count, 4);
+SW_PIN(sw_pack_seam, slot_count, 8);
+SW_PIN(sw_pack_seam, loop_count, 12);
+SW_PIN(sw_pack_seam, edge_count, 16);
+SW_PIN(sw_pack_seam, collapse_count, 20);
+SW_PIN(sw_pack_seam, slot_ref_count, 24);
+SW_PIN(sw_pack_seam, surface_count, 28);
+SW_PIN(sw_pack_seam, tolerance, 32);
+SW_PIN(sw_pack_seam, reserved, 36);
+/* The Seam Graph's records are core/sw_seam_graph.h's structs, stored as is. */
+_Static_assert(sizeof(sw_seam_vertex) == 32, "sw_seam_vertex");
+SW_PIN(sw_seam_vertex, p, 0);
+SW_PIN(sw_seam_vertex, child, 12);
+SW_PIN(sw_seam_vertex, error, 16);
+SW_PIN(sw_seam_vertex, first_slot_ref, 20);
+SW_PIN(sw_seam_vertex, slot_ref_count, 24);
+SW_PIN(sw_seam_vertex, reserved, 28);
+_Static_assert(sizeof(sw_seam_slot) == 12, "sw_seam_slot");
+SW_PIN(sw_seam_slot, vertex, 0);
+SW_PIN(sw_seam_slot, uv, 4);
+_Static_assert(sizeof(sw_seam_loop) == 16, "sw_seam_loop");
+SW_PIN(sw_seam_loop, surface, 0);
+SW_PIN(sw_seam_loop, first_slot, 4);
+SW_PIN(sw_seam_loop, slot_count, 8);
+SW_PIN(sw_seam_loop, flags, 12);
+_Static_assert(sizeof(sw_seam_edge) == 8, "sw_seam_edge");
+SW_PIN(sw_seam_edge, a, 0);
+SW_PIN(sw_seam_edge, b, 4);
+_Static_assert(sizeof(sw_seam_collapse) == 12, "sw_seam_collapse");
+SW_PIN(sw_seam_collapse, v1, 0);
+SW_PIN(sw_seam_collapse, v2, 4);
+SW_PIN(sw_seam_collapse, error, 8);
 _Static_assert(sizeof(float) == 4, "CONTROL holds IEEE binary32");
 _Static_assert(sizeof(SW_PACK_MAGIC) - 1 == 8, "magic is 8 bytes");
 
 enum { HEADER_BYTES = 64, SECTION_BYTES = 32, CONTROL_POINT_BYTES = 16,
-       TRANSFORM_BYTES = 16 * 4, LAST_KNOWN = SW_SECTION_PART_TRANSFORMS };
+       TRANSFORM_BYTES = 16 * 4, LAST_KNOWN = SW_SECTION_SEAM_SURFACE_LOOPS };
 
 const char *sw_section_type_name(uint32_t type)
 {
@@ -118,6 +153,14 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_TRIM_MASKS: return "TRIM_MASKS";
     case SW_SECTION_VIEWPOINTS: return "VIEWPOINTS";
     case SW_SECTION_PART_TRANSFORMS: return "PART_TRANSFORMS";
+    case SW_SECTION_SEAM: return "SEAM";
+    case SW_SECTION_SEAM_VERTICES: return "SEAM_VERTICES";
+    case SW_SECTION_SEAM_SLOTS: return "SEAM_SLOTS";
+    case SW_SECTION_SEAM_LOOPS: return "SEAM_LOOPS";
+    case SW_SECTION_SEAM_EDGES: return "SEAM_EDGES";
+    case SW_SECTION_SEAM_COLLAPSES: return "SEAM_COLLAPSES";
+    case SW_SECTION_SEAM_SLOT_REFS: return "SEAM_SLOT_REFS";
+    case SW_SECTION_SEAM_SURFACE_LOOPS: return "SEAM_SURFACE_LOOPS";
     }
     return "unknown";
 }
@@ -290,6 +333,28 @@ static sw_status find_sections(const sw_pack_section *sections, uint32_t count,
     return SW_OK;
 }
 
+/* The Seam Graph: all eight sections or none (each is useless without the
+ * others, and SEAM's counts size them all), and its loops index SURFACES. */
+static sw_status check_seam_group(const int32_t index[LAST_KNOWN + 1], sw_error *err)
+{
+    int32_t seam = index[SW_SECTION_SEAM];
+    for (uint32_t t = SW_SECTION_SEAM_VERTICES; seam < 0 && t <= LAST_KNOWN; t++)
+        if (index[t] >= 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "section %d (%s): present without a SEAM "
+                                "section", (int)index[t], sw_section_type_name(t));
+    if (seam < 0)
+        return SW_OK;
+    for (uint32_t t = SW_SECTION_SEAM_VERTICES; t <= LAST_KNOWN; t++)
+        if (index[t] < 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "section %d (SEAM): no %s section (the "
+                                "Seam Graph's sections appear together)", (int)seam,
+                                sw_section_type_name(t));
+    if (index[SW_SECTION_SURFACES] < 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "section %d (SEAM): present without a SURFACES "
+                            "section (its loops index SURFACES)", (int)seam);
+    return SW_OK;
+}
+
 /* The trimmed-surface group: its records index SURFACES, and every patch of
  * a pack with surfaces needs its domain, so the others are meaningless
  * alone. VIEWPOINTS and PART_TRANSFORMS stand on their own. */
@@ -308,26 +373,27 @@ static sw_status check_groups(const int32_t index[LAST_KNOWN + 1], sw_error *err
     if (surfaces >= 0 && index[SW_SECTION_PATCH_DOMAINS] < 0)
         return sw_error_set(err, SW_ERR_FORMAT, "section %d (SURFACES): no PATCH_DOMAINS "
                             "section (required with SURFACES)", (int)surfaces);
-    return SW_OK;
+    return check_seam_group(index, err);
 }
 
-/* Each known section's size must be its META count times its record size. */
+/* Each known section's size must be its count (in META or SEAM, named by
+ * count_name) times its record size. */
 static sw_status check_section_size(const sw_pack_section *sections, int32_t index,
-                                    uint32_t type, uint32_t count, uint64_t record,
+                                    uint32_t type, uint64_t count, uint64_t record,
                                     const char *count_name, sw_error *err)
 {
-    uint64_t expected = (uint64_t)count * record;
+    uint64_t expected = count * record;
     uint64_t actual = index >= 0 ? sections[index].size : 0;
     if (actual == expected)
         return SW_OK;
     if (index < 0)
         return sw_error_set(err, SW_ERR_FORMAT,
-                            "META.%s: %u, but there is no %s section", count_name,
-                            (unsigned)count, sw_section_type_name(type));
+                            "%s: %llu, but there is no %s section", count_name,
+                            (unsigned long long)count, sw_section_type_name(type));
     return sw_error_set(err, SW_ERR_FORMAT,
-                        "section %d (%s): %llu bytes, expected META.%s %u x %llu = %llu",
+                        "section %d (%s): %llu bytes, expected %s %llu x %llu = %llu",
                         (int)index, sw_section_type_name(type), (unsigned long long)actual,
-                        count_name, (unsigned)count, (unsigned long long)record,
+                        count_name, (unsigned long long)count, (unsigned long long)record,
                         (unsigned long long)expected);
 }
 
@@ -343,16 +409,16 @@ static sw_status map_sections(const uint8_t *data, const int32_t index[], sw_pac
     const sw_pack_meta *m = (const sw_pack_meta *)(data + meta->offset);
     sw_status s;
     if ((s = check_section_size(sec, index[SW_SECTION_PARTS], SW_SECTION_PARTS, m->part_count,
-                                sizeof(sw_pack_part), "part_count", err)) != SW_OK ||
+                                sizeof(sw_pack_part), "META.part_count", err)) != SW_OK ||
         (s = check_section_size(sec, index[SW_SECTION_PATCHES], SW_SECTION_PATCHES,
-                                m->patch_count, sizeof(sw_pack_patch), "patch_count",
+                                m->patch_count, sizeof(sw_pack_patch), "META.patch_count",
                                 err)) != SW_OK ||
         (s = check_section_size(sec, index[SW_SECTION_CONTROL], SW_SECTION_CONTROL,
-                                m->control_count, CONTROL_POINT_BYTES, "control_count",
+                                m->control_count, CONTROL_POINT_BYTES, "META.control_count",
                                 err)) != SW_OK ||
         (s = check_section_size(sec, index[SW_SECTION_ADJACENCY], SW_SECTION_ADJACENCY,
                                 m->adjacency_count, sizeof(sw_pack_adjacency),
-                                "adjacency_count", err)) != SW_OK)
+                                "META.adjacency_count", err)) != SW_OK)
         return s;
     out->meta = m;
     out->parts = (const sw_pack_part *)(data + sec[index[SW_SECTION_PARTS]].offset);
@@ -420,15 +486,15 @@ static sw_status map_optional(const uint8_t *data, const int32_t index[], sw_pac
         (s = record_view(data, sec, index[SW_SECTION_TRIM_DATA], sizeof(float), &v[3],
                          &out->trim_data_count, err)) != SW_OK ||
         (s = counted_view(data, sec, index[SW_SECTION_PATCH_DOMAINS], SW_SECTION_PATCH_DOMAINS,
-                          out->meta->patch_count, sizeof(sw_pack_patch_domain), "patch_count",
-                          &v[4], err)) != SW_OK ||
+                          out->meta->patch_count, sizeof(sw_pack_patch_domain),
+                          "META.patch_count", &v[4], err)) != SW_OK ||
         (s = record_view(data, sec, index[SW_SECTION_TRIM_MASKS], sizeof(sw_pack_trim_mask),
                          &v[5], &out->trim_mask_count, err)) != SW_OK ||
         (s = record_view(data, sec, index[SW_SECTION_VIEWPOINTS], sizeof(sw_pack_viewpoint),
                          &v[6], &out->viewpoint_count, err)) != SW_OK ||
         (s = counted_view(data, sec, index[SW_SECTION_PART_TRANSFORMS],
                           SW_SECTION_PART_TRANSFORMS, out->meta->part_count, TRANSFORM_BYTES,
-                          "part_count", &v[7], err)) != SW_OK)
+                          "META.part_count", &v[7], err)) != SW_OK)
         return s;
     out->surfaces = v[0];
     out->trim_loops = v[1];
@@ -438,6 +504,53 @@ static sw_status map_optional(const uint8_t *data, const int32_t index[], sw_pac
     out->trim_masks = v[5];
     out->viewpoints = v[6];
     out->part_transforms = v[7];
+    return SW_OK;
+}
+
+/* The Seam Graph's views, each section sized by its SEAM count (check_groups
+ * made sure all eight are present or none). */
+static sw_status map_seam(const uint8_t *data, const int32_t index[], sw_pack *out, sw_error *err)
+{
+    const sw_pack_section *sec = out->sections;
+    int32_t at = index[SW_SECTION_SEAM];
+    if (at < 0)
+        return SW_OK;
+    if (sec[at].size != sizeof(sw_pack_seam))
+        return sw_error_set(err, SW_ERR_FORMAT, "section %d (SEAM): %llu bytes, expected %zu",
+                            (int)at, (unsigned long long)sec[at].size, sizeof(sw_pack_seam));
+    const sw_pack_seam *h = (const sw_pack_seam *)(data + sec[at].offset);
+    const struct {
+        uint32_t type;
+        uint64_t count, record;
+        const char *name;
+    } parts[] = {
+        { SW_SECTION_SEAM_VERTICES, h->vertex_count, sizeof(sw_seam_vertex), "SEAM.vertex_count" },
+        { SW_SECTION_SEAM_SLOTS, h->slot_count, sizeof(sw_seam_slot), "SEAM.slot_count" },
+        { SW_SECTION_SEAM_LOOPS, h->loop_count, sizeof(sw_seam_loop), "SEAM.loop_count" },
+        { SW_SECTION_SEAM_EDGES, h->edge_count, sizeof(sw_seam_edge), "SEAM.edge_count" },
+        { SW_SECTION_SEAM_COLLAPSES, h->collapse_count, sizeof(sw_seam_collapse),
+          "SEAM.collapse_count" },
+        { SW_SECTION_SEAM_SLOT_REFS, h->slot_ref_count, sizeof(uint32_t), "SEAM.slot_ref_count" },
+        { SW_SECTION_SEAM_SURFACE_LOOPS, (uint64_t)h->surface_count + 1, sizeof(uint32_t),
+          "(SEAM.surface_count + 1)" },
+    };
+    const void *v[sizeof parts / sizeof *parts];
+    for (size_t k = 0; k < sizeof parts / sizeof *parts; k++) {
+        int32_t i = index[parts[k].type];
+        sw_status s = check_section_size(sec, i, parts[k].type, parts[k].count, parts[k].record,
+                                         parts[k].name, err);
+        if (s != SW_OK)
+            return s;
+        v[k] = data + sec[i].offset;
+    }
+    out->seam_header = h;
+    out->seam = (sw_seam_graph){
+        .vertices = v[0], .slots = v[1], .loops = v[2], .edges = v[3], .collapses = v[4],
+        .slot_refs = v[5], .surface_loops = v[6], .vertex_count = h->vertex_count,
+        .original_count = h->original_count, .slot_count = h->slot_count,
+        .loop_count = h->loop_count, .edge_count = h->edge_count,
+        .collapse_count = h->collapse_count, .slot_ref_count = h->slot_ref_count,
+        .surface_count = h->surface_count, .tolerance = h->tolerance };
     return SW_OK;
 }
 
@@ -483,9 +596,11 @@ sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_er
     sw_pack pack = { .data = bytes, .size = size, .header = h, .sections = sections };
     if ((s = map_sections(bytes, index, &pack, err)) != SW_OK ||
         (s = map_optional(bytes, index, &pack, err)) != SW_OK ||
+        (s = map_seam(bytes, index, &pack, err)) != SW_OK ||
         (s = check_runtime_bytes(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_records(&pack, err)) != SW_OK ||
-        (s = sw_pack_validate_trim(&pack, err)) != SW_OK)
+        (s = sw_pack_validate_trim(&pack, err)) != SW_OK ||
+        (s = sw_pack_validate_seam(&pack, err)) != SW_OK)
         return s;
     *out = pack;
     return SW_OK;

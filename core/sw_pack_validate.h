@@ -3,7 +3,8 @@
  * checksum have been verified and each view's byte size matches its META
  * count, and two small rules the writer (assets/sw_pack_write.c) shares.
  * Split out so each file keeps one job: sw_pack_read.c the container,
- * sw_pack_validate.c and sw_pack_validate_trim.c the records. */
+ * sw_pack_validate.c, sw_pack_validate_trim.c and sw_pack_validate_seam.c the
+ * records. */
 #ifndef SW_PACK_VALIDATE_H
 #define SW_PACK_VALIDATE_H
 
@@ -19,6 +20,11 @@ sw_status sw_pack_validate_records(const sw_pack *pack, sw_error *err);
  * sw_pack_validate_records, so parts and patches are known good. Nothing to
  * check when the pack has no SURFACES section. */
 sw_status sw_pack_validate_trim(const sw_pack *pack, sw_error *err);
+
+/* The Seam Graph (SEAM and SEAM_*), in sw_pack_validate_seam.c; runs after
+ * sw_pack_validate_trim, so SURFACES is known good. Nothing to check when
+ * the pack has no SEAM section. */
+sw_status sw_pack_validate_seam(const sw_pack *pack, sw_error *err);
 
 /* Number of control points along edge (enum sw_patch_edge) of patch. */
 static inline uint32_t sw_pack_edge_points(const sw_pack_patch *patch, uint32_t edge)

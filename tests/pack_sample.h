@@ -146,6 +146,100 @@ static inline void make_sample(sample *s)
     set_trim_sections(s);
 }
 
+/* ---- a Seam Graph for the sample's two surfaces, built by hand ----
+ * Surface 0 is the unit square (0..1)² at z = 0, with a triangular hole;
+ * surface 1 the square (1..2) x (0..1) beside it, sewn to it along x = 1
+ * (vertices 1, 6, 2 sit in slots of both). Then four collapses: 6 into 2
+ * (vertex 10), 8 into 7 (11), 9 into 11 (12: the hole is gone), 3 into 10
+ * (13). Surface 0's (u, v) is (2x, y) (its domain is [0, 2] x [0, 1]),
+ * surface 1's (x - 1, y). */
+
+enum { SEAM_ORIGINAL = 10, SEAM_COLLAPSES = 4, SEAM_VERTICES = 14, SEAM_SLOTS = 13,
+       SEAM_LOOPS = 3, SEAM_EDGES = 11 };
+
+typedef struct sample_seam {
+    sw_seam_vertex vertices[SEAM_VERTICES];
+    sw_seam_slot slots[SEAM_SLOTS];
+    sw_seam_loop loops[SEAM_LOOPS];
+    sw_seam_edge edges[SEAM_EDGES];
+    sw_seam_collapse collapses[SEAM_COLLAPSES];
+    uint32_t slot_refs[SEAM_SLOTS];
+    uint32_t surface_loops[2 + 1 + 1]; /* one spare, for tests that claim 3 surfaces */
+    sw_seam_graph graph;               /* views of the arrays above */
+} sample_seam;
+
+static inline void set_seam_vertices(sample_seam *g)
+{
+    static const float p[SEAM_VERTICES][3] = {
+        { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 2, 1, 0 },
+        { 1, 0.5f, 0 }, { 0.3f, 0.3f, 0 }, { 0.6f, 0.3f, 0 }, { 0.45f, 0.6f, 0 },
+        { 1, 1, 0 }, { 0.3f, 0.3f, 0 }, { 0.3f, 0.3f, 0 }, { 1, 1, 0 } };
+    static const uint32_t child[SEAM_VERTICES] = { SW_SEAM_NONE, SW_SEAM_NONE, 10, 13,
+                                                   SW_SEAM_NONE, SW_SEAM_NONE, 10, 11, 11, 12,
+                                                   13, 12, SW_SEAM_NONE, SW_SEAM_NONE };
+    static const float error[SEAM_VERTICES] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+                                                0.25f, 0.3f, 0.3f, 1.0f };
+    /* Slot references per original vertex: 0 | 1 8 | 3 11 | 4 | 9 | 10 | 2 12 | 5 | 7 | 6 */
+    static const uint32_t first[SEAM_ORIGINAL] = { 0, 1, 3, 5, 6, 7, 8, 10, 11, 12 };
+    static const uint32_t count[SEAM_ORIGINAL] = { 1, 2, 2, 1, 1, 1, 2, 1, 1, 1 };
+    static const uint32_t refs[SEAM_SLOTS] = { 0, 1, 8, 3, 11, 4, 9, 10, 2, 12, 5, 7, 6 };
+    for (int i = 0; i < SEAM_VERTICES; i++) {
+        int original = i < SEAM_ORIGINAL;
+        g->vertices[i] = (sw_seam_vertex){ .p = { p[i][0], p[i][1], p[i][2] }, .child = child[i],
+                                           .error = error[i],
+                                           .first_slot_ref = original ? first[i] : 0,
+                                           .slot_ref_count = original ? count[i] : 0 };
+    }
+    memcpy(g->slot_refs, refs, sizeof refs);
+    static const sw_seam_collapse collapses[SEAM_COLLAPSES] = {
+        { 6, 2, 0.25f }, { 8, 7, 0.3f }, { 9, 11, 0.2f }, { 3, 10, 1.0f } };
+    memcpy(g->collapses, collapses, sizeof collapses);
+}
+
+static inline void set_seam_boundaries(sample_seam *g)
+{
+    static const sw_seam_slot slots[SEAM_SLOTS] = {
+        /* surface 0, outer: (0,0) (1,0) (1,0.5) (1,1) (0,1) */
+        { 0, { 0, 0 } }, { 1, { 2, 0 } }, { 6, { 2, 0.5f } }, { 2, { 2, 1 } }, { 3, { 0, 1 } },
+        /* surface 0, the hole, clockwise */
+        { 7, { 0.6f, 0.3f } }, { 9, { 0.9f, 0.6f } }, { 8, { 1.2f, 0.3f } },
+        /* surface 1, outer: (1,0) (2,0) (2,1) (1,1) (1,0.5) */
+        { 1, { 0, 0 } }, { 4, { 1, 0 } }, { 5, { 1, 1 } }, { 2, { 0, 1 } }, { 6, { 0, 0.5f } } };
+    memcpy(g->slots, slots, sizeof slots);
+    g->loops[0] = (sw_seam_loop){ .surface = 0, .first_slot = 0, .slot_count = 5,
+                                  .flags = SW_SEAM_LOOP_OUTER };
+    g->loops[1] = (sw_seam_loop){ .surface = 0, .first_slot = 5, .slot_count = 3 };
+    g->loops[2] = (sw_seam_loop){ .surface = 1, .first_slot = 8, .slot_count = 5,
+                                  .flags = SW_SEAM_LOOP_OUTER };
+    static const sw_seam_edge edges[SEAM_EDGES] = {
+        { 0, 1 }, { 1, 6 }, { 2, 6 }, { 2, 3 }, { 0, 3 }, { 7, 9 }, { 8, 9 }, { 7, 8 },
+        { 1, 4 }, { 4, 5 }, { 2, 5 } };
+    memcpy(g->edges, edges, sizeof edges);
+    g->surface_loops[0] = 0;
+    g->surface_loops[1] = 2;
+    g->surface_loops[2] = 3;
+}
+
+/* The graph's views and counts; call again after moving the struct. */
+static inline void view_sample_seam(sample_seam *g)
+{
+    g->graph = (sw_seam_graph){
+        .vertices = g->vertices, .slots = g->slots, .loops = g->loops, .edges = g->edges,
+        .collapses = g->collapses, .slot_refs = g->slot_refs, .surface_loops = g->surface_loops,
+        .vertex_count = SEAM_VERTICES, .original_count = SEAM_ORIGINAL,
+        .slot_count = SEAM_SLOTS, .loop_count = SEAM_LOOPS, .edge_count = SEAM_EDGES,
+        .collapse_count = SEAM_COLLAPSES, .slot_ref_count = SEAM_SLOTS, .surface_count = 2,
+        .tolerance = 0.001f };
+}
+
+static inline void make_sample_seam(sample_seam *g)
+{
+    memset(g, 0, sizeof *g);
+    set_seam_vertices(g);
+    set_seam_boundaries(g);
+    view_sample_seam(g);
+}
+
 static inline sw_pack_contents sample_contents(const sample *s)
 {
     sw_pack_contents c = { .meta = s->meta, .parts = s->parts, .patches = s->patches,

@@ -117,7 +117,10 @@ static void test_section_type_names(void)
     SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_SURFACES), "SURFACES") == 0);
     SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_PATCH_DOMAINS), "PATCH_DOMAINS") == 0);
     SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_PART_TRANSFORMS), "PART_TRANSFORMS") == 0);
-    SW_CHECK(strcmp(sw_section_type_name(14), "unknown") == 0);
+    SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_SEAM), "SEAM") == 0);
+    SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_SEAM_SURFACE_LOOPS), "SEAM_SURFACE_LOOPS") ==
+             0);
+    SW_CHECK(strcmp(sw_section_type_name(22), "unknown") == 0);
     SW_CHECK(strcmp(sw_section_type_name(0), "unknown") == 0);
     SW_CHECK(strcmp(sw_section_type_name(99), "unknown") == 0);
 }

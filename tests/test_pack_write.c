@@ -449,9 +449,28 @@ static int write_model_seed(const sw_model *model, const char *dir, const char *
     return 0;
 }
 
+/* The sample with its hand-built Seam Graph (pack_sample.h). */
+static void write_seam_seed(const char *dir)
+{
+    sample s;
+    sample_seam g;
+    make_sample(&s);
+    make_sample_seam(&g);
+    sw_pack_contents c = sample_contents(&s);
+    c.seam = &g.graph;
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK, "%s", err.message);
+    char path[512];
+    snprintf(path, sizeof path, "%s/seed-seam-graph", dir);
+    write_plain(path, bytes, size);
+    free(bytes);
+}
+
 /* The hand-made sample with every optional section, without them, with an
- * unknown section; packs the writer makes of Bezier patches and of a trimmed
- * surface with a viewpoint. */
+ * unknown section, with a Seam Graph; packs the writer makes of Bezier
+ * patches and of a trimmed surface with a viewpoint. */
 static int write_corpus(const char *dir)
 {
     sample s;
@@ -471,6 +490,7 @@ static int write_corpus(const char *dir)
     snprintf(path, sizeof path, "%s/seed-bezier-only", dir);
     write_plain(path, bytes, size);
     free(bytes);
+    write_seam_seed(dir);
     sw_model model;
     start_model(&model);
     add_bicubic(&model, 0, 0, 0, 0);

@@ -56,6 +56,38 @@ static float walk_scene(const sw_pack *pack)
     return sum;
 }
 
+/* The Seam Graph the way the runtime walks it: each loop's slots, each
+ * slot's vertex up to its root, each vertex's slot references, each
+ * surface's loops. The walk to a root is bounded because a validated
+ * graph's child links only go to larger indices. */
+static float walk_seam(const sw_pack *pack)
+{
+    const sw_seam_graph *g = &pack->seam;
+    float sum = 0;
+    for (uint32_t s = 0; g->surface_loops && s < g->surface_count; s++)
+        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++) {
+            const sw_seam_loop *loop = &g->loops[l];
+            sum += pack->surfaces[loop->surface].domain[0];
+            for (uint32_t k = 0; k < loop->slot_count; k++) {
+                const sw_seam_slot *slot = &g->slots[loop->first_slot + k];
+                uint32_t v = slot->vertex;
+                while (g->vertices[v].child != SW_SEAM_NONE)
+                    v = g->vertices[v].child;
+                sum += slot->uv[0] + g->vertices[v].p[1];
+            }
+        }
+    for (uint32_t v = 0; v < g->original_count; v++) {
+        const sw_seam_vertex *vx = &g->vertices[v];
+        for (uint32_t r = 0; r < vx->slot_ref_count; r++)
+            sum += g->slots[g->slot_refs[vx->first_slot_ref + r]].uv[1];
+    }
+    for (uint32_t k = 0; k < g->collapse_count; k++)
+        sum += g->vertices[g->collapses[k].v1].error + g->vertices[g->collapses[k].v2].p[0];
+    for (uint32_t e = 0; e < g->edge_count; e++)
+        sum += g->vertices[g->edges[e].a].p[2] + g->vertices[g->edges[e].b].p[2];
+    return sum;
+}
+
 static void walk(const sw_pack *pack)
 {
     float sum = 0;
@@ -72,7 +104,7 @@ static void walk(const sw_pack *pack)
     for (uint32_t i = 0; i < pack->meta->adjacency_count; i++)
         sum += pack->patches[pack->adjacency[i].patch_a].box_min[0] +
                pack->patches[pack->adjacency[i].patch_b].box_max[0];
-    sink = sum + walk_trims(pack) + walk_scene(pack);
+    sink = sum + walk_trims(pack) + walk_scene(pack) + walk_seam(pack);
 }
 
 /* Recomputes what it can: section checksums whose ranges lie in the buffer,

@@ -1,0 +1,9 @@
+# The Seam Graph in the pack: writer round trip, one refusal per validation
+# rule, the info report (test_pack_seam); seamwalk-pack info on the fuzz seed
+# that holds a graph (test_pack_seam_info). The seed itself is replayed by
+# fuzz_pack_replay with the rest of tests/fuzz/corpus/pack; test_pack_write
+# --write-corpus regenerates it.
+sw_add_test(test_pack_seam SOURCES test_pack_seam.c LIBS sw_assets sw_core)
+add_test(NAME test_pack_seam_info
+  COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/test_pack_seam_info.sh $<TARGET_FILE:seamwalk-pack>
+          ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack/seed-seam-graph)
