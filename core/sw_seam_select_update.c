@@ -1,0 +1,148 @@
+/* sw_seam_select_update: one frame's refinement and coarsening of the Seam
+ * Graph's front (sw_seam_select.h; paper 5.5 and 6.1). */
+#include <math.h>
+
+#include "sw_seam_select.h"
+#include "sw_seam_select_internal.h"
+
+/* The work list holds each vertex at most once (queued[]), so a ring of
+ * vertex_count entries never overflows. */
+static void push(sw_seam_select *s, uint32_t v)
+{
+    if (v == SW_SEAM_NONE || s->queued[v])
+        return;
+    s->queued[v] = 1;
+    uint32_t n = s->graph.vertex_count;
+    uint32_t at = s->queue_head + s->queue_len;
+    s->queue[at >= n ? at - n : at] = v;
+    s->queue_len++;
+}
+
+static uint32_t pop(sw_seam_select *s)
+{
+    uint32_t v = s->queue[s->queue_head];
+    s->queue_head = s->queue_head + 1 == s->graph.vertex_count ? 0 : s->queue_head + 1;
+    s->queue_len--;
+    s->queued[v] = 0;
+    return v;
+}
+
+static void drain(sw_seam_select *s)
+{
+    while (s->queue_len)
+        pop(s);
+    s->queue_head = 0;
+}
+
+/* A vertex's bound: the smallest over the surfaces of its originals' slots.
+ * Those are exactly the surfaces whose loops show it while it is active
+ * (a slot shows v iff its original is under v), vanished loops included, so
+ * a surface that vanished far away comes back when it is approached. */
+static void fold_bounds(sw_seam_select *s, const float *surface_bound)
+{
+    const sw_seam_graph *g = &s->graph;
+    for (uint32_t o = 0; o < g->original_count; o++) {
+        const sw_seam_vertex *ov = &g->vertices[o];
+        float b = INFINITY;
+        for (uint32_t r = 0; r < ov->slot_ref_count; r++) {
+            uint32_t loop = s->slot_loop[g->slot_refs[ov->first_slot_ref + r]];
+            if (loop != SW_SEAM_NONE)
+                b = fminf(b, surface_bound[g->loops[loop].surface]);
+        }
+        s->bound[o] = b;
+    }
+    for (uint32_t k = 0; k < g->collapse_count; k++)
+        s->bound[g->original_count + k] =
+            fminf(s->bound[g->collapses[k].v1], s->bound[g->collapses[k].v2]);
+}
+
+static int too_coarse(const sw_seam_select *s, uint32_t v)
+{
+    return v >= s->graph.original_count && s->graph.vertices[v].error > s->bound[v];
+}
+
+static void on_split(void *ctx, sw_seam_select *s, uint32_t vn, uint32_t wanted)
+{
+    sw_seam_update_result *r = ctx;
+    (void)wanted;
+    r->splits++;
+    if (!too_coarse(s, vn))
+        r->forced_splits++;
+    const sw_seam_collapse *c = &s->graph.collapses[vn - s->graph.original_count];
+    if (too_coarse(s, c->v1))
+        push(s, c->v1);
+    if (too_coarse(s, c->v2))
+        push(s, c->v2);
+}
+
+/* Splits every active vertex whose error exceeds its bound, forcing the
+ * splits that block it, and its parents in turn while they still do. */
+static int refine(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
+{
+    for (uint32_t v = s->graph.original_count; v < s->graph.vertex_count; v++)
+        if (s->active[v] && too_coarse(s, v))
+            push(s, v);
+    while (s->queue_len) {
+        uint32_t x = pop(s);
+        if (!s->active[x] || !too_coarse(s, x))
+            continue;
+        if (max_ops && *used == max_ops)
+            return 0;
+        *used += sw_seam_select_force(s, x, max_ops ? max_ops - *used : 0, on_split, r);
+        if (s->active[x])
+            return 0;
+    }
+    return 1;
+}
+
+static uint32_t push_child(void *ctx, uint32_t w)
+{
+    sw_seam_select *s = ctx;
+    push(s, s->graph.vertices[w].child);
+    return 0;
+}
+
+/* Collapses wherever the new vertex meets its bound and the rule allows.
+ * A collapse can unblock its child's collapse and its neighbours' (it may
+ * have been their finer neighbour), so those are queued again. */
+static int coarsen(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
+{
+    for (uint32_t v = 0; v < s->graph.vertex_count; v++)
+        if (s->active[v])
+            push(s, s->graph.vertices[v].child);
+    while (s->queue_len) {
+        uint32_t c = pop(s);
+        if (s->active[c] || too_coarse(s, c) || !sw_seam_select_can_collapse(s, c))
+            continue;
+        if (max_ops && *used == max_ops)
+            return 0;
+        sw_seam_select_do_collapse(s, c);
+        (*used)++;
+        r->collapses++;
+        push(s, s->graph.vertices[c].child);
+        sw_seam_select_scan_neighbours(s, c, push_child, s);
+    }
+    return 1;
+}
+
+sw_status sw_seam_select_update(sw_seam_select *s, const float *surface_bound,
+                                uint32_t max_ops, sw_seam_update_result *result, sw_error *err)
+{
+    sw_seam_update_result r = {0};
+    if (result)
+        *result = r;
+    if (!s || (!surface_bound && s->graph.surface_count))
+        return sw_error_set(err, SW_ERR_ARG, "seam select update: no state or bounds");
+    for (uint32_t i = 0; i < s->graph.surface_count; i++)
+        if (!isfinite(surface_bound[i]) || surface_bound[i] < 0.0f)
+            return sw_error_set(err, SW_ERR_ARG,
+                                "seam select update: surface %u bound %g, expected finite >= 0",
+                                i, (double)surface_bound[i]);
+    fold_bounds(s, surface_bound);
+    uint32_t used = 0;
+    r.complete = refine(s, max_ops, &used, &r) && coarsen(s, max_ops, &used, &r);
+    drain(s);
+    if (result)
+        *result = r;
+    return SW_OK;
+}
