@@ -45,8 +45,9 @@ typedef struct sw_seam_select {
 } sw_seam_select;
 
 /* Arena bytes sw_seam_select_init takes for graph, worst case (alignment
- * included): about 26 bytes per vertex, 8 per original, 4 per slot and 1
- * per surface. */
+ * included): 18 bytes per vertex, 4 more per created vertex, 8 more per
+ * original, 4 per slot and 1 per surface (about 56 bytes per original
+ * vertex of a sewn graph: 2 slots each, as many created vertices). */
 size_t sw_seam_select_arena_bytes(const sw_seam_graph *graph);
 
 /* Checks graph (sw_seam_graph_check), takes the state's arrays from arena and
