@@ -37,10 +37,11 @@ typedef struct sw_seam_select {
     uint32_t *slot_loop;       /* slot_count: the loop holding the slot, SW_SEAM_NONE for none */
     float *bound;              /* vertex_count: the smallest surface bound over v's slots (per update) */
     uint32_t *stack;           /* collapse_count + 1: forced-split chain */
-    uint32_t *queue;           /* vertex_count: update's work list (a ring) */
+    uint32_t *queue;           /* vertex_count: update's work list (a heap) */
     uint8_t *queued;           /* vertex_count */
     uint8_t *surface_changed;  /* surface_count */
-    uint32_t queue_head, queue_len;
+    uint32_t queue_len;
+    int queue_largest_first;
     uint32_t active_count;
 } sw_seam_select;
 

@@ -5,33 +5,55 @@
 #include "sw_seam_select.h"
 #include "sw_seam_select_internal.h"
 
-/* The work list holds each vertex at most once (queued[]), so a ring of
- * vertex_count entries never overflows. */
+/* The work list: a binary heap of vertex indices, largest first while
+ * refining (the coarsest vertices split first, and their splits free the
+ * smaller ones) and smallest first while coarsening. Coarsening in rising
+ * order means a collapse blocked by a finer neighbour w meets it after w's
+ * own collapse (child(w) < it) was tried, so few collapses are tried twice.
+ * Each vertex is in the heap at most once (queued[]): vertex_count entries
+ * never overflow. */
+static int before(const sw_seam_select *s, uint32_t a, uint32_t b)
+{
+    return s->queue_largest_first ? a > b : a < b;
+}
+
 static void push(sw_seam_select *s, uint32_t v)
 {
     if (v == SW_SEAM_NONE || s->queued[v])
         return;
     s->queued[v] = 1;
-    uint32_t n = s->graph.vertex_count;
-    uint32_t at = s->queue_head + s->queue_len;
-    s->queue[at >= n ? at - n : at] = v;
-    s->queue_len++;
+    uint32_t i = s->queue_len++;
+    while (i && before(s, v, s->queue[(i - 1) / 2])) {
+        s->queue[i] = s->queue[(i - 1) / 2];
+        i = (i - 1) / 2;
+    }
+    s->queue[i] = v;
 }
 
 static uint32_t pop(sw_seam_select *s)
 {
-    uint32_t v = s->queue[s->queue_head];
-    s->queue_head = s->queue_head + 1 == s->graph.vertex_count ? 0 : s->queue_head + 1;
-    s->queue_len--;
-    s->queued[v] = 0;
-    return v;
+    uint32_t top = s->queue[0], v = s->queue[--s->queue_len], i = 0;
+    for (;;) {
+        uint32_t c = 2 * i + 1;
+        if (c >= s->queue_len)
+            break;
+        if (c + 1 < s->queue_len && before(s, s->queue[c + 1], s->queue[c]))
+            c++;
+        if (!before(s, s->queue[c], v))
+            break;
+        s->queue[i] = s->queue[c];
+        i = c;
+    }
+    if (s->queue_len)
+        s->queue[i] = v;
+    s->queued[top] = 0;
+    return top;
 }
 
 static void drain(sw_seam_select *s)
 {
     while (s->queue_len)
         pop(s);
-    s->queue_head = 0;
 }
 
 /* A vertex's bound: the smallest over the surfaces of its originals' slots.
@@ -79,6 +101,7 @@ static void on_split(void *ctx, sw_seam_select *s, uint32_t vn, uint32_t wanted)
  * splits that block it, and its parents in turn while they still do. */
 static int refine(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
 {
+    s->queue_largest_first = 1;
     for (uint32_t v = s->graph.original_count; v < s->graph.vertex_count; v++)
         if (s->active[v] && too_coarse(s, v))
             push(s, v);
@@ -95,18 +118,16 @@ static int refine(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_u
     return 1;
 }
 
-static uint32_t push_child(void *ctx, uint32_t w)
-{
-    sw_seam_select *s = ctx;
-    push(s, s->graph.vertices[w].child);
-    return 0;
-}
-
-/* Collapses wherever the new vertex meets its bound and the rule allows.
- * A collapse can unblock its child's collapse and its neighbours' (it may
- * have been their finer neighbour), so those are queued again. */
+/* Collapses wherever the new vertex meets its bound and the rule allows,
+ * in rising order of the new vertex. One pass is enough: what a collapse
+ * into c waits for is smaller than c (its parents; a finer neighbour w's
+ * own collapse, child(w) < c), so it was settled before c came up; a
+ * neighbour larger than c blocks until a split, and this phase splits
+ * nothing. The new vertex's own collapse is queued after it. */
 static int coarsen(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
 {
+    drain(s);
+    s->queue_largest_first = 0;
     for (uint32_t v = 0; v < s->graph.vertex_count; v++)
         if (s->active[v])
             push(s, s->graph.vertices[v].child);
@@ -120,7 +141,6 @@ static int coarsen(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_
         (*used)++;
         r->collapses++;
         push(s, s->graph.vertices[c].child);
-        sw_seam_select_scan_neighbours(s, c, push_child, s);
     }
     return 1;
 }
