@@ -600,6 +600,61 @@ static void test_rejects_bad_input(void)
     fixture_close(&f);
 }
 
+/* Sewing may put one vertex in consecutive slots: the polyline drops the
+ * repeat (the first and last slots too) and takes the run's first slot's
+ * parameters; the loop vanishes once it is down to two vertices. */
+static void test_consecutive_repeats_are_dropped(void)
+{
+    fixture f;
+    sw_seam_host *g = &f.host;
+    memset(g, 0, sizeof *g);
+    gen_buf b = {.g = g, .rng = 1};
+    const double xy[5][2] = {{0, 0}, {1, 0}, {1.2, 1}, {0.5, 1.7}, {-0.2, 1}};
+    for (int i = 0; i < 5; i++)
+        gen_vertex(&b, xy[i][0], xy[i][1], 0.0);
+    const uint32_t order[8] = {0, 1, 1, 2, 3, 4, 4, 0};
+    gen_begin_loop(&b, 0, SW_SEAM_LOOP_OUTER);
+    for (uint32_t i = 0; i < 8; i++)
+        gen_slot(&b, order[i], 0.1 * i, 0.0);
+    gen_finish(&b, 1);
+    sw_error err = {0};
+    SW_CHECK_MSG(sw_seam_simplify(g, &err) == SW_OK, "%s", err.message);
+    f.g = sw_seam_host_view(g);
+    size_t bytes = sw_seam_select_arena_bytes(&f.g);
+    f.block = malloc(bytes);
+    sw_arena_init(&f.arena, f.block, bytes);
+    SW_CHECK(sw_seam_select_init(&f.sel, &f.g, &f.arena, NULL) == SW_OK);
+    refine_all(&f);
+    sw_seam_point pts[8];
+    uint32_t count = 0;
+    int vanished = 1;
+    SW_CHECK(sw_seam_select_loop(&f.sel, 0, pts, 8, &count, &vanished, NULL) == SW_OK);
+    SW_CHECK(count == 5 && !vanished);
+    /* starts at slot 1 (slot 0 continues the run of vertex 0 from slot 7) */
+    const uint32_t want_v[5] = {1, 2, 3, 4, 0};
+    const float want_u[5] = {0.1f, 0.3f, 0.4f, 0.5f, 0.7f};
+    for (uint32_t i = 0; i < 5 && i < count; i++) {
+        SW_CHECK(pts[i].vertex == want_v[i]);
+        SW_CHECK(pts[i].uv[0] == want_u[i]);
+    }
+    SW_CHECK(check_front(&f) == 0);
+    uint32_t steps = 0;
+    for (uint32_t v = f.g.original_count; v < f.g.vertex_count && steps < 2; v++)
+        if (sw_seam_select_can_collapse(&f.sel, v))
+            steps += sw_seam_select_collapse(&f.sel, v, NULL) == SW_OK;
+    SW_CHECK(steps == 2);
+    SW_CHECK(sw_seam_select_loop(&f.sel, 0, pts, 8, &count, &vanished, NULL) == SW_OK);
+    SW_CHECK(count == 3 && !vanished);
+    for (uint32_t v = f.g.original_count; v < f.g.vertex_count && steps < 3; v++)
+        if (sw_seam_select_can_collapse(&f.sel, v))
+            steps += sw_seam_select_collapse(&f.sel, v, NULL) == SW_OK;
+    SW_CHECK(sw_seam_select_loop(&f.sel, 0, pts, 8, &count, &vanished, NULL) == SW_OK);
+    SW_CHECK(count == 2 && vanished);
+    SW_CHECK(sw_seam_select_count(&f.sel).surfaces_vanished == 1);
+    SW_CHECK(check_front(&f) == 0);
+    fixture_close(&f);
+}
+
 int main(void)
 {
     SW_RUN(test_starts_at_the_roots);
@@ -612,5 +667,6 @@ int main(void)
     SW_RUN(test_non_manifold_seam_is_shared);
     SW_RUN(test_no_heap_and_arena_bounded);
     SW_RUN(test_rejects_bad_input);
+    SW_RUN(test_consecutive_repeats_are_dropped);
     return sw_test_finish();
 }
