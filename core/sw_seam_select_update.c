@@ -123,14 +123,20 @@ static int refine(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_u
  * into c waits for is smaller than c (its parents; a finer neighbour w's
  * own collapse, child(w) < c), so it was settled before c came up; a
  * neighbour larger than c blocks until a split, and this phase splits
- * nothing. The new vertex's own collapse is queued after it. */
+ * nothing. The new vertex's own collapse is queued after it. Only
+ * collapses whose parents are both active and whose vertex meets its bound
+ * start in the list, so a frame where nothing changes costs little more
+ * than the pass over the bounds. */
 static int coarsen(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
 {
     drain(s);
     s->queue_largest_first = 0;
-    for (uint32_t v = 0; v < s->graph.vertex_count; v++)
-        if (s->active[v])
-            push(s, s->graph.vertices[v].child);
+    const sw_seam_graph *g = &s->graph;
+    for (uint32_t k = 0; k < g->collapse_count; k++) {
+        uint32_t c = g->original_count + k;
+        if (s->active[g->collapses[k].v1] && s->active[g->collapses[k].v2] && !too_coarse(s, c))
+            push(s, c);
+    }
     while (s->queue_len) {
         uint32_t c = pop(s);
         if (s->active[c] || too_coarse(s, c) || !sw_seam_select_can_collapse(s, c))
