@@ -63,15 +63,16 @@ static void drain(sw_seam_select *s)
 static void fold_bounds(sw_seam_select *s, const float *surface_bound)
 {
     const sw_seam_graph *g = &s->graph;
-    for (uint32_t o = 0; o < g->original_count; o++) {
-        const sw_seam_vertex *ov = &g->vertices[o];
-        float b = INFINITY;
-        for (uint32_t r = 0; r < ov->slot_ref_count; r++) {
-            uint32_t loop = s->slot_loop[g->slot_refs[ov->first_slot_ref + r]];
-            if (loop != SW_SEAM_NONE)
-                b = fminf(b, surface_bound[g->loops[loop].surface]);
+    for (uint32_t o = 0; o < g->original_count; o++)
+        s->bound[o] = INFINITY;
+    /* loop by loop: sequential reads, and a loop's vertices are near each other */
+    for (uint32_t l = 0; l < g->loop_count; l++) {
+        const sw_seam_loop *loop = &g->loops[l];
+        float b = surface_bound[loop->surface];
+        for (uint32_t i = 0; i < loop->slot_count; i++) {
+            float *vb = &s->bound[g->slots[loop->first_slot + i].vertex];
+            *vb = fminf(*vb, b);
         }
-        s->bound[o] = b;
     }
     for (uint32_t k = 0; k < g->collapse_count; k++)
         s->bound[g->original_count + k] =
