@@ -27,6 +27,8 @@
  * so every front reached is reachable back and forth. */
 #include "sw_seam_select.h"
 
+#include <stdint.h>
+
 #include "sw_seam_check.h"
 #include "sw_seam_select_internal.h"
 
@@ -36,6 +38,9 @@ size_t sw_seam_select_arena_bytes(const sw_seam_graph *g)
 {
     if (!g)
         return 0;
+    uint64_t largest = g->vertex_count > g->slot_count ? g->vertex_count : g->slot_count;
+    if (largest > (uint64_t)(SIZE_MAX / 64))
+        return SIZE_MAX;   /* 32-bit size_t: more than the address space */
     size_t v = g->vertex_count, o = g->original_count;
     return worst(v, 1) * 2 + worst(v, 4) * 4 + worst(o, 4) * 2 + worst(g->slot_count, 4) +
            worst((size_t)g->collapse_count + 1, 4) + worst(g->surface_count, 1);
@@ -125,6 +130,9 @@ sw_status sw_seam_select_init(sw_seam_select *s, const sw_seam_graph *graph, sw_
     sw_status st = sw_seam_graph_check(graph, err);
     if (st != SW_OK)
         return st;
+    if (sw_seam_select_arena_bytes(graph) == SIZE_MAX)
+        return sw_error_set(err, SW_ERR_RANGE, "seam select: %u vertices, %u slots: too many",
+                            graph->vertex_count, graph->slot_count);
     *s = (sw_seam_select){.graph = *graph};
     st = take_arrays(s, arena, err);
     if (st != SW_OK)
