@@ -19,9 +19,10 @@
  * neighbour w of v1 or v2 has w < vn < child(w), which is El-Sana and
  * Varshney's rule. The paper's sentence for the collapse reads "children
  * smaller than vn" and lets any original neighbour pass; taken literally it
- * would allow a collapse next to an original w whose child is older than vn,
- * joining vertices that never coexisted, after which the split of w's child
- * sees vn > it and the two steps block each other. We use the rule above,
+ * would allow a collapse next to an original w whose child d is older than
+ * vn, making neighbours of vertices that never coexisted (the simplifier
+ * never measured that configuration), and the collapse into d then stays
+ * blocked by vn > d until vn is split again. We use the rule above,
  * which is the exact condition for keeping I. The two rules are inverse: a
  * collapse that was legal can be undone by a split at once and vice versa,
  * so every front reached is reachable back and forth. */
