@@ -1,0 +1,397 @@
+/* sw_seam_simplify: the edge-collapse hierarchy of a sewn Seam Graph
+ * (sw_seam_simplify.h; Guthe et al. 2002, 5.2-5.5).
+ *
+ * The stored error d. The paper keeps, per vertex, "the maximum distance
+ * that was computed for any edge adjacent to it" (5.3). We keep it as a
+ * bound with a proof: every point of the original polylines is attached to
+ * an edge of the current graph, and d(x) bounds the distance of the points
+ * attached to the edges at x. Collapsing v1 -> v2 moves the edge (v1, w) to
+ * (v2, w); distance to a segment is convex, so every point of (v1, w) lies
+ * within dist(v1, (v2, w)) <= epsilon of (v2, w), and the points of (v1, v2)
+ * within epsilon of any (v2, w) (or of v2 itself, epsilon = |v1 v2|, when v1
+ * has no other neighbour). So the points attached at v1 end up within
+ * d(v1) + epsilon, and that raises d of the new vertex and of v1's other
+ * neighbours (their edge to v1 moved). The same induction shows that the
+ * points attached to an edge (a, b) stay within max(error(a), error(b)) of
+ * it, with error the monotone vertex error stored in the graph: that is why
+ * the runtime can bound a segment by its two endpoints.
+ *
+ * Where the paper removes and reinserts the costs of every edge in the
+ * neighbourhood, the heap here holds one entry per vertex (its cheapest
+ * outgoing collapse, which the paper notes is the only one that matters)
+ * and updates it in place: no stale entries, and the heap stays at most the
+ * vertex count. */
+#include "sw_seam_simplify.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sw_seam_check.h"
+
+typedef struct nbrs {
+    uint32_t *v;
+    uint32_t n, cap;
+} nbrs;
+
+typedef struct simp {
+    sw_seam_host *g;
+    nbrs *adj;        /* neighbours of each live vertex */
+    double *stored;   /* d (above) */
+    double *cost;     /* cheapest collapse out of the vertex: epsilon + d */
+    double *eps;      /* its epsilon */
+    uint32_t *target; /* its kept vertex */
+    uint32_t *heap, *pos, heap_n;
+    uint32_t *mark, stamp;
+} simp;
+
+static double seg_dist(const float p[3], const float a[3], const float b[3])
+{
+    double ab[3], ap[3], t = 0.0, len2 = 0.0;
+    for (int i = 0; i < 3; i++) {
+        ab[i] = (double)b[i] - a[i];
+        ap[i] = (double)p[i] - a[i];
+        len2 += ab[i] * ab[i];
+        t += ap[i] * ab[i];
+    }
+    t = len2 > 0.0 ? fmin(fmax(t / len2, 0.0), 1.0) : 0.0;
+    double d2 = 0.0;
+    for (int i = 0; i < 3; i++) {
+        double d = ap[i] - t * ab[i];
+        d2 += d * d;
+    }
+    return sqrt(d2);
+}
+
+/* ---- the heap of vertices by their cheapest collapse ---- */
+
+static int heap_less(const simp *S, uint32_t a, uint32_t b)
+{
+    return S->cost[a] < S->cost[b] || (S->cost[a] == S->cost[b] && a < b);
+}
+
+static void heap_place(simp *S, uint32_t i, uint32_t v)
+{
+    S->heap[i] = v;
+    S->pos[v] = i;
+}
+
+static void heap_up(simp *S, uint32_t i)
+{
+    uint32_t v = S->heap[i];
+    while (i && heap_less(S, v, S->heap[(i - 1) / 2])) {
+        heap_place(S, i, S->heap[(i - 1) / 2]);
+        i = (i - 1) / 2;
+    }
+    heap_place(S, i, v);
+}
+
+static void heap_down(simp *S, uint32_t i)
+{
+    uint32_t v = S->heap[i];
+    for (;;) {
+        uint32_t c = 2 * i + 1;
+        if (c >= S->heap_n)
+            break;
+        if (c + 1 < S->heap_n && heap_less(S, S->heap[c + 1], S->heap[c]))
+            c++;
+        if (!heap_less(S, S->heap[c], v))
+            break;
+        heap_place(S, i, S->heap[c]);
+        i = c;
+    }
+    heap_place(S, i, v);
+}
+
+static void heap_remove(simp *S, uint32_t v)
+{
+    uint32_t i = S->pos[v];
+    if (i == UINT32_MAX)
+        return;
+    S->pos[v] = UINT32_MAX;
+    uint32_t last = S->heap[--S->heap_n];
+    if (last == v)
+        return;
+    heap_place(S, i, last);
+    heap_up(S, i);
+    heap_down(S, S->pos[last]);
+}
+
+/* Recomputes v's cheapest collapse (5.3) and its place in the heap. */
+static void update_best(simp *S, uint32_t v)
+{
+    const nbrs *a = &S->adj[v];
+    const sw_seam_vertex *vx = S->g->vertices;
+    S->cost[v] = INFINITY;
+    S->target[v] = UINT32_MAX;
+    for (uint32_t i = 0; i < a->n; i++) {
+        uint32_t y = a->v[i];
+        double e = a->n == 1 ? seg_dist(vx[v].p, vx[y].p, vx[y].p) : 0.0;
+        for (uint32_t j = 0; j < a->n; j++)
+            if (j != i)
+                e = fmax(e, seg_dist(vx[v].p, vx[y].p, vx[a->v[j]].p));
+        double c = e + S->stored[v];
+        if (c < S->cost[v] || (c == S->cost[v] && y < S->target[v])) {
+            S->cost[v] = c;
+            S->eps[v] = e;
+            S->target[v] = y;
+        }
+    }
+    if (S->target[v] == UINT32_MAX) {
+        heap_remove(S, v);
+    } else if (S->pos[v] == UINT32_MAX) {
+        heap_place(S, S->heap_n++, v);
+        heap_up(S, S->heap_n - 1);
+    } else {
+        heap_up(S, S->pos[v]);
+        heap_down(S, S->pos[v]);
+    }
+}
+
+/* ---- adjacency from the loops, checked against graph->edges ---- */
+
+static int cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* The sorted distinct pairs (a < b, packed a << 32 | b) consecutive in some
+ * loop; *count gets how many. NULL when malloc fails. */
+static uint64_t *loop_pairs(const sw_seam_host *g, uint32_t *count)
+{
+    uint64_t *pairs = malloc(((size_t)g->slot_count + 1) * sizeof *pairs);
+    if (!pairs)
+        return NULL;
+    uint32_t n = 0;
+    for (uint32_t l = 0; l < g->loop_count; l++) {
+        const sw_seam_loop *loop = &g->loops[l];
+        for (uint32_t i = 0; i < loop->slot_count; i++) {
+            uint32_t a = g->slots[loop->first_slot + i].vertex;
+            uint32_t b = g->slots[loop->first_slot + (i + 1) % loop->slot_count].vertex;
+            if (a != b)
+                pairs[n++] = a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
+        }
+    }
+    qsort(pairs, n, sizeof *pairs, cmp_u64);
+    uint32_t u = 0;
+    for (uint32_t i = 0; i < n; i++)
+        if (!u || pairs[i] != pairs[u - 1])
+            pairs[u++] = pairs[i];
+    *count = u;
+    return pairs;
+}
+
+static sw_status check_edges(const sw_seam_host *g, const uint64_t *pairs, uint32_t count,
+                             sw_error *err)
+{
+    uint64_t *edges = malloc(((size_t)g->edge_count + 1) * sizeof *edges);
+    if (!edges)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
+    for (uint32_t e = 0; e < g->edge_count; e++)
+        edges[e] = (uint64_t)g->edges[e].a << 32 | g->edges[e].b;
+    qsort(edges, g->edge_count, sizeof *edges, cmp_u64);
+    sw_status st = SW_OK;
+    for (uint32_t i = 0; i < g->edge_count || i < count; i++) {
+        uint64_t want = i < count ? pairs[i] : UINT64_MAX;
+        uint64_t have = i < g->edge_count ? edges[i] : UINT64_MAX;
+        if (want == have)
+            continue;
+        uint64_t bad = want < have ? want : have;
+        st = sw_error_set(err, SW_ERR_FORMAT,
+                          "seam simplify: vertices %u and %u are %s", (uint32_t)(bad >> 32),
+                          (uint32_t)bad,
+                          want < have ? "consecutive in a loop but not in edges"
+                          : i > 0 && have == edges[i - 1] ? "listed twice in edges"
+                                                          : "in edges but in no loop together");
+        break;
+    }
+    free(edges);
+    return st;
+}
+
+static int push_nbr(nbrs *a, uint32_t v)
+{
+    if (a->n == a->cap) {
+        uint32_t cap = a->cap ? a->cap * 2 : 4;
+        uint32_t *grown = realloc(a->v, cap * sizeof *grown);
+        if (!grown)
+            return -1;
+        a->v = grown;
+        a->cap = cap;
+    }
+    a->v[a->n++] = v;
+    return 0;
+}
+
+static sw_status build_adjacency(simp *S, sw_error *err)
+{
+    uint32_t count = 0;
+    uint64_t *pairs = loop_pairs(S->g, &count);
+    if (!pairs)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
+    sw_status st = check_edges(S->g, pairs, count, err);
+    for (uint32_t i = 0; st == SW_OK && i < count; i++) {
+        uint32_t a = (uint32_t)(pairs[i] >> 32), b = (uint32_t)pairs[i];
+        if (push_nbr(&S->adj[a], b) || push_nbr(&S->adj[b], a))
+            st = sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
+    }
+    free(pairs);
+    return st;
+}
+
+/* ---- one step (5.4) ---- */
+
+static void remove_nbr(nbrs *a, uint32_t v)
+{
+    for (uint32_t i = 0; i < a->n; i++)
+        if (a->v[i] == v) {
+            a->v[i] = a->v[--a->n];
+            return;
+        }
+}
+
+/* Collapses v1 into S->target[v1]. Returns -1 when malloc fails. */
+static int collapse(simp *S, uint32_t v1)
+{
+    sw_seam_host *g = S->g;
+    uint32_t v2 = S->target[v1], vn = g->vertex_count;
+    double eps = S->eps[v1], step = eps + S->stored[v1];
+    sw_seam_vertex *vx = g->vertices;
+    float e = fmaxf((float)step, fmaxf(vx[v1].error, vx[v2].error));
+    vx[vn] = (sw_seam_vertex){{vx[v2].p[0], vx[v2].p[1], vx[v2].p[2]}, SW_SEAM_NONE, e, 0, 0, 0};
+    vx[v1].child = vx[v2].child = vn;
+    g->collapses[g->collapse_count++] = (sw_seam_collapse){v1, v2, (float)step};
+    g->vertex_count++;
+    S->stored[vn] = fmax(S->stored[v2], S->stored[v1] + eps);
+    S->pos[vn] = UINT32_MAX;
+    heap_remove(S, v1);
+    heap_remove(S, v2);
+
+    uint32_t stamp = ++S->stamp;
+    S->mark[v1] = S->mark[v2] = stamp;
+    nbrs merged = {0};
+    for (int side = 0; side < 2; side++) {
+        nbrs *a = &S->adj[side ? v2 : v1];
+        for (uint32_t i = 0; i < a->n; i++) {
+            uint32_t w = a->v[i];
+            if (!side && w != v2)
+                S->stored[w] = fmax(S->stored[w], S->stored[v1] + eps);
+            if (S->mark[w] == stamp)
+                continue;
+            S->mark[w] = stamp;
+            if (push_nbr(&merged, w))
+                return -1;
+        }
+    }
+    free(S->adj[v1].v);
+    free(S->adj[v2].v);
+    S->adj[v1] = S->adj[v2] = (nbrs){0};
+    S->adj[vn] = merged;
+    for (uint32_t i = 0; i < merged.n; i++) {
+        nbrs *a = &S->adj[merged.v[i]];
+        remove_nbr(a, v1);
+        remove_nbr(a, v2);
+        if (push_nbr(a, vn))
+            return -1;
+    }
+    update_best(S, vn);
+    for (uint32_t i = 0; i < merged.n; i++)
+        update_best(S, merged.v[i]);
+    return 0;
+}
+
+/* ---- driver ---- */
+
+static sw_status check_original(const sw_seam_host *g, sw_error *err)
+{
+    sw_seam_graph view = sw_seam_host_view(g);
+    sw_status st = sw_seam_graph_check(&view, err);
+    if (st != SW_OK) {
+        sw_error_prefix(err, "seam simplify");
+        return st;
+    }
+    if (g->collapse_count)
+        return sw_error_set(err, SW_ERR_FORMAT,
+                            "seam simplify: graph already has %u collapses, expected 0",
+                            g->collapse_count);
+    if (g->original_count > UINT32_MAX / 2)
+        return sw_error_set(err, SW_ERR_RANGE, "seam simplify: %u vertices, too many",
+                            g->original_count);
+    return SW_OK;
+}
+
+static void free_simp(simp *S, uint32_t vertices)
+{
+    if (S->adj)
+        for (uint32_t v = 0; v < vertices; v++)
+            free(S->adj[v].v);
+    free(S->adj);
+    free(S->stored);
+    free(S->cost);
+    free(S->eps);
+    free(S->target);
+    free(S->heap);
+    free(S->pos);
+    free(S->mark);
+}
+
+static sw_status grow_host(sw_seam_host *g, size_t cap, sw_error *err)
+{
+    sw_seam_vertex *v = realloc(g->vertices, cap * sizeof *v);
+    if (!v)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
+    g->vertices = v;
+    sw_seam_collapse *c = malloc(cap * sizeof *c);
+    if (!c)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
+    free(g->collapses);
+    g->collapses = c;
+    return SW_OK;
+}
+
+static void restore(sw_seam_host *g, uint32_t original)
+{
+    for (uint32_t v = 0; v < original; v++)
+        g->vertices[v].child = SW_SEAM_NONE;
+    g->vertex_count = original;
+    g->collapse_count = 0;
+}
+
+sw_status sw_seam_simplify(sw_seam_host *g, sw_error *err)
+{
+    if (!g)
+        return sw_error_set(err, SW_ERR_ARG, "seam simplify: no graph");
+    sw_status st = check_original(g, err);
+    if (st != SW_OK || !g->original_count)
+        return st;
+    size_t cap = (size_t)g->original_count * 2;
+    simp S = {.g = g};
+    S.adj = calloc(cap, sizeof *S.adj);
+    S.stored = calloc(cap, sizeof *S.stored);
+    S.cost = malloc(cap * sizeof *S.cost);
+    S.eps = malloc(cap * sizeof *S.eps);
+    S.target = malloc(cap * sizeof *S.target);
+    S.heap = malloc(cap * sizeof *S.heap);
+    S.pos = malloc(cap * sizeof *S.pos);
+    S.mark = calloc(cap, sizeof *S.mark);
+    if (!S.adj || !S.stored || !S.cost || !S.eps || !S.target || !S.heap || !S.pos || !S.mark)
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
+    if (st == SW_OK)
+        st = build_adjacency(&S, err);
+    if (st == SW_OK)
+        st = grow_host(g, cap, err);
+    uint32_t original = g->original_count;
+    if (st == SW_OK) {
+        memset(S.pos, 0xFF, cap * sizeof *S.pos);
+        for (uint32_t v = 0; v < original; v++)
+            update_best(&S, v);
+        while (S.heap_n && st == SW_OK)
+            if (collapse(&S, S.heap[0]))
+                st = sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
+        if (st != SW_OK)
+            restore(g, original);
+    }
+    free_simp(&S, (uint32_t)cap);
+    return st;
+}

@@ -1,0 +1,33 @@
+/* The Seam Graph's collapse hierarchy (Guthe et al. 2002, sections
+ * 5.2-5.5), built on the host after sewing: seamwalk-pack calls it on the
+ * sewn graph before writing the pack. The runtime walks the result with
+ * core/sw_seam_select.h. */
+#ifndef SW_SEAM_SIMPLIFY_H
+#define SW_SEAM_SIMPLIFY_H
+
+#include "sw_seam_build.h"
+
+/* Takes graph as sewing leaves it (original vertices only: no collapses,
+ * every child SW_SEAM_NONE, every error 0) and appends the collapses and the
+ * vertices they create, until one vertex per connected part is left (whole
+ * surfaces vanish at the coarse end). Adjacency comes from the loops: two
+ * vertices are adjacent when they are consecutive and distinct in a loop;
+ * graph->edges must list exactly those pairs.
+ *
+ * Each step collapses the cheapest edge into one of its two vertices (the
+ * new vertex copies the kept one's position, paper 5.2). The cost of
+ * v1 -> v2 is epsilon + d (5.3): epsilon the largest distance from v1 to the
+ * edges (v2, w) that replace v1's edges (v1, w) (|v1 v2| when v1 has no
+ * other neighbour), d the error stored at v1 by earlier steps; the cheaper
+ * direction wins. Costs sit in a binary heap, one entry per vertex (its best
+ * collapse), and after each step the costs of the new vertex and its
+ * neighbours are recomputed (5.4). Vertex errors are monotone: a created
+ * vertex's error is the largest of its step's and its parents'.
+ *
+ * Grows graph->vertices (realloc) and allocates graph->collapses (the old
+ * pointer, which must hold no collapses, is freed). SW_ERR_FORMAT /
+ * SW_ERR_RANGE for a malformed graph, SW_ERR_NO_MEMORY when malloc fails;
+ * on failure graph is left as it came in (children and counts restored). */
+sw_status sw_seam_simplify(sw_seam_host *graph, sw_error *err);
+
+#endif

@@ -1,0 +1,347 @@
+/* The Seam Graph's front: init, the dependency rule, split, collapse and
+ * forced split (sw_seam_select.h). The per-frame update is in
+ * sw_seam_select_update.c, the polylines in sw_seam_select_loop.c.
+ *
+ * The dependency rule. Number the vertices as the graph does (El-Sana and
+ * Varshney 1999: originals first, each created vertex after everything it
+ * was made from), and let a vertex x "live" over the simplification steps
+ * [x, child(x)), a root living forever. The simplifier only ever saw
+ * neighbours that lived at the same time, so the front keeps the invariant
+ *     I: adjacent active vertices x, y have x < child(y) and y < child(x).
+ * The roots satisfy I (children are infinite), and so do the originals (every
+ * child is a created vertex, larger than every original). Splitting vn into
+ * v1, v2 (child vn) makes every neighbour w of vn a neighbour of v1 or v2, so
+ * I needs w < vn: the split is legal when every neighbour of vn is smaller
+ * than vn ("all vertices adjacent to vn are assigned a number smaller than
+ * that of vn", paper 5.5). Collapsing v1, v2 into vn makes every neighbour w
+ * of v1 or v2 a neighbour of vn, so I needs vn < child(w) (and w < vn, which
+ * I already gives: w < child(v1) = vn): the collapse is legal when every
+ * neighbour w of v1 or v2 has w < vn < child(w), which is El-Sana and
+ * Varshney's rule. The paper's sentence for the collapse reads "children
+ * smaller than vn" and lets any original neighbour pass; taken literally it
+ * would allow a collapse next to an original w whose child d is older than
+ * vn, making neighbours of vertices that never coexisted (the simplifier
+ * never measured that configuration), and the collapse into d then stays
+ * blocked by vn > d until vn is split again. We use the rule above,
+ * which is the exact condition for keeping I. The two rules are inverse: a
+ * collapse that was legal can be undone by a split at once and vice versa,
+ * so every front reached is reachable back and forth. */
+#include "sw_seam_select.h"
+
+#include <stdint.h>
+
+#include "sw_seam_check.h"
+#include "sw_seam_select_internal.h"
+
+static size_t worst(size_t count, size_t size) { return sw_arena_worst_case(count * size, 8); }
+
+size_t sw_seam_select_arena_bytes(const sw_seam_graph *g)
+{
+    if (!g)
+        return 0;
+    uint64_t largest = g->vertex_count > g->slot_count ? g->vertex_count : g->slot_count;
+    if (largest > (uint64_t)(SIZE_MAX / 64))
+        return SIZE_MAX;   /* 32-bit size_t: more than the address space */
+    size_t v = g->vertex_count, o = g->original_count;
+    return worst(v, 1) * 2 + worst(v, 4) * 4 + worst(o, 4) * 2 + worst(g->slot_count, 4) +
+           worst((size_t)g->collapse_count + 1, 4) + worst(g->surface_count, 1);
+}
+
+static void *take(sw_arena *arena, size_t count, size_t size, int *failed)
+{
+    void *p = sw_arena_alloc(arena, count * size, 8);
+    if (!p)
+        *failed = 1;
+    return p;
+}
+
+static sw_status take_arrays(sw_seam_select *s, sw_arena *arena, sw_error *err)
+{
+    const sw_seam_graph *g = &s->graph;
+    size_t v = g->vertex_count, o = g->original_count;
+    int failed = 0;
+    s->active = take(arena, v, 1, &failed);
+    s->queued = take(arena, v, 1, &failed);
+    s->leaf_lo = take(arena, v, 4, &failed);
+    s->leaf_count = take(arena, v, 4, &failed);
+    s->bound = take(arena, v, 4, &failed);
+    s->queue = take(arena, v, 4, &failed);
+    s->leaf_order = take(arena, o, 4, &failed);
+    s->shown = take(arena, o, 4, &failed);
+    s->slot_loop = take(arena, g->slot_count, 4, &failed);
+    s->stack = take(arena, (size_t)g->collapse_count + 1, 4, &failed);
+    s->surface_changed = take(arena, g->surface_count, 1, &failed);
+    if (failed)
+        return sw_error_set(err, SW_ERR_NO_MEMORY,
+                            "seam select: arena too small (%zu bytes free, %zu needed)",
+                            arena->size - arena->used, sw_seam_select_arena_bytes(g));
+    return SW_OK;
+}
+
+/* Leaf ranges: every vertex's originals contiguous in leaf_order, v2's side
+ * before v1's, so the smallest position in a run is the slot whose (u, v)
+ * the polyline uses (sw_seam_select_loop.c). Children are larger than their
+ * parents, so a descending pass places every vertex before its parents. */
+static void build_leaf_ranges(sw_seam_select *s)
+{
+    const sw_seam_graph *g = &s->graph;
+    for (uint32_t v = 0; v < g->vertex_count; v++)
+        s->leaf_count[v] = v < g->original_count ? 1 : 0;
+    for (uint32_t k = 0; k < g->collapse_count; k++)
+        s->leaf_count[g->original_count + k] =
+            s->leaf_count[g->collapses[k].v1] + s->leaf_count[g->collapses[k].v2];
+    uint32_t next = 0;
+    for (uint32_t v = 0; v < g->vertex_count; v++)
+        if (g->vertices[v].child == SW_SEAM_NONE) {
+            s->leaf_lo[v] = next;
+            next += s->leaf_count[v];
+        }
+    for (uint32_t k = g->collapse_count; k-- > 0;) {
+        const sw_seam_collapse *c = &g->collapses[k];
+        uint32_t vn = g->original_count + k;
+        s->leaf_lo[c->v2] = s->leaf_lo[vn];
+        s->leaf_lo[c->v1] = s->leaf_lo[vn] + s->leaf_count[c->v2];
+    }
+    for (uint32_t o = 0; o < g->original_count; o++)
+        s->leaf_order[s->leaf_lo[o]] = o;
+}
+
+/* Marks the surfaces of the slots under v as changed and shows x in them. */
+static void show(sw_seam_select *s, uint32_t v, uint32_t x)
+{
+    const sw_seam_graph *g = &s->graph;
+    uint32_t lo = s->leaf_lo[v], hi = lo + s->leaf_count[v];
+    for (uint32_t p = lo; p < hi; p++) {
+        uint32_t o = s->leaf_order[p];
+        s->shown[o] = x;
+        const sw_seam_vertex *ov = &g->vertices[o];
+        for (uint32_t r = 0; r < ov->slot_ref_count; r++) {
+            uint32_t loop = s->slot_loop[g->slot_refs[ov->first_slot_ref + r]];
+            if (loop != SW_SEAM_NONE)
+                s->surface_changed[g->loops[loop].surface] = 1;
+        }
+    }
+}
+
+sw_status sw_seam_select_init(sw_seam_select *s, const sw_seam_graph *graph, sw_arena *arena,
+                              sw_error *err)
+{
+    if (!s || !arena)
+        return sw_error_set(err, SW_ERR_ARG, "seam select: no state or arena");
+    sw_status st = sw_seam_graph_check(graph, err);
+    if (st != SW_OK)
+        return st;
+    if (sw_seam_select_arena_bytes(graph) == SIZE_MAX)
+        return sw_error_set(err, SW_ERR_RANGE, "seam select: %u vertices, %u slots: too many",
+                            graph->vertex_count, graph->slot_count);
+    *s = (sw_seam_select){.graph = *graph};
+    st = take_arrays(s, arena, err);
+    if (st != SW_OK)
+        return st;
+    const sw_seam_graph *g = &s->graph;
+    for (uint32_t i = 0; i < g->slot_count; i++)
+        s->slot_loop[i] = SW_SEAM_NONE;
+    for (uint32_t l = 0; l < g->loop_count; l++)
+        for (uint32_t i = 0; i < g->loops[l].slot_count; i++)
+            s->slot_loop[g->loops[l].first_slot + i] = l;
+    build_leaf_ranges(s);
+    for (uint32_t v = 0; v < g->vertex_count; v++) {
+        s->queued[v] = 0;
+        s->active[v] = g->vertices[v].child == SW_SEAM_NONE;
+        if (s->active[v]) {
+            s->active_count++;
+            show(s, v, v);
+        }
+    }
+    sw_seam_select_clear_changed(s);
+    return SW_OK;
+}
+
+/* The vertex slot i shows, and slot i's neighbours in its loop (cyclic). */
+static uint32_t shown_at(const sw_seam_select *s, uint32_t slot)
+{
+    return s->shown[s->graph.slots[slot].vertex];
+}
+
+static uint32_t cyclic_step(const sw_seam_select *s, uint32_t slot, int forward)
+{
+    const sw_seam_loop *loop = &s->graph.loops[s->slot_loop[slot]];
+    uint32_t i = slot - loop->first_slot;
+    i = forward ? (i + 1 == loop->slot_count ? 0 : i + 1) : (i ? i - 1 : loop->slot_count - 1);
+    return loop->first_slot + i;
+}
+
+/* Every run of x in a polyline is bounded by slots next to slots of x's
+ * originals, so looking one slot each way from each of them finds all
+ * neighbours in O(slots under x). */
+uint32_t sw_seam_select_scan_neighbours(const sw_seam_select *s, uint32_t x,
+                                        uint32_t (*visit)(void *ctx, uint32_t w), void *ctx)
+{
+    const sw_seam_graph *g = &s->graph;
+    uint32_t lo = s->leaf_lo[x], hi = lo + s->leaf_count[x];
+    for (uint32_t p = lo; p < hi; p++) {
+        const sw_seam_vertex *ov = &g->vertices[s->leaf_order[p]];
+        for (uint32_t r = 0; r < ov->slot_ref_count; r++) {
+            uint32_t slot = g->slot_refs[ov->first_slot_ref + r];
+            if (s->slot_loop[slot] == SW_SEAM_NONE)
+                continue;
+            for (int forward = 0; forward < 2; forward++) {
+                uint32_t w = shown_at(s, cyclic_step(s, slot, forward));
+                uint32_t stop = w != x ? visit(ctx, w) : 0;
+                if (stop)
+                    return stop;
+            }
+        }
+    }
+    return 0;
+}
+
+typedef struct limits {
+    const sw_seam_select *s;
+    uint32_t vn, v1, v2;
+} limits;
+
+/* Split test: a neighbour >= vn blocks; returns it (+1, so 0 means none). */
+static uint32_t blocks_split(void *ctx, uint32_t w)
+{
+    const limits *lim = ctx;
+    return w > lim->vn ? w + 1 : 0;
+}
+
+/* Collapse test: a neighbour w of v1 or v2 blocks unless w < vn < child(w). */
+static uint32_t blocks_collapse(void *ctx, uint32_t w)
+{
+    const limits *lim = ctx;
+    if (w == lim->v1 || w == lim->v2)
+        return 0;
+    uint32_t child = lim->s->graph.vertices[w].child;
+    return (w < lim->vn && (child == SW_SEAM_NONE || child > lim->vn)) ? 0 : w + 1;
+}
+
+static int is_created(const sw_seam_select *s, uint32_t v)
+{
+    return v >= s->graph.original_count && v < s->graph.vertex_count;
+}
+
+/* The first neighbour of active vn larger than vn, or SW_SEAM_NONE. */
+static uint32_t split_blocker(const sw_seam_select *s, uint32_t vn)
+{
+    limits lim = {s, vn, SW_SEAM_NONE, SW_SEAM_NONE};
+    uint32_t w = sw_seam_select_scan_neighbours(s, vn, blocks_split, &lim);
+    return w ? w - 1 : SW_SEAM_NONE;
+}
+
+int sw_seam_select_can_split(const sw_seam_select *s, uint32_t vn)
+{
+    if (!s || !is_created(s, vn) || !s->active[vn])
+        return 0;
+    return split_blocker(s, vn) == SW_SEAM_NONE;
+}
+
+int sw_seam_select_can_collapse(const sw_seam_select *s, uint32_t vn)
+{
+    if (!s || !is_created(s, vn))
+        return 0;
+    const sw_seam_collapse *c = &s->graph.collapses[vn - s->graph.original_count];
+    if (!s->active[c->v1] || !s->active[c->v2])
+        return 0;
+    limits lim = {s, vn, c->v1, c->v2};
+    return !sw_seam_select_scan_neighbours(s, c->v1, blocks_collapse, &lim) &&
+           !sw_seam_select_scan_neighbours(s, c->v2, blocks_collapse, &lim);
+}
+
+/* The steps themselves, for callers that checked the rule. */
+static void do_split(sw_seam_select *s, uint32_t vn)
+{
+    const sw_seam_collapse *c = &s->graph.collapses[vn - s->graph.original_count];
+    s->active[vn] = 0;
+    s->active[c->v1] = s->active[c->v2] = 1;
+    s->active_count++;
+    show(s, c->v1, c->v1);
+    show(s, c->v2, c->v2);
+}
+
+void sw_seam_select_do_collapse(sw_seam_select *s, uint32_t vn)
+{
+    const sw_seam_collapse *c = &s->graph.collapses[vn - s->graph.original_count];
+    s->active[vn] = 1;
+    s->active[c->v1] = s->active[c->v2] = 0;
+    s->active_count--;
+    show(s, vn, vn);
+}
+
+sw_status sw_seam_select_split(sw_seam_select *s, uint32_t vn, sw_error *err)
+{
+    if (!sw_seam_select_can_split(s, vn))
+        return sw_error_set(err, SW_ERR_ARG, "seam select: split of vertex %u not allowed", vn);
+    do_split(s, vn);
+    return SW_OK;
+}
+
+sw_status sw_seam_select_collapse(sw_seam_select *s, uint32_t vn, sw_error *err)
+{
+    if (!sw_seam_select_can_collapse(s, vn))
+        return sw_error_set(err, SW_ERR_ARG, "seam select: collapse into vertex %u not allowed",
+                            vn);
+    sw_seam_select_do_collapse(s, vn);
+    return SW_OK;
+}
+
+/* A blocker is larger than the vertex it blocks, so the stack rises
+ * strictly and never holds more than the created vertices. */
+uint32_t sw_seam_select_force(sw_seam_select *s, uint32_t v, uint32_t max_ops,
+                              sw_seam_on_split on_split, void *ctx)
+{
+    uint32_t depth = 0, splits = 0;
+    s->stack[depth++] = v;
+    while (depth) {
+        uint32_t t = s->stack[depth - 1];
+        if (!s->active[t]) {
+            depth--;
+            continue;
+        }
+        uint32_t w = split_blocker(s, t);
+        if (w != SW_SEAM_NONE) {
+            s->stack[depth++] = w;
+            continue;
+        }
+        if (max_ops && splits == max_ops)
+            break;
+        do_split(s, t);
+        splits++;
+        if (on_split)
+            on_split(ctx, s, t, v);
+        depth--;
+    }
+    return splits;
+}
+
+sw_status sw_seam_select_force_split(sw_seam_select *s, uint32_t v, uint32_t max_ops,
+                                     uint32_t *splits, sw_error *err)
+{
+    if (splits)
+        *splits = 0;
+    if (!s || !is_created(s, v) || !s->active[v])
+        return sw_error_set(err, SW_ERR_ARG,
+                            "seam select: vertex %u is not an active created vertex", v);
+    uint32_t n = sw_seam_select_force(s, v, max_ops, NULL, NULL);
+    if (splits)
+        *splits = n;
+    return SW_OK;
+}
+
+int sw_seam_select_is_active(const sw_seam_select *s, uint32_t v)
+{
+    return s && v < s->graph.vertex_count && s->active[v];
+}
+
+int sw_seam_select_surface_changed(const sw_seam_select *s, uint32_t surface)
+{
+    return s && surface < s->graph.surface_count && s->surface_changed[surface];
+}
+
+void sw_seam_select_clear_changed(sw_seam_select *s)
+{
+    for (uint32_t i = 0; i < s->graph.surface_count; i++)
+        s->surface_changed[i] = 0;
+}

@@ -1,0 +1,148 @@
+/* View-dependent level of detail of the Seam Graph (Guthe et al. 2002,
+ * sections 5.5 and 6.1): the runtime's front of active vertices over the
+ * collapse hierarchy of core/sw_seam_graph.h, moved by vertex splits and edge
+ * collapses under El-Sana and Varshney's dependency rule, and the loops'
+ * current polylines that the trimmed tessellation draws.
+ *
+ * The frame loop calls sw_seam_select_update once per frame with an error
+ * bound per surface (model units, from the view: paper 6.1), then reads the
+ * polylines of the surfaces it tessellates (sw_seam_select_loop) and the
+ * surfaces whose loops changed (sw_seam_select_surface_changed). All memory
+ * comes from the arena handed to init; nothing here calls malloc. Not
+ * thread-safe: one owner.
+ *
+ * Cost: a split or collapse of v touches every slot of the original vertices
+ * under v (their shown vertex changes), so it is O(slots under v); an update
+ * also makes one pass over all vertices and slots to fold the surface bounds
+ * into per-vertex bounds (O(vertex_count + slot_count)). */
+#ifndef SW_SEAM_SELECT_H
+#define SW_SEAM_SELECT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sw_arena.h"
+#include "sw_error.h"
+#include "sw_seam_graph.h"
+
+/* The state. Fields are the module's business; read them through the calls
+ * below. The graph's arrays must outlive the state (they are not copied). */
+typedef struct sw_seam_select {
+    sw_seam_graph graph;
+    uint8_t *active;           /* vertex_count: 1 on the front */
+    uint32_t *leaf_lo;         /* vertex_count: v's originals are leaf_order[leaf_lo[v] .. +leaf_count[v]) */
+    uint32_t *leaf_count;      /* vertex_count */
+    uint32_t *leaf_order;      /* original_count: originals in depth-first order, v2's side first */
+    uint32_t *shown;           /* original_count: the active ancestor of each original */
+    uint32_t *slot_loop;       /* slot_count: the loop holding the slot, SW_SEAM_NONE for none */
+    float *bound;              /* vertex_count: the smallest surface bound over v's slots (per update) */
+    uint32_t *stack;           /* collapse_count + 1: forced-split chain */
+    uint32_t *queue;           /* vertex_count: update's work list (a heap) */
+    uint8_t *queued;           /* vertex_count */
+    uint8_t *surface_changed;  /* surface_count */
+    uint32_t queue_len;
+    int queue_largest_first;
+    uint32_t active_count;
+} sw_seam_select;
+
+/* Arena bytes sw_seam_select_init takes for graph, worst case (alignment
+ * included): 18 bytes per vertex, 4 more per created vertex, 8 more per
+ * original, 4 per slot and 1 per surface (about 56 bytes per original
+ * vertex of a sewn graph: 2 slots each, as many created vertices). */
+size_t sw_seam_select_arena_bytes(const sw_seam_graph *graph);
+
+/* Checks graph (sw_seam_graph_check), takes the state's arrays from arena and
+ * starts at the coarsest front: the roots of the hierarchy. SW_ERR_FORMAT /
+ * SW_ERR_RANGE for a malformed graph, SW_ERR_NO_MEMORY when the arena is too
+ * small. The state keeps a copy of graph (the struct, not its arrays). */
+sw_status sw_seam_select_init(sw_seam_select *state, const sw_seam_graph *graph, sw_arena *arena,
+                              sw_error *err);
+
+/* The dependency rule (El-Sana and Varshney 1999, as Guthe et al. 5.5 use it;
+ * the comment in sw_seam_select.c derives it):
+ * - split of vn (collapse (v1, v2 -> vn) undone): vn is active and every
+ *   active neighbour of vn has a smaller index than vn;
+ * - collapse (v1, v2 -> vn): v1 and v2 are active and every active neighbour
+ *   w of v1 or v2 (other than v1, v2) has w < vn < child(w), a root's child
+ *   counting as infinite.
+ * Both keep the front's invariant: any two adjacent active vertices x, y
+ * have x < child(y) and y < child(x) (they existed together at some step of
+ * the simplification). Neighbours are the vertices next to each other in a
+ * loop's current polyline. The can_ calls answer 0 for a vertex out of range
+ * or not in the required state. */
+int sw_seam_select_can_split(const sw_seam_select *state, uint32_t vn);
+int sw_seam_select_can_collapse(const sw_seam_select *state, uint32_t vn);
+
+/* One step, when the rule allows it; SW_ERR_ARG (state unchanged) when not. */
+sw_status sw_seam_select_split(sw_seam_select *state, uint32_t vn, sw_error *err);
+sw_status sw_seam_select_collapse(sw_seam_select *state, uint32_t vn, sw_error *err);
+
+/* Splits active vertex v even where the rule forbids it now: first splits,
+ * recursively, the neighbours with larger indices that block it (paper 5.5).
+ * At most max_ops splits (0: no limit); *splits (may be NULL) gets how many
+ * were done. SW_ERR_ARG when v is not an active created vertex; SW_OK with v
+ * still active when max_ops ran out (the front is valid after every step). */
+sw_status sw_seam_select_force_split(sw_seam_select *state, uint32_t v, uint32_t max_ops,
+                                     uint32_t *splits, sw_error *err);
+
+typedef struct sw_seam_update_result {
+    uint32_t splits;          /* all splits, the forced ones included */
+    uint32_t forced_splits;   /* splits of vertices that met their bound, made for a neighbour */
+    uint32_t collapses;
+    int complete;             /* 0 when max_ops stopped the update early */
+} sw_seam_update_result;
+
+/* Moves the front for one frame. surface_bound[s] (model units, finite,
+ * >= 0) is the error surface s accepts; a vertex's bound is the smallest
+ * over the surfaces whose loops hold its originals' slots, which are the
+ * surfaces whose loops show it whenever it is active. Afterwards every
+ * active vertex's error is <= its bound (refined where needed, with forced
+ * splits), and no collapse is left whose vertex would meet its bound and
+ * the rule allows (coarse where it can). max_ops caps splits + collapses
+ * (paper 6.4's load balancing; 0: no cap): when it stops the update early,
+ * result->complete is 0 and the bound may not hold yet; the next update goes
+ * on from there. Refinement comes first, so a capped update spends its
+ * operations on errors that are too large before saving vertices.
+ * SW_ERR_ARG for a missing, NaN, infinite or negative bound. */
+sw_status sw_seam_select_update(sw_seam_select *state, const float *surface_bound,
+                                uint32_t max_ops, sw_seam_update_result *result, sw_error *err);
+
+/* One point of a loop's current polyline: the active vertex shown and the
+ * (u, v) to use for it in the loop's surface. */
+typedef struct sw_seam_point {
+    uint32_t vertex;
+    float uv[2];
+} sw_seam_point;
+
+/* Loop's current polyline (closed: the last point joins the first) into
+ * points[0 .. *count). A run of slots showing one vertex gives one point; its
+ * (u, v) comes from the run's slot whose original the vertex's position
+ * descends from most directly: at each collapse on the way down, v2's side
+ * when the run holds a slot of it, else v1's (so a vertex sewn in the loop
+ * keeps its own parameters, and vn takes v1's where v2 is not in the loop).
+ * The polyline starts at the first slot (in slot order) that begins a run.
+ * *vanished is 1 when the polyline has fewer than three distinct vertices.
+ * At most the loop's slot_count points; SW_ERR_NO_MEMORY with *count set to
+ * the points needed when capacity is smaller; SW_ERR_RANGE for a bad loop. */
+sw_status sw_seam_select_loop(const sw_seam_select *state, uint32_t loop, sw_seam_point *points,
+                              uint32_t capacity, uint32_t *count, int *vanished, sw_error *err);
+
+typedef struct sw_seam_select_stats {
+    uint32_t active_vertices;
+    uint32_t loops_vanished;
+    uint32_t surfaces_vanished;   /* surfaces whose outer loop vanished: not drawn */
+} sw_seam_select_stats;
+
+/* Counts over the whole graph: O(slot_count) (the loops are walked). */
+sw_seam_select_stats sw_seam_select_count(const sw_seam_select *state);
+
+/* 1 when v is on the front. */
+int sw_seam_select_is_active(const sw_seam_select *state, uint32_t v);
+
+/* Surfaces with a loop whose polyline may have changed since the last
+ * clear: set by every split and collapse for the surfaces of the slots it
+ * touched. The tessellation reads and clears them. */
+int sw_seam_select_surface_changed(const sw_seam_select *state, uint32_t surface);
+void sw_seam_select_clear_changed(sw_seam_select *state);
+
+#endif

@@ -1,0 +1,175 @@
+/* sw_seam_select_update: one frame's refinement and coarsening of the Seam
+ * Graph's front (sw_seam_select.h; paper 5.5 and 6.1). */
+#include <math.h>
+
+#include "sw_seam_select.h"
+#include "sw_seam_select_internal.h"
+
+/* The work list: a binary heap of vertex indices, largest first while
+ * refining (the coarsest vertices split first, and their splits free the
+ * smaller ones) and smallest first while coarsening. Coarsening in rising
+ * order means a collapse blocked by a finer neighbour w meets it after w's
+ * own collapse (child(w) < it) was tried, so few collapses are tried twice.
+ * Each vertex is in the heap at most once (queued[]): vertex_count entries
+ * never overflow. */
+static int before(const sw_seam_select *s, uint32_t a, uint32_t b)
+{
+    return s->queue_largest_first ? a > b : a < b;
+}
+
+static void push(sw_seam_select *s, uint32_t v)
+{
+    if (v == SW_SEAM_NONE || s->queued[v])
+        return;
+    s->queued[v] = 1;
+    uint32_t i = s->queue_len++;
+    while (i && before(s, v, s->queue[(i - 1) / 2])) {
+        s->queue[i] = s->queue[(i - 1) / 2];
+        i = (i - 1) / 2;
+    }
+    s->queue[i] = v;
+}
+
+static uint32_t pop(sw_seam_select *s)
+{
+    uint32_t top = s->queue[0], v = s->queue[--s->queue_len], i = 0;
+    for (;;) {
+        uint32_t c = 2 * i + 1;
+        if (c >= s->queue_len)
+            break;
+        if (c + 1 < s->queue_len && before(s, s->queue[c + 1], s->queue[c]))
+            c++;
+        if (!before(s, s->queue[c], v))
+            break;
+        s->queue[i] = s->queue[c];
+        i = c;
+    }
+    if (s->queue_len)
+        s->queue[i] = v;
+    s->queued[top] = 0;
+    return top;
+}
+
+static void drain(sw_seam_select *s)
+{
+    while (s->queue_len)
+        pop(s);
+}
+
+/* A vertex's bound: the smallest over the surfaces of its originals' slots.
+ * Those are exactly the surfaces whose loops show it while it is active
+ * (a slot shows v iff its original is under v), vanished loops included, so
+ * a surface that vanished far away comes back when it is approached. */
+static void fold_bounds(sw_seam_select *s, const float *surface_bound)
+{
+    const sw_seam_graph *g = &s->graph;
+    for (uint32_t o = 0; o < g->original_count; o++)
+        s->bound[o] = INFINITY;
+    /* loop by loop: sequential reads, and a loop's vertices are near each other */
+    for (uint32_t l = 0; l < g->loop_count; l++) {
+        const sw_seam_loop *loop = &g->loops[l];
+        float b = surface_bound[loop->surface];
+        for (uint32_t i = 0; i < loop->slot_count; i++) {
+            float *vb = &s->bound[g->slots[loop->first_slot + i].vertex];
+            *vb = fminf(*vb, b);
+        }
+    }
+    for (uint32_t k = 0; k < g->collapse_count; k++)
+        s->bound[g->original_count + k] =
+            fminf(s->bound[g->collapses[k].v1], s->bound[g->collapses[k].v2]);
+}
+
+static int too_coarse(const sw_seam_select *s, uint32_t v)
+{
+    return v >= s->graph.original_count && s->graph.vertices[v].error > s->bound[v];
+}
+
+static void on_split(void *ctx, sw_seam_select *s, uint32_t vn, uint32_t wanted)
+{
+    sw_seam_update_result *r = ctx;
+    (void)wanted;
+    r->splits++;
+    if (!too_coarse(s, vn))
+        r->forced_splits++;
+    const sw_seam_collapse *c = &s->graph.collapses[vn - s->graph.original_count];
+    if (too_coarse(s, c->v1))
+        push(s, c->v1);
+    if (too_coarse(s, c->v2))
+        push(s, c->v2);
+}
+
+/* Splits every active vertex whose error exceeds its bound, forcing the
+ * splits that block it, and its parents in turn while they still do. */
+static int refine(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
+{
+    s->queue_largest_first = 1;
+    for (uint32_t v = s->graph.original_count; v < s->graph.vertex_count; v++)
+        if (s->active[v] && too_coarse(s, v))
+            push(s, v);
+    while (s->queue_len) {
+        uint32_t x = pop(s);
+        if (!s->active[x] || !too_coarse(s, x))
+            continue;
+        if (max_ops && *used == max_ops)
+            return 0;
+        *used += sw_seam_select_force(s, x, max_ops ? max_ops - *used : 0, on_split, r);
+        if (s->active[x])
+            return 0;
+    }
+    return 1;
+}
+
+/* Collapses wherever the new vertex meets its bound and the rule allows,
+ * in rising order of the new vertex. One pass is enough: what a collapse
+ * into c waits for is smaller than c (its parents; a finer neighbour w's
+ * own collapse, child(w) < c), so it was settled before c came up; a
+ * neighbour larger than c blocks until a split, and this phase splits
+ * nothing. The new vertex's own collapse is queued after it. Only
+ * collapses whose parents are both active and whose vertex meets its bound
+ * start in the list, so a frame where nothing changes costs little more
+ * than the pass over the bounds. */
+static int coarsen(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
+{
+    drain(s);
+    s->queue_largest_first = 0;
+    const sw_seam_graph *g = &s->graph;
+    for (uint32_t k = 0; k < g->collapse_count; k++) {
+        uint32_t c = g->original_count + k;
+        if (s->active[g->collapses[k].v1] && s->active[g->collapses[k].v2] && !too_coarse(s, c))
+            push(s, c);
+    }
+    while (s->queue_len) {
+        uint32_t c = pop(s);
+        if (s->active[c] || too_coarse(s, c) || !sw_seam_select_can_collapse(s, c))
+            continue;
+        if (max_ops && *used == max_ops)
+            return 0;
+        sw_seam_select_do_collapse(s, c);
+        (*used)++;
+        r->collapses++;
+        push(s, s->graph.vertices[c].child);
+    }
+    return 1;
+}
+
+sw_status sw_seam_select_update(sw_seam_select *s, const float *surface_bound,
+                                uint32_t max_ops, sw_seam_update_result *result, sw_error *err)
+{
+    sw_seam_update_result r = {0};
+    if (result)
+        *result = r;
+    if (!s || (!surface_bound && s->graph.surface_count))
+        return sw_error_set(err, SW_ERR_ARG, "seam select update: no state or bounds");
+    for (uint32_t i = 0; i < s->graph.surface_count; i++)
+        if (!isfinite(surface_bound[i]) || surface_bound[i] < 0.0f)
+            return sw_error_set(err, SW_ERR_ARG,
+                                "seam select update: surface %u bound %g, expected finite >= 0",
+                                i, (double)surface_bound[i]);
+    fold_bounds(s, surface_bound);
+    uint32_t used = 0;
+    r.complete = refine(s, max_ops, &used, &r) && coarsen(s, max_ops, &used, &r);
+    drain(s);
+    if (result)
+        *result = r;
+    return SW_OK;
+}

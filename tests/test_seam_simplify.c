@@ -1,0 +1,275 @@
+/* sw_seam_simplify: the collapse hierarchy of a sewn Seam Graph (paper
+ * 5.2-5.5), on synthetic graphs built here (seam_graph_gen.h). */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "seam_graph_gen.h"
+#include "sw_seam_check.h"
+#include "sw_seam_simplify.h"
+#include "sw_test.h"
+
+/* Connected parts of the original graph, by union-find over loop-consecutive
+ * pairs: computed without the simplifier. */
+static uint32_t find_root(uint32_t *up, uint32_t v)
+{
+    while (up[v] != v)
+        v = up[v] = up[up[v]];
+    return v;
+}
+
+static uint32_t count_parts(const sw_seam_host *g)
+{
+    uint32_t *up = malloc(g->original_count * sizeof *up), parts = g->original_count;
+    for (uint32_t v = 0; v < g->original_count; v++)
+        up[v] = v;
+    for (uint32_t e = 0; e < g->edge_count; e++) {
+        uint32_t a = find_root(up, g->edges[e].a), b = find_root(up, g->edges[e].b);
+        if (a != b)
+            up[a] = b, parts--;
+    }
+    free(up);
+    return parts;
+}
+
+static sw_seam_host simplified(const seam_gen *p)
+{
+    sw_seam_host g;
+    seam_gen_build(p, &g);
+    sw_error err = {0};
+    sw_status st = sw_seam_simplify(&g, &err);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    return g;
+}
+
+static const seam_gen grid3 = {.nx = 3, .ny = 2, .k = 4, .holes = 1, .bumps = 0.05f, .seed = 7};
+static const seam_gen finned = {.nx = 2, .ny = 2, .k = 5, .fin = 1, .free_points = 17,
+                                .bumps = 0.1f, .seed = 11};
+
+static void test_collapses_to_one_vertex_per_connected_part(void)
+{
+    const seam_gen *cases[] = {&grid3, &finned};
+    for (int c = 0; c < 2; c++) {
+        sw_seam_host g;
+        seam_gen_build(cases[c], &g);
+        uint32_t parts = count_parts(&g), originals = g.original_count;
+        sw_status st = sw_seam_simplify(&g, NULL);
+        SW_CHECK(st == SW_OK);
+        SW_CHECK(g.collapse_count == originals - parts);
+        SW_CHECK(g.vertex_count == originals + g.collapse_count);
+        uint32_t roots = 0;
+        for (uint32_t v = 0; v < g.vertex_count; v++)
+            roots += g.vertices[v].child == SW_SEAM_NONE;
+        SW_CHECK_MSG(roots == parts, "roots %u, parts %u", roots, parts);
+        sw_seam_graph view = sw_seam_host_view(&g);
+        sw_error err = {0};
+        SW_CHECK_MSG(sw_seam_graph_check(&view, &err) == SW_OK, "%s", err.message);
+        sw_seam_host_free(&g);
+    }
+}
+
+static void test_new_vertex_copies_v2_and_errors_are_monotone(void)
+{
+    sw_seam_host g = simplified(&finned);
+    for (uint32_t k = 0; k < g.collapse_count; k++) {
+        const sw_seam_collapse *c = &g.collapses[k];
+        const sw_seam_vertex *vn = &g.vertices[g.original_count + k];
+        SW_CHECK(memcmp(vn->p, g.vertices[c->v2].p, sizeof vn->p) == 0);
+        SW_CHECK(vn->error >= c->error);
+        SW_CHECK(vn->error == fmaxf(c->error, fmaxf(g.vertices[c->v1].error,
+                                                     g.vertices[c->v2].error)));
+        SW_CHECK(vn->slot_ref_count == 0 && vn->reserved == 0);
+    }
+    /* along every path to a root, errors never decrease */
+    for (uint32_t v = 0; v < g.vertex_count; v++)
+        for (uint32_t x = v; g.vertices[x].child != SW_SEAM_NONE; x = g.vertices[x].child)
+            SW_CHECK(g.vertices[x].error <= g.vertices[g.vertices[x].child].error);
+    sw_seam_host_free(&g);
+}
+
+/* A square of 8 vertices (corners and mid-sides), flat: the mid-sides lie
+ * on the corners' edges, so the first four collapses cost nothing and leave
+ * the four corners; the next costs the distance of a corner to the
+ * diagonal through its neighbours' ... that is, half the diagonal. */
+static void test_collinear_vertices_go_first_at_zero_cost(void)
+{
+    sw_seam_host g = {0};
+    gen_buf b = {.g = &g, .rng = 1};
+    const double xy[8][2] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+    for (int i = 0; i < 8; i++)
+        gen_vertex(&b, xy[i][0], xy[i][1], 0.0);
+    gen_begin_loop(&b, 0, SW_SEAM_LOOP_OUTER);
+    for (uint32_t i = 0; i < 8; i++)
+        gen_slot(&b, i, xy[i][0] / 2, xy[i][1] / 2);
+    gen_finish(&b, 1);
+    SW_CHECK(sw_seam_simplify(&g, NULL) == SW_OK);
+    SW_CHECK(g.collapse_count == 7);
+    for (uint32_t k = 0; k < 4; k++) {
+        SW_CHECK(g.collapses[k].error == 0.0f);
+        SW_CHECK_MSG(g.collapses[k].v1 % 2 == 1, "collapse %u removes %u", k, g.collapses[k].v1);
+    }
+    /* after the mid-sides: a 2x2 square; removing a corner costs its distance to
+       the diagonal, sqrt(2) */
+    SW_CHECK_NEAR(g.collapses[4].error, sqrt(2.0), 1e-6);
+    SW_CHECK(g.vertices[g.vertex_count - 1].child == SW_SEAM_NONE);
+    sw_seam_host_free(&g);
+}
+
+/* ---- the stored errors bound the distance to the original ---- */
+
+static uint32_t ancestor_at(const sw_seam_host *g, uint32_t o, uint32_t step)
+{
+    uint32_t limit = g->original_count + step;
+    while (g->vertices[o].child != SW_SEAM_NONE && g->vertices[o].child < limit)
+        o = g->vertices[o].child;
+    return o;
+}
+
+static double point_seg(const double p[3], const float a[3], const float b[3])
+{
+    double ab[3], ap[3], t = 0, l2 = 0, d2 = 0;
+    for (int i = 0; i < 3; i++) {
+        ab[i] = (double)b[i] - a[i], ap[i] = p[i] - a[i];
+        l2 += ab[i] * ab[i], t += ap[i] * ab[i];
+    }
+    t = l2 > 0 ? fmin(fmax(t / l2, 0), 1) : 0;
+    for (int i = 0; i < 3; i++)
+        d2 += (ap[i] - t * ab[i]) * (ap[i] - t * ab[i]);
+    return sqrt(d2);
+}
+
+/* After step collapses: every point of the original polylines (vertices and
+ * points along the edges) lies within max(error(a), error(b)) of some
+ * current segment (a, b) (or of a current vertex within its error). */
+static void check_bound_at(const sw_seam_host *g, uint32_t step)
+{
+    uint32_t nseg = 0, cap = g->slot_count + g->vertex_count;
+    uint32_t (*seg)[2] = malloc(cap * sizeof *seg);
+    for (uint32_t l = 0; l < g->loop_count; l++) {
+        const sw_seam_loop *lp = &g->loops[l];
+        for (uint32_t i = 0; i < lp->slot_count; i++) {
+            uint32_t a = ancestor_at(g, g->slots[lp->first_slot + i].vertex, step);
+            uint32_t c = ancestor_at(g, g->slots[lp->first_slot + (i + 1) % lp->slot_count].vertex,
+                                     step);
+            if (a != c)
+                seg[nseg][0] = a, seg[nseg][1] = c, nseg++;
+        }
+    }
+    for (uint32_t v = 0; v < g->original_count + step; v++)
+        if (g->vertices[v].child == SW_SEAM_NONE || g->vertices[v].child >= g->original_count + step)
+            seg[nseg][0] = seg[nseg][1] = v, nseg++;
+    double worst = 0.0;
+    for (uint32_t e = 0; e < g->edge_count; e++)
+        for (int q = 0; q <= 4; q++) {
+            const float *a = g->vertices[g->edges[e].a].p, *b = g->vertices[g->edges[e].b].p;
+            double p[3];
+            for (int i = 0; i < 3; i++)
+                p[i] = a[i] + (b[i] - a[i]) * q / 4.0;
+            double best = DBL_MAX;
+            for (uint32_t s = 0; s < nseg; s++) {
+                const sw_seam_vertex *x = &g->vertices[seg[s][0]], *y = &g->vertices[seg[s][1]];
+                double slack = point_seg(p, x->p, y->p) - fmax(x->error, y->error);
+                best = fmin(best, slack);
+            }
+            worst = fmax(worst, best);
+        }
+    SW_CHECK_MSG(worst <= 1e-5, "after %u collapses a point is %g beyond its bound", step, worst);
+    free(seg);
+}
+
+static void test_errors_bound_the_distance_to_the_original(void)
+{
+    sw_seam_host g = simplified(&finned);
+    for (uint32_t step = 0; step <= g.collapse_count; step += 1 + g.collapse_count / 16)
+        check_bound_at(&g, step);
+    check_bound_at(&g, g.collapse_count);
+    sw_seam_host_free(&g);
+}
+
+static void test_same_input_same_hierarchy(void)
+{
+    sw_seam_host a = simplified(&grid3), b = simplified(&grid3);
+    SW_CHECK(a.collapse_count == b.collapse_count);
+    SW_CHECK(memcmp(a.collapses, b.collapses, a.collapse_count * sizeof *a.collapses) == 0);
+    sw_seam_host_free(&a);
+    sw_seam_host_free(&b);
+}
+
+/* ---- malformed input is rejected and left as it was ---- */
+
+typedef void (*breaker)(sw_seam_host *g);
+static void break_slot_vertex(sw_seam_host *g) { g->slots[3].vertex = g->original_count + 5; }
+static void break_loop_size(sw_seam_host *g) { g->loops[0].slot_count = 2; }
+static void break_loop_range(sw_seam_host *g) { g->loops[g->loop_count - 1].slot_count += 9; }
+static void break_missing_edge(sw_seam_host *g) { g->edge_count--; }
+static void break_extra_edge(sw_seam_host *g) { g->edges[0].b = g->original_count - 1; }
+static void break_duplicate_edge(sw_seam_host *g) { g->edges[1] = g->edges[0]; }
+static void break_child(sw_seam_host *g) { g->vertices[2].child = 0; }
+static void break_error(sw_seam_host *g) { g->vertices[2].error = 1.0f; }
+static void break_position(sw_seam_host *g) { g->vertices[4].p[1] = NAN; }
+static void break_slot_ref(sw_seam_host *g) { g->slot_refs[0] = g->slot_refs[1]; }
+static void break_surface_loops(sw_seam_host *g) { g->surface_loops[1] = g->loop_count + 1; }
+static void break_loop_surface(sw_seam_host *g) { g->loops[0].surface = 1; }
+static void break_counts(sw_seam_host *g) { g->vertex_count--; }
+static void break_unused_vertex(sw_seam_host *g)
+{
+    g->vertices[g->original_count - 1].slot_ref_count = 0;
+}
+
+static void test_rejects_malformed_graphs(void)
+{
+    const breaker breakers[] = {break_slot_vertex, break_loop_size, break_loop_range,
+                                break_missing_edge, break_extra_edge, break_duplicate_edge,
+                                break_child, break_error, break_position, break_slot_ref,
+                                break_surface_loops, break_loop_surface, break_counts,
+                                break_unused_vertex};
+    for (size_t i = 0; i < sizeof breakers / sizeof *breakers; i++) {
+        sw_seam_host g;
+        seam_gen_build(&grid3, &g);
+        breakers[i](&g);
+        uint32_t vertices = g.vertex_count;
+        sw_error err = {0};
+        sw_status st = sw_seam_simplify(&g, &err);
+        SW_CHECK_MSG(st == SW_ERR_FORMAT || st == SW_ERR_RANGE, "breaker %zu: status %s", i,
+                     sw_status_name(st));
+        SW_CHECK_MSG(strncmp(err.message, "seam simplify", 13) == 0, "breaker %zu: '%s'", i,
+                     err.message);
+        SW_CHECK(g.collapse_count == 0 && g.vertex_count == vertices);
+        sw_seam_host_free(&g);
+    }
+}
+
+static void test_rejects_a_graph_already_simplified(void)
+{
+    sw_seam_host g = simplified(&grid3);
+    uint32_t collapses = g.collapse_count;
+    sw_error err = {0};
+    SW_CHECK(sw_seam_simplify(&g, &err) == SW_ERR_FORMAT);
+    SW_CHECK(strstr(err.message, "already has") != NULL);
+    SW_CHECK(g.collapse_count == collapses);
+    sw_seam_host_free(&g);
+    SW_CHECK(sw_seam_simplify(NULL, &err) == SW_ERR_ARG);
+}
+
+static void test_empty_graph_has_nothing_to_do(void)
+{
+    sw_seam_host g = {0};
+    uint32_t zero = 0;
+    g.surface_loops = &zero;
+    SW_CHECK(sw_seam_simplify(&g, NULL) == SW_OK);
+    SW_CHECK(g.collapse_count == 0);
+}
+
+int main(void)
+{
+    SW_RUN(test_collapses_to_one_vertex_per_connected_part);
+    SW_RUN(test_new_vertex_copies_v2_and_errors_are_monotone);
+    SW_RUN(test_collinear_vertices_go_first_at_zero_cost);
+    SW_RUN(test_errors_bound_the_distance_to_the_original);
+    SW_RUN(test_same_input_same_hierarchy);
+    SW_RUN(test_rejects_malformed_graphs);
+    SW_RUN(test_rejects_a_graph_already_simplified);
+    SW_RUN(test_empty_graph_has_nothing_to_do);
+    return sw_test_finish();
+}
