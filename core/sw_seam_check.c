@@ -1,9 +1,23 @@
-/* sw_seam_graph_check: structural checks of a Seam Graph (sw_seam_check.h). */
+/* sw_seam_graph_check (sw_seam_check.h): every rule of a Seam Graph, for a
+ * graph built on the host and for one read from a pack (the pack reader's
+ * sw_pack_validate_seam checks the SEAM header record and then calls this,
+ * so there is one set of rules). It checks every index and every value the
+ * runtime walks along once, so the seam selection and the trim tessellator
+ * need no checks of their own: the collapse hierarchy is a forest whose
+ * links only go to larger indices, so walking a vertex to its root ends;
+ * every slot names an original vertex and lies in exactly one loop; slot_refs
+ * are exactly the inverse of slots. It allocates nothing (the runtime calls
+ * it): the inverse is checked in one pass because each vertex's references
+ * are a contiguous run in vertex order and in increasing slot order.
+ * Messages name the pack section, record and field ("SEAM_COLLAPSES[2].v1:
+ * ..."), which are also the arrays' names in sw_seam_graph. Rules:
+ * assets/PACK_FORMAT.md. */
 #include "sw_seam_check.h"
 
 #include <math.h>
+#include <stdio.h>
 
-static int finite3(const float p[3]) { return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]); }
+static int finite_non_negative(float x) { return isfinite(x) && x >= 0.0f; }
 
 static sw_status check_arrays(const sw_seam_graph *g, sw_error *err)
 {
@@ -22,162 +36,275 @@ static sw_status check_arrays(const sw_seam_graph *g, sw_error *err)
         return sw_error_set(err, SW_ERR_FORMAT, "seam graph: an array with a non-zero "
                                                 "count (or surface_loops) is missing");
     if (g->slot_ref_count != g->slot_count)
-        return sw_error_set(err, SW_ERR_FORMAT,
-                            "seam graph: slot_ref_count %u, expected slot_count %u",
-                            g->slot_ref_count, g->slot_count);
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM.slot_ref_count: %u, expected slot_count %u "
+                            "(every slot is listed once)", (unsigned)g->slot_ref_count,
+                            (unsigned)g->slot_count);
     if (!isfinite(g->tolerance) || g->tolerance < 0.0f)
         return sw_error_set(err, SW_ERR_FORMAT, "seam graph: tolerance %g, expected finite >= 0",
                             (double)g->tolerance);
     return SW_OK;
 }
 
-static sw_status check_loops(const sw_seam_graph *g, sw_error *err)
+/* One vertex's own fields; links to other records are checked later. */
+static sw_status validate_vertex(const sw_seam_graph *g, uint32_t i, sw_error *err)
 {
-    if (g->surface_loops[0] != 0 || g->surface_loops[g->surface_count] != g->loop_count)
-        return sw_error_set(err, SW_ERR_FORMAT,
-                            "seam graph: surface_loops runs from %u to %u, expected 0 to "
-                            "loop_count %u", g->surface_loops[0],
-                            g->surface_loops[g->surface_count], g->loop_count);
-    for (uint32_t s = 0; s < g->surface_count; s++) {
-        uint32_t l0 = g->surface_loops[s], l1 = g->surface_loops[s + 1];
-        if (l1 < l0 || l1 > g->loop_count)
-            return sw_error_set(err, SW_ERR_FORMAT,
-                                "seam graph: surface_loops[%u] = %u after %u (of %u loops)",
-                                s + 1, l1, l0, g->loop_count);
-        for (uint32_t l = l0; l < l1; l++)
-            if (g->loops[l].surface != s)
-                return sw_error_set(err, SW_ERR_FORMAT,
-                                    "seam graph: loop %u has surface %u, expected %u", l,
-                                    g->loops[l].surface, s);
-    }
-    uint32_t end = 0;
-    for (uint32_t l = 0; l < g->loop_count; l++) {
-        const sw_seam_loop *loop = &g->loops[l];
-        if (loop->slot_count < 3)
-            return sw_error_set(err, SW_ERR_FORMAT, "seam graph: loop %u has %u slots, "
-                                "expected >= 3", l, loop->slot_count);
-        if (loop->first_slot < end || loop->first_slot > g->slot_count ||
-            loop->slot_count > g->slot_count - loop->first_slot)
-            return sw_error_set(err, SW_ERR_RANGE,
-                                "seam graph: loop %u slots [%u, +%u) outside [%u, %u)", l,
-                                loop->first_slot, loop->slot_count, end, g->slot_count);
-        end = loop->first_slot + loop->slot_count;
-    }
+    const sw_seam_vertex *v = &g->vertices[i];
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(v->p[k]))
+            return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].p.%c: %g, expected a "
+                                "finite number", (unsigned)i, "xyz"[k], (double)v->p[k]);
+    int original = i < g->original_count;
+    if (!finite_non_negative(v->error) || (original && v->error != 0.0f))
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].error: %g, expected %s",
+                            (unsigned)i, (double)v->error,
+                            original ? "0 (an original vertex)" : "finite >= 0");
+    if (v->reserved != 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].reserved: %u, expected 0",
+                            (unsigned)i, (unsigned)v->reserved);
+    /* Children are created vertices made after i: links only go up, so the
+     * hierarchy is a forest and every walk to a root ends. */
+    uint32_t lowest = i + 1 > g->original_count ? i + 1 : g->original_count;
+    if (v->child != SW_SEAM_NONE && (v->child < lowest || v->child >= g->vertex_count))
+        return sw_error_set(err, SW_ERR_RANGE, "SEAM_VERTICES[%u].child: %u, expected 0x%08x "
+                            "(none) or a created vertex in %u..%u", (unsigned)i,
+                            (unsigned)v->child, SW_SEAM_NONE, (unsigned)lowest,
+                            (unsigned)g->vertex_count - 1u);
+    if (!original && (v->first_slot_ref != 0 || v->slot_ref_count != 0))
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].first_slot_ref: %u with "
+                            "slot_ref_count %u, expected 0 and 0 (a created vertex sits in no "
+                            "slot)", (unsigned)i, (unsigned)v->first_slot_ref,
+                            (unsigned)v->slot_ref_count);
     return SW_OK;
 }
 
-static sw_status check_slots(const sw_seam_graph *g, sw_error *err)
+/* Collapse k makes vertex vn = original_count + k from two vertices that
+ * existed before it, and both name vn as their child. */
+static sw_status validate_collapse(const sw_seam_graph *g, uint32_t k, sw_error *err)
 {
-    for (uint32_t i = 0; i < g->slot_count; i++) {
-        const sw_seam_slot *slot = &g->slots[i];
-        if (slot->vertex >= g->original_count)
-            return sw_error_set(err, SW_ERR_RANGE,
-                                "seam graph: slot %u holds vertex %u, expected < %u", i,
-                                slot->vertex, g->original_count);
-        if (!isfinite(slot->uv[0]) || !isfinite(slot->uv[1]))
-            return sw_error_set(err, SW_ERR_FORMAT, "seam graph: slot %u uv not finite", i);
+    const sw_seam_collapse *c = &g->collapses[k];
+    uint32_t vn = g->original_count + k;
+    if (!finite_non_negative(c->error))
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_COLLAPSES[%u].error: %g, expected finite "
+                            ">= 0", (unsigned)k, (double)c->error);
+    if (c->v1 >= vn || c->v2 >= vn)
+        return sw_error_set(err, SW_ERR_RANGE, "SEAM_COLLAPSES[%u].%s: %u, expected a vertex "
+                            "made before the one it creates (< %u)", (unsigned)k,
+                            c->v1 >= vn ? "v1" : "v2", (unsigned)(c->v1 >= vn ? c->v1 : c->v2),
+                            (unsigned)vn);
+    if (c->v1 == c->v2)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_COLLAPSES[%u].v2: %u, the same as v1",
+                            (unsigned)k, (unsigned)c->v2);
+    for (int side = 0; side < 2; side++) {
+        uint32_t v = side ? c->v2 : c->v1;
+        if (g->vertices[v].child != vn)
+            return sw_error_set(err, SW_ERR_FORMAT, "SEAM_COLLAPSES[%u].%s: vertex %u has child "
+                                "%u, expected %u (the vertex this collapse creates)", (unsigned)k,
+                                side ? "v2" : "v1", (unsigned)v,
+                                (unsigned)g->vertices[v].child, (unsigned)vn);
     }
-    for (uint32_t e = 0; e < g->edge_count; e++)
-        if (g->edges[e].a >= g->edges[e].b || g->edges[e].b >= g->original_count)
-            return sw_error_set(err, SW_ERR_RANGE,
-                                "seam graph: edge %u (%u, %u), expected a < b < %u", e,
-                                g->edges[e].a, g->edges[e].b, g->original_count);
+    const sw_seam_vertex *n = &g->vertices[vn], *kept = &g->vertices[c->v2];
+    if (n->p[0] != kept->p[0] || n->p[1] != kept->p[1] || n->p[2] != kept->p[2])
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].p: (%g, %g, %g), expected "
+                            "v2 %u's (%g, %g, %g) (made by SEAM_COLLAPSES[%u])", (unsigned)vn,
+                            (double)n->p[0], (double)n->p[1], (double)n->p[2], (unsigned)c->v2,
+                            (double)kept->p[0], (double)kept->p[1], (double)kept->p[2],
+                            (unsigned)k);
+    if (n->error < c->error)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].error: %g, below its "
+                            "SEAM_COLLAPSES[%u].error %g", (unsigned)vn, (double)n->error,
+                            (unsigned)k, (double)c->error);
     return SW_OK;
 }
 
-static sw_status check_vertex_slots(const sw_seam_graph *g, uint32_t v, sw_error *err)
+/* A vertex with a child is one of the two its child's collapse merged (so
+ * every created vertex has exactly two parents), and errors never drop
+ * going up, so a cut by error threshold is a front of the forest. */
+static sw_status check_parent(const sw_seam_graph *g, uint32_t i, sw_error *err)
 {
-    const sw_seam_vertex *vx = &g->vertices[v];
-    if (v >= g->original_count) {
-        if (vx->slot_ref_count)
-            return sw_error_set(err, SW_ERR_FORMAT,
-                                "seam graph: created vertex %u has %u slot_refs, expected 0", v,
-                                vx->slot_ref_count);
+    const sw_seam_vertex *v = &g->vertices[i];
+    if (v->child == SW_SEAM_NONE)
         return SW_OK;
-    }
-    if (!vx->slot_ref_count || vx->first_slot_ref > g->slot_ref_count ||
-        vx->slot_ref_count > g->slot_ref_count - vx->first_slot_ref)
-        return sw_error_set(err, SW_ERR_RANGE,
-                            "seam graph: vertex %u slot_refs [%u, +%u), expected a non-empty "
-                            "range inside %u", v, vx->first_slot_ref, vx->slot_ref_count,
-                            g->slot_ref_count);
-    for (uint32_t r = 0; r < vx->slot_ref_count; r++) {
-        uint32_t slot = g->slot_refs[vx->first_slot_ref + r];
-        if (slot >= g->slot_count || g->slots[slot].vertex != v)
-            return sw_error_set(err, SW_ERR_FORMAT,
-                                "seam graph: vertex %u slot_ref %u names slot %u, which does "
-                                "not hold it", v, vx->first_slot_ref + r, slot);
-    }
+    uint32_t k = v->child - g->original_count;
+    const sw_seam_collapse *c = &g->collapses[k];
+    if (c->v1 != i && c->v2 != i)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].child: %u, but "
+                            "SEAM_COLLAPSES[%u] creates it from vertices %u and %u", (unsigned)i,
+                            (unsigned)v->child, (unsigned)k, (unsigned)c->v1, (unsigned)c->v2);
+    if (g->vertices[v->child].error < v->error)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].error: %g, below its parent "
+                            "%u's %g (errors grow towards the roots)", (unsigned)v->child,
+                            (double)g->vertices[v->child].error, (unsigned)i, (double)v->error);
     return SW_OK;
 }
 
-static sw_status check_vertices(const sw_seam_graph *g, sw_error *err)
+static sw_status validate_slot(const sw_seam_graph *g, uint32_t j, sw_error *err)
 {
-    for (uint32_t v = 0; v < g->vertex_count; v++) {
-        const sw_seam_vertex *vx = &g->vertices[v];
-        if (!finite3(vx->p) || !isfinite(vx->error) || vx->error < 0.0f || vx->reserved)
-            return sw_error_set(err, SW_ERR_FORMAT,
-                                "seam graph: vertex %u: position or error not finite, error "
-                                "negative or reserved not zero", v);
-        if (v < g->original_count && vx->error != 0.0f)
-            return sw_error_set(err, SW_ERR_FORMAT,
-                                "seam graph: original vertex %u has error %g, expected 0", v,
-                                (double)vx->error);
-        if (vx->child != SW_SEAM_NONE) {
-            if (vx->child <= v || vx->child >= g->vertex_count)
-                return sw_error_set(err, SW_ERR_RANGE,
-                                    "seam graph: vertex %u has child %u, expected in (%u, %u)",
-                                    v, vx->child, v, g->vertex_count);
-            const sw_seam_collapse *c = &g->collapses[vx->child - g->original_count];
-            if (c->v1 != v && c->v2 != v)
-                return sw_error_set(err, SW_ERR_FORMAT,
-                                    "seam graph: vertex %u has child %u, whose collapse merges "
-                                    "%u and %u", v, vx->child, c->v1, c->v2);
-        }
-        sw_status st = check_vertex_slots(g, v, err);
-        if (st != SW_OK)
-            return st;
-    }
+    const sw_seam_slot *s = &g->slots[j];
+    if (s->vertex >= g->original_count)
+        return sw_error_set(err, SW_ERR_RANGE, "SEAM_SLOTS[%u].vertex: %u, expected an original "
+                            "vertex (< %u)", (unsigned)j, (unsigned)s->vertex,
+                            (unsigned)g->original_count);
+    for (int k = 0; k < 2; k++)
+        if (!isfinite(s->uv[k]))
+            return sw_error_set(err, SW_ERR_FORMAT, "SEAM_SLOTS[%u].uv[%d]: %g, expected a finite "
+                                "number", (unsigned)j, k, (double)s->uv[k]);
     return SW_OK;
 }
 
-static sw_status check_collapses(const sw_seam_graph *g, sw_error *err)
+/* Original vertex i's references: the run right after vertex i - 1's, every
+ * one a slot of i, in increasing slot order (so none repeats). *next is
+ * where the run must start and becomes where the next one must. */
+static sw_status check_slot_refs(const sw_seam_graph *g, uint32_t i, uint64_t *next,
+                                 sw_error *err)
 {
-    for (uint32_t k = 0; k < g->collapse_count; k++) {
-        const sw_seam_collapse *c = &g->collapses[k];
-        uint32_t vn = g->original_count + k;
-        if (c->v1 == c->v2 || c->v1 >= vn || c->v2 >= vn)
-            return sw_error_set(err, SW_ERR_RANGE,
-                                "seam graph: collapse %u merges %u and %u, expected two "
-                                "different vertices < %u", k, c->v1, c->v2, vn);
-        if (g->vertices[c->v1].child != vn || g->vertices[c->v2].child != vn)
-            return sw_error_set(err, SW_ERR_FORMAT,
-                                "seam graph: collapse %u: vertices %u and %u have children "
-                                "%u and %u, expected %u", k, c->v1, c->v2,
-                                g->vertices[c->v1].child, g->vertices[c->v2].child, vn);
-        float e = g->vertices[vn].error;
-        if (!isfinite(c->error) || c->error < 0.0f || e < c->error ||
-            e < g->vertices[c->v1].error || e < g->vertices[c->v2].error)
-            return sw_error_set(err, SW_ERR_FORMAT,
-                                "seam graph: collapse %u: error %g, vertex %u error %g, "
-                                "expected monotone (>= the step's and the parents')", k,
-                                (double)c->error, vn, (double)e);
+    const sw_seam_vertex *v = &g->vertices[i];
+    if (v->slot_ref_count == 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].slot_ref_count: 0, expected "
+                            "at least 1 (an original vertex sits in a slot)", (unsigned)i);
+    if (v->first_slot_ref != *next)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].first_slot_ref: %u, expected "
+                            "%llu (the runs of slot references follow vertex order)", (unsigned)i,
+                            (unsigned)v->first_slot_ref, (unsigned long long)*next);
+    uint64_t end = (uint64_t)v->first_slot_ref + v->slot_ref_count;
+    if (end > g->slot_ref_count)
+        return sw_error_set(err, SW_ERR_RANGE, "SEAM_VERTICES[%u].first_slot_ref: %u + "
+                            "slot_ref_count %u exceeds SEAM_SLOT_REFS count %u", (unsigned)i,
+                            (unsigned)v->first_slot_ref, (unsigned)v->slot_ref_count,
+                            (unsigned)g->slot_ref_count);
+    for (uint32_t r = v->first_slot_ref; r < end; r++) {
+        uint32_t slot = g->slot_refs[r];
+        if (slot >= g->slot_count)
+            return sw_error_set(err, SW_ERR_RANGE, "SEAM_SLOT_REFS[%u]: %u, but SEAM_SLOTS has "
+                                "%u entries", (unsigned)r, (unsigned)slot,
+                                (unsigned)g->slot_count);
+        if (g->slots[slot].vertex != i)
+            return sw_error_set(err, SW_ERR_FORMAT, "SEAM_SLOT_REFS[%u]: slot %u holds vertex %u, "
+                                "but the reference is in vertex %u's run", (unsigned)r,
+                                (unsigned)slot, (unsigned)g->slots[slot].vertex, (unsigned)i);
+        if (r > v->first_slot_ref && slot <= g->slot_refs[r - 1])
+            return sw_error_set(err, SW_ERR_FORMAT, "SEAM_SLOT_REFS[%u]: %u, expected more than "
+                                "the previous %u (a vertex's slots in increasing order)",
+                                (unsigned)r, (unsigned)slot, (unsigned)g->slot_refs[r - 1]);
     }
+    *next = end;
     return SW_OK;
+}
+
+/* SEAM_SURFACE_LOOPS: starts at 0, never decreases, ends at the loop count. */
+static sw_status validate_surface_loops(const sw_seam_graph *g, sw_error *err)
+{
+    const uint32_t *sl = g->surface_loops;
+    uint32_t n = g->surface_count;
+    if (sl[0] != 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_SURFACE_LOOPS[0]: %u, expected 0",
+                            (unsigned)sl[0]);
+    for (uint32_t s = 1; s <= n; s++)
+        if (sl[s] < sl[s - 1])
+            return sw_error_set(err, SW_ERR_FORMAT, "SEAM_SURFACE_LOOPS[%u]: %u < the previous "
+                                "%u, expected non-decreasing", (unsigned)s, (unsigned)sl[s],
+                                (unsigned)sl[s - 1]);
+    if (sl[n] != g->loop_count)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_SURFACE_LOOPS[%u]: %u, expected the "
+                            "SEAM_LOOPS count %u", (unsigned)n, (unsigned)sl[n],
+                            (unsigned)g->loop_count);
+    return SW_OK;
+}
+
+/* Loop l: in its surface's range of SEAM_SURFACE_LOOPS, at least three slots,
+ * starting where loop l - 1 ended (*next), so the loops tile SEAM_SLOTS. */
+static sw_status validate_loop(const sw_seam_graph *g, uint32_t l, uint64_t *next, sw_error *err)
+{
+    const sw_seam_loop *loop = &g->loops[l];
+    if (loop->surface >= g->surface_count)
+        return sw_error_set(err, SW_ERR_RANGE, "SEAM_LOOPS[%u].surface: %u, but SURFACES has %u "
+                            "entries", (unsigned)l, (unsigned)loop->surface,
+                            (unsigned)g->surface_count);
+    const uint32_t *sl = g->surface_loops;
+    if (l < sl[loop->surface] || l >= sl[loop->surface + 1])
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_LOOPS[%u].surface: %u, but "
+                            "SEAM_SURFACE_LOOPS gives that surface the loops [%u, %u)",
+                            (unsigned)l, (unsigned)loop->surface, (unsigned)sl[loop->surface],
+                            (unsigned)sl[loop->surface + 1]);
+    if (loop->flags & ~(uint32_t)SW_SEAM_LOOP_OUTER)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_LOOPS[%u].flags: 0x%x has unknown bits",
+                            (unsigned)l, (unsigned)loop->flags);
+    if (loop->slot_count < 3)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_LOOPS[%u].slot_count: %u, expected at "
+                            "least 3", (unsigned)l, (unsigned)loop->slot_count);
+    if (loop->first_slot != *next)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_LOOPS[%u].first_slot: %u, expected %llu "
+                            "(the loops cover SEAM_SLOTS in order)", (unsigned)l,
+                            (unsigned)loop->first_slot, (unsigned long long)*next);
+    uint64_t end = (uint64_t)loop->first_slot + loop->slot_count;
+    if (end > g->slot_count)
+        return sw_error_set(err, SW_ERR_RANGE, "SEAM_LOOPS[%u].first_slot: %u + slot_count %u "
+                            "exceeds SEAM_SLOTS count %u", (unsigned)l, (unsigned)loop->first_slot,
+                            (unsigned)loop->slot_count, (unsigned)g->slot_count);
+    *next = end;
+    return SW_OK;
+}
+
+static sw_status validate_edge(const sw_seam_graph *g, uint32_t e, sw_error *err)
+{
+    const sw_seam_edge *edge = &g->edges[e];
+    if (edge->b >= g->original_count)
+        return sw_error_set(err, SW_ERR_RANGE, "SEAM_EDGES[%u].b: %u, expected an original "
+                            "vertex (< %u)", (unsigned)e, (unsigned)edge->b,
+                            (unsigned)g->original_count);
+    if (edge->a >= edge->b)
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_EDGES[%u].a: %u, expected less than b %u",
+                            (unsigned)e, (unsigned)edge->a, (unsigned)edge->b);
+    return SW_OK;
+}
+
+/* Vertices, collapses and the links between them. */
+static sw_status validate_hierarchy(const sw_seam_graph *g, sw_error *err)
+{
+    sw_status s = SW_OK;
+    for (uint32_t i = 0; s == SW_OK && i < g->vertex_count; i++)
+        s = validate_vertex(g, i, err);
+    for (uint32_t k = 0; s == SW_OK && k < g->collapse_count; k++)
+        s = validate_collapse(g, k, err);
+    for (uint32_t i = 0; s == SW_OK && i < g->vertex_count; i++)
+        s = check_parent(g, i, err);
+    return s;
+}
+
+/* Slots, their inverse, the loops over them and the edges. */
+static sw_status validate_boundaries(const sw_seam_graph *g, sw_error *err)
+{
+    sw_status s = SW_OK;
+    for (uint32_t j = 0; s == SW_OK && j < g->slot_count; j++)
+        s = validate_slot(g, j, err);
+    uint64_t next = 0;
+    for (uint32_t i = 0; s == SW_OK && i < g->original_count; i++)
+        s = check_slot_refs(g, i, &next, err);
+    /* With slot_ref_count == slot_count, refs that cover the array, name
+     * their run's vertex and increase within it are a bijection. */
+    if (s == SW_OK && next != g->slot_ref_count)
+        s = sw_error_set(err, SW_ERR_FORMAT, "SEAM_SLOT_REFS: the original vertices' runs end "
+                         "at %llu, expected the count %u", (unsigned long long)next,
+                         (unsigned)g->slot_ref_count);
+    if (s == SW_OK)
+        s = validate_surface_loops(g, err);
+    next = 0;
+    for (uint32_t l = 0; s == SW_OK && l < g->loop_count; l++)
+        s = validate_loop(g, l, &next, err);
+    if (s == SW_OK && next != g->slot_count)
+        s = sw_error_set(err, SW_ERR_FORMAT, "SEAM_LOOPS: the loops end at slot %llu, expected "
+                         "the SEAM_SLOTS count %u", (unsigned long long)next,
+                         (unsigned)g->slot_count);
+    for (uint32_t e = 0; s == SW_OK && e < g->edge_count; e++)
+        s = validate_edge(g, e, err);
+    return s;
 }
 
 sw_status sw_seam_graph_check(const sw_seam_graph *graph, sw_error *err)
 {
     if (!graph)
         return sw_error_set(err, SW_ERR_ARG, "seam graph: no graph");
-    sw_status st = check_arrays(graph, err);
-    if (st == SW_OK)
-        st = check_loops(graph, err);
-    if (st == SW_OK)
-        st = check_slots(graph, err);
-    if (st == SW_OK)
-        st = check_collapses(graph, err);
-    if (st == SW_OK)
-        st = check_vertices(graph, err);
-    return st;
+    sw_status s = check_arrays(graph, err);
+    if (s == SW_OK)
+        s = validate_hierarchy(graph, err);
+    return s == SW_OK ? validate_boundaries(graph, err) : s;
 }

@@ -386,8 +386,9 @@ static void test_slot_ref_rules(void)
     fresh(&g)->slot_refs[2] = 1; /* slot 1 listed twice, slot 8 not at all */
     expect_rejected(&g, SW_ERR_FORMAT, "SEAM_SLOT_REFS[2]: 1, expected more than the previous 1");
     fresh(&g)->vertices[9].slot_ref_count = 0; /* slot 6 listed under no vertex */
-    expect_rejected(&g, SW_ERR_FORMAT, "SEAM_SLOT_REFS: the original vertices' runs end at 12, "
-                                       "expected the count 13");
+    expect_rejected(&g, SW_ERR_FORMAT, "SEAM_VERTICES[9].slot_ref_count: 0, expected at least 1");
+    fresh(&g)->vertices[9].first_slot_ref = 11; /* runs out of vertex order */
+    expect_rejected(&g, SW_ERR_FORMAT, "SEAM_VERTICES[9].first_slot_ref: 11, expected 12");
 }
 
 /* ---- SEAM_SURFACE_LOOPS and SEAM_LOOPS ---- */

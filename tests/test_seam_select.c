@@ -590,7 +590,7 @@ static void test_rejects_bad_input(void)
     sw_arena arena;
     sw_arena_init(&arena, f.block, sw_seam_select_arena_bytes(&f.g));
     sw_seam_select sel;
-    SW_CHECK(sw_seam_select_init(&sel, &bad, &arena, &err) == SW_ERR_RANGE);
+    SW_CHECK(sw_seam_select_init(&sel, &bad, &arena, &err) == SW_ERR_FORMAT);
     memcpy(coll, f.g.collapses, f.g.collapse_count * sizeof *coll);
     coll[5].v1 = f.g.original_count + 7;
     SW_CHECK(sw_seam_select_init(&sel, &bad, &arena, &err) != SW_OK);
