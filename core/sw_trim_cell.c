@@ -68,6 +68,7 @@ typedef struct border_item {
     int side;
     double key;
     int event;        /* 0 grid point, 1 entry, 2 exit */
+    int entry_first;  /* at a loop point on the border: its entry sorts before its exit */
     uint32_t chain;
 } border_item;
 
@@ -85,17 +86,40 @@ static void place_on_border(const sw_tt_rect *r, border_item *it)
 }
 
 /* Order along the border; at one place crossings come before grid points
- * (which are then dropped) and exits before entries (a loop touching the
- * border from inside leaves and comes back at the same point). */
+ * (which are then dropped). A loop point on the border is both an exit (of the
+ * segment ending there) and an entry (of the one starting there); which comes
+ * first decides whether the walk leaving there runs along the border or
+ * straight into the loop again (touch_order). */
 static int item_before(const border_item *a, const border_item *b)
 {
     if (a->side != b->side)
         return a->side < b->side;
     if (a->key != b->key)
         return a->key < b->key;
-    int ra = a->event == 2 ? 0 : a->event == 1 ? 1 : 2;
-    int rb = b->event == 2 ? 0 : b->event == 1 ? 1 : 2;
+    int ra = a->event == 0 ? 2 : (a->event == 1) == (a->entry_first != 0) ? 0 : 1;
+    int rb = b->event == 0 ? 2 : (b->event == 1) == (b->entry_first != 0) ? 0 : 1;
     return ra < rb;
+}
+
+static double turn_from(double au, double av, double bu, double bv)
+{
+    double a = atan2(au * bv - av * bu, au * bu + av * bv);
+    return a < 0 ? a + 2 * 3.14159265358979323846 : a;
+}
+
+/* For a loop point p on the border: does the border, going on counter-
+ * clockwise from p, run inside the region? The region near p is the sector
+ * left of the loop, from the outgoing direction counter-clockwise to the
+ * reversed incoming one. If it does, the walk that leaves p follows the border
+ * (entry first: the region is pinched at p into two rings); if not, it goes
+ * straight back into the loop (exit first). */
+static int touch_order(const sw_tt_trims *t, uint32_t p, uint32_t prev, int side)
+{
+    static const double dir[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    const sw_tt_point *a = &t->pts[prev], *b = &t->pts[p], *c = &t->pts[b->next];
+    double ou = c->u - b->u, ov = c->v - b->v, iu = a->u - b->u, iv = a->v - b->v;
+    double e = turn_from(ou, ov, dir[side][0], dir[side][1]), back = turn_from(ou, ov, iu, iv);
+    return e > 0 && e < back;
 }
 
 static void sort_items(border_item *it, uint32_t n)
@@ -133,6 +157,13 @@ static sw_tt_pv crossing(const sw_tt_rect *r, const sw_tt_trims *t, uint32_t a, 
     return pv;
 }
 
+/* The point before p in its loop. */
+static uint32_t prev_point(const sw_tt_trims *t, uint32_t p)
+{
+    const sw_tt_loop *l = &t->loops[t->pts[p].loop];
+    return p == l->first ? l->first + l->count - 1 : p - 1;
+}
+
 typedef struct walk {
     const sw_tt_trims *t;
     const sw_tt_rect *r;
@@ -157,12 +188,12 @@ static void find_events(walk *w, const uint32_t *segs, uint32_t seg_count)
         if (!ain && (bin || t0 < t1)) {
             border_item *it = &w->items[w->item_count++];
             it->pv = crossing(w->r, w->t, segs[k], t0, s0);
-            it->event = 1, it->chain = segs[k];
+            it->event = 1, it->chain = segs[k], it->entry_first = 0;
         }
         if (!bin && (ain || t0 < t1)) {
             border_item *it = &w->items[w->item_count++];
             it->pv = crossing(w->r, w->t, segs[k], t1, s1);
-            it->event = 2, it->chain = segs[k];
+            it->event = 2, it->chain = segs[k], it->entry_first = 0;
         }
     }
 }
@@ -346,13 +377,17 @@ int sw_tt_cell_rings(const sw_tt_trims *t, const sw_tt_rect *r, const uint32_t *
     memset(done, 0, max_chains);
     for (uint32_t i = 0; i < border_count; i++) {
         border_item *it = &w.items[w.item_count++];
-        it->pv = border[i], it->event = 0, it->chain = SW_TT_NONE;
+        it->pv = border[i], it->event = 0, it->chain = SW_TT_NONE, it->entry_first = 0;
     }
     find_events(&w, segs, seg_count);
     if (!link_chains(&w, border_count, stamp, cell_id))
         return SW_TT_CELL_BAD;
-    for (uint32_t i = 0; i < w.item_count; i++)
-        place_on_border(r, &w.items[i]);
+    for (uint32_t i = 0; i < w.item_count; i++) {
+        border_item *it = &w.items[i];
+        place_on_border(r, it);
+        if (it->event && it->pv.kind == SW_TT_SEAM)
+            it->entry_first = touch_order(t, it->pv.ref, prev_point(t, it->pv.ref), it->side);
+    }
     if (w.chain_count > 0) {
         order_border(&w);
         if (!walk_rings(&w, done, out))

@@ -224,20 +224,57 @@ static int longer_axis(const sw_bezier_patch *p)
     return lv > lu;
 }
 
-/* The split coordinate, snapped to a lattice of 2^-22 of the patch and
- * rounded to a float: splits computed along different paths of the tree
- * (2/3 of 1/3, 1/2 of 4/9 - 0) land on one line instead of two lines an ulp
- * apart, and output (u, v) are floats, so no two cell lines may round to one.
- * A loop point may lie exactly on the line: the clipping makes such a point a
- * border vertex of both cells (sw_trim_cell.c, crossing()). 0 when the cell
- * is too narrow to split. */
+/* Better than the paper's nearest-neighbour rule alone: a split line through
+ * a loop point meets the loop there, so that point becomes a border vertex of
+ * both halves and no crossing (with its borrowed position) is needed. Of the
+ * loop points in the cell's middle band (0.2 .. 0.8 along the axis) where the
+ * loop passes through the line, the one nearest the wanted split x, or NAN.
+ * Only points the region shrink did not move along the axis (a seam along the
+ * other axis, as on the domain's border) qualify: their coordinate is the
+ * caller's float, so two such lines are equal or a float step apart, never a
+ * rounding error apart. */
+static double split_through_point(const tt_ctx *c, const tt_frame *f, int axis, double x)
+{
+    double lo = axis ? f->r.v0 : f->r.u0, hi = axis ? f->r.v1 : f->r.u1, best = NAN;
+    double band_lo = lo + 0.2 * (hi - lo), band_hi = hi - 0.2 * (hi - lo);
+    const uint32_t *list = c->list + f->list_off;
+    for (uint32_t k = 0; k < f->list_count; k++) {
+        const sw_tt_point *p = &c->pts[list[k]];
+        if (!sw_tt_inside(&f->r, p->u, p->v))
+            continue;
+        double along = axis ? p->v : p->u;
+        if (along <= band_lo || along >= band_hi ||
+            along != c->in_loops->points[p->src].uv[axis])
+            continue;
+        /* Only where the loop goes through the line, not where it turns back
+         * (a tangent line would leave the point touching one half only). */
+        const sw_tt_loop *l = &c->loops[p->loop];
+        uint32_t i = (uint32_t)(p - c->pts), before = i == l->first ? l->first + l->count - 1 : i - 1;
+        double da = (axis ? c->pts[before].v : c->pts[before].u) - along;
+        double db = (axis ? c->pts[p->next].v : c->pts[p->next].u) - along;
+        if (!((da < 0 && db > 0) || (da > 0 && db < 0)))
+            continue;
+        if (isnan(best) || fabs(along - x) < fabs(best - x))
+            best = along;
+    }
+    return best;
+}
+
+/* The split coordinate: through a loop point when the cell holds one (above),
+ * else snapped to a lattice of 2^-22 of the patch and rounded to a float, so
+ * splits computed along different paths of the tree (2/3 of 1/3, 1/2 of 4/9)
+ * land on one line instead of two lines an ulp apart (output (u, v) are
+ * floats). A loop point may lie exactly on the line: the clipping makes such a
+ * point a border vertex of both cells (sw_trim_cell.c, crossing()). 0 when the
+ * cell is too narrow to split. */
 static int place_split(const tt_ctx *c, const tt_frame *f, int axis, double s, double *at)
 {
     const float *d = c->in_patches[f->patch].domain;
     double lo = axis ? f->r.v0 : f->r.u0, hi = axis ? f->r.v1 : f->r.u1;
     double p0 = axis ? d[2] : d[0], w = (axis ? d[3] : d[1]) - p0, steps = 4194304.0;
-    double q = nearbyint((lo + s * (hi - lo) - p0) / w * steps);
-    *at = (float)(p0 + q * (w / steps));
+    double x = lo + s * (hi - lo), q = nearbyint((x - p0) / w * steps);
+    double through = f->list_count ? split_through_point(c, f, axis, x) : NAN;
+    *at = isnan(through) ? (float)(p0 + q * (w / steps)) : through;
     return lo < *at && *at < hi;
 }
 
