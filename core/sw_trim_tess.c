@@ -63,7 +63,7 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     bytes += (2 * depth + 4) * (sizeof(tt_frame) + ctrl) + ctrl;
     bytes += ((2 * depth + 4) * n + 64) * sizeof(uint32_t);            /* list stack */
     bytes += v * sizeof(tt_leaf) + (4 * v + 2 * n) * sizeof(uint32_t);  /* leaves, lists */
-    bytes += 2 * 4 * v * sizeof(uint32_t);                             /* corner index */
+    bytes += 2 * 4 * (v + 1) * 2 * sizeof(double);                     /* corner index */
     bytes += v * (2 * sizeof(double) + 1) + hash_size((uint32_t)v) * sizeof(uint32_t);
     /* One cell at a time: border, events, rings, ear-clip scratch. */
     size_t cell = SW_TT_MAX_BORDER + 3 * n + 8;

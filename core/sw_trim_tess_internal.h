@@ -45,8 +45,10 @@ typedef struct tt_ctx {
     uint32_t leaf_count, leaf_cap;
     uint32_t *leaf_segs, leaf_seg_count, leaf_seg_cap;
     uint32_t *list, list_top, list_cap;
-    /* corner index: leaf * 4 + corner, sorted by (v, u) and by (u, v) */
-    uint32_t *by_v, *by_u, corner_count;
+    /* corner index: the kept cells' corners, distinct, as (v, u) pairs sorted
+     * (for horizontal sides) and as (u, v) pairs sorted (vertical sides) */
+    double *by_v, *by_u;
+    uint32_t corner_count;
     /* output */
     const sw_trim_tess_buffers *out;
     double *key_uv;

@@ -8,61 +8,113 @@
 
 #include "sw_trim_tess_internal.h"
 
-static void corner_of(const tt_ctx *c, uint32_t id, double *u, double *v)
+/* (x1, x2) pairs, x1 major. */
+static int pair_less(const double *a, const double *b)
 {
-    const sw_tt_rect *r = &c->leaves[id >> 2].r;
-    uint32_t k = id & 3;
-    *u = k == 0 || k == 3 ? r->u0 : r->u1;
-    *v = k < 2 ? r->v0 : r->v1;
+    return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
 }
 
-/* Lexicographic: by (v, u) when by_v, else by (u, v). */
-static int corner_less(const tt_ctx *c, uint32_t a, uint32_t b, int by_v)
-{
-    double au, av, bu, bv;
-    corner_of(c, a, &au, &av);
-    corner_of(c, b, &bu, &bv);
-    double a1 = by_v ? av : au, a2 = by_v ? au : av, b1 = by_v ? bv : bu, b2 = by_v ? bu : bv;
-    return a1 < b1 || (a1 == b1 && a2 < b2);
-}
-
-/* Heap sort: no allocation, O(n log n) worst case (libc's qsort may malloc). */
-static void sift_down(const tt_ctx *c, uint32_t *a, uint32_t i, uint32_t n, int by_v)
+/* Sorting without allocation (libc's qsort may call malloc). */
+static void sift_down(double *a, uint32_t i, uint32_t n)
 {
     for (;;) {
         uint32_t big = i, l = 2 * i + 1, r = l + 1;
-        if (l < n && corner_less(c, a[big], a[l], by_v))
+        if (l < n && pair_less(a + 2 * big, a + 2 * l))
             big = l;
-        if (r < n && corner_less(c, a[big], a[r], by_v))
+        if (r < n && pair_less(a + 2 * big, a + 2 * r))
             big = r;
         if (big == i)
             return;
-        uint32_t t = a[i];
-        a[i] = a[big], a[big] = t, i = big;
+        double t0 = a[2 * i], t1 = a[2 * i + 1];
+        a[2 * i] = a[2 * big], a[2 * i + 1] = a[2 * big + 1];
+        a[2 * big] = t0, a[2 * big + 1] = t1, i = big;
     }
 }
 
-static void sort_corners(const tt_ctx *c, uint32_t *a, uint32_t n, int by_v)
+static void heap_sort(double *a, uint32_t n)
 {
     for (uint32_t i = n / 2; i-- > 0;)
-        sift_down(c, a, i, n, by_v);
+        sift_down(a, i, n);
     for (uint32_t end = n; end-- > 1;) {
-        uint32_t t = a[0];
-        a[0] = a[end], a[end] = t;
-        sift_down(c, a, 0, end, by_v);
+        double t0 = a[0], t1 = a[1];
+        a[0] = a[2 * end], a[1] = a[2 * end + 1];
+        a[2 * end] = t0, a[2 * end + 1] = t1;
+        sift_down(a, 0, end);
     }
 }
 
-/* First index whose corner is after (x1, x2) in the order (x1 major). */
-static uint32_t after(const tt_ctx *c, const uint32_t *a, uint32_t n, int by_v, double x1, double x2)
+static void swap_pairs(double *a, uint32_t i, uint32_t j)
+{
+    double t0 = a[2 * i], t1 = a[2 * i + 1];
+    a[2 * i] = a[2 * j], a[2 * i + 1] = a[2 * j + 1];
+    a[2 * j] = t0, a[2 * j + 1] = t1;
+}
+
+/* Introsort: quicksort (median of three, recursion on the smaller part only,
+ * so the stack stays O(log n)), heap sort past 2 log2 n levels, insertion
+ * sort for short runs. Cache-friendlier than heap sort alone; same bound. */
+static void intro_sort(double *a, uint32_t n, int depth)
+{
+    while (n > 16) {
+        if (depth-- == 0) {
+            heap_sort(a, n);
+            return;
+        }
+        uint32_t mid = n / 2, last = n - 1;
+        if (pair_less(a + 2 * mid, a))
+            swap_pairs(a, mid, 0);
+        if (pair_less(a + 2 * last, a))
+            swap_pairs(a, last, 0);
+        if (pair_less(a + 2 * last, a + 2 * mid))
+            swap_pairs(a, last, mid);
+        double pivot[2] = {a[2 * mid], a[2 * mid + 1]};
+        uint32_t i = 0, j = last;
+        for (;;) {
+            while (pair_less(a + 2 * i, pivot))
+                i++;
+            while (pair_less(pivot, a + 2 * j))
+                j--;
+            if (i >= j)
+                break;
+            swap_pairs(a, i, j);
+            i++, j--;
+        }
+        uint32_t left = j + 1;
+        if (left < n - left) {
+            intro_sort(a, left, depth);
+            a += 2 * left, n -= left;
+        } else {
+            intro_sort(a + 2 * left, n - left, depth);
+            n = left;
+        }
+    }
+    for (uint32_t i = 1; i < n; i++)
+        for (uint32_t j = i; j > 0 && pair_less(a + 2 * j, a + 2 * (j - 1)); j--)
+            swap_pairs(a, j, j - 1);
+}
+
+/* Sorts and drops repeats; returns the distinct count. */
+static uint32_t sort_pairs(double *a, uint32_t n)
+{
+    int depth = 0;
+    for (uint32_t x = n; x > 1; x /= 2)
+        depth += 2;
+    intro_sort(a, n, depth);
+    uint32_t m = 0;
+    for (uint32_t i = 0; i < n; i++)
+        if (m == 0 || a[2 * i] != a[2 * m - 2] || a[2 * i + 1] != a[2 * m - 1])
+            a[2 * m] = a[2 * i], a[2 * m + 1] = a[2 * i + 1], m++;
+    return m;
+}
+
+/* First pair after (x1, x2). */
+static uint32_t after(const double *a, uint32_t n, double x1, double x2)
 {
     uint32_t lo = 0, hi = n;
     while (lo < hi) {
         uint32_t mid = lo + (hi - lo) / 2;
-        double u, v;
-        corner_of(c, a[mid], &u, &v);
-        double m1 = by_v ? v : u, m2 = by_v ? u : v;
-        if (m1 < x1 || (m1 == x1 && m2 <= x2))
+        const double *m = a + 2 * mid;
+        if (m[0] < x1 || (m[0] == x1 && m[1] <= x2))
             lo = mid + 1;
         else
             hi = mid;
@@ -70,25 +122,19 @@ static uint32_t after(const tt_ctx *c, const uint32_t *a, uint32_t n, int by_v, 
     return lo;
 }
 
-/* Corners on the open segment x1 = line, lo < x2 < hi, ascending, distinct. */
+/* Corners on the open segment x1 = line, lo < x2 < hi, ascending. */
 static uint32_t on_side(const tt_ctx *c, int by_v, double line, double lo, double hi,
                         sw_tt_pv *out, uint32_t room)
 {
-    const uint32_t *a = by_v ? c->by_v : c->by_u;
+    const double *a = by_v ? c->by_v : c->by_u;
     uint32_t n = 0;
-    double last = lo;
-    for (uint32_t i = after(c, a, c->corner_count, by_v, line, lo); i < c->corner_count; i++) {
-        double u, v;
-        corner_of(c, a[i], &u, &v);
-        double x1 = by_v ? v : u, x2 = by_v ? u : v;
-        if (x1 != line || x2 >= hi)
+    for (uint32_t i = after(a, c->corner_count, line, lo); i < c->corner_count; i++) {
+        const double *p = a + 2 * i;
+        if (p[0] != line || p[1] >= hi)
             break;
-        if (x2 == last)
-            continue;
         if (n == room)
             return SW_TT_NONE;
-        last = x2;
-        sw_tt_pv pv = {u, v, SW_TT_GRID, SW_TT_NONE};
+        sw_tt_pv pv = {by_v ? p[1] : p[0], by_v ? p[0] : p[1], SW_TT_GRID, SW_TT_NONE};
         out[n++] = pv;
     }
     return n;
@@ -127,16 +173,22 @@ uint32_t sw_tt_leaf_border(const tt_ctx *c, uint32_t l, sw_tt_pv *out, uint32_t 
 
 static sw_status index_corners(tt_ctx *c)
 {
-    c->corner_count = 4 * c->leaf_count;
-    c->by_u = sw_arena_alloc(c->arena, sizeof(uint32_t) * (c->corner_count + 1), 4);
-    c->by_v = sw_arena_alloc(c->arena, sizeof(uint32_t) * (c->corner_count + 1), 4);
+    uint32_t n = 4 * c->leaf_count;
+    c->by_u = sw_arena_alloc(c->arena, sizeof(double) * 2 * (n + 1), 8);
+    c->by_v = sw_arena_alloc(c->arena, sizeof(double) * 2 * (n + 1), 8);
     if (!c->by_u || !c->by_v)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "corner index of %u cells", (unsigned)c->leaf_count);
-    for (uint32_t i = 0; i < c->corner_count; i++)
-        c->by_u[i] = c->by_v[i] = i;
-    sort_corners(c, c->by_u, c->corner_count, 0);
-    sort_corners(c, c->by_v, c->corner_count, 1);
+    for (uint32_t l = 0; l < c->leaf_count; l++) {
+        const sw_tt_rect *r = &c->leaves[l].r;
+        const double cu[4] = {r->u0, r->u1, r->u1, r->u0}, cv[4] = {r->v0, r->v0, r->v1, r->v1};
+        for (int k = 0; k < 4; k++) {
+            double *u = c->by_u + 2 * (4 * l + (uint32_t)k), *v = c->by_v + 2 * (4 * l + (uint32_t)k);
+            u[0] = cu[k], u[1] = cv[k], v[0] = cv[k], v[1] = cu[k];
+        }
+    }
+    c->corner_count = sort_pairs(c->by_u, n);
+    sort_pairs(c->by_v, n);
     return SW_OK;
 }
 
@@ -190,22 +242,20 @@ static sw_vec3 eval_point(const sw_bezier_patch *p, double u, double v)
 }
 
 /* Paper 004, 6.3: split where the surface is farthest from the bilinear
- * interpolation of the cell's corners (sampled on 5 x 3 points along the
- * axis), kept in the middle half so the tree stays shallow. */
+ * approximation, sampled at 5 points along the axis on the cell's middle
+ * line, kept in the middle half so the tree stays shallow. */
 static double split_fraction(const sw_bezier_patch *p, int axis)
 {
     sw_vec3 f00 = eval_point(p, 0, 0), f10 = eval_point(p, 1, 0);
     sw_vec3 f01 = eval_point(p, 0, 1), f11 = eval_point(p, 1, 1);
     double best = -1, at = 0.5;
     for (int i = 1; i <= 5; i++) {
-        for (int j = 1; j <= 3; j++) {
-            double s = i / 6.0, t = j / 4.0, u = axis ? t : s, v = axis ? s : t;
-            sw_vec3 lo = sw_v3_lerp(f00, f10, u), hi = sw_v3_lerp(f01, f11, u);
-            sw_vec3 d = sw_v3_sub(eval_point(p, u, v), sw_v3_lerp(lo, hi, v));
-            double dd = sw_v3_dot(d, d);
-            if (dd > best)
-                best = dd, at = s;
-        }
+        double s = i / 6.0, u = axis ? 0.5 : s, v = axis ? s : 0.5;
+        sw_vec3 lo = sw_v3_lerp(f00, f10, u), hi = sw_v3_lerp(f01, f11, u);
+        sw_vec3 d = sw_v3_sub(eval_point(p, u, v), sw_v3_lerp(lo, hi, v));
+        double dd = sw_v3_dot(d, d);
+        if (dd > best)
+            best = dd, at = s;
     }
     return fmin(fmax(at, 0.25), 0.75);
 }
