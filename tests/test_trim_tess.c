@@ -191,8 +191,23 @@ static double total_area(const mesh *m, int *negative)
     return sum;
 }
 
-/* A vertex strictly inside a triangle edge (in (u, v)), within a relative
- * 1e-7 of the edge's length: a T-vertex. Returns how many there are. */
+/* Is there a triangle on exactly these three vertices? */
+static int has_triangle(const uint16_t *idx, uint32_t ni, uint32_t a, uint32_t b, uint32_t c)
+{
+    for (uint32_t t = 0; t < ni; t += 3) {
+        int ha = 0, hb = 0, hc = 0;
+        for (int k = 0; k < 3; k++)
+            ha |= idx[t + k] == a, hb |= idx[t + k] == b, hc |= idx[t + k] == c;
+        if (ha && hb && hc)
+            return 1;
+    }
+    return 0;
+}
+
+/* A vertex strictly inside a triangle edge (in (u, v), within a relative
+ * 1e-7 of the edge's length, the float output's precision) that is not the
+ * third corner of a thin triangle on that edge: a T-vertex. Returns how many
+ * there are. */
 static uint32_t count_t_vertices(const float *uv, uint32_t nv, const uint16_t *idx, uint32_t ni)
 {
     uint32_t bad = 0;
@@ -208,7 +223,8 @@ static uint32_t count_t_vertices(const float *uv, uint32_t nv, const uint16_t *i
                     continue;
                 double pu = uv[2 * p] - au, pv = uv[2 * p + 1] - av;
                 double s = (pu * du + pv * dv) / len2, cr = pu * dv - pv * du;
-                if (s > 1e-6 && s < 1 - 1e-6 && fabs(cr) <= 1e-7 * len2) {
+                if (s > 1e-6 && s < 1 - 1e-6 && fabs(cr) <= 1e-7 * len2 &&
+                    !has_triangle(idx, ni, ia, ib, p)) {
                     if (getenv("TT_DEBUG"))
                         fprintf(stderr, "T: %u (%.9g %.9g) on %u (%.9g %.9g) - %u (%.9g %.9g)\n", p,
                                 uv[2 * p], uv[2 * p + 1], ia, au, av, ib, bu, bv);
@@ -707,6 +723,80 @@ static void test_bad_inputs(void)
     SW_CHECK(st == SW_OK || st == SW_ERR_FORMAT);
 }
 
+/* Random star-shaped loops (and a random star-shaped hole in some): the area
+ * is the polygons', the mesh is watertight and every loop point is used. */
+static void test_random_star_loops(void)
+{
+    static surface s;
+    static loops l;
+    make_bump(&s, 2);
+    sw_test_rng_state = 0x1234567ull;
+    uint32_t failures_before = (uint32_t)sw_test_failures;
+    for (int trial = 0; trial < 24; trial++) {
+        begin_loops(&l);
+        int n = 8 + (int)(sw_test_random() * 60);
+        double cu = 0.4 + 0.2 * sw_test_random(), cv = 0.4 + 0.2 * sw_test_random();
+        for (int k = 0; k < n; k++) {
+            double a = 2 * SW_PI * (k + 0.8 * sw_test_random()) / n;
+            double r = 0.15 + 0.23 * sw_test_random();
+            add_point(&l, &s, cu + r * cos(a), cv + r * sin(a));
+        }
+        end_loop(&l);
+        if (trial % 2) {
+            int m = 6 + (int)(sw_test_random() * 20);
+            for (int k = 0; k < m; k++) {
+                double a = -2 * SW_PI * (k + 0.5 * sw_test_random()) / m;
+                double r = 0.04 + 0.06 * sw_test_random();
+                add_point(&l, &s, cu + r * cos(a), cv + r * sin(a));
+            }
+            end_loop(&l);
+        }
+        double expect = fabs(loop_area(&l, 0)) - (l.count > 1 ? fabs(loop_area(&l, 1)) : 0);
+        mesh m;
+        SW_CHECK(run(&s, &l, trial % 3 ? 1e-3 : 1e-2, &m) == SW_OK);
+        int negative;
+        SW_CHECK_NEAR(total_area(&m, &negative), expect, 1e-6);
+        check_mesh_topology(&m);
+        check_border(&l, &m);
+        SW_CHECK(m.res.fallback_ears == 0);
+        if ((uint32_t)sw_test_failures != failures_before) {
+            fprintf(stderr, "  trial %d failed\n", trial);
+            return;
+        }
+    }
+}
+
+/* Random self-crossing polygons: SW_OK or SW_ERR_FORMAT, indices in range,
+ * never a crash (this test runs under AddressSanitizer too). */
+static void test_random_bad_loops_never_crash(void)
+{
+    static surface s;
+    static loops l;
+    make_bump(&s, 2);
+    sw_test_rng_state = 0xBADC0DEull;
+    int ok = 0, format = 0, other = 0;
+    for (int trial = 0; trial < 40; trial++) {
+        begin_loops(&l);
+        int loops_n = 1 + (int)(sw_test_random() * 3);
+        for (int k = 0; k < loops_n; k++) {
+            int n = 3 + (int)(sw_test_random() * 12);
+            for (int i = 0; i < n; i++)
+                add_point(&l, &s, sw_test_random(), sw_test_random());
+            end_loop(&l);
+        }
+        mesh m;
+        sw_status st = run(&s, &l, 1e-2, &m);
+        ok += st == SW_OK, format += st == SW_ERR_FORMAT;
+        other += st != SW_OK && st != SW_ERR_FORMAT;
+        uint32_t bad = 0;
+        for (uint32_t i = 0; st == SW_OK && i < m.ni; i++)
+            bad += g_idx[i] >= m.nv;
+        SW_CHECK(bad == 0);
+    }
+    printf("  %d meshed, %d rejected as crossing\n", ok, format);
+    SW_CHECK(other == 0);
+}
+
 int main(void)
 {
     SW_RUN(test_checks_detect_t_vertex_and_gap);
@@ -717,5 +807,7 @@ int main(void)
     SW_RUN(test_sizes_and_determinism);
     SW_RUN(test_small_buffers);
     SW_RUN(test_bad_inputs);
+    SW_RUN(test_random_star_loops);
+    SW_RUN(test_random_bad_loops_never_crash);
     return sw_test_finish();
 }
