@@ -175,7 +175,7 @@ typedef struct walk {
     uint32_t chain_count, seam_count;
 } walk;
 
-/* Entries and exits of every segment; returns the number of events. */
+/* Entries and exits of every segment, appended to the items. */
 static void find_events(walk *w, const uint32_t *segs, uint32_t seg_count)
 {
     for (uint32_t k = 0; k < seg_count; k++) {

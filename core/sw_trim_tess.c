@@ -65,9 +65,12 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     bytes += v * sizeof(tt_leaf) + (4 * v + 2 * n) * sizeof(uint32_t);  /* leaves, lists */
     bytes += 2 * 4 * (v + 1) * 2 * sizeof(double);                     /* corner index */
     bytes += v * (2 * sizeof(double) + 1) + hash_size((uint32_t)v) * sizeof(uint32_t);
-    /* One cell at a time: border, events, rings, ear-clip scratch. */
+    /* One cell at a time: its border (SW_TT_MAX_BORDER points), then per
+     * border point or loop point: an item of the walk (56 bytes), a ring
+     * vertex and its ring end (36), chain tables (21) and the ear clipping's
+     * map, links and triangles (24); rounded up. */
     size_t cell = SW_TT_MAX_BORDER + 3 * n + 8;
-    bytes += cell * (48 + 16 + 4 + 1 + 32 + 4 + 8 + 12 + sizeof(sw_tt_pv));
+    bytes += SW_TT_MAX_BORDER * sizeof(sw_tt_pv) + cell * 160;
     return bytes + 64 * 32; /* alignment of every allocation */
 }
 
@@ -409,4 +412,31 @@ sw_status sw_trim_tess_sizes(const sw_trim_patch *patches, uint32_t patch_count,
                              sw_trim_tess_result *result, sw_error *err)
 {
     return tessellate(patches, patch_count, loops, error_world, opt, scratch, NULL, result, err);
+}
+
+sw_status sw_trim_patches_from_pack(const sw_pack *pack, uint32_t surface, sw_trim_patch *out,
+                                    uint32_t capacity, uint32_t *count, sw_error *err)
+{
+    *count = 0;
+    if (!pack || !pack->surfaces || !pack->patch_domains || surface >= pack->surface_count)
+        return sw_error_set(err, SW_ERR_RANGE, "trim tess: surface %u: the pack has %u surfaces"
+                            "%s", (unsigned)surface, pack ? (unsigned)pack->surface_count : 0u,
+                            pack && pack->surfaces && !pack->patch_domains
+                                ? " and no PATCH_DOMAINS" : "");
+    const sw_pack_surface *s = &pack->surfaces[surface];
+    *count = s->patch_count;
+    if (s->patch_count > capacity)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "trim tess: surface %u has %u patches, room "
+                            "for %u", (unsigned)surface, (unsigned)s->patch_count,
+                            (unsigned)capacity);
+    for (uint32_t i = 0; i < s->patch_count; i++) {
+        uint32_t p = s->first_patch + i;
+        const sw_pack_patch *pp = &pack->patches[p];
+        out[i].patch.degree_u = pp->degree_u;
+        out[i].patch.degree_v = pp->degree_v;
+        out[i].patch.rational = (pp->flags & SW_PATCH_RATIONAL) != 0;
+        out[i].patch.ctrl = pack->control + 4 * (size_t)pp->first_control;
+        memcpy(out[i].domain, pack->patch_domains[p].domain, sizeof out[i].domain);
+    }
+    return SW_OK;
 }

@@ -27,8 +27,20 @@
  *   the cell's sub-patch (sw_bezier_second_deriv_bounds): the distance from any
  *   point of a triangle to the surface at the same (u, v) is then at most
  *   error (a rigorous bound, where the paper tests the distance at sampled
- *   points only). Exception: the positions of loop points and crossings are
- *   the caller's, so along the border the error is the seam's own. */
+ *   points only). Exception, along the border: loop points have the caller's
+ *   positions (the seam's own error), and a triangle at a crossing is inscribed
+ *   at the (u, v) of the loop point whose position it took, so its cell's box
+ *   grows by up to half a seam segment there (measured in the tests and the
+ *   benchmark's seams: within about 1-2x the bound when the seam's own chord
+ *   error is a tenth of it). To keep crossings rare, a cell whose loop runs
+ *   across the split axis is split through a loop point where one lies in
+ *   the cell's middle (then the loop point itself is the border vertex).
+ *
+ * Limits: at most 65536 - base_vertex vertices (16-bit indices, GLES2): a
+ * surface that needs more at the asked error gets SW_ERR_RANGE and the caller
+ * coarsens. Scratch is sized by sw_trim_tess_scratch_bytes (about 15 MB for
+ * the full 16-bit range and a few thousand loop points; options.max_vertices
+ * lowers it). Work is O(cells log cells + cells x loop points per cell). */
 #ifndef SW_TRIM_TESS_H
 #define SW_TRIM_TESS_H
 
@@ -38,6 +50,7 @@
 #include "sw_arena.h"
 #include "sw_bezier.h"
 #include "sw_error.h"
+#include "sw_pack.h"
 
 /* One Bezier patch of the surface and the part of the surface's (u, v)
  * domain it covers: the patch's own [0,1]^2 maps linearly onto
@@ -48,6 +61,14 @@ typedef struct sw_trim_patch {
     sw_bezier_patchf patch;
     float domain[4];            /* u0, u1, v0, v1, u0 < u1, v0 < v1 */
 } sw_trim_patch;
+
+/* The patches of a validated pack's surface `surface` as sw_trim_tess takes
+ * them: views into the pack (control points are not copied), domains from
+ * PATCH_DOMAINS. *count is the surface's patch count; SW_ERR_NO_MEMORY when
+ * capacity is smaller (nothing written beyond it), SW_ERR_RANGE for a surface
+ * out of range or a pack without the trimmed-surface sections. */
+sw_status sw_trim_patches_from_pack(const sw_pack *pack, uint32_t surface, sw_trim_patch *out,
+                                    uint32_t capacity, uint32_t *count, sw_error *err);
 
 /* One point of a trimming polyline: its parameters in this surface, the
  * position to draw there (the Seam Graph vertex's) and the caller's id for it

@@ -797,6 +797,48 @@ static void test_random_bad_loops_never_crash(void)
     SW_CHECK(other == 0);
 }
 
+/* A pack's surface as input: views into the pack, the same mesh as the
+ * patches passed directly. */
+static void test_patches_from_pack(void)
+{
+    static surface s;
+    static loops l;
+    make_bump(&s, 2);
+    static float control[4 * 16 * 4];
+    sw_pack_patch patches[4];
+    sw_pack_patch_domain domains[4];
+    memset(patches, 0, sizeof patches);
+    memset(domains, 0, sizeof domains);
+    for (uint32_t i = 0; i < 4; i++) {
+        memcpy(control + 64 * i, s.ctrl[i], sizeof(float) * 64);
+        patches[i].first_control = 16 * i, patches[i].degree_u = 3, patches[i].degree_v = 3;
+        memcpy(domains[i].domain, s.patches[i].domain, sizeof domains[i].domain);
+    }
+    sw_pack_surface surf = {0, 0, 4, 0, 0, 0, {0, 1, 0, 1}};
+    sw_pack pack;
+    memset(&pack, 0, sizeof pack);
+    pack.patches = patches, pack.control = control, pack.patch_domains = domains;
+    pack.surfaces = &surf, pack.surface_count = 1;
+    sw_trim_patch got[4];
+    uint32_t count;
+    sw_error e = {0};
+    SW_CHECK(sw_trim_patches_from_pack(&pack, 0, got, 4, &count, &e) == SW_OK && count == 4);
+    SW_CHECK(got[3].patch.ctrl == control + 4 * 48 && got[3].domain[0] == s.patches[3].domain[0]);
+    SW_CHECK(sw_trim_patches_from_pack(&pack, 0, got, 3, &count, &e) == SW_ERR_NO_MEMORY &&
+             count == 4);
+    SW_CHECK(sw_trim_patches_from_pack(&pack, 1, got, 4, &count, &e) == SW_ERR_RANGE);
+    begin_loops(&l);
+    add_circle(&l, &s, 0.5, 0.5, 0.3, 40, 1);
+    mesh direct;
+    SW_CHECK(run(&s, &l, 1e-3, &direct) == SW_OK);
+    static surface from_pack;
+    from_pack.count = 4;
+    memcpy(from_pack.patches, got, sizeof got);
+    mesh m;
+    SW_CHECK(run(&from_pack, &l, 1e-3, &m) == SW_OK);
+    SW_CHECK(m.ni == direct.ni && m.nv == direct.nv && m.ni > 0);
+}
+
 int main(void)
 {
     SW_RUN(test_checks_detect_t_vertex_and_gap);
@@ -808,6 +850,7 @@ int main(void)
     SW_RUN(test_small_buffers);
     SW_RUN(test_bad_inputs);
     SW_RUN(test_random_star_loops);
+    SW_RUN(test_patches_from_pack);
     SW_RUN(test_random_bad_loops_never_crash);
     return sw_test_finish();
 }
