@@ -36,7 +36,9 @@ static sw_status check_loops(tt_ctx *c, const double dom[4], uint32_t *total, ui
     if (l->loop_count && (!l->loop_first || !l->points))
         return sw_error_set(c->err, SW_ERR_ARG, "trim tess: %u loops but no points",
                             (unsigned)l->loop_count);
-    double tol = 1e-6 * fmax(dom[1] - dom[0], dom[3] - dom[2]);
+    /* Real trims overshoot the surface's domain a little (the hammer's by
+     * 5e-5 of it); within 1% a point is clamped onto the domain. */
+    double tol = 1e-2 * fmax(dom[1] - dom[0], dom[3] - dom[2]);
     *total = *valid = 0;
     for (uint32_t k = 0; k < l->loop_count; k++) {
         if (l->loop_first[k + 1] < l->loop_first[k] || (k == 0 && l->loop_first[0] != 0))
@@ -80,24 +82,67 @@ static int point_in_loop(const sw_tt_point *p, const sw_tt_loop *l, double u, do
     return in;
 }
 
-/* Copies the distinct points of the loops with area, clamped to the domain. */
+/* Is b the tip of a spike, a -> b -> c turning back within 1e-6 rad of 180
+ * degrees (or a repeat after clamping)? Real trims have them where a tiny
+ * curve overshoots a corner and comes back; moved into the region they would
+ * cross themselves. */
+static int spike(const sw_tt_point *a, const sw_tt_point *b, const sw_tt_point *c)
+{
+    double e1u = b->u - a->u, e1v = b->v - a->v, e2u = c->u - b->u, e2v = c->v - b->v;
+    double l1 = sqrt(e1u * e1u + e1v * e1v), l2 = sqrt(e2u * e2u + e2v * e2v);
+    if (l1 == 0 || l2 == 0)
+        return 1;
+    return e1u * e2u + e1v * e2v < 0 && fabs(e1u * e2v - e1v * e2u) <= 1e-6 * l1 * l2;
+}
+
+/* Drops spike tips until none is left; returns the new count. */
+static uint32_t remove_spikes(sw_tt_point *p, uint32_t count, uint32_t *dropped)
+{
+    for (uint32_t i = 0; count >= 3 && i < count;) {
+        if (!spike(&p[(i + count - 1) % count], &p[i], &p[(i + 1) % count])) {
+            i++;
+            continue;
+        }
+        memmove(&p[i], &p[i + 1], sizeof *p * (count - i - 1));
+        count--, (*dropped)++;
+        i = i > 0 ? i - 1 : 0; /* the point before may have become a tip */
+    }
+    return count;
+}
+
+/* Copies the distinct points of the loops with area, clamped to the domain,
+ * without spike tips and points within 1e-6 of the domain of the last kept. */
 static void copy_loops(tt_ctx *c, const double dom[4])
 {
     const sw_trim_loops *l = c->in_loops;
+    /* Points closer than this to the previous kept one are dropped: float
+     * (u, v) of tiny trim curves zig-zag at the float step and would cross. */
+    double eps = 1e-6 * fmax(dom[1] - dom[0], dom[3] - dom[2]);
     uint32_t n = 0, m = 0;
     for (uint32_t k = 0; k < l->loop_count; k++) {
         uint32_t count = distinct_points(l, k), first = n;
         if (count < 3)
             continue;
-        for (uint32_t i = l->loop_first[k]; n - first < count; i++) {
-            if (i > l->loop_first[k] && same_uv(&l->points[i], &l->points[i - 1]))
+        uint32_t end = l->loop_first[k + 1];
+        while (end > l->loop_first[k] + 1 &&
+               same_uv(&l->points[end - 1], &l->points[l->loop_first[k]]))
+            end--;
+        for (uint32_t i = l->loop_first[k]; i < end; i++) {
+            double u = fmin(fmax(l->points[i].uv[0], dom[0]), dom[1]);
+            double v = fmin(fmax(l->points[i].uv[1], dom[2]), dom[3]);
+            if (n > first && fabs(u - c->pts[n - 1].u) + fabs(v - c->pts[n - 1].v) < eps) {
+                c->res->dropped_points += !same_uv(&l->points[i], &l->points[i - 1]);
                 continue;
+            }
             sw_tt_point *p = &c->pts[n++];
-            p->u = fmin(fmax(l->points[i].uv[0], dom[0]), dom[1]);
-            p->v = fmin(fmax(l->points[i].uv[1], dom[2]), dom[3]);
-            p->src = i, p->loop = m;
+            p->u = u, p->v = v, p->src = i, p->loop = m;
         }
-        if (loop_area(c->pts, first, count) == 0) {
+        while (n - first > 1 && fabs(c->pts[n - 1].u - c->pts[first].u) +
+                                        fabs(c->pts[n - 1].v - c->pts[first].v) < eps)
+            n--, c->res->dropped_points++;
+        count = remove_spikes(c->pts + first, n - first, &c->res->dropped_points);
+        n = first + count;
+        if (count < 3 || loop_area(c->pts, first, count) == 0) {
             n = first;
             c->res->skipped_loops++;
             continue;

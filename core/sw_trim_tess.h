@@ -83,8 +83,12 @@ typedef struct sw_trim_point {
  * loop_first[k + 1]), closed (the last point joins the first, not repeated),
  * either orientation; nested loops alternate inside and outside (even-odd).
  * Loops must not cross each other or themselves. Consecutive points with equal
- * (u, v) count once (the first is kept). A loop with fewer than three distinct
- * points or no area encloses nothing and is skipped. */
+ * (u, v) count once (the first is kept), and the tip of a spike (the loop
+ * turning back within 1e-6 rad, as where a tiny trim curve overshoots a corner)
+ * is dropped, as is a point within 1e-6 of the domain's size of the previous
+ * one (float zig-zags of tiny trim curves; result->dropped_points). A loop
+ * with fewer than three distinct points or no area encloses nothing and is
+ * skipped. */
 typedef struct sw_trim_loops {
     const sw_trim_point *points;
     const uint32_t *loop_first;  /* loop_count + 1 entries, non-decreasing */
@@ -118,6 +122,8 @@ typedef struct sw_trim_tess_result {
     uint32_t crossed_count;              /* of those, cells a loop crosses */
     uint32_t capped_count;               /* leaves at max_depth whose bound exceeds error */
     uint32_t skipped_loops;              /* loops with no area, or holes below max_depth */
+    uint32_t dropped_points;             /* loop points dropped (spike tips, near repeats):
+                                            not in the output */
     uint32_t fallback_ears;              /* clipping steps taken without a valid ear: 0 for
                                             valid loops */
     double error_bound;                  /* the largest leaf bound: <= error unless capped */
@@ -140,7 +146,8 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
  * - SW_ERR_RANGE: the surface needs more than max_vertices vertices (or
  *   cells) at this bound: the caller coarsens (a larger error_world) and
  *   calls again. Also a loop point outside the patches' domain by more than
- *   1e-6 of its size, or a patch with a non-finite point or weight <= 0.
+ *   1% of its size (closer ones are clamped onto it: real trims overshoot a
+ *   little), or a patch with a non-finite point or weight <= 0.
  * - SW_ERR_ARG: error_world not finite and > 0, NULL pointers, a bad degree or
  *   domain, loop_first not non-decreasing from 0.
  * - SW_ERR_FORMAT: loops that cross each other or themselves where the
