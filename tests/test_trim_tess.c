@@ -225,7 +225,7 @@ static uint32_t count_t_vertices(const float *uv, uint32_t nv, const uint16_t *i
                 double s = (pu * du + pv * dv) / len2, cr = pu * dv - pv * du;
                 if (s > 1e-6 && s < 1 - 1e-6 && fabs(cr) <= 1e-7 * len2 &&
                     !has_triangle(idx, ni, ia, ib, p)) {
-                    if (getenv("TT_DEBUG"))
+                    if (getenv("TT_DEBUG")) /* names each T-vertex when debugging */
                         fprintf(stderr, "T: %u (%.9g %.9g) on %u (%.9g %.9g) - %u (%.9g %.9g)\n", p,
                                 uv[2 * p], uv[2 * p + 1], ia, au, av, ib, bu, bv);
                     bad++;

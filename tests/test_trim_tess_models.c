@@ -214,6 +214,7 @@ static void check_surface(const sw_pack *pack, uint32_t s, double err, void *blo
         t->range += st == SW_ERR_RANGE, t->other += st != SW_ERR_RANGE;
         fprintf(stderr, "  surface %u (%u patches, %u loops, %u points): %s\n", (unsigned)s,
                 (unsigned)np, (unsigned)surf->loop_count, (unsigned)n, e.message);
+        /* TT_DUMP=surface prints its loop points, for debugging. */
         if (getenv("TT_DUMP") && (uint32_t)atoi(getenv("TT_DUMP")) == s)
             for (uint32_t k = 0; k < n; k++)
                 fprintf(stderr, "    %u (%.9g %.9g)\n", k, g_pts[k].uv[0], g_pts[k].uv[1]);
@@ -249,7 +250,7 @@ static void check_surface(const sw_pack *pack, uint32_t s, double err, void *blo
     if (missing > r.dropped_points || open)
         fprintf(stderr, "  surface %u: %u of %u loop points missing (%u spike tips dropped), %u "
                 "open interior edges\n", (unsigned)s, missing, n, r.dropped_points, open);
-    for (uint32_t k = 0; k < n && missing && getenv("TT_MISSING"); k++)
+    for (uint32_t k = 0; k < n && missing && getenv("TT_MISSING"); k++) /* debugging */
         if (!seen[k])
             fprintf(stderr, "    missing %u (%.9g %.9g)\n", k, g_pts[k].uv[0], g_pts[k].uv[1]);
 }
