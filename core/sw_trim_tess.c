@@ -1,0 +1,442 @@
+/* Trimmed tessellation, paper 004 section 6.3, with these changes:
+ * - The leaf test is a proof, not a sample: a cell stops splitting when the
+ *   second-derivative bound of its own sub-patch (exact de Casteljau
+ *   subdivision, sw_bezier_subpatch) gives (M_uu + 2 M_uv + M_vv) / 8 <=
+ *   error; that bounds every triangle with corners in the cell (Taylor with
+ *   integral remainder; the barycentric variance is at most a^2 / 4). The
+ *   split still goes through the sampled point of largest distance from the
+ *   bilinear approximation, as in the paper, clamped to the middle half.
+ * - Cells entirely outside the loops are not refined at all.
+ * - Cells the loops cross are refined further while they hold a whole hole
+ *   or more than SW_TT_MAX_CELL_POINTS loop points: every crossed cell then
+ *   becomes simple polygons (no holes) that ear clipping handles, and long
+ *   seams do not end in fans of slivers.
+ * - Degenerate cases (loops along a patch edge or the domain's border, loop
+ *   points on a cell line, loops touching) are removed by a region shrink:
+ *   for all topology the loop points are moved by a tiny distance into the
+ *   trimmed region along their mitre (SW_TT_SHRINK_REL of the domain), so no loop
+ *   runs along a cell side and the loops no longer touch; the output keeps
+ *   every loop point's own (u, v) and position.
+ * - No T-vertices: each kept cell's border carries the corners of all kept
+ *   neighbours on it (a sorted corner index), and the triangulation uses them.
+ * Partial: loops are assumed not to cross each other or themselves (the
+ * clipping reports SW_ERR_FORMAT where its walk notices, not always);
+ * consecutive loop points with equal (u, v) are merged. */
+#include "sw_trim_tess.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "sw_trim_tess_internal.h"
+
+static uint32_t max_vertices_of(const sw_trim_tess_options *opt, uint32_t base)
+{
+    uint32_t cap = base < 65536u ? 65536u - base : 0;
+    uint32_t want = opt && opt->max_vertices ? opt->max_vertices : cap;
+    return want < cap ? want : cap;
+}
+
+static uint32_t max_depth_of(const sw_trim_tess_options *opt)
+{
+    uint32_t d = opt && opt->max_depth ? opt->max_depth : SW_TT_DEFAULT_DEPTH;
+    return d > SW_TT_MAX_DEPTH ? SW_TT_MAX_DEPTH : d;
+}
+
+static uint32_t hash_size(uint32_t max_vertices)
+{
+    uint32_t h = 16;
+    while (h < 2 * (uint64_t)max_vertices)
+        h *= 2;
+    return h;
+}
+
+size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, int max_degree,
+                                  const sw_trim_tess_options *opt)
+{
+    size_t d = (size_t)(max_degree < 1 ? 1 : max_degree > SW_BEZIER_MAX_DEGREE
+                                                 ? SW_BEZIER_MAX_DEGREE : max_degree);
+    size_t ctrl = sw_tt_ctrl_doubles((int)d, (int)d) * sizeof(double) + 8;
+    size_t v = max_vertices_of(opt, 0), n = point_count, depth = max_depth_of(opt);
+    size_t bytes = patch_count * (ctrl + sizeof(sw_bezier_patch) + 8);
+    bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t)) + (n / 3 + 1) * sizeof(sw_tt_loop);
+    bytes += (2 * depth + 4) * (sizeof(tt_frame) + ctrl) + ctrl;
+    bytes += ((2 * depth + 4) * n + 64) * sizeof(uint32_t);            /* list stack */
+    bytes += v * sizeof(tt_leaf) + (4 * v + 2 * n) * sizeof(uint32_t);  /* leaves, lists */
+    bytes += 2 * 4 * (v + 1) * 2 * sizeof(double);                     /* corner index */
+    bytes += v * (2 * sizeof(double) + 1) + hash_size((uint32_t)v) * sizeof(uint32_t);
+    /* One cell at a time: its border (SW_TT_MAX_BORDER points), then per
+     * border point or loop point: an item of the walk (56 bytes), a ring
+     * vertex and its ring end (36), chain tables (21) and the ear clipping's
+     * map, links and triangles (24); rounded up. */
+    size_t cell = SW_TT_MAX_BORDER + 3 * n + 8;
+    bytes += SW_TT_MAX_BORDER * sizeof(sw_tt_pv) + cell * 160;
+    return bytes + 64 * 32; /* alignment of every allocation */
+}
+
+/* ---- input ----------------------------------------------------------------- */
+
+static sw_status check_patches(tt_ctx *c)
+{
+    for (uint32_t i = 0; i < c->patch_count; i++) {
+        const sw_trim_patch *p = &c->in_patches[i];
+        const float *d = p->domain;
+        if (!p->patch.ctrl || p->patch.degree_u < 1 || p->patch.degree_u > SW_BEZIER_MAX_DEGREE ||
+            p->patch.degree_v < 1 || p->patch.degree_v > SW_BEZIER_MAX_DEGREE)
+            return sw_error_set(c->err, SW_ERR_ARG, "trim tess: patch %u: degree %d x %d or no "
+                                "control points, expected 1..%d", (unsigned)i, p->patch.degree_u,
+                                p->patch.degree_v, SW_BEZIER_MAX_DEGREE);
+        if (!(isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]) && isfinite(d[3]) &&
+              d[0] < d[1] && d[2] < d[3]))
+            return sw_error_set(c->err, SW_ERR_ARG, "trim tess: patch %u: domain [%g, %g] x [%g, "
+                                "%g], expected finite, u0 < u1, v0 < v1", (unsigned)i, d[0], d[1],
+                                d[2], d[3]);
+        if (p->patch.degree_u > c->max_n)
+            c->max_n = p->patch.degree_u;
+        if (p->patch.degree_v > c->max_m)
+            c->max_m = p->patch.degree_v;
+    }
+    return SW_OK;
+}
+
+static sw_status copy_patches(tt_ctx *c)
+{
+    c->patches = sw_arena_alloc(c->arena, sizeof *c->patches * c->patch_count, 8);
+    if (!c->patches)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for patches");
+    for (uint32_t i = 0; i < c->patch_count; i++) {
+        const sw_bezier_patchf *pf = &c->in_patches[i].patch;
+        double *ctrl = sw_arena_alloc(c->arena, sizeof(double) *
+                                      sw_tt_ctrl_doubles(pf->degree_u, pf->degree_v), 8);
+        if (!ctrl)
+            return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for patches");
+        c->patches[i] = sw_bezier_patch_from_float(pf, ctrl);
+        sw_deriv_bounds b;
+        sw_status st = sw_bezier_second_deriv_bounds(&c->patches[i], &b, c->err);
+        if (st != SW_OK) {
+            sw_error_prefix(c->err, "trim tess: patch %u", (unsigned)i);
+            return st;
+        }
+    }
+    return SW_OK;
+}
+
+static void domain_of(const tt_ctx *c, double dom[4])
+{
+    dom[0] = dom[2] = INFINITY, dom[1] = dom[3] = -INFINITY;
+    for (uint32_t i = 0; i < c->patch_count; i++) {
+        const float *d = c->in_patches[i].domain;
+        dom[0] = fmin(dom[0], d[0]), dom[1] = fmax(dom[1], d[1]);
+        dom[2] = fmin(dom[2], d[2]), dom[3] = fmax(dom[3], d[3]);
+    }
+}
+
+/* ---- output ---------------------------------------------------------------- */
+
+static uint32_t hash_key(double u, double v, uint32_t kind)
+{
+    uint64_t a, b;
+    u = u == 0 ? 0 : u; /* -0 and +0 are one place */
+    v = v == 0 ? 0 : v;
+    memcpy(&a, &u, sizeof a);
+    memcpy(&b, &v, sizeof b);
+    uint64_t h = (a * 0x9E3779B97F4A7C15ull) ^ (b * 0xC2B2AE3D27D4EB4Full) ^ kind;
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    return (uint32_t)(h ^ (h >> 32));
+}
+
+/* The patch whose domain holds (u, v) (the nearest when none does). */
+static uint32_t patch_at(const tt_ctx *c, double u, double v)
+{
+    uint32_t best = 0;
+    double best_d = INFINITY;
+    for (uint32_t i = 0; i < c->patch_count; i++) {
+        const float *d = c->in_patches[i].domain;
+        double du = fmax(fmax(d[0] - u, u - d[1]), 0), dv = fmax(fmax(d[2] - v, v - d[3]), 0);
+        if (du + dv < best_d)
+            best = i, best_d = du + dv;
+        if (best_d == 0)
+            break;
+    }
+    return best;
+}
+
+static void eval_surface(const tt_ctx *c, uint32_t p, double u, double v, sw_surface_point *q)
+{
+    const float *d = c->in_patches[p].domain;
+    double s = fmin(fmax((u - d[0]) / ((double)d[1] - d[0]), 0), 1);
+    double t = fmin(fmax((v - d[2]) / ((double)d[3] - d[2]), 0), 1);
+    sw_bezier_eval(&c->patches[p], s, t, SW_EVAL_FIRST, q);
+}
+
+static sw_status new_vertex(tt_ctx *c, uint32_t *index)
+{
+    if (c->vertex_count >= c->max_vertices)
+        return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: more than %u vertices at error %g:"
+                            " coarsen the bound", (unsigned)c->max_vertices, c->error);
+    *index = c->vertex_count++;
+    return SW_OK;
+}
+
+/* Writes vertex i if the caller's buffers hold it. */
+static void put_vertex(const tt_ctx *c, uint32_t i, const float p[3], sw_vec3 n, double u,
+                       double v, uint32_t id)
+{
+    const sw_trim_tess_buffers *o = c->out;
+    if (!o || i >= o->vertex_capacity)
+        return;
+    memcpy(o->positions + 3 * (size_t)i, p, 3 * sizeof(float));
+    o->normals[3 * (size_t)i] = (float)n.x;
+    o->normals[3 * (size_t)i + 1] = (float)n.y;
+    o->normals[3 * (size_t)i + 2] = (float)n.z;
+    if (o->uvs)
+        o->uvs[2 * (size_t)i] = (float)u, o->uvs[2 * (size_t)i + 1] = (float)v;
+    if (o->ids)
+        o->ids[i] = id;
+}
+
+/* A loop point or a crossing: the caller's position, the surface's normal
+ * at the loop point's own (u, v). */
+static void put_border(const tt_ctx *c, uint32_t i, uint32_t src, double u, double v)
+{
+    const sw_trim_point *tp = &c->in_loops->points[src];
+    sw_surface_point q;
+    eval_surface(c, patch_at(c, tp->uv[0], tp->uv[1]), tp->uv[0], tp->uv[1], &q);
+    put_vertex(c, i, tp->p, q.normal, u, v, tp->id);
+}
+
+static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32_t *out)
+{
+    if (pv->kind == SW_TT_SEAM) {
+        uint32_t *slot = &c->seam_out[pv->ref];
+        if (*slot == SW_TT_NONE) {
+            sw_status s = new_vertex(c, slot);
+            if (s != SW_OK)
+                return s;
+            const sw_trim_point *tp = &c->in_loops->points[c->pts[pv->ref].src];
+            put_border(c, *slot, c->pts[pv->ref].src, tp->uv[0], tp->uv[1]);
+        }
+        *out = *slot;
+        return SW_OK;
+    }
+    uint32_t h = hash_key(pv->u, pv->v, pv->kind) & c->hash_mask;
+    for (; c->hash[h] != SW_TT_NONE; h = (h + 1) & c->hash_mask) {
+        uint32_t i = c->hash[h];
+        if (c->key_uv[2 * i] == pv->u && c->key_uv[2 * i + 1] == pv->v && c->key_kind[i] == pv->kind) {
+            *out = i;
+            return SW_OK;
+        }
+    }
+    sw_status s = new_vertex(c, out);
+    if (s != SW_OK)
+        return s;
+    c->hash[h] = *out;
+    c->key_uv[2 * *out] = pv->u, c->key_uv[2 * *out + 1] = pv->v, c->key_kind[*out] = (uint8_t)pv->kind;
+    if (pv->kind == SW_TT_CROSS) {
+        put_border(c, *out, pv->ref, pv->u, pv->v);
+    } else {
+        sw_surface_point q;
+        eval_surface(c, patch, pv->u, pv->v, &q);
+        float p[3] = {(float)q.p.x, (float)q.p.y, (float)q.p.z};
+        put_vertex(c, *out, p, q.normal, pv->u, pv->v, SW_TRIM_INTERIOR);
+    }
+    return SW_OK;
+}
+
+static sw_status emit_ring(tt_ctx *c, uint32_t patch, const sw_tt_pv *ring, uint32_t n)
+{
+    uint32_t *map = sw_arena_alloc(c->arena, sizeof(uint32_t) * 6 * (size_t)n, 4);
+    if (!map)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
+    uint32_t *scratch = map + n, *tri = map + 3 * (size_t)n;
+    for (uint32_t i = 0; i < n; i++) {
+        sw_status s = vertex_for(c, patch, &ring[i], &map[i]);
+        if (s != SW_OK)
+            return s;
+    }
+    uint32_t count = sw_tt_ear_clip(ring, n, scratch, tri, &c->res->fallback_ears);
+    const sw_trim_tess_buffers *o = c->out;
+    for (uint32_t t = 0; t < count; t++) {
+        for (int k = 0; k < 3; k++) {
+            if (o && c->index_count < o->index_capacity)
+                o->indices[c->index_count] = (uint16_t)(o->base_vertex + map[tri[3 * t + k]]);
+            c->index_count++;
+        }
+    }
+    return SW_OK;
+}
+
+static sw_status emit_leaf(tt_ctx *c, uint32_t l)
+{
+    const tt_leaf *leaf = &c->leaves[l];
+    sw_tt_pv *border = sw_arena_alloc(c->arena, sizeof *border * SW_TT_MAX_BORDER, 8);
+    if (!border)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
+    uint32_t nb = sw_tt_leaf_border(c, l, border, SW_TT_MAX_BORDER);
+    if (nb == SW_TT_NONE)
+        return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: a cell borders more than %d finer "
+                            "cells: coarsen the bound", SW_TT_MAX_BORDER);
+    if (!leaf->crossed)
+        return emit_ring(c, leaf->patch, border, nb);
+    c->res->crossed_count++;
+    sw_tt_rings rings;
+    int rc = sw_tt_cell_rings(&c->trims, &leaf->r, c->leaf_segs + leaf->seg_first,
+                              leaf->seg_count, border, nb, c->stamp, l + 1, c->arena, &rings,
+                              &c->res->skipped_loops);
+    if (rc == SW_TT_CELL_NO_MEMORY)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
+    if (rc == SW_TT_CELL_BAD)
+        return sw_error_set(c->err, SW_ERR_FORMAT, "trim tess: loops cross each other or "
+                            "themselves near (%g, %g)", 0.5 * (leaf->r.u0 + leaf->r.u1),
+                            0.5 * (leaf->r.v0 + leaf->r.v1));
+    if (rc == SW_TT_CELL_EMPTY) {
+        const sw_tt_rect *r = &leaf->r;
+        if (!sw_tt_classify(&c->trims, 0.5 * (r->u0 + r->u1), 0.5 * (r->v0 + r->v1)))
+            return SW_OK;
+        return emit_ring(c, leaf->patch, border, nb);
+    }
+    for (uint32_t k = 0; k < rings.ring_count; k++) {
+        uint32_t first = k ? rings.ring_end[k - 1] : 0;
+        sw_status s = emit_ring(c, leaf->patch, rings.verts + first, rings.ring_end[k] - first);
+        if (s != SW_OK)
+            return s;
+    }
+    return SW_OK;
+}
+
+static sw_status emit_all(tt_ctx *c)
+{
+    uint32_t hs = hash_size(c->max_vertices);
+    c->hash_mask = hs - 1;
+    c->hash = sw_arena_alloc(c->arena, sizeof(uint32_t) * hs, 4);
+    c->key_uv = sw_arena_alloc(c->arena, sizeof(double) * 2 * c->max_vertices, 8);
+    c->key_kind = sw_arena_alloc(c->arena, c->max_vertices, 1);
+    if (!c->hash || !c->key_uv || !c->key_kind)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
+                            "vertex table (see sw_trim_tess_scratch_bytes)");
+    memset(c->hash, 0xFF, sizeof(uint32_t) * hs);
+    for (uint32_t l = 0; l < c->leaf_count; l++) {
+        size_t mark = sw_arena_mark(c->arena);
+        sw_status s = emit_leaf(c, l);
+        sw_arena_reset_to(c->arena, mark);
+        if (s != SW_OK)
+            return s;
+    }
+    c->res->leaf_count = c->leaf_count;
+    return SW_OK;
+}
+
+/* ---- entry points ------------------------------------------------------------ */
+
+static sw_status check_call(const sw_trim_patch *patches, uint32_t patch_count,
+                            const sw_trim_loops *loops, double error_world, sw_arena *scratch,
+                            const sw_trim_tess_buffers *out, sw_error *err)
+{
+    if (!patches || patch_count == 0 || !loops || !scratch)
+        return sw_error_set(err, SW_ERR_ARG, "trim tess: no patches, loops or scratch arena");
+    if (!(error_world > 0) || !isfinite(error_world))
+        return sw_error_set(err, SW_ERR_ARG, "trim tess: error %g, expected finite > 0",
+                            error_world);
+    if (out && ((out->vertex_capacity && (!out->positions || !out->normals)) ||
+                (out->index_capacity && !out->indices)))
+        return sw_error_set(err, SW_ERR_ARG, "trim tess: buffer capacity without a buffer");
+    if (out && out->base_vertex >= 65536u)
+        return sw_error_set(err, SW_ERR_ARG, "trim tess: base_vertex %u, expected < 65536",
+                            (unsigned)out->base_vertex);
+    return SW_OK;
+}
+
+static sw_status run(tt_ctx *c)
+{
+    sw_status s = check_patches(c);
+    if (s == SW_OK)
+        s = copy_patches(c);
+    if (s != SW_OK)
+        return s;
+    double dom[4];
+    domain_of(c, dom);
+    if ((s = sw_tt_prepare_loops(c, dom)) != SW_OK || (s = sw_tt_build_tree(c)) != SW_OK ||
+        (s = emit_all(c)) != SW_OK)
+        return s;
+    c->res->vertex_count = c->vertex_count;
+    c->res->index_count = c->index_count;
+    const sw_trim_tess_buffers *o = c->out;
+    if (o && (c->vertex_count > o->vertex_capacity || c->index_count > o->index_capacity))
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: needs %u vertices and %u "
+                            "indices, buffers hold %u and %u", (unsigned)c->vertex_count,
+                            (unsigned)c->index_count, (unsigned)o->vertex_capacity,
+                            (unsigned)o->index_capacity);
+    return SW_OK;
+}
+
+static sw_status tessellate(const sw_trim_patch *patches, uint32_t patch_count,
+                            const sw_trim_loops *loops, double error_world,
+                            const sw_trim_tess_options *opt, sw_arena *scratch,
+                            const sw_trim_tess_buffers *out, sw_trim_tess_result *result,
+                            sw_error *err)
+{
+    sw_trim_tess_result local;
+    sw_trim_tess_result *res = result ? result : &local;
+    memset(res, 0, sizeof *res);
+    sw_status s = check_call(patches, patch_count, loops, error_world, scratch, out, err);
+    if (s != SW_OK)
+        return s;
+    tt_ctx c;
+    memset(&c, 0, sizeof c);
+    c.in_patches = patches, c.patch_count = patch_count, c.in_loops = loops;
+    c.error = error_world, c.arena = scratch, c.err = err, c.out = out, c.res = res;
+    c.max_vertices = max_vertices_of(opt, out ? out->base_vertex : 0);
+    c.max_depth = max_depth_of(opt);
+    size_t mark = sw_arena_mark(scratch);
+    s = run(&c);
+    sw_arena_reset_to(scratch, mark);
+    return s;
+}
+
+sw_status sw_trim_tess(const sw_trim_patch *patches, uint32_t patch_count,
+                       const sw_trim_loops *loops, double error_world,
+                       const sw_trim_tess_options *opt, sw_arena *scratch,
+                       const sw_trim_tess_buffers *out, sw_trim_tess_result *result,
+                       sw_error *err)
+{
+    if (!out)
+        return sw_error_set(err, SW_ERR_ARG, "trim tess: no buffers (sw_trim_tess_sizes "
+                            "counts without them)");
+    return tessellate(patches, patch_count, loops, error_world, opt, scratch, out, result, err);
+}
+
+sw_status sw_trim_tess_sizes(const sw_trim_patch *patches, uint32_t patch_count,
+                             const sw_trim_loops *loops, double error_world,
+                             const sw_trim_tess_options *opt, sw_arena *scratch,
+                             sw_trim_tess_result *result, sw_error *err)
+{
+    return tessellate(patches, patch_count, loops, error_world, opt, scratch, NULL, result, err);
+}
+
+sw_status sw_trim_patches_from_pack(const sw_pack *pack, uint32_t surface, sw_trim_patch *out,
+                                    uint32_t capacity, uint32_t *count, sw_error *err)
+{
+    *count = 0;
+    if (!pack || !pack->surfaces || !pack->patch_domains || surface >= pack->surface_count)
+        return sw_error_set(err, SW_ERR_RANGE, "trim tess: surface %u: the pack has %u surfaces"
+                            "%s", (unsigned)surface, pack ? (unsigned)pack->surface_count : 0u,
+                            pack && pack->surfaces && !pack->patch_domains
+                                ? " and no PATCH_DOMAINS" : "");
+    const sw_pack_surface *s = &pack->surfaces[surface];
+    *count = s->patch_count;
+    if (s->patch_count > capacity)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "trim tess: surface %u has %u patches, room "
+                            "for %u", (unsigned)surface, (unsigned)s->patch_count,
+                            (unsigned)capacity);
+    for (uint32_t i = 0; i < s->patch_count; i++) {
+        uint32_t p = s->first_patch + i;
+        const sw_pack_patch *pp = &pack->patches[p];
+        out[i].patch.degree_u = pp->degree_u;
+        out[i].patch.degree_v = pp->degree_v;
+        out[i].patch.rational = (pp->flags & SW_PATCH_RATIONAL) != 0;
+        out[i].patch.ctrl = pack->control + 4 * (size_t)pp->first_control;
+        memcpy(out[i].domain, pack->patch_domains[p].domain, sizeof out[i].domain);
+    }
+    return SW_OK;
+}

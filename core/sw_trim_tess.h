@@ -1,0 +1,174 @@
+/* Runtime trimmed tessellation of one surface (Guthe et al. 2002, paper 004,
+ * section 6.3): the surface's rational Bezier patches are refined by binary
+ * trees until a proven object-space error bound holds, cells outside the
+ * current trimming loops are dropped, cells inside are triangulated whole and
+ * cells the loops cross are clipped by them in parameter space and
+ * triangulated. Called by the runtime's tessellation workers with the loops
+ * the Seam Graph shows at the moment (core/sw_seam_graph.h) and by the tests
+ * and the benchmark. Never allocates: scratch comes from an sw_arena (given
+ * back before returning), output goes into the caller's buffers.
+ *
+ * Guarantees, for valid input:
+ * - Watertight in parameter space: the triangles tile the trimmed region
+ *   (loops even-odd, any orientation) with no T-vertex: where a cell meets a
+ *   finer neighbour, the neighbour's corners on the shared edge are vertices of
+ *   the cell's triangles too.
+ * - The border is the seam: every loop point is an output vertex whose
+ *   position is the given float[3], copied bit for bit, so two surfaces sharing
+ *   a seam have bit-identical border vertices. Where a loop segment crosses a
+ *   cell border the new vertex takes the position (and normal) of the nearer
+ *   end of the segment (the paper's nearest-neighbour rule) instead of an
+ *   interpolated one, so no position exists on the border that the neighbouring
+ *   surface lacks; the vertex keeps its own (u, v).
+ * - Interior vertices (cell corners) are evaluated on the exact surface; every
+ *   normal is the surface normal at the vertex's (u, v).
+ * - Every triangle's vertices lie in one cell, and a cell is a leaf only when
+ *   (M_uu + 2 M_uv + M_vv) / 8 <= error, with M the second-derivative bounds of
+ *   the cell's sub-patch (sw_bezier_second_deriv_bounds): the distance from any
+ *   point of a triangle to the surface at the same (u, v) is then at most
+ *   error (a rigorous bound, where the paper tests the distance at sampled
+ *   points only). Exception, along the border: loop points have the caller's
+ *   positions (the seam's own error), and a triangle at a crossing is inscribed
+ *   at the (u, v) of the loop point whose position it took, so its cell's box
+ *   grows by up to half a seam segment there (measured in the tests and the
+ *   benchmark's seams: within about 1-2x the bound when the seam's own chord
+ *   error is a tenth of it). To keep crossings rare, a cell whose loop runs
+ *   across the split axis is split through a loop point where one lies in
+ *   the cell's middle (then the loop point itself is the border vertex).
+ *
+ * Limits: at most 65536 - base_vertex vertices (16-bit indices, GLES2): a
+ * surface that needs more at the asked error gets SW_ERR_RANGE and the caller
+ * coarsens. Scratch is sized by sw_trim_tess_scratch_bytes: about 16-18 MB
+ * for the full 16-bit range and 1000-4000 loop points, about 5 MB with
+ * options.max_vertices = 4096. Work is O(cells log cells + cells x loop points
+ * per cell); about 0.6-1 million triangles a second on one core of the
+ * reference machine (tests/bench/trim_tess_bench.c). */
+#ifndef SW_TRIM_TESS_H
+#define SW_TRIM_TESS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sw_arena.h"
+#include "sw_bezier.h"
+#include "sw_error.h"
+#include "sw_pack.h"
+
+/* One Bezier patch of the surface and the part of the surface's (u, v)
+ * domain it covers: the patch's own [0,1]^2 maps linearly onto
+ * [domain[0], domain[1]] x [domain[2], domain[3]]. The patches of a surface
+ * tile its domain on a grid of knot intervals (sw_pack_patch_domain): shared
+ * edges have equal coordinates. */
+typedef struct sw_trim_patch {
+    sw_bezier_patchf patch;
+    float domain[4];            /* u0, u1, v0, v1, u0 < u1, v0 < v1 */
+} sw_trim_patch;
+
+/* The patches of a validated pack's surface `surface` as sw_trim_tess takes
+ * them: views into the pack (control points are not copied), domains from
+ * PATCH_DOMAINS. *count is the surface's patch count; SW_ERR_NO_MEMORY when
+ * capacity is smaller (nothing written beyond it), SW_ERR_RANGE for a surface
+ * out of range or a pack without the trimmed-surface sections. */
+sw_status sw_trim_patches_from_pack(const sw_pack *pack, uint32_t surface, sw_trim_patch *out,
+                                    uint32_t capacity, uint32_t *count, sw_error *err);
+
+/* One point of a trimming polyline: its parameters in this surface, the
+ * position to draw there (the Seam Graph vertex's) and the caller's id for it
+ * (the Seam Graph vertex index), reported back per output vertex. */
+typedef struct sw_trim_point {
+    float uv[2];
+    float p[3];
+    uint32_t id;
+} sw_trim_point;
+
+/* The surface's current loops: loop k is points[loop_first[k] ..
+ * loop_first[k + 1]), closed (the last point joins the first, not repeated),
+ * either orientation; nested loops alternate inside and outside (even-odd).
+ * Loops must not cross each other or themselves. Consecutive points with equal
+ * (u, v) count once (the first is kept), and the tip of a spike (the loop
+ * turning back within 1e-6 rad, as where a tiny trim curve overshoots a corner)
+ * is dropped, as is a point within 1e-6 of the domain's size of the previous
+ * one (float zig-zags of tiny trim curves; result->dropped_points). A loop
+ * with fewer than three distinct points or no area encloses nothing and is
+ * skipped. */
+typedef struct sw_trim_loops {
+    const sw_trim_point *points;
+    const uint32_t *loop_first;  /* loop_count + 1 entries, non-decreasing */
+    uint32_t loop_count;
+} sw_trim_loops;
+
+/* Zero means default, as everywhere in seamwalk. */
+typedef struct sw_trim_tess_options {
+    uint32_t max_vertices; /* default and cap: 65536 - base_vertex (16-bit indices) */
+    uint32_t max_depth;    /* splits per patch, default 24, at most 40 */
+} sw_trim_tess_options;
+
+/* Caller-owned output. positions and normals hold 3 floats per vertex; uvs
+ * (optional, NULL to skip) 2 floats, the vertex's surface parameters; ids
+ * (optional) the loop point's id for border vertices (a crossing: the id of
+ * the loop point whose position it took) and SW_TRIM_INTERIOR for interior
+ * ones. Indices are base_vertex + vertex number, three per triangle, counter-
+ * clockwise in (u, v) (so facing along F_u x F_v). */
+#define SW_TRIM_INTERIOR 0xFFFFFFFFu
+typedef struct sw_trim_tess_buffers {
+    float *positions, *normals, *uvs;
+    uint32_t *ids;
+    uint16_t *indices;
+    uint32_t vertex_capacity, index_capacity;
+    uint32_t base_vertex;
+} sw_trim_tess_buffers;
+
+typedef struct sw_trim_tess_result {
+    uint32_t vertex_count, index_count;  /* what the surface needs (also on NO_MEMORY) */
+    uint32_t leaf_count;                 /* cells kept (inside or crossed) */
+    uint32_t crossed_count;              /* of those, cells a loop crosses */
+    uint32_t capped_count;               /* leaves at max_depth whose bound exceeds error */
+    uint32_t skipped_loops;              /* loops with no area, or holes below max_depth */
+    uint32_t dropped_points;             /* loop points dropped (spike tips, near repeats):
+                                            not in the output */
+    uint32_t fallback_ears;              /* clipping steps taken without a valid ear: 0 for
+                                            valid loops */
+    double error_bound;                  /* the largest leaf bound: <= error unless capped */
+} sw_trim_tess_result;
+
+/* Scratch bytes sw_trim_tess may take from its arena, worst case, for a
+ * surface of patch_count patches, loops of point_count points in all, at
+ * most max_degree in u and v, with options opt (NULL: defaults). */
+size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, int max_degree,
+                                  const sw_trim_tess_options *opt);
+
+/* Tessellates the surface so that it deviates at most error_world (model
+ * units) from the exact surface, inside the loops.
+ * - SW_OK: out holds result->vertex_count vertices and result->index_count
+ *   indices. No loop, or loops enclosing nothing inside the patches: SW_OK with
+ *   no triangles (an untrimmed surface passes its domain rectangle as a loop).
+ * - SW_ERR_NO_MEMORY: a buffer is too small (result has the counts needed,
+ *   nothing beyond the capacities was written: call again with larger buffers),
+ *   or the arena is (see sw_trim_tess_scratch_bytes).
+ * - SW_ERR_RANGE: the surface needs more than max_vertices vertices (or
+ *   cells) at this bound: the caller coarsens (a larger error_world) and
+ *   calls again. Also a loop point outside the patches' domain by more than
+ *   1% of its size (closer ones are clamped onto it: real trims overshoot a
+ *   little), or a patch with a non-finite point or weight <= 0.
+ * - SW_ERR_ARG: error_world not finite and > 0, NULL pointers, a bad degree or
+ *   domain, loop_first not non-decreasing from 0.
+ * - SW_ERR_FORMAT: loops that cross each other or themselves where the
+ *   clipping notices it.
+ * The arena is back at its mark on return. Positions are bit-identical for
+ * identical input (no threads, no randomness). */
+sw_status sw_trim_tess(const sw_trim_patch *patches, uint32_t patch_count,
+                       const sw_trim_loops *loops, double error_world,
+                       const sw_trim_tess_options *opt, sw_arena *scratch,
+                       const sw_trim_tess_buffers *out, sw_trim_tess_result *result,
+                       sw_error *err);
+
+/* The sizes only: sw_trim_tess with no buffers, SW_OK (not NO_MEMORY) when
+ * the rest succeeds. The work is the same as a full call, so a caller with
+ * buffers of a known capacity calls sw_trim_tess directly and retries on
+ * SW_ERR_NO_MEMORY. */
+sw_status sw_trim_tess_sizes(const sw_trim_patch *patches, uint32_t patch_count,
+                             const sw_trim_loops *loops, double error_world,
+                             const sw_trim_tess_options *opt, sw_arena *scratch,
+                             sw_trim_tess_result *result, sw_error *err);
+
+#endif

@@ -1,0 +1,8 @@
+# tests of the runtime trimmed tessellation (core/sw_trim_tess.c)
+sw_add_test(test_trim_tess SOURCES test_trim_tess.c LIBS sw_core)
+# The same on every trimmed surface of the shared IGES models (skipped, exit
+# 77, when none is present).
+sw_add_test(test_trim_tess_models SOURCES test_trim_tess_models.c LIBS sw_assets sw_core
+  ARGS ${SW_SHARED_MODELS}/occt_hammer.iges ${SW_SHARED_MODELS}/occt_bearing.iges
+       ${SW_SHARED_MODELS}/gpucast_teapot.igs)
+set_tests_properties(test_trim_tess_models PROPERTIES SKIP_RETURN_CODE 77)
