@@ -51,8 +51,18 @@ static double next_vertex(double p, int dir, double n)
     return r >= n ? r - n : r < 0 ? r + n : r;
 }
 
-/* The unused match of loop-vertex (side, ordinal vo) whose foot on the other
- * side is nearest ahead of p_other within the window, or NULL. */
+/* Of two feet in the window: the nearer to its vertex, then the less advance.
+ * (Where a loop folds back within the tolerance, as at the Newell teapot's
+ * knob, a vertex has feet on both layers; the one it lies on is right.) */
+static int m_better(const sew_match *m, double adv, const sew_match *best, double best_adv)
+{
+    if (m->dist != best->dist)
+        return m->dist < best->dist;
+    return adv < best_adv;
+}
+
+/* The unused match of loop-vertex (side, ordinal vo) in the window ahead of
+ * p_other on the other side that is nearest (m_better), or NULL. */
 static sew_match *best_foot(const pair_group *g, int side, double vo, double p_other, int dir,
                             double *adv_out)
 {
@@ -71,7 +81,7 @@ static sew_match *best_foot(const pair_group *g, int side, double vo, double p_o
         if (g->m[k].used)
             continue;
         double a = advance(p_other, match_pos(g, &g->m[k], 1 - side), dir, g->n[1 - side]);
-        if (a <= win && (!best || a < *adv_out)) {
+        if (a <= win && (!best || m_better(&g->m[k], a, best, *adv_out))) {
             best = &g->m[k];
             *adv_out = a;
         }
@@ -155,16 +165,71 @@ static void chain_release(chain *c)
 }
 
 /* Removes the projections an accepted interval covers (section 4.1: "all
- * projections of points inside this interval ... are removed"). */
-static void cover(pair_group *g, const chain *c, int d)
+ * projections of points inside this interval ... are removed"): both ends
+ * within its spans and at least one strictly inside. The interval's own two
+ * end projections stay available, so a neighbouring interval of the same
+ * pair (across a fold of one polyline, say) can start where this one ends. */
+static void cover(pair_group *g, chain *c, int d)
 {
     double a0 = match_pos(g, c->at[0], 0), b0 = match_pos(g, c->at[0], 1);
+    const double eps = 1e-12;
     for (size_t k = 0; k < g->count; k++) {
         sew_match *m = &g->m[k];
-        if (advance(a0, match_pos(g, m, 0), 1, g->n[0]) <= c->span[0] + 1e-12 &&
-            advance(b0, match_pos(g, m, 1), d, g->n[1]) <= c->span[1] + 1e-12)
+        double a = advance(a0, match_pos(g, m, 0), 1, g->n[0]);
+        double b = advance(b0, match_pos(g, m, 1), d, g->n[1]);
+        int in_a = a <= c->span[0] + eps, in_b = b <= c->span[1] + eps;
+        int strict = (a > eps && a < c->span[0] - eps) || (b > eps && b < c->span[1] - eps);
+        if (in_a && in_b && strict)
             m->used = 1;
     }
+    c->at[0]->used = 0;
+    c->at[c->count - 1]->used = 0;
+}
+
+/* The better of two intervals: more projections, then the longer spans (a
+ * fold of one polyline gives a short interval that must not win over the
+ * seam beside it). */
+static int chain_better(const chain *x, const chain *y)
+{
+    if (x->count != y->count)
+        return x->count > y->count;
+    return x->span[0] + x->span[1] > y->span[0] + y->span[1];
+}
+
+/* The 3D point of match m on side (0: A, 1: B): its vertex or its foot. */
+static void side_point(const pair_group *g, const sew_match *m, int side, double out[3])
+{
+    const sw_seam_polylines *poly = g->s->poly;
+    if (m->lv == g->loop[side]) {
+        memcpy(out, poly->p + 3 * (size_t)m->v, 3 * sizeof *out);
+        return;
+    }
+    const double *a = poly->p + 3 * (size_t)m->e;
+    const double *b = poly->p + 3 * (size_t)sew_next(poly, m->le, m->e);
+    for (int k = 0; k < 3; k++)
+        out[k] = a[k] + m->t * (b[k] - a[k]);
+}
+
+/* Is the interval longer than the tolerance along either polyline?
+ * One that does not is a point contact: where many loops meet (a pole, a
+ * vertex of high valence) every vertex near the junction is within the
+ * tolerance of every edge leaving it, and its feet would only scatter extra
+ * vertices around the junction. */
+static int chain_long(const pair_group *g, const chain *c)
+{
+    for (int side = 0; side < 2; side++) {
+        double p[3], q[3], length = 0;
+        side_point(g, c->at[0], side, p);
+        for (size_t i = 1; i < c->count && length <= g->s->tol; i++) {
+            side_point(g, c->at[i], side, q);
+            length += sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                           (p[2] - q[2]) * (p[2] - q[2]));
+            memcpy(p, q, sizeof p);
+        }
+        if (length > g->s->tol)
+            return 1;
+    }
+    return 0;
 }
 
 static int add_join(sew_state *s, const sew_match *m)
@@ -198,13 +263,12 @@ static int group_intervals(pair_group *g, sew_match **seeds, chain *c, chain *al
             continue;
         if (build_chain(g, seeds[k], 1, c) != 0)
             return -1;
-        size_t forward = c->count;
         chain_release(c);
         if (build_chain(g, seeds[k], -1, alt) != 0)
             return -1;
         int d = -1;
         chain *best = alt;
-        if (alt->count < forward) {
+        if (chain_better(c, alt)) {
             chain_release(alt);
             if (build_chain(g, seeds[k], 1, c) != 0)
                 return -1;
@@ -217,8 +281,11 @@ static int group_intervals(pair_group *g, sew_match **seeds, chain *c, chain *al
             continue;
         }
         g->s->intervals++;
+        /* A point contact merges vertices with vertices only. */
+        int feet = chain_long(g, best);
         for (size_t i = 0; i < best->count; i++)
-            if (add_join(g->s, best->at[i]) != 0)
+            if ((feet || best->at[i]->t == 0 || best->at[i]->t == 1) &&
+                add_join(g->s, best->at[i]) != 0)
                 return -1;
         cover(g, best, d);
     }

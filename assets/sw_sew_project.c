@@ -139,6 +139,30 @@ static int add_match(sew_state *s, const sew_match *m)
     return 0;
 }
 
+/* Does one of v's edges run within 60 degrees of direction d (either way)?
+ * Edges no longer than twice the tolerance say nothing about direction and
+ * count as agreeing. Without this, where several loops meet at an angle (a
+ * pole, a corner of high valence) the vertices near the junction on one
+ * loop's side lie within the tolerance of another side leaving it and get
+ * sewn across the corner. */
+static int directions_agree(const sew_state *s, uint32_t v, const double d[3], double dlen)
+{
+    const sw_seam_polylines *poly = s->poly;
+    uint32_t l = s->vertex_loop[v];
+    uint32_t prev = v > poly->loop_start[l] ? v - 1 : (uint32_t)poly->loop_start[l + 1] - 1;
+    uint32_t ends[2] = {prev, sew_next(poly, l, v)};
+    if (dlen <= 2 * s->tol)
+        return 1;
+    for (int k = 0; k < 2; k++) {
+        const double *a = poly->p + 3 * (size_t)v, *b = poly->p + 3 * (size_t)ends[k];
+        double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double elen = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+        if (elen <= 2 * s->tol || fabs(e[0] * d[0] + e[1] * d[1] + e[2] * d[2]) >= 0.5 * elen * dlen)
+            return 1;
+    }
+    return 0;
+}
+
 /* Projects vertex v onto edge e; keeps it within the tolerance. */
 static int project(sew_state *s, uint32_t v, uint32_t e)
 {
@@ -157,8 +181,11 @@ static int project(sew_state *s, uint32_t v, uint32_t e)
         dist2 += (p[i] - a[i] - t * d[i]) * (p[i] - a[i] - t * d[i]);
     if (!(dist2 <= s->tol * s->tol))
         return 0;
+    double len = sqrt(len2);
+    if (!directions_agree(s, v, d, len))
+        return 0;
     /* A foot this close to an end is that end: no sliver edges. */
-    double len = sqrt(len2), snap = 0.25 * fmin(s->tol, len);
+    double snap = 0.25 * fmin(s->tol, len);
     if (t * len <= snap)
         t = 0;
     else if ((1 - t) * len <= snap)
