@@ -51,18 +51,10 @@ static double next_vertex(double p, int dir, double n)
     return r >= n ? r - n : r < 0 ? r + n : r;
 }
 
-/* Of two feet in the window: the nearer to its vertex, then the less advance.
- * (Where a loop folds back within the tolerance, as at the Newell teapot's
- * knob, a vertex has feet on both layers; the one it lies on is right.) */
-static int m_better(const sew_match *m, double adv, const sew_match *best, double best_adv)
-{
-    if (m->dist != best->dist)
-        return m->dist < best->dist;
-    return adv < best_adv;
-}
-
-/* The unused match of loop-vertex (side, ordinal vo) in the window ahead of
- * p_other on the other side that is nearest (m_better), or NULL. */
+/* The unused match of loop-vertex (side, ordinal vo) whose foot on the other
+ * side is nearest ahead of p_other within the window, or NULL. (Least
+ * advance, not least distance: a foot farther ahead would skip vertices of
+ * the other side that still have to be sewn.) */
 static sew_match *best_foot(const pair_group *g, int side, double vo, double p_other, int dir,
                             double *adv_out)
 {
@@ -81,7 +73,7 @@ static sew_match *best_foot(const pair_group *g, int side, double vo, double p_o
         if (g->m[k].used)
             continue;
         double a = advance(p_other, match_pos(g, &g->m[k], 1 - side), dir, g->n[1 - side]);
-        if (a <= win && (!best || m_better(&g->m[k], a, best, *adv_out))) {
+        if (a <= win && (!best || a < *adv_out)) {
             best = &g->m[k];
             *adv_out = a;
         }
@@ -123,7 +115,10 @@ static int grow(pair_group *g, double pA, double pB, int da, int db, chain *c)
         sew_match *mb = best_foot(g, 1, vb, pA, da, &adv_a_of_b);
         double adv_a_of_a = advance(pA, va, da, g->n[0]);
         double adv_b_of_b = advance(pB, vb, db, g->n[1]);
-        if (ma && mb && adv_a_of_b < adv_a_of_a)
+        /* Whichever comes first along A; on a tie, first along B (else the
+         * B vertex would be skipped and left unsewn). */
+        if (ma && mb && (adv_a_of_b < adv_a_of_a ||
+                         (adv_a_of_b == adv_a_of_a && adv_b_of_b < adv_b_of_a)))
             ma = NULL;
         double step_a = ma ? adv_a_of_a : adv_a_of_b, step_b = ma ? adv_b_of_a : adv_b_of_b;
         sew_match *m = ma ? ma : mb;

@@ -176,16 +176,23 @@ static int project(sew_state *s, uint32_t v, uint32_t e)
         len2 += d[i] * d[i];
         t += (p[i] - a[i]) * d[i];
     }
-    t = len2 > 0 ? fmin(fmax(t / len2, 0.0), 1.0) : 0;
+    double len = sqrt(len2), snap = 0.25 * fmin(s->tol, len);
+    t = len2 > 0 ? t / len2 : 0;
+    /* Only feet on the edge count (paper, figure 2: projections onto the
+     * edge). A point beyond an end is that end's business, through the edge
+     * on the other side of it, unless it is within the snap distance: a
+     * clamped projection would let every vertex near a vertex of the other
+     * polyline map onto it, and a dense run of vertices collapse into one. */
+    if (t < 0 ? -t * len > snap : t > 1 ? (t - 1) * len > snap : 0)
+        return 0;
+    t = fmin(fmax(t, 0.0), 1.0);
     for (int i = 0; i < 3; i++)
         dist2 += (p[i] - a[i] - t * d[i]) * (p[i] - a[i] - t * d[i]);
     if (!(dist2 <= s->tol * s->tol))
         return 0;
-    double len = sqrt(len2);
     if (!directions_agree(s, v, d, len))
         return 0;
     /* A foot this close to an end is that end: no sliver edges. */
-    double snap = 0.25 * fmin(s->tol, len);
     if (t * len <= snap)
         t = 0;
     else if ((1 - t) * len <= snap)

@@ -214,6 +214,71 @@ static void test_three_faces_on_one_edge_are_nonmanifold(void)
     sw_model_free(&m);
 }
 
+/* ---- sewing polylines directly ------------------------------------------ */
+
+/* Appends a loop of the unit square at x0 whose side x = x0 + 1 (right,
+ * upwards) or x = x0 (left, downwards) is sampled at n points. */
+static void square_loop(sw_seam_polylines *pl, double x0, int dense_right, int n)
+{
+    size_t first = pl->vertex_count;
+    double pts[256][2];
+    int m = 0;
+    if (dense_right) {
+        pts[m][0] = x0, pts[m++][1] = 0;
+        for (int i = 0; i < n; i++)
+            pts[m][0] = x0 + 1, pts[m++][1] = (double)i / (n - 1);
+        pts[m][0] = x0, pts[m++][1] = 1;
+    } else {
+        for (int i = 0; i < n; i++)
+            pts[m][0] = x0, pts[m++][1] = 1 - (double)i / (n - 1);
+        pts[m][0] = x0 + 1, pts[m++][1] = 0;
+        pts[m][0] = x0 + 1, pts[m++][1] = 1;
+    }
+    for (int i = 0; i < m; i++) {
+        size_t v = pl->vertex_count++;
+        pl->uv[2 * v] = pts[i][0], pl->uv[2 * v + 1] = pts[i][1];
+        pl->p[3 * v] = pts[i][0], pl->p[3 * v + 1] = pts[i][1], pl->p[3 * v + 2] = 0;
+    }
+    size_t l = pl->loop_count++;
+    pl->loop_start[l] = first;
+    pl->loop_start[l + 1] = pl->vertex_count;
+    pl->loop_surface[l] = (uint32_t)l;
+    pl->loop_outer[l] = 1;
+    pl->surface_loops[l + 1] = pl->loop_count;
+}
+
+/* Two squares sharing the side x = 1, sampled at 41 and at 29 points on
+ * either side: every edge is shorter than the tolerance, and still every
+ * point of both samplings ends up on the one shared seam (the interval takes
+ * the least advance each step, skipping no vertex of either side). */
+static void test_dense_sides_shorter_than_tolerance_are_sewn(void)
+{
+    double uv[2 * 128], p[3 * 128];
+    size_t starts[3];
+    uint32_t surf[2];
+    uint8_t outer[2];
+    size_t sloops[3] = {0};
+    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 0, sloops, 2, 0.1, 0};
+    square_loop(&pl, 0, 1, 41);
+    square_loop(&pl, 1, 0, 29);
+    sw_seam_host h;
+    sw_sew_counts c;
+    sw_error err;
+    SW_CHECK(sw_sew_polylines(&pl, 0.1, &h, &c, &err) == SW_OK);
+    check_host(&h);
+    SW_CHECK_MSG(c.free_edges == 6, "free %zu seams %zu", c.free_edges, c.seams);
+    double seam_length = 0;
+    for (uint32_t e = 0; e < h.edge_count; e++)
+        if (loops_along(&h, h.edges[e].a, h.edges[e].b) == 2) {
+            const float *a = h.vertices[h.edges[e].a].p, *b = h.vertices[h.edges[e].b].p;
+            seam_length += hypot(a[0] - b[0], a[1] - b[1]);
+            SW_CHECK(fabs(a[0] - 1) < 1e-6 && fabs(b[0] - 1) < 1e-6);
+        }
+    SW_CHECK_NEAR(seam_length, 1.0, 1e-6);
+    SW_CHECK(c.seams >= 40 && c.inserted > 0);
+    sw_seam_host_free(&h);
+}
+
 /* ---- curved trims ------------------------------------------------------- */
 
 /* The plane z = 0 over [0, 1]^2 with a hole of radius 0.3, and the disc that
@@ -627,6 +692,7 @@ int main(int argc, char **argv)
     SW_RUN(test_gap_above_tolerance_is_not_sewn);
     SW_RUN(test_t_junction_inserts_the_middle_vertex);
     SW_RUN(test_three_faces_on_one_edge_are_nonmanifold);
+    SW_RUN(test_dense_sides_shorter_than_tolerance_are_sewn);
     SW_RUN(test_hole_and_disc_sewn_all_round);
     SW_RUN(test_teapot_polylines_within_tolerance);
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);
