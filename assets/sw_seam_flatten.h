@@ -18,7 +18,8 @@
  * Proved from the surface's derivative bounds (sw_seam_qtree.h) and the
  * convex hull of the trim curve's Bezier pieces, not sampled. Pieces that
  * cannot be proved after 2^-40 of a curve piece (a singular surface) are
- * accepted and counted in unproven. */
+ * accepted and counted in unproven. Every curve's start stays a vertex (the
+ * loop's corners survive simplification). */
 #ifndef SW_SEAM_FLATTEN_H
 #define SW_SEAM_FLATTEN_H
 

@@ -7,19 +7,28 @@
  * Steps:
  *  1. every polyline vertex is projected onto every edge of other loops
  *     that a 3D uniform grid names as near; projections within the
- *     tolerance are kept (feet within a quarter of the tolerance, and of the
- *     edge, of an edge's end are snapped to that end vertex);
+ *     tolerance whose foot lies on the edge are kept (a foot within a quarter
+ *     of the tolerance, and of the edge, of an end is that end vertex), and
+ *     only where one of the vertex's edges runs within 60 degrees of the
+ *     target edge (edges shorter than twice the tolerance have no direction
+ *     to trust): near a junction of several loops every vertex is within the
+ *     tolerance of every edge leaving it;
  *  2. per pair of loops, sewing intervals grow from the best projections
- *     along both polylines at once, one vertex of either side at a time, a
- *     vertex joining only with a projection onto the edge at the interval's
- *     end on the other side or the next one (the paper's rule); projections
- *     inside a finished interval are removed;
+ *     along both polylines at once, one vertex of either side at a time
+ *     (whichever comes first along them), a vertex joining only with a
+ *     projection onto the edge at the interval's end on the other side or
+ *     the next one (the paper's rule). Both directions of the other polyline
+ *     are tried and the interval with more projections (then the longer one)
+ *     kept. Projections strictly inside a finished interval are removed; its
+ *     two end projections stay, so the next interval can start there;
  *  3. every projection of an interval merges its vertex with its foot: an
  *     end vertex, or a point inserted into the edge (so a T-junction gets the
- *     vertex on the long side). The merges are a union-find, so intervals of
- *     several pairs along one seam combine into one chain of shared vertices
- *     (the paper's recombination into n-surface intervals, figure 3):
- *     non-manifold seams come out with one vertex list.
+ *     vertex on the long side). An interval no longer than the tolerance on
+ *     either side is a point contact and merges vertices with vertices only.
+ *     The merges are a union-find, so intervals of several pairs along one
+ *     seam combine into one chain of shared vertices (the paper's
+ *     recombination into n-surface intervals, figure 3): non-manifold seams
+ *     come out with one vertex list.
  *
  * No fold-overs: interval growth only moves forward along both polylines
  * (a window of advances >= 0), and a foot's position along a straight edge is
@@ -37,9 +46,16 @@
  * loop order): every other member was within the tolerance of its partner.
  * Vertices sewn to nothing stay where they are, on free edges.
  *
+ * Slots: every polyline vertex keeps its slot (with its exact (u, v)) even
+ * where sewing merged it with its neighbour (a patch side collapsed to a
+ * point); inserted points that add no new vertex are left out.
+ *
  * Partial: loops are sewn to other loops only; a loop that meets itself (the
  * seam line of a closed cylinder's single loop) keeps both sides as free
- * edges. */
+ * edges. Geometry that is degenerate at the tolerance's own scale (a side a
+ * few tolerances long folding back along its neighbour, as at the Newell
+ * teapot's knob) can come out as two layers of vertices up to twice the
+ * tolerance apart instead of one seam. */
 #ifndef SW_SEW_H
 #define SW_SEW_H
 
