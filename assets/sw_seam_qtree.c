@@ -197,6 +197,11 @@ sw_status sw_seam_qtree_bounds(sw_seam_qtree *qt, const double box[4], sw_seam_b
                    fmin(fmax(box[2], qt->domain[2]), qt->domain[3]),
                    fmin(fmax(box[3], qt->domain[2]), qt->domain[3])};
     memset(out, 0, sizeof *out);
+    /* Outside the domain the surface is evaluated at the clamped (u, v):
+     * continuous, but kinked where a chord crosses the domain's border. */
+    const double *d = qt->domain;
+    out->straddles = (box[0] < d[0] && d[0] < box[1]) || (box[0] < d[1] && d[1] < box[1]) ||
+                     (box[2] < d[2] && d[2] < box[3]) || (box[2] < d[3] && d[3] < box[3]);
     const double *cols = col_range(qt, 0), *rows = row_range(qt, 0);
     for (int a = first_piece(cols, qt->pieces_u, 2, b[0]); a < qt->pieces_u; a++) {
         const double *cu = cols + 2 * a;

@@ -18,8 +18,11 @@
 /* Bounds in the surface's own (u, v) units over a box: |S_u| <= lu,
  * |S_v| <= lv, |S_uu| <= uu, |S_uv| <= uv, |S_vv| <= vv everywhere in it.
  * straddles: the box crosses an interior knot line strictly, where the
- * surface may be only C0, so second-derivative bounds say nothing about a
- * chord across it (callers then fall back to the first-derivative bound). */
+ * surface may be only C0, or the domain's border (outside it the surface is
+ * taken at the clamped (u, v): trims stray outside by rounding or sloppy
+ * data), so second-derivative bounds say nothing about a chord across it
+ * (callers then fall back to the first-derivative bound, which holds for the
+ * clamped surface too). */
 typedef struct sw_seam_bounds {
     double lu, lv, uu, uv, vv;
     int straddles;
