@@ -28,7 +28,9 @@
  *     The merges are a union-find, so intervals of several pairs along one
  *     seam combine into one chain of shared vertices (the paper's
  *     recombination into n-surface intervals, figure 3): non-manifold seams
- *     come out with one vertex list.
+ *     come out with one vertex list. Two classes whose positions are more
+ *     than twice the tolerance apart are never merged (a guard against
+ *     chains of merges drifting; it did not trigger on the shared models).
  *
  * No fold-overs: interval growth only moves forward along both polylines
  * (a window of advances >= 0), and a foot's position along a straight edge is

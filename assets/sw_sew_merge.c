@@ -56,6 +56,12 @@ static int compare_uses(const void *x, const void *y)
     return (a->loop > b->loop) - (a->loop < b->loop);
 }
 
+static double dist2(const double *a, const double *b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+           (a[2] - b[2]) * (a[2] - b[2]);
+}
+
 /* Joins into unions; feet inside edges get ids N, N + 1, ... in ins. */
 static void unite_joins(const sew_state *s, uint32_t *parent, inserted *ins, size_t *ins_count)
 {
@@ -71,7 +77,15 @@ static void unite_joins(const sew_state *s, uint32_t *parent, inserted *ins, siz
             target = n + (uint32_t)*ins_count;
             ins[(*ins_count)++] = (inserted){j->e, target, j->t};
         }
-        unite(parent, j->v, target);
+        /* Union-find is transitive: a chain of merges, each within the
+         * tolerance, could drag a class far from where its members are. Two
+         * classes whose positions (their first original vertex) are more
+         * than twice the tolerance apart stay apart. */
+        uint32_t ra = find(parent, j->v), rb = find(parent, target);
+        if (ra < n && rb < n && dist2(s->poly->p + 3 * (size_t)ra, s->poly->p + 3 * (size_t)rb) >
+                                    4 * s->tol * s->tol)
+            continue;
+        unite(parent, ra, rb);
     }
 }
 
