@@ -1,0 +1,56 @@
+/* The original Seam Graph of a model: its trimming loops flattened within
+ * the sewing tolerance (sw_seam_flatten.h) and sewn across surfaces
+ * (sw_sew.h), in an sw_seam_host with no collapses yet (Guthe et al. 2002,
+ * sections 4 and 4.1). The pack builder calls it before the collapse
+ * hierarchy is built. Host only (malloc). */
+#ifndef SW_SEAM_SEW_H
+#define SW_SEAM_SEW_H
+
+#include <stddef.h>
+
+#include "sw_error.h"
+#include "sw_model.h"
+#include "sw_seam_build.h"
+
+/* Zero means default for every field. */
+typedef struct sw_seam_options {
+    /* Model units (mm). 0: the model's tolerance (model_tolerance, from the
+     * file), but at least 1e-6 of the model's box diagonal (float positions
+     * resolve about 1e-7 of it, and a tolerance below what the trims were
+     * modelled to would sew nothing); a model that states none (Newell,
+     * .bpt) gets 1e-5 of the diagonal: such inputs share their boundary
+     * rows exactly, and a larger default would sew shut real features of
+     * that size (the Newell teapot's lid has a hole of radius 1.3e-4 of its
+     * diagonal at the knob). An empty model gets 1e-3. */
+    double tolerance;
+} sw_seam_options;
+
+typedef struct sw_seam_report {
+    size_t loops;
+    size_t boundary_vertices;   /* vertex_count */
+    size_t boundary_edges;      /* edge_count */
+    size_t seams;               /* edges shared by >= 2 loops */
+    size_t free_edges;          /* edges of one loop only */
+    size_t nonmanifold_edges;   /* edges of > 2 loops */
+    double tolerance;           /* the tolerance used */
+    size_t unproven_pieces;     /* trim pieces the flattener could not prove (sw_seam_flatten.h) */
+    size_t inserted;            /* points inserted into edges by sewing */
+    double flatten_s, sew_s;    /* wall time of the two stages */
+} sw_seam_report;
+
+/* The tolerance opt (may be NULL) asks for, resolved against the model as
+ * documented above. */
+double sw_seam_default_tolerance(const sw_model *model, const sw_seam_options *opt);
+
+/* Flattens and sews every surface of model into out (zeroed first; on
+ * failure left empty). Fills every array of sw_seam_host: vertices, slots,
+ * loops grouped by surface in surface order (SW_SEAM_LOOP_OUTER on outer
+ * loops and on the domain rectangle of untrimmed surfaces), edges (a < b,
+ * each once), slot_refs grouped by vertex, surface_loops (surface_count + 1),
+ * tolerance; collapse_count 0, vertex_count == original_count. report may be
+ * NULL. SW_ERR_ARG for NULL model or out or a negative or non-finite
+ * tolerance; SW_ERR_FORMAT for a trim loop with no extent. */
+sw_status sw_seam_sew_model(const sw_model *model, const sw_seam_options *opt, sw_seam_host *out,
+                            sw_seam_report *report, sw_error *err);
+
+#endif

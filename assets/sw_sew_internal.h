@@ -1,0 +1,51 @@
+/* Shared between the steps of sewing (sw_sew.h): projections and intervals
+ * (sw_sew.c) and the merge into an sw_seam_host (sw_sew_merge.c). */
+#ifndef SW_SEW_INTERNAL_H
+#define SW_SEW_INTERNAL_H
+
+#include <stdint.h>
+
+#include "sw_sew.h"
+
+/* Vertex v projected onto the edge starting at vertex e (of another loop),
+ * its foot at parameter t along the edge (0 or 1: the end vertex itself). */
+typedef struct sew_match {
+    uint32_t v, e;
+    uint32_t lv, le;   /* their loops */
+    double t, dist;
+    int used;
+} sew_match;
+
+/* A merge decided by an interval: vertex v with the foot of its match. */
+typedef struct sew_join {
+    uint32_t v, e;
+    double t;
+} sew_join;
+
+typedef struct sew_state {
+    const sw_seam_polylines *poly;
+    double tol;
+    uint32_t *vertex_loop;   /* per vertex */
+    sew_match *matches;
+    size_t match_count, match_capacity;
+    sew_join *joins;
+    size_t join_count, join_capacity;
+    size_t intervals;
+    sw_error *err;
+} sew_state;
+
+static inline uint32_t sew_next(const sw_seam_polylines *poly, uint32_t loop, uint32_t v)
+{
+    return v + 1 < poly->loop_start[loop + 1] ? v + 1 : (uint32_t)poly->loop_start[loop];
+}
+
+/* Step 1: fills matches. */
+sw_status sew_project(sew_state *s);
+
+/* Step 2: fills joins from the matches' intervals. */
+sw_status sew_intervals(sew_state *s);
+
+/* Step 3: the host arrays from the joins. */
+sw_status sew_merge(sew_state *s, sw_seam_host *out, sw_sew_counts *counts);
+
+#endif

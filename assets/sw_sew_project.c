@@ -1,0 +1,229 @@
+/* Sewing step 1 (sw_sew.h): every vertex projected onto the edges of other
+ * loops within the tolerance, candidates from a 3D uniform grid (paper
+ * section 4.1, "a 3D grid is used similar to [13]"). Each edge is entered,
+ * in pieces no longer than a cell, into every cell its tolerance-grown box
+ * touches, so a vertex needs to look into its own cell only. The grid is a
+ * sorted array of (cell key, edge): no hash table to size, and a key
+ * collision only adds candidates the distance test then drops. */
+#include "sw_sew_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct grid_entry {
+    uint64_t key;
+    uint32_t edge;
+} grid_entry;
+
+typedef struct grid {
+    double origin[3], cell;
+    grid_entry *entries;
+    size_t count, capacity;
+} grid;
+
+static uint64_t cell_key(int64_t x, int64_t y, int64_t z)
+{
+    uint64_t h = (uint64_t)x * 0x9E3779B97F4A7C15u ^ (uint64_t)y * 0xC2B2AE3D27D4EB4Fu ^
+                 (uint64_t)z * 0x165667B19E3779F9u;
+    h ^= h >> 31;
+    h *= 0xBF58476D1CE4E5B9u;
+    return h ^ (h >> 29);
+}
+
+static int64_t cell_of(const grid *g, double x, int axis)
+{
+    double c = floor((x - g->origin[axis]) / g->cell);
+    return c > -4e18 ? (c < 4e18 ? (int64_t)c : (int64_t)4e18) : (int64_t)-4e18;
+}
+
+static int grid_add(grid *g, uint64_t key, uint32_t edge)
+{
+    if (g->count == g->capacity) {
+        size_t cap = g->capacity * 2 + 1024;
+        grid_entry *grown = realloc(g->entries, cap * sizeof *grown);
+        if (!grown)
+            return -1;
+        g->entries = grown;
+        g->capacity = cap;
+    }
+    g->entries[g->count++] = (grid_entry){key, edge};
+    return 0;
+}
+
+/* Enters edge e (a -> b) in the cells within tol of it. */
+static int grid_add_edge(grid *g, const double *a, const double *b, double tol, uint32_t e)
+{
+    double len = sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                      (b[2] - a[2]) * (b[2] - a[2]));
+    double pieces = ceil(len / g->cell);
+    size_t m = pieces >= 1 ? (pieces < 1e7 ? (size_t)pieces : 10000000u) : 1;
+    for (size_t k = 0; k < m; k++) {
+        int64_t lo[3], hi[3];
+        for (int i = 0; i < 3; i++) {
+            double x0 = a[i] + (b[i] - a[i]) * (double)k / (double)m;
+            double x1 = a[i] + (b[i] - a[i]) * (double)(k + 1) / (double)m;
+            lo[i] = cell_of(g, fmin(x0, x1) - tol, i);
+            hi[i] = cell_of(g, fmax(x0, x1) + tol, i);
+        }
+        for (int64_t x = lo[0]; x <= hi[0]; x++)
+            for (int64_t y = lo[1]; y <= hi[1]; y++)
+                for (int64_t z = lo[2]; z <= hi[2]; z++)
+                    if (grid_add(g, cell_key(x, y, z), e) != 0)
+                        return -1;
+    }
+    return 0;
+}
+
+static int compare_entries(const void *x, const void *y)
+{
+    const grid_entry *a = x, *b = y;
+    if (a->key != b->key)
+        return a->key < b->key ? -1 : 1;
+    return (a->edge > b->edge) - (a->edge < b->edge);
+}
+
+/* Cells as wide as the mean edge (at least twice the tolerance): an edge
+ * then touches a few cells and a cell holds a few edges. */
+static int grid_build(grid *g, const sw_seam_polylines *poly, double tol)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, total = 0;
+    for (size_t v = 0; v < poly->vertex_count; v++)
+        for (int i = 0; i < 3; i++)
+            lo[i] = fmin(lo[i], poly->p[3 * v + i]);
+    for (size_t l = 0; l < poly->loop_count; l++)
+        for (size_t v = poly->loop_start[l]; v < poly->loop_start[l + 1]; v++) {
+            const double *a = poly->p + 3 * v;
+            const double *b = poly->p + 3 * sew_next(poly, (uint32_t)l, (uint32_t)v);
+            total += sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                          (b[2] - a[2]) * (b[2] - a[2]));
+        }
+    memcpy(g->origin, lo, sizeof lo);
+    g->cell = fmax(2 * tol, poly->vertex_count ? total / (double)poly->vertex_count : 0);
+    for (size_t l = 0; l < poly->loop_count; l++)
+        for (size_t v = poly->loop_start[l]; v < poly->loop_start[l + 1]; v++) {
+            uint32_t w = sew_next(poly, (uint32_t)l, (uint32_t)v);
+            if (grid_add_edge(g, poly->p + 3 * v, poly->p + 3 * w, tol, (uint32_t)v) != 0)
+                return -1;
+        }
+    if (g->count > 1)
+        qsort(g->entries, g->count, sizeof *g->entries, compare_entries);
+    return 0;
+}
+
+/* The first entry with key >= key. */
+static size_t grid_find(const grid *g, uint64_t key)
+{
+    size_t lo = 0, hi = g->count;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (g->entries[mid].key < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+static int add_match(sew_state *s, const sew_match *m)
+{
+    if (s->match_count == s->match_capacity) {
+        size_t cap = s->match_capacity * 2 + 1024;
+        sew_match *grown = realloc(s->matches, cap * sizeof *grown);
+        if (!grown)
+            return -1;
+        s->matches = grown;
+        s->match_capacity = cap;
+    }
+    s->matches[s->match_count++] = *m;
+    return 0;
+}
+
+/* Does one of v's edges run within 60 degrees of direction d (either way)?
+ * Edges no longer than twice the tolerance say nothing about direction and
+ * count as agreeing. Without this, where several loops meet at an angle (a
+ * pole, a corner of high valence) the vertices near the junction on one
+ * loop's side lie within the tolerance of another side leaving it and get
+ * sewn across the corner. */
+static int directions_agree(const sew_state *s, uint32_t v, const double d[3], double dlen)
+{
+    const sw_seam_polylines *poly = s->poly;
+    uint32_t l = s->vertex_loop[v];
+    uint32_t prev = v > poly->loop_start[l] ? v - 1 : (uint32_t)poly->loop_start[l + 1] - 1;
+    uint32_t ends[2] = {prev, sew_next(poly, l, v)};
+    if (dlen <= 2 * s->tol)
+        return 1;
+    for (int k = 0; k < 2; k++) {
+        const double *a = poly->p + 3 * (size_t)v, *b = poly->p + 3 * (size_t)ends[k];
+        double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double elen = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+        if (elen <= 2 * s->tol || fabs(e[0] * d[0] + e[1] * d[1] + e[2] * d[2]) >= 0.5 * elen * dlen)
+            return 1;
+    }
+    return 0;
+}
+
+/* Projects vertex v onto edge e; keeps it within the tolerance. */
+static int project(sew_state *s, uint32_t v, uint32_t e)
+{
+    const sw_seam_polylines *poly = s->poly;
+    uint32_t le = s->vertex_loop[e];
+    const double *p = poly->p + 3 * (size_t)v, *a = poly->p + 3 * (size_t)e;
+    const double *b = poly->p + 3 * (size_t)sew_next(poly, le, e);
+    double d[3], len2 = 0, t = 0, dist2 = 0;
+    for (int i = 0; i < 3; i++) {
+        d[i] = b[i] - a[i];
+        len2 += d[i] * d[i];
+        t += (p[i] - a[i]) * d[i];
+    }
+    double len = sqrt(len2), snap = 0.25 * fmin(s->tol, len);
+    t = len2 > 0 ? t / len2 : 0;
+    /* Only feet on the edge count (paper, figure 2: projections onto the
+     * edge). A point beyond an end is that end's business, through the edge
+     * on the other side of it, unless it is within the snap distance: a
+     * clamped projection would let every vertex near a vertex of the other
+     * polyline map onto it, and a dense run of vertices collapse into one. */
+    if (t < 0 ? -t * len > snap : t > 1 ? (t - 1) * len > snap : 0)
+        return 0;
+    t = fmin(fmax(t, 0.0), 1.0);
+    for (int i = 0; i < 3; i++)
+        dist2 += (p[i] - a[i] - t * d[i]) * (p[i] - a[i] - t * d[i]);
+    if (!(dist2 <= s->tol * s->tol))
+        return 0;
+    if (!directions_agree(s, v, d, len))
+        return 0;
+    /* A foot this close to an end is that end: no sliver edges. */
+    if (t * len <= snap)
+        t = 0;
+    else if ((1 - t) * len <= snap)
+        t = 1;
+    sew_match m = {v, e, s->vertex_loop[v], le, t, sqrt(dist2), 0};
+    return add_match(s, &m);
+}
+
+sw_status sew_project(sew_state *s)
+{
+    const sw_seam_polylines *poly = s->poly;
+    grid g = {0};
+    uint32_t *seen = malloc((poly->vertex_count + 1) * sizeof *seen);
+    int failed = !seen || grid_build(&g, poly, s->tol) != 0;
+    for (size_t e = 0; seen && e < poly->vertex_count; e++)
+        seen[e] = UINT32_MAX;
+    for (uint32_t v = 0; !failed && v < poly->vertex_count; v++) {
+        const double *p = poly->p + 3 * (size_t)v;
+        uint64_t key = cell_key(cell_of(&g, p[0], 0), cell_of(&g, p[1], 1), cell_of(&g, p[2], 2));
+        for (size_t k = grid_find(&g, key); !failed && k < g.count && g.entries[k].key == key; k++) {
+            uint32_t e = g.entries[k].edge;
+            if (seen[e] == v || s->vertex_loop[e] == s->vertex_loop[v])
+                continue;
+            seen[e] = v;
+            failed = project(s, v, e) != 0;
+        }
+    }
+    free(g.entries);
+    free(seen);
+    if (failed)
+        return sw_error_set(s->err, SW_ERR_NO_MEMORY, "sewing: out of memory projecting %zu vertices",
+                            poly->vertex_count);
+    return SW_OK;
+}

@@ -1,0 +1,760 @@
+/* The original Seam Graph (sw_seam_sew.h): trims flattened within the
+ * tolerance in model space, sewn across surfaces. The Newell teaset against
+ * the pack's control-row adjacency, planar faces with gaps, a T-junction,
+ * a non-manifold edge, a hole sewn all around, polyline error against the
+ * exact trim curves, and bad arguments.
+ *
+ * Usage: test_seam_sew SAMPLES_DIR [SHARED_MODELS_DIR] */
+#include <stdint.h>
+#include <string.h>
+
+#include "model_shapes.h"
+#include "sw_import_iges.h"
+#include "sw_import_newell.h"
+#include "sw_pack_adjacency.h"
+#include "sw_seam_flatten.h"
+#include "sw_seam_sew.h"
+#include "sw_sew.h"
+#include "sw_test.h"
+
+static const char *samples_dir = ".";
+static const char *models_dir = NULL;
+
+/* ---- structure ---------------------------------------------------------- */
+
+/* Every invariant of sw_seam_host an original graph must meet. */
+static void check_host(const sw_seam_host *h)
+{
+    SW_CHECK(h->collapse_count == 0);
+    SW_CHECK(h->vertex_count == h->original_count);
+    SW_CHECK(h->slot_ref_count == h->slot_count);
+    SW_CHECK(h->tolerance > 0);
+    SW_CHECK(h->surface_loops[0] == 0 && h->surface_loops[h->surface_count] == h->loop_count);
+    uint32_t slots = 0;
+    for (uint32_t s = 0; s < h->surface_count; s++) {
+        SW_CHECK(h->surface_loops[s] <= h->surface_loops[s + 1]);
+        for (uint32_t l = h->surface_loops[s]; l < h->surface_loops[s + 1]; l++) {
+            SW_CHECK(h->loops[l].surface == s);
+            SW_CHECK(h->loops[l].first_slot == slots);
+            SW_CHECK(h->loops[l].slot_count >= 3);
+            slots += h->loops[l].slot_count;
+        }
+    }
+    SW_CHECK(slots == h->slot_count);
+    int bad_slot = 0, bad_ref = 0, bad_vertex = 0;
+    for (uint32_t k = 0; k < h->slot_count; k++)
+        bad_slot += h->slots[k].vertex >= h->vertex_count;
+    uint32_t refs = 0;
+    for (uint32_t v = 0; v < h->vertex_count; v++) {
+        const sw_seam_vertex *x = &h->vertices[v];
+        bad_vertex += x->child != SW_SEAM_NONE || x->error != 0 || x->reserved != 0 ||
+                      x->slot_ref_count == 0 || x->first_slot_ref != refs;
+        for (uint32_t r = 0; r < x->slot_ref_count && !bad_slot; r++)
+            bad_ref += h->slots[h->slot_refs[x->first_slot_ref + r]].vertex != v;
+        refs += x->slot_ref_count;
+    }
+    SW_CHECK(bad_slot == 0);
+    SW_CHECK(bad_vertex == 0);
+    SW_CHECK(bad_ref == 0);
+    SW_CHECK(refs == h->slot_count);
+    int bad_edge = 0;
+    for (uint32_t e = 0; e < h->edge_count; e++) {
+        const sw_seam_edge *x = &h->edges[e];
+        bad_edge += !(x->a < x->b) || x->b >= h->vertex_count;
+        if (e > 0) /* sorted and unique */
+            bad_edge += !(h->edges[e - 1].a < x->a ||
+                          (h->edges[e - 1].a == x->a && h->edges[e - 1].b < x->b));
+    }
+    SW_CHECK(bad_edge == 0);
+}
+
+/* Number of distinct loops running along edge (a, b). */
+static int loops_along(const sw_seam_host *h, uint32_t a, uint32_t b)
+{
+    int n = 0;
+    for (uint32_t l = 0; l < h->loop_count; l++) {
+        const sw_seam_loop *loop = &h->loops[l];
+        for (uint32_t k = 0; k < loop->slot_count; k++) {
+            uint32_t x = h->slots[loop->first_slot + k].vertex;
+            uint32_t y = h->slots[loop->first_slot + (k + 1) % loop->slot_count].vertex;
+            if ((x == a && y == b) || (x == b && y == a)) {
+                n++;
+                break;
+            }
+        }
+    }
+    return n;
+}
+
+static size_t count_edges_with_loops(const sw_seam_host *h, int loops)
+{
+    size_t n = 0;
+    for (uint32_t e = 0; e < h->edge_count; e++)
+        n += loops_along(h, h->edges[e].a, h->edges[e].b) == loops;
+    return n;
+}
+
+/* ---- planar faces ------------------------------------------------------- */
+
+/* A bilinear patch with corners p00, p10, p01, p11 (i along u). */
+static void add_quad(sw_model *m, const double p00[3], const double p10[3], const double p01[3],
+                     const double p11[3])
+{
+    const double *c[4] = {p00, p10, p01, p11};
+    double ctrl[16];
+    for (int k = 0; k < 4; k++) {
+        memcpy(ctrl + 4 * k, c[k], 3 * sizeof(double));
+        ctrl[4 * k + 3] = 1;
+    }
+    sw_error err;
+    SW_CHECK(sw_model_add_patch(m, 1, 1, 0, ctrl, &err) == SW_OK);
+}
+
+/* Two unit squares side by side, the second shifted by gap along x. */
+static sw_status sew_two_squares(double gap, double tol, sw_seam_host *h, sw_seam_report *r)
+{
+    sw_model m;
+    sw_model_init(&m);
+    add_quad(&m, (double[3]){0, 0, 0}, (double[3]){1, 0, 0}, (double[3]){0, 1, 0},
+             (double[3]){1, 1, 0});
+    add_quad(&m, (double[3]){1 + gap, 0, 0}, (double[3]){2 + gap, 0, 0},
+             (double[3]){1 + gap, 1, 0}, (double[3]){2 + gap, 1, 0});
+    sw_seam_options opt = {tol};
+    sw_error err;
+    sw_status st = sw_seam_sew_model(&m, &opt, h, r, &err);
+    sw_model_free(&m);
+    return st;
+}
+
+static void test_gap_below_tolerance_is_sewn(void)
+{
+    sw_seam_host h;
+    sw_seam_report r;
+    SW_CHECK(sew_two_squares(0.5e-3, 1e-3, &h, &r) == SW_OK);
+    check_host(&h);
+    SW_CHECK(h.loop_count == 2 && h.vertex_count == 6 && h.edge_count == 7);
+    SW_CHECK(r.seams == 1 && r.free_edges == 6 && r.nonmanifold_edges == 0);
+    SW_CHECK(count_edges_with_loops(&h, 2) == 1);
+    SW_CHECK(h.loops[0].flags == SW_SEAM_LOOP_OUTER && h.loops[1].flags == SW_SEAM_LOOP_OUTER);
+    sw_seam_host_free(&h);
+}
+
+static void test_gap_above_tolerance_is_not_sewn(void)
+{
+    sw_seam_host h;
+    sw_seam_report r;
+    SW_CHECK(sew_two_squares(2e-3, 1e-3, &h, &r) == SW_OK);
+    check_host(&h);
+    SW_CHECK(h.vertex_count == 8 && h.edge_count == 8);
+    SW_CHECK(r.seams == 0 && r.free_edges == 8);
+    sw_seam_host_free(&h);
+}
+
+/* Slot k of loop l shows the vertex at p (within 1e-6)? */
+static int slot_at(const sw_seam_host *h, uint32_t l, const double p[3])
+{
+    const sw_seam_loop *loop = &h->loops[l];
+    for (uint32_t k = 0; k < loop->slot_count; k++) {
+        const float *q = h->vertices[h->slots[loop->first_slot + k].vertex].p;
+        if (fabs(q[0] - p[0]) < 1e-6 && fabs(q[1] - p[1]) < 1e-6 && fabs(q[2] - p[2]) < 1e-6)
+            return 1;
+    }
+    return 0;
+}
+
+/* One face with a long edge x = 1, y in [0, 2], against two faces with
+ * short edges meeting at y = 1: the long side gets the middle vertex. */
+static void test_t_junction_inserts_the_middle_vertex(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    add_quad(&m, (double[3]){0, 0, 0}, (double[3]){1, 0, 0}, (double[3]){0, 2, 0},
+             (double[3]){1, 2, 0});
+    add_quad(&m, (double[3]){1, 0, 0}, (double[3]){2, 0, 0}, (double[3]){1, 1, 0},
+             (double[3]){2, 1, 0});
+    add_quad(&m, (double[3]){1, 1, 0}, (double[3]){2, 1, 0}, (double[3]){1, 2, 0},
+             (double[3]){2, 2, 0});
+    sw_seam_host h;
+    sw_seam_report r;
+    sw_error err;
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){1e-3}, &h, &r, &err) == SW_OK);
+    check_host(&h);
+    SW_CHECK(h.vertex_count == 8);
+    SW_CHECK(h.loops[0].slot_count == 5);
+    SW_CHECK(slot_at(&h, 0, (double[3]){1, 1, 0}));
+    SW_CHECK(r.seams == 3 && r.nonmanifold_edges == 0);
+    /* The inserted slot's (u, v) in the long face: halfway up its u = 1 side. */
+    int found = 0;
+    for (uint32_t k = 0; k < h.loops[0].slot_count; k++) {
+        const sw_seam_slot *s = &h.slots[h.loops[0].first_slot + k];
+        found += fabs(s->uv[0] - 1) < 1e-6 && fabs(s->uv[1] - 0.5) < 1e-6;
+    }
+    SW_CHECK(found == 1);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+}
+
+static void test_three_faces_on_one_edge_are_nonmanifold(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    add_quad(&m, (double[3]){0, 0, 0}, (double[3]){1, 0, 0}, (double[3]){0, 1, 0},
+             (double[3]){1, 1, 0});
+    add_quad(&m, (double[3]){1, 0, 0}, (double[3]){2, 0, 0}, (double[3]){1, 1, 0},
+             (double[3]){2, 1, 0});
+    add_quad(&m, (double[3]){1, 0, 0}, (double[3]){1, 0, 1}, (double[3]){1, 1, 0},
+             (double[3]){1, 1, 1});
+    sw_seam_host h;
+    sw_seam_report r;
+    sw_error err;
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){1e-3}, &h, &r, &err) == SW_OK);
+    check_host(&h);
+    SW_CHECK(h.vertex_count == 8);
+    SW_CHECK(r.nonmanifold_edges == 1 && r.seams == 1 && r.free_edges == 9);
+    SW_CHECK(count_edges_with_loops(&h, 3) == 1);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+}
+
+/* ---- sewing polylines directly ------------------------------------------ */
+
+/* Appends a loop of the unit square at x0 whose side x = x0 + 1 (right,
+ * upwards) or x = x0 (left, downwards) is sampled at n points. */
+static void square_loop(sw_seam_polylines *pl, double x0, int dense_right, int n)
+{
+    size_t first = pl->vertex_count;
+    double pts[256][2];
+    int m = 0;
+    if (dense_right) {
+        pts[m][0] = x0, pts[m++][1] = 0;
+        for (int i = 0; i < n; i++)
+            pts[m][0] = x0 + 1, pts[m++][1] = (double)i / (n - 1);
+        pts[m][0] = x0, pts[m++][1] = 1;
+    } else {
+        for (int i = 0; i < n; i++)
+            pts[m][0] = x0, pts[m++][1] = 1 - (double)i / (n - 1);
+        pts[m][0] = x0 + 1, pts[m++][1] = 0;
+        pts[m][0] = x0 + 1, pts[m++][1] = 1;
+    }
+    for (int i = 0; i < m; i++) {
+        size_t v = pl->vertex_count++;
+        pl->uv[2 * v] = pts[i][0], pl->uv[2 * v + 1] = pts[i][1];
+        pl->p[3 * v] = pts[i][0], pl->p[3 * v + 1] = pts[i][1], pl->p[3 * v + 2] = 0;
+    }
+    size_t l = pl->loop_count++;
+    pl->loop_start[l] = first;
+    pl->loop_start[l + 1] = pl->vertex_count;
+    pl->loop_surface[l] = (uint32_t)l;
+    pl->loop_outer[l] = 1;
+    pl->surface_loops[l + 1] = pl->loop_count;
+}
+
+/* Two squares sharing the side x = 1, sampled at 41 and at 29 points on
+ * either side: every edge is shorter than the tolerance, and still every
+ * point of both samplings ends up on the one shared seam (the interval takes
+ * the least advance each step, skipping no vertex of either side). */
+static void test_dense_sides_shorter_than_tolerance_are_sewn(void)
+{
+    double uv[2 * 128], p[3 * 128];
+    size_t starts[3];
+    uint32_t surf[2];
+    uint8_t outer[2];
+    size_t sloops[3] = {0};
+    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 0, sloops, 2, 0.1, 0};
+    square_loop(&pl, 0, 1, 41);
+    square_loop(&pl, 1, 0, 29);
+    sw_seam_host h;
+    sw_sew_counts c;
+    sw_error err;
+    SW_CHECK(sw_sew_polylines(&pl, 0.1, &h, &c, &err) == SW_OK);
+    check_host(&h);
+    SW_CHECK_MSG(c.free_edges == 6, "free %zu seams %zu", c.free_edges, c.seams);
+    double seam_length = 0;
+    for (uint32_t e = 0; e < h.edge_count; e++)
+        if (loops_along(&h, h.edges[e].a, h.edges[e].b) == 2) {
+            const float *a = h.vertices[h.edges[e].a].p, *b = h.vertices[h.edges[e].b].p;
+            seam_length += hypot(a[0] - b[0], a[1] - b[1]);
+            SW_CHECK(fabs(a[0] - 1) < 1e-6 && fabs(b[0] - 1) < 1e-6);
+        }
+    SW_CHECK_NEAR(seam_length, 1.0, 1e-6);
+    SW_CHECK(c.seams >= 40 && c.inserted > 0);
+    sw_seam_host_free(&h);
+}
+
+/* ---- curved trims ------------------------------------------------------- */
+
+/* The plane z = 0 over [0, 1]^2 with a hole of radius 0.3, and the disc that
+ * fills it: the hole and the disc's rim are sewn all the way round. */
+static void test_hole_and_disc_sewn_all_round(void)
+{
+    shape_plane plane;
+    shape_plane_init(&plane, 3, 2, 2, 1, 1);
+    shape_rect rect;
+    shape_rect_init(&rect, 0, 1, 0, 1);
+    shape_circle hole, rim;
+    shape_circle_init(&hole, 0.5, 0.5, 0.3, 1);
+    shape_circle_init(&rim, 0.5, 0.5, 0.3, 0);
+    sw_model_loop_input holed[2] = {{rect.curves, NULL, 4, 1}, {&hole.curve, NULL, 1, 0}};
+    sw_model_loop_input disc[1] = {{&rim.curve, NULL, 1, 1}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, holed, 2, &err) == SW_OK);
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, disc, 1, &err) == SW_OK);
+    sw_seam_host h;
+    sw_seam_report r;
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){1e-4}, &h, &r, &err) == SW_OK);
+    check_host(&h);
+    SW_CHECK(h.loop_count == 3);
+    SW_CHECK(h.loops[0].flags == SW_SEAM_LOOP_OUTER && h.loops[1].flags == 0 &&
+             h.loops[2].flags == SW_SEAM_LOOP_OUTER);
+    /* Every edge of the hole is an edge of the disc and the other way round;
+     * only the square's four sides are free. */
+    SW_CHECK(r.free_edges == h.loops[0].slot_count);
+    SW_CHECK(r.seams == h.loops[1].slot_count && r.seams == h.loops[2].slot_count);
+    SW_CHECK(r.seams > 16);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+}
+
+/* Distance from p to segment a-b. */
+static double seg_dist(const double p[3], const double a[3], const double b[3])
+{
+    double d[3], t = 0, l2 = 0, s = 0;
+    for (int k = 0; k < 3; k++)
+        d[k] = b[k] - a[k], l2 += d[k] * d[k], t += (p[k] - a[k]) * d[k];
+    t = l2 > 0 ? fmin(fmax(t / l2, 0.0), 1.0) : 0;
+    for (int k = 0; k < 3; k++)
+        s += (p[k] - a[k] - t * d[k]) * (p[k] - a[k] - t * d[k]);
+    return sqrt(s);
+}
+
+static double loop_dist(const sw_seam_polylines *pl, size_t l, const double q[3])
+{
+    double best = INFINITY;
+    size_t s = pl->loop_start[l], e = pl->loop_start[l + 1];
+    for (size_t k = s; k < e; k++)
+        best = fmin(best, seg_dist(q, pl->p + 3 * k, pl->p + 3 * (k + 1 < e ? k + 1 : s)));
+    return best;
+}
+
+/* The model's curves of loop l of surface s, or its domain rectangle. */
+static size_t loop_curves(const sw_model *m, size_t s, size_t l, shape_rect *rect,
+                          sw_nurbs_curve *out)
+{
+    const sw_model_surface *surf = &m->surfaces[s];
+    if (surf->loop_count == 0) {
+        shape_rect_init(rect, surf->domain[0], surf->domain[1], surf->domain[2], surf->domain[3]);
+        memcpy(out, rect->curves, sizeof rect->curves);
+        return 4;
+    }
+    const sw_model_loop *ml = &m->loops[surf->first_loop + l];
+    for (size_t k = 0; k < ml->curve_count && k < 16; k++)
+        out[k] = sw_model_curve_view(&m->curves[ml->first_curve + k]);
+    return ml->curve_count;
+}
+
+/* Promise (1) one way, exactly sampled: every sample of the true trim curve
+ * mapped through the surface lies within tol of the 3D polyline; promise (2):
+ * the surface image of every (u, v) edge within tol / 2 of its 3D edge; and
+ * every vertex's position is the surface point at its (u, v). */
+static void check_polyline_error(const sw_model *m, double tol, int require_tight)
+{
+    sw_seam_polylines pl;
+    sw_error err;
+    SW_CHECK(sw_seam_flatten_model(m, tol, &pl, &err) == SW_OK);
+    double worst_curve = 0, worst_chord = 0, worst_vertex = 0;
+    for (size_t s = 0; s < m->surface_count; s++) {
+        sw_nurbs_surface sv = sw_model_surface_view(&m->surfaces[s]);
+        const double *d = m->surfaces[s].domain;
+        for (size_t l = pl.surface_loops[s]; l < pl.surface_loops[s + 1]; l++) {
+            shape_rect rect;
+            sw_nurbs_curve curves[16];
+            size_t n = loop_curves(m, s, l - pl.surface_loops[s], &rect, curves);
+            for (size_t c = 0; c < n && c < 16; c++) {
+                const sw_nurbs_curve *cv = &curves[c];
+                double t0 = cv->knots[cv->degree], t1 = cv->knots[cv->count];
+                for (int i = 0; i <= 400; i++) {
+                    sw_vec3 uv = sw_nurbs_curve_point(cv, t0 + (t1 - t0) * i / 400);
+                    sw_vec3 q = sw_nurbs_surface_point(&sv, fmin(fmax(uv.x, d[0]), d[1]),
+                                                       fmin(fmax(uv.y, d[2]), d[3]));
+                    double dd = loop_dist(&pl, l, (double[3]){q.x, q.y, q.z});
+                    if (dd > tol && getenv("SEAM_DEBUG"))
+                        fprintf(stderr, "surface %zu loop %zu curve %zu sample %d uv %g %g dist %g domain %g %g %g %g deg %d count %d\n", s, l, c, i, uv.x, uv.y, dd, d[0], d[1], d[2], d[3], cv->degree, cv->count);
+                    worst_curve = fmax(worst_curve, dd);
+                }
+            }
+            size_t a = pl.loop_start[l], e = pl.loop_start[l + 1];
+            for (size_t k = a; k < e; k++) {
+                size_t k1 = k + 1 < e ? k + 1 : a;
+                const double *uv0 = pl.uv + 2 * k, *uv1 = pl.uv + 2 * k1;
+                sw_vec3 q = sw_nurbs_surface_point(&sv, fmin(fmax(uv0[0], d[0]), d[1]),
+                                                   fmin(fmax(uv0[1], d[2]), d[3]));
+                double dq[3] = {q.x - pl.p[3 * k], q.y - pl.p[3 * k + 1], q.z - pl.p[3 * k + 2]};
+                worst_vertex = fmax(worst_vertex, sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]));
+                for (int i = 1; i < 32; i++) {
+                    double t = i / 32.0;
+                    sw_vec3 x = sw_nurbs_surface_point(
+                        &sv, fmin(fmax(uv0[0] + t * (uv1[0] - uv0[0]), d[0]), d[1]),
+                        fmin(fmax(uv0[1] + t * (uv1[1] - uv0[1]), d[2]), d[3]));
+                    worst_chord = fmax(worst_chord, seg_dist((double[3]){x.x, x.y, x.z},
+                                                             pl.p + 3 * k, pl.p + 3 * k1));
+                }
+            }
+        }
+    }
+    SW_CHECK_MSG(worst_curve <= tol, "curve %g > tol %g", worst_curve, tol);
+    SW_CHECK_MSG(worst_chord <= tol / 2, "chord %g > tol/2 %g", worst_chord, tol / 2);
+    SW_CHECK_MSG(worst_vertex <= 1e-9 * (1 + tol), "vertex %g", worst_vertex);
+    /* Not trivially met: the polylines are not much finer than needed. */
+    if (require_tight)
+        SW_CHECK_MSG(worst_curve > tol / 20, "curve %g: suspiciously fine for %g", worst_curve, tol);
+    sw_seam_polylines_free(&pl);
+}
+
+static sw_status load_teapot(const char *name, sw_model *m)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", samples_dir, name);
+    sw_model_init(m);
+    sw_error err;
+    sw_status st = sw_import_newell_file(path, m, &err);
+    if (st != SW_OK)
+        fprintf(stderr, "%s\n", err.message);
+    return st;
+}
+
+static void test_teapot_polylines_within_tolerance(void)
+{
+    sw_model m;
+    SW_CHECK(load_teapot("teapot.txt", &m) == SW_OK);
+    check_polyline_error(&m, 1e-3, 1);
+    check_polyline_error(&m, 1e-2, 1);
+    sw_model_free(&m);
+}
+
+/* A bicubic bump trimmed by a circle and a rational circle hole. */
+static void test_trimmed_bump_polylines_within_tolerance(void)
+{
+    double knots[8] = {0, 0, 0, 0, 1, 1, 1, 1}, ctrl[16 * 4];
+    for (int j = 0; j < 4; j++)
+        for (int i = 0; i < 4; i++) {
+            double *c = ctrl + 4 * (j * 4 + i);
+            c[0] = i / 3.0 * 10, c[1] = j / 3.0 * 10;
+            c[2] = ((i == 1 || i == 2) && (j == 1 || j == 2)) ? 6 : (i + j) % 3;
+            c[3] = 1 + 0.3 * ((i + 2 * j) % 3); /* rational */
+        }
+    sw_nurbs_surface surf = {3, 3, 4, 4, knots, knots, ctrl};
+    shape_circle outer, hole;
+    shape_circle_init(&outer, 0.5, 0.5, 0.45, 0);
+    shape_circle_init(&hole, 0.6, 0.45, 0.1, 1);
+    sw_model_loop_input loops[2] = {{&outer.curve, NULL, 1, 1}, {&hole.curve, NULL, 1, 0}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &surf, 0, loops, 2, &err) == SW_OK);
+    check_polyline_error(&m, 1e-3, 1);
+    check_polyline_error(&m, 3e-2, 1);
+    sw_model_free(&m);
+}
+
+/* ---- the Newell teaset against the control-row adjacency ---------------- */
+
+static int on_side(const sw_seam_slot *s, int side)
+{
+    switch (side) {
+    case SW_EDGE_V0: return s->uv[1] == 0.0f;
+    case SW_EDGE_U1: return s->uv[0] == 1.0f;
+    case SW_EDGE_V1: return s->uv[1] == 1.0f;
+    default: return s->uv[0] == 0.0f;
+    }
+}
+
+/* Edges of loop l (as a < b pairs, a * 2^32 + b) along one side of its
+ * patch's domain; returns how many, sorted. */
+static size_t side_edges(const sw_seam_host *h, uint32_t l, int side, uint64_t *out)
+{
+    const sw_seam_loop *loop = &h->loops[l];
+    size_t n = 0;
+    for (uint32_t k = 0; k < loop->slot_count; k++) {
+        const sw_seam_slot *x = &h->slots[loop->first_slot + k];
+        const sw_seam_slot *y = &h->slots[loop->first_slot + (k + 1) % loop->slot_count];
+        if (x->vertex == y->vertex || !on_side(x, side) || !on_side(y, side))
+            continue;
+        uint64_t a = x->vertex < y->vertex ? x->vertex : y->vertex;
+        uint64_t b = x->vertex < y->vertex ? y->vertex : x->vertex;
+        uint64_t key = a << 32 | b;
+        size_t i = n++;
+        for (; i > 0 && out[i - 1] > key; i--)
+            out[i] = out[i - 1];
+        out[i] = key;
+    }
+    return n;
+}
+
+static double edge_length(const sw_seam_host *h, uint64_t key)
+{
+    const float *a = h->vertices[key >> 32].p, *b = h->vertices[key & 0xFFFFFFFFu].p;
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/* Length of the edges in x (sorted) that are also in y (sorted), and of all of x. */
+static void common_length(const sw_seam_host *h, const uint64_t *x, size_t nx, const uint64_t *y,
+                          size_t ny, double *common, double *total)
+{
+    *common = *total = 0;
+    for (size_t i = 0, j = 0; i < nx; i++) {
+        double len = edge_length(h, x[i]);
+        *total += len;
+        while (j < ny && y[j] < x[i])
+            j++;
+        if (j < ny && y[j] == x[i])
+            *common += len;
+    }
+}
+
+static double fdist_seg(const float *p, const float *a, const float *b)
+{
+    double d[3], t = 0, l2 = 0, r = 0;
+    for (int k = 0; k < 3; k++)
+        d[k] = (double)b[k] - a[k], l2 += d[k] * d[k], t += ((double)p[k] - a[k]) * d[k];
+    t = l2 > 0 ? fmin(fmax(t / l2, 0.0), 1.0) : 0;
+    for (int k = 0; k < 3; k++)
+        r += ((double)p[k] - a[k] - t * d[k]) * ((double)p[k] - a[k] - t * d[k]);
+    return sqrt(r);
+}
+
+/* Do both ends and the middle of edge x-y lie within reach of the polyline
+ * of some loop other than l? (No crack wider than reach there.) */
+static int covered_by_other_loop(const sw_seam_host *h, uint32_t l, uint32_t x, uint32_t y,
+                                 double reach)
+{
+    const float *px = h->vertices[x].p, *py = h->vertices[y].p;
+    float mid[3] = {0.5f * (px[0] + py[0]), 0.5f * (px[1] + py[1]), 0.5f * (px[2] + py[2])};
+    const float *q[3] = {px, py, mid};
+    for (uint32_t o = 0; o < h->loop_count; o++) {
+        if (o == l)
+            continue;
+        const sw_seam_loop *loop = &h->loops[o];
+        int hit = 0;
+        for (int i = 0; i < 3; i++)
+            for (uint32_t k = 0; k < loop->slot_count; k++) {
+                const float *a = h->vertices[h->slots[loop->first_slot + k].vertex].p;
+                const float *b = h->vertices[h->slots[loop->first_slot + (k + 1) % loop->slot_count].vertex].p;
+                if (fdist_seg(q[i], a, b) <= reach) {
+                    hit++;
+                    break;
+                }
+            }
+        if (hit == 3)
+            return 1;
+    }
+    return 0;
+}
+
+/* Every pair of patches sharing a boundary row shares a seam along it: at
+ * least 95% of either side's length in edges common to both loops (all of it
+ * on most pairs: counted and printed); and every free edge lies on a side
+ * that the adjacency pairs with nothing, or within twice the tolerance of
+ * another loop: no crack. (The teapot's knob is degenerate at the
+ * tolerance's scale: each patch's collapsed side is a petal 3e-4 long that
+ * leaves the pole tangent to the neighbours' sides, so near the pole two
+ * layers of vertices 2 tolerances apart run side by side.) The teapot is
+ * open only where it is. */
+static void check_teaset_part(const char *name, size_t expect_pairs_min)
+{
+    sw_model m;
+    if (load_teapot(name, &m) != SW_OK) {
+        SW_CHECK(!"sample missing");
+        return;
+    }
+    sw_pack_adjacency *pairs = NULL;
+    uint32_t pair_count = 0;
+    sw_error err;
+    SW_CHECK(sw_pack_find_adjacency(&m, &pairs, &pair_count, &err) == SW_OK);
+    SW_CHECK(pair_count >= expect_pairs_min);
+    sw_seam_host h;
+    sw_seam_report r;
+    SW_CHECK(sw_seam_sew_model(&m, NULL, &h, &r, &err) == SW_OK);
+    check_host(&h);
+    SW_CHECK(h.loop_count == m.patch_count && h.surface_count == m.surface_count);
+    uint64_t *ea = malloc(h.slot_count * sizeof *ea), *eb = malloc(h.slot_count * sizeof *eb);
+    uint8_t *paired = calloc(m.patch_count * 4, 1);
+    size_t exact = 0;
+    for (uint32_t i = 0; i < pair_count; i++) {
+        const sw_pack_adjacency *p = &pairs[i];
+        uint32_t la = h.surface_loops[m.patches[p->patch_a].surface];
+        uint32_t lb = h.surface_loops[m.patches[p->patch_b].surface];
+        size_t na = side_edges(&h, la, p->edge_a, ea), nb = side_edges(&h, lb, p->edge_b, eb);
+        double ca, ta, cb, tb;
+        common_length(&h, ea, na, eb, nb, &ca, &ta);
+        common_length(&h, eb, nb, ea, na, &cb, &tb);
+        SW_CHECK_MSG(ca > 0 && ca >= 0.95 * ta && cb >= 0.95 * tb,
+                     "%s: patches %u (side %d) and %u (side %d) share %g of %g and %g", name,
+                     p->patch_a, p->edge_a, p->patch_b, p->edge_b, ca, ta, tb);
+        exact += na == nb && memcmp(ea, eb, na * sizeof *ea) == 0;
+        paired[p->patch_a * 4 + p->edge_a] = paired[p->patch_b * 4 + p->edge_b] = 1;
+    }
+    size_t free_edges = 0, bad_free = 0, corner_free = 0;
+    for (uint32_t l = 0; l < h.loop_count; l++) {
+        const sw_seam_loop *loop = &h.loops[l];
+        for (uint32_t k = 0; k < loop->slot_count; k++) {
+            const sw_seam_slot *x = &h.slots[loop->first_slot + k];
+            const sw_seam_slot *y = &h.slots[loop->first_slot + (k + 1) % loop->slot_count];
+            if (x->vertex == y->vertex || loops_along(&h, x->vertex, y->vertex) != 1)
+                continue;
+            free_edges++;
+            int open_side = 0;
+            for (int side = 0; side < 4; side++)
+                open_side |= on_side(x, side) && on_side(y, side) && !paired[l * 4 + (uint32_t)side];
+            if (open_side)
+                continue;
+            int corner = covered_by_other_loop(&h, l, x->vertex, y->vertex, 2 * h.tolerance);
+            corner_free += corner;
+            bad_free += !corner;
+        }
+    }
+    SW_CHECK(exact * 100 >= pair_count * 85); /* most pairs edge for edge, not just 95% */
+    SW_CHECK(free_edges == r.free_edges);
+    SW_CHECK_MSG(bad_free == 0, "%s: %zu free edges on sides the adjacency pairs", name, bad_free);
+    SW_CHECK(r.seams > 0 && r.seams + r.free_edges == r.boundary_edges);
+    printf("  %s: %u adjacent pairs (%zu sewn edge for edge), %zu seams, %zu free edges (%zu "
+           "within 2 tolerances of another loop), %zu non-manifold\n", name, pair_count, exact, r.seams,
+           r.free_edges, corner_free, r.nonmanifold_edges);
+    free(ea);
+    free(eb);
+    free(paired);
+    free(pairs);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+}
+
+static void test_teapot_adjacency_is_sewn(void) { check_teaset_part("teapot.txt", 40); }
+static void test_teacup_adjacency_is_sewn(void) { check_teaset_part("teacup.txt", 20); }
+static void test_teaspoon_adjacency_is_sewn(void) { check_teaset_part("teaspoon.txt", 10); }
+
+/* ---- shared CAD models (skipped when ../shared/models is absent) -------- */
+
+/* A real trimmed IGES model: the graph's invariants, the polylines within
+ * the tolerance of the true trims, and most edges sewn. */
+static void check_shared_iges(const char *name, double min_seam_fraction)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", models_dir, name);
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        printf("  %s: not found, skipped\n", path);
+        return;
+    }
+    fclose(f);
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    sw_import_options io = {0};
+    sw_import_report ir;
+    SW_CHECK(sw_import_iges_file(path, &io, &m, &ir, &err) == SW_OK);
+    sw_seam_host h;
+    sw_seam_report r;
+    SW_CHECK(sw_seam_sew_model(&m, NULL, &h, &r, &err) == SW_OK);
+    check_host(&h);
+    SW_CHECK(h.surface_count == m.surface_count && r.unproven_pieces == 0);
+    SW_CHECK_MSG(r.seams >= min_seam_fraction * r.boundary_edges, "%s: %zu seams of %zu edges",
+                 name, r.seams, r.boundary_edges);
+    check_polyline_error(&m, r.tolerance, 0);
+    printf("  %s: tolerance %g, %zu edges, %zu seams, %zu free, %zu non-manifold\n", name,
+           r.tolerance, r.boundary_edges, r.seams, r.free_edges, r.nonmanifold_edges);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+}
+
+static void test_shared_models(void)
+{
+    if (!models_dir) {
+        printf("  no models directory given, skipped\n");
+        SW_CHECK(1);
+        return;
+    }
+    check_shared_iges("occt_hammer.iges", 0.85);
+    check_shared_iges("gpucast_teapot.igs", 0.7);
+    check_shared_iges("occt_bearing.iges", 0.9);
+}
+
+/* ---- errors ------------------------------------------------------------- */
+
+static void test_bad_arguments_are_errors(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    add_quad(&m, (double[3]){0, 0, 0}, (double[3]){1, 0, 0}, (double[3]){0, 1, 0},
+             (double[3]){1, 1, 0});
+    sw_seam_host h;
+    sw_seam_report r;
+    sw_error err;
+    SW_CHECK(sw_seam_sew_model(NULL, NULL, &h, &r, &err) == SW_ERR_ARG);
+    SW_CHECK(h.vertices == NULL && h.vertex_count == 0);
+    SW_CHECK(sw_seam_sew_model(&m, NULL, NULL, &r, &err) == SW_ERR_ARG);
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){-1}, &h, &r, &err) == SW_ERR_ARG);
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){NAN}, &h, &r, &err) == SW_ERR_ARG);
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){INFINITY}, &h, &r, &err) == SW_ERR_ARG);
+    SW_CHECK(strstr(err.message, "tolerance") != NULL);
+    sw_seam_polylines pl;
+    SW_CHECK(sw_seam_flatten_model(&m, 0, &pl, &err) == SW_ERR_ARG);
+    SW_CHECK(sw_seam_flatten_model(NULL, 1, &pl, &err) == SW_ERR_ARG);
+    SW_CHECK(sw_seam_flatten_model(&m, 1, NULL, &err) == SW_ERR_ARG);
+    SW_CHECK(sw_sew_polylines(NULL, 1, &h, NULL, &err) == SW_ERR_ARG);
+    SW_CHECK(sw_seam_flatten_model(&m, 1e-3, &pl, &err) == SW_OK);
+    SW_CHECK(sw_sew_polylines(&pl, 0, &h, NULL, &err) == SW_ERR_ARG);
+    SW_CHECK(sw_sew_polylines(&pl, 1e-3, NULL, NULL, &err) == SW_ERR_ARG);
+    sw_seam_polylines_free(&pl);
+    /* NULL report and zero options are fine; an empty model gives an empty graph. */
+    SW_CHECK(sw_seam_sew_model(&m, NULL, &h, NULL, &err) == SW_OK);
+    check_host(&h);
+    sw_seam_host_free(&h);
+    sw_model empty;
+    sw_model_init(&empty);
+    SW_CHECK(sw_seam_sew_model(&empty, NULL, &h, &r, &err) == SW_OK);
+    SW_CHECK(h.loop_count == 0 && h.vertex_count == 0 && h.surface_loops && h.surface_loops[0] == 0);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+}
+
+/* The default tolerance: the file's, floored at 1e-6 of the diagonal; none
+ * stated: 1e-5 of the diagonal; an explicit one wins. */
+static void test_default_tolerance(void)
+{
+    sw_model m;
+    sw_model_init(&m);
+    add_quad(&m, (double[3]){0, 0, 0}, (double[3]){3, 0, 0}, (double[3]){0, 4, 0},
+             (double[3]){3, 4, 0});
+    SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-5, 1e-12);
+    m.model_tolerance = 0.01f;
+    SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 0.01, 1e-9);
+    m.model_tolerance = 1e-9f;
+    SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-6, 1e-12);
+    SW_CHECK(sw_seam_default_tolerance(&m, &(sw_seam_options){0.25}) == 0.25);
+    sw_model_free(&m);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1)
+        samples_dir = argv[1];
+    if (argc > 2)
+        models_dir = argv[2];
+    SW_RUN(test_gap_below_tolerance_is_sewn);
+    SW_RUN(test_gap_above_tolerance_is_not_sewn);
+    SW_RUN(test_t_junction_inserts_the_middle_vertex);
+    SW_RUN(test_three_faces_on_one_edge_are_nonmanifold);
+    SW_RUN(test_dense_sides_shorter_than_tolerance_are_sewn);
+    SW_RUN(test_hole_and_disc_sewn_all_round);
+    SW_RUN(test_teapot_polylines_within_tolerance);
+    SW_RUN(test_trimmed_bump_polylines_within_tolerance);
+    SW_RUN(test_teapot_adjacency_is_sewn);
+    SW_RUN(test_teacup_adjacency_is_sewn);
+    SW_RUN(test_teaspoon_adjacency_is_sewn);
+    SW_RUN(test_shared_models);
+    SW_RUN(test_bad_arguments_are_errors);
+    SW_RUN(test_default_tolerance);
+    return sw_test_finish();
+}
