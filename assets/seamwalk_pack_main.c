@@ -23,11 +23,13 @@
 #include "sw_pack_write.h"
 #include "sw_progress.h"
 #include "sw_scene.h"
+#include "sw_seam_sew.h"
+#include "sw_seam_simplify.h"
 #include "sw_text_scan.h"
 
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
-    "                           [--iges-reader native|occt]\n"
+    "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
     "       seamwalk-pack info [--json] PACK\n"
     "       seamwalk-pack verify PACK\n"
     "       seamwalk-pack gen showroom --patches N -o SCENE.ini [--part FILE]... [--seed S]\n"
@@ -36,7 +38,9 @@ static const char usage_text[] =
     "STEP (.stp, .step) or a scene (.ini). Each file becomes one part named after\n"
     "it; a scene adds its parts. IGES is read by the native reader unless\n"
     "--iges-reader occt; STEP always through OpenCASCADE. --strict: entities an\n"
-    "importer would skip are errors. --quiet: no progress bar, no summary.\n";
+    "importer would skip are errors. --quiet: no progress bar, no summary.\n"
+    "--seam-tolerance: how far apart trims may be and still be sewn into one seam\n"
+    "(default: the file's model tolerance, at least 1e-6 of the model's size).\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -99,6 +103,7 @@ typedef struct build_options {
     const char **inputs;
     int input_count;
     int quiet, strict, iges_occt;
+    double seam_tolerance;      /* 0: sw_seam_default_tolerance */
 } build_options;
 
 /* What the progress callbacks need to label a stage and count its rate:
@@ -211,20 +216,52 @@ static sw_status add_input(const build_options *o, int i, progress_context *pc, 
     return st;
 }
 
+/* The Seam Graph (paper 004, sections 4-5): the trims flattened and sewn
+ * across surfaces, then the collapse hierarchy over the seams. */
+typedef struct seam_summary {
+    sw_seam_report sewing;
+    uint32_t collapses;
+    double simplify_s;
+} seam_summary;
+
+static sw_status build_seams(const build_options *o, progress_context *pc, const sw_model *model,
+                             sw_seam_host *seams, seam_summary *summary, sw_error *err)
+{
+    on_progress(pc, "sewing seams", 0.0);
+    sw_seam_options opt = { .tolerance = o->seam_tolerance };
+    sw_status st = sw_seam_sew_model(model, &opt, seams, &summary->sewing, err);
+    if (st == SW_OK) {
+        on_progress(pc, "simplifying seams", 0.0);
+        double t0 = now_s();
+        st = sw_seam_simplify(seams, err);
+        summary->simplify_s = now_s() - t0;
+        summary->collapses = seams->collapse_count;
+    }
+    if (st != SW_OK)
+        sw_error_prefix(err, "seam graph");
+    return st;
+}
+
 static sw_status pack_model(const build_options *o, progress_context *pc, sw_model *model,
-                            size_t *bytes_out, sw_error *err)
+                            seam_summary *seam_summary_out, size_t *bytes_out, sw_error *err)
 {
     snprintf(pc->prefix, sizeof pc->prefix, "packing");
     pc->importing = 0;
     sw_pack_progress progress = { on_progress, pc };
     sw_pack_contents contents;
+    sw_seam_host seams = { 0 };
     uint8_t *bytes = NULL;
-    sw_status st = sw_pack_contents_from_model_progress(model, &progress, &contents, err);
+    sw_status st = build_seams(o, pc, model, &seams, seam_summary_out, err);
+    if (st == SW_OK)
+        st = sw_pack_contents_from_model_progress(model, &progress, &contents, err);
     if (st == SW_OK) {
+        sw_seam_graph view = sw_seam_host_view(&seams);
+        contents.seam = &view;
         on_progress(pc, "serialising", 0.0);
         st = sw_pack_serialize(&contents, &bytes, bytes_out, err);
         sw_pack_contents_free(&contents);
     }
+    sw_seam_host_free(&seams);
     if (st == SW_OK) {
         on_progress(pc, "writing", 0.0);
         st = sw_write_file_atomic(o->out_path, bytes, *bytes_out, err); /* names the path */
@@ -234,7 +271,7 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
 }
 
 static sw_status build_pack(const build_options *o, sw_model *model, sw_import_report *reports,
-                            size_t *bytes_out, sw_error *err)
+                            seam_summary *seams, size_t *bytes_out, sw_error *err)
 {
     progress_context pc = { .model = model };
     sw_progress_init(&pc.bar, stderr, o->quiet);
@@ -242,7 +279,7 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
     for (int i = 0; st == SW_OK && i < o->input_count; i++)
         st = add_input(o, i, &pc, model, &reports[i], err);
     if (st == SW_OK)
-        st = pack_model(o, &pc, model, bytes_out, err);
+        st = pack_model(o, &pc, model, seams, bytes_out, err);
     sw_progress_clear(&pc.bar);
     return st;
 }
@@ -266,12 +303,19 @@ static void print_warnings(const build_options *o, const sw_import_report *repor
 }
 
 static void print_summary(const build_options *o, const sw_model *model,
-                          const sw_import_report *reports, size_t bytes, double seconds)
+                          const sw_import_report *reports, const seam_summary *seams,
+                          size_t bytes, double seconds)
 {
     for (int i = 0; i < o->input_count; i++)
         if (reports[i].pcurves_computed > 0)
             printf("seamwalk-pack: %s: %zu parameter curves computed from model-space curves\n",
                    base_name(o->inputs[i]), reports[i].pcurves_computed);
+    const sw_seam_report *r = &seams->sewing;
+    printf("seamwalk-pack: seams: %zu boundary vertices, %zu edges (%zu sewn, %zu free, %zu "
+           "non-manifold), tolerance %g; %" PRIu32 " collapses; sewing %.2f s, simplifying "
+           "%.2f s\n", r->boundary_vertices, r->boundary_edges, r->seams, r->free_edges,
+           r->nonmanifold_edges, r->tolerance, seams->collapses, r->flatten_s + r->sew_s,
+           seams->simplify_s);
     printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
            model->patch_count, bytes, o->out_path, seconds);
 }
@@ -290,6 +334,14 @@ static int parse_build(int argc, char **argv, build_options *o)
             if (strcmp(r, "native") != 0 && strcmp(r, "occt") != 0)
                 return usage_error("build: --iges-reader takes native or occt, not '%s'", r);
             o->iges_occt = strcmp(r, "occt") == 0;
+        } else if (strcmp(a, "--seam-tolerance") == 0) {
+            const char *t = i + 1 < argc ? argv[++i] : "";
+            char *end;
+            o->seam_tolerance = strtod(t, &end);
+            if (end == t || *end != '\0' || !(o->seam_tolerance > 0) ||
+                !(o->seam_tolerance < 1e30))
+                return usage_error("build: --seam-tolerance takes a length in mm > 0, not '%s'",
+                                   t);
         } else if (strcmp(a, "--quiet") == 0) {
             o->quiet = 1;
         } else if (strcmp(a, "--strict") == 0) {
@@ -321,11 +373,12 @@ static int cmd_build(int argc, char **argv)
         sw_error err = {0};
         size_t bytes = 0;
         double t0 = now_s();
-        sw_status st = build_pack(&o, &model, reports, &bytes, &err);
+        seam_summary seams = { 0 };
+        sw_status st = build_pack(&o, &model, reports, &seams, &bytes, &err);
         if (st == SW_OK) {
             print_warnings(&o, reports);
             if (!o.quiet)
-                print_summary(&o, &model, reports, bytes, now_s() - t0);
+                print_summary(&o, &model, reports, &seams, bytes, now_s() - t0);
         }
         rc = st == SW_OK ? 0 : fail(&err);
         sw_model_free(&model);

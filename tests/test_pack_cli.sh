@@ -74,6 +74,23 @@ EOF
 run verify "$teaset"
 check "verify accepts the teaset" eval '[ "$(code)" -eq 0 ] && has "$work/out" "^$teaset: ok (70 patches, [0-9]* bytes)$"'
 
+# -- the Seam Graph: sewn and simplified by every build ---------------------
+run build "$samples/teaset.ini" -o "$work/seams.swpack"
+check "build reports the seams" eval 'has "$work/out" "^seamwalk-pack: seams: [1-9][0-9]* boundary vertices, [1-9][0-9]* edges ([1-9][0-9]* sewn, [0-9]* free, [0-9]* non-manifold), tolerance [0-9.e+-]*; [1-9][0-9]* collapses"'
+check "the teaset's graph is in the pack, simplified to the end" python3 - "$work/teaset.json" <<'EOF'
+import json, sys
+s = json.load(open(sys.argv[1]))["seam"]
+assert s["original_vertices"] > 1000 and s["created_vertices"] > 0, s
+assert s["original_vertices"] + s["created_vertices"] == s["vertices"], s
+assert s["collapses"] == s["created_vertices"] and s["loops"] >= 70, s
+EOF
+run build "$samples/teaset.ini" -o "$work/coarse.swpack" --seam-tolerance 0.01
+check "--seam-tolerance sets the sewing tolerance" eval '[ "$(code)" -eq 0 ] && has "$work/out" "tolerance 0.01;"'
+run build "$samples/teaset.ini" -o "$work/x.swpack" --seam-tolerance -1
+check "--seam-tolerance takes a positive length" eval '[ "$(code)" -eq 2 ] && has "$work/err" "seam-tolerance" && [ ! -e "$work/x.swpack" ]'
+run build "$samples/teaset.ini" -o "$work/x.swpack" --seam-tolerance
+check "--seam-tolerance needs a value" eval '[ "$(code)" -eq 2 ] && [ ! -e "$work/x.swpack" ]'
+
 # -- single files become parts named after them ------------------------------
 run build "$samples/saddle.bpt" "$samples/teacup.txt" -o "$work/two.swpack"
 check "build .bpt + .txt" eval '[ "$(code)" -eq 0 ] && has "$work/out" "2 parts, 28 patches"'
@@ -143,7 +160,9 @@ assert p["degree_u"] == [3, 3] and p["rational_patches"] == 0 and len(p["transfo
 assert all(lo <= hi for lo, hi in zip(p["box"]["min"], p["box"]["max"]))
 assert j["units"] == "mm" and j["trim_loops"] == 0 and j["viewpoints"] == []
 assert [s["name"] for s in j["sections"]][4:] == ["ADJACENCY", "SURFACES", "TRIM_LOOPS",
-  "TRIM_CURVES", "TRIM_DATA", "PATCH_DOMAINS", "TRIM_MASKS", "VIEWPOINTS", "PART_TRANSFORMS"]
+  "TRIM_CURVES", "TRIM_DATA", "PATCH_DOMAINS", "TRIM_MASKS", "VIEWPOINTS", "PART_TRANSFORMS",
+  "SEAM", "SEAM_VERTICES", "SEAM_SLOTS", "SEAM_LOOPS", "SEAM_EDGES", "SEAM_COLLAPSES",
+  "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS"]
 EOF
 
 # A trimmed pack without any CAD reader: a generated plate with holes.
