@@ -22,6 +22,7 @@
 #include "sw_png.h"
 #include "sw_renderer.h"
 #include "sw_stats.h"
+#include "sw_seam_walk.h"
 #include "sw_walk.h"
 
 typedef struct runtime {
@@ -32,6 +33,9 @@ typedef struct runtime {
     sw_camera_path path;
     sw_walk walk;
     sw_measure measure;
+    sw_seam_walk seam;        /* with --seams, in its own block: */
+    void *seam_block;         /* sized from the loaded pack, taken before the first frame */
+    sw_arena seam_arena;
     sw_stats stats;
     sw_egl_headless egl;
     sw_renderer renderer;
@@ -99,6 +103,31 @@ static sw_status load_path(runtime *rt, size_t path_bytes, sw_error *err)
     if (!keys)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the camera path");
     return sw_camera_path_parse(text, path_bytes, rt->opt.path_file, keys, n, &rt->path, err);
+}
+
+/* The seam walk's block: its size depends on the Seam Graph, so it is taken
+ * once the pack is loaded, still before the first frame, within the same
+ * --memory-mb limit as the main arena. */
+static sw_status init_seams(runtime *rt, sw_error *err)
+{
+    if (!rt->pack.seam_header)
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: --seams, but the pack has no Seam Graph "
+                            "(build it again with this seamwalk-pack)", rt->opt.pack_path);
+    size_t bytes = sw_seam_walk_arena_bytes(&rt->pack);
+    double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
+    if ((double)bytes + (double)rt->arena.size > limit)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: the walk needs %.1f MiB with --seams, "
+                            "more than --memory-mb %.0f", rt->opt.pack_path,
+                            ((double)bytes + (double)rt->arena.size) / 1048576.0,
+                            rt->opt.memory_mb);
+    rt->seam_block = malloc(bytes);
+    if (!rt->seam_block)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the seam walk",
+                            bytes);
+    sw_arena_init(&rt->seam_arena, rt->seam_block, bytes);
+    rt->stats.seams = 1;
+    rt->stats.seam_active_min = UINT32_MAX;
+    return sw_seam_walk_init(&rt->seam, &rt->pack, &rt->seam_arena, rt->opt.max_error_px, err);
 }
 
 static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
@@ -180,6 +209,8 @@ static sw_status start(runtime *rt, sw_error *err)
     if ((st = sw_walk_init(&rt->walk, &rt->pack, &rt->arena, rt->opt.max_error_px, err)) ||
         (st = sw_measure_init(&rt->measure, &rt->arena, &rt->pack, err)))
         return st;
+    if (rt->opt.seams && (st = init_seams(rt, err)) != SW_OK)
+        return st;
     if (rt->opt.png_dir) {
         rt->pixels = sw_arena_alloc(&rt->arena, (size_t)rt->opt.width * rt->opt.height * 4, 64);
         if (!rt->pixels)
@@ -227,6 +258,32 @@ static sw_status write_png(runtime *rt, int frame, sw_error *err)
                         (size_t)rt->opt.width * 3, &rt->arena, err);
 }
 
+/* Selects and draws through the Seam Graph; its own measurement. */
+static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uint64_t *triangles,
+                            uint32_t *drawn, double *measure_ms, sw_error *err)
+{
+    sw_seam_frame f;
+    sw_status st = sw_seam_walk_select(&rt->seam, view, &f, err);
+    if (st != SW_OK)
+        return st;
+    sw_seam_walk_draw(&rt->seam, &rt->renderer, view, measuring ? &rt->stats : NULL, &f);
+    *triangles = f.triangles;
+    *drawn = f.drawn_surfaces;
+    *measure_ms = f.measure_ms;
+    sw_stats *s = &rt->stats;
+    s->seam_active_min = f.active_vertices < s->seam_active_min ? f.active_vertices
+                                                                : s->seam_active_min;
+    s->seam_active_max = f.active_vertices > s->seam_active_max ? f.active_vertices
+                                                                : s->seam_active_max;
+    if (f.vanished_surfaces > s->surfaces_vanished_max)
+        s->surfaces_vanished_max = f.vanished_surfaces;
+    if (f.failed_surfaces > s->surfaces_failed_max)
+        s->surfaces_failed_max = f.failed_surfaces;
+    if (measuring && f.cracks > s->cracks_max)
+        s->cracks_max = f.cracks;
+    return SW_OK;
+}
+
 static sw_status run_frame(runtime *rt, int frame, sw_error *err)
 {
     static const float background[4] = { 0.93f, 0.94f, 0.96f, 1.0f };
@@ -234,20 +291,34 @@ static sw_status run_frame(runtime *rt, int frame, sw_error *err)
     sw_camera_pose pose = pose_at(rt, frame);
     sw_view view = sw_view_make(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
                                 rt->opt.height, &rt->model_box);
-    sw_frame_counts counts = sw_walk_select(&rt->walk, &view);
+    int measuring = frame % rt->opt.measure_every == 0;
     float mv[16], proj[16];
     sw_mat4_to_float(&view.view, mv);
     sw_mat4_to_float(&view.proj, proj);
-    sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv, proj);
-    uint64_t triangles = sw_walk_draw(&rt->walk, &rt->renderer);
+    sw_frame_counts counts = { 0, 0, 0 };
+    uint64_t triangles = 0;
+    double measure_ms = 0;
+    if (rt->opt.seams) {
+        sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv,
+                                proj);
+        sw_status st = seam_frame(rt, &view, measuring, &triangles, &counts.visible, &measure_ms,
+                                  err);
+        if (st != SW_OK)
+            return st;
+    } else {
+        counts = sw_walk_select(&rt->walk, &view);
+        sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv,
+                                proj);
+        triangles = sw_walk_draw(&rt->walk, &rt->renderer);
+    }
     sw_renderer_finish(&rt->renderer);
-    double ms = (now_s() - t0) * 1000.0;
+    double ms = (now_s() - t0) * 1000.0 - measure_ms;
     sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, counts.visible);
     if (frame == 0)
         rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0;
     if (counts.capped > rt->stats.capped_patches_max)
         rt->stats.capped_patches_max = counts.capped;
-    if (frame % rt->opt.measure_every == 0) {
+    if (measuring && !rt->opt.seams) {
         sw_measure_error(&rt->measure, &rt->walk, &view, &rt->stats);
         uint64_t cracks = sw_measure_cracks(&rt->measure, &rt->walk);
         if (cracks > rt->stats.cracks_max)
@@ -296,6 +367,8 @@ static sw_status write_stats(runtime *rt, sw_error *err)
 
 static void stop(runtime *rt)
 {
+    free(rt->seam_block);
+    rt->seam_block = NULL;
     if (rt->renderer_up)
         sw_renderer_destroy(&rt->renderer);
     if (rt->egl_up)

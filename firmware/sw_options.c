@@ -83,6 +83,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         } else if (!strcmp(a, "--orbit")) {
             o->orbit = 1;
             takes_value = 0;
+        } else if (!strcmp(a, "--seams")) {
+            o->seams = 1;
+            takes_value = 0;
         } else if (!v) {
             return sw_error_set(err, SW_ERR_ARG, "%s: unknown option or missing value", a);
         } else if (!strcmp(a, "--pack")) {
@@ -123,6 +126,7 @@ void sw_options_print_usage(const char *argv0)
             "usage: %s --pack FILE --headless WxH (--path FILE | --orbit | --view NAME)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
+            "          [--seams]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --path FILE         follow a camera path (format: firmware/sw_camera_path.h)\n"
             "  --orbit             circle the model\n"
@@ -132,6 +136,9 @@ void sw_options_print_usage(const char *argv0)
             "  --stats FILE.json   write the walk's statistics\n"
             "  --memory-mb M       refuse to start if the arena needs more (default 256)\n"
             "  --max-error-px E    screen-space tessellation error bound (default 0.5)\n"
-            "  --measure-every K   measure error and cracks every K-th frame (default 4)\n",
+            "  --measure-every K   measure error and cracks every K-th frame (default 4)\n"
+            "  --seams             draw through the pack's Seam Graph: sewn, view-dependent\n"
+            "                      trims, whole patches vanish far away (partial: every\n"
+            "                      visible surface is tessellated every frame)\n",
             argv0);
 }

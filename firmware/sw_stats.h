@@ -32,6 +32,9 @@ typedef struct sw_stats {
 
     uint64_t cracks_max;
     uint64_t capped_patches_max; /* patches whose grid hit SW_TESS_MAX_SEGMENTS */
+    int seams;                   /* the walk drew through the Seam Graph: the fields below */
+    uint32_t seam_active_min, seam_active_max;       /* active seam vertices per frame */
+    uint32_t surfaces_vanished_max, surfaces_failed_max;
 
     double pack_open_ms, first_frame_ms, walk_s;
     uint64_t arena_bytes, arena_peak_bytes;

@@ -11,7 +11,7 @@ sw_add_fuzz_target(fuzz_camera_path SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz
 # The whole programs, end to end (tests/test_walk.sh).
 add_executable(image_compare image_compare.c)
 target_link_libraries(image_compare PRIVATE sw_stb ${MATH_LIBRARY})
-foreach(mode teaset teapot golden errors)
+foreach(mode teaset teapot golden errors seams)
   add_test(NAME walk_${mode}
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_walk.sh ${mode} ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
   set_tests_properties(walk_${mode} PROPERTIES SKIP_RETURN_CODE 77)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end tests of the two programs, one mode per CTest test:
 #   test_walk.sh MODE BUILD_DIR SOURCE_DIR
-# MODE: teaset | teapot | golden | errors. Exit 77 means skipped.
+# MODE: teaset | teapot | golden | errors | seams. Exit 77 means skipped.
 set -uo pipefail
 mode=$1 build=$2 src=$3
 pack_tool=$build/assets/seamwalk-pack
@@ -42,6 +42,18 @@ expect_failure() {
 case $mode in
 teaset)
   walk_model "$src/assets/samples/teaset.ini" 24 ;;
+seams)
+  # Through the Seam Graph: the same pictures and contract, no crack, and a
+  # pack without a graph is refused in one line.
+  "$pack_tool" build "$src/assets/samples/teaset.ini" -o "$work/model.swpack" > /dev/null || fail "build"
+  "$walker" --pack "$work/model.swpack" --headless 320x240 --orbit --frames 8 --seams \
+    --png-dir "$work/png" --png-every 4 --stats "$work/stats.json" || fail "walk --seams"
+  python3 "$src/tests/check_stats.py" "$work/stats.json" 8 --seams || fail "stats"
+  for f in "$work/png"/frame_*.png; do
+    "$compare" --coverage "$f" 0.02 || fail "the model is not in $f"
+  done
+  expect_failure 1 "has no Seam Graph" "$walker" --pack "$src/tests/fuzz/corpus/pack/seed-sample" \
+    --headless 64x64 --orbit --frames 1 --seams ;;
 teapot)
   model=$src/../shared/models/newell_teapot.txt
   [ -f "$model" ] || { echo "skipped: $model is absent"; exit 77; }

@@ -1,0 +1,83 @@
+/* The frame work of a walk through the Seam Graph (paper 004, sections 5.5,
+ * 6.1 and 6.3), the path `seamwalk --seams` takes: per surface an error
+ * bound from the view (half a pixel at the surface's nearest depth, never
+ * below a tenth of the sewing tolerance), the view-dependent cut of the seam
+ * hierarchy for those bounds (core/sw_seam_select.h), and every visible
+ * surface tessellated inside its current loops (core/sw_trim_tess.h), its
+ * border vertices the seam's own, then drawn. Surfaces whose outer loop has
+ * vanished are not drawn: far away whole patches disappear.
+ *
+ * Memory: one block sized once from the validated pack
+ * (sw_seam_walk_arena_bytes) before the first frame; the frame functions
+ * never allocate. Every visible surface is tessellated every frame: the
+ * tessellation cache and the per-frame budget of paper 6.4 are not written
+ * yet, so frames cost what the tessellator costs (about 1 million triangles
+ * a second on one core). */
+#ifndef SW_SEAM_WALK_H
+#define SW_SEAM_WALK_H
+
+#include <stdint.h>
+
+#include "sw_arena.h"
+#include "sw_pack.h"
+#include "sw_renderer.h"
+#include "sw_seam_select.h"
+#include "sw_stats.h"
+#include "sw_tess.h"
+#include "sw_trim_tess.h"
+#include "sw_view.h"
+
+/* Vertices per tessellated surface (and per draw batch): 16-bit indices. */
+#define SW_SEAM_WALK_VERTICES 65536u
+#define SW_SEAM_WALK_INDICES (6u * 65536u)
+
+typedef struct sw_seam_walk {
+    const sw_pack *pack;
+    sw_seam_select select;
+    float *bound;                 /* surface_count: this frame's error bound, model units */
+    float *depth;                 /* surface_count: nearest eye-space depth of its patches */
+    uint8_t *visible;             /* surface_count */
+    sw_seam_point *loop_points;   /* the largest surface's slots */
+    sw_trim_point *points;        /* the same, as the tessellator takes them */
+    uint32_t *loop_first;         /* the most loops of a surface, + 1 */
+    sw_trim_patch *patches;       /* the most patches of a surface */
+    uint32_t max_points, max_loops, max_patches;
+    sw_arena scratch;             /* the tessellator's */
+    float *positions, *normals, *uvs;
+    uint32_t *ids;
+    uint16_t *indices;            /* one surface's */
+    sw_vertex *batch_vertices;
+    uint16_t *batch_indices;
+    uint32_t batch_vertex_count, batch_index_count;
+    double error_px;
+    float bound_floor;            /* a tenth of the sewing tolerance */
+} sw_seam_walk;
+
+typedef struct sw_seam_frame {
+    uint32_t visible_surfaces, drawn_surfaces, vanished_surfaces;
+    uint32_t active_vertices;
+    uint32_t failed_surfaces;     /* the tessellator refused them (not drawn) */
+    uint64_t triangles;
+    uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
+                                     plus loop points the tessellator dropped */
+    double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
+} sw_seam_frame;
+
+/* Bytes sw_seam_walk_init takes from its arena for this validated pack
+ * (which must hold a Seam Graph: pack->seam_header). */
+size_t sw_seam_walk_arena_bytes(const sw_pack *pack);
+sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
+                            sw_error *err);
+
+/* Culls surfaces, sets their bounds and moves the seam front to meet them. */
+sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
+                              sw_error *err);
+
+/* Tessellates and draws the visible surfaces, one colour per part. With
+ * stats, also measures every drawn triangle against the exact surface at its
+ * centroid and edge midpoints (pixels at that point's depth) into the error
+ * histogram. GL thread only. */
+void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, const sw_view *view, sw_stats *stats,
+                       sw_seam_frame *frame);
+
+#endif
