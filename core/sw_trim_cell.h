@@ -36,6 +36,8 @@ enum { SW_TT_GRID = 0, SW_TT_CROSS = 1, SW_TT_SEAM = 2 };
 typedef struct sw_tt_pv {
     double u, v;
     uint32_t kind, ref;
+    uint32_t ref_a, ref_b;   /* a crossing: its segment's loop points (sources) */
+    double t;                /* and where along it, 0..1 */
 } sw_tt_pv;
 
 /* The loops as one read-only bundle. */

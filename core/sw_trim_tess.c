@@ -206,6 +206,20 @@ static void put_border(const tt_ctx *c, uint32_t i, uint32_t src, double u, doub
     put_vertex(c, i, tp->p, q.normal, u, v, tp->id);
 }
 
+/* A crossing on its seam segment (crossing_on_segment): the chord point at
+ * the crossing's fraction, computed from the two loop points alone, so both
+ * cells sharing the crossing (and the same segment) get the same float. */
+static void put_on_segment(const tt_ctx *c, uint32_t patch, uint32_t i, const sw_tt_pv *pv)
+{
+    const float *a = c->in_loops->points[pv->ref_a].p, *b = c->in_loops->points[pv->ref_b].p;
+    float p[3];
+    for (int k = 0; k < 3; k++)
+        p[k] = (float)((double)a[k] + pv->t * ((double)b[k] - (double)a[k]));
+    sw_surface_point q;
+    eval_surface(c, patch, pv->u, pv->v, &q);
+    put_vertex(c, i, p, q.normal, pv->u, pv->v, SW_TRIM_CROSSING);
+}
+
 static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32_t *out)
 {
     if (pv->kind == SW_TT_SEAM) {
@@ -233,7 +247,9 @@ static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint3
         return s;
     c->hash[h] = *out;
     c->key_uv[2 * *out] = pv->u, c->key_uv[2 * *out + 1] = pv->v, c->key_kind[*out] = (uint8_t)pv->kind;
-    if (pv->kind == SW_TT_CROSS) {
+    if (pv->kind == SW_TT_CROSS && c->crossing_on_segment) {
+        put_on_segment(c, patch, *out, pv);
+    } else if (pv->kind == SW_TT_CROSS) {
         put_border(c, *out, pv->ref, pv->u, pv->v);
     } else {
         sw_surface_point q;
@@ -388,6 +404,7 @@ static sw_status tessellate(const sw_trim_patch *patches, uint32_t patch_count,
     c.error = error_world, c.arena = scratch, c.err = err, c.out = out, c.res = res;
     c.max_vertices = max_vertices_of(opt, out ? out->base_vertex : 0);
     c.max_depth = max_depth_of(opt);
+    c.crossing_on_segment = opt && opt->crossing_on_segment;
     size_t mark = sw_arena_mark(scratch);
     s = run(&c);
     sw_arena_reset_to(scratch, mark);

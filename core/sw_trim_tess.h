@@ -101,6 +101,16 @@ typedef struct sw_trim_loops {
 typedef struct sw_trim_tess_options {
     uint32_t max_vertices; /* default and cap: 65536 - base_vertex (16-bit indices) */
     uint32_t max_depth;    /* splits per patch, default 24, at most 40 */
+    /* 0 (default): a crossing takes the nearer loop point's position (the
+     * paper's rule: no T-vertex, but the triangles at a crossing are
+     * distorted by up to half a seam segment, which with the Seam Graph's
+     * coarse seams far exceeded the bound: 10 px on the teaset).
+     * 1: a crossing is placed on its seam segment, the straight 3D chord
+     * between the two loop points, at the crossing's fraction along it, and
+     * gets id SW_TRIM_CROSSING. The neighbour across the seam draws that same
+     * chord, so the border stays closed (a T-vertex on a straight edge, not a
+     * gap), and the triangles follow the surface. */
+    int crossing_on_segment;
 } sw_trim_tess_options;
 
 /* Caller-owned output. positions and normals hold 3 floats per vertex; uvs
@@ -110,6 +120,7 @@ typedef struct sw_trim_tess_options {
  * ones. Indices are base_vertex + vertex number, three per triangle, counter-
  * clockwise in (u, v) (so facing along F_u x F_v). */
 #define SW_TRIM_INTERIOR 0xFFFFFFFFu
+#define SW_TRIM_CROSSING 0xFFFFFFFEu /* with crossing_on_segment */
 typedef struct sw_trim_tess_buffers {
     float *positions, *normals, *uvs;
     uint32_t *ids;

@@ -40,6 +40,7 @@ typedef struct tt_ctx {
     sw_tt_loop *loops;
     uint32_t *stamp;
     uint32_t max_vertices, max_depth;
+    int crossing_on_segment;
     /* tree */
     tt_leaf *leaves;
     uint32_t leaf_count, leaf_cap;

@@ -134,7 +134,7 @@ static uint32_t on_side(const tt_ctx *c, int by_v, double line, double lo, doubl
             break;
         if (n == room)
             return SW_TT_NONE;
-        sw_tt_pv pv = {by_v ? p[1] : p[0], by_v ? p[0] : p[1], SW_TT_GRID, SW_TT_NONE};
+        sw_tt_pv pv = {by_v ? p[1] : p[0], by_v ? p[0] : p[1], SW_TT_GRID, SW_TT_NONE, 0, 0, 0};
         out[n++] = pv;
     }
     return n;
@@ -156,7 +156,7 @@ uint32_t sw_tt_leaf_border(const tt_ctx *c, uint32_t l, sw_tt_pv *out, uint32_t 
     for (int k = 0; k < 4; k++) {
         if (n >= cap)
             return SW_TT_NONE;
-        sw_tt_pv corner = {cu[k], cv[k], SW_TT_GRID, SW_TT_NONE};
+        sw_tt_pv corner = {cu[k], cv[k], SW_TT_GRID, SW_TT_NONE, 0, 0, 0};
         out[n++] = corner;
         int by_v = k == 0 || k == 2;
         double line = k == 0 ? r->v0 : k == 1 ? r->u1 : k == 2 ? r->v1 : r->u0;

@@ -281,6 +281,8 @@ static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uin
         s->surfaces_failed_max = f.failed_surfaces;
     if (measuring && f.cracks > s->cracks_max)
         s->cracks_max = f.cracks;
+    if (f.crossings > s->seam_crossings_max)
+        s->seam_crossings_max = f.crossings;
     return SW_OK;
 }
 

@@ -177,9 +177,12 @@ static sw_status tessellate(sw_seam_walk *w, uint32_t s, const sw_trim_loops *lo
         return st;
     sw_trim_tess_buffers out = { w->positions, w->normals, w->uvs, w->ids, w->indices,
                                  SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES, 0 };
+    /* Crossings on their seam segment: the paper's snapping distorted the
+     * border triangles far beyond the bound (sw_trim_tess.h). */
+    const sw_trim_tess_options opt = { .crossing_on_segment = 1 };
     double bound = w->bound[s];
     for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
-        st = sw_trim_tess(w->patches, *patch_count, loops, bound, NULL, &w->scratch, &out,
+        st = sw_trim_tess(w->patches, *patch_count, loops, bound, &opt, &w->scratch, &out,
                           result, NULL);
         if (st != SW_ERR_RANGE)
             break;
@@ -224,11 +227,13 @@ static void append(sw_seam_walk *w, sw_renderer *r, const sw_trim_tess_result *t
 /* Border vertices must be their seam vertex's position bit for bit (the
  * neighbour across the seam draws the same float), and every loop point must
  * be in the mesh: each violation is a crack. */
-static uint64_t count_cracks(const sw_seam_walk *w, const sw_trim_tess_result *t)
+static uint64_t count_cracks(const sw_seam_walk *w, const sw_trim_tess_result *t,
+                             uint64_t *crossings)
 {
     uint64_t cracks = t->dropped_points;
     for (uint32_t i = 0; i < t->vertex_count; i++) {
-        if (w->ids[i] == SW_TRIM_INTERIOR)
+        *crossings += w->ids[i] == SW_TRIM_CROSSING;
+        if (w->ids[i] == SW_TRIM_INTERIOR || w->ids[i] == SW_TRIM_CROSSING)
             continue;
         const float *p = w->pack->seam.vertices[w->ids[i]].p;
         cracks += memcmp(p, w->positions + 3 * i, 3 * sizeof(float)) != 0;
@@ -318,7 +323,7 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, const sw_view *view, sw_
         append(w, r, &t);
         frame->drawn_surfaces++;
         frame->triangles += t.index_count / 3;
-        frame->cracks += count_cracks(w, &t);
+        frame->cracks += count_cracks(w, &t, &frame->crossings);
         if (stats) {
             struct timespec a, b;
             clock_gettime(CLOCK_MONOTONIC, &a);

@@ -60,6 +60,8 @@ typedef struct sw_seam_frame {
     uint64_t triangles;
     uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
                                      plus loop points the tessellator dropped */
+    uint64_t crossings;           /* border vertices on a seam segment between its vertices
+                                     (T-vertices on a straight edge, not gaps) */
     double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
 } sw_seam_frame;
 

@@ -133,9 +133,10 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
     fprintf(f, "  \"capped_patches_max\": %llu,\n", (unsigned long long)s->capped_patches_max);
     if (s->seams)
         fprintf(f, "  \"seam\": {\"active_vertices_min\": %u, \"active_vertices_max\": %u, "
-                   "\"surfaces_vanished_max\": %u, \"surfaces_failed_max\": %u},\n",
+                   "\"surfaces_vanished_max\": %u, \"surfaces_failed_max\": %u, "
+                   "\"crossings_max\": %llu},\n",
                 s->seam_active_min, s->seam_active_max, s->surfaces_vanished_max,
-                s->surfaces_failed_max);
+                s->surfaces_failed_max, (unsigned long long)s->seam_crossings_max);
     fprintf(f, "  \"arena_bytes\": %llu,\n  \"arena_peak_bytes\": %llu,\n",
             (unsigned long long)s->arena_bytes, (unsigned long long)s->arena_peak_bytes);
     fprintf(f, "  \"mallocs_after_init\": %lld,\n", (long long)s->mallocs_after_init);

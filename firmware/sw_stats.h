@@ -35,6 +35,7 @@ typedef struct sw_stats {
     int seams;                   /* the walk drew through the Seam Graph: the fields below */
     uint32_t seam_active_min, seam_active_max;       /* active seam vertices per frame */
     uint32_t surfaces_vanished_max, surfaces_failed_max;
+    uint64_t seam_crossings_max;  /* T-vertices on seam segments, per frame */
 
     double pack_open_ms, first_frame_ms, walk_s;
     uint64_t arena_bytes, arena_peak_bytes;
