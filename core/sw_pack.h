@@ -222,12 +222,11 @@ typedef struct sw_pack {
 /* runtime_bytes for a pack of total_size bytes and patch_count patches: the
  * pack itself, 64-byte aligned, plus the per-patch state. Writer and reader
  * both use it.
- * SEAM RUNTIME HOOK: the Seam Graph's per-frame selection state (the active
- * front, one entry per seam vertex, core/sw_seam_select.c) is not counted
- * yet; its owner adds it here once its size is known. Mind that the reader
- * requires equality with this formula, so a pack whose runtime_bytes counts
- * seam state is refused by readers built before the change: that change
- * needs a version bump or a relaxed rule (see PACK_FORMAT.md, runtime_bytes). */
+ * SEAM RUNTIME HOOK: the Seam Graph walk's state (selection front,
+ * tessellator scratch; sw_seam_walk_arena_bytes) is not counted: it depends
+ * on the graph, so `seamwalk --seams` sizes a second block after loading the
+ * pack. Counting it here would change rule 21 for packs with a graph (a
+ * version bump: the reader requires equality; PACK_FORMAT.md, runtime_bytes). */
 uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count);
 
 /* Validates everything (every rule in PACK_FORMAT.md, "Validation rules")

@@ -354,6 +354,8 @@ static sw_status write_stats(runtime *rt, sw_error *err)
     s->measure_every = rt->opt.measure_every;
     s->arena_bytes = rt->arena.size;
     s->arena_peak_bytes = rt->arena.peak;
+    s->seam_arena_bytes = rt->seam_arena.size;
+    s->seam_arena_peak_bytes = rt->seam_arena.peak;
     s->width = rt->opt.width;
     s->height = rt->opt.height;
     if (!rt->opt.stats_path)

@@ -36,6 +36,7 @@ typedef struct sw_stats {
     uint32_t seam_active_min, seam_active_max;       /* active seam vertices per frame */
     uint32_t surfaces_vanished_max, surfaces_failed_max;
     uint64_t seam_crossings_max;  /* T-vertices on seam segments, per frame */
+    uint64_t seam_arena_bytes, seam_arena_peak_bytes; /* the seam walk's own block */
 
     double pack_open_ms, first_frame_ms, walk_s;
     uint64_t arena_bytes, arena_peak_bytes;
