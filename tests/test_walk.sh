@@ -53,7 +53,29 @@ seams)
     "$compare" --coverage "$f" 0.02 || fail "the model is not in $f"
   done
   expect_failure 1 "has no Seam Graph" "$walker" --pack "$src/tests/fuzz/corpus/pack/seed-sample" \
-    --headless 64x64 --orbit --frames 1 --seams ;;
+    --headless 64x64 --orbit --frames 1 --seams
+  # Far away whole patches vanish: 200 model sizes off (a few pixels),
+  # fewer triangles than patches, some surfaces not drawn at all, no crack.
+  "$pack_tool" info --json "$work/model.swpack" > "$work/info.json" || fail "info"
+  python3 - "$work/info.json" > "$work/far.path" <<'EOF' || fail "far path"
+import json, sys
+j = json.load(open(sys.argv[1]))
+lo, hi = j["box"]["min"], j["box"]["max"]
+c = [(a + b) / 2 for a, b in zip(lo, hi)]
+d = 200 * max(b - a for a, b in zip(lo, hi))
+print("0 %r %r %r %r %r %r 0 1 0" % (c[0] + d, c[1] + 0.3 * d, c[2] + 0.7 * d, c[0], c[1], c[2]))
+EOF
+  "$walker" --pack "$work/model.swpack" --headless 640x480 --path "$work/far.path" --frames 1 \
+    --seams --stats "$work/far.json" > /dev/null || fail "walk --seams, far"
+  python3 - "$work/far.json" <<'EOF' || fail "far away"
+import json, sys
+j = json.load(open(sys.argv[1]))
+tris, patches, seam = j["tris_per_frame"]["max"], j["patches"]["total"], j["seam"]
+print("far: %d triangles for %d patches, %d surfaces vanished, %d active seam vertices"
+      % (tris, patches, seam["surfaces_vanished_max"], seam["active_vertices_max"]))
+assert 0 < tris < patches and seam["surfaces_vanished_max"] > 0 and j["cracks_max"] == 0
+EOF
+  ;;
 teapot)
   model=$src/../shared/models/newell_teapot.txt
   [ -f "$model" ] || { echo "skipped: $model is absent"; exit 77; }
