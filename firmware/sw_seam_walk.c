@@ -10,26 +10,22 @@
 #define SW_SEAM_INVISIBLE_BOUND 1e30f
 
 typedef struct surface_sizes {
-    uint32_t points, loops, patches, ctrl_doubles;
+    uint32_t points, loops, patches;
 } surface_sizes;
 
 /* The largest surface in points, loops and patches, each on its own. */
 static surface_sizes largest_surface(const sw_pack *pack)
 {
     const sw_seam_graph *g = &pack->seam;
-    surface_sizes m = { 0, 0, 0, 0 };
+    surface_sizes m = { 0, 0, 0 };
     for (uint32_t s = 0; s < g->surface_count; s++) {
         uint32_t points = 0, l0 = g->surface_loops[s], l1 = g->surface_loops[s + 1];
         for (uint32_t l = l0; l < l1; l++)
             points += g->loops[l].slot_count;
         const sw_pack_surface *ps = &pack->surfaces[s];
-        uint32_t ctrl = 0;
-        for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++)
-            ctrl += 4u * (pack->patches[i].degree_u + 1u) * (pack->patches[i].degree_v + 1u);
         m.points = points > m.points ? points : m.points;
         m.loops = l1 - l0 > m.loops ? l1 - l0 : m.loops;
         m.patches = ps->patch_count > m.patches ? ps->patch_count : m.patches;
-        m.ctrl_doubles = ctrl > m.ctrl_doubles ? ctrl : m.ctrl_doubles;
     }
     return m;
 }
@@ -43,7 +39,7 @@ size_t sw_seam_walk_arena_bytes(const sw_pack *pack)
 {
     surface_sizes m = largest_surface(pack);
     size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES, i = SW_SEAM_WALK_INDICES;
-    return sw_seam_select_arena_bytes(&pack->seam) + sw_arena_worst_case(n * 9 + 1, 64) +
+    return sw_seam_select_arena_bytes(&pack->seam) + sw_arena_worst_case(n * 5 + 1, 64) +
            sw_arena_worst_case((m.points + 1) * (sizeof(sw_seam_point) + sizeof(sw_trim_point)), 64) +
            sw_arena_worst_case((m.loops + 1) * sizeof(uint32_t), 64) +
            sw_arena_worst_case((m.patches + 1) * sizeof(sw_trim_patch), 64) +
@@ -77,7 +73,6 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES;
     int failed = 0;
     w->bound = take(arena, n * sizeof(float), &failed);
-    w->depth = take(arena, n * sizeof(float), &failed);
     w->visible = take(arena, n, &failed);
     w->loop_points = take(arena, (m.points + 1) * sizeof(sw_seam_point), &failed);
     w->points = take(arena, (m.points + 1) * sizeof(sw_trim_point), &failed);
@@ -111,7 +106,6 @@ static void cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
             depth = fmin(depth, sw_view_box_min_depth(view, &box));
     }
     w->visible[s] = isfinite(depth);
-    w->depth[s] = (float)depth;
     double bound = w->visible[s] ? sw_view_error_world(view, w->error_px, depth) : 0.0;
     w->bound[s] = !w->visible[s] ? SW_SEAM_INVISIBLE_BOUND
                                  : (float)fmax(bound, (double)w->bound_floor);

@@ -35,7 +35,6 @@ typedef struct sw_seam_walk {
     const sw_pack *pack;
     sw_seam_select select;
     float *bound;                 /* surface_count: this frame's error bound, model units */
-    float *depth;                 /* surface_count: nearest eye-space depth of its patches */
     uint8_t *visible;             /* surface_count */
     sw_seam_point *loop_points;   /* the largest surface's slots */
     sw_trim_point *points;        /* the same, as the tessellator takes them */
