@@ -21,8 +21,8 @@
 #include "sw_pack.h"
 #include "sw_png.h"
 #include "sw_renderer.h"
-#include "sw_stats.h"
 #include "sw_seam_walk.h"
+#include "sw_stats.h"
 #include "sw_walk.h"
 
 typedef struct runtime {
