@@ -25,6 +25,7 @@
 #include "sw_bezier.h"
 #include "sw_tess.h"
 #include "sw_trim_tess.h"
+#include "trim_tess_shapes.h"
 
 enum { MAX_REPEATS = 31, MAX_PATCHES = 16, MAX_POINTS = 16384, MAX_LOOPS = 4 };
 
@@ -98,44 +99,13 @@ static void finish_surface(surface *s)
 
 static void make_bump(surface *s, int k)
 {
-    static const double h[4][4] = {{0, 0.2, 0.1, 0}, {0.1, 0.8, -0.4, 0.2},
-                                   {0.3, -0.5, 0.9, 0.1}, {0, 0.1, 0.2, 0.3}};
-    double whole[64], piece[64];
-    for (int j = 0; j < 4; j++)
-        for (int i = 0; i < 4; i++) {
-            double *c = whole + (j * 4 + i) * 4;
-            c[0] = i / 3.0, c[1] = j / 3.0, c[2] = h[i][j], c[3] = 1;
-        }
-    sw_bezier_patch w = {3, 3, 0, whole};
-    s->count = 0;
-    for (int b = 0; b < k; b++)
-        for (int a = 0; a < k; a++) {
-            sw_bezier_subpatch(&w, (double)a / k, (double)(a + 1) / k, (double)b / k,
-                               (double)(b + 1) / k, piece);
-            float *f = s->ctrl[s->count];
-            for (int q = 0; q < 64; q++)
-                f[q] = (float)piece[q];
-            sw_trim_patch *p = &s->patches[s->count++];
-            p->patch = (sw_bezier_patchf){3, 3, 0, f};
-            p->domain[0] = (float)a / k, p->domain[1] = (float)(a + 1) / k;
-            p->domain[2] = (float)b / k, p->domain[3] = (float)(b + 1) / k;
-        }
+    s->count = shape_bump(k, s->patches, s->ctrl);
     finish_surface(s);
 }
 
 static void make_cylinder(surface *s)
 {
-    const double r2 = sqrt(0.5), arc[3][3] = {{1, 0, 1}, {1, 1, r2}, {0, 1, 1}};
-    for (int j = 0; j < 2; j++)
-        for (int i = 0; i < 3; i++) {
-            float *c = s->ctrl[0] + (j * 3 + i) * 4;
-            c[0] = (float)arc[i][0], c[1] = (float)arc[i][1], c[2] = (float)(2 * j);
-            c[3] = (float)arc[i][2];
-        }
-    s->patches[0].patch = (sw_bezier_patchf){2, 1, 1, s->ctrl[0]};
-    s->patches[0].domain[0] = 0, s->patches[0].domain[1] = 1;
-    s->patches[0].domain[2] = 0, s->patches[0].domain[3] = 1;
-    s->count = 1;
+    s->count = shape_cylinder(s->patches, s->ctrl);
     finish_surface(s);
 }
 
