@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_grow.h"
+
 /* 2^-12 of a Bezier patch per side: deeper cells would not be flat either
  * (a singular rational patch), and the bounds of a coarser cell are still
  * valid, only loose. */
@@ -70,15 +72,12 @@ static sw_status node_measure(const sw_seam_qtree *qt, sw_seam_qnode *n, sw_erro
 
 static sw_status node_split(sw_seam_qtree *qt, size_t index, sw_error *err)
 {
-    if (qt->node_count + 4 > qt->node_capacity) {
-        size_t cap = qt->node_capacity * 2 + 64;
-        sw_seam_qnode *grown = realloc(qt->nodes, cap * sizeof *grown);
-        if (!grown)
-            return sw_error_set(err, SW_ERR_NO_MEMORY, "seam quad-tree: out of memory at %zu nodes",
-                                qt->node_count);
-        qt->nodes = grown;
-        qt->node_capacity = cap;
-    }
+    sw_seam_qnode *nodes = sw_grow(qt->nodes, &qt->node_capacity, qt->node_count + 4,
+                                   sizeof *nodes);
+    if (!nodes)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "seam quad-tree: out of memory at %zu nodes",
+                            qt->node_count);
+    qt->nodes = nodes;
     sw_seam_qnode p = qt->nodes[index];
     double sm = 0.5 * (p.s0 + p.s1), tm = 0.5 * (p.t0 + p.t1);
     size_t first = qt->node_count;

@@ -13,6 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_grow.h"
+
 typedef struct pair_group {
     sew_state *s;
     sew_match *m;          /* the group's matches, sorted by vertex */
@@ -89,14 +91,10 @@ typedef struct chain {
 
 static int chain_push(chain *c, sew_match *m)
 {
-    if (c->count == c->capacity) {
-        size_t cap = c->capacity * 2 + 64;
-        sew_match **grown = realloc(c->at, cap * sizeof *grown);
-        if (!grown)
-            return -1;
-        c->at = grown;
-        c->capacity = cap;
-    }
+    sew_match **at = sw_grow(c->at, &c->capacity, c->count + 1, sizeof *at);
+    if (!at)
+        return -1;
+    c->at = at;
     c->at[c->count++] = m;
     return 0;
 }
@@ -229,14 +227,10 @@ static int chain_long(const pair_group *g, const chain *c)
 
 static int add_join(sew_state *s, const sew_match *m)
 {
-    if (s->join_count == s->join_capacity) {
-        size_t cap = s->join_capacity * 2 + 1024;
-        sew_join *grown = realloc(s->joins, cap * sizeof *grown);
-        if (!grown)
-            return -1;
-        s->joins = grown;
-        s->join_capacity = cap;
-    }
+    sew_join *joins = sw_grow(s->joins, &s->join_capacity, s->join_count + 1, sizeof *joins);
+    if (!joins)
+        return -1;
+    s->joins = joins;
     s->joins[s->join_count++] = (sew_join){m->v, m->e, m->t};
     return 0;
 }

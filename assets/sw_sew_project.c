@@ -11,6 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_grow.h"
+
 typedef struct grid_entry {
     uint64_t key;
     uint32_t edge;
@@ -39,14 +41,10 @@ static int64_t cell_of(const grid *g, double x, int axis)
 
 static int grid_add(grid *g, uint64_t key, uint32_t edge)
 {
-    if (g->count == g->capacity) {
-        size_t cap = g->capacity * 2 + 1024;
-        grid_entry *grown = realloc(g->entries, cap * sizeof *grown);
-        if (!grown)
-            return -1;
-        g->entries = grown;
-        g->capacity = cap;
-    }
+    grid_entry *entries = sw_grow(g->entries, &g->capacity, g->count + 1, sizeof *entries);
+    if (!entries)
+        return -1;
+    g->entries = entries;
     g->entries[g->count++] = (grid_entry){key, edge};
     return 0;
 }
@@ -127,14 +125,11 @@ static size_t grid_find(const grid *g, uint64_t key)
 
 static int add_match(sew_state *s, const sew_match *m)
 {
-    if (s->match_count == s->match_capacity) {
-        size_t cap = s->match_capacity * 2 + 1024;
-        sew_match *grown = realloc(s->matches, cap * sizeof *grown);
-        if (!grown)
-            return -1;
-        s->matches = grown;
-        s->match_capacity = cap;
-    }
+    sew_match *matches = sw_grow(s->matches, &s->match_capacity, s->match_count + 1,
+                                 sizeof *matches);
+    if (!matches)
+        return -1;
+    s->matches = matches;
     s->matches[s->match_count++] = *m;
     return 0;
 }
