@@ -123,8 +123,8 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     sw_status st = sw_seam_select_update(&w->select, w->bound, 0, &r, err);
     if (st != SW_OK)
         return st;
-    sw_seam_select_stats c = sw_seam_select_count(&w->select);
-    frame->active_vertices = c.active_vertices;
+    /* The front's own count: sw_seam_select_count would walk every loop. */
+    frame->active_vertices = w->select.active_count;
     return SW_OK;
 }
 
