@@ -120,12 +120,19 @@ typedef struct sw_seam_point {
  * descends from most directly: at each collapse on the way down, v2's side
  * when the run holds a slot of it, else v1's (so a vertex sewn in the loop
  * keeps its own parameters, and vn takes v1's where v2 is not in the loop).
+ * With pin > 0 (model units) a run instead gives a point per slot whose
+ * original lies within pin of the vertex, in slot order, repeats of one
+ * (u, v) dropped, all at the vertex: so a degenerate side of the domain (a
+ * pole, one model-space point along a whole side in (u, v)) keeps its corners.
+ * The rule above still applies to a run with no such slot. The caller passes
+ * the surface's error bound, within which the vertex may stand for them.
  * The polyline starts at the first slot (in slot order) that begins a run.
  * *vanished is 1 when the polyline has fewer than three distinct vertices.
  * At most the loop's slot_count points; SW_ERR_NO_MEMORY with *count set to
  * the points needed when capacity is smaller; SW_ERR_RANGE for a bad loop. */
-sw_status sw_seam_select_loop(const sw_seam_select *state, uint32_t loop, sw_seam_point *points,
-                              uint32_t capacity, uint32_t *count, int *vanished, sw_error *err);
+sw_status sw_seam_select_loop(const sw_seam_select *state, uint32_t loop, float pin,
+                              sw_seam_point *points, uint32_t capacity, uint32_t *count,
+                              int *vanished, sw_error *err);
 
 typedef struct sw_seam_select_stats {
     uint32_t active_vertices;

@@ -95,16 +95,25 @@ static int spike(const sw_tt_point *a, const sw_tt_point *b, const sw_tt_point *
     return e1u * e2u + e1v * e2v < 0 && fabs(e1u * e2v - e1v * e2u) <= 1e-6 * l1 * l2;
 }
 
+/* Counts a dropped point as lost unless a kept neighbour carries its id (a
+ * seam vertex repeated at nearby (u, v) is still in the mesh). */
+static uint32_t lost(const sw_trim_point *in, uint32_t dropped, uint32_t kept_a, uint32_t kept_b)
+{
+    return in[dropped].id != in[kept_a].id && in[dropped].id != in[kept_b].id;
+}
+
 /* Drops spike tips until none is left; returns the new count. */
-static uint32_t remove_spikes(sw_tt_point *p, uint32_t count, uint32_t *dropped)
+static uint32_t remove_spikes(const sw_trim_point *in, sw_tt_point *p, uint32_t count,
+                              uint32_t *dropped)
 {
     for (uint32_t i = 0; count >= 3 && i < count;) {
         if (!spike(&p[(i + count - 1) % count], &p[i], &p[(i + 1) % count])) {
             i++;
             continue;
         }
+        *dropped += lost(in, p[i].src, p[(i + count - 1) % count].src, p[(i + 1) % count].src);
         memmove(&p[i], &p[i + 1], sizeof *p * (count - i - 1));
-        count--, (*dropped)++;
+        count--;
         i = i > 0 ? i - 1 : 0; /* the point before may have become a tip */
     }
     return count;
@@ -131,16 +140,20 @@ static void copy_loops(tt_ctx *c, const double dom[4])
             double u = fmin(fmax(l->points[i].uv[0], dom[0]), dom[1]);
             double v = fmin(fmax(l->points[i].uv[1], dom[2]), dom[3]);
             if (n > first && fabs(u - c->pts[n - 1].u) + fabs(v - c->pts[n - 1].v) < eps) {
-                c->res->dropped_points += !same_uv(&l->points[i], &l->points[i - 1]);
+                c->res->dropped_points += !same_uv(&l->points[i], &l->points[i - 1]) &&
+                                          lost(l->points, i, c->pts[n - 1].src, c->pts[n - 1].src);
                 continue;
             }
             sw_tt_point *p = &c->pts[n++];
             p->u = u, p->v = v, p->src = i, p->loop = m;
         }
         while (n - first > 1 && fabs(c->pts[n - 1].u - c->pts[first].u) +
-                                        fabs(c->pts[n - 1].v - c->pts[first].v) < eps)
-            n--, c->res->dropped_points++;
-        count = remove_spikes(c->pts + first, n - first, &c->res->dropped_points);
+                                        fabs(c->pts[n - 1].v - c->pts[first].v) < eps) {
+            n--;
+            c->res->dropped_points += lost(l->points, c->pts[n].src, c->pts[n - 1].src,
+                                           c->pts[first].src);
+        }
+        count = remove_spikes(l->points, c->pts + first, n - first, &c->res->dropped_points);
         n = first + count;
         if (count < 3 || loop_area(c->pts, first, count) == 0) {
             n = first;

@@ -135,8 +135,9 @@ typedef struct sw_trim_tess_result {
     uint32_t crossed_count;              /* of those, cells a loop crosses */
     uint32_t capped_count;               /* leaves at max_depth whose bound exceeds error */
     uint32_t skipped_loops;              /* loops with no area, or holes below max_depth */
-    uint32_t dropped_points;             /* loop points dropped (spike tips, near repeats):
-                                            not in the output */
+    uint32_t dropped_points;             /* loop points dropped (spike tips, near repeats)
+                                            whose id no kept neighbour carries: not in
+                                            the output */
     uint32_t fallback_ears;              /* clipping steps taken without a valid ear: 0 for
                                             valid loops */
     double error_bound;                  /* the largest leaf bound: <= error unless capped */

@@ -139,8 +139,8 @@ static int gather_loops(sw_seam_walk *w, uint32_t s, sw_trim_loops *loops)
         uint32_t count = 0;
         int vanished = 0;
         /* Cannot fail: l is in range and the buffer holds the surface's slots. */
-        sw_seam_select_loop(&w->select, l, w->loop_points + total, w->max_points - total, &count,
-                            &vanished, NULL);
+        sw_seam_select_loop(&w->select, l, w->bound[s], w->loop_points + total,
+                            w->max_points - total, &count, &vanished, NULL);
         if (vanished) {
             if (g->loops[l].flags & SW_SEAM_LOOP_OUTER)
                 return 0;
