@@ -206,17 +206,26 @@ static void put_border(const tt_ctx *c, uint32_t i, uint32_t src, double u, doub
     put_vertex(c, i, tp->p, q.normal, u, v, tp->id);
 }
 
-/* A crossing on its seam segment (crossing_on_segment): the chord point at
- * the crossing's fraction, computed from the two loop points alone, so both
- * cells sharing the crossing (and the same segment) get the same float. */
-static void put_on_segment(const tt_ctx *c, uint32_t patch, uint32_t i, const sw_tt_pv *pv)
+/* A crossing on its seam segment (crossing_on_segment): the chord point
+ * nearest the exact surface point at the crossing's (u, v). Not the point at
+ * the crossing's (u, v) fraction of the segment: the border curve's speed in
+ * (u, v) is not its speed in space, and that point slides along the chord,
+ * away from where the surface puts (u, v) (teaset: 1 px of a 0.5 px bound).
+ * Deterministic: the crossing is one vertex of the surface's mesh, evaluated
+ * once on the patch patch_at picks for its (u, v). */
+static void put_on_segment(const tt_ctx *c, uint32_t i, const sw_tt_pv *pv)
 {
     const float *a = c->in_loops->points[pv->ref_a].p, *b = c->in_loops->points[pv->ref_b].p;
+    sw_surface_point q;
+    eval_surface(c, patch_at(c, pv->u, pv->v), pv->u, pv->v, &q);
+    double ab[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
+    double aq[3] = {q.p.x - a[0], q.p.y - a[1], q.p.z - a[2]};
+    double len2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
+    double t = len2 > 0 ? (aq[0] * ab[0] + aq[1] * ab[1] + aq[2] * ab[2]) / len2 : 0.0;
+    t = fmin(fmax(t, 0.0), 1.0);
     float p[3];
     for (int k = 0; k < 3; k++)
-        p[k] = (float)((double)a[k] + pv->t * ((double)b[k] - (double)a[k]));
-    sw_surface_point q;
-    eval_surface(c, patch, pv->u, pv->v, &q);
+        p[k] = (float)((double)a[k] + t * ab[k]);
     put_vertex(c, i, p, q.normal, pv->u, pv->v, SW_TRIM_CROSSING);
 }
 
@@ -248,7 +257,7 @@ static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint3
     c->hash[h] = *out;
     c->key_uv[2 * *out] = pv->u, c->key_uv[2 * *out + 1] = pv->v, c->key_kind[*out] = (uint8_t)pv->kind;
     if (pv->kind == SW_TT_CROSS && c->crossing_on_segment) {
-        put_on_segment(c, patch, *out, pv);
+        put_on_segment(c, *out, pv);
     } else if (pv->kind == SW_TT_CROSS) {
         put_border(c, *out, pv->ref, pv->u, pv->v);
     } else {

@@ -829,22 +829,49 @@ static double worst_at(const surface *s, const mesh *m, const float *pos, const 
     return worst;
 }
 
+/* Distance from p to the segment a-b, and the segment parameter of the
+ * nearest point (unclamped) in *t. */
+static double chord_dist(const float *a, const float *b, const double p[3], double *t)
+{
+    double ab[3], ap[3], len2 = 0, d2 = 0;
+    *t = 0;
+    for (int c = 0; c < 3; c++) {
+        ab[c] = (double)b[c] - a[c], ap[c] = p[c] - a[c];
+        *t += ab[c] * ap[c], len2 += ab[c] * ab[c];
+    }
+    *t = len2 > 0 ? *t / len2 : 0;
+    double tc = fmin(fmax(*t, 0.0), 1.0);
+    for (int c = 0; c < 3; c++)
+        d2 += (ap[c] - tc * ab[c]) * (ap[c] - tc * ab[c]);
+    return sqrt(d2);
+}
+
+/* The loop segment p lies on, or -1. */
 static int on_some_chord(const loops *l, const float p[3])
 {
+    const double q[3] = {p[0], p[1], p[2]};
     for (uint32_t k = 0; k < l->n; k++) {
-        const float *a = l->pts[k].p, *b = l->pts[(k + 1) % l->n].p;
-        double ab[3], ap[3], t = 0, len2 = 0, d2 = 0;
-        for (int c = 0; c < 3; c++) {
-            ab[c] = (double)b[c] - a[c], ap[c] = (double)p[c] - a[c];
-            t += ab[c] * ap[c], len2 += ab[c] * ab[c];
-        }
-        t = len2 > 0 ? t / len2 : 0;
-        for (int c = 0; c < 3; c++)
-            d2 += (ap[c] - t * ab[c]) * (ap[c] - t * ab[c]);
-        if (t >= -1e-6 && t <= 1 + 1e-6 && sqrt(d2) <= 1e-6)
-            return 1;
+        double t;
+        double d = chord_dist(l->pts[k].p, l->pts[(k + 1) % l->n].p, q, &t);
+        if (t >= -1e-6 && t <= 1 + 1e-6 && d <= 1e-6)
+            return (int)k;
     }
-    return 0;
+    return -1;
+}
+
+/* Is crossing v where its chord comes nearest the surface at its (u, v)
+ * (not slid along the chord)? */
+static int nearest_on_chord(const surface *s, const loops *l, uint32_t v)
+{
+    int k = on_some_chord(l, g_pos + 3 * v);
+    if (k < 0)
+        return 0;
+    sw_surface_point q = eval_at(s, g_uv[2 * v], g_uv[2 * v + 1], SW_EVAL_POINT);
+    const double qp[3] = {q.p.x, q.p.y, q.p.z};
+    double t, best = chord_dist(l->pts[k].p, l->pts[(k + 1) % l->n].p, qp, &t);
+    const float *at = g_pos + 3 * v;
+    double here = sw_v3_length(sw_v3_sub(q.p, sw_v3(at[0], at[1], at[2])));
+    return here <= best + 1e-6;
 }
 
 static void test_crossings_on_their_segment(void)
@@ -870,11 +897,12 @@ static void test_crossings_on_their_segment(void)
     seg.nv = seg.res.vertex_count, seg.ni = seg.res.index_count;
     SW_CHECK(seg.nv == snap.nv && seg.ni == snap.ni);
     SW_CHECK(memcmp(g_idx, s_idx, sizeof(uint16_t) * seg.ni) == 0);
-    uint32_t crossings = 0, off_chord = 0, moved = 0;
+    uint32_t crossings = 0, off_chord = 0, moved = 0, slid = 0;
     for (uint32_t v = 0; v < seg.nv; v++) {
         if (g_ids[v] == SW_TRIM_CROSSING) {
             crossings++;
-            off_chord += !on_some_chord(&l, g_pos + 3 * v);
+            off_chord += on_some_chord(&l, g_pos + 3 * v) < 0;
+            slid += off_chord == 0 && !nearest_on_chord(&s, &l, v);
         } else {
             moved += g_ids[v] != s_ids[v] || memcmp(g_pos + 3 * v, s_pos + 3 * v, 12) != 0;
         }
@@ -883,6 +911,7 @@ static void test_crossings_on_their_segment(void)
     printf("  %u crossings; worst error of a triangle at a crossing: %.3g borrowed, %.3g on "
            "the segment (bound 2e-3)\n", crossings, snapped, placed);
     SW_CHECK(crossings > 0 && off_chord == 0 && moved == 0);
+    SW_CHECK_MSG(slid == 0, "%u of %u crossings slid along their chord", slid, crossings);
     SW_CHECK_MSG(placed < snapped, "on the segment %.3g, borrowed %.3g", placed, snapped);
 }
 
