@@ -1,0 +1,149 @@
+/* Runs of the loops during simplification (sw_seam_runs.h). */
+#include "sw_seam_runs.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static void push_run(sw_seam_runs *r, uint32_t run)
+{
+    uint32_t v = r->runs[run].vertex;
+    r->link[run] = r->first[v];
+    r->first[v] = run;
+}
+
+/* One loop's runs, linked in a cycle; returns the runs made. */
+static uint32_t loop_runs(sw_seam_runs *r, const sw_seam_host *g, uint32_t l, uint32_t at)
+{
+    const sw_seam_loop *loop = &g->loops[l];
+    uint32_t n = loop->slot_count, start = 0;
+    /* start at a slot whose predecessor shows another vertex */
+    while (start < n && g->slots[loop->first_slot + start].vertex ==
+                            g->slots[loop->first_slot + (start + n - 1) % n].vertex)
+        start++;
+    if (start == n)
+        start = 0;
+    uint32_t made = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t slot = loop->first_slot + (start + i) % n;
+        if (made && r->runs[at + made - 1].vertex == g->slots[slot].vertex)
+            continue;
+        r->runs[at + made] = (sw_seam_run){g->slots[slot].vertex, slot, at + made - 1, at + made + 1};
+        r->loop_of[at + made] = l;
+        made++;
+    }
+    r->runs[at].prev = at + made - 1;
+    r->runs[at + made - 1].next = at;
+    for (uint32_t i = 0; i < made; i++)
+        push_run(r, at + i);
+    r->loop_runs[l] = made;
+    return made;
+}
+
+sw_status sw_seam_runs_init(sw_seam_runs *r, const sw_seam_host *g, uint32_t vertex_cap,
+                            sw_error *err)
+{
+    *r = (sw_seam_runs){0};
+    r->runs = malloc(((size_t)g->slot_count + 1) * sizeof *r->runs);
+    r->link = malloc(((size_t)g->slot_count + 1) * sizeof *r->link);
+    r->loop_of = malloc(((size_t)g->slot_count + 1) * sizeof *r->loop_of);
+    r->first = malloc(((size_t)vertex_cap + 1) * sizeof *r->first);
+    r->loop_runs = malloc(((size_t)g->loop_count + 1) * sizeof *r->loop_runs);
+    if (!r->runs || !r->link || !r->loop_of || !r->first || !r->loop_runs) {
+        sw_seam_runs_free(r);
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
+    }
+    for (uint32_t v = 0; v < vertex_cap; v++)
+        r->first[v] = SW_SEAM_NONE;
+    for (uint32_t l = 0, at = 0; l < g->loop_count; l++)
+        at += loop_runs(r, g, l, at);
+    return SW_OK;
+}
+
+static double dist3(const float a[3], const float b[3])
+{
+    double dx = (double)a[0] - b[0], dy = (double)a[1] - b[1], dz = (double)a[2] - b[2];
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* Distance in (u, v) from p to the segment a-b; *len gets |a b|. */
+static double uv_seg_dist(const float p[2], const float a[2], const float b[2], double *len)
+{
+    double ab[2] = {(double)b[0] - a[0], (double)b[1] - a[1]};
+    double ap[2] = {(double)p[0] - a[0], (double)p[1] - a[1]};
+    double len2 = ab[0] * ab[0] + ab[1] * ab[1];
+    double t = len2 > 0 ? fmin(fmax((ap[0] * ab[0] + ap[1] * ab[1]) / len2, 0.0), 1.0) : 0.0;
+    *len = sqrt(len2);
+    return hypot(ap[0] - t * ab[0], ap[1] - t * ab[1]);
+}
+
+/* The cost at one run of v1 (see the header). */
+static double run_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t n, uint32_t v2)
+{
+    const sw_seam_run *run = &r->runs[n], *p = &r->runs[run->prev], *q = &r->runs[run->next];
+    const sw_seam_vertex *vx = g->vertices;
+    if (p->vertex != v2 && q->vertex != v2)
+        return dist3(vx[run->vertex].p, vx[v2].p);
+    if (r->loop_runs[r->loop_of[n]] < 4)
+        return 0.0; /* the loop vanishes: nothing left to stray */
+    /* merged: the run it joins and the other side's run span the new chord */
+    const sw_seam_run *m = p->vertex == v2 ? p : q;
+    const sw_seam_run *o = p->vertex == v2 ? (q->vertex == v2 ? &r->runs[q->next] : q) : p;
+    double len;
+    double off = uv_seg_dist(g->slots[run->slot].uv, g->slots[m->slot].uv, g->slots[o->slot].uv,
+                             &len);
+    return len > 0 ? off * dist3(vx[v2].p, vx[o->vertex].p) / len : 0.0;
+}
+
+double sw_seam_runs_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t v1, uint32_t v2)
+{
+    double cost = 0.0;
+    for (uint32_t n = r->first[v1]; n != SW_SEAM_NONE; n = r->link[n])
+        cost = fmax(cost, run_cost(r, g, n, v2));
+    return cost;
+}
+
+static void unlink_run(sw_seam_runs *r, uint32_t n)
+{
+    sw_seam_run *run = &r->runs[n];
+    r->runs[run->prev].next = run->next;
+    r->runs[run->next].prev = run->prev;
+    r->loop_runs[r->loop_of[n]]--;
+    run->vertex = SW_SEAM_NONE;
+}
+
+void sw_seam_runs_collapse(sw_seam_runs *r, uint32_t v1, uint32_t v2, uint32_t vn)
+{
+    /* v1's runs next to a run of v2 join it (v2's (u, v) wins, as at run
+     * time); the rest of v1's and all of v2's now show vn */
+    for (uint32_t n = r->first[v1]; n != SW_SEAM_NONE; n = r->link[n]) {
+        sw_seam_run *run = &r->runs[n];
+        uint32_t p = run->prev, q = run->next;
+        if (r->runs[p].vertex != v2 && r->runs[q].vertex != v2)
+            continue;
+        unlink_run(r, n);
+        if (r->runs[p].vertex == v2 && r->runs[q].vertex == v2 && p != q)
+            unlink_run(r, q); /* v2, v1, v2: one run, at the first's (u, v) */
+    }
+    uint32_t list = SW_SEAM_NONE;
+    for (int side = 0; side < 2; side++)
+        for (uint32_t n = r->first[side ? v2 : v1], next; n != SW_SEAM_NONE; n = next) {
+            next = r->link[n];
+            if (r->runs[n].vertex == SW_SEAM_NONE)
+                continue;
+            r->runs[n].vertex = vn;
+            r->link[n] = list;
+            list = n;
+        }
+    r->first[v1] = r->first[v2] = SW_SEAM_NONE;
+    r->first[vn] = list;
+}
+
+void sw_seam_runs_free(sw_seam_runs *r)
+{
+    free(r->runs);
+    free(r->link);
+    free(r->loop_of);
+    free(r->first);
+    free(r->loop_runs);
+    *r = (sw_seam_runs){0};
+}

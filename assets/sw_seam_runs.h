@@ -1,0 +1,51 @@
+/* The loops' current polylines while the collapse hierarchy is built
+ * (assets/sw_seam_simplify.c), as the runtime will draw them
+ * (core/sw_seam_select.h): per loop a cyclic list of runs, each showing one
+ * live vertex at the (u, v) of one of its slots. The simplifier asks what a
+ * collapse would do in parameter space, which its model-space error cannot
+ * see: a border that is straight in space but curved in (u, v) (a planar
+ * cut through a helical surface, the screw's ends) loses its curve when
+ * collapsed at no model-space cost, and the tessellation, which fills the
+ * region inside the (u, v) polyline, then draws the triangles along it far
+ * off the surface. */
+#ifndef SW_SEAM_RUNS_H
+#define SW_SEAM_RUNS_H
+
+#include "sw_seam_build.h"
+
+typedef struct sw_seam_run {
+    uint32_t vertex;     /* the live vertex the run shows */
+    uint32_t slot;       /* the slot whose (u, v) it is drawn at */
+    uint32_t prev, next; /* neighbouring runs of its loop */
+} sw_seam_run;
+
+typedef struct sw_seam_runs {
+    sw_seam_run *runs;   /* at most one per slot */
+    uint32_t *first;     /* per vertex: its runs are first[v] .. via link */
+    uint32_t *link;      /* per run: the vertex's next run, SW_SEAM_NONE at the end */
+    uint32_t *loop_runs; /* per loop: how many runs are left */
+    uint32_t *loop_of;   /* per run: its loop */
+} sw_seam_runs;
+
+/* Runs of graph's original loops: consecutive slots of one vertex are one
+ * run, at the first slot's (u, v). vertex_cap: the vertices the hierarchy
+ * will have (original_count * 2). SW_ERR_NO_MEMORY when malloc fails. */
+sw_status sw_seam_runs_init(sw_seam_runs *r, const sw_seam_host *graph, uint32_t vertex_cap,
+                            sw_error *err);
+
+/* The parameter-space cost of collapsing v1 into v2, in model units: over
+ * the loops where v1 shows, where its run merges into a neighbouring run of
+ * v2, the distance of v1's (u, v) from the new (u, v) chord times the
+ * chord's model-space length per unit of (u, v) (an estimate of how far the
+ * surface along the chord strays from the model-space chord, not a bound);
+ * where v2 is not next to it, the run stays at v1's (u, v) but moves to v2's
+ * position: |v1 v2|. */
+double sw_seam_runs_cost(const sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1,
+                         uint32_t v2);
+
+/* Applies collapse v1 -> v2 into vn (vn's position is v2's). */
+void sw_seam_runs_collapse(sw_seam_runs *r, uint32_t v1, uint32_t v2, uint32_t vn);
+
+void sw_seam_runs_free(sw_seam_runs *r);
+
+#endif
