@@ -6,6 +6,7 @@
  * Warnings (entities an importer skipped) are printed after a successful
  * build; --strict makes them failures. */
 #include <inttypes.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -224,6 +225,17 @@ typedef struct seam_summary {
     double simplify_s;
 } seam_summary;
 
+/* The simplifier's view of the exact surfaces (sw_seam_runs.h). */
+static void model_point(void *ctx, uint32_t surface, double u, double v, double out[3])
+{
+    const sw_model *model = ctx;
+    sw_nurbs_surface view = sw_model_surface_view(&model->surfaces[surface]);
+    u = fmin(fmax(u, view.knots_u[view.degree_u]), view.knots_u[view.count_u]);
+    v = fmin(fmax(v, view.knots_v[view.degree_v]), view.knots_v[view.count_v]);
+    sw_vec3 p = sw_nurbs_surface_point(&view, u, v);
+    out[0] = p.x, out[1] = p.y, out[2] = p.z;
+}
+
 static sw_status build_seams(const build_options *o, progress_context *pc, const sw_model *model,
                              sw_seam_host *seams, seam_summary *summary, sw_error *err)
 {
@@ -233,7 +245,8 @@ static sw_status build_seams(const build_options *o, progress_context *pc, const
     if (st == SW_OK) {
         on_progress(pc, "simplifying seams", 0.0);
         double t0 = now_s();
-        st = sw_seam_simplify(seams, err);
+        const sw_seam_surface_eval eval = { model_point, (void *)model };
+        st = sw_seam_simplify_on(seams, &eval, err);
         summary->simplify_s = now_s() - t0;
         summary->collapses = seams->collapse_count;
     }

@@ -65,15 +65,47 @@ static double dist3(const float a[3], const float b[3])
     return sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-/* Distance in (u, v) from p to the segment a-b; *len gets |a b|. */
-static double uv_seg_dist(const float p[2], const float a[2], const float b[2], double *len)
+/* Distance in (u, v) from p to the segment a-b; *len gets |a b|, *t the
+ * segment parameter of the nearest point. */
+static double uv_seg_dist(const float p[2], const float a[2], const float b[2], double *len,
+                          double *t)
 {
     double ab[2] = {(double)b[0] - a[0], (double)b[1] - a[1]};
     double ap[2] = {(double)p[0] - a[0], (double)p[1] - a[1]};
     double len2 = ab[0] * ab[0] + ab[1] * ab[1];
-    double t = len2 > 0 ? fmin(fmax((ap[0] * ab[0] + ap[1] * ab[1]) / len2, 0.0), 1.0) : 0.0;
+    *t = len2 > 0 ? fmin(fmax((ap[0] * ab[0] + ap[1] * ab[1]) / len2, 0.0), 1.0) : 0.0;
     *len = sqrt(len2);
-    return hypot(ap[0] - t * ab[0], ap[1] - t * ab[1]);
+    return hypot(ap[0] - *t * ab[0], ap[1] - *t * ab[1]);
+}
+
+/* Distance from p to the model-space segment a-b. */
+static double seg_dist3(const double p[3], const float a[3], const float b[3])
+{
+    double ab[3], ap[3], t = 0, len2 = 0, d2 = 0;
+    for (int k = 0; k < 3; k++) {
+        ab[k] = (double)b[k] - a[k], ap[k] = p[k] - a[k];
+        t += ap[k] * ab[k], len2 += ab[k] * ab[k];
+    }
+    t = len2 > 0 ? fmin(fmax(t / len2, 0.0), 1.0) : 0.0;
+    for (int k = 0; k < 3; k++)
+        d2 += (ap[k] - t * ab[k]) * (ap[k] - t * ab[k]);
+    return sqrt(d2);
+}
+
+/* The surface along the (u, v) chord a-b against the model-space chord
+ * pa-pb, at the quarters and at t. */
+static double chord_stray(const sw_seam_runs *r, uint32_t surface, const float a[2],
+                          const float b[2], const float pa[3], const float pb[3], double t)
+{
+    const double at[4] = {0.25, 0.5, 0.75, t};
+    double worst = 0;
+    for (int i = 0; i < 4; i++) {
+        double q[3];
+        r->eval->point(r->eval->ctx, surface, a[0] + at[i] * ((double)b[0] - a[0]),
+                       a[1] + at[i] * ((double)b[1] - a[1]), q);
+        worst = fmax(worst, seg_dist3(q, pa, pb));
+    }
+    return worst;
 }
 
 /* The cost at one run of v1 (see the header). */
@@ -88,9 +120,11 @@ static double run_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t n,
     /* merged: the run it joins and the other side's run span the new chord */
     const sw_seam_run *m = p->vertex == v2 ? p : q;
     const sw_seam_run *o = p->vertex == v2 ? (q->vertex == v2 ? &r->runs[q->next] : q) : p;
-    double len;
-    double off = uv_seg_dist(g->slots[run->slot].uv, g->slots[m->slot].uv, g->slots[o->slot].uv,
-                             &len);
+    const float *uv_m = g->slots[m->slot].uv, *uv_o = g->slots[o->slot].uv;
+    double len, t, off = uv_seg_dist(g->slots[run->slot].uv, uv_m, uv_o, &len, &t);
+    if (r->eval)
+        return chord_stray(r, g->loops[r->loop_of[n]].surface, uv_m, uv_o, vx[v2].p,
+                           vx[o->vertex].p, t);
     return len > 0 ? off * dist3(vx[v2].p, vx[o->vertex].p) / len : 0.0;
 }
 

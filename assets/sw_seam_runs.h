@@ -19,7 +19,15 @@ typedef struct sw_seam_run {
     uint32_t prev, next; /* neighbouring runs of its loop */
 } sw_seam_run;
 
+/* The exact surface, where the caller has it: point of surface s at (u, v)
+ * in the loops' parameter space. */
+typedef struct sw_seam_surface_eval {
+    void (*point)(void *ctx, uint32_t surface, double u, double v, double out[3]);
+    void *ctx;
+} sw_seam_surface_eval;
+
 typedef struct sw_seam_runs {
+    const sw_seam_surface_eval *eval; /* NULL: the cost is estimated (below) */
     sw_seam_run *runs;   /* at most one per slot */
     uint32_t *first;     /* per vertex: its runs are first[v] .. via link */
     uint32_t *link;      /* per run: the vertex's next run, SW_SEAM_NONE at the end */
@@ -33,13 +41,15 @@ typedef struct sw_seam_runs {
 sw_status sw_seam_runs_init(sw_seam_runs *r, const sw_seam_host *graph, uint32_t vertex_cap,
                             sw_error *err);
 
-/* The parameter-space cost of collapsing v1 into v2, in model units: over
- * the loops where v1 shows, where its run merges into a neighbouring run of
- * v2, the distance of v1's (u, v) from the new (u, v) chord times the
- * chord's model-space length per unit of (u, v) (an estimate of how far the
- * surface along the chord strays from the model-space chord, not a bound);
- * where v2 is not next to it, the run stays at v1's (u, v) but moves to v2's
- * position: |v1 v2|. */
+/* The parameter-space cost of collapsing v1 into v2, in model units, over
+ * the loops where v1 shows. Where its run merges into a neighbouring run of
+ * v2: how far the surface along the new (u, v) chord strays from the new
+ * model-space chord, sampled at a quarter, half and three quarters of it
+ * and where v1's (u, v) projects onto it, when r->eval is set; else
+ * estimated as the distance of v1's (u, v) from the chord times the chord's
+ * model-space length per unit of (u, v) (blind to a surface whose scale
+ * across the chord is larger than along it). Where v2 is not next to it,
+ * the run stays at v1's (u, v) but moves to v2's position: |v1 v2|. */
 double sw_seam_runs_cost(const sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1,
                          uint32_t v2);
 

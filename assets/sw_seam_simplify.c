@@ -371,6 +371,11 @@ static void restore(sw_seam_host *g, uint32_t original)
 
 sw_status sw_seam_simplify(sw_seam_host *g, sw_error *err)
 {
+    return sw_seam_simplify_on(g, NULL, err);
+}
+
+sw_status sw_seam_simplify_on(sw_seam_host *g, const sw_seam_surface_eval *eval, sw_error *err)
+{
     if (!g)
         return sw_error_set(err, SW_ERR_ARG, "seam simplify: no graph");
     sw_status st = check_original(g, err);
@@ -392,6 +397,7 @@ sw_status sw_seam_simplify(sw_seam_host *g, sw_error *err)
         st = build_adjacency(&S, err);
     if (st == SW_OK)
         st = sw_seam_runs_init(&S.runs, g, (uint32_t)cap, err);
+    S.runs.eval = eval;
     if (st == SW_OK)
         st = grow_host(g, cap, err);
     uint32_t original = g->original_count;

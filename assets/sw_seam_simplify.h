@@ -6,6 +6,7 @@
 #define SW_SEAM_SIMPLIFY_H
 
 #include "sw_seam_build.h"
+#include "sw_seam_runs.h"
 
 /* Takes graph as sewing leaves it (original vertices only: no collapses,
  * every child SW_SEAM_NONE, every error 0) and appends the collapses and the
@@ -29,5 +30,11 @@
  * SW_ERR_RANGE for a malformed graph, SW_ERR_NO_MEMORY when malloc fails;
  * on failure graph is left as it came in (children and counts restored). */
 sw_status sw_seam_simplify(sw_seam_host *graph, sw_error *err);
+
+/* The same with the exact surfaces at hand for the parameter-space term of
+ * epsilon (sw_seam_runs.h; beyond the paper, whose epsilon is model space
+ * only); eval NULL estimates it from the loops alone, as sw_seam_simplify. */
+sw_status sw_seam_simplify_on(sw_seam_host *graph, const sw_seam_surface_eval *eval,
+                              sw_error *err);
 
 #endif
