@@ -414,6 +414,8 @@ static sw_status tessellate(const sw_trim_patch *patches, uint32_t patch_count,
     c.max_vertices = max_vertices_of(opt, out ? out->base_vertex : 0);
     c.max_depth = max_depth_of(opt);
     c.crossing_on_segment = opt && opt->crossing_on_segment;
+    c.border_error = opt && opt->border_fraction > 0 && opt->border_fraction < 1
+                         ? error_world * opt->border_fraction : error_world;
     size_t mark = sw_arena_mark(scratch);
     s = run(&c);
     sw_arena_reset_to(scratch, mark);

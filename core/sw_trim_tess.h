@@ -106,11 +106,17 @@ typedef struct sw_trim_tess_options {
      * distorted by up to half a seam segment, which with the Seam Graph's
      * coarse seams far exceeded the bound: 10 px on the teaset).
      * 1: a crossing is placed on its seam segment, the straight 3D chord
-     * between the two loop points, at the crossing's fraction along it, and
-     * gets id SW_TRIM_CROSSING. The neighbour across the seam draws that same
-     * chord, so the border stays closed (a T-vertex on a straight edge, not a
-     * gap), and the triangles follow the surface. */
+     * between the two loop points, where the chord comes nearest the surface
+     * at the crossing's (u, v), and gets id SW_TRIM_CROSSING. The neighbour
+     * across the seam draws that same chord, so the border stays closed (a
+     * T-vertex on a straight edge, not a gap), and the triangles follow the
+     * surface. */
     int crossing_on_segment;
+    /* Error for cells a loop runs through, as a fraction of error (0: 1).
+     * Their triangles take border points from the loops, which are off the
+     * surface by the loops' own error: with loops within (1 - f) * error,
+     * f * error here keeps the border triangles within error too. */
+    double border_fraction;
 } sw_trim_tess_options;
 
 /* Caller-owned output. positions and normals hold 3 floats per vertex; uvs

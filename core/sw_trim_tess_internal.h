@@ -41,6 +41,7 @@ typedef struct tt_ctx {
     uint32_t *stamp;
     uint32_t max_vertices, max_depth;
     int crossing_on_segment;
+    double border_error;     /* error for cells a loop runs through */
     /* tree */
     tt_leaf *leaves;
     uint32_t leaf_count, leaf_cap;

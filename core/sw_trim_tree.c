@@ -399,17 +399,18 @@ static sw_status visit(tt_ctx *c, tt_stack *st, uint32_t top, int *pushed)
     if (s != SW_OK)
         return s;
     double e = (b.uu + 2 * b.uv + b.vv) / 8;
+    double target = f.list_count > 0 ? c->border_error : c->error;
     int forced = f.list_count > 0 && trims_too_complex(c, &f.r, c->list + f.list_off,
                                                        f.list_count);
     int axis = 0;
     double at = 0;
-    int split = (e > c->error || forced) && f.depth < c->max_depth;
+    int split = (e > target || forced) && f.depth < c->max_depth;
     if (split) {
-        axis = e > c->error ? b.vv > b.uu : longer_axis(&cell);
-        split = place_split(c, &f, axis, e > c->error ? split_fraction(&cell, axis) : 0.5, &at);
+        axis = e > target ? b.vv > b.uu : longer_axis(&cell);
+        split = place_split(c, &f, axis, e > target ? split_fraction(&cell, axis) : 0.5, &at);
     }
     if (!split) {
-        c->res->capped_count += e > c->error;
+        c->res->capped_count += e > target;
         c->res->error_bound = fmax(c->res->error_bound, e);
         return add_leaf(c, &f);
     }

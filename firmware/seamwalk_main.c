@@ -6,6 +6,7 @@
  * This build renders headless only (EGL surfaceless); device displays and
  * input come with later work. The main thread is the GL thread. */
 #include <errno.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -279,10 +280,17 @@ static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uin
         s->surfaces_vanished_max = f.vanished_surfaces;
     if (f.failed_surfaces > s->surfaces_failed_max)
         s->surfaces_failed_max = f.failed_surfaces;
+    if (f.holes_filled > s->surfaces_holes_filled_max)
+        s->surfaces_holes_filled_max = f.holes_filled;
     if (measuring && f.cracks > s->cracks_max)
         s->cracks_max = f.cracks;
     if (f.crossings > s->seam_crossings_max)
         s->seam_crossings_max = f.crossings;
+    if (measuring) {
+        s->seam_error_beyond_sewing_px = fmax(s->seam_error_beyond_sewing_px,
+                                              f.error_beyond_sewing_px);
+        s->seam_sewing_offset_px = fmax(s->seam_sewing_offset_px, f.sewing_offset_px);
+    }
     return SW_OK;
 }
 

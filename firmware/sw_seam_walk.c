@@ -5,6 +5,15 @@
 #include <string.h>
 #include <time.h>
 
+/* The share of a surface's bound its seams get; the cells the seams run
+ * through get the rest. A border triangle is off the surface by the seam's
+ * error plus its cell's, so the two shares add up to the bound (with the
+ * whole bound each, the hammer's border triangles reached 1.14 of it);
+ * interior cells still get the whole bound. */
+#define SW_SEAM_WALK_SEAM_SHARE 0.35
+
+enum { SW_SEAM_WALK_TINY = 2 }; /* w->visible: in view, smaller than its bound */
+
 /* Bounds of invisible surfaces: as coarse as the hierarchy goes (their
  * vertices still meet the bounds of visible neighbours that show them). */
 #define SW_SEAM_INVISIBLE_BOUND 1e30f
@@ -39,7 +48,7 @@ size_t sw_seam_walk_arena_bytes(const sw_pack *pack)
 {
     surface_sizes m = largest_surface(pack);
     size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES, i = SW_SEAM_WALK_INDICES;
-    return sw_seam_select_arena_bytes(&pack->seam) + sw_arena_worst_case(n * 5 + 1, 64) +
+    return sw_seam_select_arena_bytes(&pack->seam) + sw_arena_worst_case(n * 17 + 1, 64) +
            sw_arena_worst_case((m.points + 1) * (sizeof(sw_seam_point) + sizeof(sw_trim_point)), 64) +
            sw_arena_worst_case((m.loops + 1) * sizeof(uint32_t), 64) +
            sw_arena_worst_case((m.patches + 1) * sizeof(sw_trim_patch), 64) +
@@ -53,6 +62,78 @@ static void *take(sw_arena *a, size_t bytes, int *failed)
     void *p = sw_arena_alloc(a, bytes + 1, 64);
     *failed |= p == NULL;
     return p;
+}
+
+/* The patch of the surface whose domain holds (u, v) (the nearest one for
+ * points an ulp outside), and the point's local parameters in it. */
+static const sw_trim_patch *patch_at(const sw_seam_walk *w, uint32_t n, double u, double v,
+                                     double *s, double *t)
+{
+    const sw_trim_patch *best = &w->patches[0];
+    double best_out = INFINITY;
+    for (uint32_t i = 0; i < n; i++) {
+        const float *d = w->patches[i].domain;
+        double out = fmax(fmax(d[0] - u, u - d[1]), fmax(d[2] - v, v - d[3]));
+        if (out < best_out)
+            best_out = out, best = &w->patches[i];
+    }
+    const float *d = best->domain;
+    *s = fmin(fmax((u - d[0]) / (d[1] - d[0]), 0.0), 1.0);
+    *t = fmin(fmax((v - d[2]) / (d[3] - d[2]), 0.0), 1.0);
+    return best;
+}
+
+/* The exact surface (its patches in w->patches) at (u, v). */
+static sw_vec3 surface_point(const sw_seam_walk *w, uint32_t patch_count, double u, double v)
+{
+    double s, t, ctrl[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
+    const sw_trim_patch *tp = patch_at(w, patch_count, u, v, &s, &t);
+    sw_bezier_patch exact = sw_bezier_patch_from_float(&tp->patch, ctrl);
+    sw_surface_point sp;
+    sw_bezier_eval(&exact, s, t, SW_EVAL_POINT, &sp);
+    return sp.p;
+}
+
+/* Each surface's sewing offset: how far its sewn border (the original
+ * polylines, at full detail) lies from the surface, at each slot and at the
+ * middle of each segment, against the surface at the same (u, v). The
+ * sewing moves vertices up to the tolerance to close a file's gaps, and the
+ * polylines are flat to half the tolerance, so near views whose bound is
+ * finer than that see the border off by up to this much. Once, at init. */
+static double border_offset(const sw_seam_walk *w, uint32_t patch_count, const sw_seam_loop *loop)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    double worst = 0;
+    for (uint32_t k = 0; k < loop->slot_count; k++) {
+        const sw_seam_slot *a = &g->slots[loop->first_slot + k];
+        const sw_seam_slot *b = &g->slots[loop->first_slot + (k + 1) % loop->slot_count];
+        const float *p = g->vertices[a->vertex].p, *q = g->vertices[b->vertex].p;
+        sw_vec3 at = surface_point(w, patch_count, a->uv[0], a->uv[1]);
+        sw_vec3 mid = surface_point(w, patch_count, 0.5 * ((double)a->uv[0] + b->uv[0]),
+                                    0.5 * ((double)a->uv[1] + b->uv[1]));
+        sw_vec3 chord = sw_v3(0.5 * ((double)p[0] + q[0]), 0.5 * ((double)p[1] + q[1]),
+                              0.5 * ((double)p[2] + q[2]));
+        worst = fmax(worst, sw_v3_length(sw_v3_sub(at, sw_v3(p[0], p[1], p[2]))));
+        worst = fmax(worst, sw_v3_length(sw_v3_sub(mid, chord)));
+    }
+    return worst;
+}
+
+static sw_status measure_sewing(sw_seam_walk *w, sw_error *err)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    for (uint32_t s = 0; s < g->surface_count; s++) {
+        uint32_t patch_count = 0;
+        sw_status st = sw_trim_patches_from_pack(w->pack, s, w->patches, w->max_patches,
+                                                 &patch_count, err);
+        if (st != SW_OK)
+            return st;
+        double worst = 0;
+        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+            worst = fmax(worst, border_offset(w, patch_count, &g->loops[l]));
+        w->sew_offset[s] = (float)worst;
+    }
+    return SW_OK;
 }
 
 sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
@@ -73,7 +154,10 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES;
     int failed = 0;
     w->bound = take(arena, n * sizeof(float), &failed);
+    w->seam_bound = take(arena, n * sizeof(float), &failed);
     w->visible = take(arena, n, &failed);
+    w->sew_offset = take(arena, n * sizeof(float), &failed);
+    w->depth = take(arena, n * sizeof(float), &failed);
     w->loop_points = take(arena, (m.points + 1) * sizeof(sw_seam_point), &failed);
     w->points = take(arena, (m.points + 1) * sizeof(sw_trim_point), &failed);
     w->loop_first = take(arena, (m.loops + 1) * sizeof(uint32_t), &failed);
@@ -90,25 +174,38 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the seam walk "
                             "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
     sw_arena_init(&w->scratch, scratch, scratch_bytes(&m));
-    return SW_OK;
+    return measure_sewing(w, err);
 }
 
-/* Visible when any of its patches' boxes is; depth the nearest of those. */
+/* Visible when any of its patches' boxes is; depth the nearest of those.
+ * A visible surface whose whole box fits within its bound is too small to
+ * draw: leaving it out is within the bound (the paper's vanishing patch,
+ * without waiting for its loops to collapse, which takes the seams' share
+ * of the bound: a few times farther). */
 static void cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
 {
     const sw_pack_surface *ps = &w->pack->surfaces[s];
     double depth = INFINITY;
+    sw_box all = { sw_v3(INFINITY, INFINITY, INFINITY), sw_v3(-INFINITY, -INFINITY, -INFINITY) };
     for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
         const sw_pack_patch *p = &w->pack->patches[i];
         sw_box box = { sw_v3(p->box_min[0], p->box_min[1], p->box_min[2]),
                        sw_v3(p->box_max[0], p->box_max[1], p->box_max[2]) };
         if (sw_frustum_test_box(&view->frustum, &box) != SW_CULL_OUTSIDE)
             depth = fmin(depth, sw_view_box_min_depth(view, &box));
+        all.min = sw_v3(fmin(all.min.x, box.min.x), fmin(all.min.y, box.min.y),
+                        fmin(all.min.z, box.min.z));
+        all.max = sw_v3(fmax(all.max.x, box.max.x), fmax(all.max.y, box.max.y),
+                        fmax(all.max.z, box.max.z));
     }
     w->visible[s] = isfinite(depth);
+    w->depth[s] = (float)depth;
     double bound = w->visible[s] ? sw_view_error_world(view, w->error_px, depth) : 0.0;
-    w->bound[s] = !w->visible[s] ? SW_SEAM_INVISIBLE_BOUND
-                                 : (float)fmax(bound, (double)w->bound_floor);
+    if (w->visible[s] && sw_v3_length(sw_v3_sub(all.max, all.min)) <= bound)
+        w->visible[s] = SW_SEAM_WALK_TINY;
+    w->bound[s] = w->visible[s] != 1 ? SW_SEAM_INVISIBLE_BOUND
+                                     : (float)fmax(bound, (double)w->bound_floor);
+    w->seam_bound[s] = w->bound[s] * (float)SW_SEAM_WALK_SEAM_SHARE;
 }
 
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
@@ -117,10 +214,10 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     memset(frame, 0, sizeof *frame);
     for (uint32_t s = 0; s < w->pack->seam.surface_count; s++) {
         cull_surface(w, view, s);
-        frame->visible_surfaces += w->visible[s];
+        frame->visible_surfaces += w->visible[s] != 0;
     }
     sw_seam_update_result r;
-    sw_status st = sw_seam_select_update(&w->select, w->bound, 0, &r, err);
+    sw_status st = sw_seam_select_update(&w->select, w->seam_bound, 0, &r, err);
     if (st != SW_OK)
         return st;
     /* The front's own count: sw_seam_select_count would walk every loop. */
@@ -128,33 +225,39 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     return SW_OK;
 }
 
-/* The surface's current loops as the tessellator takes them; 0 when its
- * outer loop has vanished (then it is not drawn). */
-static int gather_loops(sw_seam_walk *w, uint32_t s, sw_trim_loops *loops)
+/* The surface's current loops as the tessellator takes them, the outer ones
+ * first (*outer of them); 0 when its outer loop has vanished (then it is not
+ * drawn). */
+static int gather_loops(sw_seam_walk *w, uint32_t s, sw_trim_loops *loops, uint32_t *outer)
 {
     const sw_seam_graph *g = &w->pack->seam;
     uint32_t total = 0, k = 0;
     w->loop_first[0] = 0;
-    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++) {
-        uint32_t count = 0;
-        int vanished = 0;
-        /* Cannot fail: l is in range and the buffer holds the surface's slots. */
-        sw_seam_select_loop(&w->select, l, w->bound[s], w->loop_points + total,
-                            w->max_points - total, &count, &vanished, NULL);
-        if (vanished) {
-            if (g->loops[l].flags & SW_SEAM_LOOP_OUTER)
+    for (int holes = 0; holes < 2; holes++) {
+        if (holes)
+            *outer = k;
+        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++) {
+            if ((!(g->loops[l].flags & SW_SEAM_LOOP_OUTER)) != holes)
+                continue;
+            uint32_t count = 0;
+            int vanished = 0;
+            /* Cannot fail: l is in range and the buffer holds the surface's slots. */
+            sw_seam_select_loop(&w->select, l, w->seam_bound[s], w->loop_points + total,
+                                w->max_points - total, &count, &vanished, NULL);
+            if (vanished && !holes)
                 return 0;
-            continue;
+            for (uint32_t i = 0; i < count && !vanished; i++) {
+                const sw_seam_point *sp = &w->loop_points[total + i];
+                sw_trim_point *tp = &w->points[total + i];
+                memcpy(tp->uv, sp->uv, sizeof tp->uv);
+                memcpy(tp->p, g->vertices[sp->vertex].p, sizeof tp->p);
+                tp->id = sp->vertex;
+            }
+            if (vanished)
+                continue;
+            total += count;
+            w->loop_first[++k] = total;
         }
-        for (uint32_t i = 0; i < count; i++) {
-            const sw_seam_point *sp = &w->loop_points[total + i];
-            sw_trim_point *tp = &w->points[total + i];
-            memcpy(tp->uv, sp->uv, sizeof tp->uv);
-            memcpy(tp->p, g->vertices[sp->vertex].p, sizeof tp->p);
-            tp->id = sp->vertex;
-        }
-        total += count;
-        w->loop_first[++k] = total;
     }
     *loops = (sw_trim_loops){ w->points, w->loop_first, k };
     return k > 0;
@@ -173,7 +276,8 @@ static sw_status tessellate(sw_seam_walk *w, uint32_t s, const sw_trim_loops *lo
                                  SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES, 0 };
     /* Crossings on their seam segment: the paper's snapping distorted the
      * border triangles far beyond the bound (sw_trim_tess.h). */
-    const sw_trim_tess_options opt = { .crossing_on_segment = 1 };
+    const sw_trim_tess_options opt = { .crossing_on_segment = 1,
+                                       .border_fraction = 1.0 - SW_SEAM_WALK_SEAM_SHARE };
     double bound = w->bound[s];
     for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
         st = sw_trim_tess(w->patches, *patch_count, loops, bound, &opt, &w->scratch, &out,
@@ -235,29 +339,11 @@ static uint64_t count_cracks(const sw_seam_walk *w, const sw_trim_tess_result *t
     return cracks;
 }
 
-/* The patch of the surface whose domain holds (u, v) (the nearest one for
- * points an ulp outside), and the point's local parameters in it. */
-static const sw_trim_patch *patch_at(const sw_seam_walk *w, uint32_t n, double u, double v,
-                                     double *s, double *t)
-{
-    const sw_trim_patch *best = &w->patches[0];
-    double best_out = INFINITY;
-    for (uint32_t i = 0; i < n; i++) {
-        const float *d = w->patches[i].domain;
-        double out = fmax(fmax(d[0] - u, u - d[1]), fmax(d[2] - v, v - d[3]));
-        if (out < best_out)
-            best_out = out, best = &w->patches[i];
-    }
-    const float *d = best->domain;
-    *s = fmin(fmax((u - d[0]) / (d[1] - d[0]), 0.0), 1.0);
-    *t = fmin(fmax((v - d[2]) / (d[3] - d[2]), 0.0), 1.0);
-    return best;
-}
-
 /* One sample: the flat triangle's point at barycentric weights b against the
- * exact surface at the same interpolated (u, v), in pixels at its depth. */
-static void sample(const sw_seam_walk *w, uint32_t n, const uint16_t idx[3], const double b[3],
-                   const sw_view *view, sw_stats *stats)
+ * exact surface at the same interpolated (u, v), in pixels at its depth;
+ * also what it exceeds the surface's sewing offset by, against the bound. */
+static void sample(const sw_seam_walk *w, uint32_t s, uint32_t n, const uint16_t idx[3],
+                   const double b[3], const sw_view *view, sw_stats *stats, sw_seam_frame *frame)
 {
     double flat[3] = { 0, 0, 0 }, uv[2] = { 0, 0 };
     for (int k = 0; k < 3; k++) {
@@ -266,26 +352,30 @@ static void sample(const sw_seam_walk *w, uint32_t n, const uint16_t idx[3], con
         for (int c = 0; c < 2; c++)
             uv[c] += b[k] * w->uvs[2 * idx[k] + c];
     }
-    double s, t;
-    const sw_trim_patch *tp = patch_at(w, n, uv[0], uv[1], &s, &t);
-    double ctrl[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
-    sw_bezier_patch exact = sw_bezier_patch_from_float(&tp->patch, ctrl);
-    sw_surface_point sp;
-    sw_bezier_eval(&exact, s, t, SW_EVAL_POINT, &sp);
-    double depth = fmax(sw_view_depth(view, sp.p), view->near_z);
-    double d = sw_v3_length(sw_v3_sub(sp.p, sw_v3(flat[0], flat[1], flat[2])));
-    sw_stats_add_error_px(stats, d * view->px_per_unit / depth);
+    sw_vec3 q = surface_point(w, n, uv[0], uv[1]);
+    double px = view->px_per_unit / fmax(sw_view_depth(view, q), view->near_z);
+    double d = sw_v3_length(sw_v3_sub(q, sw_v3(flat[0], flat[1], flat[2])));
+    sw_stats_add_error_px(stats, d * px);
+    /* in pixels where the bound is half a pixel; scaled down where the
+     * bound's floor (a tenth of the sewing tolerance) is coarser */
+    double allowed = fmax(w->error_px / px, (double)w->bound_floor);
+    frame->error_beyond_sewing_px = fmax(frame->error_beyond_sewing_px,
+                                         (d - (double)w->sew_offset[s]) / allowed * w->error_px);
 }
 
 /* Every triangle at its centroid and edge midpoints. */
-static void measure_surface(const sw_seam_walk *w, uint32_t patch_count,
-                            const sw_trim_tess_result *t, const sw_view *view, sw_stats *stats)
+static void measure_surface(const sw_seam_walk *w, uint32_t s, uint32_t patch_count,
+                            const sw_trim_tess_result *t, const sw_view *view, sw_stats *stats,
+                            sw_seam_frame *frame)
 {
     static const double weights[4][3] = { { 1 / 3.0, 1 / 3.0, 1 / 3.0 }, { 0.5, 0.5, 0 },
                                           { 0, 0.5, 0.5 }, { 0.5, 0, 0.5 } };
     for (uint32_t i = 0; i + 2 < t->index_count; i += 3)
         for (int k = 0; k < 4; k++)
-            sample(w, patch_count, w->indices + i, weights[k], view, stats);
+            sample(w, s, patch_count, w->indices + i, weights[k], view, stats, frame);
+    double depth = fmax((double)w->depth[s], view->near_z);
+    frame->sewing_offset_px = fmax(frame->sewing_offset_px,
+                                   w->sew_offset[s] * view->px_per_unit / depth);
 }
 
 void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, const sw_view *view, sw_stats *stats,
@@ -298,14 +388,28 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, const sw_view *view, sw_
     for (uint32_t s = 0; s < pack->seam.surface_count; s++) {
         if (!w->visible[s])
             continue;
+        if (w->visible[s] == SW_SEAM_WALK_TINY) {
+            frame->vanished_surfaces++;
+            continue;
+        }
         sw_trim_loops loops;
-        if (!gather_loops(w, s, &loops)) {
+        uint32_t outer = 0;
+        if (!gather_loops(w, s, &loops, &outer)) {
             frame->vanished_surfaces++;
             continue;
         }
         sw_trim_tess_result t;
         uint32_t patch_count = 0;
-        if (tessellate(w, s, &loops, &t, &patch_count) != SW_OK) {
+        sw_status st = tessellate(w, s, &loops, &t, &patch_count);
+        if (st == SW_ERR_FORMAT && outer < loops.loop_count) {
+            /* A hole's coarse polyline crosses another loop (both are within
+             * the bound of where they belong, and so of each other): drawn
+             * without its holes rather than not at all. */
+            loops.loop_count = outer;
+            st = tessellate(w, s, &loops, &t, &patch_count);
+            frame->holes_filled += st == SW_OK;
+        }
+        if (st != SW_OK) {
             frame->failed_surfaces++;
             continue;
         }
@@ -321,7 +425,7 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, const sw_view *view, sw_
         if (stats) {
             struct timespec a, b;
             clock_gettime(CLOCK_MONOTONIC, &a);
-            measure_surface(w, patch_count, &t, view, stats);
+            measure_surface(w, s, patch_count, &t, view, stats, frame);
             clock_gettime(CLOCK_MONOTONIC, &b);
             frame->measure_ms += (double)(b.tv_sec - a.tv_sec) * 1e3 + (b.tv_nsec - a.tv_nsec) * 1e-6;
         }

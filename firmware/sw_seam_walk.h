@@ -35,7 +35,9 @@ typedef struct sw_seam_walk {
     const sw_pack *pack;
     sw_seam_select select;
     float *bound;                 /* surface_count: this frame's error bound, model units */
-    uint8_t *visible;             /* surface_count */
+    float *seam_bound;            /* surface_count: its seams' share of it */
+    uint8_t *visible;             /* surface_count: 0 out of view, 1 drawn, 2 too small to
+                                     draw (its box within its bound) */
     sw_seam_point *loop_points;   /* the largest surface's slots */
     sw_trim_point *points;        /* the same, as the tessellator takes them */
     uint32_t *loop_first;         /* the most loops of a surface, + 1 */
@@ -48,6 +50,10 @@ typedef struct sw_seam_walk {
     sw_vertex *batch_vertices;
     uint16_t *batch_indices;
     uint32_t batch_vertex_count, batch_index_count;
+    float *sew_offset;            /* surface_count: its border's largest distance from the
+                                     surface, model units (sewing joins faces across the
+                                     file's gaps; no level of detail makes that smaller) */
+    float *depth;                 /* surface_count: this frame's nearest depth */
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
 } sw_seam_walk;
@@ -56,12 +62,21 @@ typedef struct sw_seam_frame {
     uint32_t visible_surfaces, drawn_surfaces, vanished_surfaces;
     uint32_t active_vertices;
     uint32_t failed_surfaces;     /* the tessellator refused them (not drawn) */
+    uint32_t holes_filled;        /* drawn without their holes: a hole's coarse polyline
+                                     crossed another loop, the tessellator refused the whole */
     uint64_t triangles;
     uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
                                      plus loop points the tessellator dropped */
     uint64_t crossings;           /* border vertices on a seam segment between its vertices
                                      (T-vertices on a straight edge, not gaps) */
     double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
+    double error_beyond_sewing_px;/* measured: the most a sample's error exceeds its surface's
+                                     sewing offset, what the level of detail and the
+                                     tessellation add: in pixels at the sample, scaled by
+                                     half a pixel over the bound where the bound's floor is
+                                     coarser than half a pixel (so <= error_px holds) */
+    double sewing_offset_px;      /* measured: the largest sewing offset of a drawn surface, in
+                                     pixels at its nearest depth */
 } sw_seam_frame;
 
 /* Bytes sw_seam_walk_init takes from its arena for this validated pack

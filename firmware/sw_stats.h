@@ -34,9 +34,11 @@ typedef struct sw_stats {
     uint64_t capped_patches_max; /* patches whose grid hit SW_TESS_MAX_SEGMENTS */
     int seams;                   /* the walk drew through the Seam Graph: the fields below */
     uint32_t seam_active_min, seam_active_max;       /* active seam vertices per frame */
-    uint32_t surfaces_vanished_max, surfaces_failed_max;
+    uint32_t surfaces_vanished_max, surfaces_failed_max, surfaces_holes_filled_max;
     uint64_t seam_crossings_max;  /* T-vertices on seam segments, per frame */
     uint64_t seam_arena_bytes, seam_arena_peak_bytes; /* the seam walk's own block */
+    double seam_error_beyond_sewing_px; /* measured error beyond each surface's sewing offset */
+    double seam_sewing_offset_px;       /* largest sewing offset of a drawn surface, pixels */
 
     double pack_open_ms, first_frame_ms, walk_s;
     uint64_t arena_bytes, arena_peak_bytes;
