@@ -3,7 +3,8 @@
 sw_add_test(test_procedural SOURCES test_procedural.c LIBS sw_assets sw_core)
 
 add_test(NAME test_gen
-  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_gen.sh $<TARGET_FILE:seamwalk-pack> procedural)
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_gen.sh $<TARGET_FILE:seamwalk-pack> procedural
+          $<TARGET_FILE:seamwalk> ${PROJECT_SOURCE_DIR})
 add_test(NAME test_gen_parts
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_gen.sh $<TARGET_FILE:seamwalk-pack> parts
           ${SW_SHARED_MODELS})

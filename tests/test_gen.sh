@@ -3,11 +3,15 @@
 # writes builds with seamwalk-pack into a pack of N Bezier patches (within 5%;
 # the plan is exact), with its viewpoints; the seed decides the scene; bad
 # arguments and part files fail cleanly and write nothing.
-#   test_gen.sh SEAMWALK_PACK procedural       generated objects only
+#   test_gen.sh SEAMWALK_PACK procedural [SEAMWALK SOURCE_DIR]
+#                                              generated objects only; with
+#                                              the walker, the 40000-patch
+#                                              showroom is walked close to far
+#                                              through its Seam Graph
 #   test_gen.sh SEAMWALK_PACK parts MODELS_DIR with copies of real parts
 # The parts mode exits 77 (skipped) when MODELS_DIR is absent.
 set -uo pipefail
-pack=$1 mode=$2 models=${3:-}
+pack=$1 mode=$2 models=${3:-} walker=${3:-} src=${4:-}
 work=$(mktemp -d "${TMPDIR:-/tmp}/sw_test_gen.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT
 failures=0 checks=0
@@ -67,6 +71,12 @@ procedural() {
              ! cmp -s '$work/small.ini' '$work/other.ini'"
   check "a tiny showroom (7 patches) builds exactly" builds_to 7 tiny
   check "40000 patches asked, within 5% built" builds_to 40000 large --seed 40
+  if [ -n "$walker" ]; then
+    "$pack" info --json "$work/large.swpack" > "$work/large.json"
+    check "the 40000-patch showroom close to far through its Seam Graph" \
+      bash "$src/tests/walk_near_far.sh" "$walker" "$work/large.swpack" "$work/large.json" "$work" \
+        "$src" --memory-mb 1024
+  fi
   check "missing --patches is a usage error" fails_with 2 "missing --patches" showroom -o "$work/bad.ini"
   check "--patches 0 is a usage error" fails_with 2 "--patches" showroom --patches 0 -o "$work/bad.ini"
   check "--patches 12x is a usage error" fails_with 2 "12x" showroom --patches 12x -o "$work/bad.ini"

@@ -3,9 +3,11 @@
 #   test_models.sh MODEL_FILE BUILD_DIR SOURCE_DIR
 # builds its pack (time and info counts printed), verifies it, walks it
 # headless around an orbit with pictures and stats, and checks that the model
-# is in every picture, that the stats hold their contract, and, for IGES and
-# STEP files, that the pack has a surface per face OpenCASCADE finds in the
-# same file and a box that holds OCCT's and is not much larger. The pack's box
+# is in every picture, that the stats hold their contract, that a walk
+# through the Seam Graph from close to far holds its own (walk_near_far.sh),
+# and, for IGES and STEP files, that the pack has a surface per face
+# OpenCASCADE finds in the same file and a box that holds OCCT's and is not
+# much larger. The pack's box
 # is the control hull of the patches restricted to their trims: the corner
 # points of rational arcs stick out by up to (sqrt 2 - 1) of the radius (the
 # screw's: 20% of the diagonal), so "much larger" is 25% of the diagonal per
@@ -61,45 +63,9 @@ done
 [ $best -eq 1 ] || fail "no frame of the orbit shows the model across 5% of the picture"
 echo "  the model shows in all $(( frames / every )) pictures"
 
-# Through the Seam Graph from close to far (issue 4): views from 0.8 to 40
-# model sizes away, turning as they go, then the far end, where the whole
-# model spans half a pixel (the error bound: nothing there needs drawing).
-# Every view: no crack, no surface the tessellator refused, the error within
-# the bound beyond the sewing offset (check_stats.py --seams). The far end
-# alone: fewer triangles than patches.
-python3 - "$work/info.json" "$work" <<'PY' || fail "close-to-far path"
-import json, math, sys
-j = json.load(open(sys.argv[1]))
-lo, hi = j["box"]["min"], j["box"]["max"]
-c = [(a + b) / 2 for a, b in zip(lo, hi)]
-size = max(b - a for a, b in zip(lo, hi))
-px_per_unit = 240 / (2 * math.tan(math.radians(45) / 2))  # 320x240, seamwalk's 45 degrees
-dists = [0.8, 1.5, 3, 10, 40, math.dist(lo, hi) / size * px_per_unit / 0.5]
-with open(sys.argv[2] + "/near_far.path", "w") as near_far:
-    for i, k in enumerate(dists):
-        a = 0.7 + 1.1 * i
-        eye = (c[0] + k * size * math.cos(a), c[1] + 0.4 * k * size, c[2] + k * size * math.sin(a))
-        line = "%d %r %r %r %r %r %r 0 1 0\n" % ((i,) + eye + tuple(c))
-        near_far.write(line)
-        if k == dists[-1]:
-            open(sys.argv[2] + "/far.path", "w").write("0" + line[line.index(" "):])
-PY
-"$walker" --pack "$work/model.swpack" --headless 320x240 --path "$work/near_far.path" --frames 6 \
-  --measure-every 1 --seams --stats "$work/near_far.json" > "$work/near_far.log" \
-  || fail "walk --seams: $(tail -n 3 "$work/near_far.log")"
-python3 "$src/tests/check_stats.py" "$work/near_far.json" 6 --seams | sed 's/^/  seams: /'
-[ "${PIPESTATUS[0]}" -eq 0 ] || fail "stats through the Seam Graph"
-"$walker" --pack "$work/model.swpack" --headless 320x240 --path "$work/far.path" --frames 1 \
-  --seams --stats "$work/far.json" > /dev/null || fail "walk --seams, far"
-python3 - "$work/far.json" <<'PY' || fail "far end"
-import json, sys
-j = json.load(open(sys.argv[1]))
-tris, patches, seam = j["tris_per_frame"]["max"], j["patches"]["total"], j["seam"]
-print("  seams, at the far end: %d triangles for %d patches, %d surfaces vanished, %d active "
-      "seam vertices, cracks %d" % (tris, patches, seam["surfaces_vanished_max"],
-                                    seam["active_vertices_max"], j["cracks_max"]))
-assert tris < patches and j["cracks_max"] == 0
-PY
+# Through the Seam Graph from close to far (tests/walk_near_far.sh).
+bash "$src/tests/walk_near_far.sh" "$walker" "$work/model.swpack" "$work/info.json" "$work" "$src" \
+  || fail "close to far through the Seam Graph"
 
 case ${name,,} in *.igs|*.iges|*.stp|*.step) ;; *) echo "ok   $name (no independent reader for its bounds)"; exit 0 ;; esac
 "$measure" "$model" > "$work/occt.json" 2> "$work/occt.err"

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# A pack walked through the Seam Graph from close to far (issue 4):
+#   walk_near_far.sh WALKER PACK INFO.json WORK_DIR SOURCE_DIR [WALKER ARGS...]
+# Views from 0.8 to 40 model sizes away, turning as they go, then the far
+# end, where the whole model spans half a pixel (tests/near_far_path.py).
+# Every view, every frame measured: no crack, no surface the tessellator
+# refused, the error within the bound beyond the sewing offset
+# (check_stats.py --seams). The far end alone: fewer triangles than patches.
+# Prints what it checked; exit 1 on a failure.
+set -uo pipefail
+walker=$1 pack=$2 info=$3 work=$4 src=$5
+shift 5
+fail() { echo "FAIL: $*"; exit 1; }
+python3 "$src/tests/near_far_path.py" "$info" "$work" || fail "close-to-far path"
+"$walker" --pack "$pack" --headless 320x240 --path "$work/near_far.path" --frames 6 \
+  --measure-every 1 --seams --stats "$work/near_far.json" "$@" > "$work/near_far.log" \
+  || fail "walk --seams: $(tail -n 3 "$work/near_far.log")"
+python3 "$src/tests/check_stats.py" "$work/near_far.json" 6 --seams | sed 's/^/  seams: /'
+[ "${PIPESTATUS[0]}" -eq 0 ] || fail "stats through the Seam Graph"
+"$walker" --pack "$pack" --headless 320x240 --path "$work/far.path" --frames 1 --seams \
+  --stats "$work/far.json" "$@" > /dev/null || fail "walk --seams, far"
+python3 - "$work/near_far.json" "$work/far.json" <<'PY' || fail "far end"
+import json, sys
+near, far = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+tris, patches, seam = far["tris_per_frame"]["max"], far["patches"]["total"], far["seam"]
+print("  seams, close to far: %d..%d triangles, %d..%d active seam vertices, up to %d surfaces "
+      "vanished, %d drawn without holes, frame p50 %.1f ms"
+      % (near["tris_per_frame"]["median"], near["tris_per_frame"]["max"],
+         near["seam"]["active_vertices_min"], near["seam"]["active_vertices_max"],
+         near["seam"]["surfaces_vanished_max"], near["seam"]["surfaces_holes_filled_max"],
+         near["frame_ms"]["p50"]))
+print("  seams, at the far end: %d triangles for %d patches, %d surfaces vanished, cracks %d"
+      % (tris, patches, seam["surfaces_vanished_max"], far["cracks_max"]))
+assert tris < patches and far["cracks_max"] == 0
+PY
