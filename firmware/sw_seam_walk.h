@@ -2,10 +2,12 @@
  * 6.1 and 6.3), the path `seamwalk --seams` takes: per surface an error
  * bound from the view (half a pixel at the surface's nearest depth, never
  * below a tenth of the sewing tolerance), the view-dependent cut of the seam
- * hierarchy for those bounds (core/sw_seam_select.h), and every visible
- * surface tessellated inside its current loops (core/sw_trim_tess.h), its
- * border vertices the seam's own, then drawn. Surfaces whose outer loop has
- * vanished are not drawn: far away whole patches disappear.
+ * hierarchy for the seams' share of those bounds (core/sw_seam_select.h), and
+ * every visible surface tessellated inside its current loops
+ * (core/sw_trim_tess.h), the cells the loops cross to the rest of the bound,
+ * its border vertices the seam's own, then drawn. Surfaces whose outer loop
+ * has vanished, or whose box fits within their bound, are not drawn: far
+ * away whole patches disappear.
  *
  * Memory: one block sized once from the validated pack
  * (sw_seam_walk_arena_bytes) before the first frame; the frame functions
