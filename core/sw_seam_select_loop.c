@@ -42,9 +42,9 @@ static void emit(walk *w, const sw_seam_select *s, uint32_t x, uint32_t slot)
         w->distinct = 3;
 }
 
-/* The run's (u, v) for a vertex it does not pin: from its slot with the
- * smallest leaf position. Leaf order puts v2's side of every collapse first,
- * so that is the rule in the header. */
+/* The slot of the run (k0 .. k0 + len) whose (u, v) the header's rule picks:
+ * the smallest leaf position. Leaf order puts v2's side of every collapse
+ * first, so that is the rule. */
 static uint32_t rule_slot(const sw_seam_select *s, const sw_seam_loop *loop, uint32_t k0,
                           uint32_t len)
 {
@@ -165,7 +165,8 @@ static void walk_loop(const sw_seam_select *s, const sw_seam_loop *loop, float p
 }
 
 sw_status sw_seam_select_loop(const sw_seam_select *s, uint32_t loop, float pin,
-                              sw_seam_point *points, uint32_t capacity, uint32_t *count, int *vanished, sw_error *err)
+                              sw_seam_point *points, uint32_t capacity, uint32_t *count,
+                              int *vanished, sw_error *err)
 {
     if (count)
         *count = 0;
