@@ -915,10 +915,49 @@ static void test_crossings_on_their_segment(void)
     SW_CHECK_MSG(placed < snapped, "on the segment %.3g, borrowed %.3g", placed, snapped);
 }
 
+/* One tessellation with crossings on their segments and the given border
+ * fraction into the globals; the worst error of its border triangles. */
+static double border_worst(const surface *s, const loops *l, double error, double fraction,
+                           mesh *m)
+{
+    sw_arena a;
+    sw_arena_init(&a, g_block, sizeof g_block);
+    sw_trim_loops lv = view(l);
+    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0};
+    const sw_trim_tess_options opt = {.crossing_on_segment = 1, .border_fraction = fraction};
+    SW_CHECK(sw_trim_tess(s->patches, s->count, &lv, error, &opt, &a, &b, &m->res, NULL) == SW_OK);
+    m->nv = m->res.vertex_count, m->ni = m->res.index_count;
+    return worst_at(s, m, g_pos, g_ids, 0, UINT32_MAX - 1);
+}
+
+/* Cells a loop runs through take border_fraction of the error: the border
+ * triangles (those with a loop point or a crossing) get within that share
+ * of it plus the loop's own chord error (tiny here: 256 points on the
+ * circle), while the interior keeps the whole error. */
+static void test_border_cells_take_their_share(void)
+{
+    surface s;
+    make_bump(&s, 2);
+    loops l;
+    begin_loops(&l);
+    add_circle(&l, &s, 0.5, 0.5, 0.4, 256, 1);
+    const double error = 2e-3;
+    mesh whole, share;
+    double border_whole = border_worst(&s, &l, error, 0, &whole);
+    double border_share = border_worst(&s, &l, error, 0.5, &share);
+    printf("  border triangles' worst error: %.3g with the whole %.3g, %.3g with half; %u -> %u "
+           "triangles\n", border_whole, error, border_share, whole.ni / 3, share.ni / 3);
+    SW_CHECK_MSG(border_whole > 0.5 * error, "the case does not need the share: %g",
+                 border_whole);
+    SW_CHECK(border_share <= 0.5 * error + 1e-4);
+    SW_CHECK(share.ni > whole.ni && share.res.error_bound <= error);
+}
+
 int main(void)
 {
     SW_RUN(test_checks_detect_t_vertex_and_gap);
     SW_RUN(test_untrimmed_covers_domain_and_meets_bound);
+    SW_RUN(test_border_cells_take_their_share);
     SW_RUN(test_disc_with_hole);
     SW_RUN(test_cylinder_quarter);
     SW_RUN(test_trim_along_knot_line);
