@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, packs the built-in teaset
 # sample, walks it headless (an orbit of 120 frames at 1280x720) and leaves PNG
-# frames and a stats JSON in out/. Safe to run again.
+# frames and a stats JSON in out/; then walks the same orbit through the Seam
+# Graph (--seams: no cracks, whole patches vanish far away) into out/seams/.
+# Safe to run again.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
@@ -10,9 +12,12 @@ bash cmake/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc 2>/dev/null || echo 2)" --target seamwalk seamwalk-pack
 
-mkdir -p out
+mkdir -p out out/seams
 build/assets/seamwalk-pack build assets/samples/teaset.ini -o out/teaset.swpack
 build/assets/seamwalk-pack info out/teaset.swpack
 build/firmware/seamwalk --pack out/teaset.swpack --headless 1280x720 --orbit --frames 120 \
   --png-dir out/frames --png-every 10 --stats out/stats.json
-echo "seamwalk demo: pictures in $top/out/frames/, stats in $top/out/stats.json"
+build/firmware/seamwalk --pack out/teaset.swpack --headless 1280x720 --orbit --frames 120 \
+  --seams --png-dir out/seams/frames --png-every 10 --stats out/seams/stats.json
+echo "seamwalk demo: pictures in $top/out/frames/, stats in $top/out/stats.json;" \
+     "through the Seam Graph in $top/out/seams/"
