@@ -23,7 +23,7 @@ double sw_seam_default_tolerance(const sw_model *model, const sw_seam_options *o
     double diag = sw_box_is_empty(&box) ? 0 : sw_box_diagonal(&box);
     if (!(model->model_tolerance > 0))
         return diag > 0 ? 1e-5 * diag : 1e-3;
-    return fmax((double)model->model_tolerance, 1e-6 * diag);
+    return fmax((double)model->model_tolerance, 1e-5 * diag);
 }
 
 sw_status sw_seam_sew_model(const sw_model *model, const sw_seam_options *opt, sw_seam_host *out,
