@@ -41,7 +41,7 @@ static const char usage_text[] =
     "--iges-reader occt; STEP always through OpenCASCADE. --strict: entities an\n"
     "importer would skip are errors. --quiet: no progress bar, no summary.\n"
     "--seam-tolerance: how far apart trims may be and still be sewn into one seam\n"
-    "(default: the file's model tolerance, at least 1e-5 of the model's size).\n";
+    "(default: the file's model tolerance, at least 1e-5 of its smallest part's size).\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {

@@ -2,6 +2,7 @@
 #include "sw_seam_sew.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -15,15 +16,41 @@ static double now_s(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* The box diagonal of the smallest part that has patches (of the whole model
+ * when there are no parts, or no memory to tell them apart): a showroom's
+ * tolerance must not follow the hall's size, or its small parts would be
+ * sewn shut. 0 when empty. */
+static double smallest_part_size(const sw_model *model)
+{
+    sw_box *boxes = model->part_count ? malloc(model->part_count * sizeof *boxes) : NULL;
+    double smallest = INFINITY;
+    for (size_t part = 0; boxes && part < model->part_count; part++)
+        boxes[part] = sw_box_empty();
+    for (size_t i = 0; boxes && i < model->patch_count; i++) {
+        const sw_model_patch *patch = &model->patches[i];
+        size_t n = (size_t)(patch->degree_u + 1) * (size_t)(patch->degree_v + 1);
+        for (size_t k = 0; patch->part < model->part_count && k < n; k++)
+            sw_box_add_point(&boxes[patch->part], sw_v3(patch->ctrl[4 * k], patch->ctrl[4 * k + 1],
+                                                         patch->ctrl[4 * k + 2]));
+    }
+    for (size_t part = 0; boxes && part < model->part_count; part++)
+        if (!sw_box_is_empty(&boxes[part]))
+            smallest = fmin(smallest, sw_box_diagonal(&boxes[part]));
+    free(boxes);
+    if (isfinite(smallest))
+        return smallest;
+    sw_box box = sw_model_box(model);
+    return sw_box_is_empty(&box) ? 0 : sw_box_diagonal(&box);
+}
+
 double sw_seam_default_tolerance(const sw_model *model, const sw_seam_options *opt)
 {
     if (opt && opt->tolerance > 0)
         return opt->tolerance;
-    sw_box box = sw_model_box(model);
-    double diag = sw_box_is_empty(&box) ? 0 : sw_box_diagonal(&box);
+    double size = smallest_part_size(model);
     if (!(model->model_tolerance > 0))
-        return diag > 0 ? 1e-5 * diag : 1e-3;
-    return fmax((double)model->model_tolerance, 1e-5 * diag);
+        return size > 0 ? 1e-5 * size : 1e-3;
+    return fmax((double)model->model_tolerance, 1e-5 * size);
 }
 
 sw_status sw_seam_sew_model(const sw_model *model, const sw_seam_options *opt, sw_seam_host *out,

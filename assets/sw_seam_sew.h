@@ -15,12 +15,13 @@
 /* Zero means default for every field. */
 typedef struct sw_seam_options {
     /* Model units (mm). 0: the model's tolerance (model_tolerance, from the
-     * file), but at least 1e-5 of the model's box diagonal: files state
-     * tolerances tighter than their faces meet (the OCCT screw's 1e-6 of
-     * the diagonal left 1414 of 10343 edges unsewn, its faces' gaps being
+     * file), but at least 1e-5 of the size of its smallest part (box
+     * diagonal; a showroom's hall would sew its small parts shut): files
+     * state tolerances tighter than their faces meet (the OCCT screw's 1e-6
+     * of its size left 1414 of 10343 edges unsewn, its faces' gaps being
      * just wider; at 1e-5, 6 of 2888; the hammer 2131 -> 59, linkrods
      * 5633 -> 1713), and an unsewn border is simplified on each side alone.
-     * A model that states none (Newell, .bpt) gets 1e-5 of the diagonal too:
+     * A model that states none (Newell, .bpt) gets 1e-5 of that size too:
      * such inputs share their boundary rows exactly, and a larger default
      * would sew shut real features of that size (the Newell teapot's lid has
      * a hole of radius 1.3e-4 of its diagonal at the knob). An empty model

@@ -719,8 +719,8 @@ static void test_bad_arguments_are_errors(void)
     sw_model_free(&m);
 }
 
-/* The default tolerance: the file's, floored at 1e-5 of the diagonal; none
- * stated: 1e-5 of the diagonal; an explicit one wins. */
+/* The default tolerance: the file's, floored at 1e-5 of the smallest part's
+ * diagonal; none stated: 1e-5 of that; an explicit one wins. */
 static void test_default_tolerance(void)
 {
     sw_model m;
@@ -733,6 +733,17 @@ static void test_default_tolerance(void)
     m.model_tolerance = 1e-9f;
     SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-5, 1e-12);
     SW_CHECK(sw_seam_default_tolerance(&m, &(sw_seam_options){0.25}) == 0.25);
+    sw_model_free(&m);
+    /* a hall of 3000 x 4000 with a part of 3 x 4 in it: the part decides */
+    const float grey[4] = {0.5f, 0.5f, 0.5f, 1};
+    sw_model_init(&m);
+    SW_CHECK(sw_model_begin_part(&m, "hall", grey, NULL) == SW_OK);
+    add_quad(&m, (double[3]){0, 0, 0}, (double[3]){3000, 0, 0}, (double[3]){0, 4000, 0},
+             (double[3]){3000, 4000, 0});
+    SW_CHECK(sw_model_begin_part(&m, "part", grey, NULL) == SW_OK);
+    add_quad(&m, (double[3]){10, 10, 0}, (double[3]){13, 10, 0}, (double[3]){10, 14, 0},
+             (double[3]){13, 14, 0});
+    SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-5, 1e-12);
     sw_model_free(&m);
 }
 
