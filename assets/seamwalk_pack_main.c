@@ -41,7 +41,8 @@ static const char usage_text[] =
     "--iges-reader occt; STEP always through OpenCASCADE. --strict: entities an\n"
     "importer would skip are errors. --quiet: no progress bar, no summary.\n"
     "--seam-tolerance: how far apart trims may be and still be sewn into one seam\n"
-    "(default: the file's model tolerance, at least 1e-5 of its smallest part's size).\n";
+    "(default: the file's model tolerance, at least 1e-5 of its smallest part's size\n"
+    "and 1e-6 of the whole model's).\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {

@@ -47,10 +47,12 @@ double sw_seam_default_tolerance(const sw_model *model, const sw_seam_options *o
 {
     if (opt && opt->tolerance > 0)
         return opt->tolerance;
-    double size = smallest_part_size(model);
+    sw_box box = sw_model_box(model);
+    double whole = sw_box_is_empty(&box) ? 0 : sw_box_diagonal(&box);
+    double floor = fmax(1e-5 * smallest_part_size(model), 1e-6 * whole);
     if (!(model->model_tolerance > 0))
-        return size > 0 ? 1e-5 * size : 1e-3;
-    return fmax((double)model->model_tolerance, 1e-5 * size);
+        return floor > 0 ? floor : 1e-3;
+    return fmax((double)model->model_tolerance, floor);
 }
 
 sw_status sw_seam_sew_model(const sw_model *model, const sw_seam_options *opt, sw_seam_host *out,

@@ -720,7 +720,8 @@ static void test_bad_arguments_are_errors(void)
 }
 
 /* The default tolerance: the file's, floored at 1e-5 of the smallest part's
- * diagonal; none stated: 1e-5 of that; an explicit one wins. */
+ * diagonal and 1e-6 of the whole model's; none stated: that floor; an
+ * explicit one wins. */
 static void test_default_tolerance(void)
 {
     sw_model m;
@@ -734,12 +735,23 @@ static void test_default_tolerance(void)
     SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-5, 1e-12);
     SW_CHECK(sw_seam_default_tolerance(&m, &(sw_seam_options){0.25}) == 0.25);
     sw_model_free(&m);
-    /* a hall of 3000 x 4000 with a part of 3 x 4 in it: the part decides */
+    /* a hall of 3000 x 4000 with a part of 3 x 4 in it: 1e-6 of the whole
+       (5e-3) beats 1e-5 of the part (5e-5); in a hall of 20 x 20 the
+       part's 5e-5 beats 1e-6 of the whole (2.8e-5) */
     const float grey[4] = {0.5f, 0.5f, 0.5f, 1};
     sw_model_init(&m);
     SW_CHECK(sw_model_begin_part(&m, "hall", grey, NULL) == SW_OK);
     add_quad(&m, (double[3]){0, 0, 0}, (double[3]){3000, 0, 0}, (double[3]){0, 4000, 0},
              (double[3]){3000, 4000, 0});
+    SW_CHECK(sw_model_begin_part(&m, "part", grey, NULL) == SW_OK);
+    add_quad(&m, (double[3]){10, 10, 0}, (double[3]){13, 10, 0}, (double[3]){10, 14, 0},
+             (double[3]){13, 14, 0});
+    SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-3, 1e-9);
+    sw_model_free(&m);
+    sw_model_init(&m);
+    SW_CHECK(sw_model_begin_part(&m, "hall", grey, NULL) == SW_OK);
+    add_quad(&m, (double[3]){0, 0, 0}, (double[3]){20, 0, 0}, (double[3]){0, 20, 0},
+             (double[3]){20, 20, 0});
     SW_CHECK(sw_model_begin_part(&m, "part", grey, NULL) == SW_OK);
     add_quad(&m, (double[3]){10, 10, 0}, (double[3]){13, 10, 0}, (double[3]){10, 14, 0},
              (double[3]){13, 14, 0});
