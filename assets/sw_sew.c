@@ -198,7 +198,7 @@ static void side_point(const pair_group *g, const sew_match *m, int side, double
         return;
     }
     const double *a = poly->p + 3 * (size_t)m->e;
-    const double *b = poly->p + 3 * (size_t)sew_next(poly, m->le, m->e);
+    const double *b = poly->p + 3 * (size_t)sew_next(poly, sew_real_loop(poly, m->le), m->e);
     for (int k = 0; k < 3; k++)
         out[k] = a[k] + m->t * (b[k] - a[k]);
 }
@@ -312,10 +312,12 @@ sw_status sew_intervals(sew_state *s)
         while (j < s->match_count && ((s->matches[j].lv == lo && s->matches[j].le == hi) ||
                                       (s->matches[j].lv == hi && s->matches[j].le == lo)))
             j++;
+        /* hi may be a copy of lo (a loop sewn to itself): sizes of the real one */
+        uint32_t real = sew_real_loop(poly, hi);
         pair_group g = {s, s->matches + i, j - i, {lo, hi},
                         {(double)(poly->loop_start[lo + 1] - poly->loop_start[lo]),
-                         (double)(poly->loop_start[hi + 1] - poly->loop_start[hi])},
-                        {poly->loop_start[lo], poly->loop_start[hi]}};
+                         (double)(poly->loop_start[real + 1] - poly->loop_start[real])},
+                        {poly->loop_start[lo], poly->loop_start[real]}};
         failed = group_intervals(&g, seeds, &c, &alt) != 0;
         i = j;
     }
@@ -345,9 +347,17 @@ sw_status sw_sew_polylines(const sw_seam_polylines *poly, double tolerance, sw_s
     s.vertex_loop = malloc((poly->vertex_count + 1) * sizeof *s.vertex_loop);
     sw_status st = s.vertex_loop ? SW_OK
                                  : sw_error_set(err, SW_ERR_NO_MEMORY, "sewing: out of memory");
+    s.arc = malloc((poly->vertex_count + 1) * sizeof *s.arc);
+    if (st == SW_OK && !s.arc)
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "sewing: out of memory");
     for (size_t l = 0; st == SW_OK && l < poly->loop_count; l++)
-        for (size_t v = poly->loop_start[l]; v < poly->loop_start[l + 1]; v++)
+        for (size_t v = poly->loop_start[l]; v < poly->loop_start[l + 1]; v++) {
             s.vertex_loop[v] = (uint32_t)l;
+            const double *p = poly->p + 3 * v, *q = poly->p + 3 * (v > poly->loop_start[l] ? v - 1 : v);
+            s.arc[v] = (v > poly->loop_start[l] ? s.arc[v - 1] : 0.0) +
+                       sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                            (p[2] - q[2]) * (p[2] - q[2]));
+        }
     if (st == SW_OK)
         st = sew_project(&s);
     if (st == SW_OK)
@@ -359,6 +369,7 @@ sw_status sw_sew_polylines(const sw_seam_polylines *poly, double tolerance, sw_s
         counts->intervals = s.intervals;
     }
     free(s.vertex_loop);
+    free(s.arc);
     free(s.matches);
     free(s.joins);
     if (st != SW_OK)

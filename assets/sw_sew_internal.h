@@ -11,7 +11,9 @@
  * its foot at parameter t along the edge (0 or 1: the end vertex itself). */
 typedef struct sew_match {
     uint32_t v, e;
-    uint32_t lv, le;   /* their loops */
+    uint32_t lv, le;   /* their loops; le is loop_count + the loop when e is on v's own
+                          loop (a closed surface meeting itself: sewn as a pair of the
+                          loop with a copy of it, see sew_project) */
     double t, dist;
     int used;
 } sew_match;
@@ -26,6 +28,7 @@ typedef struct sew_state {
     const sw_seam_polylines *poly;
     double tol;
     uint32_t *vertex_loop;   /* per vertex */
+    double *arc;             /* per vertex: arc length along its loop from the loop's start */
     sew_match *matches;
     size_t match_count, match_capacity;
     sew_join *joins;
@@ -33,6 +36,12 @@ typedef struct sew_state {
     size_t intervals;
     sw_error *err;
 } sew_state;
+
+/* The real loop of a match's loop id (sew_match.le). */
+static inline uint32_t sew_real_loop(const sw_seam_polylines *poly, uint32_t loop)
+{
+    return loop >= poly->loop_count ? loop - (uint32_t)poly->loop_count : loop;
+}
 
 static inline uint32_t sew_next(const sw_seam_polylines *poly, uint32_t loop, uint32_t v)
 {

@@ -143,8 +143,10 @@ static sw_status build_edges(sw_seam_host *out, sw_sew_counts *counts, sw_error 
     }
     for (size_t i = 0; i < n;) {
         size_t j = i, loops = 0;
+        /* uses, not distinct loops: a closed surface sewn to itself runs
+         * along the edge twice in one loop, and that is a seam too */
         for (; j < n && uses[j].a == uses[i].a && uses[j].b == uses[i].b; j++)
-            loops += j == i || uses[j].loop != uses[j - 1].loop;
+            loops++;
         out->edges[out->edge_count++] = (sw_seam_edge){uses[i].a, uses[i].b};
         counts->seams += loops >= 2;
         counts->free_edges += loops == 1;

@@ -192,8 +192,33 @@ static int project(sew_state *s, uint32_t v, uint32_t e)
         t = 0;
     else if ((1 - t) * len <= snap)
         t = 1;
-    sew_match m = {v, e, s->vertex_loop[v], le, t, sqrt(dist2), 0};
+    /* on v's own loop: a copy of it, so the pair code sees two loops */
+    uint32_t pair = le == s->vertex_loop[v] ? le + (uint32_t)poly->loop_count : le;
+    sew_match m = {v, e, s->vertex_loop[v], pair, t, sqrt(dist2), 0};
     return add_match(s, &m);
+}
+
+/* Are vertex v and edge e of its own loop far apart along the loop (more
+ * than ten tolerances either way)? Then they may be sewn: a closed surface
+ * meets itself there (a cylinder's two sides along its seam line), and left
+ * unsewn each side would be simplified on its own. Nearer, they are
+ * neighbours on one border, which must not be sewn to itself. */
+static int far_along(const sew_state *s, uint32_t v, uint32_t e)
+{
+    const sw_seam_polylines *poly = s->poly;
+    uint32_t l = s->vertex_loop[v];
+    uint32_t first = (uint32_t)poly->loop_start[l], last = (uint32_t)poly->loop_start[l + 1] - 1;
+    const double *a = poly->p + 3 * (size_t)first, *b = poly->p + 3 * (size_t)last;
+    double closing = sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                          (a[2] - b[2]) * (a[2] - b[2]));
+    double length = s->arc[last] + closing, limit = 10 * s->tol;
+    uint32_t ends[2] = {e, sew_next(poly, l, e)};
+    for (int k = 0; k < 2; k++) {
+        double d = fabs(s->arc[ends[k]] - s->arc[v]);
+        if (fmin(d, length - d) <= limit)
+            return 0;
+    }
+    return 1;
 }
 
 sw_status sew_project(sew_state *s)
@@ -209,7 +234,7 @@ sw_status sew_project(sew_state *s)
         uint64_t key = cell_key(cell_of(&g, p[0], 0), cell_of(&g, p[1], 1), cell_of(&g, p[2], 2));
         for (size_t k = grid_find(&g, key); !failed && k < g.count && g.entries[k].key == key; k++) {
             uint32_t e = g.entries[k].edge;
-            if (seen[e] == v || s->vertex_loop[e] == s->vertex_loop[v])
+            if (seen[e] == v || (s->vertex_loop[e] == s->vertex_loop[v] && !far_along(s, v, e)))
                 continue;
             seen[e] = v;
             failed = project(s, v, e) != 0;

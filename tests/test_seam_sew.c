@@ -69,6 +69,8 @@ static void check_host(const sw_seam_host *h)
 }
 
 /* Number of distinct loops running along edge (a, b). */
+/* How many times loops run along the edge a-b (a loop sewn to itself, a
+ * closed surface meeting itself, runs along it twice). */
 static int loops_along(const sw_seam_host *h, uint32_t a, uint32_t b)
 {
     int n = 0;
@@ -77,10 +79,7 @@ static int loops_along(const sw_seam_host *h, uint32_t a, uint32_t b)
         for (uint32_t k = 0; k < loop->slot_count; k++) {
             uint32_t x = h->slots[loop->first_slot + k].vertex;
             uint32_t y = h->slots[loop->first_slot + (k + 1) % loop->slot_count].vertex;
-            if ((x == a && y == b) || (x == b && y == a)) {
-                n++;
-                break;
-            }
+            n += (x == a && y == b) || (x == b && y == a);
         }
     }
     return n;
@@ -278,6 +277,53 @@ static void test_dense_sides_shorter_than_tolerance_are_sewn(void)
         }
     SW_CHECK_NEAR(seam_length, 1.0, 1e-6);
     SW_CHECK(c.seams >= 40 && c.inserted > 0);
+    sw_seam_host_free(&h);
+}
+
+/* A cylinder's one loop around its domain [0, 2 pi] x [0, 1]: its sides
+ * u = 0 and u = 2 pi are one line in space. They are sewn to each other (the
+ * loop runs along each of their edges twice), so both are simplified as one;
+ * the rims stay free; nothing near along the loop is sewn to itself. */
+static void test_closed_surface_meets_itself(void)
+{
+    enum { RIM = 24, SIDE = 7 };
+    double uv[2 * 64], p[3 * 64];
+    size_t starts[2];
+    uint32_t surf[1] = {0};
+    uint8_t outer[1] = {1};
+    size_t sloops[2] = {0, 1};
+    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 1, sloops, 1, 0.01, 0};
+    const double two_pi = 6.283185307179586;
+    size_t n = 0;
+    for (int i = 0; i < RIM; i++, n++) /* bottom, u up */
+        uv[2 * n] = two_pi * i / RIM, uv[2 * n + 1] = 0;
+    for (int i = 0; i < SIDE; i++, n++) /* u = 2 pi, v up */
+        uv[2 * n] = two_pi, uv[2 * n + 1] = (double)i / SIDE;
+    for (int i = 0; i < RIM; i++, n++) /* top, u down */
+        uv[2 * n] = two_pi * (RIM - i) / RIM, uv[2 * n + 1] = 1;
+    for (int i = 0; i < SIDE; i++, n++) /* u = 0, v down */
+        uv[2 * n] = 0, uv[2 * n + 1] = 1 - (double)i / SIDE;
+    for (size_t k = 0; k < n; k++)
+        p[3 * k] = cos(uv[2 * k]), p[3 * k + 1] = sin(uv[2 * k]), p[3 * k + 2] = uv[2 * k + 1];
+    pl.vertex_count = n, starts[0] = 0, starts[1] = n;
+    sw_seam_host h;
+    sw_sew_counts c;
+    sw_error err;
+    SW_CHECK_MSG(sw_sew_polylines(&pl, 0.01, &h, &c, &err) == SW_OK, "%s", err.message);
+    check_host(&h);
+    /* the side's SIDE edges are seams; the two rims' 2 * RIM edges are free */
+    SW_CHECK_MSG(c.seams == SIDE && c.free_edges == 2 * RIM, "seams %zu free %zu", c.seams,
+                 c.free_edges);
+    uint32_t doubled = 0;
+    for (uint32_t e = 0; e < h.edge_count; e++) {
+        int uses = loops_along(&h, h.edges[e].a, h.edges[e].b);
+        const float *a = h.vertices[h.edges[e].a].p, *b = h.vertices[h.edges[e].b].p;
+        int on_line = fabsf(a[0] - 1) < 1e-6f && fabsf(b[0] - 1) < 1e-6f && fabsf(a[1]) < 1e-6f &&
+                      fabsf(b[1]) < 1e-6f;
+        SW_CHECK(uses == (on_line ? 2 : 1));
+        doubled += uses == 2;
+    }
+    SW_CHECK(doubled == SIDE);
     sw_seam_host_free(&h);
 }
 
@@ -770,6 +816,7 @@ int main(int argc, char **argv)
     SW_RUN(test_t_junction_inserts_the_middle_vertex);
     SW_RUN(test_three_faces_on_one_edge_are_nonmanifold);
     SW_RUN(test_dense_sides_shorter_than_tolerance_are_sewn);
+    SW_RUN(test_closed_surface_meets_itself);
     SW_RUN(test_hole_and_disc_sewn_all_round);
     SW_RUN(test_teapot_polylines_within_tolerance);
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);
