@@ -28,6 +28,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_math.h"
 #include "sw_seam_qtree.h"
 
 enum { MAX_HALVINGS = 40, MAX_RUN = 64 };
@@ -177,13 +178,8 @@ static double dist3(const double *a, const double *b)
 /* Distance from p to the segment a-b in 3D. */
 static double point_segment3(const double *p, const double *a, const double *b)
 {
-    double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, len2 = 0, t = 0, q[3];
-    for (int k = 0; k < 3; k++)
-        len2 += d[k] * d[k], t += (p[k] - a[k]) * d[k];
-    t = len2 > 0 ? fmin(fmax(t / len2, 0.0), 1.0) : 0;
-    for (int k = 0; k < 3; k++)
-        q[k] = a[k] + t * d[k];
-    return dist3(p, q);
+    return sw_v3_segment_distance(sw_v3(p[0], p[1], p[2]), sw_v3(a[0], a[1], a[2]),
+                                  sw_v3(b[0], b[1], b[2]));
 }
 
 /* May the vertices strictly between i and j (indices into the loop's n

@@ -4,6 +4,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "sw_math.h"
+
 static void push_run(sw_seam_runs *r, uint32_t run)
 {
     uint32_t v = r->runs[run].vertex;
@@ -81,15 +83,8 @@ static double uv_seg_dist(const float p[2], const float a[2], const float b[2], 
 /* Distance from p to the model-space segment a-b. */
 static double seg_dist3(const double p[3], const float a[3], const float b[3])
 {
-    double ab[3], ap[3], t = 0, len2 = 0, d2 = 0;
-    for (int k = 0; k < 3; k++) {
-        ab[k] = (double)b[k] - a[k], ap[k] = p[k] - a[k];
-        t += ap[k] * ab[k], len2 += ab[k] * ab[k];
-    }
-    t = len2 > 0 ? fmin(fmax(t / len2, 0.0), 1.0) : 0.0;
-    for (int k = 0; k < 3; k++)
-        d2 += (ap[k] - t * ab[k]) * (ap[k] - t * ab[k]);
-    return sqrt(d2);
+    return sw_v3_segment_distance(sw_v3(p[0], p[1], p[2]), sw_v3(a[0], a[1], a[2]),
+                                  sw_v3(b[0], b[1], b[2]));
 }
 
 /* The surface along the (u, v) chord a-b against the model-space chord

@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_math.h"
 #include "sw_seam_check.h"
 #include "sw_seam_runs.h"
 
@@ -47,22 +48,14 @@ typedef struct simp {
     uint32_t *mark, stamp;
 } simp;
 
+static sw_vec3 v3f(const float p[3])
+{
+    return sw_v3(p[0], p[1], p[2]);
+}
+
 static double seg_dist(const float p[3], const float a[3], const float b[3])
 {
-    double ab[3], ap[3], t = 0.0, len2 = 0.0;
-    for (int i = 0; i < 3; i++) {
-        ab[i] = (double)b[i] - a[i];
-        ap[i] = (double)p[i] - a[i];
-        len2 += ab[i] * ab[i];
-        t += ap[i] * ab[i];
-    }
-    t = len2 > 0.0 ? fmin(fmax(t / len2, 0.0), 1.0) : 0.0;
-    double d2 = 0.0;
-    for (int i = 0; i < 3; i++) {
-        double d = ap[i] - t * ab[i];
-        d2 += d * d;
-    }
-    return sqrt(d2);
+    return sw_v3_segment_distance(v3f(p), v3f(a), v3f(b));
 }
 
 /* ---- the heap of vertices by their cheapest collapse ---- */

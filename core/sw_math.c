@@ -14,6 +14,15 @@ sw_vec3 sw_v3_scale(sw_vec3 a, double s) { return sw_v3(a.x * s, a.y * s, a.z * 
 double sw_v3_dot(sw_vec3 a, sw_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 double sw_v3_length(sw_vec3 a) { return sqrt(sw_v3_dot(a, a)); }
 
+double sw_v3_segment_distance(sw_vec3 p, sw_vec3 a, sw_vec3 b)
+{
+    sw_vec3 ab = sw_v3_sub(b, a);
+    double len2 = sw_v3_dot(ab, ab);
+    double t = len2 > 0 ? sw_v3_dot(sw_v3_sub(p, a), ab) / len2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return sw_v3_length(sw_v3_sub(p, sw_v3_add(a, sw_v3_scale(ab, t))));
+}
+
 sw_vec3 sw_v3_lerp(sw_vec3 a, sw_vec3 b, double t)
 {
     /* (1 - t) a + t b rather than a + t (b - a): exact at both ends. */

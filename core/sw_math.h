@@ -28,6 +28,8 @@ sw_vec3 sw_v3_lerp(sw_vec3 a, sw_vec3 b, double t);
 double sw_v3_dot(sw_vec3 a, sw_vec3 b);
 sw_vec3 sw_v3_cross(sw_vec3 a, sw_vec3 b);
 double sw_v3_length(sw_vec3 a);
+/* Distance from p to the segment a-b (to a when a == b). */
+double sw_v3_segment_distance(sw_vec3 p, sw_vec3 a, sw_vec3 b);
 /* a / |a|; the zero vector stays zero. */
 sw_vec3 sw_v3_normalize(sw_vec3 a);
 

@@ -112,15 +112,6 @@ static uint32_t edge_length(uint32_t edge, uint32_t nu, uint32_t nv)
     return (edge == SW_EDGE_V0 || edge == SW_EDGE_V1 ? nu : nv) + 1;
 }
 
-static double point_segment_distance(sw_vec3 p, sw_vec3 a, sw_vec3 b)
-{
-    sw_vec3 ab = sw_v3_sub(b, a);
-    double len2 = sw_v3_dot(ab, ab);
-    double t = len2 > 0 ? sw_v3_dot(sw_v3_sub(p, a), ab) / len2 : 0;
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    return sw_v3_length(sw_v3_sub(p, sw_v3_add(a, sw_v3_scale(ab, t))));
-}
-
 typedef struct grid_edge {
     const sw_vertex *grid;
     uint32_t edge, nu, nv;
@@ -141,7 +132,7 @@ static uint64_t off_polyline(const grid_edge *from, const grid_edge *onto, doubl
         sw_vec3 p = edge_point(from, k);
         int on = 0;
         for (uint32_t s = 0; s + 1 < n_onto && !on; s++)
-            on = point_segment_distance(p, edge_point(onto, s), edge_point(onto, s + 1)) <= tol;
+            on = sw_v3_segment_distance(p, edge_point(onto, s), edge_point(onto, s + 1)) <= tol;
         off += !on;
     }
     return off;

@@ -1,5 +1,5 @@
 /* sw_math: camera matrices against hand-computed values, frustum culling of
- * boxes, box distances. */
+ * boxes, box and segment distances. */
 #include "sw_math.h"
 #include "sw_test.h"
 
@@ -139,6 +139,18 @@ static void test_vectors(void)
     SW_CHECK(l.x == 3 && l.y == 5 && l.z == 7);
 }
 
+/* Inside the segment the perpendicular distance, beyond it the nearer end,
+ * a degenerate segment its point. */
+static void test_segment_distance(void)
+{
+    sw_vec3 a = sw_v3(0, 0, 0), b = sw_v3(4, 0, 0);
+    SW_CHECK_NEAR(sw_v3_segment_distance(sw_v3(1, 3, 0), a, b), 3.0, 1e-12);
+    SW_CHECK_NEAR(sw_v3_segment_distance(sw_v3(7, 4, 0), a, b), 5.0, 1e-12);
+    SW_CHECK_NEAR(sw_v3_segment_distance(sw_v3(-3, 0, 4), a, b), 5.0, 1e-12);
+    SW_CHECK_NEAR(sw_v3_segment_distance(sw_v3(2, 0, 0), a, b), 0.0, 1e-12);
+    SW_CHECK_NEAR(sw_v3_segment_distance(sw_v3(0, 3, 4), a, a), 5.0, 1e-12);
+}
+
 int main(void)
 {
     SW_RUN(test_look_at_matches_hand_computed);
@@ -149,5 +161,6 @@ int main(void)
     SW_RUN(test_box_distance);
     SW_RUN(test_box_accumulates);
     SW_RUN(test_vectors);
+    SW_RUN(test_segment_distance);
     return sw_test_finish();
 }

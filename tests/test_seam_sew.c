@@ -11,6 +11,7 @@
 #include "model_shapes.h"
 #include "sw_import_iges.h"
 #include "sw_import_newell.h"
+#include "sw_math.h"
 #include "sw_pack_adjacency.h"
 #include "sw_seam_flatten.h"
 #include "sw_seam_sew.h"
@@ -366,13 +367,8 @@ static void test_hole_and_disc_sewn_all_round(void)
 /* Distance from p to segment a-b. */
 static double seg_dist(const double p[3], const double a[3], const double b[3])
 {
-    double d[3], t = 0, l2 = 0, s = 0;
-    for (int k = 0; k < 3; k++)
-        d[k] = b[k] - a[k], l2 += d[k] * d[k], t += (p[k] - a[k]) * d[k];
-    t = l2 > 0 ? fmin(fmax(t / l2, 0.0), 1.0) : 0;
-    for (int k = 0; k < 3; k++)
-        s += (p[k] - a[k] - t * d[k]) * (p[k] - a[k] - t * d[k]);
-    return sqrt(s);
+    return sw_v3_segment_distance(sw_v3(p[0], p[1], p[2]), sw_v3(a[0], a[1], a[2]),
+                                  sw_v3(b[0], b[1], b[2]));
 }
 
 static double loop_dist(const sw_seam_polylines *pl, size_t l, const double q[3])

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "seam_graph_gen.h"
+#include "sw_math.h"
 #include "sw_seam_check.h"
 #include "sw_seam_simplify.h"
 #include "sw_test.h"
@@ -173,15 +174,8 @@ static uint32_t ancestor_at(const sw_seam_host *g, uint32_t o, uint32_t step)
 
 static double point_seg(const double p[3], const float a[3], const float b[3])
 {
-    double ab[3], ap[3], t = 0, l2 = 0, d2 = 0;
-    for (int i = 0; i < 3; i++) {
-        ab[i] = (double)b[i] - a[i], ap[i] = p[i] - a[i];
-        l2 += ab[i] * ab[i], t += ap[i] * ab[i];
-    }
-    t = l2 > 0 ? fmin(fmax(t / l2, 0), 1) : 0;
-    for (int i = 0; i < 3; i++)
-        d2 += (ap[i] - t * ab[i]) * (ap[i] - t * ab[i]);
-    return sqrt(d2);
+    return sw_v3_segment_distance(sw_v3(p[0], p[1], p[2]), sw_v3(a[0], a[1], a[2]),
+                                  sw_v3(b[0], b[1], b[2]));
 }
 
 /* After step collapses: every point of the original polylines (vertices and

@@ -22,6 +22,7 @@
 #include "sw_import_iges.h"
 #include "sw_import_newell.h"
 #include "sw_import_occt.h"
+#include "sw_math.h"
 #include "sw_seam_flatten.h"
 #include "sw_seam_sew.h"
 
@@ -44,13 +45,8 @@ static sw_status import(const char *path, sw_model *model, sw_error *err)
 
 static double seg_dist(const double *p, const double *a, const double *b)
 {
-    double d[3], t = 0, l2 = 0, r = 0;
-    for (int k = 0; k < 3; k++)
-        d[k] = b[k] - a[k], l2 += d[k] * d[k], t += (p[k] - a[k]) * d[k];
-    t = l2 > 0 ? fmin(fmax(t / l2, 0.0), 1.0) : 0;
-    for (int k = 0; k < 3; k++)
-        r += (p[k] - a[k] - t * d[k]) * (p[k] - a[k] - t * d[k]);
-    return sqrt(r);
+    return sw_v3_segment_distance(sw_v3(p[0], p[1], p[2]), sw_v3(a[0], a[1], a[2]),
+                                  sw_v3(b[0], b[1], b[2]));
 }
 
 /* Largest distance of a sampled trim curve of surface s's loop l from its
