@@ -1,6 +1,6 @@
 # OpenCASCADE (Debian libocct-*-dev) for the STEP reader and the OCCT IGES
-# cross-check: assets/sw_import_occt.cpp when found, the C fallback
-# assets/sw_import_occt_none.c (a clear "built without STEP support") when not.
+# cross-check: assets/import/sw_import_occt.cpp when found, the C fallback
+# assets/import/sw_import_occt_none.c (a clear "built without STEP support") when not.
 # Sets SW_OCCT_FOUND and defines sw_occt_apply(target), which adds the right
 # sources, libraries and the SW_HAVE_OCCT definition to sw_assets.
 option(SW_WITH_OCCT "Read STEP (and IGES as a cross-check) through OpenCASCADE when it is installed" ON)
@@ -39,14 +39,15 @@ set(SW_OCCT_LIBRARIES
 
 function(sw_occt_apply target)
   if(NOT SW_OCCT_FOUND)
-    target_sources(${target} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/sw_import_occt_none.c)
+    target_sources(${target} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_import_occt_none.c)
     return()
   endif()
   # The C++ file is an object library of its own: sw_apply_warnings' C-only
   # flags (-Wstrict-prototypes, -Wmissing-prototypes) are errors for g++ under
   # -Werror, so C++ gets the equivalent set here.
-  add_library(sw_import_occt OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/sw_import_occt.cpp)
-  target_include_directories(sw_import_occt PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+  add_library(sw_import_occt OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_import_occt.cpp)
+  target_include_directories(sw_import_occt PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/import
+    ${CMAKE_CURRENT_SOURCE_DIR}/model)
   # SYSTEM: OCCT's headers are not ours to keep free of -Wextra warnings.
   target_include_directories(sw_import_occt SYSTEM PRIVATE ${OpenCASCADE_INCLUDE_DIR})
   target_link_libraries(sw_import_occt PRIVATE sw_core)

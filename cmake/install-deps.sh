@@ -14,7 +14,7 @@ packages=(
   libgl-dev libglu1-mesa-dev         # the benchmark's reference: GLU's NURBS tessellator
   python3                            # tests read the stats JSON
   clang libclang-rt-14-dev           # libFuzzer runs of the parsers (tests/fuzz)
-  # OpenCASCADE 7.6: STEP import and the IGES cross-check (assets/sw_import_occt.cpp,
+  # OpenCASCADE 7.6: STEP import and the IGES cross-check (assets/import/sw_import_occt.cpp,
   # C++17); the build works without it (SW_WITH_OCCT, "built without STEP support")
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
   libocct-foundation-dev libocct-ocaf-dev g++

@@ -1,5 +1,5 @@
 /* The pack: seamwalk's preprocessed model file, version 1, and its reader.
- * Written by seamwalk-pack on the host (assets/sw_pack_write.c), read here by
+ * Written by seamwalk-pack on the host (assets/pack/sw_pack_write.c), read here by
  * the runtime and the host tools (core/sw_pack_read.c, sw_pack_validate.c). The format is specified in assets/PACK_FORMAT.md;
  * the structs below are its on-disk records (little-endian, no padding; the
  * _Static_asserts in sw_pack_read.c pin every size and offset).

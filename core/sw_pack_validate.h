@@ -1,7 +1,7 @@
 /* Internal to the pack format code: the checks of the records themselves,
  * which sw_pack_read.c runs once the header, the section table and every
  * checksum have been verified and each view's byte size matches its META
- * count, and two small rules the writer (assets/sw_pack_write.c) shares.
+ * count, and two small rules the writer (assets/pack/sw_pack_write.c) shares.
  * Split out so each file keeps one job: sw_pack_read.c the container,
  * sw_pack_validate.c, sw_pack_validate_trim.c and sw_pack_validate_seam.c the
  * records. */

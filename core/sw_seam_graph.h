@@ -2,7 +2,7 @@
  * ../shared/papers): the sewn trimming polylines of a model's surfaces, as
  * flat arrays with indices, and the edge-collapse hierarchy over them.
  *
- * Built on the host (assets/sw_seam_*.c: trims to polylines, sewing, the
+ * Built on the host (assets/seam/: trims to polylines, sewing, the
  * collapses) and stored in the pack; the runtime selects a view-dependent cut
  * of the hierarchy each frame (core/sw_seam_select.c) and tessellates every
  * surface inside its currently active loops (core/sw_trim_tess.c). Host and

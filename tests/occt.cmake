@@ -1,4 +1,4 @@
-# tests of the OpenCASCADE importer (assets/sw_import_occt.cpp), or, in a build
+# tests of the OpenCASCADE importer (assets/import/sw_import_occt.cpp), or, in a build
 # without OCCT, of its "built without STEP support" fallback.
 set(SW_OCCT_SCRATCH ${CMAKE_CURRENT_BINARY_DIR}/occt-scratch)
 sw_add_test(test_import_occt SOURCES test_import_occt.c LIBS sw_assets sw_core

@@ -34,7 +34,8 @@ static void test_no_calls_no_count(void)
     uint64_t a0 = sw_alloc_count_allocs();
     volatile int x = 0;
     for (int i = 0; i < 1000; i++)
-        x += i;
+        x = x + i;
+    SW_CHECK(x == 499500);
     SW_CHECK(sw_alloc_count_allocs() == a0);
 }
 

@@ -11,6 +11,7 @@
 #include "sw_import_occt.h"
 #include "sw_occt_measure.h"
 #include "sw_test.h"
+#include "sw_model_trims.h"
 #include "sw_trim.h"
 #include "sw_trim_box.h"
 

@@ -6,6 +6,7 @@
 
 #include "model_shapes.h"
 #include "sw_test.h"
+#include "sw_model_trims.h"
 #include "sw_trim.h"
 
 typedef struct counts {

@@ -6,8 +6,10 @@
 #ifndef SW_PACK_SECTIONS_H
 #define SW_PACK_SECTIONS_H
 
+#include <stddef.h>
+
 #include "sw_model.h"
-#include "sw_pack_write.h"
+#include "sw_pack_contents.h"
 
 /* Fills every optional array of out (each malloc'd and non-NULL, even when
  * empty, so every pack has the same sections) and its count from model,

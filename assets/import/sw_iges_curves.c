@@ -184,7 +184,7 @@ static sw_status read_spline_curve(iges_reader *r, const iges_params *p, iges_cu
 /* 126: K, M, PROP1..4, knots, weights, points, V(0), V(1), normal. */
 static sw_status read_bspline_curve(iges_reader *r, const iges_params *p, iges_curves *out)
 {
-    int k, m, poly;
+    int k = 0, m = 0, poly = 0;   /* read only on success, but n and nk below are computed first */
     sw_status st = iges_param_int(r, p, 1, "upper index K", 1, 10000000, &k);
     if (st == SW_OK)
         st = iges_param_int(r, p, 2, "degree M", 1, SW_BEZIER_MAX_DEGREE, &m);

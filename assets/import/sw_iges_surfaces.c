@@ -115,7 +115,7 @@ static void spline_knots(double *knots, const double *breaks, int segs)
  * the N patches' 48 coefficients and 48 unused ones (IGES 5.3, 4.14). */
 static sw_status read_spline_surface(iges_reader *r, const iges_params *p, iges_surface *s)
 {
-    int m, n;
+    int m = 0, n = 0;   /* base below is computed before the checks */
     sw_status st = iges_param_int(r, p, 3, "u segment count M", 1, 3000, &m);
     if (st == SW_OK)
         st = iges_param_int(r, p, 4, "v segment count N", 1, 3000, &n);

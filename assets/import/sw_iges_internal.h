@@ -9,8 +9,10 @@
 
 #include <stddef.h>
 
-#include "sw_import_iges.h"
+#include "sw_error.h"
+#include "sw_import.h"
 #include "sw_math.h"
+#include "sw_model.h"
 #include "sw_pcurve.h"
 
 /* ---- records and sections (sw_iges_records.c) ----------------------- */
@@ -176,7 +178,7 @@ double iges_arc_param(double a0, double a1, double a);
 /* ---- entities ---------------------------------------------------------- */
 
 /* The 124 chain of an entity (its D entry's matrix pointer), identity if
- * none (sw_import_iges.c). */
+ * none (sw_iges_refs.c). */
 sw_status iges_entity_matrix(iges_reader *r, int entity, sw_mat4 *out);
 /* Any curve entity as NURBS pieces, head to tail, in model units with its
  * own transform applied (sw_iges_curves.c). */
@@ -258,7 +260,8 @@ sw_status iges_read_untrimmed(iges_reader *r, int entity, iges_faces *out);
 sw_status iges_read_brep(iges_reader *r, int entity, iges_faces *out);     /* 186, 514, 510 */
 
 /* Records that an entity of an unsupported type was met (SW_ERR_UNSUPPORTED,
- * its type kept for the report): faces that need it are skipped. */
+ * its type kept for the report): faces that need it are skipped. The guards
+ * and the matrices are in sw_iges_refs.c. */
 sw_status iges_unsupported(iges_reader *r, int entity, const char *expected);
 
 /* Marks an entity as entered (cycle and depth guard); leave undoes it. */

@@ -15,6 +15,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "sw_model_trims.h"
 #include "sw_trim.h"
 
 enum { MAX_DEPTH = 24, STACK = 4 * MAX_DEPTH + 8 };

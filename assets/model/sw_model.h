@@ -17,6 +17,7 @@
 #include "sw_error.h"
 #include "sw_math.h"
 #include "sw_nurbs.h"
+#include "sw_trim_loop.h"
 
 typedef struct sw_model_patch {
     int degree_u, degree_v;
@@ -106,15 +107,6 @@ sw_status sw_model_begin_part(sw_model *model, const char *name, const float col
  * ctrl is copied. */
 sw_status sw_model_add_patch(sw_model *model, int degree_u, int degree_v, int rational,
                              const double *ctrl, sw_error *err);
-
-/* One trimming loop as the importer gives it: curves in the surface's
- * parameter space (sw_nurbs_curve with points u, v, 0, w), head to tail. */
-typedef struct sw_model_loop_input {
-    const sw_nurbs_curve *curves;
-    const int *computed;     /* per curve, may be NULL: 1 when made by point inversion */
-    size_t curve_count;
-    int outer;
-} sw_model_loop_input;
 
 /* Appends a trimmed NURBS surface to the current part: checks it
  * (sw_nurbs_surface_check, sw_nurbs_curve_check on every trim), copies it and

@@ -268,35 +268,6 @@ sw_status sw_trim_polyline_build(const sw_model_loop_input *loops, size_t loop_c
     return st;
 }
 
-sw_status sw_trim_polyline_from_model(const sw_model *model, size_t surface, double tolerance,
-                                      sw_trim_polyline *out, sw_error *err)
-{
-    if (!model || surface >= model->surface_count)
-        return sw_error_set(err, SW_ERR_ARG, "sw_trim_polyline_from_model: no surface %zu",
-                            surface);
-    const sw_model_surface *s = &model->surfaces[surface];
-    size_t curves = 0;
-    for (size_t l = 0; l < s->loop_count; l++)
-        curves += model->loops[s->first_loop + l].curve_count;
-    sw_model_loop_input *in = calloc(s->loop_count + 1, sizeof *in);
-    sw_nurbs_curve *views = calloc(curves + 1, sizeof *views);
-    sw_status st = SW_OK;
-    if (!in || !views)
-        st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for trim views");
-    for (size_t l = 0, k = 0; st == SW_OK && l < s->loop_count; l++) {
-        const sw_model_loop *loop = &model->loops[s->first_loop + l];
-        in[l] = (sw_model_loop_input){.curves = views + k, .curve_count = loop->curve_count,
-                                      .outer = loop->outer};
-        for (size_t c = 0; c < loop->curve_count; c++)
-            views[k++] = sw_model_curve_view(&model->curves[loop->first_curve + c]);
-    }
-    if (st == SW_OK)
-        st = sw_trim_polyline_build(in, s->loop_count, tolerance, -1, out, err);
-    free(in);
-    free(views);
-    return st;
-}
-
 /* Runs body on every edge of every loop, the closing edges included, of the
  * chunks whose box passes keep (an expression of the chunk's box cb). */
 #define FOR_EACH_EDGE_KEPT(poly, cb, keep, a, b, body)                                      \

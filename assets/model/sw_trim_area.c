@@ -316,26 +316,3 @@ sw_status sw_trim_area(const sw_nurbs_surface *surface, const sw_trim_polyline *
         *area_out = total;
     return st;
 }
-
-sw_status sw_trim_model_surface_area(const sw_model *model, size_t surface, double rel_tol,
-                                     double *area_out, sw_error *err)
-{
-    if (!model || surface >= model->surface_count || !area_out || !(rel_tol >= 1e-12))
-        return sw_error_set(err, SW_ERR_ARG, "sw_trim_model_surface_area: bad argument");
-    const sw_model_surface *s = &model->surfaces[surface];
-    sw_nurbs_surface view = sw_model_surface_view(s);
-    if (s->loop_count == 0)
-        return sw_trim_area(&view, NULL, rel_tol, area_out, err);
-    /* The chords cut off about tolerance x perimeter of parameter area, a
-     * relative error near tolerance x perimeter / area: an eighth of rel_tol
-     * times the domain size keeps that below rel_tol for faces that are not
-     * slivers. */
-    double extent = fmax(s->domain[1] - s->domain[0], s->domain[3] - s->domain[2]);
-    sw_trim_polyline poly;
-    sw_status st = sw_trim_polyline_from_model(model, surface, rel_tol * extent / 8, &poly, err);
-    if (st != SW_OK)
-        return st;
-    st = sw_trim_area(&view, &poly, rel_tol / 8, area_out, err);
-    sw_trim_polyline_free(&poly);
-    return st;
-}

@@ -3,7 +3,8 @@
  * tolerance, the even-odd point-in-face test, conservative box and 32 x 32
  * cell classification (the pack's trim masks), and the trimmed area of a
  * surface in model space. The model (sw_model.c) restricts Bezier patches to
- * the trimmed region with it; importers and tests measure faces with it.
+ * the trimmed region with it; sw_model_trims.h applies it to a model's
+ * stored faces. Below the model: it knows loops, not models.
  *
  * Tolerance: every point of every trimming curve lies within `tolerance` of
  * the polyline, and every polyline vertex lies on the curve. It is proved
@@ -20,8 +21,8 @@
 #include <stdint.h>
 
 #include "sw_error.h"
-#include "sw_model.h"
 #include "sw_nurbs.h"
+#include "sw_trim_loop.h"
 
 /* Flattens one trimming curve (points u, v, 0, w) into a polyline from its
  * start to its end within tolerance (> 0): its Bezier pieces are halved by de
@@ -66,10 +67,6 @@ sw_status sw_trim_polyline_build(const sw_model_loop_input *loops, size_t loop_c
                                  double tolerance, double gap, sw_trim_polyline *out,
                                  sw_error *err);
 
-/* The same for a surface already in the model (its stored loops). */
-sw_status sw_trim_polyline_from_model(const sw_model *model, size_t surface, double tolerance,
-                                      sw_trim_polyline *out, sw_error *err);
-
 void sw_trim_polyline_free(sw_trim_polyline *poly);
 
 /* Even-odd rule over all loops (orientation does not matter). Points on the
@@ -108,10 +105,5 @@ sw_trim_coverage sw_trim_mask(const sw_trim_polyline *poly, const double domain[
  * parameter area. rel_tol (e.g. 1e-7) drives the quadrature. */
 sw_status sw_trim_area(const sw_nurbs_surface *surface, const sw_trim_polyline *poly,
                        double rel_tol, double *area_out, sw_error *err);
-
-/* A model surface's trimmed area to about rel_tol (> 0, at least 1e-12): flattens its loops at a
- * tolerance derived from rel_tol and the domain and calls sw_trim_area. */
-sw_status sw_trim_model_surface_area(const sw_model *model, size_t surface, double rel_tol,
-                                     double *area_out, sw_error *err);
 
 #endif

@@ -9,63 +9,13 @@
 #include <ini.h>
 #include <ctype.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
-#include "sw_import_bpt.h"
-#include "sw_import_iges.h"
-#include "sw_import_newell.h"
-#include "sw_import_occt.h"
 #include "sw_scene_internal.h"
 #include "sw_text_scan.h"
-
-/* Records the first error only (later ones are usually its consequences) and
- * returns 0, inih's "handler failed". */
-static int scene_vfail(scene_state *st, long line, sw_status status, const char *fmt,
-                       va_list ap)
-{
-    if (st->error_line)
-        return 0;
-    char what[SW_ERROR_MESSAGE_MAX];
-    vsnprintf(what, sizeof what, fmt, ap);
-    if (line < 1)
-        line = 1; /* an empty file fails "at line 1"; 0 means "no error" */
-    st->error_line = line;
-    st->status = status;
-    sw_error_set(st->err, status, "%s:%ld: %s", st->file_name, line, what);
-    return 0;
-}
-
-int scene_fail(scene_state *st, sw_status status, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    scene_vfail(st, st->line, status, fmt, ap);
-    va_end(ap);
-    return 0;
-}
-
-/* At the header of the section that is starting (or the current line). */
-int section_fail(scene_state *st, sw_status status, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    scene_vfail(st, st->pending_section ? st->pending_section : st->line, status, fmt, ap);
-    va_end(ap);
-    return 0;
-}
-
-int scene_fail_at(scene_state *st, long line, sw_status status, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    scene_vfail(st, line, status, fmt, ap);
-    va_end(ap);
-    return 0;
-}
 
 /* Checks a "[...]" header the way inih will read it, so that our idea of
  * where sections start agrees with inih's. */
@@ -161,126 +111,6 @@ static int scene_handler(void *user, const char *section, const char *name, cons
         snprintf(st->section, sizeof st->section, "%s", section);
     }
     return kind->key(st, name, value);
-}
-
-static const float palette[][4] = {
-    {0.80f, 0.36f, 0.24f, 1.0f}, /* terracotta */
-    {0.26f, 0.46f, 0.72f, 1.0f}, /* cornflower */
-    {0.86f, 0.74f, 0.44f, 1.0f}, /* sand */
-    {0.36f, 0.60f, 0.38f, 1.0f}, /* sage */
-    {0.58f, 0.42f, 0.68f, 1.0f}, /* lavender */
-    {0.75f, 0.75f, 0.78f, 1.0f}, /* pewter */
-};
-
-void sw_scene_default_color(size_t index, float out[4])
-{
-    memcpy(out, palette[index % (sizeof palette / sizeof palette[0])], 4 * sizeof(float));
-}
-
-const char *scene_extension(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
-    const char *dot = strrchr(base, '.');
-    return dot && dot != base ? dot : "";
-}
-
-int sw_scene_is_scene_path(const char *path)
-{
-    return path && strcasecmp(scene_extension(path), ".ini") == 0;
-}
-
-/* ---- importers ---------------------------------------------------------- */
-
-typedef sw_status (*import_fn)(const char *path, const sw_import_options *options,
-                               sw_model *model, sw_import_report *report, sw_error *err);
-
-static sw_status import_newell(const char *path, const sw_import_options *options,
-                               sw_model *model, sw_import_report *report, sw_error *err)
-{
-    (void)options, (void)report;
-    return sw_import_newell_file(path, model, err);
-}
-
-static sw_status import_bpt(const char *path, const sw_import_options *options, sw_model *model,
-                            sw_import_report *report, sw_error *err)
-{
-    (void)options, (void)report;
-    return sw_import_bpt_file(path, model, err);
-}
-
-/* Importers by extension; has_units: the format declares its units, so a
- * scene must not (sw_scene.h). */
-static const struct {
-    const char *ext;
-    import_fn import;
-    int has_units;
-} importers[] = {
-    {".txt", import_newell, 0},         {".bpt", import_bpt, 0},
-    {".igs", sw_import_iges_file, 1},   {".iges", sw_import_iges_file, 1},
-    {".stp", sw_import_occt_file, 1},   {".step", sw_import_occt_file, 1},
-};
-
-int scene_file_has_units(const char *path)
-{
-    const char *ext = scene_extension(path);
-    for (size_t k = 0; k < sizeof importers / sizeof importers[0]; k++) {
-        if (strcasecmp(ext, importers[k].ext) == 0)
-            return importers[k].has_units;
-    }
-    return 0;
-}
-
-/* Adds one import's report to the scene's running total. */
-static void report_add(sw_import_report *total, const sw_import_report *one)
-{
-    total->faces += one->faces;
-    total->pcurves_computed += one->pcurves_computed;
-    total->unsupported += one->unsupported;
-    for (size_t k = 0; k < one->unsupported_kinds && k < SW_IMPORT_KINDS; k++) {
-        size_t i = 0;
-        while (i < total->unsupported_kinds &&
-               strcmp(total->unsupported_kind[i], one->unsupported_kind[k]) != 0)
-            i++;
-        if (i == SW_IMPORT_KINDS)
-            continue;
-        if (i == total->unsupported_kinds) {
-            memcpy(total->unsupported_kind[i], one->unsupported_kind[k],
-                   sizeof total->unsupported_kind[i]);
-            total->unsupported_kinds++;
-        }
-        total->unsupported_count[i] += one->unsupported_count[k];
-    }
-    total->units_to_mm = one->units_to_mm;
-    if (one->model_tolerance_mm > total->model_tolerance_mm)
-        total->model_tolerance_mm = one->model_tolerance_mm;
-}
-
-sw_status sw_scene_import_file_with(const char *path, const sw_import_options *options,
-                                    sw_import_report *report, sw_model *model, sw_error *err)
-{
-    if (!path || !model)
-        return sw_error_set(err, SW_ERR_ARG, "sw_scene_import_file: NULL argument");
-    static const sw_import_options defaults = {0};
-    const char *ext = scene_extension(path);
-    for (size_t k = 0; k < sizeof importers / sizeof importers[0]; k++) {
-        if (strcasecmp(ext, importers[k].ext) != 0)
-            continue;
-        sw_import_report one = {.units_to_mm = 1.0};
-        sw_status st = importers[k].import(path, options ? options : &defaults, model, &one, err);
-        if (report)
-            report_add(report, &one);
-        return st;
-    }
-    return sw_error_set(err, SW_ERR_UNSUPPORTED,
-                        "%s: unsupported file type '%s' (expected .txt Newell listing, .bpt, "
-                        ".igs/.iges or .stp/.step)",
-                        path, ext);
-}
-
-sw_status sw_scene_import_file(const char *path, sw_model *model, sw_error *err)
-{
-    return sw_scene_import_file_with(path, NULL, NULL, model, err);
 }
 
 /* ---- loading ------------------------------------------------------------ */

@@ -1,5 +1,5 @@
 /* The loops' current polylines while the collapse hierarchy is built
- * (assets/sw_seam_simplify.c), as the runtime will draw them
+ * (assets/seam/sw_seam_simplify.c), as the runtime will draw them
  * (core/sw_seam_select.h): per loop a cyclic list of runs, each showing one
  * live vertex at the (u, v) of one of its slots. The simplifier asks what a
  * collapse would do in parameter space, which its model-space error cannot

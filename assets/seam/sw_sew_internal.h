@@ -1,5 +1,6 @@
-/* Shared between the steps of sewing (sw_sew.h): projections and intervals
- * (sw_sew.c) and the merge into an sw_seam_host (sw_sew_merge.c). */
+/* Shared between the steps of sewing (sw_sew.h): the driver
+ * (sw_sew_polylines.c), projections (sw_sew_project.c), intervals
+ * (sw_sew_intervals.c) and the merge into an sw_seam_host (sw_sew_merge.c). */
 #ifndef SW_SEW_INTERNAL_H
 #define SW_SEW_INTERNAL_H
 

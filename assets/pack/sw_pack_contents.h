@@ -1,0 +1,43 @@
+/* The pack as flat arrays in memory, before it is serialised: what the
+ * writer (sw_pack_write.h) lays out and the section builders
+ * (sw_pack_sections.h) fill. Host only. */
+#ifndef SW_PACK_CONTENTS_H
+#define SW_PACK_CONTENTS_H
+
+#include <stdint.h>
+
+#include "sw_pack.h"
+#include "sw_seam_graph.h"
+
+/* The flat arrays of a pack, as the writer lays them out. Tests build these
+ * by hand to make packs with chosen faults. */
+typedef struct sw_pack_contents {
+    sw_pack_meta meta;                  /* counts must match the arrays */
+    const sw_pack_part *parts;
+    const sw_pack_patch *patches;
+    const float *control;               /* 4 floats per point */
+    const sw_pack_adjacency *adjacency;
+    /* Optional sections: each is written when its pointer is not NULL (even
+     * with a count of 0) and left out when it is NULL. */
+    const sw_pack_surface *surfaces;
+    uint32_t surface_count;
+    const sw_pack_trim_loop *trim_loops;
+    uint32_t trim_loop_count;
+    const sw_pack_trim_curve *trim_curves;
+    uint32_t trim_curve_count;
+    const float *trim_data;
+    uint32_t trim_data_count;
+    const sw_pack_patch_domain *patch_domains;  /* meta.patch_count records */
+    const sw_pack_trim_mask *trim_masks;
+    uint32_t trim_mask_count;
+    const sw_pack_viewpoint *viewpoints;
+    uint32_t viewpoint_count;
+    const float *part_transforms;               /* 16 * meta.part_count floats */
+    /* The Seam Graph, or NULL for none: written as the SEAM header (its
+     * counts and tolerance) and the seven SEAM_* sections. Not owned:
+     * sw_pack_contents_free leaves it alone; the graph's surface_count must
+     * be surface_count above for the pack to validate. */
+    const sw_seam_graph *seam;
+} sw_pack_contents;
+
+#endif
