@@ -175,15 +175,20 @@ static sw_status import_cad(const build_options *o, const char *path, enum input
     return st;
 }
 
-/* --strict: an importer that skipped entities anyway fails the build here. */
+/* --strict: an importer that skipped entities, or read the file despite
+ * messages about it, fails the build here. */
 static sw_status check_strict(const char *path, const sw_import_report *r, sw_error *err)
 {
-    if (r->unsupported == 0)
-        return SW_OK;
-    return sw_error_set(err, SW_ERR_UNSUPPORTED, "%s: %zu unsupported entities (%s%s) and "
-                        "--strict is set", path, r->unsupported,
-                        r->unsupported_kinds ? r->unsupported_kind[0] : "unknown kind",
-                        r->unsupported_kinds > 1 ? ", ..." : "");
+    if (r->unsupported.total > 0)
+        return sw_error_set(err, SW_ERR_UNSUPPORTED, "%s: %zu unsupported entities (%s%s) and "
+                            "--strict is set", path, r->unsupported.total,
+                            r->unsupported.kinds ? r->unsupported.kind[0] : "unknown kind",
+                            r->unsupported.kinds > 1 ? ", ..." : "");
+    if (r->messages.total > 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: %s (%zu message%s about the file, and "
+                            "--strict is set)", path, r->first_message, r->messages.total,
+                            r->messages.total > 1 ? "s" : "");
+    return SW_OK;
 }
 
 static sw_status add_input(const build_options *o, int i, progress_context *pc, sw_model *model,
@@ -298,21 +303,25 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
     return st;
 }
 
-/* One line per kind of skipped entity, per input, on stderr. */
+/* One line per kind, its count and what was done, on stderr. */
+static void print_tally(const char *name, const sw_import_tally *t, const char *done)
+{
+    size_t listed = 0;
+    for (size_t k = 0; k < t->kinds && k < SW_IMPORT_KINDS; k++) {
+        fprintf(stderr, "warning: %s: %zu x %s %s\n", name, t->count[k], t->kind[k], done);
+        listed += t->count[k];
+    }
+    if (t->total > listed)
+        fprintf(stderr, "warning: %s: %zu of other kinds %s\n", name, t->total - listed, done);
+}
+
+/* Skipped entities and tolerated messages, per input. */
 static void print_warnings(const build_options *o, const sw_import_report *reports)
 {
     for (int i = 0; i < o->input_count; i++) {
-        const sw_import_report *r = &reports[i];
         const char *name = base_name(o->inputs[i]);
-        size_t listed = 0;
-        for (size_t k = 0; k < r->unsupported_kinds && k < SW_IMPORT_KINDS; k++) {
-            fprintf(stderr, "warning: %s: %zu x %s skipped\n", name, r->unsupported_count[k],
-                    r->unsupported_kind[k]);
-            listed += r->unsupported_count[k];
-        }
-        if (r->unsupported > listed)
-            fprintf(stderr, "warning: %s: %zu entities of other kinds skipped\n", name,
-                    r->unsupported - listed);
+        print_tally(name, &reports[i].unsupported, "skipped");
+        print_tally(name, &reports[i].messages, "(read on)");
     }
 }
 

@@ -503,23 +503,6 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
     return status;
 }
 
-/* Counts one skipped or repaired entity of a kind in the report. Done here
- * rather than through sw_import_report_unsupported so this file does not
- * depend on which importer's C file defines that helper. */
-void count_unsupported(sw_import_report *report, const char *kind)
-{
-    report->unsupported++;
-    for (size_t i = 0; i < report->unsupported_kinds; i++)
-        if (std::strcmp(report->unsupported_kind[i], kind) == 0) {
-            report->unsupported_count[i]++;
-            return;
-        }
-    if (report->unsupported_kinds == SW_IMPORT_KINDS)
-        return;
-    std::snprintf(report->unsupported_kind[report->unsupported_kinds], sizeof report->unsupported_kind[0], "%s", kind);
-    report->unsupported_count[report->unsupported_kinds++] = 1;
-}
-
 /* A face OCCT cannot convert is skipped and counted (an error when strict):
  * one bad face should not lose a whole assembly. */
 sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mirrored,
@@ -540,7 +523,7 @@ sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mir
     if (ctx->options && ctx->options->strict)
         return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: face %zu: %s", ctx->path, index + 1,
                             why.c_str());
-    count_unsupported(ctx->report, "OCCT face");
+    sw_import_report_unsupported(ctx->report, "OCCT face");
     if (ctx->err)
         ctx->err->status = SW_OK;
     return SW_OK;
@@ -711,14 +694,31 @@ std::string check_place(const Handle(Interface_InterfaceModel) &model, int numbe
     return buf;
 }
 
+/* Whether a failed check leaves the model unreadable where it points: a
+ * geometric or topological entity with a bad parameter cannot become a
+ * shape, and OCCT's transfer of one (a CARTESIAN_POINT with a string among
+ * its coordinates) crashes. Fails elsewhere (units, contexts, names,
+ * presentation, PMI, the IGES global section) are messages: OCCT reads on
+ * with its defaults and transfers every face, and so does seamwalk. */
+bool check_is_fatal(const Handle(Interface_InterfaceModel) &model, int number, bool step,
+                    const std::string &fail)
+{
+    if (number <= 0 || number > model->NbEntities())
+        return !(!step && fail.find("Global Section") != std::string::npos);
+    if (step && fail.find("not a quoted String") != std::string::npos)
+        return false;  /* names carry no geometry (Rhino writes $ for them) */
+    const char *type = model->Value(number)->DynamicType()->Name();
+    static const char *const geometric[] = {"StepGeom_", "StepShape_", "IGESGeom_",
+                                            "IGESSolid_"};
+    for (const char *prefix : geometric)
+        if (std::strncmp(type, prefix, std::strlen(prefix)) == 0)
+            return true;
+    return false;
+}
+
 /* The loaded model's first failing check that makes it unreadable, as one
- * phrase naming the entity ("" when there is none). OCCT transfers entities
- * with failed checks as best it can, and a CARTESIAN_POINT with a bad
- * coordinate list crashes its transfer, so any such fail is an error. Only
- * string parameters that are not strings are tolerated, as repairs counted in
- * the report (Rhino writes $ for names): names carry no geometry; and for
- * IGES, global section fails (a date format): units and tolerance, the
- * global values that matter, OCCT reads or defaults on its own. */
+ * phrase naming the entity ("" when there is none). The others are counted
+ * in report (when given) by their text, the first one kept in full. */
 std::string fatal_check_failure(const Handle(XSControl_WorkSession) &ws, bool step,
                                 const char *path, sw_import_report *report)
 {
@@ -728,18 +728,13 @@ std::string fatal_check_failure(const Handle(XSControl_WorkSession) &ws, bool st
         const Handle(Interface_Check) &check = checks.Value();
         for (int i = 1; i <= check->NbFails(); i++) {
             std::string fail = check->CFail(i);
-            if (step && checks.Number() > 0 &&
-                fail.find("not a quoted String") != std::string::npos) {
-                if (report)
-                    count_unsupported(report, "STEP bad string");
-                continue;
+            std::string place = check_place(model, checks.Number(), step, path, fail);
+            if (check_is_fatal(model, checks.Number(), step, fail))
+                return place + fail;
+            if (report) {
+                std::string kind = std::string(step ? "STEP: " : "IGES: ") + fail;
+                sw_import_report_message(report, kind.c_str(), (place + fail).c_str());
             }
-            if (!step && fail.find("Global Section") != std::string::npos) {
-                if (report)
-                    count_unsupported(report, "IGES global section");
-                continue;
-            }
-            return check_place(model, checks.Number(), step, path, fail) + fail;
         }
     }
     return std::string();
@@ -875,15 +870,17 @@ sw_status truncated(const ImportContext *ctx, bool step)
 }
 
 /* After a successful parse: fails that make the model unreadable, then
- * (strict) the repairs fatal_check_failure tolerated. */
+ * (strict) the messages fatal_check_failure read on past. */
 sw_status check_loaded(ImportContext *ctx, const Handle(XSControl_WorkSession) &ws, bool step,
                        const MessageCapture &messages)
 {
     if (!fatal_check_failure(ws, step, ctx->path, ctx->report).empty())
         return read_failure(ctx, ws, step, true, messages);
-    if (ctx->options && ctx->options->strict && ctx->report->unsupported > 0)
-        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %zu entities repaired on reading (strict)",
-                            ctx->path, ctx->report->unsupported);
+    const sw_import_tally &told = ctx->report->messages;
+    if (ctx->options && ctx->options->strict && told.total > 0)
+        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %s (%zu message%s about the file, and "
+                            "--strict is set)", ctx->path, ctx->report->first_message,
+                            told.total, told.total > 1 ? "s" : "");
     return SW_OK;
 }
 
