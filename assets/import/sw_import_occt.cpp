@@ -21,13 +21,17 @@ extern "C" {
 #include "sw_occt_measure.h"
 }
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom2dConvert.hxx>
 #include <Geom2d_BSplineCurve.hxx>
@@ -1080,7 +1084,52 @@ sw_status measure_file(const char *path, sw_occt_measure *out, sw_error *err)
     return SW_OK;
 }
 
+double edge_length(const TopoDS_Edge &edge)
+{
+    if (BRep_Tool::Degenerated(edge))
+        return 0.0;
+    BRepAdaptor_Curve curve(edge);  /* its 3D curve, or its curve on a face (IGES) */
+    return GCPnts_AbscissaPoint::Length(curve);
+}
+
+sw_status measure_sewing(const char *path, double tolerance, sw_occt_sewing *out, sw_error *err)
+{
+    std::string ext = lower_extension(path);
+    bool step = ext == "stp" || ext == "step" || ext == "p21";
+    MessageCapture messages;
+    TopoDS_Shape shape;
+    *out = sw_occt_sewing{};
+    sw_status status = step ? read_one_shape<STEPControl_Reader>(path, true, &shape, err)
+                            : read_one_shape<IGESControl_Reader>(path, false, &shape, err);
+    if (status != SW_OK || shape.IsNull())
+        return status;
+    BRepBuilderAPI_Sewing sewing(tolerance);
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+        BRepBuilderAPI_Copy copy(f.Current());
+        sewing.Add(copy.Shape());
+        out->faces++;
+    }
+    sewing.Perform();
+    for (int i = 1; i <= sewing.NbFreeEdges(); i++)
+        out->free_length_mm += edge_length(sewing.FreeEdge(i));
+    out->free_edges = (size_t)sewing.NbFreeEdges();
+    TopoDS_Shape sewn = sewing.SewedShape();
+    for (TopExp_Explorer f(sewn, TopAbs_FACE); f.More(); f.Next())
+        for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next())
+            out->border_length_mm += edge_length(TopoDS::Edge(e.Current()));
+    return SW_OK;
+}
+
 }  // namespace
+
+extern "C" sw_status sw_occt_measure_sewing(const char *path, double tolerance_mm,
+                                            sw_occt_sewing *out, sw_error *err)
+{
+    if (!path || !out || !(tolerance_mm > 0))
+        return sw_error_set(err, SW_ERR_ARG, "sw_occt_measure_sewing: no path, output or "
+                                             "positive tolerance");
+    return guarded(path, err, [&]() { return measure_sewing(path, tolerance_mm, out, err); });
+}
 
 extern "C" sw_status sw_occt_measure_file(const char *path, sw_occt_measure *out, sw_error *err)
 {
