@@ -339,6 +339,9 @@ static void print_summary(const build_options *o, const sw_model *model,
            "%.2f s\n", r->boundary_vertices, r->boundary_edges, r->seams, r->free_edges,
            r->nonmanifold_edges, r->tolerance, seams->collapses, r->flatten_s + r->sew_s,
            seams->simplify_s);
+    if (r->clamped > 0)
+        printf("seamwalk-pack: seams: %zu trim points outside their surface's domain put on its "
+               "border\n", r->clamped);
     printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
            model->patch_count, bytes, o->out_path, seconds);
 }

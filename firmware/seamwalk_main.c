@@ -282,7 +282,7 @@ static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uin
         s->surfaces_failed_max = f.failed_surfaces;
     if (f.holes_filled > s->surfaces_holes_filled_max)
         s->surfaces_holes_filled_max = f.holes_filled;
-    if (measuring && f.cracks > s->cracks_max)
+    if (f.cracks > s->cracks_max)   /* counted every frame: a refused surface is one */
         s->cracks_max = f.cracks;
     if (f.crossings > s->seam_crossings_max)
         s->seam_crossings_max = f.crossings;

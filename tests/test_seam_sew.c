@@ -260,7 +260,7 @@ static void test_dense_sides_shorter_than_tolerance_are_sewn(void)
     uint32_t surf[2];
     uint8_t outer[2];
     size_t sloops[3] = {0};
-    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 0, sloops, 2, 0.1, 0};
+    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 0, sloops, 2, 0.1, 0, 0};
     square_loop(&pl, 0, 1, 41);
     square_loop(&pl, 1, 0, 29);
     sw_seam_host h;
@@ -293,7 +293,7 @@ static void test_closed_surface_meets_itself(void)
     uint32_t surf[1] = {0};
     uint8_t outer[1] = {1};
     size_t sloops[2] = {0, 1};
-    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 1, sloops, 1, 0.01, 0};
+    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 1, sloops, 1, 0.01, 0, 0};
     const double two_pi = 6.283185307179586;
     size_t n = 0;
     for (int i = 0; i < RIM; i++, n++) /* bottom, u up */

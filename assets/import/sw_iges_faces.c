@@ -177,6 +177,37 @@ static int model_point(void *user, double t, sw_vec3 *p, double uv[2])
 }
 
 /* A fit result as one of our curves (taking its arrays). */
+/* The tolerance a face's parameter curves are fitted within: the file's
+ * (or the option's), but never below what the fit can reach on this face.
+ * Files state resolutions like 1e-8 that point inversion on a surface of
+ * revolution cannot meet (1.2e-7 on a real impeller); a millionth of the
+ * face's size is far below what anyone sees and well above double rounding. */
+enum { IGES_FIT_RELATIVE_INV = 1000000 };
+static double fit_tolerance(const iges_reader *r, const iges_face *f)
+{
+    const iges_surface *s = &f->surface;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < s->count_u * s->count_v; i++)
+        for (int k = 0; k < 3; k++)
+            lo[k] = fmin(lo[k], s->ctrl[4 * i + k]), hi[k] = fmax(hi[k], s->ctrl[4 * i + k]);
+    double size = 0;
+    for (int k = 0; k < 3; k++)
+        size = fmax(size, hi[k] - lo[k]);
+    return fmax(r->tol, size / IGES_FIT_RELATIVE_INV);
+}
+
+/* A trim with no parameter curve within the tolerance: its face cannot be
+ * used, the file can (the face is skipped and counted, an error when
+ * strict; the message keeps the D line and the distances). */
+static sw_status fit_failed(iges_reader *r, int entity, sw_status st)
+{
+    if (st != SW_ERR_RANGE)
+        return st;
+    r->unsupported_type = r->ents[entity].type;
+    r->unsupported_why = "no parameter curve within tolerance";
+    return SW_ERR_UNSUPPORTED;
+}
+
 static sw_status take_fit(iges_reader *r, sw_pcurve_result *fit, iges_curves *out)
 {
     iges_curve c = {fit->degree, fit->count, fit->knots, fit->ctrl};
@@ -192,11 +223,11 @@ sw_status iges_compute_pcurves(iges_reader *r, iges_face *f, const iges_curves *
         const iges_curve *c = &model->items[i];
         sw_pcurve_target tg = {model_point, (void *)c, c->knots[c->degree], c->knots[c->count]};
         sw_pcurve_result fit;
-        st = sw_pcurve_fit(&f->ps, &tg, r->tol, &fit, r->err);
+        st = sw_pcurve_fit(&f->ps, &tg, fit_tolerance(r, f), &fit, r->err);
         if (st != SW_OK) {
             sw_error_prefix(r->err, "%s: D line %d (type %d): model-space curve %d", r->file,
                             iges_de(entity), r->ents[entity].type, i + 1);
-            return st;
+            return fit_failed(r, entity, st);
         }
         st = take_fit(r, &fit, out);
         if (st == SW_OK && r->report)
@@ -248,11 +279,12 @@ sw_status iges_map_trims(iges_reader *r, iges_face *f, iges_curves *trims, int e
         angle_trim a = {c, f};
         sw_pcurve_target tg = {angle_point, &a, c->knots[c->degree], c->knots[c->count]};
         sw_pcurve_result fit;
-        st = sw_pcurve_fit(&f->ps, &tg, r->tol, &fit, r->err);
-        if (st != SW_OK)
+        st = sw_pcurve_fit(&f->ps, &tg, fit_tolerance(r, f), &fit, r->err);
+        if (st != SW_OK) {
             sw_error_prefix(r->err, "%s: D line %d (type %d): trim on a surface of revolution",
                             r->file, iges_de(entity), r->ents[entity].type);
-        else
+            st = fit_failed(r, entity, st);
+        } else
             st = take_fit(r, &fit, &mapped);
     }
     iges_curves_free(trims);

@@ -56,6 +56,8 @@ typedef struct iges_reader {
     int depth;
     long visits;                    /* entities entered so far: shared references */
     int unsupported_type;           /* set with SW_ERR_UNSUPPORTED */
+    const char *unsupported_why;    /* and, when the type is supported but this entity
+                                       could not be used, why (else NULL) */
     const sw_import_options *opt;
     sw_import_report *report;
     sw_error *err;

@@ -59,11 +59,17 @@ static void progress(const iges_reader *r, int done, int total)
  * is an error when strict. */
 static sw_status skip_or_fail(iges_reader *r, sw_status st)
 {
-    if (st != SW_ERR_UNSUPPORTED || (r->opt && r->opt->strict))
+    if (st != SW_ERR_UNSUPPORTED || (r->opt && r->opt->strict)) {
+        r->unsupported_why = NULL;
         return st;
-    char kind[24];
-    snprintf(kind, sizeof kind, "IGES %d", r->unsupported_type);
+    }
+    char kind[SW_IMPORT_KIND_CHARS];
+    if (r->unsupported_why)
+        snprintf(kind, sizeof kind, "IGES %d (%s)", r->unsupported_type, r->unsupported_why);
+    else
+        snprintf(kind, sizeof kind, "IGES %d", r->unsupported_type);
     sw_import_report_unsupported(r->report, kind);
+    r->unsupported_why = NULL;
     return SW_OK;
 }
 

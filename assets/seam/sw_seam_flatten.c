@@ -44,12 +44,21 @@ typedef struct flat_ctx {
     double tol;        /* for the halving: tolerance / 2 */
     int min_depth;     /* halvings forced before any piece is accepted */
     size_t unproven;
+    size_t clamped;    /* points moved onto the domain's border */
     vbuf *buf;
     sw_error *err;
 } flat_ctx;
 
 static sw_status vbuf_push(flat_ctx *c, double u, double v)
 {
+    /* A p-curve a little past its surface's domain (exporters' fits do
+     * that) goes onto the border: the surface is evaluated there anyway
+     * (sw_seam_qtree_point clamps), and the runtime's tessellator refuses a
+     * loop far outside the domain, which would leave a hole. */
+    const double *d = c->qt->domain;
+    double cu = fmin(fmax(u, d[0]), d[1]), cv = fmin(fmax(v, d[2]), d[3]);
+    c->clamped += cu != u || cv != v;
+    u = cu, v = cv;
     vbuf *b = c->buf;
     if (b->count && b->uv[2 * b->count - 2] == u && b->uv[2 * b->count - 1] == v)
         return SW_OK; /* a degenerate piece: same point twice */
@@ -417,5 +426,6 @@ sw_status sw_seam_flatten_model(const sw_model *model, double tolerance, sw_seam
     out->surface_loops[model->surface_count] = out->loop_count;
     out->uv = buf.uv, out->p = buf.p, out->vertex_count = buf.count;
     out->unproven = c.unproven;
+    out->clamped = c.clamped;
     return SW_OK;
 }

@@ -44,6 +44,8 @@ typedef struct sw_seam_polylines {
     size_t surface_count;
     double tolerance;
     size_t unproven;        /* curve pieces accepted without a proof (see above) */
+    size_t clamped;         /* vertices whose (u, v) lay outside the surface's domain and
+                               were put on its border (the runtime refuses loops far out) */
 } sw_seam_polylines;
 
 /* Flattens every loop of every surface of the model within tolerance (> 0,
