@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Does seamwalk take these CAD files? For every IGES, STEP, Newell listing
 # and .bpt file under the folders given:
-#   tests/corpus.sh [--build DIR] [--require-sewing] [--json FILE] DIR...
+#   tests/corpus.sh [--build DIR] [--require-sewing] [--allow-free FILE:MM]...
+#                   [--json FILE] DIR...
 # builds its pack (wall time and peak memory of seamwalk-pack), verifies it,
 # walks it through the Seam Graph from close to far (tests/walk_near_far.sh:
 # cracks, refused surfaces and the error bound checked every frame), and,
@@ -10,22 +11,24 @@
 # One table row per file; --json also writes one JSON object per line.
 # A file fails when any step fails, a surface is refused or a crack shows;
 # with --require-sewing also when its free border is over 1.05 times
-# OpenCASCADE's (plus 1e-6 of the border, for rounding). Exit 1 when any
-# file failed, 2 for usage.
+# OpenCASCADE's (plus 1e-6 of the border, for rounding), except that a file
+# named by --allow-free may have up to MM of free border (a known shortfall,
+# held from getting worse). Exit 1 when any file failed, 2 for usage.
 set -uo pipefail
 src=$(cd "$(dirname "$0")/.." && pwd)
-build=$src/build require_sewing=0 json=""
+build=$src/build require_sewing=0 json="" allow=""
 while [ $# -gt 0 ]; do
   case $1 in
     --build) build=$2; shift 2 ;;
     --require-sewing) require_sewing=1; shift ;;
+    --allow-free) allow="$allow $2"; shift 2 ;;
     --json) json=$2; shift 2 ;;
-    -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "corpus.sh: unknown option $1" >&2; exit 2 ;;
     *) break ;;
   esac
 done
-[ $# -gt 0 ] || { echo "usage: corpus.sh [--build DIR] [--require-sewing] [--json FILE] DIR..." >&2; exit 2; }
+[ $# -gt 0 ] || { echo "usage: corpus.sh [--build DIR] [--require-sewing] [--allow-free FILE:MM]... [--json FILE] DIR..." >&2; exit 2; }
 tool=$build/assets/seamwalk-pack walker=$build/firmware/seamwalk measure=$build/tests/occt_measure
 for t in "$tool" "$walker"; do
   [ -x "$t" ] || { echo "corpus.sh: $t is not built (cmake --build $build)" >&2; exit 2; }
@@ -81,7 +84,7 @@ for f in "${files[@]}"; do
       fi ;;
   esac
   row=$(python3 "$src/tests/corpus_row.py" row "$name" "$result" "$secs" "${peak:-0}" \
-        "$w/info.json" "$w/near_far.json" "${occt:-}" "$require_sewing" "$note")
+        "$w/info.json" "$w/near_far.json" "${occt:-}" "$require_sewing" "$note" "$allow")
   [ -n "$json" ] && echo "$row" | sed -n 1p >> "$json"
   echo "$row" | sed -n 2p
   echo "$row" | sed -n 1p | grep -q '"result": "ok"' || failed=$((failed + 1))

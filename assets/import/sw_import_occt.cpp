@@ -379,6 +379,7 @@ int fix_missing_pcurves(const TopoDS_Wire &wire, const TopoDS_Face &face)
 struct Loop {
     std::vector<TrimCurve> curves;
     std::vector<int> computed;
+    std::vector<double> gaps;   /* per curve: its edge's tolerance (sw_model_trim_curve.gap) */
     int outer = 0;
 };
 
@@ -402,10 +403,12 @@ const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double t
 {
     std::vector<TrimCurve> closed;
     std::vector<int> computed;
+    std::vector<double> gaps;
     size_t n = loop->curves.size();
     for (size_t i = 0; i < n; i++) {
         closed.push_back(std::move(loop->curves[i]));
         computed.push_back(loop->computed[i]);
+        gaps.push_back(loop->gaps[i]);
         const TrimCurve &a = closed.back(), &b = loop->curves[(i + 1) % n];
         const double *end = &a.ctrl[a.ctrl.size() - 4];
         const double *start = i + 1 < n ? &b.ctrl[0] : &closed.front().ctrl[0];
@@ -416,9 +419,11 @@ const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double t
             return "trim curves do not meet in 3D";
         closed.push_back(segment(end, start));
         computed.push_back(1);
+        gaps.push_back(p.Distance(q));
     }
     loop->curves = std::move(closed);
     loop->computed = std::move(computed);
+    loop->gaps = std::move(gaps);
     return nullptr;
 }
 
@@ -446,7 +451,12 @@ const char *loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
             b->Reverse();
         loop->curves.push_back(trim_curve_of(b));
         loop->computed.push_back(computed);
-        tolerance = std::max(tolerance, BRep_Tool::Tolerance(moved));
+        /* OCCT's edge tolerance covers how far each face's p-curve image
+         * strays from the edge (shape healing widens it where the file's
+         * faces do not meet): the sewing uses it as the file's own word. */
+        double edge_tolerance = std::max(BRep_Tool::Tolerance(edge), BRep_Tool::Tolerance(moved));
+        loop->gaps.push_back(edge_tolerance);
+        tolerance = std::max(tolerance, edge_tolerance);
         explored++;
     }
     /* BRepTools_WireExplorer skips edges of wires it cannot chain; a loop
@@ -498,7 +508,7 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
         for (const TrimCurve &t : loops[i].curves)
             views[i].push_back({t.degree, t.count, t.knots.data(), t.ctrl.data()});
         inputs[i] = {views[i].data(), loops[i].computed.data(), views[i].size(),
-                     loops[i].outer};
+                     loops[i].outer, loops[i].gaps.data()};
     }
     sw_status status = sw_model_add_surface(ctx->model, &surface.view, reversed, inputs.data(),
                                             inputs.size(), ctx->err);
