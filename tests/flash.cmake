@@ -27,3 +27,9 @@ add_test(NAME test_flash_power COMMAND test_flash_power $<TARGET_FILE:seamwalk-f
          $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
          ${CMAKE_CURRENT_BINARY_DIR}/flash_power ${SW_FLASH_TRIALS} 12)
 set_tests_properties(test_flash_power PROPERTIES FIXTURES_REQUIRED flash_packs)
+
+# Refusals, I/O faults and the install / status / mark-good / rollback flow.
+add_test(NAME test_flash_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_cli.sh
+         $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_cli)
+set_tests_properties(test_flash_cli PROPERTIES FIXTURES_REQUIRED flash_packs)
