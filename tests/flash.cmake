@@ -33,3 +33,6 @@ add_test(NAME test_flash_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash
          $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
          ${CMAKE_CURRENT_BINARY_DIR}/flash_cli)
 set_tests_properties(test_flash_cli PROPERTIES FIXTURES_REQUIRED flash_packs)
+
+# The screen a unit with no valid pack shows, read back from the framebuffer.
+sw_add_test(test_message_screen SOURCES test_message_screen.c LIBS sw_platform sw_core)
