@@ -201,3 +201,19 @@ sw_status sw_store_remove_journal(const sw_store *s, sw_error *err)
         return sw_error_set(err, SW_ERR_IO, "unlink %s: %s", path, strerror(errno));
     return sw_store_sync_dir(s->dir, err);
 }
+
+sw_status sw_store_read_keys(const char *path, sw_trusted_keys *keys, sw_error *err)
+{
+    char text[16384];
+    size_t size;
+    int present;
+    *keys = (sw_trusted_keys){ 0 };
+    sw_status st = read_small(path, text, sizeof text, &size, &present, err);
+    if (st == SW_OK && !present)
+        st = sw_error_set(err, SW_ERR_IO, "%s: No such file: the unit's trusted keys", path);
+    if (st == SW_OK)
+        st = sw_trusted_keys_parse(text, size, path, keys, err);
+    if (st == SW_OK && keys->count == 0)
+        st = sw_error_set(err, SW_ERR_FORMAT, "%s: no trusted keys in the file", path);
+    return st;
+}

@@ -94,6 +94,10 @@ sw_status sw_store_read_journal(const sw_store *s, sw_store_journal *out, int *p
 sw_status sw_store_write_journal(const sw_store *s, const sw_store_journal *j, sw_error *err);
 sw_status sw_store_remove_journal(const sw_store *s, sw_error *err);
 
+/* Reads a trusted keys file (sw_trusted_keys_parse, at most 16 KiB) into
+ * keys; SW_ERR_FORMAT if it holds none. No allocation. */
+sw_status sw_store_read_keys(const char *path, sw_trusted_keys *keys, sw_error *err);
+
 /* Writes size bytes to path atomically (temp, fsync, rename, fsync dir). */
 sw_status sw_store_write_atomic(const char *path, const char *bytes, size_t size, sw_error *err);
 sw_status sw_store_sync_dir(const char *dir, sw_error *err);

@@ -51,20 +51,6 @@ static sw_status read_file(const char *path, uint8_t **out, size_t *size, sw_err
     return SW_OK;
 }
 
-sw_status sw_store_read_keys(const char *path, sw_trusted_keys *keys, sw_error *err)
-{
-    uint8_t *text;
-    size_t size;
-    *keys = (sw_trusted_keys){ 0 };
-    sw_status st = read_file(path, &text, &size, err);
-    if (st == SW_OK)
-        st = sw_trusted_keys_parse((const char *)text, size, path, keys, err);
-    if (st == SW_OK && keys->count == 0)
-        st = sw_error_set(err, SW_ERR_FORMAT, "%s: no trusted keys in the file", path);
-    free(text);
-    return st;
-}
-
 sw_status sw_store_check_pack(const uint8_t *bytes, size_t size, const sw_trusted_keys *keys,
                               const sw_pack_signature **sig, enum sw_install_refusal *refusal,
                               sw_error *err)

@@ -55,7 +55,4 @@ sw_status sw_store_check_pack(const uint8_t *bytes, size_t size, const sw_truste
 sw_status sw_store_verify_slot(const sw_store *s, int slot, const sw_store_slot *expect,
                                const sw_trusted_keys *keys, sw_error *err);
 
-/* Reads a trusted keys file (sw_trusted_keys_parse) into keys. */
-sw_status sw_store_read_keys(const char *path, sw_trusted_keys *keys, sw_error *err);
-
 #endif

@@ -36,3 +36,10 @@ set_tests_properties(test_flash_cli PROPERTIES FIXTURES_REQUIRED flash_packs)
 
 # The screen a unit with no valid pack shows, read back from the framebuffer.
 sw_add_test(test_message_screen SOURCES test_message_screen.c LIBS sw_platform sw_core)
+
+# The boot side: seamwalk --store (trial, mark-good, fallback after K boots,
+# power cuts while a boot is recorded, the message screen read back).
+add_test(NAME test_flash_boot COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_boot.sh
+         $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim>
+         ${SW_FLASH_FIXTURE} ${CMAKE_CURRENT_BINARY_DIR}/flash_boot)
+set_tests_properties(test_flash_boot PROPERTIES FIXTURES_REQUIRED flash_packs)
