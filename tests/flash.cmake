@@ -1,6 +1,7 @@
 # tests of signed packs and the unit's pack store (issue 12): signing and its
 # check (test_pack_sign), the key file and store state parsers' fuzz targets.
 sw_add_test(test_pack_sign SOURCES test_pack_sign.c LIBS sw_assets sw_core)
+sw_add_test(test_pack_store SOURCES test_pack_store.c LIBS sw_runtime)
 
 # The store tests' packs and keys (tests/flash_fixture.sh), made once.
 set(SW_FLASH_FIXTURE ${CMAKE_CURRENT_BINARY_DIR}/flash_fixture)
@@ -43,3 +44,9 @@ add_test(NAME test_flash_boot COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flas
          $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim>
          ${SW_FLASH_FIXTURE} ${CMAKE_CURRENT_BINARY_DIR}/flash_boot)
 set_tests_properties(test_flash_boot PROPERTIES FIXTURES_REQUIRED flash_packs)
+
+# The parsers of the store's state file and journal, and of key files.
+sw_add_fuzz_target(fuzz_store SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_store.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store)
+sw_add_fuzz_target(fuzz_keys SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_keys.c
+  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys)
