@@ -453,6 +453,10 @@ static sw_status show_message(runtime *rt, sw_error *err)
 static void store_stats(runtime *rt)
 {
     sw_stats *s = &rt->stats;
+    if (rt->boot.trial && !rt->boot.marked_good)
+        sw_boot_note(&rt->boot, "slot %c is still pending: it ran %.2f s of the %g s "
+                     "(--good-after-s) before it is marked good", sw_slot_letter(rt->boot.slot),
+                     s->walk_s, rt->opt.good_after_s);
     s->store = 1;
     s->store_slot = sw_slot_letter(rt->boot.slot);
     s->store_trial = rt->boot.trial;
