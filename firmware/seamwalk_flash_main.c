@@ -143,7 +143,7 @@ static sw_status read_input(const char *path, uint8_t **out, size_t *size, sw_er
 
 typedef struct progress {
     int on;
-    int slot;
+    const sw_install_report *report;  /* its slot is set before the first chunk */
 } progress;
 
 static void show_progress(void *user, uint64_t done, uint64_t total)
@@ -151,7 +151,7 @@ static void show_progress(void *user, uint64_t done, uint64_t total)
     const progress *p = user;
     if (p->on)
         fprintf(stderr, "\rseamwalk-flash: writing slot %c %3d%% (%.1f of %.1f MiB)",
-                sw_slot_letter(p->slot), total ? (int)(100 * done / total) : 100,
+                sw_slot_letter(p->report->slot), total ? (int)(100 * done / total) : 100,
                 done / 1048576.0, total / 1048576.0);
 }
 
@@ -182,12 +182,10 @@ static int cmd_install(const args *a)
     if (sw_store_open(&store, a->store, &err) != SW_OK || load_keys(&store, a, &keys, &err) ||
         read_input(a->pack, &bytes, &size, &err) != SW_OK)
         return failed(&err, EXIT_FAILED);
-    sw_store_state before;
-    int slot_guess = sw_store_read_state(&store, &before, &err) == SW_OK && before.active == 0;
-    progress p = { !a->quiet && isatty(2), slot_guess ? SW_SLOT_B : SW_SLOT_A };
+    sw_install_report r;
+    progress p = { !a->quiet && isatty(2), &r };
     sw_install_options o = { &keys, a->allow_downgrade, (size_t)a->chunk_kb * 1024u,
                              show_progress, &p };
-    sw_install_report r;
     sw_status st = sw_store_install(&store, bytes, size, &o, &r, &err);
     free(bytes);
     if (p.on)

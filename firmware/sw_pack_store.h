@@ -123,8 +123,9 @@ int sw_store_boot_decide(sw_store_state *st, uint32_t max_attempts, sw_boot_choi
 
 /* At boot: locks, reads the state, decides, records the attempt before the
  * pack is loaded (so a crash or power cut while loading counts), unlocks.
- * If the state cannot be written, a trial is not started: the good slot
- * runs instead and the message says why. */
+ * If the state cannot be written, or an install holds the lock (never
+ * waited for), a trial is not started: the good slot runs instead and the
+ * message says why. */
 sw_status sw_store_boot_begin(sw_store *s, uint32_t max_attempts, sw_boot_choice *out,
                               sw_error *err);
 

@@ -33,7 +33,18 @@ sw_status sw_store_boot_begin(sw_store *s, uint32_t max_attempts, sw_boot_choice
                               sw_error *err)
 {
     sw_store_state st;
-    sw_status rc = sw_store_lock(s, 1, err);
+    sw_status rc = sw_store_lock(s, 0, err);
+    if (rc == SW_ERR_UNSUPPORTED) {
+        /* An install is running: the screen must not wait for it, and a
+         * trial that cannot be recorded must not start. The state is read
+         * unlocked; its renames are atomic. */
+        if ((rc = sw_store_read_state(s, &st, err)) != SW_OK)
+            return rc;
+        *out = (sw_boot_choice){ .slot = st.active, .fallback = SW_SLOT_NONE };
+        snprintf(out->message, sizeof out->message, "the store is busy (an install is "
+                 "running): starting the good slot, no trial");
+        return SW_OK;
+    }
     if (rc != SW_OK)
         return rc;
     if ((rc = sw_store_read_state(s, &st, err)) != SW_OK) {

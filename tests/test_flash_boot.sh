@@ -125,6 +125,13 @@ check "after each cut while recording a boot, a slot still verifies" [ "$cuts" -
 
 # ---- mark-good by the runtime, then rollback -----------------------------------------
 "$flash" install --store "$unit" --quiet "$fixture/new.swpack" >/dev/null
+exec 9>"$unit/lock"
+flock 9          # an install is running: the boot must neither wait nor start a trial
+boot --good-after-s 0
+exec 9>&-
+check "busy store: said" logged "the store is busy (an install is running)"
+check "busy store: the good slot runs" logged "starting slot A ('spoon-1' version 1), good"
+check "busy store: no attempt used" state "pending: B (0 boots so far)"
 boot --good-after-s 0
 check "new pack marked good by the runtime" state "active: B"
 "$flash" rollback --store "$unit" >/dev/null

@@ -17,6 +17,7 @@ check() {  # check DESCRIPTION COMMAND...
 fl() { "$flash" "$@" --store "$unit" >"$work/out" 2>&1; echo $? >"$work/rc"; }
 rc() { [ "$(cat "$work/rc")" = "$1" ]; }
 said() { grep -q -- "$1" "$work/out"; }
+not_said() { ! grep -q -- "$1" "$work/out"; }
 boots() {  # boots VERSION: boot-check starts that version, verified
   "$flash" boot-check --store "$unit" >"$work/boot" 2>&1 &&
     grep -q "' version $1 (.*verified" "$work/boot"
@@ -91,6 +92,7 @@ check "every fault handled" [ "$faults" -eq "$fault_trials" ]
 
 # ---- the flow --------------------------------------------------------------------
 fl install - <"$fixture/new.swpack"; check "install from standard input" rc 0
+check "no progress line on a pipe" not_said "writing slot"
 check "it says where" said "installed 'cup-2' version 2 .* into slot B, verified"
 fl status; check "status: pending B" said "pending: B (0 boots so far)"
 check "status: slots verified" said "slot B: pending, 'cup-2' version 2, $size bytes, verified"
@@ -113,6 +115,12 @@ fl install "$fixture/new.swpack"; check "busy while locked" rc 5
 check "busy says so" said "busy"
 exec 9>&-
 fl install "$fixture/new.swpack"; check "free again" rc 0
+# On a terminal (script(1) gives it one): the progress line, then the result.
+"$flash" rollback --store "$unit" >/dev/null
+script -qec "'$flash' install --store '$unit' --chunk-kb 64 '$fixture/new.swpack'" /dev/null \
+  >"$work/out" 2>&1
+check "progress on a terminal" said "writing slot B 100% (0.8 of 0.8 MiB)"
+check "and the result after it" said "installed 'cup-2' version 2"
 printf 'garbage\n' >"$unit/state"
 fl status; check "a damaged state file is an error" rc 1
 check "naming the file and line" said "state:1: expected seamwalk-store 1"
