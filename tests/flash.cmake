@@ -17,7 +17,7 @@ set_target_properties(flash_fault_shim PROPERTIES PREFIX "")
 # Power loss: SIGKILL at random calls and random times during install.
 # Fewer trials under the sanitizers, where every run is several times slower.
 if(SW_ASAN OR SW_TSAN)
-  set(SW_FLASH_TRIALS 80 20)
+  set(SW_FLASH_TRIALS 120 30)
 else()
   set(SW_FLASH_TRIALS 200 40)
 endif()
