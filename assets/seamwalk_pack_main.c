@@ -1,5 +1,5 @@
 /* seamwalk-pack: the host tool that turns model files into packs and looks
- * inside packs. Commands: build, info, verify, gen (usage below). Exit status:
+ * inside packs. Commands: build, info, verify, keygen, sign, gen (usage below). Exit status:
  * 0 success, 1 failure (one line on stderr naming the file), 2 usage error.
  * A failed build never leaves a partial or damaged output file: the pack is
  * written through sw_write_file_atomic only after everything succeeded.
@@ -21,6 +21,7 @@
 #include "sw_model.h"
 #include "sw_pack.h"
 #include "sw_pack_info.h"
+#include "sw_pack_sign.h"
 #include "sw_pack_write.h"
 #include "sw_progress.h"
 #include "sw_scene.h"
@@ -32,7 +33,9 @@ static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
     "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
     "       seamwalk-pack info [--json] PACK\n"
-    "       seamwalk-pack verify PACK\n"
+    "       seamwalk-pack verify PACK [--key KEYS.pub]\n"
+    "       seamwalk-pack keygen -o PREFIX\n"
+    "       seamwalk-pack sign PACK --key PREFIX.key --version N --name NAME [-o OUT]\n"
     "       seamwalk-pack gen showroom --patches N -o SCENE.ini [--part FILE]... [--seed S]\n"
     "       seamwalk-pack --help\n"
     "INPUT: a Newell listing (.txt), Bezier patch text (.bpt), IGES (.igs, .iges),\n"
@@ -462,6 +465,8 @@ static int cmd_info(int argc, char **argv)
 
 static int cmd_verify(int argc, char **argv)
 {
+    if (argc > 1)   /* verify PACK --key KEYS: also the signature (sw_pack_sign.h) */
+        return sw_pack_cmd_verify_signed(argc, argv);
     if (argc != 1 || (argv[0][0] == '-' && argv[0][1] != '\0'))
         return usage_error("verify: %s", "expected exactly one PACK");
     char *bytes = NULL;
@@ -491,6 +496,10 @@ int main(int argc, char **argv)
         rc = cmd_info(argc - 2, argv + 2);
     else if (strcmp(cmd, "verify") == 0)
         rc = cmd_verify(argc - 2, argv + 2);
+    else if (strcmp(cmd, "keygen") == 0)
+        rc = sw_pack_cmd_keygen(argc - 2, argv + 2);
+    else if (strcmp(cmd, "sign") == 0)
+        rc = sw_pack_cmd_sign(argc - 2, argv + 2);
     else if (strcmp(cmd, "gen") == 0)
         rc = sw_pack_cmd_gen(argc - 2, argv + 2);
     else
