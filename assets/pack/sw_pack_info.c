@@ -1,17 +1,23 @@
 /* seamwalk-pack info (sw_pack_info.h): stats per part and for the pack, as
  * aligned text and as JSON. Keys are added, never renamed: scripts read them. */
 #include "sw_pack_info.h"
+#include "sw_up_axis.h"
 
 #include <inttypes.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "sw_up_axis.h"
-
 const char *sw_pack_units_name(uint32_t units)
 {
     return units == SW_UNITS_MILLIMETRE ? "mm" : units == SW_UNITS_METRE ? "m" : "unspecified";
+}
+
+/* Packs from before ORIENTATION say so: their +y is the reader's default. */
+static void print_up_axis_text(FILE *out, const sw_pack *pack)
+{
+    fprintf(out, "  %-16s %s%s\n", "up axis", sw_up_axis_name(sw_pack_up_axis(pack)),
+            pack->orientation ? "" : " (no ORIENTATION section: the default)");
 }
 
 static void stats_init(sw_pack_part_stats *s)
@@ -183,13 +189,6 @@ static void print_seam_text(FILE *out, const sw_pack *pack)
     fprintf(out, "  %-16s %" PRIu64 " bytes: %.1f per boundary edge, %.1f per surface, %.1f per "
             "bezier patch\n", "seam memory", s.bytes, s.bytes_per_edge, s.bytes_per_surface,
             s.bytes_per_bezier_patch);
-}
-
-/* Packs from before ORIENTATION say so: their +y is the reader's default. */
-static void print_up_axis_text(FILE *out, const sw_pack *pack)
-{
-    fprintf(out, "  %-16s %s%s\n", "up axis", sw_up_axis_name(sw_pack_up_axis(pack)),
-            pack->orientation ? "" : " (no ORIENTATION section: the default)");
 }
 
 static void print_text(FILE *out, const char *path, const sw_pack *pack,
