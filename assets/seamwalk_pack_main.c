@@ -21,7 +21,6 @@
 #include "sw_model.h"
 #include "sw_pack.h"
 #include "sw_pack_info.h"
-#include "sw_pack_up.h"
 #include "sw_pack_write.h"
 #include "sw_progress.h"
 #include "sw_scene.h"
@@ -29,6 +28,7 @@
 #include "sw_seam_simplify.h"
 #include "sw_text_scan.h"
 #include "sw_up_axis.h"
+#include "sw_up_inputs.h"
 
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
@@ -111,7 +111,7 @@ typedef struct build_options {
     int input_count;
     int quiet, strict, iges_occt;
     double seam_tolerance;      /* 0: sw_seam_default_tolerance */
-    int32_t up_axis;            /* --up (sw_up_axis.h); 0: by the inputs (sw_pack_up.h) */
+    int32_t up_axis;            /* --up (sw_up_axis.h); 0: by the inputs (sw_up_inputs.h) */
 } build_options;
 
 /* What the progress callbacks need to label a stage and count its rate:
@@ -304,11 +304,11 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
     for (int i = 0; st == SW_OK && i < o->input_count; i++) {
         model->up_axis = 0; /* what this input's scene says, if it is one */
         st = add_input(o, i, &pc, model, &reports[i], err);
-        up_defaults[i] = sw_pack_up_default(o->inputs[i], model->up_axis);
+        up_defaults[i] = sw_up_input_default(o->inputs[i], model->up_axis);
     }
     if (st == SW_OK) {
         sw_progress_clear(&pc.bar); /* a warning must not share the bar's line */
-        model->up_axis = sw_pack_up_choose(o->inputs, up_defaults, o->input_count, o->up_axis,
+        model->up_axis = sw_up_inputs_choose(o->inputs, up_defaults, o->input_count, o->up_axis,
                                            stderr);
         st = pack_model(o, &pc, model, seams, bytes_out, err);
     }

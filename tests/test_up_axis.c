@@ -10,9 +10,9 @@
 
 #include "sw_test.h"
 #include "pack_sample.h"
-#include "sw_pack_up.h"
 #include "sw_scene.h"
 #include "sw_up_axis.h"
+#include "sw_up_inputs.h"
 
 /* ---- names ---- */
 
@@ -175,24 +175,24 @@ static void test_a_second_section_is_refused(void)
 
 static void test_each_input_kind_has_its_convention(void)
 {
-    SW_CHECK(sw_pack_up_default("a/part.stp", 0) == SW_UP_POS_Z);
-    SW_CHECK(sw_pack_up_default("PART.STEP", 0) == SW_UP_POS_Z);
-    SW_CHECK(sw_pack_up_default("hammer.iges", 0) == SW_UP_POS_Z);
-    SW_CHECK(sw_pack_up_default("x.IGS", 0) == SW_UP_POS_Z);
-    SW_CHECK(sw_pack_up_default("teapot.txt", 0) == SW_UP_POS_Y);
-    SW_CHECK(sw_pack_up_default("saddle.bpt", 0) == SW_UP_POS_Y);
-    SW_CHECK(sw_pack_up_default("show.ini", 0) == SW_UP_POS_Y);
-    SW_CHECK(sw_pack_up_default("show.ini", SW_UP_NEG_X) == SW_UP_NEG_X);
-    SW_CHECK(sw_pack_up_default("teapot.txt", SW_UP_POS_Z) == SW_UP_POS_Y); /* not a scene */
-    SW_CHECK(sw_pack_up_default("dir.stp/teapot.txt", 0) == SW_UP_POS_Y);  /* by the file name */
+    SW_CHECK(sw_up_input_default("a/part.stp", 0) == SW_UP_POS_Z);
+    SW_CHECK(sw_up_input_default("PART.STEP", 0) == SW_UP_POS_Z);
+    SW_CHECK(sw_up_input_default("hammer.iges", 0) == SW_UP_POS_Z);
+    SW_CHECK(sw_up_input_default("x.IGS", 0) == SW_UP_POS_Z);
+    SW_CHECK(sw_up_input_default("teapot.txt", 0) == SW_UP_POS_Y);
+    SW_CHECK(sw_up_input_default("saddle.bpt", 0) == SW_UP_POS_Y);
+    SW_CHECK(sw_up_input_default("show.ini", 0) == SW_UP_POS_Y);
+    SW_CHECK(sw_up_input_default("show.ini", SW_UP_NEG_X) == SW_UP_NEG_X);
+    SW_CHECK(sw_up_input_default("teapot.txt", SW_UP_POS_Z) == SW_UP_POS_Y); /* not a scene */
+    SW_CHECK(sw_up_input_default("dir.stp/teapot.txt", 0) == SW_UP_POS_Y);  /* by the file name */
 }
 
-/* sw_pack_up_choose with its warning captured. */
+/* sw_up_inputs_choose with its warning captured. */
 static int32_t choose(const char *const *paths, const int32_t *defaults, int n, int32_t over,
                       char *warning, size_t cap)
 {
     FILE *f = tmpfile();
-    int32_t axis = sw_pack_up_choose(paths, defaults, n, over, f);
+    int32_t axis = sw_up_inputs_choose(paths, defaults, n, over, f);
     rewind(f);
     size_t got = fread(warning, 1, cap - 1, f);
     warning[got] = '\0';

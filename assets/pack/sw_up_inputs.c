@@ -1,5 +1,5 @@
-/* The build's up axis (sw_pack_up.h). */
-#include "sw_pack_up.h"
+/* The build's up axis (sw_up_inputs.h). */
+#include "sw_up_inputs.h"
 
 #include <string.h>
 #include <strings.h>
@@ -13,7 +13,7 @@ static int has_extension(const char *path, const char *ext)
     return dot && strcasecmp(dot, ext) == 0;
 }
 
-int32_t sw_pack_up_default(const char *path, int32_t scene_up_axis)
+int32_t sw_up_input_default(const char *path, int32_t scene_up_axis)
 {
     static const char *const z_up[] = { ".stp", ".step", ".igs", ".iges" };
     for (size_t i = 0; i < sizeof z_up / sizeof *z_up; i++)
@@ -31,7 +31,7 @@ static void print_inputs(FILE *warn, const char *const *paths, const int32_t *de
         fprintf(warn, "%s%s (%s)", i ? ", " : "", paths[i], sw_up_axis_name(defaults[i]));
 }
 
-int32_t sw_pack_up_choose(const char *const *paths, const int32_t *defaults, int count,
+int32_t sw_up_inputs_choose(const char *const *paths, const int32_t *defaults, int count,
                           int32_t override, FILE *warn)
 {
     if (override != 0)
