@@ -10,7 +10,9 @@
 #        as every STEP part did before packs had an up axis.
 # Exit 77 means skipped.
 set -uo pipefail
-mode=$1 build=$2 src=$3 shared=$4
+mode=$1 shared=$4
+# Absolute, since the scenes written below name the samples from their folder.
+build=$(cd "$2" && pwd) src=$(cd "$3" && pwd)
 tool=$build/assets/seamwalk-pack
 walker=$build/firmware/seamwalk
 compare=$build/tests/image_compare
