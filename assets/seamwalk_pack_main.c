@@ -1,5 +1,5 @@
 /* seamwalk-pack: the host tool that turns model files into packs and looks
- * inside packs. Commands: build, info, verify, gen (usage below). Exit status:
+ * inside packs. Commands: build, info, verify, keygen, sign, gen (usage below). Exit status:
  * 0 success, 1 failure (one line on stderr naming the file), 2 usage error.
  * A failed build never leaves a partial or damaged output file: the pack is
  * written through sw_write_file_atomic only after everything succeeded.
@@ -21,6 +21,7 @@
 #include "sw_model.h"
 #include "sw_pack.h"
 #include "sw_pack_info.h"
+#include "sw_pack_sign.h"
 #include "sw_pack_write.h"
 #include "sw_progress.h"
 #include "sw_scene.h"
@@ -35,7 +36,9 @@ static const char usage_text[] =
     "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
     "                           [--up x|y|z|-x|-y|-z]\n"
     "       seamwalk-pack info [--json] PACK\n"
-    "       seamwalk-pack verify PACK\n"
+    "       seamwalk-pack verify PACK [--key KEYS.pub]\n"
+    "       seamwalk-pack keygen -o PREFIX\n"
+    "       seamwalk-pack sign PACK --key PREFIX.key --version N --name NAME [-o OUT]\n"
     "       seamwalk-pack gen showroom --patches N -o SCENE.ini [--part FILE]... [--seed S]\n"
     "       seamwalk-pack --help\n"
     "INPUT: a Newell listing (.txt), Bezier patch text (.bpt), IGES (.igs, .iges),\n"
@@ -181,15 +184,20 @@ static sw_status import_cad(const build_options *o, const char *path, enum input
     return st;
 }
 
-/* --strict: an importer that skipped entities anyway fails the build here. */
+/* --strict: an importer that skipped entities, or read the file despite
+ * messages about it, fails the build here. */
 static sw_status check_strict(const char *path, const sw_import_report *r, sw_error *err)
 {
-    if (r->unsupported == 0)
-        return SW_OK;
-    return sw_error_set(err, SW_ERR_UNSUPPORTED, "%s: %zu unsupported entities (%s%s) and "
-                        "--strict is set", path, r->unsupported,
-                        r->unsupported_kinds ? r->unsupported_kind[0] : "unknown kind",
-                        r->unsupported_kinds > 1 ? ", ..." : "");
+    if (r->unsupported.total > 0)
+        return sw_error_set(err, SW_ERR_UNSUPPORTED, "%s: %zu unsupported entities (%s%s) and "
+                            "--strict is set", path, r->unsupported.total,
+                            r->unsupported.kinds ? r->unsupported.kind[0] : "unknown kind",
+                            r->unsupported.kinds > 1 ? ", ..." : "");
+    if (r->messages.total > 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: %s (%zu message%s about the file, and "
+                            "--strict is set)", path, r->first_message, r->messages.total,
+                            r->messages.total > 1 ? "s" : "");
+    return SW_OK;
 }
 
 static sw_status add_input(const build_options *o, int i, progress_context *pc, sw_model *model,
@@ -317,21 +325,25 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
     return st;
 }
 
-/* One line per kind of skipped entity, per input, on stderr. */
+/* One line per kind, its count and what was done, on stderr. */
+static void print_tally(const char *name, const sw_import_tally *t, const char *done)
+{
+    size_t listed = 0;
+    for (size_t k = 0; k < t->kinds && k < SW_IMPORT_KINDS; k++) {
+        fprintf(stderr, "warning: %s: %zu x %s %s\n", name, t->count[k], t->kind[k], done);
+        listed += t->count[k];
+    }
+    if (t->total > listed)
+        fprintf(stderr, "warning: %s: %zu of other kinds %s\n", name, t->total - listed, done);
+}
+
+/* Skipped entities and tolerated messages, per input. */
 static void print_warnings(const build_options *o, const sw_import_report *reports)
 {
     for (int i = 0; i < o->input_count; i++) {
-        const sw_import_report *r = &reports[i];
         const char *name = base_name(o->inputs[i]);
-        size_t listed = 0;
-        for (size_t k = 0; k < r->unsupported_kinds && k < SW_IMPORT_KINDS; k++) {
-            fprintf(stderr, "warning: %s: %zu x %s skipped\n", name, r->unsupported_count[k],
-                    r->unsupported_kind[k]);
-            listed += r->unsupported_count[k];
-        }
-        if (r->unsupported > listed)
-            fprintf(stderr, "warning: %s: %zu entities of other kinds skipped\n", name,
-                    r->unsupported - listed);
+        print_tally(name, &reports[i].unsupported, "skipped");
+        print_tally(name, &reports[i].messages, "(read on)");
     }
 }
 
@@ -349,6 +361,9 @@ static void print_summary(const build_options *o, const sw_model *model,
            "%.2f s\n", r->boundary_vertices, r->boundary_edges, r->seams, r->free_edges,
            r->nonmanifold_edges, r->tolerance, seams->collapses, r->flatten_s + r->sew_s,
            seams->simplify_s);
+    if (r->clamped > 0)
+        printf("seamwalk-pack: seams: %zu trim points outside their surface's domain put on its "
+               "border\n", r->clamped);
     printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
            model->patch_count, bytes, o->out_path, seconds);
 }
@@ -473,6 +488,8 @@ static int cmd_info(int argc, char **argv)
 
 static int cmd_verify(int argc, char **argv)
 {
+    if (argc > 1)   /* verify PACK --key KEYS: also the signature (sw_pack_sign.h) */
+        return sw_pack_cmd_verify_signed(argc, argv);
     if (argc != 1 || (argv[0][0] == '-' && argv[0][1] != '\0'))
         return usage_error("verify: %s", "expected exactly one PACK");
     char *bytes = NULL;
@@ -502,6 +519,10 @@ int main(int argc, char **argv)
         rc = cmd_info(argc - 2, argv + 2);
     else if (strcmp(cmd, "verify") == 0)
         rc = cmd_verify(argc - 2, argv + 2);
+    else if (strcmp(cmd, "keygen") == 0)
+        rc = sw_pack_cmd_keygen(argc - 2, argv + 2);
+    else if (strcmp(cmd, "sign") == 0)
+        rc = sw_pack_cmd_sign(argc - 2, argv + 2);
     else if (strcmp(cmd, "gen") == 0)
         rc = sw_pack_cmd_gen(argc - 2, argv + 2);
     else

@@ -5,6 +5,7 @@ find_package(Threads REQUIRED)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)   # pack section checksums
 pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)            # headless and device displays
 pkg_check_modules(GLESV2 REQUIRED IMPORTED_TARGET glesv2)      # the renderer
+pkg_check_modules(SODIUM REQUIRED IMPORTED_TARGET libsodium)   # ed25519 pack signatures
 pkg_check_modules(INIH REQUIRED IMPORTED_TARGET inih)          # showroom scene files
 
 # stb ships as headers (libstb-dev); we compile the implementations we use

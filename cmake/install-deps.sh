@@ -11,6 +11,7 @@ packages=(
   libxxhash-dev                      # pack section checksums (XXH3-64)
   libstb-dev                         # stb_image_write (PNG frames), stb_image (tests)
   libinih-dev                        # showroom scene files (INI)
+  libsodium-dev                      # ed25519 signatures of packs (seamwalk-pack sign, seamwalk-flash)
   libgl-dev libglu1-mesa-dev         # the benchmark's reference: GLU's NURBS tessellator
   python3                            # tests read the stats JSON
   clang libclang-rt-14-dev           # libFuzzer runs of the parsers (tests/fuzz)

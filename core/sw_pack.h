@@ -56,9 +56,9 @@ enum sw_section_type {
     SW_SECTION_SEAM_COLLAPSES = 19,     /* sw_seam_collapse[collapse_count] */
     SW_SECTION_SEAM_SLOT_REFS = 20,     /* uint32_t[slot_ref_count] */
     SW_SECTION_SEAM_SURFACE_LOOPS = 21, /* uint32_t[surface_count + 1] */
-    /* 22 is SIGNATURE (signed packs). Which model axis points up; optional,
-     * absent means +y, so packs written before it keep their meaning and
-     * older readers skip it (core/sw_up_axis.h). */
+    /* 22 is SIGNATURE (core/sw_pack_signature.h). Which model axis points
+     * up; optional, absent means +y, so packs written before it keep their
+     * meaning and older readers skip it (core/sw_up_axis.h). */
     SW_SECTION_ORIENTATION = 23,        /* one sw_pack_orientation */
 };
 

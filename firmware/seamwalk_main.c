@@ -15,9 +15,11 @@
 #include <time.h>
 
 #include "sw_alloc_count.h"
+#include "sw_boot.h"
 #include "sw_camera_path.h"
 #include "sw_egl_headless.h"
 #include "sw_measure.h"
+#include "sw_message_screen.h"
 #include "sw_options.h"
 #include "sw_pack.h"
 #include "sw_png.h"
@@ -48,6 +50,9 @@ typedef struct runtime {
     sw_camera_frame frame;           /* the orbit's: up is the pack's up axis */
     const sw_pack_viewpoint *view;   /* with --view */
     double start_s;
+    sw_boot boot;             /* with --store: the slot being started, mark-good */
+    int loading_slot;         /* with --store: the slot start() loads */
+    int no_pack;              /* with --store: no slot started; the message screen runs */
 } runtime;
 
 static double now_s(void)
@@ -196,6 +201,9 @@ static sw_status start(runtime *rt, sw_error *err)
     double t0 = now_s();
     if ((st = sw_pack_load(rt->opt.pack_path, &rt->arena, &rt->pack, err)) != SW_OK)
         return st;
+    if (rt->opt.store_dir &&
+        (st = sw_boot_check_loaded(&rt->boot, rt->loading_slot, &rt->pack, err)) != SW_OK)
+        return st;
     rt->stats.pack_open_ms = (now_s() - t0) * 1000.0;
     if (rt->pack.meta->patch_count == 0)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: the pack has no patches to show",
@@ -286,7 +294,7 @@ static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uin
         s->surfaces_failed_max = f.failed_surfaces;
     if (f.holes_filled > s->surfaces_holes_filled_max)
         s->surfaces_holes_filled_max = f.holes_filled;
-    if (measuring && f.cracks > s->cracks_max)
+    if (f.cracks > s->cracks_max)   /* counted every frame: a refused surface is one */
         s->cracks_max = f.cracks;
     if (f.crossings > s->seam_crossings_max)
         s->seam_crossings_max = f.crossings;
@@ -351,6 +359,8 @@ static sw_status walk(runtime *rt, sw_error *err)
         sw_status st = run_frame(rt, f, err);
         if (st != SW_OK)
             return st;
+        if (rt->opt.store_dir)
+            sw_boot_poll_good(&rt->boot, now_s() - t0, rt->opt.good_after_s);
     }
     rt->stats.walk_s = now_s() - t0;
     rt->stats.mallocs_after_init = sw_alloc_count_active()
@@ -359,10 +369,112 @@ static sw_status walk(runtime *rt, sw_error *err)
     return SW_OK;
 }
 
+/* ---- --store: the unit's pack store (sw_boot.h) ---------------------------- */
+
+/* Back to before start(), keeping the options and the boot, so the next
+ * slot can be tried from scratch. */
+static void stop(runtime *rt);
+static void reset_runtime(runtime *rt)
+{
+    stop(rt);
+    sw_options opt = rt->opt;
+    double start_s = rt->start_s;
+    sw_boot boot = rt->boot;
+    memset(rt, 0, sizeof *rt);
+    rt->opt = opt;
+    rt->start_s = start_s;
+    rt->boot = boot;
+}
+
+/* No slot starts: a block for the stats and the read-back, and a display
+ * for the message screen (sw_message_screen.h). */
+static sw_status start_message(runtime *rt, sw_error *err)
+{
+    rt->no_pack = 1;
+    size_t pixels = (size_t)rt->opt.width * rt->opt.height * 4;
+    rt->png_scratch = rt->opt.png_dir ? sw_png_scratch_bytes(rt->opt.width, rt->opt.height, 3) : 0;
+    size_t need = sw_stats_arena_bytes(rt->opt.frames) + sw_arena_worst_case(pixels, 64) +
+                  rt->png_scratch + 4096;
+    if (!(rt->block = malloc(need)))
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes", need);
+    sw_arena_init(&rt->arena, rt->block, need);
+    sw_status st = sw_stats_init(&rt->stats, &rt->arena, rt->opt.frames, rt->opt.max_error_px, err);
+    if (st != SW_OK)
+        return st;
+    rt->pixels = sw_arena_alloc(&rt->arena, pixels, 64);
+    if (rt->opt.png_dir && mkdir(rt->opt.png_dir, 0777) != 0 && errno != EEXIST)
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.png_dir, strerror(errno));
+    if ((st = sw_egl_headless_init(&rt->egl, SW_GL_API_GLES2, rt->opt.width, rt->opt.height,
+                                   err)))
+        return st;
+    rt->egl_up = 1;
+    return SW_OK;
+}
+
+/* The pending slot on trial (its attempt already counted), then the good
+ * one; a slot that does not load or verify is logged and the next tried. */
+static sw_status start_from_store(runtime *rt, sw_error *err)
+{
+    sw_boot_begin(&rt->boot, rt->opt.store_dir, rt->opt.keys_path,
+                  (uint32_t)rt->opt.boot_attempts);
+    int slots[2], n = sw_boot_candidates(&rt->boot, slots);
+    for (int i = 0; i < n; i++) {
+        rt->loading_slot = slots[i];
+        rt->opt.pack_path = sw_boot_prepare(&rt->boot, slots[i]);
+        sw_error slot_err = { 0 };
+        if (start(rt, &slot_err) == SW_OK) {
+            sw_boot_started(&rt->boot, slots[i]);
+            return SW_OK;
+        }
+        sw_boot_note(&rt->boot, "slot %c does not start: %s", sw_slot_letter(slots[i]),
+                     slot_err.message);
+        reset_runtime(rt);
+    }
+    sw_boot_note(&rt->boot, "no valid pack in %s: showing the message screen",
+                 rt->opt.store_dir);
+    return start_message(rt, err);
+}
+
+/* The message screen for --frames frames, read back like a walk's. */
+static sw_status show_message(runtime *rt, sw_error *err)
+{
+    double t0 = now_s();
+    for (int f = 0; f < rt->opt.frames; f++) {
+        double f0 = now_s();
+        sw_message_screen_draw(rt->opt.width, rt->opt.height, "NO VALID PACK");
+        sw_status st = sw_egl_headless_read_rgba(&rt->egl, rt->pixels, err);
+        if (st != SW_OK)
+            return st;
+        sw_stats_add_frame(&rt->stats, (now_s() - f0) * 1000.0, 0, 0);
+        if (rt->opt.png_dir && f % rt->opt.png_every == 0 && (st = write_png(rt, f, err)))
+            return st;
+    }
+    rt->stats.walk_s = now_s() - t0;
+    rt->stats.mallocs_after_init = -1; /* not counted: this is no walk */
+    return SW_OK;
+}
+
+static void store_stats(runtime *rt)
+{
+    sw_stats *s = &rt->stats;
+    if (rt->boot.trial && !rt->boot.marked_good)
+        sw_boot_note(&rt->boot, "slot %c is still pending: it ran %.2f s of the %g s "
+                     "(--good-after-s) before it is marked good", sw_slot_letter(rt->boot.slot),
+                     s->walk_s, rt->opt.good_after_s);
+    s->store = 1;
+    s->store_slot = sw_slot_letter(rt->boot.slot);
+    s->store_trial = rt->boot.trial;
+    s->store_marked_good = rt->boot.marked_good;
+    s->store_log = rt->boot.log;
+    s->store_message = rt->no_pack ? "NO VALID PACK" : NULL;
+}
+
 static sw_status write_stats(runtime *rt, sw_error *err)
 {
     sw_stats *s = &rt->stats;
-    s->patches_total = rt->pack.meta->patch_count;
+    if (rt->opt.store_dir)
+        store_stats(rt);
+    s->patches_total = rt->pack.meta ? rt->pack.meta->patch_count : 0;
     s->measure_every = rt->opt.measure_every;
     s->arena_bytes = rt->arena.size;
     s->arena_peak_bytes = rt->arena.peak;
@@ -418,15 +530,16 @@ int main(int argc, char **argv)
         sw_options_print_usage(argv[0]);
         return st != SW_OK ? 2 : 0;
     }
-    st = start(&rt, &err);
+    st = rt.opt.store_dir ? start_from_store(&rt, &err) : start(&rt, &err);
     if (st == SW_OK)
-        st = walk(&rt, &err);
+        st = rt.no_pack ? show_message(&rt, &err) : walk(&rt, &err);
     if (st == SW_OK)
         st = write_stats(&rt, &err);
-    if (st == SW_OK)
+    if (st == SW_OK && !rt.no_pack)
         print_summary(&rt);
-    else
+    else if (st != SW_OK)
         fprintf(stderr, "seamwalk: %s\n", err.message);
     stop(&rt);
-    return st == SW_OK ? 0 : 1;
+    /* 3: the unit had no pack to show and showed the message screen instead. */
+    return st != SW_OK ? 1 : rt.no_pack ? 3 : 0;
 }

@@ -54,12 +54,14 @@ static void set_defaults(sw_options *o)
     o->max_error_px = 0.5;
     o->measure_every = 4;
     o->fov_deg = 45;
+    o->boot_attempts = 3;
+    o->good_after_s = 30;
 }
 
 static sw_status check_complete(const sw_options *o, sw_error *err)
 {
-    if (!o->pack_path)
-        return sw_error_set(err, SW_ERR_ARG, "--pack FILE is required");
+    if (!o->pack_path == !o->store_dir)
+        return sw_error_set(err, SW_ERR_ARG, "give exactly one of --pack FILE and --store DIR");
     if (!o->width)
         return sw_error_set(err, SW_ERR_ARG,
                             "--headless WxH is required: this build has no device display yet");
@@ -110,6 +112,14 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_real(a, v, 0.01, 100, &o->max_error_px, err);
         } else if (!strcmp(a, "--measure-every")) {
             st = parse_int(a, v, 1, INT_MAX, &o->measure_every, err);
+        } else if (!strcmp(a, "--store")) {
+            o->store_dir = v;
+        } else if (!strcmp(a, "--keys")) {
+            o->keys_path = v;
+        } else if (!strcmp(a, "--boot-attempts")) {
+            st = parse_int(a, v, 1, 1000, &o->boot_attempts, err);
+        } else if (!strcmp(a, "--good-after-s")) {
+            st = parse_real(a, v, 0, 1e9, &o->good_after_s, err);
         } else if (!strcmp(a, "--fov-deg")) {
             st = parse_real(a, v, 5, 150, &o->fov_deg, err);
         } else {
@@ -123,7 +133,7 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
 void sw_options_print_usage(const char *argv0)
 {
     fprintf(stderr,
-            "usage: %s --pack FILE --headless WxH (--path FILE | --orbit | --view NAME)\n"
+            "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
             "          [--seams]\n"
@@ -137,6 +147,13 @@ void sw_options_print_usage(const char *argv0)
             "  --memory-mb M       refuse to start if the arena needs more (default 256)\n"
             "  --max-error-px E    screen-space tessellation error bound (default 0.5)\n"
             "  --measure-every K   measure error and cracks every K-th frame (default 4)\n"
+            "  --store DIR         start the unit's pack store's slot (firmware/STORE.md): the\n"
+            "                      pending one on trial, else the good one; none valid: a\n"
+            "                      message screen, exit 3\n"
+            "  --keys FILE         trusted public keys for --store (default DIR/keys)\n"
+            "  --boot-attempts K   boots a pending slot gets before falling back (default 3)\n"
+            "  --good-after-s S    walk time of healthy frames before a pending slot is\n"
+            "                      marked good (default 30)\n"
             "  --seams             draw through the pack's Seam Graph: sewn, view-dependent\n"
             "                      trims, whole patches vanish far away (partial: every\n"
             "                      visible surface is tessellated every frame)\n",

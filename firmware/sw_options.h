@@ -20,6 +20,10 @@ typedef struct sw_options {
     double max_error_px;         /* default 0.5 */
     int measure_every;           /* error and crack measurement every K-th frame; default 4 */
     double fov_deg;              /* vertical field of view; default 45 */
+    const char *store_dir;       /* --store DIR: start a slot of the unit's pack store instead of --pack */
+    const char *keys_path;       /* --keys FILE: trusted keys; default DIR/keys */
+    int boot_attempts;           /* --boot-attempts K: boots a pending slot gets; default 3 */
+    double good_after_s;         /* --good-after-s S: healthy walk time before mark-good; default 30 */
     int help;
 } sw_options;
 

@@ -413,7 +413,10 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, const sw_view *view, sw_
             frame->holes_filled += st == SW_OK;
         }
         if (st != SW_OK) {
+            /* A visible surface left out is a hole: every point of its
+             * border has nothing on this side, so each counts as a crack. */
             frame->failed_surfaces++;
+            frame->cracks += loops.loop_first[loops.loop_count] - loops.loop_first[0];
             continue;
         }
         if (pack->surfaces[s].part != part) {

@@ -68,7 +68,8 @@ typedef struct sw_seam_frame {
                                      crossed another loop, the tessellator refused the whole */
     uint64_t triangles;
     uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
-                                     plus loop points the tessellator dropped */
+                                     plus loop points the tessellator dropped, plus every
+                                     border point of a surface it refused (a hole) */
     uint64_t crossings;           /* border vertices on a seam segment between its vertices
                                      (T-vertices on a straight edge, not gaps) */
     double measure_ms;            /* of the draw, spent measuring (not part of the frame) */

@@ -96,6 +96,36 @@ double sw_stats_error_p99(const sw_stats *s)
     return s->error_max_px;
 }
 
+/* s as a JSON string: quotes, backslashes and control characters escaped. */
+static void write_json_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; s && *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\')
+            fprintf(f, "\\%c", c);
+        else if (c < 0x20)
+            fprintf(f, "\\u%04x", c);
+        else
+            fputc(c, f);
+    }
+    fputc('"', f);
+}
+
+static void write_store(FILE *f, const sw_stats *s)
+{
+    fprintf(f, "  \"store\": {\"slot\": \"%c\", \"trial\": %s, \"marked_good\": %d, "
+               "\"message_screen\": ", s->store_slot, s->store_trial ? "true" : "false",
+            s->store_marked_good);
+    if (s->store_message)
+        write_json_string(f, s->store_message);
+    else
+        fputs("null", f);
+    fputs(", \"log\": ", f);
+    write_json_string(f, s->store_log);
+    fputs("},\n", f);
+}
+
 static float *copy_as_float_u32(const uint32_t *v, int n, sw_arena *a)
 {
     float *out = sw_arena_alloc(a, (size_t)n * sizeof(float) + 1, 8);
@@ -143,6 +173,8 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
                 (unsigned long long)s->seam_arena_bytes,
                 (unsigned long long)s->seam_arena_peak_bytes, s->seam_sewing_offset_px,
                 s->seam_error_beyond_sewing_px);
+    if (s->store)
+        write_store(f, s);
     fprintf(f, "  \"arena_bytes\": %llu,\n  \"arena_peak_bytes\": %llu,\n",
             (unsigned long long)s->arena_bytes, (unsigned long long)s->arena_peak_bytes);
     fprintf(f, "  \"mallocs_after_init\": %lld,\n", (long long)s->mallocs_after_init);

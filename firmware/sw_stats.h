@@ -40,6 +40,14 @@ typedef struct sw_stats {
     double seam_error_beyond_sewing_px; /* measured error beyond each surface's sewing offset */
     double seam_sewing_offset_px;       /* largest sewing offset of a drawn surface, pixels */
 
+    /* With --store (firmware/sw_boot.h): which slot ran and what the boot did. */
+    int store;                   /* the fields below are meaningful */
+    char store_slot;             /* 'A', 'B', or '-': no slot started, the message screen ran */
+    int store_trial;             /* the slot was the pending one on trial */
+    int store_marked_good;       /* 1 marked good in this run, -1 failed to, 0 not (yet) */
+    const char *store_log;       /* what the boot did, lines; not owned */
+    const char *store_message;   /* the message screen's text, or NULL */
+
     double pack_open_ms, first_frame_ms, walk_s;
     uint64_t arena_bytes, arena_peak_bytes;
     int64_t mallocs_after_init;  /* -1 when the binary could not count */

@@ -474,8 +474,8 @@ static void test_unsupported_entity(void)
     sw_error err = {0};
     sw_import_report rep;
     SW_CHECK_MSG(import_text(buf, len, NULL, &m, &rep, &err) == SW_OK, "%s", err.message);
-    SW_CHECK(rep.faces == 1 && rep.unsupported == 1 && rep.unsupported_kinds == 1);
-    SW_CHECK(strcmp(rep.unsupported_kind[0], "IGES 406") == 0 && rep.unsupported_count[0] == 1);
+    SW_CHECK(rep.faces == 1 && rep.unsupported.total == 1 && rep.unsupported.kinds == 1);
+    SW_CHECK(strcmp(rep.unsupported.kind[0], "IGES 406") == 0 && rep.unsupported.count[0] == 1);
     sw_model_free(&m);
     sw_import_options strict = {.strict = 1};
     expect_error(buf, len, &strict, "t.igs: D line 1 (type 406): entity type 406 is not supported");
@@ -551,7 +551,7 @@ static void test_shared_models(void)
         printf("  %s: %zu faces, %zu patches, %zu loops, %zu trim curves, %zu computed, "
                "%zu unsupported, diagonal %g mm\n",
                x->name, rep.faces, m.patch_count, m.loop_count, m.curve_count,
-               rep.pcurves_computed, rep.unsupported, diag);
+               rep.pcurves_computed, rep.unsupported.total, diag);
         sw_model_free(&m);
         free(text);
     }

@@ -249,9 +249,9 @@ static void import_and_check(const import_case *c)
     SW_CHECK_MSG(report.faces == c->faces && m.surface_count == c->faces,
                  "%s: %zu faces imported (%zu surfaces), want %zu", c->name, report.faces,
                  m.surface_count, c->faces);
-    for (size_t k = 0; k < report.unsupported_kinds; k++)
-        SW_CHECK_MSG(strcmp(report.unsupported_kind[k], "OCCT face") != 0, "%s: %zu faces skipped",
-                     c->name, report.unsupported_count[k]);
+    for (size_t k = 0; k < report.unsupported.kinds; k++)
+        SW_CHECK_MSG(strcmp(report.unsupported.kind[k], "OCCT face") != 0, "%s: %zu faces skipped",
+                     c->name, report.unsupported.count[k]);
     SW_CHECK(m.part_count >= 1);
 
     measured got = measure_model(&m);

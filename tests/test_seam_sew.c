@@ -260,7 +260,9 @@ static void test_dense_sides_shorter_than_tolerance_are_sewn(void)
     uint32_t surf[2];
     uint8_t outer[2];
     size_t sloops[3] = {0};
-    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 0, sloops, 2, 0.1, 0};
+    sw_seam_polylines pl = {.uv = uv, .p = p, .loop_start = starts, .loop_surface = surf,
+                            .loop_outer = outer, .surface_loops = sloops, .surface_count = 2,
+                            .tolerance = 0.1};
     square_loop(&pl, 0, 1, 41);
     square_loop(&pl, 1, 0, 29);
     sw_seam_host h;
@@ -293,7 +295,9 @@ static void test_closed_surface_meets_itself(void)
     uint32_t surf[1] = {0};
     uint8_t outer[1] = {1};
     size_t sloops[2] = {0, 1};
-    sw_seam_polylines pl = {uv, p, 0, starts, surf, outer, 1, sloops, 1, 0.01, 0};
+    sw_seam_polylines pl = {.uv = uv, .p = p, .loop_start = starts, .loop_surface = surf,
+                            .loop_outer = outer, .loop_count = 1, .surface_loops = sloops,
+                            .surface_count = 1, .tolerance = 0.01};
     const double two_pi = 6.283185307179586;
     size_t n = 0;
     for (int i = 0; i < RIM; i++, n++) /* bottom, u up */
@@ -341,8 +345,8 @@ static void test_hole_and_disc_sewn_all_round(void)
     shape_circle hole, rim;
     shape_circle_init(&hole, 0.5, 0.5, 0.3, 1);
     shape_circle_init(&rim, 0.5, 0.5, 0.3, 0);
-    sw_model_loop_input holed[2] = {{rect.curves, NULL, 4, 1}, {&hole.curve, NULL, 1, 0}};
-    sw_model_loop_input disc[1] = {{&rim.curve, NULL, 1, 1}};
+    sw_model_loop_input holed[2] = {{rect.curves, NULL, 4, 1, NULL}, {&hole.curve, NULL, 1, 0, NULL}};
+    sw_model_loop_input disc[1] = {{&rim.curve, NULL, 1, 1, NULL}};
     sw_model m;
     sw_model_init(&m);
     sw_error err;
@@ -362,6 +366,44 @@ static void test_hole_and_disc_sewn_all_round(void)
     SW_CHECK(r.seams > 16);
     sw_seam_host_free(&h);
     sw_model_free(&m);
+}
+
+/* Two trimmed halves of the plane z = 0, [0, 0.5] and [0.5 + gap, 1] by
+ * [0, 1], each trim curve with the gap the file would give it (its edge
+ * tolerance): sewn at tolerance 1e-3, how many edges are seams? */
+static size_t seams_between_halves(double gap, double curve_gap)
+{
+    shape_plane plane;
+    shape_plane_init(&plane, 3, 2, 2, 1, 1);
+    shape_rect left, right;
+    shape_rect_init(&left, 0, 0.5, 0, 1);
+    shape_rect_init(&right, 0.5 + gap, 1, 0, 1);
+    const double gaps[4] = {curve_gap, curve_gap, curve_gap, curve_gap};
+    sw_model_loop_input a[1] = {{left.curves, NULL, 4, 1, gaps}};
+    sw_model_loop_input b[1] = {{right.curves, NULL, 4, 1, gaps}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, a, 1, &err) == SW_OK);
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, b, 1, &err) == SW_OK);
+    SW_CHECK(m.surface_count == 2 && m.curves[0].gap == curve_gap);
+    sw_seam_host h;
+    sw_seam_report r = {0};
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){1e-3}, &h, &r, &err) == SW_OK);
+    check_host(&h);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+    return r.seams;
+}
+
+/* Borders 3e-3 apart, tolerance 1e-3: left apart unless the file says each
+ * border may be off its edge by enough that both together reach across. */
+static void test_trim_gaps_widen_the_tolerance(void)
+{
+    SW_CHECK(seams_between_halves(3e-3, 0) == 0);
+    SW_CHECK(seams_between_halves(3e-3, 1e-3) == 0);     /* 2e-3 together: short */
+    SW_CHECK(seams_between_halves(3e-3, 2e-3) >= 1);     /* 4e-3 together */
+    SW_CHECK(seams_between_halves(0.5e-3, 0) >= 1);      /* within the tolerance alone */
 }
 
 /* Distance from p to segment a-b. */
@@ -490,7 +532,7 @@ static void test_trimmed_bump_polylines_within_tolerance(void)
     shape_circle outer, hole;
     shape_circle_init(&outer, 0.5, 0.5, 0.45, 0);
     shape_circle_init(&hole, 0.6, 0.45, 0.1, 1);
-    sw_model_loop_input loops[2] = {{&outer.curve, NULL, 1, 1}, {&hole.curve, NULL, 1, 0}};
+    sw_model_loop_input loops[2] = {{&outer.curve, NULL, 1, 1, NULL}, {&hole.curve, NULL, 1, 0, NULL}};
     sw_model m;
     sw_model_init(&m);
     sw_error err;
@@ -814,6 +856,7 @@ int main(int argc, char **argv)
     SW_RUN(test_dense_sides_shorter_than_tolerance_are_sewn);
     SW_RUN(test_closed_surface_meets_itself);
     SW_RUN(test_hole_and_disc_sewn_all_round);
+    SW_RUN(test_trim_gaps_widen_the_tolerance);
     SW_RUN(test_teapot_polylines_within_tolerance);
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);
     SW_RUN(test_teapot_adjacency_is_sewn);

@@ -89,6 +89,12 @@ cli() {
   run build "$work/bad.ini" -o "$work/bad.swpack"
   check "a bad scene up_axis fails naming file:line" eval '[ "$(code)" -eq 1 ] && has "$work/err" "bad.ini:1: up_axis: .sideways., expected x, y, z, -x, -y or -z"'
 
+  # Signing lays the sections out again: the up axis must survive it.
+  "$tool" build "$samples/teapot.txt" --up z -o "$work/signed.swpack" --quiet &&
+    "$tool" keygen -o "$work/owner" > /dev/null &&
+    "$tool" sign "$work/signed.swpack" --key "$work/owner.key" --version 1 --name pot > /dev/null
+  check "a signed pack keeps its up axis" eval '[ "$(up_of "$work/signed.swpack")" = "+z" ] && "$tool" verify "$work/signed.swpack" --key "$work/owner.pub" > /dev/null'
+
   # Packs from before ORIENTATION: the fuzz corpus's seed was written then.
   local old=$src/tests/fuzz/corpus/pack/seed-sample
   check "an old pack reads as +y" eval '[ "$(up_of "$old")" = "+y" ]'

@@ -177,9 +177,41 @@ static int model_point(void *user, double t, sw_vec3 *p, double uv[2])
 }
 
 /* A fit result as one of our curves (taking its arrays). */
+/* The tolerance a face's parameter curves are fitted within: the file's
+ * (or the option's), but never below what the fit can reach on this face.
+ * Files state resolutions like 1e-8 that point inversion on a surface of
+ * revolution cannot meet (1.2e-7 on a real impeller); a millionth of the
+ * face's size is far below what anyone sees and well above double rounding. */
+enum { IGES_FIT_RELATIVE_INV = 1000000 };
+static double fit_tolerance(const iges_reader *r, const iges_face *f)
+{
+    const iges_surface *s = &f->surface;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < s->count_u * s->count_v; i++)
+        for (int k = 0; k < 3; k++)
+            lo[k] = fmin(lo[k], s->ctrl[4 * i + k]), hi[k] = fmax(hi[k], s->ctrl[4 * i + k]);
+    double size = 0;
+    for (int k = 0; k < 3; k++)
+        size = fmax(size, hi[k] - lo[k]);
+    return fmax(r->tol, size / IGES_FIT_RELATIVE_INV);
+}
+
+/* A trim with no parameter curve within the tolerance: its face cannot be
+ * used, the file can (the face is skipped and counted, an error when
+ * strict; the message keeps the D line and the distances). */
+static sw_status fit_failed(iges_reader *r, int entity, sw_status st)
+{
+    if (st != SW_ERR_RANGE)
+        return st;
+    r->unsupported_type = r->ents[entity].type;
+    r->unsupported_why = "no parameter curve within tolerance";
+    return SW_ERR_UNSUPPORTED;
+}
+
 static sw_status take_fit(iges_reader *r, sw_pcurve_result *fit, iges_curves *out)
 {
-    iges_curve c = {fit->degree, fit->count, fit->knots, fit->ctrl};
+    iges_curve c = {fit->degree, fit->count, fit->knots, fit->ctrl,
+                    fit->max_gap + fit->max_error};
     fit->knots = fit->ctrl = NULL;
     return iges_curves_push(r, out, &c);
 }
@@ -192,11 +224,11 @@ sw_status iges_compute_pcurves(iges_reader *r, iges_face *f, const iges_curves *
         const iges_curve *c = &model->items[i];
         sw_pcurve_target tg = {model_point, (void *)c, c->knots[c->degree], c->knots[c->count]};
         sw_pcurve_result fit;
-        st = sw_pcurve_fit(&f->ps, &tg, r->tol, &fit, r->err);
+        st = sw_pcurve_fit(&f->ps, &tg, fit_tolerance(r, f), &fit, r->err);
         if (st != SW_OK) {
             sw_error_prefix(r->err, "%s: D line %d (type %d): model-space curve %d", r->file,
                             iges_de(entity), r->ents[entity].type, i + 1);
-            return st;
+            return fit_failed(r, entity, st);
         }
         st = take_fit(r, &fit, out);
         if (st == SW_OK && r->report)
@@ -248,11 +280,12 @@ sw_status iges_map_trims(iges_reader *r, iges_face *f, iges_curves *trims, int e
         angle_trim a = {c, f};
         sw_pcurve_target tg = {angle_point, &a, c->knots[c->degree], c->knots[c->count]};
         sw_pcurve_result fit;
-        st = sw_pcurve_fit(&f->ps, &tg, r->tol, &fit, r->err);
-        if (st != SW_OK)
+        st = sw_pcurve_fit(&f->ps, &tg, fit_tolerance(r, f), &fit, r->err);
+        if (st != SW_OK) {
             sw_error_prefix(r->err, "%s: D line %d (type %d): trim on a surface of revolution",
                             r->file, iges_de(entity), r->ents[entity].type);
-        else
+            st = fit_failed(r, entity, st);
+        } else
             st = take_fit(r, &fit, &mapped);
     }
     iges_curves_free(trims);
@@ -332,3 +365,63 @@ sw_status iges_written_group(iges_reader *r, iges_face *f, int curve, int owner,
     return st;
 }
 
+
+/* ---- how far written trims stray from their model-space curves --------- */
+
+enum { GAP_SAMPLES = 129 };
+
+/* The model-space curves as a polyline of GAP_SAMPLES points each. */
+static sw_vec3 *sample_model(const iges_curves *model, size_t *n)
+{
+    sw_vec3 *pts = malloc(((size_t)model->count * GAP_SAMPLES + 1) * sizeof *pts);
+    *n = 0;
+    for (int i = 0; pts && i < model->count; i++) {
+        const iges_curve *c = &model->items[i];
+        sw_nurbs_curve v = iges_curve_view(c);
+        double t0 = c->knots[c->degree], t1 = c->knots[c->count];
+        for (int k = 0; k < GAP_SAMPLES; k++)
+            pts[(*n)++] = sw_nurbs_curve_point(&v, t0 + (t1 - t0) * k / (GAP_SAMPLES - 1));
+    }
+    return pts;
+}
+
+static double polyline_distance(const sw_vec3 *pts, size_t n, sw_vec3 p)
+{
+    double best = INFINITY;
+    for (size_t k = 0; k + 1 < n; k++)
+        best = fmin(best, sw_v3_segment_distance(p, pts[k], pts[k + 1]));
+    return n == 1 ? sw_v3_length(sw_v3_sub(p, pts[0])) : best;
+}
+
+sw_status iges_measure_gap(iges_reader *r, iges_face *f, int model_curve, const sw_mat4 *m,
+                           iges_curves *uv)
+{
+    iges_curves model = {0};
+    if (iges_read_curve(r, model_curve, &model) != SW_OK) {
+        r->err->status = SW_OK;   /* the written trims stand; no gap known */
+        return SW_OK;
+    }
+    for (int i = 0; i < model.count; i++)
+        iges_curve_transform(&model.items[i], m);
+    size_t n = 0;
+    sw_vec3 *pts = sample_model(&model, &n);
+    sw_status st = pts ? face_ps(r, f) : sw_error_set(r->err, SW_ERR_NO_MEMORY, "%s: out of memory",
+                                                     r->file);
+    double gap = 0;
+    for (int i = 0; st == SW_OK && n > 0 && i < uv->count; i++) {
+        const iges_curve *c = &uv->items[i];
+        sw_nurbs_curve v = iges_curve_view(c);
+        double t0 = c->knots[c->degree], t1 = c->knots[c->count];
+        for (int k = 0; k < GAP_SAMPLES; k++) {
+            sw_vec3 q = sw_nurbs_curve_point(&v, t0 + (t1 - t0) * k / (GAP_SAMPLES - 1));
+            sw_surface_point on;
+            sw_pcurve_surface_eval(&f->ps, q.x, q.y, SW_EVAL_POINT, &on);
+            gap = fmax(gap, polyline_distance(pts, n, on.p));
+        }
+    }
+    for (int i = 0; st == SW_OK && i < uv->count; i++)
+        uv->items[i].gap = fmax(uv->items[i].gap, gap);
+    free(pts);
+    iges_curves_free(&model);
+    return st;
+}

@@ -56,6 +56,8 @@ typedef struct iges_reader {
     int depth;
     long visits;                    /* entities entered so far: shared references */
     int unsupported_type;           /* set with SW_ERR_UNSUPPORTED */
+    const char *unsupported_why;    /* and, when the type is supported but this entity
+                                       could not be used, why (else NULL) */
     const sw_import_options *opt;
     sw_import_report *report;
     sw_error *err;
@@ -121,6 +123,8 @@ static inline int iges_de(int entity) { return 2 * entity + 1; }
 typedef struct iges_curve {
     int degree, count;
     double *knots, *ctrl;
+    double gap;   /* a trim's: how far its image may lie from the file's model-space
+                     curve, model units (sw_model_trim_curve.gap); 0 otherwise */
 } iges_curve;
 
 typedef struct iges_curves {
@@ -253,6 +257,12 @@ sw_status iges_written_group(iges_reader *r, iges_face *f, int curve, int owner,
                              iges_curves *out);
 /* The face's surface with its owner's transform applied. */
 sw_status iges_face_surface(iges_reader *r, int owner, int surface, iges_face *f, sw_mat4 *m);
+/* Sets every trim's gap in uv (parameter curves as written for face f) to
+ * how far their image on the surface strays from the model-space curve
+ * entity (under m) the same boundary names; a curve that cannot be read
+ * leaves the gaps as they are. */
+sw_status iges_measure_gap(iges_reader *r, iges_face *f, int model_curve, const sw_mat4 *m,
+                           iges_curves *uv);
 
 sw_status iges_read_trimmed(iges_reader *r, int entity, iges_faces *out);  /* 144 */
 sw_status iges_read_bounded(iges_reader *r, int entity, iges_faces *out);  /* 143 */

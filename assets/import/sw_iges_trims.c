@@ -35,7 +35,12 @@ static sw_status read_curve_on_surface(iges_reader *r, int e, iges_face *f, cons
         if (st == SW_ERR_UNSUPPORTED && c >= 0)
             st = SW_OK;   /* the model-space curve will do */
     }
-    if (st == SW_OK && got.count == 0) {
+    if (st == SW_OK && got.count > 0 && c >= 0) {
+        st = iges_entity_matrix(r, e, &m);
+        both = sw_mat4_mul(outer, &m);
+        if (st == SW_OK)
+            st = iges_measure_gap(r, f, c, &both, &got);
+    } else if (st == SW_OK && got.count == 0) {
         if (c < 0)
             st = iges_fail(r, &p, 3, SW_ERR_FORMAT,
                            "expected a parameter-space curve (BPTR) or a model-space curve "
@@ -151,12 +156,14 @@ static sw_status boundary_curve(iges_reader *r, const iges_params *p, int *at, i
         if (st == SW_ERR_UNSUPPORTED)
             st = SW_OK, iges_curves_free(&got);
     }
-    if (st == SW_OK && got.count == 0) {
-        sw_mat4 m = sw_mat4_identity(), both;
+    sw_mat4 m = sw_mat4_identity(), both;
+    if (st == SW_OK)
         st = iges_entity_matrix(r, p->entity, &m);
-        both = sw_mat4_mul(outer, &m);
-        if (st == SW_OK)
-            st = iges_computed_group(r, f, crv, &both, p->entity, &got);
+    both = sw_mat4_mul(outer, &m);
+    if (st == SW_OK && got.count > 0) {
+        st = iges_measure_gap(r, f, crv, &both, &got);
+    } else if (st == SW_OK && got.count == 0) {
+        st = iges_computed_group(r, f, crv, &both, p->entity, &got);
         computed = 1;
     }
     if (st == SW_OK && sense == 2)

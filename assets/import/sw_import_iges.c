@@ -59,11 +59,17 @@ static void progress(const iges_reader *r, int done, int total)
  * is an error when strict. */
 static sw_status skip_or_fail(iges_reader *r, sw_status st)
 {
-    if (st != SW_ERR_UNSUPPORTED || (r->opt && r->opt->strict))
+    if (st != SW_ERR_UNSUPPORTED || (r->opt && r->opt->strict)) {
+        r->unsupported_why = NULL;
         return st;
-    char kind[24];
-    snprintf(kind, sizeof kind, "IGES %d", r->unsupported_type);
+    }
+    char kind[SW_IMPORT_KIND_CHARS];
+    if (r->unsupported_why)
+        snprintf(kind, sizeof kind, "IGES %d (%s)", r->unsupported_type, r->unsupported_why);
+    else
+        snprintf(kind, sizeof kind, "IGES %d", r->unsupported_type);
     sw_import_report_unsupported(r->report, kind);
+    r->unsupported_why = NULL;
     return SW_OK;
 }
 
@@ -123,18 +129,22 @@ static sw_status add_face(iges_reader *r, iges_face *f, sw_model *model)
         curves += (size_t)f->loops[l].curves.count;
     sw_model_loop_input *in = calloc((size_t)f->loop_count + 1, sizeof *in);
     sw_nurbs_curve *views = calloc(curves + 1, sizeof *views);
-    if (!in || !views) {
+    double *gaps = calloc(curves + 1, sizeof *gaps);
+    if (!in || !views || !gaps) {
         free(in);
         free(views);
+        free(gaps);
         return sw_error_set(r->err, SW_ERR_NO_MEMORY, "%s: out of memory", r->file);
     }
     size_t at = 0;
     for (int l = 0; l < f->loop_count; l++) {
         const iges_loop *lp = &f->loops[l];
         in[l] = (sw_model_loop_input){views + at, lp->computed, (size_t)lp->curves.count,
-                                      lp->outer};
-        for (int c = 0; c < lp->curves.count; c++)
+                                      lp->outer, gaps + at};
+        for (int c = 0; c < lp->curves.count; c++) {
+            gaps[at] = lp->curves.items[c].gap * r->units_to_mm;
             views[at++] = iges_curve_view(&lp->curves.items[c]);
+        }
     }
     size_t n = (size_t)f->surface.count_u * (size_t)f->surface.count_v;
     for (size_t i = 0; i < n; i++)
@@ -148,6 +158,7 @@ static sw_status add_face(iges_reader *r, iges_face *f, sw_model *model)
                         r->ents[f->entity].type);
     free(in);
     free(views);
+    free(gaps);
     return st;
 }
 

@@ -21,13 +21,17 @@ extern "C" {
 #include "sw_occt_measure.h"
 }
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom2dConvert.hxx>
 #include <Geom2d_BSplineCurve.hxx>
@@ -375,6 +379,7 @@ int fix_missing_pcurves(const TopoDS_Wire &wire, const TopoDS_Face &face)
 struct Loop {
     std::vector<TrimCurve> curves;
     std::vector<int> computed;
+    std::vector<double> gaps;   /* per curve: its edge's tolerance (sw_model_trim_curve.gap) */
     int outer = 0;
 };
 
@@ -398,10 +403,12 @@ const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double t
 {
     std::vector<TrimCurve> closed;
     std::vector<int> computed;
+    std::vector<double> gaps;
     size_t n = loop->curves.size();
     for (size_t i = 0; i < n; i++) {
         closed.push_back(std::move(loop->curves[i]));
         computed.push_back(loop->computed[i]);
+        gaps.push_back(loop->gaps[i]);
         const TrimCurve &a = closed.back(), &b = loop->curves[(i + 1) % n];
         const double *end = &a.ctrl[a.ctrl.size() - 4];
         const double *start = i + 1 < n ? &b.ctrl[0] : &closed.front().ctrl[0];
@@ -412,9 +419,11 @@ const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double t
             return "trim curves do not meet in 3D";
         closed.push_back(segment(end, start));
         computed.push_back(1);
+        gaps.push_back(p.Distance(q));
     }
     loop->curves = std::move(closed);
     loop->computed = std::move(computed);
+    loop->gaps = std::move(gaps);
     return nullptr;
 }
 
@@ -442,7 +451,12 @@ const char *loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
             b->Reverse();
         loop->curves.push_back(trim_curve_of(b));
         loop->computed.push_back(computed);
-        tolerance = std::max(tolerance, BRep_Tool::Tolerance(moved));
+        /* OCCT's edge tolerance covers how far each face's p-curve image
+         * strays from the edge (shape healing widens it where the file's
+         * faces do not meet): the sewing uses it as the file's own word. */
+        double edge_tolerance = std::max(BRep_Tool::Tolerance(edge), BRep_Tool::Tolerance(moved));
+        loop->gaps.push_back(edge_tolerance);
+        tolerance = std::max(tolerance, edge_tolerance);
         explored++;
     }
     /* BRepTools_WireExplorer skips edges of wires it cannot chain; a loop
@@ -494,30 +508,13 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
         for (const TrimCurve &t : loops[i].curves)
             views[i].push_back({t.degree, t.count, t.knots.data(), t.ctrl.data()});
         inputs[i] = {views[i].data(), loops[i].computed.data(), views[i].size(),
-                     loops[i].outer};
+                     loops[i].outer, loops[i].gaps.data()};
     }
     sw_status status = sw_model_add_surface(ctx->model, &surface.view, reversed, inputs.data(),
                                             inputs.size(), ctx->err);
     if (status == SW_OK)
         ctx->report->pcurves_computed += (size_t)std::max(missing, file_gaps);
     return status;
-}
-
-/* Counts one skipped or repaired entity of a kind in the report. Done here
- * rather than through sw_import_report_unsupported so this file does not
- * depend on which importer's C file defines that helper. */
-void count_unsupported(sw_import_report *report, const char *kind)
-{
-    report->unsupported++;
-    for (size_t i = 0; i < report->unsupported_kinds; i++)
-        if (std::strcmp(report->unsupported_kind[i], kind) == 0) {
-            report->unsupported_count[i]++;
-            return;
-        }
-    if (report->unsupported_kinds == SW_IMPORT_KINDS)
-        return;
-    std::snprintf(report->unsupported_kind[report->unsupported_kinds], sizeof report->unsupported_kind[0], "%s", kind);
-    report->unsupported_count[report->unsupported_kinds++] = 1;
 }
 
 /* A face OCCT cannot convert is skipped and counted (an error when strict):
@@ -540,7 +537,7 @@ sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mir
     if (ctx->options && ctx->options->strict)
         return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: face %zu: %s", ctx->path, index + 1,
                             why.c_str());
-    count_unsupported(ctx->report, "OCCT face");
+    sw_import_report_unsupported(ctx->report, "OCCT face");
     if (ctx->err)
         ctx->err->status = SW_OK;
     return SW_OK;
@@ -711,14 +708,31 @@ std::string check_place(const Handle(Interface_InterfaceModel) &model, int numbe
     return buf;
 }
 
+/* Whether a failed check leaves the model unreadable where it points: a
+ * geometric or topological entity with a bad parameter cannot become a
+ * shape, and OCCT's transfer of one (a CARTESIAN_POINT with a string among
+ * its coordinates) crashes. Fails elsewhere (units, contexts, names,
+ * presentation, PMI, the IGES global section) are messages: OCCT reads on
+ * with its defaults and transfers every face, and so does seamwalk. */
+bool check_is_fatal(const Handle(Interface_InterfaceModel) &model, int number, bool step,
+                    const std::string &fail)
+{
+    if (number <= 0 || number > model->NbEntities())
+        return !(!step && fail.find("Global Section") != std::string::npos);
+    if (step && fail.find("not a quoted String") != std::string::npos)
+        return false;  /* names carry no geometry (Rhino writes $ for them) */
+    const char *type = model->Value(number)->DynamicType()->Name();
+    static const char *const geometric[] = {"StepGeom_", "StepShape_", "IGESGeom_",
+                                            "IGESSolid_"};
+    for (const char *prefix : geometric)
+        if (std::strncmp(type, prefix, std::strlen(prefix)) == 0)
+            return true;
+    return false;
+}
+
 /* The loaded model's first failing check that makes it unreadable, as one
- * phrase naming the entity ("" when there is none). OCCT transfers entities
- * with failed checks as best it can, and a CARTESIAN_POINT with a bad
- * coordinate list crashes its transfer, so any such fail is an error. Only
- * string parameters that are not strings are tolerated, as repairs counted in
- * the report (Rhino writes $ for names): names carry no geometry; and for
- * IGES, global section fails (a date format): units and tolerance, the
- * global values that matter, OCCT reads or defaults on its own. */
+ * phrase naming the entity ("" when there is none). The others are counted
+ * in report (when given) by their text, the first one kept in full. */
 std::string fatal_check_failure(const Handle(XSControl_WorkSession) &ws, bool step,
                                 const char *path, sw_import_report *report)
 {
@@ -728,18 +742,13 @@ std::string fatal_check_failure(const Handle(XSControl_WorkSession) &ws, bool st
         const Handle(Interface_Check) &check = checks.Value();
         for (int i = 1; i <= check->NbFails(); i++) {
             std::string fail = check->CFail(i);
-            if (step && checks.Number() > 0 &&
-                fail.find("not a quoted String") != std::string::npos) {
-                if (report)
-                    count_unsupported(report, "STEP bad string");
-                continue;
+            std::string place = check_place(model, checks.Number(), step, path, fail);
+            if (check_is_fatal(model, checks.Number(), step, fail))
+                return place + fail;
+            if (report) {
+                std::string kind = std::string(step ? "STEP: " : "IGES: ") + fail;
+                sw_import_report_message(report, kind.c_str(), (place + fail).c_str());
             }
-            if (!step && fail.find("Global Section") != std::string::npos) {
-                if (report)
-                    count_unsupported(report, "IGES global section");
-                continue;
-            }
-            return check_place(model, checks.Number(), step, path, fail) + fail;
         }
     }
     return std::string();
@@ -875,15 +884,17 @@ sw_status truncated(const ImportContext *ctx, bool step)
 }
 
 /* After a successful parse: fails that make the model unreadable, then
- * (strict) the repairs fatal_check_failure tolerated. */
+ * (strict) the messages fatal_check_failure read on past. */
 sw_status check_loaded(ImportContext *ctx, const Handle(XSControl_WorkSession) &ws, bool step,
                        const MessageCapture &messages)
 {
     if (!fatal_check_failure(ws, step, ctx->path, ctx->report).empty())
         return read_failure(ctx, ws, step, true, messages);
-    if (ctx->options && ctx->options->strict && ctx->report->unsupported > 0)
-        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %zu entities repaired on reading (strict)",
-                            ctx->path, ctx->report->unsupported);
+    const sw_import_tally &told = ctx->report->messages;
+    if (ctx->options && ctx->options->strict && told.total > 0)
+        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %s (%zu message%s about the file, and "
+                            "--strict is set)", ctx->path, ctx->report->first_message,
+                            told.total, told.total > 1 ? "s" : "");
     return SW_OK;
 }
 
@@ -1083,7 +1094,52 @@ sw_status measure_file(const char *path, sw_occt_measure *out, sw_error *err)
     return SW_OK;
 }
 
+double edge_length(const TopoDS_Edge &edge)
+{
+    if (BRep_Tool::Degenerated(edge))
+        return 0.0;
+    BRepAdaptor_Curve curve(edge);  /* its 3D curve, or its curve on a face (IGES) */
+    return GCPnts_AbscissaPoint::Length(curve);
+}
+
+sw_status measure_sewing(const char *path, double tolerance, sw_occt_sewing *out, sw_error *err)
+{
+    std::string ext = lower_extension(path);
+    bool step = ext == "stp" || ext == "step" || ext == "p21";
+    MessageCapture messages;
+    TopoDS_Shape shape;
+    *out = sw_occt_sewing{};
+    sw_status status = step ? read_one_shape<STEPControl_Reader>(path, true, &shape, err)
+                            : read_one_shape<IGESControl_Reader>(path, false, &shape, err);
+    if (status != SW_OK || shape.IsNull())
+        return status;
+    BRepBuilderAPI_Sewing sewing(tolerance);
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+        BRepBuilderAPI_Copy copy(f.Current());
+        sewing.Add(copy.Shape());
+        out->faces++;
+    }
+    sewing.Perform();
+    for (int i = 1; i <= sewing.NbFreeEdges(); i++)
+        out->free_length_mm += edge_length(sewing.FreeEdge(i));
+    out->free_edges = (size_t)sewing.NbFreeEdges();
+    TopoDS_Shape sewn = sewing.SewedShape();
+    for (TopExp_Explorer f(sewn, TopAbs_FACE); f.More(); f.Next())
+        for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next())
+            out->border_length_mm += edge_length(TopoDS::Edge(e.Current()));
+    return SW_OK;
+}
+
 }  // namespace
+
+extern "C" sw_status sw_occt_measure_sewing(const char *path, double tolerance_mm,
+                                            sw_occt_sewing *out, sw_error *err)
+{
+    if (!path || !out || !(tolerance_mm > 0))
+        return sw_error_set(err, SW_ERR_ARG, "sw_occt_measure_sewing: no path, output or "
+                                             "positive tolerance");
+    return guarded(path, err, [&]() { return measure_sewing(path, tolerance_mm, out, err); });
+}
 
 extern "C" sw_status sw_occt_measure_file(const char *path, sw_occt_measure *out, sw_error *err)
 {

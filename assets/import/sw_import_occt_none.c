@@ -31,3 +31,11 @@ sw_status sw_occt_measure_file(const char *path, sw_occt_measure *out, sw_error 
     (void)out;
     return without_occt(path, err);
 }
+
+sw_status sw_occt_measure_sewing(const char *path, double tolerance_mm, sw_occt_sewing *out,
+                                 sw_error *err)
+{
+    (void)tolerance_mm;
+    (void)out;
+    return without_occt(path, err);
+}

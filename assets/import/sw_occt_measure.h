@@ -23,6 +23,19 @@ typedef struct sw_occt_measure {
  * millimetres, and measures the resulting shape. */
 sw_status sw_occt_measure_file(const char *path, sw_occt_measure *out, sw_error *err);
 
+/* OpenCASCADE's sewing of the file's faces as a soup: every face copied on
+ * its own (sharing no edge, as seamwalk's sewing sees them), sewn by
+ * BRepBuilderAPI_Sewing at tolerance_mm, and the border measured after. */
+typedef struct sw_occt_sewing {
+    size_t faces;
+    size_t free_edges;       /* BRepBuilderAPI_Sewing::NbFreeEdges */
+    double free_length_mm;   /* their total length */
+    double border_length_mm; /* every edge use of every sewn face (seam edges twice) */
+} sw_occt_sewing;
+
+sw_status sw_occt_measure_sewing(const char *path, double tolerance_mm, sw_occt_sewing *out,
+                                 sw_error *err);
+
 #ifdef __cplusplus
 }
 #endif

@@ -304,6 +304,7 @@ static sw_status stage_copy(staged *s, const sw_nurbs_surface *in, const sw_mode
             sw_model_trim_curve *dst = &s->curves[s->curve_count++];
             dst->degree = src->degree, dst->count = src->count;
             dst->computed = loops[l].computed ? loops[l].computed[c] != 0 : 0;
+            dst->gap = loops[l].gaps && loops[l].gaps[c] > 0 ? loops[l].gaps[c] : 0.0;
             dst->knots = copy_doubles(src->knots, (size_t)(src->count + src->degree + 1));
             dst->ctrl = copy_doubles(src->ctrl, 4 * (size_t)src->count);
             if (!dst->knots || !dst->ctrl)
@@ -522,9 +523,17 @@ void sw_model_transform_part(sw_model *model, size_t part, const sw_mat4 *m)
         transform_points(patch->ctrl, (size_t)(patch->degree_u + 1) * (size_t)(patch->degree_v + 1),
                          m);
     }
+    /* Trim gaps are lengths: they scale with the placement's mean scale. */
+    const double *a = m->m;
+    double det = a[0] * (a[5] * a[10] - a[9] * a[6]) - a[4] * (a[1] * a[10] - a[9] * a[2]) +
+                 a[8] * (a[1] * a[6] - a[5] * a[2]);
+    double scale = cbrt(fabs(det));
     for (size_t i = p->first_surface; i < p->first_surface + p->surface_count; i++) {
         sw_model_surface *s = &model->surfaces[i];
         transform_points(s->ctrl, (size_t)s->count_u * (size_t)s->count_v, m);
+        for (size_t l = s->first_loop; l < s->first_loop + s->loop_count; l++)
+            for (size_t c = 0; c < model->loops[l].curve_count; c++)
+                model->curves[model->loops[l].first_curve + c].gap *= scale;
     }
     sw_mat4 before;
     memcpy(before.m, p->transform, sizeof before.m);

@@ -41,6 +41,9 @@ typedef struct sw_model_trim_curve {
     double *knots;     /* owned; count + degree + 1 */
     double *ctrl;      /* owned; count * 4: u, v, 0, w */
     int computed;      /* 1: computed by point inversion from a model-space curve */
+    double gap;        /* model units: how far the curve's image on the surface may lie
+                          from the edge the file meant (its edge tolerance, or the fit's
+                          distance from a model-space curve); 0 when the file says none */
 } sw_model_trim_curve;
 
 /* A closed loop of trimming curves, head to tail. Outer loops bound the

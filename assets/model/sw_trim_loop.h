@@ -16,6 +16,7 @@ typedef struct sw_model_loop_input {
     const int *computed;     /* per curve, may be NULL: 1 when made by point inversion */
     size_t curve_count;
     int outer;
+    const double *gaps;      /* per curve, may be NULL (all 0): sw_model_trim_curve.gap */
 } sw_model_loop_input;
 
 #endif

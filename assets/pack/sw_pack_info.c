@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_seam_border.h"
+
 const char *sw_pack_units_name(uint32_t units)
 {
     return units == SW_UNITS_MILLIMETRE ? "mm" : units == SW_UNITS_METRE ? "m" : "unspecified";
@@ -109,6 +111,11 @@ void sw_pack_gather_stats(const sw_pack *pack, sw_pack_part_stats *parts,
 
 static double ratio(uint64_t bytes, uint32_t n) { return n ? (double)bytes / n : 0.0; }
 
+static double border_fraction(const sw_seam_border *b)
+{
+    return b->length > 0 ? b->free_length / b->length : 0.0;
+}
+
 int sw_pack_gather_seam_stats(const sw_pack *pack, sw_pack_seam_stats *out)
 {
     memset(out, 0, sizeof *out);
@@ -189,6 +196,11 @@ static void print_seam_text(FILE *out, const sw_pack *pack)
     fprintf(out, "  %-16s %" PRIu64 " bytes: %.1f per boundary edge, %.1f per surface, %.1f per "
             "bezier patch\n", "seam memory", s.bytes, s.bytes_per_edge, s.bytes_per_surface,
             s.bytes_per_bezier_patch);
+    sw_seam_border b;
+    if (sw_seam_border_measure(&pack->seam, &b, NULL) == SW_OK)
+        fprintf(out, "  %-16s %.6g of %.6g (%.4g%%), %zu of %zu edge uses free\n",
+                "free border", b.free_length, b.length, 100.0 * border_fraction(&b),
+                b.free_edges, b.edge_uses);
 }
 
 static void print_text(FILE *out, const char *path, const sw_pack *pack,
@@ -340,6 +352,11 @@ static void json_seam(FILE *out, const sw_pack *pack)
             "%.9g, \"bytes_per_surface\": %.9g, \"bytes_per_bezier_patch\": %.9g},\n",
             s.tolerance, s.bytes, s.bytes_per_edge, s.bytes_per_surface,
             s.bytes_per_bezier_patch);
+    sw_seam_border b;
+    if (sw_seam_border_measure(&pack->seam, &b, NULL) == SW_OK)
+        fprintf(out, "  \"border\": {\"length\": %.9g, \"free_length\": %.9g, \"free_fraction\": "
+                "%.9g, \"edge_uses\": %zu, \"free_edges\": %zu},\n", b.length, b.free_length,
+                border_fraction(&b), b.edge_uses, b.free_edges);
 }
 
 static void print_json(FILE *out, const char *path, const sw_pack *pack,

@@ -77,16 +77,19 @@ static sw_status copy_surface(const sw_model *from, const sw_model_surface *s, s
     sw_model_loop_input *in = calloc(s->loop_count + 1, sizeof *in);
     sw_nurbs_curve *views = calloc(curves + 1, sizeof *views);
     int *computed = calloc(curves + 1, sizeof *computed);
+    double *gaps = calloc(curves + 1, sizeof *gaps);
     sw_status st = SW_OK;
-    if (!in || !views || !computed)
+    if (!in || !views || !computed || !gaps)
         st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory copying a surface");
     for (size_t l = 0, k = 0; st == SW_OK && l < s->loop_count; l++) {
         in[l] = (sw_model_loop_input){.curves = views + k, .computed = computed + k,
-                                      .curve_count = loops[l].curve_count, .outer = loops[l].outer};
+                                      .curve_count = loops[l].curve_count, .outer = loops[l].outer,
+                                      .gaps = gaps + k};
         for (size_t c = 0; c < loops[l].curve_count; c++, k++) {
             const sw_model_trim_curve *curve = &from->curves[loops[l].first_curve + c];
             views[k] = sw_model_curve_view(curve);
             computed[k] = curve->computed;
+            gaps[k] = curve->gap;
         }
     }
     if (st == SW_OK) {
@@ -99,6 +102,7 @@ static sw_status copy_surface(const sw_model *from, const sw_model_surface *s, s
     free(in);
     free(views);
     free(computed);
+    free(gaps);
     return st;
 }
 

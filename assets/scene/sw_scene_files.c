@@ -81,31 +81,6 @@ int scene_file_has_units(const char *path)
     return 0;
 }
 
-/* Adds one import's report to the scene's running total. */
-static void report_add(sw_import_report *total, const sw_import_report *one)
-{
-    total->faces += one->faces;
-    total->pcurves_computed += one->pcurves_computed;
-    total->unsupported += one->unsupported;
-    for (size_t k = 0; k < one->unsupported_kinds && k < SW_IMPORT_KINDS; k++) {
-        size_t i = 0;
-        while (i < total->unsupported_kinds &&
-               strcmp(total->unsupported_kind[i], one->unsupported_kind[k]) != 0)
-            i++;
-        if (i == SW_IMPORT_KINDS)
-            continue;
-        if (i == total->unsupported_kinds) {
-            memcpy(total->unsupported_kind[i], one->unsupported_kind[k],
-                   sizeof total->unsupported_kind[i]);
-            total->unsupported_kinds++;
-        }
-        total->unsupported_count[i] += one->unsupported_count[k];
-    }
-    total->units_to_mm = one->units_to_mm;
-    if (one->model_tolerance_mm > total->model_tolerance_mm)
-        total->model_tolerance_mm = one->model_tolerance_mm;
-}
-
 sw_status sw_scene_import_file_with(const char *path, const sw_import_options *options,
                                     sw_import_report *report, sw_model *model, sw_error *err)
 {
@@ -119,7 +94,7 @@ sw_status sw_scene_import_file_with(const char *path, const sw_import_options *o
         sw_import_report one = {.units_to_mm = 1.0};
         sw_status st = importers[k].import(path, options ? options : &defaults, model, &one, err);
         if (report)
-            report_add(report, &one);
+            sw_import_report_merge(report, &one);
         return st;
     }
     return sw_error_set(err, SW_ERR_UNSUPPORTED,

@@ -36,6 +36,7 @@ enum { MAX_HALVINGS = 40, MAX_RUN = 64 };
 typedef struct vbuf {
     double *uv, *p;
     uint8_t *pin;      /* 1: a curve's start (a corner of the loop): never simplified away */
+    float *gap;        /* the gap of the curve(s) the vertex lies on (sw_seam_polylines.gap) */
     size_t count, capacity;
 } vbuf;
 
@@ -44,15 +45,27 @@ typedef struct flat_ctx {
     double tol;        /* for the halving: tolerance / 2 */
     int min_depth;     /* halvings forced before any piece is accepted */
     size_t unproven;
+    size_t clamped;    /* points moved onto the domain's border */
+    float gap;         /* of the curve being flattened */
     vbuf *buf;
     sw_error *err;
 } flat_ctx;
 
 static sw_status vbuf_push(flat_ctx *c, double u, double v)
 {
+    /* A p-curve a little past its surface's domain (exporters' fits do
+     * that) goes onto the border: the surface is evaluated there anyway
+     * (sw_seam_qtree_point clamps), and the runtime's tessellator refuses a
+     * loop far outside the domain, which would leave a hole. */
+    const double *d = c->qt->domain;
+    double cu = fmin(fmax(u, d[0]), d[1]), cv = fmin(fmax(v, d[2]), d[3]);
+    c->clamped += cu != u || cv != v;
+    u = cu, v = cv;
     vbuf *b = c->buf;
-    if (b->count && b->uv[2 * b->count - 2] == u && b->uv[2 * b->count - 1] == v)
+    if (b->count && b->uv[2 * b->count - 2] == u && b->uv[2 * b->count - 1] == v) {
+        b->gap[b->count - 1] = fmaxf(b->gap[b->count - 1], c->gap);
         return SW_OK; /* a degenerate piece: same point twice */
+    }
     if (b->count == b->capacity) {
         size_t cap = b->capacity * 2 + 256;
         double *uv = realloc(b->uv, cap * 2 * sizeof *uv);
@@ -62,13 +75,17 @@ static sw_status vbuf_push(flat_ctx *c, double u, double v)
         if (p)
             b->p = p;
         uint8_t *pin = p ? realloc(b->pin, cap * sizeof *pin) : NULL;
-        if (!pin)
+        if (pin)
+            b->pin = pin;
+        float *gap = pin ? realloc(b->gap, cap * sizeof *gap) : NULL;
+        if (!gap)
             return sw_error_set(c->err, SW_ERR_NO_MEMORY, "flattening trims: out of memory");
-        b->pin = pin;
+        b->gap = gap;
         b->capacity = cap;
     }
     b->uv[2 * b->count] = u, b->uv[2 * b->count + 1] = v;
     b->pin[b->count] = 0;
+    b->gap[b->count] = c->gap;
     sw_seam_qtree_point(c->qt, u, v, b->p + 3 * b->count);
     b->count++;
     return SW_OK;
@@ -231,10 +248,16 @@ static sw_status simplify_loop(flat_ctx *c, size_t first)
     if (st == SW_OK && kept >= 3) {
         double *uv = c->buf->uv + 2 * first, *p = c->buf->p + 3 * first;
         uint8_t *pin = c->buf->pin + first;
+        float *gap = c->buf->gap + first;
         for (size_t k = 0; k < kept; k++) {
+            /* A kept vertex stands for the dropped ones after it: their gaps too. */
+            float g = gap[keep[k]];
+            for (size_t d = keep[k] + 1; d < (k + 1 < kept ? keep[k + 1] : n); d++)
+                g = fmaxf(g, gap[d]);
             memmove(uv + 2 * k, uv + 2 * keep[k], 2 * sizeof *uv);
             memmove(p + 3 * k, p + 3 * keep[k], 3 * sizeof *p);
             pin[k] = pin[keep[k]];
+            gap[k] = g;
         }
         c->buf->count = first + kept;
     }
@@ -246,7 +269,8 @@ static sw_status simplify_loop(flat_ctx *c, size_t first)
  * stands in for the previous curve's end only where both are the same 3D
  * point (to rounding): a real gap between two curves keeps both ends and an
  * edge across it. */
-static sw_status flatten_loop(flat_ctx *c, const sw_nurbs_curve *curves, size_t count)
+static sw_status flatten_loop(flat_ctx *c, const sw_nurbs_curve *curves, const double *gaps,
+                              size_t count)
 {
     size_t first = c->buf->count;
     for (size_t k = 0; k < count; k++) {
@@ -256,6 +280,9 @@ static sw_status flatten_loop(flat_ctx *c, const sw_nurbs_curve *curves, size_t 
             sw_seam_qtree_point(c->qt, curves[k].ctrl[0], curves[k].ctrl[1], q);
             skip = dist3(q, c->buf->p + 3 * (c->buf->count - 1)) <= 1e-6 * c->tol;
         }
+        c->gap = gaps ? (float)gaps[k] : 0.0f;
+        if (skip)   /* the previous curve's end is this one's start too */
+            c->buf->gap[c->buf->count - 1] = fmaxf(c->buf->gap[c->buf->count - 1], c->gap);
         sw_status st = flatten_curve(c, &curves[k], skip);
         if (st != SW_OK) {
             sw_error_prefix(c->err, "curve %zu", k);
@@ -288,13 +315,14 @@ static void rect_loop_make(rect_loop *r, const double d[4])
 
 /* One loop: flattened (retried with forced halvings if it came out with
  * fewer than 3 vertices: a loop of one or two short curves), simplified. */
-static sw_status one_loop(flat_ctx *c, const sw_nurbs_curve *curves, size_t count)
+static sw_status one_loop(flat_ctx *c, const sw_nurbs_curve *curves, const double *gaps,
+                          size_t count)
 {
     size_t first = c->buf->count;
     sw_status st = SW_OK;
     for (c->min_depth = 0; st == SW_OK && c->min_depth <= 4; c->min_depth += 2) {
         c->buf->count = first;
-        st = flatten_loop(c, curves, count);
+        st = flatten_loop(c, curves, gaps, count);
         if (c->buf->count - first >= 3)
             break;
     }
@@ -312,6 +340,7 @@ void sw_seam_polylines_free(sw_seam_polylines *poly)
         return;
     free(poly->uv);
     free(poly->p);
+    free(poly->gap);
     free(poly->loop_start);
     free(poly->loop_surface);
     free(poly->loop_outer);
@@ -348,20 +377,32 @@ static sw_status flatten_surface(const sw_model *model, size_t s, flat_ctx *c,
     rect_loop rect;
     rect_loop_make(&rect, c->qt->domain);
     sw_nurbs_curve views[64], *curves = views;
+    double view_gaps[64], *gaps = view_gaps;
     sw_status st = SW_OK;
     for (size_t l = 0; l < loops && st == SW_OK; l++) {
         const sw_model_loop *ml = surf->loop_count ? &model->loops[surf->first_loop + l] : NULL;
         size_t count = ml ? ml->curve_count : 4;
-        if (ml && count > 64 && !(curves = malloc(count * sizeof *curves)))
-            return sw_error_set(c->err, SW_ERR_NO_MEMORY, "flattening trims: out of memory");
-        for (size_t k = 0; ml && k < count; k++)
+        if (ml && count > 64) {
+            curves = malloc(count * sizeof *curves);
+            gaps = malloc(count * sizeof *gaps);
+            if (!curves || !gaps) {
+                free(curves);
+                free(gaps);
+                return sw_error_set(c->err, SW_ERR_NO_MEMORY, "flattening trims: out of memory");
+            }
+        }
+        for (size_t k = 0; ml && k < count; k++) {
             curves[k] = sw_model_curve_view(&model->curves[ml->first_curve + k]);
+            gaps[k] = model->curves[ml->first_curve + k].gap;
+        }
         st = reserve_loop(out, loop_capacity, c->err);
         if (st == SW_OK)
-            st = one_loop(c, ml ? curves : rect.curves, count);
-        if (curves != views)
+            st = one_loop(c, ml ? curves : rect.curves, ml ? gaps : NULL, count);
+        if (curves != views) {
             free(curves);
-        curves = views;
+            free(gaps);
+        }
+        curves = views, gaps = view_gaps;
         if (st != SW_OK) {
             sw_error_prefix(c->err, "loop %zu", l);
             break;
@@ -411,11 +452,13 @@ sw_status sw_seam_flatten_model(const sw_model *model, double tolerance, sw_seam
     if (st != SW_OK) {
         free(buf.uv);
         free(buf.p);
+        free(buf.gap);
         sw_seam_polylines_free(out);
         return st;
     }
     out->surface_loops[model->surface_count] = out->loop_count;
-    out->uv = buf.uv, out->p = buf.p, out->vertex_count = buf.count;
+    out->uv = buf.uv, out->p = buf.p, out->gap = buf.gap, out->vertex_count = buf.count;
     out->unproven = c.unproven;
+    out->clamped = c.clamped;
     return SW_OK;
 }

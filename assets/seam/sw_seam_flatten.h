@@ -35,6 +35,10 @@
 typedef struct sw_seam_polylines {
     double *uv;             /* owned: 2 per vertex, in the loop's surface */
     double *p;              /* owned: 3 per vertex, model space */
+    float *gap;             /* owned, may be NULL (all 0): per vertex, how far the file
+                               lets its border stray from the edge it meant (the largest
+                               sw_model_trim_curve.gap of the curves it stands for); the
+                               sewing widens its tolerance by it */
     size_t vertex_count;
     size_t *loop_start;     /* owned: loop_count + 1 */
     uint32_t *loop_surface; /* owned: per loop */
@@ -44,6 +48,8 @@ typedef struct sw_seam_polylines {
     size_t surface_count;
     double tolerance;
     size_t unproven;        /* curve pieces accepted without a proof (see above) */
+    size_t clamped;         /* vertices whose (u, v) lay outside the surface's domain and
+                               were put on its border (the runtime refuses loops far out) */
 } sw_seam_polylines;
 
 /* Flattens every loop of every surface of the model within tolerance (> 0,

@@ -82,7 +82,8 @@ sw_status sw_seam_sew_model(const sw_model *model, const sw_seam_options *opt, s
             .loops = out->loop_count, .boundary_vertices = out->vertex_count,
             .boundary_edges = out->edge_count, .seams = counts.seams,
             .free_edges = counts.free_edges, .nonmanifold_edges = counts.nonmanifold_edges,
-            .tolerance = tol, .unproven_pieces = poly.unproven, .inserted = counts.inserted,
+            .tolerance = tol, .unproven_pieces = poly.unproven, .clamped = poly.clamped,
+            .inserted = counts.inserted,
             .flatten_s = t1 - t0, .sew_s = t2 - t1};
     sw_seam_polylines_free(&poly);
     return st;

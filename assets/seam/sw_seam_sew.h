@@ -42,6 +42,7 @@ typedef struct sw_seam_report {
     size_t nonmanifold_edges;   /* edges of > 2 loops */
     double tolerance;           /* the tolerance used */
     size_t unproven_pieces;     /* trim pieces the flattener could not prove (sw_seam_flatten.h) */
+    size_t clamped;             /* trim points outside their domain put on its border */
     size_t inserted;            /* points inserted into edges by sewing */
     double flatten_s, sew_s;    /* wall time of the two stages */
 } sw_seam_report;

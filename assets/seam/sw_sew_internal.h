@@ -27,7 +27,9 @@ typedef struct sew_join {
 
 typedef struct sew_state {
     const sw_seam_polylines *poly;
-    double tol;
+    double tol;              /* the sewing tolerance; a pair of vertices may be as far apart
+                                as it or as both their gaps (sew_gap), whichever is more */
+    double max_gap;          /* the largest sew_gap */
     uint32_t *vertex_loop;   /* per vertex */
     double *arc;             /* per vertex: arc length along its loop from the loop's start */
     sew_match *matches;
@@ -42,6 +44,12 @@ typedef struct sew_state {
 static inline uint32_t sew_real_loop(const sw_seam_polylines *poly, uint32_t loop)
 {
     return loop >= poly->loop_count ? loop - (uint32_t)poly->loop_count : loop;
+}
+
+/* How far vertex v's border may stray from the file's edge (0 without gaps). */
+static inline double sew_gap(const sw_seam_polylines *poly, uint32_t v)
+{
+    return poly->gap ? (double)poly->gap[v] : 0.0;
 }
 
 static inline uint32_t sew_next(const sw_seam_polylines *poly, uint32_t loop, uint32_t v)

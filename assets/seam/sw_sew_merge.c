@@ -6,6 +6,7 @@
  * takes. */
 #include "sw_sew_internal.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -80,10 +81,12 @@ static void unite_joins(const sew_state *s, uint32_t *parent, inserted *ins, siz
         /* Union-find is transitive: a chain of merges, each within the
          * tolerance, could drag a class far from where its members are. Two
          * classes whose positions (their first original vertex) are more
-         * than twice the tolerance apart stay apart. */
+         * than twice the tolerance (with their gaps) apart stay apart. */
         uint32_t ra = find(parent, j->v), rb = find(parent, target);
-        if (ra < n && rb < n && dist2(s->poly->p + 3 * (size_t)ra, s->poly->p + 3 * (size_t)rb) >
-                                    4 * s->tol * s->tol)
+        double apart = ra < n && rb < n
+                     ? 2 * fmax(s->tol, sew_gap(s->poly, ra) + sew_gap(s->poly, rb)) : 0;
+        if (ra < n && rb < n &&
+            dist2(s->poly->p + 3 * (size_t)ra, s->poly->p + 3 * (size_t)rb) > apart * apart)
             continue;
         unite(parent, ra, rb);
     }

@@ -21,6 +21,8 @@ sw_status sw_sew_polylines(const sw_seam_polylines *poly, double tolerance, sw_s
         return sw_error_set(err, SW_ERR_RANGE, "sewing: %zu vertices, at most %u fit a Seam Graph",
                             poly->vertex_count, UINT32_MAX / 4 - 1);
     sew_state s = {.poly = poly, .tol = tolerance, .err = err};
+    for (size_t v = 0; poly->gap && v < poly->vertex_count; v++)
+        s.max_gap = fmax(s.max_gap, poly->gap[v]);
     s.vertex_loop = malloc((poly->vertex_count + 1) * sizeof *s.vertex_loop);
     sw_status st = s.vertex_loop ? SW_OK
                                  : sw_error_set(err, SW_ERR_NO_MEMORY, "sewing: out of memory");

@@ -83,7 +83,7 @@ static int compare_entries(const void *x, const void *y)
 
 /* Cells as wide as the mean edge (at least twice the tolerance): an edge
  * then touches a few cells and a cell holds a few edges. */
-static int grid_build(grid *g, const sw_seam_polylines *poly, double tol)
+static int grid_build(grid *g, const sw_seam_polylines *poly, double tol, double max_gap)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, total = 0;
     for (size_t v = 0; v < poly->vertex_count; v++)
@@ -101,7 +101,9 @@ static int grid_build(grid *g, const sw_seam_polylines *poly, double tol)
     for (size_t l = 0; l < poly->loop_count; l++)
         for (size_t v = poly->loop_start[l]; v < poly->loop_start[l + 1]; v++) {
             uint32_t w = sew_next(poly, (uint32_t)l, (uint32_t)v);
-            if (grid_add_edge(g, poly->p + 3 * v, poly->p + 3 * w, tol, (uint32_t)v) != 0)
+            /* Far enough for a vertex of the largest gap to find it. */
+            double reach = fmax(tol, fmax(sew_gap(poly, (uint32_t)v), sew_gap(poly, w)) + max_gap);
+            if (grid_add_edge(g, poly->p + 3 * v, poly->p + 3 * w, reach, (uint32_t)v) != 0)
                 return -1;
         }
     if (g->count > 1)
@@ -158,13 +160,18 @@ static int directions_agree(const sew_state *s, uint32_t v, const double d[3], d
     return 0;
 }
 
-/* Projects vertex v onto edge e; keeps it within the tolerance. */
+/* Projects vertex v onto edge e; keeps it within the tolerance, or within
+ * both sides' gaps where they add up to more: each border lies within its
+ * gap of the edge the file meant (OpenCASCADE's sewing takes the edges' own
+ * tolerances the same way). */
 static int project(sew_state *s, uint32_t v, uint32_t e)
 {
     const sw_seam_polylines *poly = s->poly;
     uint32_t le = s->vertex_loop[e];
     const double *p = poly->p + 3 * (size_t)v, *a = poly->p + 3 * (size_t)e;
-    const double *b = poly->p + 3 * (size_t)sew_next(poly, le, e);
+    uint32_t next = sew_next(poly, le, e);
+    const double *b = poly->p + 3 * (size_t)next;
+    double reach = fmax(s->tol, sew_gap(poly, v) + fmax(sew_gap(poly, e), sew_gap(poly, next)));
     double d[3], len2 = 0, t = 0, dist2 = 0;
     for (int i = 0; i < 3; i++) {
         d[i] = b[i] - a[i];
@@ -183,7 +190,7 @@ static int project(sew_state *s, uint32_t v, uint32_t e)
     t = fmin(fmax(t, 0.0), 1.0);
     for (int i = 0; i < 3; i++)
         dist2 += (p[i] - a[i] - t * d[i]) * (p[i] - a[i] - t * d[i]);
-    if (!(dist2 <= s->tol * s->tol))
+    if (!(dist2 <= reach * reach))
         return 0;
     if (!directions_agree(s, v, d, len))
         return 0;
@@ -226,7 +233,7 @@ sw_status sew_project(sew_state *s)
     const sw_seam_polylines *poly = s->poly;
     grid g = {0};
     uint32_t *seen = malloc((poly->vertex_count + 1) * sizeof *seen);
-    int failed = !seen || grid_build(&g, poly, s->tol) != 0;
+    int failed = !seen || grid_build(&g, poly, s->tol, s->max_gap) != 0;
     for (size_t e = 0; seen && e < poly->vertex_count; e++)
         seen[e] = UINT32_MAX;
     for (uint32_t v = 0; !failed && v < poly->vertex_count; v++) {

@@ -1,0 +1,219 @@
+/* The pack store's files and its state changes (sw_pack_store.h). Nothing
+ * here allocates: the runtime calls sw_store_mark_good between frames. */
+#include "sw_pack_store.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+void sw_store_path(const sw_store *s, const char *file, char *out, size_t cap)
+{
+    snprintf(out, cap, "%s/%s", s->dir, file);
+}
+
+void sw_store_slot_path(const sw_store *s, int slot, char *out, size_t cap)
+{
+    snprintf(out, cap, "%s/slot-%c.swpack", s->dir, slot == SW_SLOT_B ? 'b' : 'a');
+}
+
+sw_status sw_store_open(sw_store *s, const char *dir, sw_error *err)
+{
+    s->lock_fd = -1;
+    if (strlen(dir) >= sizeof s->dir - 32)
+        return sw_error_set(err, SW_ERR_ARG, "%s: store path too long", dir);
+    snprintf(s->dir, sizeof s->dir, "%s", dir);
+    if (mkdir(dir, 0755) != 0 && errno != EEXIST)
+        return sw_error_set(err, SW_ERR_IO, "%s: cannot create the store: %s", dir,
+                            strerror(errno));
+    struct stat st;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+        return sw_error_set(err, SW_ERR_IO, "%s: not a directory", dir);
+    return SW_OK;
+}
+
+sw_status sw_store_lock(sw_store *s, int wait, sw_error *err)
+{
+    char path[3200];
+    sw_store_path(s, "lock", path, sizeof path);
+    int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0)
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", path, strerror(errno));
+    if (flock(fd, LOCK_EX | (wait ? 0 : LOCK_NB)) != 0) {
+        int e = errno;
+        close(fd);
+        if (e == EWOULDBLOCK)
+            return sw_error_set(err, SW_ERR_UNSUPPORTED, "%s: busy: another seamwalk-flash or "
+                                "seamwalk holds the store's lock", s->dir);
+        return sw_error_set(err, SW_ERR_IO, "%s: flock: %s", path, strerror(e));
+    }
+    s->lock_fd = fd;
+    return SW_OK;
+}
+
+void sw_store_unlock(sw_store *s)
+{
+    if (s->lock_fd >= 0)
+        close(s->lock_fd); /* closing the only descriptor releases the flock */
+    s->lock_fd = -1;
+}
+
+sw_status sw_store_sync_dir(const char *dir, sw_error *err)
+{
+    int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0)
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", dir, strerror(errno));
+    int rc = fsync(fd);
+    int e = errno;
+    close(fd);
+    return rc == 0 ? SW_OK : sw_error_set(err, SW_ERR_IO, "fsync %s: %s", dir, strerror(e));
+}
+
+static sw_status write_all(int fd, const char *path, const char *bytes, size_t size,
+                           sw_error *err)
+{
+    while (size > 0) {
+        ssize_t n = write(fd, bytes, size);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return sw_error_set(err, SW_ERR_IO, "write %s: %s", path,
+                                n < 0 ? strerror(errno) : "wrote nothing");
+        bytes += n;
+        size -= (size_t)n;
+    }
+    return SW_OK;
+}
+
+/* The directory part of path, for the fsync after a rename. */
+static void dir_of(const char *path, char *out, size_t cap)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (size_t)(slash - path) : 0;
+    if (n == 0 || n >= cap)
+        snprintf(out, cap, "%s", slash == path ? "/" : ".");
+    else
+        snprintf(out, cap, "%.*s", (int)n, path);
+}
+
+sw_status sw_store_write_atomic(const char *path, const char *bytes, size_t size, sw_error *err)
+{
+    char tmp[3300], dir[3200];
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0)
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", tmp, strerror(errno));
+    sw_status st = write_all(fd, tmp, bytes, size, err);
+    if (st == SW_OK && fsync(fd) != 0)
+        st = sw_error_set(err, SW_ERR_IO, "fsync %s: %s", tmp, strerror(errno));
+    if (close(fd) != 0 && st == SW_OK)
+        st = sw_error_set(err, SW_ERR_IO, "close %s: %s", tmp, strerror(errno));
+    if (st == SW_OK && rename(tmp, path) != 0)
+        st = sw_error_set(err, SW_ERR_IO, "rename %s to %s: %s", tmp, path, strerror(errno));
+    if (st != SW_OK) {
+        unlink(tmp);
+        return st;
+    }
+    dir_of(path, dir, sizeof dir);
+    return sw_store_sync_dir(dir, err);
+}
+
+/* A small file into buf; *present 0 when it does not exist. */
+static sw_status read_small(const char *path, char *buf, size_t cap, size_t *size, int *present,
+                            sw_error *err)
+{
+    *present = 0;
+    *size = 0;
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return errno == ENOENT ? SW_OK : sw_error_set(err, SW_ERR_IO, "%s: %s", path,
+                                                      strerror(errno));
+    *present = 1;
+    ssize_t n;
+    while ((n = read(fd, buf + *size, cap - *size)) > 0 && *size + (size_t)n < cap)
+        *size += (size_t)n;
+    int e = errno;
+    close(fd);
+    if (n < 0)
+        return sw_error_set(err, SW_ERR_IO, "read %s: %s", path, strerror(e));
+    if (n > 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: more than %zu bytes, not a store file",
+                            path, cap - 1);
+    return SW_OK;
+}
+
+sw_status sw_store_read_state(const sw_store *s, sw_store_state *out, sw_error *err)
+{
+    char path[3200], text[SW_STORE_TEXT_MAX];
+    size_t size;
+    int present;
+    sw_store_path(s, "state", path, sizeof path);
+    sw_status st = read_small(path, text, sizeof text, &size, &present, err);
+    if (st != SW_OK)
+        return st;
+    if (!present) {
+        *out = (sw_store_state){ .active = SW_SLOT_NONE, .pending = SW_SLOT_NONE };
+        return SW_OK;
+    }
+    return sw_store_state_parse(text, size, path, out, err);
+}
+
+sw_status sw_store_write_state(const sw_store *s, sw_store_state *state, sw_error *err)
+{
+    char path[3200], text[SW_STORE_TEXT_MAX];
+    state->generation++;
+    size_t n = sw_store_state_format(state, text, sizeof text);
+    if (n == 0)
+        return sw_error_set(err, SW_ERR_RANGE, "the store state does not fit %d bytes",
+                            SW_STORE_TEXT_MAX);
+    sw_store_path(s, "state", path, sizeof path);
+    return sw_store_write_atomic(path, text, n, err);
+}
+
+sw_status sw_store_read_journal(const sw_store *s, sw_store_journal *out, int *present,
+                                sw_error *err)
+{
+    char path[3200], text[SW_STORE_TEXT_MAX];
+    size_t size;
+    sw_store_path(s, "journal", path, sizeof path);
+    sw_status st = read_small(path, text, sizeof text, &size, present, err);
+    if (st == SW_OK && *present)
+        st = sw_store_journal_parse(text, size, path, out, err);
+    return st;
+}
+
+sw_status sw_store_write_journal(const sw_store *s, const sw_store_journal *j, sw_error *err)
+{
+    char path[3200], text[SW_STORE_TEXT_MAX];
+    size_t n = sw_store_journal_format(j, text, sizeof text);
+    sw_store_path(s, "journal", path, sizeof path);
+    return sw_store_write_atomic(path, text, n, err);
+}
+
+sw_status sw_store_remove_journal(const sw_store *s, sw_error *err)
+{
+    char path[3200];
+    sw_store_path(s, "journal", path, sizeof path);
+    if (unlink(path) != 0 && errno != ENOENT)
+        return sw_error_set(err, SW_ERR_IO, "unlink %s: %s", path, strerror(errno));
+    return sw_store_sync_dir(s->dir, err);
+}
+
+sw_status sw_store_read_keys(const char *path, sw_trusted_keys *keys, sw_error *err)
+{
+    char text[16384];
+    size_t size;
+    int present;
+    *keys = (sw_trusted_keys){ 0 };
+    sw_status st = read_small(path, text, sizeof text, &size, &present, err);
+    if (st == SW_OK && !present)
+        st = sw_error_set(err, SW_ERR_IO, "%s: No such file: the unit's trusted keys", path);
+    if (st == SW_OK)
+        st = sw_trusted_keys_parse(text, size, path, keys, err);
+    if (st == SW_OK && keys->count == 0)
+        st = sw_error_set(err, SW_ERR_FORMAT, "%s: no trusted keys in the file", path);
+    return st;
+}

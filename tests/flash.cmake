@@ -1,0 +1,52 @@
+# tests of signed packs and the unit's pack store (issue 12): signing and its
+# check (test_pack_sign), the key file and store state parsers' fuzz targets.
+sw_add_test(test_pack_sign SOURCES test_pack_sign.c LIBS sw_assets sw_core)
+sw_add_test(test_pack_store SOURCES test_pack_store.c LIBS sw_runtime)
+
+# The store tests' packs and keys (tests/flash_fixture.sh), made once.
+set(SW_FLASH_FIXTURE ${CMAKE_CURRENT_BINARY_DIR}/flash_fixture)
+add_test(NAME flash_fixture COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/flash_fixture.sh
+         $<TARGET_FILE:seamwalk-pack> ${SW_SAMPLES} ${SW_FLASH_FIXTURE})
+set_tests_properties(flash_fixture PROPERTIES FIXTURES_SETUP flash_packs)
+
+# The fault shim (LD_PRELOAD): kills and I/O failures at chosen calls.
+add_library(flash_fault_shim SHARED flash_fault_shim.c)
+target_link_libraries(flash_fault_shim PRIVATE ${CMAKE_DL_LIBS})
+set_target_properties(flash_fault_shim PROPERTIES PREFIX "")
+
+# Power loss: SIGKILL at random calls and random times during install.
+# Fewer trials under the sanitizers, where every run is several times slower.
+if(SW_ASAN OR SW_TSAN)
+  set(SW_FLASH_TRIALS 120 30)
+else()
+  set(SW_FLASH_TRIALS 200 40)
+endif()
+add_executable(test_flash_power test_flash_power.c)
+target_include_directories(test_flash_power PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+sw_apply_warnings(test_flash_power)
+add_test(NAME test_flash_power COMMAND test_flash_power $<TARGET_FILE:seamwalk-flash>
+         $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_power ${SW_FLASH_TRIALS} 12)
+set_tests_properties(test_flash_power PROPERTIES FIXTURES_REQUIRED flash_packs)
+
+# Refusals, I/O faults and the install / status / mark-good / rollback flow.
+add_test(NAME test_flash_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_cli.sh
+         $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_cli)
+set_tests_properties(test_flash_cli PROPERTIES FIXTURES_REQUIRED flash_packs)
+
+# The screen a unit with no valid pack shows, read back from the framebuffer.
+sw_add_test(test_message_screen SOURCES test_message_screen.c LIBS sw_platform sw_core)
+
+# The boot side: seamwalk --store (trial, mark-good, fallback after K boots,
+# power cuts while a boot is recorded, the message screen read back).
+add_test(NAME test_flash_boot COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_boot.sh
+         $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim>
+         ${SW_FLASH_FIXTURE} ${CMAKE_CURRENT_BINARY_DIR}/flash_boot)
+set_tests_properties(test_flash_boot PROPERTIES FIXTURES_REQUIRED flash_packs)
+
+# The parsers of the store's state file and journal, and of key files.
+sw_add_fuzz_target(fuzz_store SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_store.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store)
+sw_add_fuzz_target(fuzz_keys SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_keys.c
+  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys)
