@@ -815,13 +815,17 @@ static void test_default_tolerance(void)
     SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-5, 1e-12);
     m.model_tolerance = 0.01f;
     SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 0.01, 1e-9);
+    /* A stated tolerance is taken as it is, down to a millionth of the
+     * model (floats): 1e-6 of the 5-unit diagonal, not 1e-5 of it. */
     m.model_tolerance = 1e-9f;
-    SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-5, 1e-12);
+    SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 5e-6, 1e-12);
+    m.model_tolerance = 2e-5f;
+    SW_CHECK_NEAR(sw_seam_default_tolerance(&m, NULL), 2e-5, 1e-10);
     SW_CHECK(sw_seam_default_tolerance(&m, &(sw_seam_options){0.25}) == 0.25);
     sw_model_free(&m);
-    /* a hall of 3000 x 4000 with a part of 3 x 4 in it: 1e-6 of the whole
-       (5e-3) beats 1e-5 of the part (5e-5); in a hall of 20 x 20 the
-       part's 5e-5 beats 1e-6 of the whole (2.8e-5) */
+    /* stating no tolerance, a hall of 3000 x 4000 with a part of 3 x 4 in
+       it: 1e-6 of the whole (5e-3) beats 1e-5 of the part (5e-5); in a hall
+       of 20 x 20 the part's 5e-5 beats 1e-6 of the whole (2.8e-5) */
     const float grey[4] = {0.5f, 0.5f, 0.5f, 1};
     sw_model_init(&m);
     SW_CHECK(sw_model_begin_part(&m, "hall", grey, NULL) == SW_OK);

@@ -49,10 +49,17 @@ double sw_seam_default_tolerance(const sw_model *model, const sw_seam_options *o
         return opt->tolerance;
     sw_box box = sw_model_box(model);
     double whole = sw_box_is_empty(&box) ? 0 : sw_box_diagonal(&box);
-    double floor = fmax(1e-5 * smallest_part_size(model), 1e-6 * whole);
-    if (!(model->model_tolerance > 0))
-        return floor > 0 ? floor : 1e-3;
-    return fmax((double)model->model_tolerance, floor);
+    /* Below a millionth of the model, float positions no longer tell the
+     * two sides of a seam apart. */
+    double floats = 1e-6 * whole;
+    /* A file that states its tolerance is taken at its word: where its faces
+     * meet less closely, each trim's gap (its edge tolerance) widens the
+     * sewing there, not everywhere. A file that states none (Newell, .bpt)
+     * is sewn at 1e-5 of its smallest part. */
+    if (model->model_tolerance > 0)
+        return fmax((double)model->model_tolerance, floats);
+    double floor = fmax(1e-5 * smallest_part_size(model), floats);
+    return floor > 0 ? floor : 1e-3;
 }
 
 sw_status sw_seam_sew_model(const sw_model *model, const sw_seam_options *opt, sw_seam_host *out,
