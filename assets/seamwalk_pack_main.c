@@ -28,10 +28,13 @@
 #include "sw_seam_sew.h"
 #include "sw_seam_simplify.h"
 #include "sw_text_scan.h"
+#include "sw_up_axis.h"
+#include "sw_up_inputs.h"
 
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
     "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
+    "                           [--up x|y|z|-x|-y|-z]\n"
     "       seamwalk-pack info [--json] PACK\n"
     "       seamwalk-pack verify PACK [--key KEYS.pub]\n"
     "       seamwalk-pack keygen -o PREFIX\n"
@@ -45,7 +48,9 @@ static const char usage_text[] =
     "importer would skip are errors. --quiet: no progress bar, no summary.\n"
     "--seam-tolerance: how far apart trims may be and still be sewn into one seam\n"
     "(default: the file's model tolerance, at least 1e-5 of its smallest part's size\n"
-    "and 1e-6 of the whole model's).\n";
+    "and 1e-6 of the whole model's).\n"
+    "--up: the model axis that points up (default: z for STEP and IGES, y for .txt\n"
+    "and .bpt, a scene's up_axis or y; inputs that differ: the first's, warned).\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -109,6 +114,7 @@ typedef struct build_options {
     int input_count;
     int quiet, strict, iges_occt;
     double seam_tolerance;      /* 0: sw_seam_default_tolerance */
+    int32_t up_axis;            /* --up (sw_up_axis.h); 0: by the inputs (sw_up_inputs.h) */
 } build_options;
 
 /* What the progress callbacks need to label a stage and count its rate:
@@ -279,6 +285,8 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
     if (st == SW_OK) {
         sw_seam_graph view = sw_seam_host_view(&seams);
         contents.seam = &view;
+        const sw_pack_orientation orientation = { .up_axis = model->up_axis };
+        contents.orientation = sw_up_axis_valid(model->up_axis) ? &orientation : NULL;
         on_progress(pc, "serialising", 0.0);
         st = sw_pack_serialize(&contents, &bytes, bytes_out, err);
         sw_pack_contents_free(&contents);
@@ -298,10 +306,21 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
     progress_context pc = { .model = model };
     sw_progress_init(&pc.bar, stderr, o->quiet);
     sw_status st = SW_OK;
-    for (int i = 0; st == SW_OK && i < o->input_count; i++)
+    int32_t *up_defaults = calloc((size_t)o->input_count + 1, sizeof *up_defaults);
+    if (!up_defaults)
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    for (int i = 0; st == SW_OK && i < o->input_count; i++) {
+        model->up_axis = 0; /* what this input's scene says, if it is one */
         st = add_input(o, i, &pc, model, &reports[i], err);
-    if (st == SW_OK)
+        up_defaults[i] = sw_up_input_default(o->inputs[i], model->up_axis);
+    }
+    if (st == SW_OK) {
+        sw_progress_clear(&pc.bar); /* a warning must not share the bar's line */
+        model->up_axis = sw_up_inputs_choose(o->inputs, up_defaults, o->input_count, o->up_axis,
+                                           stderr);
         st = pack_model(o, &pc, model, seams, bytes_out, err);
+    }
+    free(up_defaults);
     sw_progress_clear(&pc.bar);
     return st;
 }
@@ -371,6 +390,10 @@ static int parse_build(int argc, char **argv, build_options *o)
                 !(o->seam_tolerance < 1e30))
                 return usage_error("build: --seam-tolerance takes a length in mm > 0, not '%s'",
                                    t);
+        } else if (strcmp(a, "--up") == 0) {
+            const char *u = i + 1 < argc ? argv[++i] : "";
+            if (!sw_up_axis_parse(u, &o->up_axis))
+                return usage_error("build: --up takes x, y, z, -x, -y or -z, not '%s'", u);
         } else if (strcmp(a, "--quiet") == 0) {
             o->quiet = 1;
         } else if (strcmp(a, "--strict") == 0) {

@@ -56,6 +56,10 @@ enum sw_section_type {
     SW_SECTION_SEAM_COLLAPSES = 19,     /* sw_seam_collapse[collapse_count] */
     SW_SECTION_SEAM_SLOT_REFS = 20,     /* uint32_t[slot_ref_count] */
     SW_SECTION_SEAM_SURFACE_LOOPS = 21, /* uint32_t[surface_count + 1] */
+    /* 22 is SIGNATURE (core/sw_pack_signature.h). Which model axis points
+     * up; optional, absent means +y, so packs written before it keep their
+     * meaning and older readers skip it (core/sw_up_axis.h). */
+    SW_SECTION_ORIENTATION = 23,        /* one sw_pack_orientation */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
@@ -183,6 +187,12 @@ typedef struct sw_pack_seam {         /* 64 bytes */
     uint8_t reserved[28];             /* zero */
 } sw_pack_seam;
 
+/* Section ORIENTATION: the model's up axis, for the runtime's camera. */
+typedef struct sw_pack_orientation {  /* 16 bytes */
+    int32_t up_axis;                  /* enum sw_up_axis: +-1 x, +-2 y, +-3 z */
+    uint8_t reserved[12];             /* zero */
+} sw_pack_orientation;
+
 /* Arena bytes the runtime keeps per patch beyond the pack itself (tessellation
  * level, visibility); the runtime asserts its per-patch state fits. */
 #define SW_RUNTIME_BYTES_PER_PATCH 16u
@@ -217,6 +227,7 @@ typedef struct sw_pack {
      * every count 0 when the pack has none. */
     const sw_pack_seam *seam_header;             /* NULL when absent */
     sw_seam_graph seam;
+    const sw_pack_orientation *orientation;      /* NULL when absent: +y up */
 } sw_pack;
 
 /* runtime_bytes for a pack of total_size bytes and patch_count patches: the

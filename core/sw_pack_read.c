@@ -16,6 +16,7 @@
 #include <xxhash.h>
 
 #include "sw_pack_validate.h"
+#include "sw_up_axis.h"
 
 /* The records are read in place, so their layout is the format. */
 #define SW_PIN(type, field, off) _Static_assert(offsetof(type, field) == (off), #type "." #field)
@@ -131,6 +132,9 @@ _Static_assert(sizeof(sw_seam_collapse) == 12, "sw_seam_collapse");
 SW_PIN(sw_seam_collapse, v1, 0);
 SW_PIN(sw_seam_collapse, v2, 4);
 SW_PIN(sw_seam_collapse, error, 8);
+_Static_assert(sizeof(sw_pack_orientation) == 16, "sw_pack_orientation");
+SW_PIN(sw_pack_orientation, up_axis, 0);
+SW_PIN(sw_pack_orientation, reserved, 4);
 _Static_assert(sizeof(float) == 4, "CONTROL holds IEEE binary32");
 _Static_assert(sizeof(SW_PACK_MAGIC) - 1 == 8, "magic is 8 bytes");
 
@@ -161,6 +165,7 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_SEAM_COLLAPSES: return "SEAM_COLLAPSES";
     case SW_SECTION_SEAM_SLOT_REFS: return "SEAM_SLOT_REFS";
     case SW_SECTION_SEAM_SURFACE_LOOPS: return "SEAM_SURFACE_LOOPS";
+    case SW_SECTION_ORIENTATION: return "ORIENTATION";
     }
     return "unknown";
 }
@@ -600,7 +605,8 @@ sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_er
         (s = check_runtime_bytes(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_records(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_trim(&pack, err)) != SW_OK ||
-        (s = sw_pack_validate_seam(&pack, err)) != SW_OK)
+        (s = sw_pack_validate_seam(&pack, err)) != SW_OK ||
+        (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK)
         return s;
     *out = pack;
     return SW_OK;

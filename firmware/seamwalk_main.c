@@ -26,6 +26,7 @@
 #include "sw_renderer.h"
 #include "sw_seam_walk.h"
 #include "sw_stats.h"
+#include "sw_up_axis.h"
 #include "sw_walk.h"
 
 typedef struct runtime {
@@ -46,6 +47,7 @@ typedef struct runtime {
     uint8_t *pixels;          /* read-back, width * height * 4, only with --png-dir */
     size_t png_scratch;       /* bytes kept free in the arena for sw_png_write */
     sw_box model_box;
+    sw_camera_frame frame;           /* the orbit's: up is the pack's up axis */
     const sw_pack_viewpoint *view;   /* with --view */
     double start_s;
     sw_boot boot;             /* with --store: the slot being started, mark-good */
@@ -207,6 +209,7 @@ static sw_status start(runtime *rt, sw_error *err)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: the pack has no patches to show",
                             rt->opt.pack_path);
     rt->model_box = pack_box(&rt->pack);
+    rt->frame = sw_camera_frame_for_up(sw_up_axis_vector(sw_pack_up_axis(&rt->pack)));
     if (rt->opt.path_file && (st = load_path(rt, path_bytes, err)) != SW_OK)
         return st;
     if (rt->opt.view_name && (st = find_view(rt, err)) != SW_OK)
@@ -246,8 +249,9 @@ static sw_camera_pose pose_at(const runtime *rt, int frame)
         return (sw_camera_pose){ vec3_of(rt->view->eye), vec3_of(rt->view->target),
                                  sw_v3_normalize(vec3_of(rt->view->up)) };
     if (rt->opt.orbit)
-        return sw_camera_orbit(&rt->model_box, fovy, (double)rt->opt.width / rt->opt.height,
-                               (double)frame / rt->opt.frames);
+        return sw_camera_orbit_in(&rt->model_box, &rt->frame, fovy,
+                                  (double)rt->opt.width / rt->opt.height,
+                                  (double)frame / rt->opt.frames);
     double t0 = sw_camera_path_start(&rt->path), t1 = sw_camera_path_end(&rt->path);
     double t = rt->opt.frames > 1 ? t0 + (t1 - t0) * frame / (rt->opt.frames - 1) : t0;
     return sw_camera_path_at(&rt->path, t);

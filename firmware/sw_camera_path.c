@@ -189,20 +189,35 @@ sw_camera_pose sw_camera_path_at(const sw_camera_path *path, double t)
     return pose;
 }
 
-/* Unit vector from the centre toward the camera at this azimuth. */
-static sw_vec3 orbit_direction(double azimuth, double elevation)
+sw_camera_frame sw_camera_frame_for_up(sw_vec3 up)
 {
-    return sw_v3(cos(elevation) * sin(azimuth), sin(elevation), cos(elevation) * cos(azimuth));
+    /* x stays "right" unless it is the up axis; then right = up x z, so that
+     * every frame is the y-up one turned (right x up = front, right-handed). */
+    sw_vec3 right = fabs(up.x) > 0.5 ? sw_v3_normalize(sw_v3_cross(up, sw_v3(0, 0, 1)))
+                                     : sw_v3(1, 0, 0);
+    return (sw_camera_frame){ right, up, sw_v3_cross(right, up) };
+}
+
+/* Unit vector from the centre toward the camera at this azimuth. For the
+ * y-up frame exactly (sin az cos el, sin el, cos az cos el): the other terms
+ * add zeros. */
+static sw_vec3 orbit_direction(const sw_camera_frame *f, double azimuth, double elevation)
+{
+    sw_vec3 across = sw_v3_scale(f->right, cos(elevation) * sin(azimuth));
+    sw_vec3 above = sw_v3_scale(f->up, sin(elevation));
+    sw_vec3 ahead = sw_v3_scale(f->front, cos(elevation) * cos(azimuth));
+    return sw_v3_add(sw_v3_add(across, above), ahead);
 }
 
 /* Smallest distance from the centre, along dir, at which all eight box corners
  * lie inside the view: a corner at (a, b) across and c toward the camera is
  * seen when |a| <= (d - c) tan(half_x) and |b| <= (d - c) tan(half_y). Tighter
  * than fitting the bounding sphere, which leaves flat scenes small. */
-static double fit_distance(const sw_box *box, sw_vec3 dir, double tan_x, double tan_y)
+static double fit_distance(const sw_box *box, sw_vec3 world_up, sw_vec3 dir, double tan_x,
+                           double tan_y)
 {
     sw_vec3 centre = sw_box_center(box);
-    sw_vec3 right = sw_v3_normalize(sw_v3_cross(sw_v3(0, 1, 0), dir));
+    sw_vec3 right = sw_v3_normalize(sw_v3_cross(world_up, dir));
     sw_vec3 up = sw_v3_cross(dir, right);
     double d = 0;
     for (int i = 0; i < 8; i++) {
@@ -218,18 +233,27 @@ static double fit_distance(const sw_box *box, sw_vec3 dir, double tan_x, double 
 
 sw_camera_pose sw_camera_orbit(const sw_box *box, double fovy_rad, double aspect, double turn)
 {
+    const sw_camera_frame y_up = sw_camera_frame_for_up(sw_v3(0, 1, 0));
+    return sw_camera_orbit_in(box, &y_up, fovy_rad, aspect, turn);
+}
+
+sw_camera_pose sw_camera_orbit_in(const sw_box *box, const sw_camera_frame *frame,
+                                  double fovy_rad, double aspect, double turn)
+{
     const double elevation = 25.0 * SW_PI / 180.0, samples = 64;
     double tan_y = tan(0.5 * fovy_rad), tan_x = tan_y * aspect;
     /* One distance for the whole revolution, so the camera circles steadily:
      * the largest fit over the orbit, plus a margin. */
     double distance = 0;
     for (int k = 0; k < samples; k++)
-        distance = fmax(distance, fit_distance(box, orbit_direction(2 * SW_PI * k / samples,
-                                                                     elevation),
+        distance = fmax(distance, fit_distance(box, frame->up,
+                                               orbit_direction(frame, 2 * SW_PI * k / samples,
+                                                               elevation),
                                                tan_x, tan_y));
     distance = fmax(distance * 1.08, 1e-6 * (1 + sw_box_diagonal(box)));
     sw_vec3 centre = sw_box_center(box);
-    sw_vec3 eye = sw_v3_add(centre, sw_v3_scale(orbit_direction(2 * SW_PI * turn, elevation),
+    sw_vec3 eye = sw_v3_add(centre, sw_v3_scale(orbit_direction(frame, 2 * SW_PI * turn,
+                                                                elevation),
                                                 distance));
-    return (sw_camera_pose){ eye, centre, sw_v3(0, 1, 0) };
+    return (sw_camera_pose){ eye, centre, frame->up };
 }

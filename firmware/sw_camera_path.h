@@ -12,7 +12,11 @@
  * Between keys, eye and target follow Catmull-Rom splines with tangents
  * from the neighbouring keys scaled for uneven spacing (C1 in time), and up is
  * interpolated the same way and renormalised. Before the first key and after
- * the last the camera holds still. */
+ * the last the camera holds still.
+ *
+ * Frame: eye, target and up are world coordinates, which are the pack's model
+ * coordinates as stored (millimetres); the pack's up axis (sw_up_axis.h) does
+ * not rotate them. For a z-up pack (a STEP or IGES part) give up = 0 0 1. */
 #ifndef SW_CAMERA_PATH_H
 #define SW_CAMERA_PATH_H
 
@@ -51,10 +55,26 @@ double sw_camera_path_start(const sw_camera_path *path);
 double sw_camera_path_end(const sw_camera_path *path);
 sw_camera_pose sw_camera_path_at(const sw_camera_path *path, double time_s);
 
-/* A circle around box's centre, 25 degrees above the horizon (y up),
- * starting on +z, at one distance for the whole circle: the nearest at which
- * every corner of the box is in view from every point of it, plus 8%.
- * turn in [0, 1) is the fraction of the revolution. */
+/* The world's directions for the orbit: up, and two horizontal ones, right
+ * and front (right x up = front), where the orbit starts. */
+typedef struct sw_camera_frame {
+    sw_vec3 right, up, front;
+} sw_camera_frame;
+
+/* The frame for a unit axis-aligned up (sw_up_axis_vector): y up gives
+ * right +x, front +z; z up (CAD) right +x, front -y, the usual front view;
+ * every other frame is the y-up one rotated so that +y lands on up. */
+sw_camera_frame sw_camera_frame_for_up(sw_vec3 up);
+
+/* A circle around box's centre, 25 degrees above the horizon (the plane
+ * across frame->up), starting on frame->front, at one distance for the
+ * whole circle: the nearest at which every corner of the box is in view from
+ * every point of it, plus 8%. The camera's up is frame->up. turn in [0, 1)
+ * is the fraction of the revolution. */
+sw_camera_pose sw_camera_orbit_in(const sw_box *box, const sw_camera_frame *frame,
+                                  double fovy_rad, double aspect, double turn);
+
+/* The orbit with y up (sw_camera_orbit_in with sw_camera_frame_for_up(+y)). */
 sw_camera_pose sw_camera_orbit(const sw_box *box, double fovy_rad, double aspect, double turn);
 
 #endif

@@ -139,7 +139,7 @@ void sw_options_print_usage(const char *argv0)
             "          [--seams]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --path FILE         follow a camera path (format: firmware/sw_camera_path.h)\n"
-            "  --orbit             circle the model\n"
+            "  --orbit             circle the model around the pack's up axis\n"
             "  --view NAME         stand at one of the pack's named viewpoints\n"
             "  --frames N          frames to render (default 120)\n"
             "  --png-dir DIR       write frame_NNNNN.png every --png-every frames\n"

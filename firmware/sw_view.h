@@ -21,7 +21,10 @@ typedef struct sw_view {
 
 /* Near and far are fitted to model_box so the 16-bit depth buffer keeps its
  * precision: far just past the farthest box corner, near at the nearest
- * corner's depth but never below far / 2000. */
+ * corner's depth but never below far / 2000. The camera's up is pose->up
+ * (the orbit's is the pack's up axis); no model-to-world rotation is
+ * applied, so the frustum, the culling and the error measure all work in
+ * the pack's coordinates, the ones that are drawn. */
 sw_view sw_view_make(const sw_camera_pose *pose, double fovy_rad, int width, int height,
                      const sw_box *model_box);
 

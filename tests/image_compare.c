@@ -5,7 +5,9 @@
  * That tolerance absorbs llvmpipe's rasterisation changes between Mesa
  * versions (edge pixels, rounding) but not a moved, missing or recoloured
  * object. `image_compare --coverage A.png MIN` checks instead that at least MIN
- * of the pixels differ from the background. Prints the figures; exit 0 on a match, 1 on a mismatch, 2 on error. */
+ * of the pixels differ from the background. `image_compare --aspect A.png MIN MAX`
+ * checks that the silhouette (the box of the pixels that differ from the
+ * background) is between MIN and MAX times as tall as it is wide. Prints the figures; exit 0 on a match, 1 on a mismatch, 2 on error. */
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
 #include <stb_image.h>
@@ -44,10 +46,40 @@ static int coverage(const char *path, double min_fraction)
     return fraction >= min_fraction ? 0 : 1;
 }
 
+/* --aspect A.png MIN MAX: the silhouette's height / width lies in [MIN, MAX],
+ * which tells a part standing upright from one lying on its side. */
+static int aspect(const char *path, double min_ratio, double max_ratio)
+{
+    int w, h, n;
+    unsigned char *a = stbi_load(path, &w, &h, &n, 3);
+    if (!a) {
+        fprintf(stderr, "image_compare: cannot read %s\n", path);
+        return 2;
+    }
+    int x0 = w, x1 = -1, y0 = h, y1 = -1;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++)
+            if (channel_diff(a + ((long)y * w + x) * 3, a, 8)) {
+                x0 = x < x0 ? x : x0, x1 = x > x1 ? x : x1;
+                y0 = y < y0 ? y : y0, y1 = y > y1 ? y : y1;
+            }
+    stbi_image_free(a);
+    if (x1 < 0) {
+        printf("%s: nothing but the background\n", path);
+        return 1;
+    }
+    double ratio = (double)(y1 - y0 + 1) / (x1 - x0 + 1);
+    printf("%s: silhouette %d x %d pixels, height / width %.3f (need %.3f..%.3f)\n", path,
+           x1 - x0 + 1, y1 - y0 + 1, ratio, min_ratio, max_ratio);
+    return ratio >= min_ratio && ratio <= max_ratio ? 0 : 1;
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 4 && !strcmp(argv[1], "--coverage"))
         return coverage(argv[2], atof(argv[3]));
+    if (argc == 5 && !strcmp(argv[1], "--aspect"))
+        return aspect(argv[2], atof(argv[3]), atof(argv[4]));
     int level = 8;
     double max_fraction = 0.005;
     if (argc < 3) {

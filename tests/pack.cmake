@@ -8,3 +8,13 @@ sw_add_fuzz_target(fuzz_pack SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pack.c
   CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack)
 # seamwalk-pack's progress line (a pseudo-terminal stands in for the user's).
 sw_add_test(test_progress SOURCES test_progress.c LIBS sw_assets sw_core)
+# The up axis: names, the ORIENTATION section, each input's default, the
+# scene key (test_up_axis); the command line and the upright orbit
+# (test_up_axis.sh: up_axis_cli, and up_axis_orbit on the shared models).
+sw_add_test(test_up_axis SOURCES test_up_axis.c LIBS sw_assets sw_core)
+foreach(mode cli orbit)
+  add_test(NAME up_axis_${mode}
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_up_axis.sh ${mode} ${PROJECT_BINARY_DIR}
+            ${PROJECT_SOURCE_DIR} ${SW_SHARED_MODELS})
+  set_tests_properties(up_axis_${mode} PROPERTIES SKIP_RETURN_CODE 77)
+endforeach()

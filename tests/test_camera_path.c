@@ -125,6 +125,94 @@ static void test_orbit_sees_whole_box_from_constant_distance(void)
     SW_CHECK(sw_v3_length(sw_v3_sub(f.eye, sw_box_center(&flat))) < 0.9 * sphere);
 }
 
+static void check_near_v3(sw_vec3 a, sw_vec3 b, double tol)
+{
+    SW_CHECK_NEAR(a.x, b.x, tol);
+    SW_CHECK_NEAR(a.y, b.y, tol);
+    SW_CHECK_NEAR(a.z, b.z, tol);
+}
+
+static void test_orbit_frames_are_turned_y_up_frames(void)
+{
+    const sw_vec3 ups[6] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 },
+                             { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+    for (int i = 0; i < 6; i++) {
+        sw_camera_frame f = sw_camera_frame_for_up(ups[i]);
+        check_near_v3(f.up, ups[i], 0);
+        SW_CHECK_NEAR(sw_v3_length(f.right), 1, 1e-15);
+        SW_CHECK_NEAR(sw_v3_length(f.front), 1, 1e-15);
+        SW_CHECK(sw_v3_dot(f.right, f.up) == 0 && sw_v3_dot(f.front, f.up) == 0 &&
+                 sw_v3_dot(f.right, f.front) == 0);
+        check_near_v3(sw_v3_cross(f.right, f.up), f.front, 0); /* right-handed */
+    }
+    sw_camera_frame y = sw_camera_frame_for_up(sw_v3(0, 1, 0));
+    check_near_v3(y.right, sw_v3(1, 0, 0), 0);
+    check_near_v3(y.front, sw_v3(0, 0, 1), 0);
+    sw_camera_frame z = sw_camera_frame_for_up(sw_v3(0, 0, 1));
+    check_near_v3(z.right, sw_v3(1, 0, 0), 0);
+    check_near_v3(z.front, sw_v3(0, -1, 0), 0); /* CAD's front view looks along +y */
+}
+
+/* Height / width of box's eight corners as the pose sees them. */
+static double projected_aspect(const sw_box *box, sw_camera_pose pose, double fovy, double aspect)
+{
+    sw_mat4 view = sw_mat4_look_at(pose.eye, pose.target, pose.up);
+    sw_mat4 proj = sw_mat4_perspective(fovy, aspect, 0.01, 1000);
+    sw_mat4 vp = sw_mat4_mul(&proj, &view);
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int k = 0; k < 8; k++) {
+        sw_vec4 q = sw_mat4_mul_v4(&vp, (sw_vec4){ k & 1 ? box->max.x : box->min.x,
+                                                   k & 2 ? box->max.y : box->min.y,
+                                                   k & 4 ? box->max.z : box->min.z, 1 });
+        double x = q.x / q.w * aspect, y = q.y / q.w;
+        x0 = fmin(x0, x), x1 = fmax(x1, x), y0 = fmin(y0, y), y1 = fmax(y1, y);
+    }
+    return (y1 - y0) / (x1 - x0);
+}
+
+static void test_z_up_orbit_circles_z_and_shows_a_tall_box_tall(void)
+{
+    sw_box tall = { sw_v3(-1, -1, 0), sw_v3(1, 1, 8) }; /* a post standing on z = 0 */
+    sw_vec3 c = sw_box_center(&tall);
+    sw_camera_frame z = sw_camera_frame_for_up(sw_v3(0, 0, 1));
+    double fovy = 45 * SW_PI / 180, aspect = 4.0 / 3.0, d = -1;
+    for (int i = 0; i < 16; i++) {
+        sw_camera_pose pose = sw_camera_orbit_in(&tall, &z, fovy, aspect, i / 16.0);
+        check_near_v3(pose.up, sw_v3(0, 0, 1), 0);
+        sw_vec3 rel = sw_v3_sub(pose.eye, c);
+        double dist = sw_v3_length(rel);
+        d = d < 0 ? dist : d;
+        SW_CHECK_NEAR(dist, d, 1e-9);                              /* one circle */
+        SW_CHECK_NEAR(rel.z, d * sin(25 * SW_PI / 180), 1e-9);     /* 25 degrees above */
+        SW_CHECK(projected_aspect(&tall, pose, fovy, aspect) > 2); /* standing */
+    }
+    sw_camera_pose start = sw_camera_orbit_in(&tall, &z, fovy, aspect, 0);
+    SW_CHECK(start.eye.y < c.y && fabs(start.eye.x - c.x) < 1e-9); /* from the front */
+    /* The y-up orbit, the old view of every STEP part: from the side the
+     * post lies across the picture. */
+    sw_camera_pose side = sw_camera_orbit(&tall, fovy, aspect, 0.25);
+    SW_CHECK(projected_aspect(&tall, side, fovy, aspect) < 0.5);
+}
+
+/* The y-up orbit is the one before packs had an up axis: from +z, turning
+ * toward +x, 25 degrees above the xz plane. */
+static void test_y_up_orbit_is_unchanged(void)
+{
+    sw_box box = { sw_v3(-1, -2, -3), sw_v3(3, 2, 1) };
+    sw_vec3 c = sw_box_center(&box);
+    const double el = 25 * SW_PI / 180;
+    for (int i = 0; i < 8; i++) {
+        double az = 2 * SW_PI * i / 8.0;
+        sw_camera_pose a = sw_camera_orbit(&box, 0.8, 1.5, i / 8.0);
+        sw_vec3 rel = sw_v3_sub(a.eye, c);
+        double d = sw_v3_length(rel);
+        check_near_v3(rel, sw_v3_scale(sw_v3(cos(el) * sin(az), sin(el), cos(el) * cos(az)), d),
+                      1e-12 * d);
+        check_near_v3(a.up, sw_v3(0, 1, 0), 0);
+        check_near_v3(a.target, c, 0);
+    }
+}
+
 int main(void)
 {
     SW_RUN(test_parses_keys_and_skips_comments);
@@ -133,5 +221,8 @@ int main(void)
     SW_RUN(test_malformed_paths_name_line_and_problem);
     SW_RUN(test_unterminated_last_line_is_read);
     SW_RUN(test_orbit_sees_whole_box_from_constant_distance);
+    SW_RUN(test_orbit_frames_are_turned_y_up_frames);
+    SW_RUN(test_z_up_orbit_circles_z_and_shows_a_tall_box_tall);
+    SW_RUN(test_y_up_orbit_is_unchanged);
     return sw_test_finish();
 }

@@ -115,6 +115,20 @@ screws = [n for n in names if n.startswith("occt_screw")]
 assert not empty, "empty parts: %s" % empty[:5]
 assert screws and all("/" in n for n in screws), screws[:5]
 PY
+    # The screw is z-up (42 mm along z, 30 x 35 across): stood up, each copy
+    # is taller (about 1465 mm) than its 1.2 m footprint; lying, it would be
+    # about 980 mm high.
+    check "STEP copies stand upright on the floor" \
+      python3 - "$work/mixed.swpack" "$pack" <<'PY'
+import json, subprocess, sys
+j = json.loads(subprocess.run([sys.argv[2], "info", "--json", sys.argv[1]], capture_output=True,
+                              text=True, check=True).stdout)
+for p in j["parts"]:
+    if p["name"].startswith("occt_screw"):
+        lo, hi = p["box"]["min"], p["box"]["max"]
+        high, wide = hi[1] - lo[1], max(hi[0] - lo[0], hi[2] - lo[2])
+        assert abs(lo[1]) < 1e-3 and high > 1.1 * wide, (p["name"], lo, hi)
+PY
   else
     echo "skip STEP parts: this seamwalk-pack does not build $step"
   fi

@@ -162,7 +162,7 @@ assert j["units"] == "mm" and j["trim_loops"] == 0 and j["viewpoints"] == []
 assert [s["name"] for s in j["sections"]][4:] == ["ADJACENCY", "SURFACES", "TRIM_LOOPS",
   "TRIM_CURVES", "TRIM_DATA", "PATCH_DOMAINS", "TRIM_MASKS", "VIEWPOINTS", "PART_TRANSFORMS",
   "SEAM", "SEAM_VERTICES", "SEAM_SLOTS", "SEAM_LOOPS", "SEAM_EDGES", "SEAM_COLLAPSES",
-  "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS"]
+  "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS", "ORIENTATION"]
 EOF
 
 # A trimmed pack without any CAD reader: a generated plate with holes.

@@ -468,6 +468,25 @@ static void write_seam_seed(const char *dir)
     free(bytes);
 }
 
+/* The Bezier-only sample, z-up: an ORIENTATION section for the fuzzer. */
+static void write_orientation_seed(const char *dir)
+{
+    sample s;
+    make_sample(&s);
+    s.bezier_only = 1;
+    const sw_pack_orientation up = { .up_axis = 3 };
+    sw_pack_contents c = sample_contents(&s);
+    c.orientation = &up;
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK, "%s", err.message);
+    char path[512];
+    snprintf(path, sizeof path, "%s/seed-orientation", dir);
+    write_plain(path, bytes, size);
+    free(bytes);
+}
+
 /* The hand-made sample with every optional section, without them, with an
  * unknown section, with a Seam Graph; packs the writer makes of Bezier
  * patches and of a trimmed surface with a viewpoint. */
@@ -491,6 +510,7 @@ static int write_corpus(const char *dir)
     write_plain(path, bytes, size);
     free(bytes);
     write_seam_seed(dir);
+    write_orientation_seed(dir);
     sw_model model;
     start_model(&model);
     add_bicubic(&model, 0, 0, 0, 0);

@@ -95,6 +95,7 @@ typedef struct sw_model {
     sw_model_viewpoint *viewpoints;
     size_t viewpoint_count, viewpoint_capacity;
     float model_tolerance;   /* millimetres; 0 when the sources say nothing */
+    int32_t up_axis;         /* sw_up_axis.h: a scene's up_axis, then the build's; 0: not said */
 } sw_model;
 
 void sw_model_init(sw_model *model);

@@ -38,6 +38,9 @@ typedef struct sw_pack_contents {
      * sw_pack_contents_free leaves it alone; the graph's surface_count must
      * be surface_count above for the pack to validate. */
     const sw_seam_graph *seam;
+    /* The up axis, or NULL for no ORIENTATION section (readers take +y).
+     * Not owned, like seam. */
+    const sw_pack_orientation *orientation;
 } sw_pack_contents;
 
 #endif

@@ -1,6 +1,7 @@
 /* seamwalk-pack info (sw_pack_info.h): stats per part and for the pack, as
  * aligned text and as JSON. Keys are added, never renamed: scripts read them. */
 #include "sw_pack_info.h"
+#include "sw_up_axis.h"
 
 #include <inttypes.h>
 #include <math.h>
@@ -12,6 +13,13 @@
 const char *sw_pack_units_name(uint32_t units)
 {
     return units == SW_UNITS_MILLIMETRE ? "mm" : units == SW_UNITS_METRE ? "m" : "unspecified";
+}
+
+/* Packs from before ORIENTATION say so: their +y is the reader's default. */
+static void print_up_axis_text(FILE *out, const sw_pack *pack)
+{
+    fprintf(out, "  %-16s %s%s\n", "up axis", sw_up_axis_name(sw_pack_up_axis(pack)),
+            pack->orientation ? "" : " (no ORIENTATION section: the default)");
 }
 
 static void stats_init(sw_pack_part_stats *s)
@@ -227,6 +235,7 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
     double dx = (double)hi[0] - lo[0], dy = (double)hi[1] - lo[1], dz = (double)hi[2] - lo[2];
     fprintf(out, "  %-16s %s (model tolerance %g)\n", "units", sw_pack_units_name(m->units),
             m->model_tolerance);
+    print_up_axis_text(out, pack);
     fprintf(out, "  %-16s min %g %g %g, max %g %g %g\n", "box", lo[0], lo[1], lo[2], hi[0], hi[1],
             hi[2]);
     fprintf(out, "  %-16s %g (box diagonal)\n", "model size", sqrt(dx * dx + dy * dy + dz * dz));
@@ -377,6 +386,7 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack,
     json_sections(out, pack);
     fprintf(out, "  \"units\": \"%s\",\n  \"model_tolerance\": %.9g,\n",
             sw_pack_units_name(m->units), m->model_tolerance);
+    fprintf(out, "  \"up_axis\": \"%s\",\n", sw_up_axis_name(sw_pack_up_axis(pack)));
     fprintf(out, "  \"box\": {\"min\": ");
     json_floats(out, m->box_min, 3);
     fprintf(out, ", \"max\": ");

@@ -18,9 +18,10 @@
 #include "sw_pack_sections.h"
 #include "sw_pack_validate.h"
 
-/* Types 1..13 (the first five always written), then the seam group's eight. */
+/* Types 1..13 (the first five always written), then the seam group's eight,
+ * then ORIENTATION. */
 enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8,
-       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS, HEADER_BYTES = 64, SECTION_BYTES = 32 };
+       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 1, HEADER_BYTES = 64, SECTION_BYTES = 32 };
 
 static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
 
@@ -98,6 +99,9 @@ static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
         list_seam_sections(c->seam, seam_rec, &src[n]);
         n += SEAM_SECTIONS;
     }
+    if (c->orientation)
+        src[n++] = (section_source){ SW_SECTION_ORIENTATION, c->orientation,
+                                     sizeof *c->orientation };
     return n;
 }
 

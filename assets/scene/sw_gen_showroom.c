@@ -16,6 +16,8 @@
 #include "sw_pack_write.h"
 #include "sw_procedural.h"
 #include "sw_scene.h"
+#include "sw_up_axis.h"
+#include "sw_up_inputs.h"
 
 /* Floor grid (millimetres): cells of one object, blocks of cells, aisles. */
 #define CELL_MM 2000.0
@@ -29,7 +31,8 @@ typedef struct gen_file {
     char path[PATH_MAX];      /* absolute */
     char stem[33];            /* base name without extension, safe in a section name */
     size_t patches;
-    sw_box box;
+    sw_box box;               /* as placed: stood up when stand_up */
+    int stand_up;             /* a z-up file (STEP, IGES): +z turned to the showroom's +y */
     size_t copies;
 } gen_file;
 
@@ -120,6 +123,10 @@ static sw_status measure_file(const char *path, gen_file *file, sw_error *err)
     file->patches = m.patch_count;
     file->box = sw_model_box(&m);
     sw_model_free(&m);
+    file->stand_up = sw_up_input_default(file->path, 0) == SW_UP_POS_Z;
+    if (file->stand_up) /* x by -90 degrees: (x, y, z) -> (x, z, -y) */
+        file->box = (sw_box){ sw_v3(file->box.min.x, file->box.min.z, -file->box.max.y),
+                              sw_v3(file->box.max.x, file->box.max.z, -file->box.min.y) };
     if (st == SW_OK && file->patches == 0)
         st = sw_error_set(err, SW_ERR_FORMAT, "%s: no patches", file->path);
     return st;
@@ -298,6 +305,17 @@ static void text_printf(gen_text *t, const char *fmt, ...)
 
 static const double quarter_cos[4] = {1, 0, -1, 0}, quarter_sin[4] = {0, 1, 0, -1};
 
+/* The turn about y by yaw_quarters after standing a z-up part up (x by -90
+ * degrees), as the one axis and angle a scene's rotate takes: the quaternion
+ * (cos h, 0, sin h, 0) (cos 45, -sin 45, 0, 0), h half the yaw. */
+static void write_stand_up_rotate(gen_text *t, int yaw_quarters)
+{
+    double h = 0.25 * SW_PI * yaw_quarters, r = sqrt(0.5);
+    double w = cos(h) * r, v[3] = { -cos(h) * r, sin(h) * r, sin(h) * r };
+    text_printf(t, "rotate = %.12g %.12g %.12g %.12g\n", v[0], v[1], v[2],
+                2 * acos(w) * 180 / SW_PI);
+}
+
 /* A copy of a part file: scaled to the footprint, turned, its box centred on
  * the cell and its lowest point on the floor. Scene order: scale, rotate,
  * translate, so the translation undoes the turned, scaled box centre. */
@@ -311,7 +329,9 @@ static void write_file_part(gen_text *t, const gen_file *f, const gen_item *item
            si = quarter_sin[item->yaw_quarters];
     double x = s * (c.x * co + c.z * si), z = s * (-c.x * si + c.z * co);
     text_printf(t, "file = %s\nscale = %.9g\n", f->path, s);
-    if (item->yaw_quarters)
+    if (f->stand_up)
+        write_stand_up_rotate(t, item->yaw_quarters);
+    else if (item->yaw_quarters)
         text_printf(t, "rotate = 0 1 0 %d\n", 90 * item->yaw_quarters);
     text_printf(t, "translate = %.6f %.6f %.6f\n", cell.x - x, -s * f->box.min.y, cell.z - z);
 }

@@ -94,7 +94,7 @@ static int scene_handler(void *user, const char *section, const char *name, cons
     if (st->error_line)
         return 0;
     if (section[0] == '\0')
-        return scene_fail(st, SW_ERR_FORMAT, "key '%s' outside any section", name);
+        return scene_top_key(st, name, value);
     const char *part_name = NULL;
     const scene_section_kind *kind = find_section_kind(section, &part_name);
     if (!kind)
@@ -233,6 +233,8 @@ sw_status sw_scene_load_memory_with(const char *text, size_t size, const char *f
     scene_cache_free(&cache);
     for (size_t i = 0; status == SW_OK && i < st.view_count; i++)
         status = load_view(&st, &st.views[i], model, err);
+    if (status == SW_OK && st.up_axis_line)
+        model->up_axis = st.up_axis;
     free(st.parts);
     free(st.views);
     return status;

@@ -3,6 +3,9 @@
  * seamwalk-pack build, the showroom generator and the fuzz target. The format
  * in full (assets/SCENE_FORMAT.md says the same with examples):
  *
+ *   up_axis = z            ; before any section, optional: the model axis that
+ *                          ; points up (x, y, z, -x, -y, -z; default y), into
+ *                          ; model->up_axis; not rotated, the camera turns
  *   [part teapot]          ; one section per part; the name is the part's
  *   file = teapot.txt      ; a model file, relative to the scene's folder, or
  *   generate = vase        ; a procedural object: plate, vase or rail

@@ -5,6 +5,7 @@
 #define SW_SCENE_INTERNAL_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "sw_error.h"
 #include "sw_import.h"
@@ -63,6 +64,8 @@ typedef struct scene_state {
     size_t part_count, part_capacity;
     scene_view *views;
     size_t view_count, view_capacity;
+    int32_t up_axis;            /* the scene's up_axis (sw_up_axis.h), if given: */
+    long up_axis_line;          /* where; 0: not given */
     sw_error *err;
     long error_line;            /* 0 while no error is recorded */
     sw_status status;           /* of the recorded error */
@@ -83,6 +86,9 @@ typedef struct scene_section_kind {
     int (*begin)(scene_state *st, const char *name);
     int (*key)(scene_state *st, const char *name, const char *value);
 } scene_section_kind;
+
+/* A key before the first section: only up_axis (the model's up axis). */
+int scene_top_key(scene_state *st, const char *name, const char *value);
 
 extern const scene_section_kind scene_section_kinds[];
 extern const size_t scene_section_kind_count;

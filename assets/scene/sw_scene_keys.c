@@ -12,6 +12,7 @@
 
 #include "sw_scene.h"
 #include "sw_scene_internal.h"
+#include "sw_up_axis.h"
 
 /* ---- values ------------------------------------------------------------- */
 
@@ -285,6 +286,25 @@ static int view_key(scene_state *st, const char *name, const char *value)
     return scene_fail(st, SW_ERR_FORMAT,
                       "unknown key '%s' in view '%s' (expected eye, target, up or fov)", name,
                       view->name);
+}
+
+/* ---- keys before the first section -------------------------------------- */
+
+/* up_axis: which model axis points up. A key of the whole scene, so it
+ * stands before the first section; [view] keeps `up`, the camera's. */
+int scene_top_key(scene_state *st, const char *name, const char *value)
+{
+    if (strcmp(name, "up_axis") != 0)
+        return scene_fail(st, SW_ERR_FORMAT, "key '%s' outside any section (only up_axis may "
+                          "come before the first section)", name);
+    if (st->up_axis_line)
+        return scene_fail(st, SW_ERR_FORMAT, "key 'up_axis' given twice (first at line %ld)",
+                          st->up_axis_line);
+    if (!sw_up_axis_parse(value, &st->up_axis))
+        return scene_fail(st, SW_ERR_FORMAT, "up_axis: '%.32s', expected x, y, z, -x, -y or -z",
+                          value);
+    st->up_axis_line = st->line;
+    return 1;
 }
 
 /* ---- sections ----------------------------------------------------------- */
