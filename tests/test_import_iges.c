@@ -296,6 +296,59 @@ static void test_trim_written_in_parameter_space(void)
     sw_model_free(&m);
 }
 
+/* A resolution no fit can meet (1e-12 mm, as some exporters write 1e-8):
+ * the p-curve is fitted within a millionth of the face's size instead, and
+ * the file builds. */
+static void test_trim_fit_tolerance_follows_the_face(void)
+{
+    const iges_text_entity e[] = {
+        {144, 0, 0, 0, "144,3,1,0,5;"},
+        {128, 0, 0, 1, PLANE_128},
+        {142, 0, 0, 1, "142,0,3,0,7,2;"},
+        {100, 0, 0, 1, "100,0.,10.,10.,16.,10.,16.,10.;"},
+    };
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    sw_import_report rep;
+    sw_import_options opt = {.tolerance_mm = 1e-12};
+    SW_CHECK_MSG(import_ents(e, 4, &opt, &m, &rep, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(rep.faces == 1 && rep.pcurves_computed == 1 && rep.unsupported.total == 0);
+    if (m.surface_count)
+        SW_CHECK_MSG(loop_error(&m, 10, 10, 6) <= 1e-4, "off the circle by %g",
+                     loop_error(&m, 10, 10, 6));
+    /* its gap: how far the fit may be from the circle (on the plane: tiny) */
+    SW_CHECK(m.curve_count >= 1 && m.curves[0].gap >= 0 && m.curves[0].gap <= 1e-4);
+    sw_model_free(&m);
+}
+
+/* A boundary written both ways that disagree: the parameter circle's image
+ * has radius 6, the model-space circle 6.4. The trim keeps the written
+ * curve and records the 0.4 between them as its gap, for the sewing. */
+static void test_trim_gap_from_the_model_space_curve(void)
+{
+    const iges_text_entity e[] = {
+        {144, 0, 0, 0, "144,3,1,0,5;"},
+        {128, 0, 0, 1, PLANE_128},
+        {142, 0, 0, 1, "142,0,3,7,9,1;"},
+        {100, 0, 0, 1, "100,0.,5.,5.,8.,5.,8.,5.;"},
+        {100, 0, 0, 1, "100,0.,10.,10.,16.4,10.,16.4,10.;"},
+    };
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err = {0};
+    sw_import_report rep;
+    SW_CHECK_MSG(import_ents(e, 5, NULL, &m, &rep, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(rep.faces == 1 && rep.pcurves_computed == 0);
+    if (m.surface_count)
+        SW_CHECK(loop_error(&m, 10, 10, 6) <= 1e-12);
+    SW_CHECK(m.curve_count >= 1);
+    for (size_t c = 0; c < m.curve_count; c++)
+        SW_CHECK_MSG(fabs(m.curves[c].gap - 0.4) <= 1e-3, "gap %g, expected 0.4",
+                     m.curves[c].gap);
+    sw_model_free(&m);
+}
+
 /* N1 = 0 with one hole: the natural boundary becomes the outer loop. */
 static void test_natural_boundary_with_hole(void)
 {
@@ -725,6 +778,8 @@ int main(int argc, char **argv)
     SW_RUN(test_bad_number);
     SW_RUN(test_shared_references_bounded);
     SW_RUN(test_unsupported_entity);
+    SW_RUN(test_trim_fit_tolerance_follows_the_face);
+    SW_RUN(test_trim_gap_from_the_model_space_curve);
     struct stat st;
     if (!shared_dir || stat(shared_dir, &st) != 0) {
         printf("SKIP: shared models (%s) are absent\n", shared_dir ? shared_dir : "no folder");

@@ -396,6 +396,33 @@ static size_t seams_between_halves(double gap, double curve_gap)
     return r.seams;
 }
 
+/* A trim running 2% past its surface's domain (exporters' p-curves do;
+ * the runtime's tessellator refuses a loop that far out, leaving a hole):
+ * flattened onto the domain's border, every point inside, counted. */
+static void test_trim_past_the_domain_is_put_on_it(void)
+{
+    shape_plane plane;
+    shape_plane_init(&plane, 3, 2, 2, 1, 1);
+    shape_rect wide;
+    shape_rect_init(&wide, 0.2, 1.02, 0.1, 0.9);
+    sw_model_loop_input loop[1] = {{wide.curves, NULL, 4, 1, NULL}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, loop, 1, &err) == SW_OK);
+    sw_seam_polylines pl;
+    SW_CHECK(sw_seam_flatten_model(&m, 1e-3, &pl, &err) == SW_OK);
+    const double *d = m.surfaces[0].domain;
+    size_t outside = 0;
+    for (size_t v = 0; v < pl.vertex_count; v++)
+        outside += pl.uv[2 * v] < d[0] || pl.uv[2 * v] > d[1] || pl.uv[2 * v + 1] < d[2] ||
+                   pl.uv[2 * v + 1] > d[3];
+    SW_CHECK(outside == 0);
+    SW_CHECK(pl.clamped >= 2);   /* at least the two corners at u = 1.02 */
+    sw_seam_polylines_free(&pl);
+    sw_model_free(&m);
+}
+
 /* Borders 3e-3 apart, tolerance 1e-3: left apart unless the file says each
  * border may be off its edge by enough that both together reach across. */
 static void test_trim_gaps_widen_the_tolerance(void)
@@ -861,6 +888,7 @@ int main(int argc, char **argv)
     SW_RUN(test_closed_surface_meets_itself);
     SW_RUN(test_hole_and_disc_sewn_all_round);
     SW_RUN(test_trim_gaps_widen_the_tolerance);
+    SW_RUN(test_trim_past_the_domain_is_put_on_it);
     SW_RUN(test_teapot_polylines_within_tolerance);
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);
     SW_RUN(test_teapot_adjacency_is_sewn);
