@@ -22,6 +22,7 @@
 #include "sw_pack.h"
 #include "sw_pack_info.h"
 #include "sw_pack_sign.h"
+#include "sw_pack_verify_tess.h"
 #include "sw_pack_write.h"
 #include "sw_progress.h"
 #include "sw_scene.h"
@@ -496,9 +497,18 @@ static int cmd_verify(int argc, char **argv)
     sw_pack pack;
     sw_error err = {0};
     sw_status st = open_pack(argv[0], &bytes, &pack, &err);
+    sw_pack_tess_report tess;
+    if (st == SW_OK) {
+        st = sw_pack_verify_tessellation(&pack, &tess, &err);
+        if (st != SW_OK)
+            sw_error_prefix(&err, "%s", argv[0]);
+    }
     if (st == SW_OK)
-        printf("%s: ok (%" PRIu32 " patches, %" PRIu64 " bytes)\n", argv[0],
-               pack.meta->patch_count, pack.header->total_size);
+        printf("%s: ok (%" PRIu32 " patches, %" PRIu64 " bytes; %" PRIu32 " surfaces tessellate "
+               "at %" PRIu32 " seam states from the finest to the coarsest drawn, %" PRIu32
+               " tessellations, %" PRIu32 " without their holes)\n", argv[0],
+               pack.meta->patch_count, pack.header->total_size, tess.surfaces, tess.states,
+               tess.checks, tess.holes_filled);
     free(bytes);
     return st == SW_OK ? 0 : fail(&err);
 }

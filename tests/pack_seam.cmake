@@ -7,3 +7,6 @@ sw_add_test(test_pack_seam SOURCES test_pack_seam.c LIBS sw_assets sw_core)
 add_test(NAME test_pack_seam_info
   COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/test_pack_seam_info.sh $<TARGET_FILE:seamwalk-pack>
           ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack/seed-seam-graph)
+# seamwalk-pack verify's proof that every surface tessellates at every seam
+# state (a bow-tie trim fails it).
+sw_add_test(test_pack_verify_tess SOURCES test_pack_verify_tess.c LIBS sw_assets sw_core)

@@ -9,6 +9,7 @@
 
 #include "sw_pack.h"
 #include "sw_pack_sign.h"
+#include "sw_pack_verify_tess.h"
 #include "sw_pack_write.h"
 #include "sw_text_scan.h"
 
@@ -145,6 +146,9 @@ static sw_status verify_file(const char *pack_path, const char *keys_path, sw_er
         st = sw_pack_open_memory(bytes, size, &pack, err);
         if (st == SW_OK)
             st = sw_pack_check_signature(&pack, &keys, &sig, err);
+        sw_pack_tess_report tess;   /* and, as unsigned verify, every surface drawable */
+        if (st == SW_OK)
+            st = sw_pack_verify_tessellation(&pack, &tess, err);
         if (st != SW_OK)
             sw_error_prefix(err, "%s", pack_path);
         else
