@@ -20,6 +20,7 @@
 #include "sw_import_occt.h"
 #include "sw_model.h"
 #include "sw_pack.h"
+#include "sw_pack_import_notes.h"
 #include "sw_pack_info.h"
 #include "sw_pack_sign.h"
 #include "sw_pack_verify_tess.h"
@@ -271,8 +272,19 @@ static sw_status build_seams(const build_options *o, progress_context *pc, const
     return st;
 }
 
+/* The inputs' file names (no folders) for the import notes; NULL when out
+ * of memory. */
+static const char **input_names(const build_options *o)
+{
+    const char **names = calloc((size_t)o->input_count + 1, sizeof *names);
+    for (int i = 0; names && i < o->input_count; i++)
+        names[i] = base_name(o->inputs[i]);
+    return names;
+}
+
 static sw_status pack_model(const build_options *o, progress_context *pc, sw_model *model,
-                            seam_summary *seam_summary_out, size_t *bytes_out, sw_error *err)
+                            const sw_import_report *reports, seam_summary *seam_summary_out,
+                            size_t *bytes_out, sw_error *err)
 {
     snprintf(pc->prefix, sizeof pc->prefix, "packing");
     pc->importing = 0;
@@ -280,12 +292,22 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
     sw_pack_contents contents;
     sw_seam_host seams = { 0 };
     uint8_t *bytes = NULL;
-    sw_status st = build_seams(o, pc, model, &seams, seam_summary_out, err);
+    sw_pack_import_note *notes = NULL;
+    uint32_t note_count = 0;
+    const char **names = input_names(o);
+    sw_status st = names ? sw_pack_notes_from_reports(names, reports, (size_t)o->input_count,
+                                                      &notes, &note_count, err)
+                         : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    free(names);
+    if (st == SW_OK)
+        st = build_seams(o, pc, model, &seams, seam_summary_out, err);
     if (st == SW_OK)
         st = sw_pack_contents_from_model_progress(model, &progress, &contents, err);
     if (st == SW_OK) {
         sw_seam_graph view = sw_seam_host_view(&seams);
         contents.seam = &view;
+        contents.import_notes = notes;
+        contents.import_note_count = note_count;
         const sw_pack_orientation orientation = { .up_axis = model->up_axis };
         contents.orientation = sw_up_axis_valid(model->up_axis) ? &orientation : NULL;
         on_progress(pc, "serialising", 0.0);
@@ -293,6 +315,7 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
         sw_pack_contents_free(&contents);
     }
     sw_seam_host_free(&seams);
+    free(notes);
     if (st == SW_OK) {
         on_progress(pc, "writing", 0.0);
         st = sw_write_file_atomic(o->out_path, bytes, *bytes_out, err); /* names the path */
@@ -319,7 +342,7 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
         sw_progress_clear(&pc.bar); /* a warning must not share the bar's line */
         model->up_axis = sw_up_inputs_choose(o->inputs, up_defaults, o->input_count, o->up_axis,
                                            stderr);
-        st = pack_model(o, &pc, model, seams, bytes_out, err);
+        st = pack_model(o, &pc, model, reports, seams, bytes_out, err);
     }
     free(up_defaults);
     sw_progress_clear(&pc.bar);
@@ -344,7 +367,7 @@ static void print_warnings(const build_options *o, const sw_import_report *repor
     for (int i = 0; i < o->input_count; i++) {
         const char *name = base_name(o->inputs[i]);
         print_tally(name, &reports[i].unsupported, "skipped");
-        print_tally(name, &reports[i].messages, "(read on)");
+        print_tally(name, &reports[i].messages, "(read past)");
     }
 }
 

@@ -60,6 +60,9 @@ enum sw_section_type {
      * up; optional, absent means +y, so packs written before it keep their
      * meaning and older readers skip it (core/sw_up_axis.h). */
     SW_SECTION_ORIENTATION = 23,        /* one sw_pack_orientation */
+    /* What the import of each input skipped or read past, for `seamwalk-pack
+     * info`; optional, absent means nothing to say (core/sw_pack_notes.h). */
+    SW_SECTION_IMPORT_NOTES = 24,       /* sw_pack_import_note[] */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
@@ -193,6 +196,17 @@ typedef struct sw_pack_orientation {  /* 16 bytes */
     uint8_t reserved[12];             /* zero */
 } sw_pack_orientation;
 
+/* Section IMPORT_NOTES: one record per input file and kind. */
+enum sw_pack_note_kind { SW_NOTE_SKIPPED = 1, SW_NOTE_MESSAGE = 2 };
+typedef struct sw_pack_import_note {  /* 128 bytes */
+    uint32_t kind;                    /* SW_NOTE_SKIPPED: entities left out of the model;
+                                         SW_NOTE_MESSAGE: messages about the file read past */
+    uint32_t count;                   /* occurrences, >= 1 */
+    char source[48];                  /* the input file's name, NUL-terminated UTF-8 */
+    char what[72];                    /* "IGES 406", "STEP: Count of Parameters is not 2
+                                         for si_unit", NUL-terminated UTF-8 */
+} sw_pack_import_note;
+
 /* Arena bytes the runtime keeps per patch beyond the pack itself (tessellation
  * level, visibility); the runtime asserts its per-patch state fits. */
 #define SW_RUNTIME_BYTES_PER_PATCH 16u
@@ -228,6 +242,8 @@ typedef struct sw_pack {
     const sw_pack_seam *seam_header;             /* NULL when absent */
     sw_seam_graph seam;
     const sw_pack_orientation *orientation;      /* NULL when absent: +y up */
+    const sw_pack_import_note *import_notes;     /* NULL with count 0 when absent */
+    uint32_t import_note_count;
 } sw_pack;
 
 /* runtime_bytes for a pack of total_size bytes and patch_count patches: the

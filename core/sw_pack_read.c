@@ -15,6 +15,7 @@
 #define XXH_STATIC_LINKING_ONLY /* XXH3_state_t on the stack: no malloc here */
 #include <xxhash.h>
 
+#include "sw_pack_notes.h"
 #include "sw_pack_validate.h"
 #include "sw_up_axis.h"
 
@@ -166,6 +167,7 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_SEAM_SLOT_REFS: return "SEAM_SLOT_REFS";
     case SW_SECTION_SEAM_SURFACE_LOOPS: return "SEAM_SURFACE_LOOPS";
     case SW_SECTION_ORIENTATION: return "ORIENTATION";
+    case SW_SECTION_IMPORT_NOTES: return "IMPORT_NOTES";
     }
     return "unknown";
 }
@@ -606,7 +608,8 @@ sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_er
         (s = sw_pack_validate_records(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_trim(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_seam(&pack, err)) != SW_OK ||
-        (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK)
+        (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK ||
+        (s = sw_pack_map_import_notes(bytes, &pack, err)) != SW_OK)
         return s;
     *out = pack;
     return SW_OK;

@@ -18,3 +18,5 @@ foreach(mode cli orbit)
             ${PROJECT_SOURCE_DIR} ${SW_SHARED_MODELS})
   set_tests_properties(up_axis_${mode} PROPERTIES SKIP_RETURN_CODE 77)
 endforeach()
+# The IMPORT_NOTES section: round trip, refusals, reports into records.
+sw_add_test(test_pack_notes SOURCES test_pack_notes.c LIBS sw_assets sw_core)

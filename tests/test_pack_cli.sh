@@ -247,7 +247,7 @@ for model in occt_hammer.iges:native occt_hammer.iges:occt occt_screw.step:occt 
   check "build $file ($reader reader)" [ $rc -eq 0 ]
   [ $rc -eq 0 ] || continue
   cp "$work/err" "$work/$name.warnings"
-  check "$file: every stderr line is a warning with a count" eval '! grep -Eqv "^warning: $file: [0-9]+ x .* (skipped|\(read on\))$" "$work/$name.warnings"'
+  check "$file: every stderr line is a warning with a count" eval '! grep -Eqv "^warning: $file: [0-9]+ x .* (skipped|\(read past\))$" "$work/$name.warnings"'
   run info --json "$work/$name.swpack"
   check "$file: info per part" python3 - "$work/out" "${file%%.*}" <<'EOF'
 import json, sys
@@ -280,7 +280,11 @@ step_message() { # step_message NAME EXTRA_ENTITIES EXPECTED_MESSAGE
   awk -v extra="$extra" '{print} /^#1238 = /{print extra}' "$src" > "$work/$name.step"
   check "$name: the made file carries the entities" grep -q '^#99001' "$work/$name.step"
   run build "$work/$name.step" -o "$work/$name.swpack"
-  check "$name: builds, warning '$message' counted" eval '[ "$(code)" -eq 0 ] && [ -s "$work/$name.swpack" ] && has "$work/err" "^warning: $name.step: 1 x STEP: $message (read on)$"'
+  check "$name: builds, warning '$message' counted" eval '[ "$(code)" -eq 0 ] && [ -s "$work/$name.swpack" ] && has "$work/err" "^warning: $name.step: 1 x STEP: $message (read past)$"'
+  run info "$work/$name.swpack"
+  check "$name: info tells the message and its count" has "$work/out" "^  import  *$name.step: 1 x STEP: $message (read past)$"
+  run info --json "$work/$name.swpack"
+  check "$name: info --json lists it in import_notes" eval "python3 -c 'import json,sys; n=json.load(open(sys.argv[1]))[\"import_notes\"]; assert n==[{\"source\": \"$name.step\", \"kind\": \"message\", \"what\": \"STEP: $message\", \"count\": 1}], n' '$work/out'"
   run build "$work/$name.step" -o "$work/$name.strict.swpack" --strict
   check "$name: --strict fails with the message and its entity, no pack" eval 'one_line_failure "$name.step: #99001: $message" && [ ! -e "$work/$name.strict.swpack" ]'
 }

@@ -41,6 +41,10 @@ typedef struct sw_pack_contents {
     /* The up axis, or NULL for no ORIENTATION section (readers take +y).
      * Not owned, like seam. */
     const sw_pack_orientation *orientation;
+    /* The import notes, or NULL for no IMPORT_NOTES section (nothing to
+     * say). Not owned, like seam. */
+    const sw_pack_import_note *import_notes;
+    uint32_t import_note_count;
 } sw_pack_contents;
 
 #endif

@@ -1,18 +1,47 @@
 /* seamwalk-pack info (sw_pack_info.h): stats per part and for the pack, as
  * aligned text and as JSON. Keys are added, never renamed: scripts read them. */
 #include "sw_pack_info.h"
-#include "sw_up_axis.h"
 
 #include <inttypes.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_pack_notes.h"
 #include "sw_seam_border.h"
+#include "sw_up_axis.h"
 
 const char *sw_pack_units_name(uint32_t units)
 {
     return units == SW_UNITS_MILLIMETRE ? "mm" : units == SW_UNITS_METRE ? "m" : "unspecified";
+}
+
+/* What the import skipped or read past, a line each (IMPORT_NOTES). */
+static void print_notes_text(FILE *out, const sw_pack *pack)
+{
+    for (uint32_t i = 0; i < pack->import_note_count; i++) {
+        const sw_pack_import_note *n = &pack->import_notes[i];
+        fprintf(out, "  %-16s %s: %" PRIu32 " x %s %s\n", i ? "" : "import", n->source, n->count,
+                n->what, sw_pack_note_kind_name(n->kind));
+    }
+}
+
+static void json_string(FILE *out, const char *s, size_t max);
+
+/* "import_notes": [...], always (empty for a clean import). */
+static void json_notes(FILE *out, const sw_pack *pack)
+{
+    fprintf(out, "  \"import_notes\": [");
+    for (uint32_t i = 0; i < pack->import_note_count; i++) {
+        const sw_pack_import_note *n = &pack->import_notes[i];
+        fprintf(out, "%s{\"source\": ", i ? ", " : "");
+        json_string(out, n->source, sizeof n->source);
+        fprintf(out, ", \"kind\": \"%s\", \"what\": ",
+                n->kind == SW_NOTE_SKIPPED ? "skipped" : "message");
+        json_string(out, n->what, sizeof n->what);
+        fprintf(out, ", \"count\": %" PRIu32 "}", n->count);
+    }
+    fprintf(out, "],\n");
 }
 
 /* Packs from before ORIENTATION say so: their +y is the reader's default. */
@@ -236,6 +265,7 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
     fprintf(out, "  %-16s %s (model tolerance %g)\n", "units", sw_pack_units_name(m->units),
             m->model_tolerance);
     print_up_axis_text(out, pack);
+    print_notes_text(out, pack);
     fprintf(out, "  %-16s min %g %g %g, max %g %g %g\n", "box", lo[0], lo[1], lo[2], hi[0], hi[1],
             hi[2]);
     fprintf(out, "  %-16s %g (box diagonal)\n", "model size", sqrt(dx * dx + dy * dy + dz * dz));
@@ -387,6 +417,7 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack,
     fprintf(out, "  \"units\": \"%s\",\n  \"model_tolerance\": %.9g,\n",
             sw_pack_units_name(m->units), m->model_tolerance);
     fprintf(out, "  \"up_axis\": \"%s\",\n", sw_up_axis_name(sw_pack_up_axis(pack)));
+    json_notes(out, pack);
     fprintf(out, "  \"box\": {\"min\": ");
     json_floats(out, m->box_min, 3);
     fprintf(out, ", \"max\": ");

@@ -19,9 +19,9 @@
 #include "sw_pack_validate.h"
 
 /* Types 1..13 (the first five always written), then the seam group's eight,
- * then ORIENTATION. */
+ * then ORIENTATION and IMPORT_NOTES. */
 enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8,
-       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 1, HEADER_BYTES = 64, SECTION_BYTES = 32 };
+       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2, HEADER_BYTES = 64, SECTION_BYTES = 32 };
 
 static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
 
@@ -102,6 +102,9 @@ static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
     if (c->orientation)
         src[n++] = (section_source){ SW_SECTION_ORIENTATION, c->orientation,
                                      sizeof *c->orientation };
+    if (c->import_notes)
+        src[n++] = (section_source){ SW_SECTION_IMPORT_NOTES, c->import_notes,
+                                     (size_t)c->import_note_count * sizeof *c->import_notes };
     return n;
 }
 

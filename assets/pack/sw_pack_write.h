@@ -15,8 +15,8 @@
 /* Serialises contents exactly as given (no validation, so tests can write
  * broken packs): header, section table (META, PARTS, PATCHES, CONTROL,
  * ADJACENCY, then the optional sections present in sw_section_type order,
- * the seam sections when contents->seam is set, ORIENTATION last when
- * contents->orientation is),
+ * the seam sections when contents->seam is set, ORIENTATION when
+ * contents->orientation is, IMPORT_NOTES last when contents->import_notes is),
  * sections 64-byte aligned, checksums. *out is malloc'd; the caller frees it. */
 sw_status sw_pack_serialize(const sw_pack_contents *contents, uint8_t **out, size_t *out_size,
                             sw_error *err);
