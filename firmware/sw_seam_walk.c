@@ -5,6 +5,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "sw_seam_surface.h"
+
 /* The share of a surface's bound its seams get; the cells the seams run
  * through get the rest. A border triangle is off the surface by the seam's
  * error plus its cell's, so the two shares add up to the bound (with the
@@ -233,37 +235,9 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
  * drawn). */
 static int gather_loops(sw_seam_walk *w, uint32_t s, sw_trim_loops *loops, uint32_t *outer)
 {
-    const sw_seam_graph *g = &w->pack->seam;
-    uint32_t total = 0, k = 0;
-    w->loop_first[0] = 0;
-    for (int holes = 0; holes < 2; holes++) {
-        if (holes)
-            *outer = k;
-        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++) {
-            if ((!(g->loops[l].flags & SW_SEAM_LOOP_OUTER)) != holes)
-                continue;
-            uint32_t count = 0;
-            int vanished = 0;
-            /* Cannot fail: l is in range and the buffer holds the surface's slots. */
-            sw_seam_select_loop(&w->select, l, w->seam_bound[s], w->loop_points + total,
-                                w->max_points - total, &count, &vanished, NULL);
-            if (vanished && !holes)
-                return 0;
-            for (uint32_t i = 0; i < count && !vanished; i++) {
-                const sw_seam_point *sp = &w->loop_points[total + i];
-                sw_trim_point *tp = &w->points[total + i];
-                memcpy(tp->uv, sp->uv, sizeof tp->uv);
-                memcpy(tp->p, g->vertices[sp->vertex].p, sizeof tp->p);
-                tp->id = sp->vertex;
-            }
-            if (vanished)
-                continue;
-            total += count;
-            w->loop_first[++k] = total;
-        }
-    }
-    *loops = (sw_trim_loops){ w->points, w->loop_first, k };
-    return k > 0;
+    const sw_seam_surface_buffers buf = { w->loop_points, w->points, w->loop_first,
+                                          w->max_points };
+    return sw_seam_surface_loops(&w->select, s, w->seam_bound[s], &buf, loops, outer);
 }
 
 /* Tessellates surface s at its bound, coarsening (x4, three times) when it

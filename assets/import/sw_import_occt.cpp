@@ -1065,15 +1065,21 @@ sw_status read_one_shape(const char *path, bool step, TopoDS_Shape *shape, sw_er
     return SW_OK;
 }
 
-sw_status measure_file(const char *path, sw_occt_measure *out, sw_error *err)
+/* The file, STEP or IGES by its extension, as one shape. */
+sw_status read_file_shape(const char *path, TopoDS_Shape *shape, sw_error *err)
 {
     std::string ext = lower_extension(path);
     bool step = ext == "stp" || ext == "step" || ext == "p21";
     MessageCapture messages;
+    return step ? read_one_shape<STEPControl_Reader>(path, true, shape, err)
+                : read_one_shape<IGESControl_Reader>(path, false, shape, err);
+}
+
+sw_status measure_file(const char *path, sw_occt_measure *out, sw_error *err)
+{
     TopoDS_Shape shape;
     *out = sw_occt_measure{};
-    sw_status status = step ? read_one_shape<STEPControl_Reader>(path, true, &shape, err)
-                            : read_one_shape<IGESControl_Reader>(path, false, &shape, err);
+    sw_status status = read_file_shape(path, &shape, err);
     if (status != SW_OK)
         return status;
     if (shape.IsNull())
@@ -1104,13 +1110,9 @@ double edge_length(const TopoDS_Edge &edge)
 
 sw_status measure_sewing(const char *path, double tolerance, sw_occt_sewing *out, sw_error *err)
 {
-    std::string ext = lower_extension(path);
-    bool step = ext == "stp" || ext == "step" || ext == "p21";
-    MessageCapture messages;
     TopoDS_Shape shape;
     *out = sw_occt_sewing{};
-    sw_status status = step ? read_one_shape<STEPControl_Reader>(path, true, &shape, err)
-                            : read_one_shape<IGESControl_Reader>(path, false, &shape, err);
+    sw_status status = read_file_shape(path, &shape, err);
     if (status != SW_OK || shape.IsNull())
         return status;
     BRepBuilderAPI_Sewing sewing(tolerance);

@@ -12,6 +12,7 @@
 
 #include "sw_arena.h"
 #include "sw_seam_select.h"
+#include "sw_seam_surface.h"
 #include "sw_trim_tess.h"
 
 enum { FINEST = 0, COARSEST = 1, ATTEMPTS = 4 };
@@ -91,44 +92,15 @@ static void verifier_close(verifier *v)
     free(v->select_block);
 }
 
-/* Surface s's current loops into v->points (outer ones first); *outer gets
- * how many are outer, *error the largest error of a vertex they show. 0 when
- * the outer loops vanished: the surface is not drawn. */
+/* Surface s's current loops into v->points (outer ones first; the steps
+ * the seam walk takes, sw_seam_surface.h); *outer gets how many are outer.
+ * 0 when the outer loops vanished: the surface is not drawn. */
 static int gather_loops(verifier *v, uint32_t s, float pin, sw_trim_loops *loops,
-                        uint32_t *outer, float *error)
+                        uint32_t *outer)
 {
-    const sw_seam_graph *g = &v->pack->seam;
-    uint32_t total = 0, k = 0;
-    v->loop_first[0] = 0;
-    *error = 0;
-    for (int holes = 0; holes < 2; holes++) {
-        if (holes)
-            *outer = k;
-        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++) {
-            if ((!(g->loops[l].flags & SW_SEAM_LOOP_OUTER)) != holes)
-                continue;
-            uint32_t count = 0;
-            int vanished = 0;
-            sw_seam_select_loop(&v->sel, l, pin, v->seam_points + total, v->max_points - total,
-                                &count, &vanished, NULL);
-            if (vanished && !holes)
-                return 0;
-            if (vanished)
-                continue;
-            for (uint32_t i = 0; i < count; i++) {
-                const sw_seam_point *sp = &v->seam_points[total + i];
-                sw_trim_point *tp = &v->points[total + i];
-                memcpy(tp->uv, sp->uv, sizeof tp->uv);
-                memcpy(tp->p, g->vertices[sp->vertex].p, sizeof tp->p);
-                tp->id = sp->vertex;
-                *error = fmaxf(*error, g->vertices[sp->vertex].error);
-            }
-            total += count;
-            v->loop_first[++k] = total;
-        }
-    }
-    *loops = (sw_trim_loops){v->points, v->loop_first, k};
-    return k > 0;
+    const sw_seam_surface_buffers buf = {v->seam_points, v->points, v->loop_first,
+                                         v->max_points};
+    return sw_seam_surface_loops(&v->sel, s, pin, &buf, loops, outer);
 }
 
 /* The box diagonal of surface s's patches. */
@@ -170,10 +142,9 @@ static sw_status check_surface(verifier *v, uint32_t s, double seam_bound,
 {
     sw_trim_loops loops;
     uint32_t outer = 0;
-    float error = 0;
     *drawn = 0;
     /* Poles pinned within the seams' bound, as the runtime pins them. */
-    if (!gather_loops(v, s, (float)seam_bound, &loops, &outer, &error))
+    if (!gather_loops(v, s, (float)seam_bound, &loops, &outer))
         return SW_OK;
     *drawn = 1;
     /* The runtime's surface bound is the seams' over their share. What is

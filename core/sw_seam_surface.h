@@ -1,0 +1,31 @@
+/* A surface's current Seam Graph loops as the trimmed tessellator takes them
+ * (sw_trim_tess.h): the step the runtime's seam walk (firmware/sw_seam_walk.c)
+ * and the host's verify (assets/pack/sw_pack_verify_tess.c) share, so that
+ * what verify proves is what the runtime draws. No allocation. */
+#ifndef SW_SEAM_SURFACE_H
+#define SW_SEAM_SURFACE_H
+
+#include <stdint.h>
+
+#include "sw_seam_select.h"
+#include "sw_trim_tess.h"
+
+/* The caller's buffers: capacity points each (at least the surface's slots
+ * in all its loops), loop_first one more than the surface's loops. */
+typedef struct sw_seam_surface_buffers {
+    sw_seam_point *seam_points;   /* scratch */
+    sw_trim_point *points;        /* out: uv from the slots, p from the graph's vertices,
+                                     id the vertex */
+    uint32_t *loop_first;         /* out */
+    uint32_t capacity;
+} sw_seam_surface_buffers;
+
+/* Surface `surface`'s loops at the state's front (sw_seam_select_loop with
+ * pin), outer loops first, then holes; a hole that vanished is left out.
+ * Returns 0 when the outer loops vanished (the surface is not drawn), else
+ * 1 with *loops viewing buf and *outer the number of outer loops in it. */
+int sw_seam_surface_loops(const sw_seam_select *state, uint32_t surface, float pin,
+                          const sw_seam_surface_buffers *buf, sw_trim_loops *loops,
+                          uint32_t *outer);
+
+#endif
