@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_math.h"
+
 typedef struct inserted {
     uint32_t edge, id;
     double t;
@@ -121,6 +123,91 @@ static uint32_t loop_slots(const sew_state *s, uint32_t *parent, const inserted 
     return count;
 }
 
+static double segment_distance(const double *p, const double *a, const double *b)
+{
+    return sw_v3_segment_distance(sw_v3(p[0], p[1], p[2]), sw_v3(a[0], a[1], a[2]),
+                                  sw_v3(b[0], b[1], b[2]));
+}
+
+/* Where p projects onto segment a-b, as a fraction in [0, 1]. */
+static double segment_fraction(const double *p, const double *a, const double *b)
+{
+    double d = 0, t = 0;
+    for (int k = 0; k < 3; k++) {
+        d += (b[k] - a[k]) * (b[k] - a[k]);
+        t += (p[k] - a[k]) * (b[k] - a[k]);
+    }
+    return d > 0 ? fmin(fmax(t / d, 0.0), 1.0) : 0.0;
+}
+
+/* Slots from .. from + runs - 1 (cyclic), moved between slots a and b (the
+ * slots around their new place): their (u, v) goes onto the chord from a's
+ * to b's at the fraction their vertex projects to in model space, so the
+ * loop stays a simple polyline in the surface's parameters. */
+static void place_on_chord(const sew_state *s, sw_seam_slot *slots, uint32_t count,
+                           uint32_t from, uint32_t runs, uint32_t a, uint32_t b)
+{
+    const double *pos = s->poly->p;
+    const sw_seam_slot *sa = &slots[a % count], *sb = &slots[b % count];
+    for (uint32_t k = 0; k < runs; k++) {
+        sw_seam_slot *f = &slots[(from + k) % count];
+        double t = segment_fraction(pos + 3 * (size_t)f->vertex, pos + 3 * (size_t)sa->vertex,
+                                    pos + 3 * (size_t)sb->vertex);
+        f->uv[0] = (float)(sa->uv[0] + t * (sb->uv[0] - sa->uv[0]));
+        f->uv[1] = (float)(sa->uv[1] + t * (sb->uv[1] - sa->uv[1]));
+    }
+}
+
+/* Moves slot from to position to (cyclic), shifting the slots between. */
+static void move_slot(sw_seam_slot *slots, uint32_t count, uint32_t from, uint32_t to)
+{
+    sw_seam_slot moving = slots[from % count];
+    int dir = (to + count - from) % count <= count / 2 ? 1 : -1;
+    for (uint32_t k = from; k % count != to % count; k += (uint32_t)(dir > 0 ? 1 : count - 1))
+        slots[k % count] = slots[(k + (uint32_t)(dir > 0 ? 1 : count - 1)) % count];
+    slots[to % count] = moving;
+}
+
+/* A foot inserted into an edge whose two ends were merged into one vertex
+ * q comes out as q, f, q: a spike out to f (one or more slots) and back.
+ * Where f belongs is on the edge before q (or after it): the other loop
+ * runs p, f, q there. The spike's f slots are moved there (before the run
+ * of q slots, or after it), so both loops share both edges. */
+static void unspike(const sew_state *s, sw_seam_slot *slots, uint32_t count)
+{
+    uint32_t n = (uint32_t)s->poly->vertex_count;
+    const double *pos = s->poly->p;
+    for (uint32_t i = 0; count >= 4 && i < count; i++) {
+        uint32_t q = slots[i].vertex, f = slots[(i + 1) % count].vertex, end = i + 1;
+        while (end < i + count - 2 && slots[(end + 1) % count].vertex == f)
+            end++;
+        if (f == q || slots[(end + 1) % count].vertex != q || q >= n || f >= n)
+            continue;
+        /* The q runs around the f run: slots first .. i and end + 1 .. last
+         * (offset by count, so stepping back stays unsigned). */
+        uint32_t runs = end - i, first = i + count, last = end + 1 + count;
+        while (first + count - 1 > last + 1 && slots[(first - 1) % count].vertex == q)
+            first--;
+        while (last + 1 < first + count - runs - 1 && slots[(last + 1) % count].vertex == q)
+            last++;
+        uint32_t before = slots[(first - 1) % count].vertex;
+        uint32_t after = slots[(last + 1) % count].vertex;
+        double reach = fmax(s->tol, sew_gap(s->poly, q) + sew_gap(s->poly, f));
+        const double *qp = pos + 3 * (size_t)q, *fp = pos + 3 * (size_t)f;
+        if (before < n && before != q &&
+            segment_distance(fp, pos + 3 * (size_t)before, qp) <= reach) {
+            for (uint32_t k = 0; k < runs; k++)       /* p, q.., f.., q.. -> p, f.., q.. */
+                move_slot(slots, count, (i + 1 + k) % count, (first + k) % count);
+            place_on_chord(s, slots, count, first, runs, first + count - 1, first + runs);
+        } else if (after < n && after != q &&
+                   segment_distance(fp, qp, pos + 3 * (size_t)after) <= reach) {
+            for (uint32_t k = 0; k < runs; k++)       /* q.., f.., q.., r -> q.., f.., r */
+                move_slot(slots, count, (end - k) % count, (last - k) % count);
+            place_on_chord(s, slots, count, last + 1 - runs, runs, last - runs, last + 1);
+        }
+    }
+}
+
 /* Edges from consecutive distinct slots, each once; counts by loops along it. */
 static sw_status build_edges(sw_seam_host *out, sw_sew_counts *counts, sw_error *err)
 {
@@ -215,6 +302,7 @@ static sw_status build_loops(const sew_state *s, uint32_t *parent, inserted *ins
     size_t cursor = 0;
     for (uint32_t l = 0; l < poly->loop_count; l++) {
         uint32_t count = loop_slots(s, parent, ins, ins_count, &cursor, l, out->slots + out->slot_count);
+        unspike(s, out->slots + out->slot_count, count);
         out->loops[l] = (sw_seam_loop){poly->loop_surface[l], out->slot_count, count,
                                        poly->loop_outer[l] ? SW_SEAM_LOOP_OUTER : 0u};
         out->slot_count += count;
