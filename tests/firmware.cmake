@@ -39,16 +39,12 @@ endforeach()
 # The corpus command on the shared models (tests/corpus.sh): every file built,
 # verified and walked close to far with no crack and no refused surface, and
 # (IGES, STEP) its free border at most 1.05 times OpenCASCADE's sewing at the
-# same tolerance. The boxed sphere falls short (0.243 mm free of 1752, two
-# edges, where OpenCASCADE leaves none: a vertex 0.05 from the other loop's
-# edge whose partner the union-find merged into its neighbour); it is held
-# to 0.25. Release only:
-# each model's test_models.sh run above covers the same code under the
-# sanitizers.
+# same tolerance. Release only: each model's test_models.sh run above covers
+# the same code under the sanitizers.
 if(EXISTS ${SW_SHARED_MODELS} AND NOT SW_ASAN AND NOT SW_TSAN)
   add_test(NAME corpus_shared_models
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/corpus.sh --build ${PROJECT_BINARY_DIR}
-            --require-sewing --allow-free axom_boxed_sphere.step:0.25
+            --require-sewing
             --json ${PROJECT_BINARY_DIR}/tests/corpus.json ${SW_SHARED_MODELS})
 endif()
 

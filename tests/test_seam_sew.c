@@ -14,6 +14,7 @@
 #include "sw_math.h"
 #include "sw_pack_adjacency.h"
 #include "sw_seam_flatten.h"
+#include "sw_sew_internal.h"
 #include "sw_seam_sew.h"
 #include "sw_sew.h"
 #include "sw_test.h"
@@ -394,6 +395,45 @@ static size_t seams_between_halves(double gap, double curve_gap)
     sw_seam_host_free(&h);
     sw_model_free(&m);
     return r.seams;
+}
+
+/* Step 3b on its own (sw_sew_tjunctions.c): one loop runs a, x, b, another
+ * b, a, with x 1e-4 off the chord a-b and every edge unsewn. x goes into the
+ * second loop's edge, halfway in (u, v) as in space, so both loops share
+ * a-x and x-b. */
+static void test_tjunction_step_inserts_the_vertex_the_intervals_missed(void)
+{
+    const double p[5][3] = {{0, 0, 0}, {0.5, 1e-4, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
+    enum { A, X, B, C, D };
+    sw_seam_polylines poly = {.p = (double *)p, .vertex_count = 5, .tolerance = 1e-3};
+    sw_error err = {0};
+    sew_state st = {.poly = &poly, .tol = 1e-3, .err = &err};
+    sw_seam_host h = {0};
+    h.slots = malloc(7 * sizeof *h.slots);
+    h.loops = malloc(2 * sizeof *h.loops);
+    const uint32_t order[7] = {A, X, B, C, B, A, D};
+    for (int k = 0; k < 7; k++)
+        h.slots[k] = (sw_seam_slot){order[k], {(float)p[order[k]][0], (float)p[order[k]][1]}};
+    h.loops[0] = (sw_seam_loop){0, 0, 4, SW_SEAM_LOOP_OUTER};
+    h.loops[1] = (sw_seam_loop){1, 4, 3, SW_SEAM_LOOP_OUTER};
+    h.slot_count = 7, h.loop_count = 2;
+    size_t inserted = 0;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK);
+    SW_CHECK(inserted == 1 && h.slot_count == 8);
+    SW_CHECK(h.loops[0].first_slot == 0 && h.loops[0].slot_count == 4);
+    SW_CHECK(h.loops[1].first_slot == 4 && h.loops[1].slot_count == 4);
+    if (h.slot_count == 8) {
+        SW_CHECK(h.slots[4].vertex == B && h.slots[5].vertex == X && h.slots[6].vertex == A);
+        SW_CHECK(fabsf(h.slots[5].uv[0] - 0.5f) < 1e-6f && fabsf(h.slots[5].uv[1]) < 1e-6f);
+    }
+    /* x farther than the tolerance from the chord: nothing to do */
+    h.slots[5] = h.slots[6], h.slots[6] = h.slots[7];
+    h.loops[1].slot_count = 3, h.slot_count = 7;
+    const double far[5][3] = {{0, 0, 0}, {0.5, 2e-3, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
+    poly.p = (double *)far;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK && inserted == 0);
+    free(h.slots);
+    free(h.loops);
 }
 
 /* A trim running 2% past its surface's domain (exporters' p-curves do;
@@ -889,6 +929,7 @@ int main(int argc, char **argv)
     SW_RUN(test_hole_and_disc_sewn_all_round);
     SW_RUN(test_trim_gaps_widen_the_tolerance);
     SW_RUN(test_trim_past_the_domain_is_put_on_it);
+    SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
     SW_RUN(test_teapot_polylines_within_tolerance);
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);
     SW_RUN(test_teapot_adjacency_is_sewn);

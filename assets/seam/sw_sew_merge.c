@@ -333,6 +333,10 @@ sw_status sew_merge(sew_state *s, sw_seam_host *out, sw_sew_counts *counts)
         counts->inserted = ins_count;
         st = build_loops(s, parent, ins, ins_count, out);
     }
+    size_t tjunctions = 0;
+    if (st == SW_OK)
+        st = sew_insert_tjunctions(s, out, &tjunctions);
+    counts->inserted += tjunctions;
     if (st == SW_OK)
         st = number_vertices(s, out, s->err);
     if (st == SW_OK)

@@ -1,0 +1,223 @@
+/* Sewing step 3b: T-junctions the intervals left open. Where one loop has
+ * an unsewn edge x-b and another an unsewn edge a-b from the same vertex b,
+ * and x lies within the tolerance of the chord a-b (strictly between its
+ * ends), x is a vertex of the second loop's edge too: it is inserted there
+ * (its (u, v) on that chord), and the two loops share the edge x-b. The interval rule misses these where the interval
+ * is shorter than the tolerance (it takes it for a point contact) or where
+ * x's partner was merged into its neighbour (the boxed sphere). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sw_math.h"
+#include "sw_sew_internal.h"
+
+typedef struct tj_use {
+    uint64_t key;         /* the edge: lower vertex << 32 | higher */
+    uint32_t loop, slot;  /* the loop's slot ending the run of the edge's first vertex */
+} tj_use;
+
+typedef struct tj_insert {
+    uint32_t loop, after; /* insert after this slot of the loop */
+    sw_seam_slot slot;
+} tj_insert;
+
+static int compare_uses(const void *x, const void *y)
+{
+    uint64_t a = ((const tj_use *)x)->key, b = ((const tj_use *)y)->key;
+    return a < b ? -1 : a > b;
+}
+
+static int compare_inserts(const void *x, const void *y)
+{
+    const tj_insert *a = x, *b = y;
+    if (a->loop != b->loop)
+        return a->loop < b->loop ? -1 : 1;
+    return (a->after > b->after) - (a->after < b->after);
+}
+
+static uint64_t edge_key(uint32_t a, uint32_t b)
+{
+    return a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
+}
+
+/* The slot after k in its loop whose vertex differs from slot k's, as a
+ * global slot index; k itself when the loop shows one vertex only. */
+static uint32_t next_distinct(const sw_seam_host *h, const sw_seam_loop *lp, uint32_t k)
+{
+    for (uint32_t d = 1; d < lp->slot_count; d++) {
+        uint32_t j = lp->first_slot + (k - lp->first_slot + d) % lp->slot_count;
+        if (h->slots[j].vertex != h->slots[k].vertex)
+            return j;
+    }
+    return k;
+}
+
+/* Every edge use, recorded at the last slot of its first vertex's run. */
+static tj_use *collect_uses(const sw_seam_host *h, size_t *n)
+{
+    tj_use *uses = malloc(((size_t)h->slot_count + 1) * sizeof *uses);
+    *n = 0;
+    for (uint32_t l = 0; uses && l < h->loop_count; l++) {
+        const sw_seam_loop *lp = &h->loops[l];
+        for (uint32_t k = lp->first_slot; k < lp->first_slot + lp->slot_count; k++) {
+            uint32_t j = lp->first_slot + (k - lp->first_slot + 1) % lp->slot_count;
+            if (h->slots[j].vertex != h->slots[k].vertex)
+                uses[(*n)++] = (tj_use){edge_key(h->slots[k].vertex, h->slots[j].vertex), l, k};
+        }
+    }
+    if (uses && *n > 1)
+        qsort(uses, *n, sizeof *uses, compare_uses);
+    return uses;
+}
+
+/* The one use of edge key, or NULL when it has none or several. */
+static const tj_use *only_use(const tj_use *uses, size_t n, uint64_t key)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (uses[mid].key < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo >= n || uses[lo].key != key || (lo + 1 < n && uses[lo + 1].key == key))
+        return NULL;
+    return &uses[lo];
+}
+
+static sw_vec3 at(const sew_state *s, uint32_t v)
+{
+    const double *p = s->poly->p + 3 * (size_t)v;
+    return sw_v3(p[0], p[1], p[2]);
+}
+
+/* Would x (between a and b in some loop) go into the use u of edge a-b? */
+static int insertion(const sew_state *s, const sw_seam_host *h, const tj_use *u, uint32_t x,
+                     tj_insert *out)
+{
+    const sw_seam_loop *lp = &h->loops[u->loop];
+    uint32_t k = u->slot, j = next_distinct(h, lp, k);
+    uint32_t a = h->slots[k].vertex, b = h->slots[j].vertex;
+    sw_vec3 pa = at(s, a), pb = at(s, b), px = at(s, x), ab = sw_v3_sub(pb, pa);
+    double reach = fmax(s->tol, sew_gap(s->poly, x) + fmax(sew_gap(s->poly, a), sew_gap(s->poly, b)));
+    if (!(sw_v3_segment_distance(px, pa, pb) <= reach))
+        return 0;
+    double len2 = sw_v3_dot(ab, ab), t = len2 > 0 ? sw_v3_dot(sw_v3_sub(px, pa), ab) / len2 : 0;
+    if (!(t > 0.0 && t < 1.0))
+        return 0;   /* beyond an end: not on this edge */
+    const float *ua = h->slots[k].uv, *ub = h->slots[j].uv;
+    *out = (tj_insert){u->loop, k, {x, {(float)(ua[0] + t * (ub[0] - ua[0])),
+                                        (float)(ua[1] + t * (ub[1] - ua[1]))}}};
+    return 1;
+}
+
+/* The loops' slots again with the insertions (sorted) in place. */
+static sw_status apply(sw_seam_host *h, const tj_insert *ins, size_t n, sw_error *err)
+{
+    sw_seam_slot *slots = malloc(((size_t)h->slot_count + n + 1) * sizeof *slots);
+    if (!slots)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "sewing: out of memory for T-junctions");
+    uint32_t at_slot = 0;
+    size_t next = 0;
+    for (uint32_t l = 0; l < h->loop_count; l++) {
+        sw_seam_loop *lp = &h->loops[l];
+        uint32_t first = at_slot;
+        for (uint32_t k = lp->first_slot; k < lp->first_slot + lp->slot_count; k++) {
+            slots[at_slot++] = h->slots[k];
+            for (; next < n && ins[next].loop == l && ins[next].after == k; next++)
+                slots[at_slot++] = ins[next].slot;
+        }
+        lp->first_slot = first;
+        lp->slot_count = at_slot - first;
+    }
+    free(h->slots);
+    h->slots = slots;
+    h->slot_count = at_slot;
+    return SW_OK;
+}
+
+typedef struct tj_end {
+    uint32_t vertex;
+    uint32_t use;   /* index into the sorted uses */
+} tj_end;
+
+static int compare_ends(const void *x, const void *y)
+{
+    const tj_end *a = x, *b = y;
+    if (a->vertex != b->vertex)
+        return a->vertex < b->vertex ? -1 : 1;
+    return (a->use > b->use) - (a->use < b->use);
+}
+
+/* Both ends of every unsewn edge use, sorted by vertex. */
+static tj_end *free_ends(const tj_use *uses, size_t n, size_t *count)
+{
+    tj_end *ends = malloc((2 * n + 1) * sizeof *ends);
+    *count = 0;
+    for (size_t i = 0; ends && i < n; i++) {
+        if (only_use(uses, n, uses[i].key) != &uses[i])
+            continue;
+        ends[(*count)++] = (tj_end){(uint32_t)(uses[i].key >> 32), (uint32_t)i};
+        ends[(*count)++] = (tj_end){(uint32_t)uses[i].key, (uint32_t)i};
+    }
+    if (ends && *count > 1)
+        qsort(ends, *count, sizeof *ends, compare_ends);
+    return ends;
+}
+
+/* x, of an unsewn edge x-b, into the other unsewn edges at b. */
+static void try_end(const sew_state *s, const sw_seam_host *h, const tj_use *uses,
+                    const tj_end *ends, size_t nends, size_t i, uint32_t x, uint32_t b,
+                    uint8_t *taken, tj_insert *ins, size_t *count)
+{
+    size_t lo = 0, hi = nends;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (ends[mid].vertex < b)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (size_t k = lo; k < nends && ends[k].vertex == b; k++) {
+        const tj_use *u = &uses[ends[k].use];
+        uint32_t a = (uint32_t)(u->key >> 32) == b ? (uint32_t)u->key : (uint32_t)(u->key >> 32);
+        if (ends[k].use == i || u->loop == uses[i].loop || a == x || taken[ends[k].use])
+            continue;
+        if (insertion(s, h, u, x, &ins[*count])) {
+            taken[ends[k].use] = 1;
+            (*count)++;
+            return;
+        }
+    }
+}
+
+sw_status sew_insert_tjunctions(sew_state *s, sw_seam_host *h, size_t *inserted)
+{
+    *inserted = 0;
+    size_t n = 0, nends = 0;
+    tj_use *uses = collect_uses(h, &n);
+    tj_end *ends = uses ? free_ends(uses, n, &nends) : NULL;
+    tj_insert *ins = malloc((2 * n + 1) * sizeof *ins);
+    uint8_t *taken = calloc(n + 1, 1);
+    if (!uses || !ends || !ins || !taken) {
+        free(uses), free(ends), free(ins), free(taken);
+        return sw_error_set(s->err, SW_ERR_NO_MEMORY, "sewing: out of memory for T-junctions");
+    }
+    size_t count = 0;
+    for (size_t e = 0; e < nends; e++) {
+        if (e > 0 && ends[e].use == ends[e - 1].use)
+            continue;
+        size_t i = ends[e].use;
+        uint32_t lo = (uint32_t)(uses[i].key >> 32), hi = (uint32_t)uses[i].key;
+        try_end(s, h, uses, ends, nends, i, lo, hi, taken, ins, &count);
+        try_end(s, h, uses, ends, nends, i, hi, lo, taken, ins, &count);
+    }
+    if (count > 1)
+        qsort(ins, count, sizeof *ins, compare_inserts);
+    sw_status st = count ? apply(h, ins, count, s->err) : SW_OK;
+    *inserted = count;
+    free(uses), free(ends), free(ins), free(taken);
+    return st;
+}
