@@ -2,6 +2,12 @@
 
 #include <string.h>
 
+sw_trim_tess_options sw_seam_surface_tess_options(void)
+{
+    return (sw_trim_tess_options){ .crossing_on_segment = 1,
+                                   .border_fraction = 1.0 - SW_SEAM_SHARE };
+}
+
 int sw_seam_surface_loops(const sw_seam_select *state, uint32_t surface, float pin,
                           const sw_seam_surface_buffers *buf, sw_trim_loops *loops,
                           uint32_t *outer)

@@ -7,16 +7,6 @@
 
 #include "sw_seam_surface.h"
 
-/* The share of a surface's bound its seams get; the cells the seams run
- * through get the rest. A border triangle is off the surface by the seam's
- * error plus its cell's, so the two shares add up to the bound (with the
- * whole bound each, the hammer's border triangles reached 1.14 of it);
- * interior cells still get the whole bound. Why 0.35: triangles summed over
- * an orbit of every shared model were 106k at 0.2, 112k at 0.35, 126k at
- * 0.5 and 151k at 0.65 (seams are cheap, border cells are not), and a
- * smaller share keeps surfaces from vanishing until they are farther. */
-#define SW_SEAM_WALK_SEAM_SHARE 0.35
-
 enum { SW_SEAM_WALK_TINY = 2 }; /* w->visible: in view, smaller than its bound */
 
 /* Bounds of invisible surfaces: as coarse as the hierarchy goes (their
@@ -210,7 +200,7 @@ static void cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
         w->visible[s] = SW_SEAM_WALK_TINY;
     w->bound[s] = w->visible[s] != 1 ? SW_SEAM_INVISIBLE_BOUND
                                      : (float)fmax(bound, (double)w->bound_floor);
-    w->seam_bound[s] = w->bound[s] * (float)SW_SEAM_WALK_SEAM_SHARE;
+    w->seam_bound[s] = w->bound[s] * (float)SW_SEAM_SHARE;
 }
 
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
@@ -251,10 +241,7 @@ static sw_status tessellate(sw_seam_walk *w, uint32_t s, const sw_trim_loops *lo
         return st;
     sw_trim_tess_buffers out = { w->positions, w->normals, w->uvs, w->ids, w->indices,
                                  SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES, 0 };
-    /* Crossings on their seam segment: the paper's snapping distorted the
-     * border triangles far beyond the bound (sw_trim_tess.h). */
-    const sw_trim_tess_options opt = { .crossing_on_segment = 1,
-                                       .border_fraction = 1.0 - SW_SEAM_WALK_SEAM_SHARE };
+    const sw_trim_tess_options opt = sw_seam_surface_tess_options();
     double bound = w->bound[s];
     for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
         st = sw_trim_tess(w->patches, *patch_count, loops, bound, &opt, &w->scratch, &out,

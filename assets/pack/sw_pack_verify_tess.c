@@ -1,9 +1,9 @@
-/* Every surface tessellated at the finest and the coarsest seam state
- * (sw_pack_verify_tess.h). The steps mirror firmware/sw_seam_walk.c's:
- * outer loops first, then holes; a hole that vanished is left out, a
- * surface whose outer loop vanished is not drawn; a surface the clipping
- * refuses for a crossing hole is tried without its holes; one that needs
- * too many vertices is tried at four times the bound, three times. */
+/* Every surface tessellated at every seam state from the finest to the
+ * coarsest drawn (sw_pack_verify_tess.h), as firmware/sw_seam_walk.c draws
+ * it: its loops from sw_seam_surface_loops (a surface whose outer loop
+ * vanished is not drawn); a surface the clipping refuses for a crossing
+ * hole is tried without its holes; one that needs too many vertices is
+ * tried at four times the bound, three times. */
 #include "sw_pack_verify_tess.h"
 
 #include <math.h>
@@ -15,11 +15,8 @@
 #include "sw_seam_surface.h"
 #include "sw_trim_tess.h"
 
-enum { FINEST = 0, COARSEST = 1, ATTEMPTS = 4 };
+enum { ATTEMPTS = 4 };
 
-/* The runtime's share of a surface's bound for its seams (the rest is the
- * cells'): the same options make the same tessellation decisions. */
-#define SEAM_SHARE 0.35
 #define BOUND_OF_BOX 1e-3
 
 typedef struct verifier {
@@ -34,9 +31,6 @@ typedef struct verifier {
     void *scratch_block;
     void *select_block;
 } verifier;
-
-static const sw_trim_tess_options tess_options = {.crossing_on_segment = 1,
-                                                  .border_fraction = 1.0 - SEAM_SHARE};
 
 static uint32_t surface_slots(const sw_seam_graph *g, uint32_t s)
 {
@@ -63,8 +57,8 @@ static sw_status verifier_open(verifier *v, const sw_pack *pack, sw_error *err)
         uint32_t p = pack->surfaces[s].patch_count;
         v->max_patches = p > v->max_patches ? p : v->max_patches;
     }
-    size_t scratch = sw_trim_tess_scratch_bytes(v->max_patches, v->max_points, degree,
-                                                &tess_options);
+    const sw_trim_tess_options opt = sw_seam_surface_tess_options();
+    size_t scratch = sw_trim_tess_scratch_bytes(v->max_patches, v->max_points, degree, &opt);
     size_t select = sw_seam_select_arena_bytes(g);
     v->seam_points = malloc(((size_t)v->max_points + 1) * sizeof *v->seam_points);
     v->points = malloc(((size_t)v->max_points + 1) * sizeof *v->points);
@@ -126,8 +120,9 @@ static sw_status tessellate(verifier *v, uint32_t s, const sw_trim_loops *loops,
     sw_status st = sw_trim_patches_from_pack(v->pack, s, v->patches, v->max_patches,
                                              &patch_count, err);
     sw_trim_tess_result result;
+    const sw_trim_tess_options opt = sw_seam_surface_tess_options();
     for (int attempt = 0; st == SW_OK && attempt < ATTEMPTS; attempt++, bound *= 4.0) {
-        st = sw_trim_tess_sizes(v->patches, patch_count, loops, bound, &tess_options,
+        st = sw_trim_tess_sizes(v->patches, patch_count, loops, bound, &opt,
                                 &v->scratch, &result, err);
         if (st != SW_ERR_RANGE)
             break;
@@ -151,7 +146,7 @@ static sw_status check_surface(verifier *v, uint32_t s, double seam_bound,
      * proved here is the loops (inside the domain, not crossing), which do
      * not depend on it: at least a thousandth of the surface keeps every
      * tessellation within one draw's 65536 vertices. */
-    double bound = fmax(seam_bound / SEAM_SHARE, BOUND_OF_BOX * surface_size(v->pack, s));
+    double bound = fmax(seam_bound / SW_SEAM_SHARE, BOUND_OF_BOX * surface_size(v->pack, s));
     if (!(bound > 0))
         bound = 1.0;
     sw_status st = tessellate(v, s, &loops, bound, err);
