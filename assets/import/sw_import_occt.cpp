@@ -405,6 +405,14 @@ const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double t
     std::vector<int> computed;
     std::vector<double> gaps;
     size_t n = loop->curves.size();
+    /* "The same (u, v)" follows the loop's own extent in parameter space,
+     * which is an angle on one surface and millimetres on the next. */
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (const TrimCurve &c : loop->curves)
+        for (size_t k = 0; k + 3 < c.ctrl.size(); k += 4)
+            for (int d = 0; d < 2; d++)
+                lo[d] = std::min(lo[d], c.ctrl[k + d]), hi[d] = std::max(hi[d], c.ctrl[k + d]);
+    double same = 1e-9 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
     for (size_t i = 0; i < n; i++) {
         closed.push_back(std::move(loop->curves[i]));
         computed.push_back(loop->computed[i]);
@@ -412,7 +420,7 @@ const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double t
         const TrimCurve &a = closed.back(), &b = loop->curves[(i + 1) % n];
         const double *end = &a.ctrl[a.ctrl.size() - 4];
         const double *start = i + 1 < n ? &b.ctrl[0] : &closed.front().ctrl[0];
-        if (std::hypot(end[0] - start[0], end[1] - start[1]) <= 1e-9)
+        if (std::hypot(end[0] - start[0], end[1] - start[1]) <= same)
             continue;
         gp_Pnt p = surface->Value(end[0], end[1]), q = surface->Value(start[0], start[1]);
         if (p.Distance(q) > tolerance)
