@@ -176,7 +176,23 @@ static int model_point(void *user, double t, sw_vec3 *p, double uv[2])
     return 0;
 }
 
-/* A fit result as one of our curves (taking its arrays). */
+/* The first knot after t where the curve may have a corner (a knot of
+ * multiplicity at least its degree), or its end. */
+static double next_corner(const iges_curve *c, double t)
+{
+    double end = c->knots[c->count];
+    for (int k = c->degree + 1; k < c->count; k++) {
+        if (!(c->knots[k] > t) || c->knots[k] >= end)
+            continue;
+        int mult = 1;
+        while (k + mult < c->count + c->degree + 1 && c->knots[k + mult] == c->knots[k])
+            mult++;
+        if (mult >= c->degree)
+            return c->knots[k];
+    }
+    return end;
+}
+
 /* The tolerance a face's parameter curves are fitted within: the file's
  * (or the option's), but never below what the fit can reach on this face.
  * Files state resolutions like 1e-8 that point inversion on a surface of
@@ -208,6 +224,7 @@ static sw_status fit_failed(iges_reader *r, int entity, sw_status st)
     return SW_ERR_UNSUPPORTED;
 }
 
+/* A fit result as one of our curves (taking its arrays). */
 static sw_status take_fit(iges_reader *r, sw_pcurve_result *fit, iges_curves *out)
 {
     iges_curve c = {fit->degree, fit->count, fit->knots, fit->ctrl,
@@ -222,15 +239,20 @@ sw_status iges_compute_pcurves(iges_reader *r, iges_face *f, const iges_curves *
     sw_status st = face_ps(r, f);
     for (int i = 0; st == SW_OK && i < model->count; i++) {
         const iges_curve *c = &model->items[i];
-        sw_pcurve_target tg = {model_point, (void *)c, c->knots[c->degree], c->knots[c->count]};
-        sw_pcurve_result fit;
-        st = sw_pcurve_fit(&f->ps, &tg, fit_tolerance(r, f), &fit, r->err);
-        if (st != SW_OK) {
-            sw_error_prefix(r->err, "%s: D line %d (type %d): model-space curve %d", r->file,
-                            iges_de(entity), r->ents[entity].type, i + 1);
-            return fit_failed(r, entity, st);
+        /* One fit per smooth piece, as for mapped trims. */
+        for (double t0 = c->knots[c->degree]; st == SW_OK && t0 < c->knots[c->count];) {
+            double t1 = next_corner(c, t0);
+            sw_pcurve_target tg = {model_point, (void *)c, t0, t1};
+            sw_pcurve_result fit;
+            st = sw_pcurve_fit(&f->ps, &tg, fit_tolerance(r, f), &fit, r->err);
+            if (st != SW_OK) {
+                sw_error_prefix(r->err, "%s: D line %d (type %d): model-space curve %d", r->file,
+                                iges_de(entity), r->ents[entity].type, i + 1);
+                return fit_failed(r, entity, st);
+            }
+            st = take_fit(r, &fit, out);
+            t0 = t1;
         }
-        st = take_fit(r, &fit, out);
         if (st == SW_OK && r->report)
             r->report->pcurves_computed++;
     }
@@ -278,15 +300,22 @@ sw_status iges_map_trims(iges_reader *r, iges_face *f, iges_curves *trims, int e
     for (int i = 0; st == SW_OK && i < trims->count; i++) {
         iges_curve *c = &trims->items[i];
         angle_trim a = {c, f};
-        sw_pcurve_target tg = {angle_point, &a, c->knots[c->degree], c->knots[c->count]};
-        sw_pcurve_result fit;
-        st = sw_pcurve_fit(&f->ps, &tg, fit_tolerance(r, f), &fit, r->err);
-        if (st != SW_OK) {
-            sw_error_prefix(r->err, "%s: D line %d (type %d): trim on a surface of revolution",
-                            r->file, iges_de(entity), r->ents[entity].type);
-            st = fit_failed(r, entity, st);
-        } else
-            st = take_fit(r, &fit, &mapped);
+        /* One fit per smooth piece: a fit across a corner (a polyline
+         * trim's) rounds it off by more than any tolerance. */
+        double t0 = c->knots[c->degree], end = c->knots[c->count];
+        while (st == SW_OK && t0 < end) {
+            double t1 = next_corner(c, t0);
+            sw_pcurve_target tg = {angle_point, &a, t0, t1};
+            sw_pcurve_result fit;
+            st = sw_pcurve_fit(&f->ps, &tg, fit_tolerance(r, f), &fit, r->err);
+            if (st != SW_OK) {
+                sw_error_prefix(r->err, "%s: D line %d (type %d): trim on a surface of revolution",
+                                r->file, iges_de(entity), r->ents[entity].type);
+                st = fit_failed(r, entity, st);
+            } else
+                st = take_fit(r, &fit, &mapped);
+            t0 = t1;
+        }
     }
     iges_curves_free(trims);
     *trims = mapped;
