@@ -7,6 +7,7 @@
  * Usage: test_seam_sew SAMPLES_DIR [SHARED_MODELS_DIR] */
 #include <stdint.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "model_shapes.h"
 #include "sw_import_iges.h"
@@ -794,10 +795,10 @@ static void check_shared_iges(const char *name, double min_seam_fraction)
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", models_dir, name);
     FILE *f = fopen(path, "rb");
-    if (!f) {
-        printf("  %s: not found, skipped\n", path);
+    /* The folder was given, so a missing model is a failure, not a skip. */
+    SW_CHECK_MSG(f != NULL, "%s: not found in the models folder", path);
+    if (!f)
         return;
-    }
     fclose(f);
     sw_model m;
     sw_model_init(&m);
@@ -821,14 +822,16 @@ static void check_shared_iges(const char *name, double min_seam_fraction)
 
 static void test_shared_models(void)
 {
-    if (!models_dir) {
-        printf("  no models directory given, skipped\n");
-        SW_CHECK(1);
+    struct stat st;
+    if (!models_dir || stat(models_dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        printf("  no models folder (%s), skipped\n", models_dir ? models_dir : "none given");
         return;
     }
-    check_shared_iges("occt_hammer.iges", 0.85);
-    check_shared_iges("gpucast_teapot.igs", 0.7);
-    check_shared_iges("occt_bearing.iges", 0.9);
+    /* Just below today's figures (19729 of 19745, 6114 of 8176, 2562 of
+     * 2699), so a sewing that loses seams fails here. */
+    check_shared_iges("occt_hammer.iges", 0.999);
+    check_shared_iges("gpucast_teapot.igs", 0.745);
+    check_shared_iges("occt_bearing.iges", 0.945);
 }
 
 /* ---- errors ------------------------------------------------------------- */
