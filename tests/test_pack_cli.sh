@@ -101,16 +101,22 @@ j = json.load(open(sys.argv[1]))
 assert [p["name"] for p in j["parts"]] == ["saddle", "teacup"]
 assert j["degree_u"] == [2, 3]' "$work/out"
 
+# shared_model FILE: 0 when ../shared/models has FILE; 1 (skip, said) when
+# there is no such folder; a failed check when the folder is there without it.
+shared_model() {
+  if [ -n "$shared" ] && [ -f "$shared/$1" ]; then return 0; fi
+  if [ -n "$shared" ] && [ -d "$shared" ]; then check "$1 is in $shared" false; return 1; fi
+  echo "skip $1: no shared models folder (${shared:-none given})"; return 1
+}
+
 # -- the shared teapot ---------------------------------------------------------
-if [ -n "$shared" ] && [ -f "$shared/newell_teapot.txt" ]; then
+if shared_model newell_teapot.txt; then
   run build "$shared/newell_teapot.txt" -o "$work/teapot.swpack"
   check "build the shared teapot" eval '[ "$(code)" -eq 0 ] && has "$work/out" "1 parts, 28 patches"'
   run info --json "$work/teapot.swpack"
   check "shared teapot info --json" eval 'python3 -m json.tool "$work/out" > /dev/null && has "$work/out" "\"bezier_patches\": 28"'
   run verify "$work/teapot.swpack"
   check "verify the shared teapot" [ "$(code)" -eq 0 ]
-else
-  echo "skip shared teapot: ${shared:-(no folder given)}/newell_teapot.txt absent"
 fi
 
 # -- damaged packs -------------------------------------------------------------
@@ -240,7 +246,7 @@ cad_build() {
 }
 for model in occt_hammer.iges:native occt_hammer.iges:occt occt_screw.step:occt axom_boxed_sphere.step:occt; do
   file=${model%%:*} reader=${model##*:}
-  if [ -z "$shared" ] || [ ! -f "$shared/$file" ]; then echo "skip $file: not in ${shared:-(no folder)}"; continue; fi
+  shared_model "$file" || continue
   name=${file%%.*}_$reader
   cad_build "$name" "$shared/$file" --iges-reader "$reader"; rc=$?
   [ $rc -eq 1 ] && continue
@@ -288,7 +294,7 @@ step_message() { # step_message NAME EXTRA_ENTITIES EXPECTED_MESSAGE
   run build "$work/$name.step" -o "$work/$name.strict.swpack" --strict
   check "$name: --strict fails with the message and its entity, no pack" eval 'one_line_failure "$name.step: #99001: $message" && [ ! -e "$work/$name.strict.swpack" ]'
 }
-if [ -n "$shared" ] && [ -f "$shared/occt_screw.step" ]; then
+if shared_model occt_screw.step; then
   if "$tool" build "$shared/occt_screw.step" -o "$work/screw_probe.swpack" --quiet 2>"$work/probe"; then
     step_message solid_angle "#99001=(NAMED_UNIT(#99002)SOLID_ANGLE_UNIT()SI_UNIT(\$,.STERADIAN.));
 #99002=DIMENSIONAL_EXPONENTS(0.,0.,0.,0.,0.,0.,0.);" "Count of Parameters is not 2 for si_unit"
