@@ -91,7 +91,32 @@ golden)
   # The comparison must be able to fail: two different views do not match.
   if "$compare" "$src/tests/golden/teaset_view0.png" "$src/tests/golden/teaset_view1.png"; then
     fail "the comparison cannot tell two views apart"
-  fi ;;
+  fi
+  # Nor may a broken scene pass: each mutation of the teaset must differ
+  # from the references in at least one of the three views.
+  mutate() { # mutate NAME SED_SCRIPT_FOR_THE_SCENE [PATCHES_KEPT]
+    local dir=$work/mutant_$1
+    mkdir -p "$dir"
+    cp "$src/assets/samples/"*.txt "$dir/"
+    sed "$2" "$src/assets/samples/teaset.ini" > "$dir/teaset.ini"
+    if [ -n "${3:-}" ]; then   # the teapot with only its first $3 of 28 patches
+      { sed -n 1p "$dir/teapot.txt"; printf '269\t1\t%d\t%d\n' "$3" "$3";
+        sed -n "3,$((271 + $3))p" "$dir/teapot.txt"; } > "$dir/teapot.cut"
+      mv "$dir/teapot.cut" "$dir/teapot.txt"
+    fi
+    "$pack_tool" build "$dir/teaset.ini" -o "$dir/teaset.swpack" > /dev/null || fail "build $1"
+    "$walker" --pack "$dir/teaset.swpack" --headless 320x240 --path "$src/tests/golden/views.path" \
+      --frames 3 --png-dir "$dir/png" > /dev/null || fail "walk $1"
+    for i in 0 1 2; do
+      "$compare" "$dir/png/frame_0000$i.png" "$src/tests/golden/teaset_view$i.png" > /dev/null ||
+        { echo "ok   mutant $1 differs in view $i"; return 0; }
+    done
+    fail "mutant $1 passes the golden comparison"
+  }
+  mutate no_spoon '/^\[part teaspoon\]/,$d'
+  mutate cup_turned '/^\[part teacup\]/,/^\[/s/^rotate = 0 1 0 -30$/rotate = 0 1 0 -60/'
+  mutate recoloured 's/^color = 0.16 0.30 0.62$/color = 0.30 0.16 0.62/'
+  mutate patches_missing '' 10 ;;
 errors)
   "$pack_tool" build "$src/assets/samples/teaset.ini" -o "$work/good.swpack" || fail "build"
   size=$(stat -c %s "$work/good.swpack")
