@@ -27,6 +27,7 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
     /* Bins cover four times the bound at 1/1024 of it: fine enough for p99. */
     s->error_bin_px = 4.0 * error_bound_px / SW_ERROR_BINS;
     s->mallocs_after_init = -1;
+    s->process_mallocs_after_init = -1;
     return SW_OK;
 }
 
@@ -178,6 +179,8 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
     fprintf(f, "  \"arena_bytes\": %llu,\n  \"arena_peak_bytes\": %llu,\n",
             (unsigned long long)s->arena_bytes, (unsigned long long)s->arena_peak_bytes);
     fprintf(f, "  \"mallocs_after_init\": %lld,\n", (long long)s->mallocs_after_init);
+    fprintf(f, "  \"process_mallocs_after_init\": %lld,\n",
+            (long long)s->process_mallocs_after_init);
     fprintf(f, "  \"pack_open_ms\": %.3f,\n  \"first_frame_ms\": %.3f,\n", s->pack_open_ms,
             s->first_frame_ms);
     fprintf(f, "  \"walk_s\": %.3f,\n  \"viewport\": [%d, %d]\n}\n", s->walk_s, s->width,

@@ -51,6 +51,8 @@ typedef struct sw_stats {
     double pack_open_ms, first_frame_ms, walk_s;
     uint64_t arena_bytes, arena_peak_bytes;
     int64_t mallocs_after_init;  /* -1 when the binary could not count */
+    int64_t process_mallocs_after_init; /* the whole process's, Mesa's and libc's too, when
+                                           tests/process_alloc_shim.so is preloaded; else -1 */
     int width, height;
 } sw_stats;
 
