@@ -475,9 +475,10 @@ static long key_index(const char *section, const char *key)
 
 static void check_whole_file(config_parse *ps)
 {
-    const long *at = ps->cfg->key_line;
-    long pack = at[key_index("pack", "pack")], store = at[key_index("pack", "store")];
-    if (pack && store)
+    const sw_config *cfg = ps->cfg;
+    long pack = cfg->key_line[key_index("pack", "pack")];
+    long store = cfg->key_line[key_index("pack", "store")];
+    if (cfg->pack[0] && cfg->store[0]) /* "pack =" with no value means none */
         fail_at(ps, later(pack, store), "[pack] %s: expected pack = FILE or store = DIR, not "
                 "both (the other is on line %ld)", pack > store ? "pack" : "store",
                 pack > store ? store : pack);
