@@ -559,3 +559,14 @@ const char *sw_config_display_name(sw_config_display display)
 {
     return (unsigned)display < 4 ? display_words[display] : "?";
 }
+
+sw_debounce_params sw_config_gpio_debounce(const sw_config_gpio *gpio)
+{
+    const int64_t ms = 1000000;
+    return (sw_debounce_params){
+        .debounce_ns = gpio->debounce_ms * ms,
+        .min_press_ns = gpio->min_press_ms * ms,
+        .long_press_ns = gpio->long_press_ms * ms,
+        .active_low = gpio->active_low,
+    };
+}

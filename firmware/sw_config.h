@@ -17,6 +17,7 @@
 
 #include <stddef.h>
 
+#include "sw_debounce.h"
 #include "sw_error.h"
 
 #define SW_CONFIG_DEFAULT_PATH "/etc/seamwalk/seamwalk.ini"
@@ -99,5 +100,9 @@ sw_status sw_config_load(const char *path, sw_config *cfg, sw_error *err);
 long sw_config_key_line(const sw_config *cfg, const char *section_dot_key);
 
 const char *sw_config_display_name(sw_config_display display);
+
+/* A button's debounce parameters in nanoseconds. Every [gpio] section the
+ * parser accepts gives parameters sw_debounce_init accepts. */
+sw_debounce_params sw_config_gpio_debounce(const sw_config_gpio *gpio);
 
 #endif

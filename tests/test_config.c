@@ -87,6 +87,11 @@ static void example_gpio_block_uncommented_is_the_gpio_defaults(void)
     SW_CHECK(g->active_low == 0 && g->bias == SW_BIAS_AS_IS);
     SW_CHECK(g->debounce_ms == 10 && g->min_press_ms == 2 && g->long_press_ms == 800);
     SW_CHECK(g->action == SW_ACTION_NONE && g->long_action == SW_ACTION_NONE);
+    sw_debounce_params p = sw_config_gpio_debounce(g);
+    SW_CHECK(p.debounce_ns == 10000000 && p.min_press_ns == 2000000);
+    SW_CHECK(p.long_press_ns == 800000000 && p.active_low == 0);
+    sw_debounce d;
+    SW_CHECK(sw_debounce_init(&d, &p, 0, 0) == 0);
 }
 
 static void empty_file_is_the_defaults(void)

@@ -1,6 +1,7 @@
 /* libFuzzer entry point for the configuration file parser (sw_config.h):
  * every input either loads into a config that keeps the parser's promises or
- * fails with a message that names the file and a line. */
+ * fails with a message that names the file and a line. Accepted buttons'
+ * parameters are accepted by the debouncer. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,9 +12,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 static int gpio_ok(const sw_config_gpio *g)
 {
-    return g->name[0] && g->chip[0] && (g->line_name[0] != '\0') != (g->line_offset >= 0) &&
-           g->min_press_ms <= g->debounce_ms &&
-           (g->long_press_ms == 0 || g->long_press_ms > g->debounce_ms);
+    sw_debounce d;
+    sw_debounce_params p = sw_config_gpio_debounce(g);
+    return sw_debounce_init(&d, &p, 0, 0) == 0 && g->name[0] && g->chip[0] &&
+           (g->line_name[0] != '\0') != (g->line_offset >= 0);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
