@@ -58,6 +58,69 @@ static void set_defaults(sw_options *o)
     o->good_after_s = 30;
 }
 
+/* The file's values, before the command line overrides them. Its defaults
+ * are the command line's, so a key the file leaves out changes nothing. */
+static void apply_config(sw_options *o)
+{
+    const sw_config *c = &o->config;
+    o->width = c->width;
+    o->height = c->height;
+    o->fov_deg = c->fov_deg;
+    o->pack_path = c->pack[0] ? c->pack : NULL;
+    o->store_dir = c->store[0] ? c->store : NULL;
+    o->keys_path = c->keys[0] ? c->keys : NULL;
+    o->boot_attempts = c->boot_attempts;
+    o->good_after_s = c->good_after_s;
+    o->memory_mb = c->memory_mb;
+    o->max_error_px = c->max_error_px;
+    o->orbit = c->nav_mode == SW_NAV_ORBIT;
+}
+
+/* --config FILE anywhere on the command line; the main loop checks it again. */
+static const char *find_config(int argc, char **argv)
+{
+    for (int i = 1; i + 1 < argc; i++)
+        if (!strcmp(argv[i], "--config"))
+            return argv[i + 1];
+    return NULL;
+}
+
+/* What the file chose in groups where the command line's choice replaces it
+ * as a whole (--pack or --store; --path, --orbit or --view; the size). */
+typedef struct config_choice {
+    const char *pack_path, *store_dir;
+    int orbit, width, height;
+} config_choice;
+
+static config_choice take_choice(sw_options *o)
+{
+    config_choice c = {o->pack_path, o->store_dir, o->orbit, o->width, o->height};
+    o->pack_path = o->store_dir = NULL;
+    o->orbit = o->width = o->height = 0;
+    return c;
+}
+
+static sw_status merge_choice(sw_options *o, const config_choice *c, sw_error *err)
+{
+    if (!o->pack_path && !o->store_dir) {
+        o->pack_path = c->pack_path;
+        o->store_dir = c->store_dir;
+    }
+    if (!o->orbit && !o->path_file && !o->view_name)
+        o->orbit = c->orbit;
+    if (o->width)
+        return SW_OK;
+    o->width = c->width;
+    o->height = c->height;
+    if (o->config_path && o->config.display != SW_DISPLAY_HEADLESS)
+        return sw_error_set(err, SW_ERR_UNSUPPORTED, "%s:%ld: [display] display = %s is not "
+                            "built yet: this build renders headless only (display = headless, "
+                            "or --headless WxH)", o->config_path,
+                            sw_config_key_line(&o->config, "display.display"),
+                            sw_config_display_name(o->config.display));
+    return SW_OK;
+}
+
 static sw_status check_complete(const sw_options *o, sw_error *err)
 {
     if (!o->pack_path == !o->store_dir)
@@ -75,6 +138,13 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
 {
     set_defaults(o);
     sw_status st = SW_OK;
+    o->config_path = find_config(argc, argv);
+    if (o->config_path) {
+        if ((st = sw_config_load(o->config_path, &o->config, err)) != SW_OK)
+            return st;
+        apply_config(o);
+    }
+    config_choice choice = take_choice(o);
     for (int i = 1; i < argc && st == SW_OK; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -90,6 +160,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             takes_value = 0;
         } else if (!v) {
             return sw_error_set(err, SW_ERR_ARG, "%s: unknown option or missing value", a);
+        } else if (!strcmp(a, "--config")) {
+            if (v != o->config_path)
+                return sw_error_set(err, SW_ERR_ARG, "--config given twice");
         } else if (!strcmp(a, "--pack")) {
             o->pack_path = v;
         } else if (!strcmp(a, "--headless")) {
@@ -127,6 +200,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         }
         i += takes_value;
     }
+    if (st == SW_OK)
+        st = merge_choice(o, &choice, err);
     return st != SW_OK ? st : check_complete(o, err);
 }
 
@@ -136,8 +211,11 @@ void sw_options_print_usage(const char *argv0)
             "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--seams]\n"
+            "          [--seams] [--config FILE]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
+            "  --config FILE       read the unit's configuration (example, every key and its\n"
+            "                      default: firmware/seamwalk.ini); its values fill what the\n"
+            "                      command line does not give; without it no file is read\n"
             "  --path FILE         follow a camera path (format: firmware/sw_camera_path.h)\n"
             "  --orbit             circle the model around the pack's up axis\n"
             "  --view NAME         stand at one of the pack's named viewpoints\n"

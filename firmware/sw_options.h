@@ -1,8 +1,11 @@
 /* The seamwalk command line, parsed into a struct where zero means default.
- * Called once by main before anything else. */
+ * Called once by main before anything else. With --config FILE the file
+ * (sw_config.h) is read first and fills what the command line does not give:
+ * the command line wins. */
 #ifndef SW_OPTIONS_H
 #define SW_OPTIONS_H
 
+#include "sw_config.h"
 #include "sw_error.h"
 
 typedef struct sw_options {
@@ -25,6 +28,10 @@ typedef struct sw_options {
     int boot_attempts;           /* --boot-attempts K: boots a pending slot gets; default 3 */
     double good_after_s;         /* --good-after-s S: healthy walk time before mark-good; default 30 */
     int help;
+    const char *config_path;     /* --config FILE, or NULL: no file is read */
+    /* The file's values. pack_path, store_dir and keys_path may point into
+     * it, so an sw_options stays where it was parsed (or is copied back). */
+    sw_config config;
 } sw_options;
 
 /* Fills opts from argv. On a usage error returns SW_ERR_ARG with a message

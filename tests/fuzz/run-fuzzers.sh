@@ -11,7 +11,7 @@ bash cmake/install-deps.sh
 seconds=${1:-30}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_pack fuzz_newell fuzz_bpt fuzz_scene fuzz_camera_path fuzz_iges fuzz_store fuzz_keys)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_pack fuzz_newell fuzz_bpt fuzz_scene fuzz_camera_path fuzz_iges fuzz_store fuzz_keys fuzz_config)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSW_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build build-fuzz -j"$(nproc 2>/dev/null || echo 2)" --target "${targets[@]}"

@@ -1,0 +1,108 @@
+/* The unit's configuration file (issue 11 item 6): an INI file read with inih
+ * at start-up, before the arena is taken (sw_config_load reads the file into
+ * a heap buffer it frees before returning; the frame loop never sees this). `seamwalk --config FILE` reads one; its values fill the
+ * options the command line does not give (sw_options.h). The service (issue
+ * 11 item 7, not built yet) will pass --config /etc/seamwalk/seamwalk.ini
+ * (SW_CONFIG_DEFAULT_PATH); seamwalk itself reads no file unless told to, so
+ * tests and developers are never surprised by a unit's /etc.
+ *
+ * Every section and key, with its default, is in the example
+ * firmware/seamwalk.ini. An unknown section or key, a key given twice, a bad
+ * value (not a number, out of range, an unknown word) or a line that is not
+ * [section] or key = value is SW_ERR_FORMAT with "FILE:LINE: [section] key:
+ * what was expected". Budgets and the navigation speeds are read and checked
+ * now but used by later work (issues 6, 7 and 11 item 5). */
+#ifndef SW_CONFIG_H
+#define SW_CONFIG_H
+
+#include <stddef.h>
+
+#include "sw_debounce.h"
+#include "sw_error.h"
+
+#define SW_CONFIG_DEFAULT_PATH "/etc/seamwalk/seamwalk.ini"
+
+/* inih reads lines of at most 200 bytes, so paths stay below that. */
+enum { SW_CONFIG_PATH_MAX = 192, SW_CONFIG_NAME_MAX = 32, SW_CONFIG_GPIO_MAX = 16 };
+
+typedef enum sw_config_display {
+    SW_DISPLAY_HEADLESS = 0,  /* EGL surfaceless: the only one built so far */
+    SW_DISPLAY_KMS,
+    SW_DISPLAY_X11,
+    SW_DISPLAY_WAYLAND,
+} sw_config_display;
+
+typedef enum sw_config_nav_mode { SW_NAV_WALK = 0, SW_NAV_ORBIT } sw_config_nav_mode;
+
+typedef enum sw_config_bias {
+    SW_BIAS_AS_IS = 0, SW_BIAS_DISABLE, SW_BIAS_PULL_UP, SW_BIAS_PULL_DOWN
+} sw_config_bias;
+
+/* What a button does (navigation, issue 11 item 5, not built yet). */
+typedef enum sw_config_action {
+    SW_ACTION_NONE = 0, SW_ACTION_FORWARD, SW_ACTION_BACK, SW_ACTION_TURN_LEFT,
+    SW_ACTION_TURN_RIGHT, SW_ACTION_NEXT_VIEW, SW_ACTION_PREV_VIEW, SW_ACTION_HOME,
+    SW_ACTION_TOGGLE_MODE, SW_ACTION_ATTRACT,
+} sw_config_action;
+
+/* One [gpio NAME] section: a button on a GPIO line (libgpiod, later work). */
+typedef struct sw_config_gpio {
+    char name[SW_CONFIG_NAME_MAX];
+    char chip[SW_CONFIG_NAME_MAX];       /* gpiochip0, or a chip label */
+    char line_name[SW_CONFIG_NAME_MAX];  /* "line = NAME", or empty with: */
+    int line_offset;                     /* "line = 17"; -1 when named */
+    int active_low;
+    sw_config_bias bias;
+    int debounce_ms, min_press_ms, long_press_ms;  /* see sw_debounce.h */
+    sw_config_action action, long_action;
+    long line;                           /* where the section starts, for messages */
+} sw_config_gpio;
+
+typedef struct sw_config {
+    sw_config_display display;
+    int width, height;                   /* [display] size; 0: not given */
+    double fov_deg;
+    char pack[SW_CONFIG_PATH_MAX];       /* [pack] pack = FILE ... */
+    char store[SW_CONFIG_PATH_MAX];      /* ... or store = DIR, not both */
+    char keys[SW_CONFIG_PATH_MAX];
+    int boot_attempts;
+    double good_after_s;
+    double memory_mb, max_error_px;
+    double budget_frame_ms;              /* placeholders, see the example file */
+    int budget_tris;
+    double budget_tess_ms;
+    int gamepad_enabled;
+    char gamepad_mapping[SW_CONFIG_PATH_MAX];  /* gamecontrollerdb file, empty: none */
+    double gamepad_dead_zone;
+    sw_config_nav_mode nav_mode;
+    double walk_speed_mm_s, turn_speed_deg_s, orbit_speed_deg_s;
+    double attract_timeout_s;            /* 0: no attract mode */
+    sw_config_gpio gpio[SW_CONFIG_GPIO_MAX];
+    int gpio_count;
+    /* The line each key of the sections above was given on (0: default),
+     * indexed as sw_config_key_line finds them: a caller can tell a default
+     * from a value equal to it and name the line. */
+    long key_line[40];
+} sw_config;
+
+/* Sets every field to its documented default (also what load starts from). */
+void sw_config_defaults(sw_config *cfg);
+
+/* Parses text (size bytes, need not end in NUL) named file_name in messages. */
+sw_status sw_config_load_memory(const char *text, size_t size, const char *file_name,
+                                sw_config *cfg, sw_error *err);
+
+/* Reads and parses a file of at most 1 MiB. */
+sw_status sw_config_load(const char *path, sw_config *cfg, sw_error *err);
+
+/* The line the loaded file set "section.key" on (for example
+ * "render.memory_mb"), 0 if it did not (or there is no such key). */
+long sw_config_key_line(const sw_config *cfg, const char *section_dot_key);
+
+const char *sw_config_display_name(sw_config_display display);
+
+/* A button's debounce parameters in nanoseconds. Every [gpio] section the
+ * parser accepts gives parameters sw_debounce_init accepts. */
+sw_debounce_params sw_config_gpio_debounce(const sw_config_gpio *gpio);
+
+#endif

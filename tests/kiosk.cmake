@@ -1,0 +1,10 @@
+# tests of the kiosk pieces of issue 11: configuration and button debouncing.
+sw_add_test(test_debounce SOURCES test_debounce.c LIBS sw_runtime)
+sw_add_test(test_config SOURCES test_config.c LIBS sw_runtime
+  ARGS ${PROJECT_SOURCE_DIR}/firmware/seamwalk.ini)
+sw_add_fuzz_target(fuzz_config SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_config.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/config)
+
+# seamwalk --config end to end (tests/test_config_walk.sh).
+add_test(NAME walk_config
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_config_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
