@@ -45,17 +45,21 @@ static sw_status parse_size(const char *text, int *w, int *h, sw_error *err)
     return st != SW_OK ? st : parse_int("--headless height", x + 1, 16, 8192, h, err);
 }
 
+/* The defaults the config file also has come from it (sw_config_defaults),
+ * so the two cannot drift apart; the rest are the command line's own. */
 static void set_defaults(sw_options *o)
 {
     memset(o, 0, sizeof *o);
+    sw_config c;
+    sw_config_defaults(&c);
     o->frames = 120;
     o->png_every = 1;
-    o->memory_mb = 256;
-    o->max_error_px = 0.5;
     o->measure_every = 4;
-    o->fov_deg = 45;
-    o->boot_attempts = 3;
-    o->good_after_s = 30;
+    o->memory_mb = c.memory_mb;
+    o->max_error_px = c.max_error_px;
+    o->fov_deg = c.fov_deg;
+    o->boot_attempts = c.boot_attempts;
+    o->good_after_s = c.good_after_s;
 }
 
 /* The file's values, before the command line overrides them. Its defaults
