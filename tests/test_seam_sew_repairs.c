@@ -1,0 +1,126 @@
+/* What the sewing does beyond the paper's intervals (sw_sew.h): the file's
+ * own gaps widen its tolerance edge by edge, trims past their domain are put
+ * on it, and T-junctions the intervals missed are closed (step 3b). */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model_shapes.h"
+#include "seam_host_check.h"
+#include "sw_seam_flatten.h"
+#include "sw_seam_sew.h"
+#include "sw_sew_internal.h"
+#include "sw_test.h"
+
+/* Two trimmed halves of the plane z = 0, [0, 0.5] and [0.5 + gap, 1] by
+ * [0, 1], each trim curve with the gap the file would give it (its edge
+ * tolerance): sewn at tolerance 1e-3, how many edges are seams? */
+static size_t seams_between_halves(double gap, double curve_gap)
+{
+    shape_plane plane;
+    shape_plane_init(&plane, 3, 2, 2, 1, 1);
+    shape_rect left, right;
+    shape_rect_init(&left, 0, 0.5, 0, 1);
+    shape_rect_init(&right, 0.5 + gap, 1, 0, 1);
+    const double gaps[4] = {curve_gap, curve_gap, curve_gap, curve_gap};
+    sw_model_loop_input a[1] = {{left.curves, NULL, 4, 1, gaps}};
+    sw_model_loop_input b[1] = {{right.curves, NULL, 4, 1, gaps}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, a, 1, &err) == SW_OK);
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, b, 1, &err) == SW_OK);
+    SW_CHECK(m.surface_count == 2 && m.curves[0].gap == curve_gap);
+    sw_seam_host h;
+    sw_seam_report r = {0};
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){1e-3}, &h, &r, &err) == SW_OK);
+    check_host(&h);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+    return r.seams;
+}
+
+/* Step 3b on its own (sw_sew_tjunctions.c): one loop runs a, x, b, another
+ * b, a, with x 1e-4 off the chord a-b and every edge unsewn. x goes into the
+ * second loop's edge, halfway in (u, v) as in space, so both loops share
+ * a-x and x-b. */
+static void test_tjunction_step_inserts_the_vertex_the_intervals_missed(void)
+{
+    const double p[5][3] = {{0, 0, 0}, {0.5, 1e-4, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
+    enum { A, X, B, C, D };
+    sw_seam_polylines poly = {.p = (double *)p, .vertex_count = 5, .tolerance = 1e-3};
+    sw_error err = {0};
+    sew_state st = {.poly = &poly, .tol = 1e-3, .err = &err};
+    sw_seam_host h = {0};
+    h.slots = malloc(7 * sizeof *h.slots);
+    h.loops = malloc(2 * sizeof *h.loops);
+    const uint32_t order[7] = {A, X, B, C, B, A, D};
+    for (int k = 0; k < 7; k++)
+        h.slots[k] = (sw_seam_slot){order[k], {(float)p[order[k]][0], (float)p[order[k]][1]}};
+    h.loops[0] = (sw_seam_loop){0, 0, 4, SW_SEAM_LOOP_OUTER};
+    h.loops[1] = (sw_seam_loop){1, 4, 3, SW_SEAM_LOOP_OUTER};
+    h.slot_count = 7, h.loop_count = 2;
+    size_t inserted = 0;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK);
+    SW_CHECK(inserted == 1 && h.slot_count == 8);
+    SW_CHECK(h.loops[0].first_slot == 0 && h.loops[0].slot_count == 4);
+    SW_CHECK(h.loops[1].first_slot == 4 && h.loops[1].slot_count == 4);
+    if (h.slot_count == 8) {
+        SW_CHECK(h.slots[4].vertex == B && h.slots[5].vertex == X && h.slots[6].vertex == A);
+        SW_CHECK(fabsf(h.slots[5].uv[0] - 0.5f) < 1e-6f && fabsf(h.slots[5].uv[1]) < 1e-6f);
+    }
+    /* x farther than the tolerance from the chord: nothing to do */
+    h.slots[5] = h.slots[6], h.slots[6] = h.slots[7];
+    h.loops[1].slot_count = 3, h.slot_count = 7;
+    const double far[5][3] = {{0, 0, 0}, {0.5, 2e-3, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
+    poly.p = (double *)far;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK && inserted == 0);
+    free(h.slots);
+    free(h.loops);
+}
+
+/* A trim running 2% past its surface's domain (exporters' p-curves do;
+ * the runtime's tessellator refuses a loop that far out, leaving a hole):
+ * flattened onto the domain's border, every point inside, counted. */
+static void test_trim_past_the_domain_is_put_on_it(void)
+{
+    shape_plane plane;
+    shape_plane_init(&plane, 3, 2, 2, 1, 1);
+    shape_rect wide;
+    shape_rect_init(&wide, 0.2, 1.02, 0.1, 0.9);
+    sw_model_loop_input loop[1] = {{wide.curves, NULL, 4, 1, NULL}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, loop, 1, &err) == SW_OK);
+    sw_seam_polylines pl;
+    SW_CHECK(sw_seam_flatten_model(&m, 1e-3, &pl, &err) == SW_OK);
+    const double *d = m.surfaces[0].domain;
+    size_t outside = 0;
+    for (size_t v = 0; v < pl.vertex_count; v++)
+        outside += pl.uv[2 * v] < d[0] || pl.uv[2 * v] > d[1] || pl.uv[2 * v + 1] < d[2] ||
+                   pl.uv[2 * v + 1] > d[3];
+    SW_CHECK(outside == 0);
+    SW_CHECK(pl.clamped >= 2);   /* at least the two corners at u = 1.02 */
+    sw_seam_polylines_free(&pl);
+    sw_model_free(&m);
+}
+
+/* Borders 3e-3 apart, tolerance 1e-3: left apart unless the file says each
+ * border may be off its edge by enough that both together reach across. */
+static void test_trim_gaps_widen_the_tolerance(void)
+{
+    SW_CHECK(seams_between_halves(3e-3, 0) == 0);
+    SW_CHECK(seams_between_halves(3e-3, 1e-3) == 0);     /* 2e-3 together: short */
+    SW_CHECK(seams_between_halves(3e-3, 2e-3) >= 1);     /* 4e-3 together */
+    SW_CHECK(seams_between_halves(0.5e-3, 0) >= 1);      /* within the tolerance alone */
+}
+
+int main(void)
+{
+    SW_RUN(test_trim_gaps_widen_the_tolerance);
+    SW_RUN(test_trim_past_the_domain_is_put_on_it);
+    SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
+    return sw_test_finish();
+}
