@@ -1,7 +1,9 @@
 /* seamwalk: the walkthrough runtime. Sizes one arena from the pack header and
  * the options, refuses at once if it does not fit --memory-mb, loads and
  * validates the pack into it, then walks the camera path (or an orbit) frame
- * by frame: select -> tessellate -> draw -> optional PNG and measurement.
+ * by frame through the pack's Seam Graph (sw_seam_walk.h): select the seams
+ * and bounds -> tessellate what changed -> draw -> optional PNG and
+ * measurement.
  * After start-up nothing in our code calls malloc (sw_alloc_count proves it).
  * This build renders headless only (EGL surfaceless); device displays and
  * input come with later work. The main thread is the GL thread. */
@@ -19,7 +21,6 @@
 #include "sw_boot.h"
 #include "sw_camera_path.h"
 #include "sw_egl_headless.h"
-#include "sw_measure.h"
 #include "sw_message_screen.h"
 #include "sw_options.h"
 #include "sw_pack.h"
@@ -28,7 +29,6 @@
 #include "sw_seam_walk.h"
 #include "sw_stats.h"
 #include "sw_up_axis.h"
-#include "sw_walk.h"
 
 typedef struct runtime {
     sw_options opt;
@@ -36,15 +36,14 @@ typedef struct runtime {
     void *block;
     sw_pack pack;
     sw_camera_path path;
-    sw_walk walk;
-    sw_measure measure;
-    sw_seam_walk seam;        /* with --seams, in its own block: */
+    sw_seam_walk seam;        /* in its own block: */
     void *seam_block;         /* sized from the loaded pack, taken before the first frame */
     sw_arena seam_arena;
     sw_stats stats;
     sw_egl_headless egl;
     sw_renderer renderer;
-    int egl_up, renderer_up;
+    sw_gl_pool pool;          /* the cached tessellations, as rt->seam.cache lays them out */
+    int egl_up, renderer_up, pool_up;
     uint8_t *pixels;          /* read-back, width * height * 4, only with --png-dir */
     size_t png_scratch;       /* bytes kept free in the arena for sw_png_write */
     sw_box model_box;
@@ -78,8 +77,7 @@ static size_t arena_bytes_needed(const runtime *rt, const sw_pack_header *h, siz
                                  size_t path_keys)
 {
     /* runtime_bytes covers the pack and every patch's state (sw_pack.h). */
-    size_t bytes = (size_t)h->runtime_bytes + sw_walk_arena_bytes() +
-                   sw_measure_arena_bytes() + sw_stats_arena_bytes(rt->opt.frames);
+    size_t bytes = (size_t)h->runtime_bytes + sw_stats_arena_bytes(rt->opt.frames);
     bytes += sw_arena_worst_case(path_bytes + 1, 8) +
              sw_arena_worst_case(path_keys * sizeof(sw_camera_key) + 1, 8);
     if (rt->opt.png_dir)
@@ -120,13 +118,13 @@ static sw_status load_path(runtime *rt, size_t path_bytes, sw_error *err)
 static sw_status init_seams(runtime *rt, sw_error *err)
 {
     if (!rt->pack.seam_header)
-        return sw_error_set(err, SW_ERR_FORMAT, "%s: --seams, but the pack has no Seam Graph "
-                            "(build it again with this seamwalk-pack)", rt->opt.pack_path);
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: the pack has no Seam Graph (build it "
+                            "again with this seamwalk-pack)", rt->opt.pack_path);
     size_t bytes = sw_seam_walk_arena_bytes(&rt->pack);
     double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
     if ((double)bytes + (double)rt->arena.size > limit)
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: the walk needs %.1f MiB with --seams, "
-                            "more than --memory-mb %.0f", rt->opt.pack_path,
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: the walk needs %.1f MiB, more than "
+                            "--memory-mb %.0f", rt->opt.pack_path,
                             ((double)bytes + (double)rt->arena.size) / 1048576.0,
                             rt->opt.memory_mb);
     rt->seam_block = malloc(bytes);
@@ -134,7 +132,6 @@ static sw_status init_seams(runtime *rt, sw_error *err)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the seam walk",
                             bytes);
     sw_arena_init(&rt->seam_arena, rt->seam_block, bytes);
-    rt->stats.seams = 1;
     rt->stats.seam_active_min = UINT32_MAX;
     return sw_seam_walk_init(&rt->seam, &rt->pack, &rt->seam_arena, rt->opt.max_error_px, err);
 }
@@ -219,10 +216,7 @@ static sw_status start(runtime *rt, sw_error *err)
     if ((st = sw_stats_init(&rt->stats, &rt->arena, rt->opt.frames, rt->opt.max_error_px, err)))
         return st;
     rt->stats.pack_open_ms = pack_ms;
-    if ((st = sw_walk_init(&rt->walk, &rt->pack, &rt->arena, rt->opt.max_error_px, err)) ||
-        (st = sw_measure_init(&rt->measure, &rt->arena, &rt->pack, err)))
-        return st;
-    if (rt->opt.seams && (st = init_seams(rt, err)) != SW_OK)
+    if ((st = init_seams(rt, err)) != SW_OK)
         return st;
     if (rt->opt.png_dir) {
         rt->pixels = sw_arena_alloc(&rt->arena, (size_t)rt->opt.width * rt->opt.height * 4, 64);
@@ -235,9 +229,13 @@ static sw_status start(runtime *rt, sw_error *err)
                                    err)))
         return st;
     rt->egl_up = 1;
-    if ((st = sw_renderer_init(&rt->renderer, SW_BATCH_VERTICES, SW_BATCH_INDICES, err)))
+    if ((st = sw_renderer_init(&rt->renderer, SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES,
+                                 err)))
         return st;
     rt->renderer_up = 1;
+    if ((st = sw_gl_pool_init(&rt->pool, rt->seam.cache.vertices, rt->seam.cache.indices, err)))
+        return st;
+    rt->pool_up = 1;
     return SW_OK;
 }
 
@@ -274,15 +272,17 @@ static sw_status write_png(runtime *rt, int frame, sw_error *err)
 
 /* Selects and draws through the Seam Graph; its own measurement. */
 static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uint64_t *triangles,
-                            uint32_t *drawn, double *measure_ms, sw_error *err)
+                            uint32_t *drawn, uint32_t *capped, double *measure_ms, sw_error *err)
 {
     sw_seam_frame f;
     sw_status st = sw_seam_walk_select(&rt->seam, view, &f, err);
     if (st != SW_OK)
         return st;
-    sw_seam_walk_draw(&rt->seam, &rt->renderer, view, measuring ? &rt->stats : NULL, &f);
+    sw_seam_walk_draw(&rt->seam, &rt->renderer, &rt->pool, view, measuring ? &rt->stats : NULL,
+                      &f);
     *triangles = f.triangles;
     *drawn = f.drawn_surfaces;
+    *capped = f.capped_surfaces;
     *measure_ms = f.measure_ms;
     sw_stats *s = &rt->stats;
     s->seam_active_min = f.active_vertices < s->seam_active_min ? f.active_vertices
@@ -299,6 +299,8 @@ static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uin
         s->cracks_max = f.cracks;
     if (f.crossings > s->seam_crossings_max)
         s->seam_crossings_max = f.crossings;
+    sw_stats_add_cache_frame(s, f.retessellated, f.retess_triangles, f.upload_bytes, f.evicted,
+                             f.tess_ms);
     if (measuring) {
         s->seam_error_beyond_sewing_px = fmax(s->seam_error_beyond_sewing_px,
                                               f.error_beyond_sewing_px);
@@ -318,35 +320,21 @@ static sw_status run_frame(runtime *rt, int frame, sw_error *err)
     float mv[16], proj[16];
     sw_mat4_to_float(&view.view, mv);
     sw_mat4_to_float(&view.proj, proj);
-    sw_frame_counts counts = { 0, 0, 0 };
     uint64_t triangles = 0;
+    uint32_t drawn = 0, capped = 0;
     double measure_ms = 0;
-    if (rt->opt.seams) {
-        sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv,
-                                proj);
-        sw_status st = seam_frame(rt, &view, measuring, &triangles, &counts.visible, &measure_ms,
-                                  err);
-        if (st != SW_OK)
-            return st;
-    } else {
-        counts = sw_walk_select(&rt->walk, &view);
-        sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv,
-                                proj);
-        triangles = sw_walk_draw(&rt->walk, &rt->renderer);
-    }
+    sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv, proj);
+    sw_status st = seam_frame(rt, &view, measuring, &triangles, &drawn, &capped, &measure_ms,
+                              err);
+    if (st != SW_OK)
+        return st;
     sw_renderer_finish(&rt->renderer);
     double ms = (now_s() - t0) * 1000.0 - measure_ms;
-    sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, counts.visible);
+    sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, drawn);
     if (frame == 0)
         rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0;
-    if (counts.capped > rt->stats.capped_patches_max)
-        rt->stats.capped_patches_max = counts.capped;
-    if (measuring && !rt->opt.seams) {
-        sw_measure_error(&rt->measure, &rt->walk, &view, &rt->stats);
-        uint64_t cracks = sw_measure_cracks(&rt->measure, &rt->walk);
-        if (cracks > rt->stats.cracks_max)
-            rt->stats.cracks_max = cracks;
-    }
+    if (capped > rt->stats.capped_patches_max)
+        rt->stats.capped_patches_max = capped;
     if (rt->opt.png_dir && frame % rt->opt.png_every == 0)
         return write_png(rt, frame, err);
     return SW_OK;
@@ -512,6 +500,8 @@ static void stop(runtime *rt)
 {
     free(rt->seam_block);
     rt->seam_block = NULL;
+    if (rt->pool_up)
+        sw_gl_pool_destroy(&rt->pool);
     if (rt->renderer_up)
         sw_renderer_destroy(&rt->renderer);
     if (rt->egl_up)

@@ -159,9 +159,6 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         } else if (!strcmp(a, "--orbit")) {
             o->orbit = 1;
             takes_value = 0;
-        } else if (!strcmp(a, "--seams")) {
-            o->seams = 1;
-            takes_value = 0;
         } else if (!v) {
             return sw_error_set(err, SW_ERR_ARG, "%s: unknown option or missing value", a);
         } else if (!strcmp(a, "--config")) {
@@ -215,7 +212,7 @@ void sw_options_print_usage(const char *argv0)
             "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--seams] [--config FILE]\n"
+            "          [--config FILE]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --config FILE       read the unit's configuration (example, every key and its\n"
             "                      default: firmware/seamwalk.ini); its values fill what the\n"
@@ -235,9 +232,6 @@ void sw_options_print_usage(const char *argv0)
             "  --keys FILE         trusted public keys for --store (default DIR/keys)\n"
             "  --boot-attempts K   boots a pending slot gets before falling back (default 3)\n"
             "  --good-after-s S    walk time of healthy frames before a pending slot is\n"
-            "                      marked good (default 30)\n"
-            "  --seams             draw through the pack's Seam Graph: sewn, view-dependent\n"
-            "                      trims, whole patches vanish far away (partial: every\n"
-            "                      visible surface is tessellated every frame)\n",
+            "                      marked good (default 30)\n",
             argv0);
 }

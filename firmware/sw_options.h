@@ -13,7 +13,6 @@ typedef struct sw_options {
     int width, height;           /* from --headless WxH */
     const char *path_file;       /* --path FILE, or NULL with orbit set */
     int orbit;
-    int seams;                   /* --seams: draw through the Seam Graph (sw_seam_walk.h) */
     const char *view_name;       /* --view NAME: a still from the pack's named viewpoint */
     int frames;                  /* default 120 */
     const char *png_dir;         /* NULL: no pictures */

@@ -5,6 +5,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "sw_seam_measure.h"
 #include "sw_seam_surface.h"
 
 enum { SW_SEAM_WALK_TINY = 2 }; /* w->visible: in view, smaller than its bound */
@@ -43,13 +44,14 @@ size_t sw_seam_walk_arena_bytes(const sw_pack *pack)
 {
     surface_sizes m = largest_surface(pack);
     size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES, i = SW_SEAM_WALK_INDICES;
-    return sw_seam_select_arena_bytes(&pack->seam) + sw_arena_worst_case(n * 17 + 1, 64) +
+    return sw_seam_select_arena_bytes(&pack->seam) + sw_arena_worst_case(n * 19 + 1, 64) +
+           sw_seam_cache_arena_bytes((uint32_t)n, SW_SEAM_CACHE_VERTICES, SW_SEAM_CACHE_INDICES) +
            sw_arena_worst_case((m.points + 1) * (sizeof(sw_seam_point) + sizeof(sw_trim_point)), 64) +
            sw_arena_worst_case((m.loops + 1) * sizeof(uint32_t), 64) +
            sw_arena_worst_case((m.patches + 1) * sizeof(sw_trim_patch), 64) +
            sw_arena_worst_case(scratch_bytes(&m), 64) +
-           sw_arena_worst_case(v * (8 * sizeof(float) + sizeof(uint32_t) + sizeof(sw_vertex)), 64) +
-           2 * sw_arena_worst_case(i * sizeof(uint16_t), 64) + 16 * 64;
+           sw_arena_worst_case(v * (8 * sizeof(float) + sizeof(uint32_t)), 64) +
+           sw_arena_worst_case(i * sizeof(uint16_t), 64) + 16 * 64;
 }
 
 static void *take(sw_arena *a, size_t bytes, int *failed)
@@ -57,61 +59,6 @@ static void *take(sw_arena *a, size_t bytes, int *failed)
     void *p = sw_arena_alloc(a, bytes + 1, 64);
     *failed |= p == NULL;
     return p;
-}
-
-/* The patch of the surface whose domain holds (u, v) (the nearest one for
- * points an ulp outside), and the point's local parameters in it. */
-static const sw_trim_patch *patch_at(const sw_seam_walk *w, uint32_t n, double u, double v,
-                                     double *s, double *t)
-{
-    const sw_trim_patch *best = &w->patches[0];
-    double best_out = INFINITY;
-    for (uint32_t i = 0; i < n; i++) {
-        const float *d = w->patches[i].domain;
-        double out = fmax(fmax(d[0] - u, u - d[1]), fmax(d[2] - v, v - d[3]));
-        if (out < best_out)
-            best_out = out, best = &w->patches[i];
-    }
-    const float *d = best->domain;
-    *s = fmin(fmax((u - d[0]) / (d[1] - d[0]), 0.0), 1.0);
-    *t = fmin(fmax((v - d[2]) / (d[3] - d[2]), 0.0), 1.0);
-    return best;
-}
-
-/* The exact surface (its patches in w->patches) at (u, v). */
-static sw_vec3 surface_point(const sw_seam_walk *w, uint32_t patch_count, double u, double v)
-{
-    double s, t, ctrl[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
-    const sw_trim_patch *tp = patch_at(w, patch_count, u, v, &s, &t);
-    sw_bezier_patch exact = sw_bezier_patch_from_float(&tp->patch, ctrl);
-    sw_surface_point sp;
-    sw_bezier_eval(&exact, s, t, SW_EVAL_POINT, &sp);
-    return sp.p;
-}
-
-/* Each surface's sewing offset: how far its sewn border (the original
- * polylines, at full detail) lies from the surface, at each slot and at the
- * middle of each segment, against the surface at the same (u, v). The
- * sewing moves vertices up to the tolerance to close a file's gaps, and the
- * polylines are flat to half the tolerance, so near views whose bound is
- * finer than that see the border off by up to this much. Once, at init. */
-static double border_offset(const sw_seam_walk *w, uint32_t patch_count, const sw_seam_loop *loop)
-{
-    const sw_seam_graph *g = &w->pack->seam;
-    double worst = 0;
-    for (uint32_t k = 0; k < loop->slot_count; k++) {
-        const sw_seam_slot *a = &g->slots[loop->first_slot + k];
-        const sw_seam_slot *b = &g->slots[loop->first_slot + (k + 1) % loop->slot_count];
-        const float *p = g->vertices[a->vertex].p, *q = g->vertices[b->vertex].p;
-        sw_vec3 at = surface_point(w, patch_count, a->uv[0], a->uv[1]);
-        sw_vec3 mid = surface_point(w, patch_count, 0.5 * ((double)a->uv[0] + b->uv[0]),
-                                    0.5 * ((double)a->uv[1] + b->uv[1]));
-        sw_vec3 chord = sw_v3(0.5 * ((double)p[0] + q[0]), 0.5 * ((double)p[1] + q[1]),
-                              0.5 * ((double)p[2] + q[2]));
-        worst = fmax(worst, sw_v3_length(sw_v3_sub(at, sw_v3(p[0], p[1], p[2]))));
-        worst = fmax(worst, sw_v3_length(sw_v3_sub(mid, chord)));
-    }
-    return worst;
 }
 
 static sw_status measure_sewing(sw_seam_walk *w, sw_error *err)
@@ -125,7 +72,8 @@ static sw_status measure_sewing(sw_seam_walk *w, sw_error *err)
             return st;
         double worst = 0;
         for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
-            worst = fmax(worst, border_offset(w, patch_count, &g->loops[l]));
+            worst = fmax(worst, sw_seam_measure_sewing_offset(g, &g->loops[l], w->patches,
+                                                               patch_count));
         w->sew_offset[s] = (float)worst;
     }
     return SW_OK;
@@ -148,9 +96,11 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->max_points = m.points, w->max_loops = m.loops, w->max_patches = m.patches;
     size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES;
     int failed = 0;
-    w->bound = take(arena, n * sizeof(float), &failed);
+    w->target = take(arena, n * sizeof(float), &failed);
     w->seam_bound = take(arena, n * sizeof(float), &failed);
     w->visible = take(arena, n, &failed);
+    w->evictable = take(arena, n, &failed);
+    w->dirty = take(arena, n, &failed);
     w->sew_offset = take(arena, n * sizeof(float), &failed);
     w->depth = take(arena, n * sizeof(float), &failed);
     w->loop_points = take(arena, (m.points + 1) * sizeof(sw_seam_point), &failed);
@@ -163,20 +113,39 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->uvs = take(arena, v * 2 * sizeof(float), &failed);
     w->ids = take(arena, v * sizeof(uint32_t), &failed);
     w->indices = take(arena, SW_SEAM_WALK_INDICES * sizeof(uint16_t), &failed);
-    w->batch_vertices = take(arena, v * sizeof(sw_vertex), &failed);
-    w->batch_indices = take(arena, SW_SEAM_WALK_INDICES * sizeof(uint16_t), &failed);
     if (failed)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the seam walk "
                             "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
     sw_arena_init(&w->scratch, scratch, scratch_bytes(&m));
-    return measure_sewing(w, err);
+    for (size_t k = 0; k < n; k++)
+        w->target[k] = SW_SEAM_INVISIBLE_BOUND;
+    st = sw_seam_cache_init(&w->cache, (uint32_t)n, SW_SEAM_CACHE_VERTICES, SW_SEAM_CACHE_INDICES,
+                            arena, err);
+    return st != SW_OK ? st : measure_sewing(w, err);
+}
+
+/* The level a tessellation is made for: the bound rounded down to a power
+ * of sqrt 2, so it meets the bound and neighbours share levels. */
+static float level_of(double bound)
+{
+    double k = floor(2.0 * log2(bound));
+    return (float)exp2(0.5 * k);
+}
+
+/* A kept tessellation made for t still serves bound b when t <= b <= 2 t
+ * (never coarser than asked, at most twice as fine). */
+static int still_valid(const sw_seam_entry *e, float t, double b)
+{
+    return e->state != SW_SEAM_EMPTY && t <= b && b <= 2.0 * t;
 }
 
 /* Visible when any of its patches' boxes is; depth the nearest of those.
  * A visible surface whose whole box fits within its bound is too small to
  * draw: leaving it out is within the bound (the paper's vanishing patch,
  * without waiting for its loops to collapse, which takes the seams' share
- * of the bound: a few times farther). */
+ * of the bound: a few times farther). Then the target: kept while valid,
+ * else the bound's level; out of view, kept while the cache holds a mesh
+ * (its seams stay where they were), else as coarse as the hierarchy goes. */
 static void cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
 {
     const sw_pack_surface *ps = &w->pack->surfaces[s];
@@ -198,16 +167,24 @@ static void cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
     double bound = w->visible[s] ? sw_view_error_world(view, w->error_px, depth) : 0.0;
     if (w->visible[s] && sw_v3_length(sw_v3_sub(all.max, all.min)) <= bound)
         w->visible[s] = SW_SEAM_WALK_TINY;
-    w->bound[s] = w->visible[s] != 1 ? SW_SEAM_INVISIBLE_BOUND
-                                     : (float)fmax(bound, (double)w->bound_floor);
-    w->seam_bound[s] = w->bound[s] * (float)SW_SEAM_SHARE;
+    w->evictable[s] = w->visible[s] != 1;
+    const sw_seam_entry *e = &w->cache.entries[s];
+    if (w->visible[s] == 1) {
+        bound = fmax(bound, (double)w->bound_floor);
+        if (!still_valid(e, w->target[s], bound))
+            w->target[s] = level_of(bound);
+    } else if (e->state != SW_SEAM_READY) {
+        w->target[s] = SW_SEAM_INVISIBLE_BOUND;
+    }
+    w->seam_bound[s] = w->target[s] * (float)SW_SEAM_SHARE;
 }
 
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
                               sw_error *err)
 {
     memset(frame, 0, sizeof *frame);
-    for (uint32_t s = 0; s < w->pack->seam.surface_count; s++) {
+    uint32_t n = w->pack->seam.surface_count;
+    for (uint32_t s = 0; s < n; s++) {
         cull_surface(w, view, s);
         frame->visible_surfaces += w->visible[s] != 0;
     }
@@ -215,8 +192,12 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     sw_status st = sw_seam_select_update(&w->select, w->seam_bound, 0, &r, err);
     if (st != SW_OK)
         return st;
+    for (uint32_t s = 0; s < n; s++)
+        w->dirty[s] |= (uint8_t)sw_seam_select_surface_changed(&w->select, s);
+    sw_seam_select_clear_changed(&w->select);
     /* The front's own count: sw_seam_select_count would walk every loop. */
     frame->active_vertices = w->select.active_count;
+    w->frame++;
     return SW_OK;
 }
 
@@ -230,35 +211,29 @@ static int gather_loops(sw_seam_walk *w, uint32_t s, sw_trim_loops *loops, uint3
     return sw_seam_surface_loops(&w->select, s, w->seam_bound[s], &buf, loops, outer);
 }
 
-/* Tessellates surface s at its bound, coarsening (x4, three times) when it
- * would need more than 65536 vertices. */
+/* Tessellates surface s at its target, coarsening (x4, three times) when it
+ * would need more than 65536 vertices (*capped then). */
 static sw_status tessellate(sw_seam_walk *w, uint32_t s, const sw_trim_loops *loops,
-                            sw_trim_tess_result *result, uint32_t *patch_count)
+                            sw_trim_tess_result *result, int *capped)
 {
-    sw_status st = sw_trim_patches_from_pack(w->pack, s, w->patches, w->max_patches, patch_count,
+    uint32_t patch_count = 0;
+    sw_status st = sw_trim_patches_from_pack(w->pack, s, w->patches, w->max_patches, &patch_count,
                                              NULL);
     if (st != SW_OK)
         return st;
     sw_trim_tess_buffers out = { w->positions, w->normals, w->uvs, w->ids, w->indices,
                                  SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES, 0 };
     const sw_trim_tess_options opt = sw_seam_surface_tess_options();
-    double bound = w->bound[s];
+    double bound = w->target[s];
+    *capped = 0;
     for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
-        st = sw_trim_tess(w->patches, *patch_count, loops, bound, &opt, &w->scratch, &out,
-                          result, NULL);
+        st = sw_trim_tess(w->patches, patch_count, loops, bound, &opt, &w->scratch, &out, result,
+                          NULL);
         if (st != SW_ERR_RANGE)
             break;
+        *capped = 1;
     }
     return st;
-}
-
-static void flush(sw_seam_walk *w, sw_renderer *r)
-{
-    if (w->batch_index_count)
-        sw_renderer_draw(r, w->batch_vertices, w->batch_vertex_count, w->batch_indices,
-                         w->batch_index_count);
-    w->batch_vertex_count = 0;
-    w->batch_index_count = 0;
 }
 
 static int8_t snorm8(float x)
@@ -267,32 +242,13 @@ static int8_t snorm8(float x)
     return (int8_t)lrintf(c * 127.0f);
 }
 
-static void append(sw_seam_walk *w, sw_renderer *r, const sw_trim_tess_result *t)
-{
-    if (w->batch_vertex_count + t->vertex_count > SW_SEAM_WALK_VERTICES ||
-        w->batch_index_count + t->index_count > SW_SEAM_WALK_INDICES)
-        flush(w, r);
-    uint32_t base = w->batch_vertex_count;
-    for (uint32_t i = 0; i < t->vertex_count; i++) {
-        sw_vertex *v = &w->batch_vertices[base + i];
-        memcpy(v->pos, w->positions + 3 * i, sizeof v->pos);
-        for (int k = 0; k < 3; k++)
-            v->normal[k] = snorm8(w->normals[3 * i + k]);
-        v->normal[3] = 0;
-    }
-    for (uint32_t i = 0; i < t->index_count; i++)
-        w->batch_indices[w->batch_index_count + i] = (uint16_t)(w->indices[i] + base);
-    w->batch_vertex_count += t->vertex_count;
-    w->batch_index_count += t->index_count;
-}
-
 /* Border vertices must be their seam vertex's position bit for bit (the
  * neighbour across the seam draws the same float), and every loop point must
  * be in the mesh: each violation is a crack. */
-static uint64_t count_cracks(const sw_seam_walk *w, const sw_trim_tess_result *t,
-                             uint64_t *crossings)
+static uint32_t count_cracks(const sw_seam_walk *w, const sw_trim_tess_result *t,
+                             uint32_t *crossings)
 {
-    uint64_t cracks = t->dropped_points;
+    uint32_t cracks = t->dropped_points;
     for (uint32_t i = 0; i < t->vertex_count; i++) {
         *crossings += w->ids[i] == SW_TRIM_CROSSING;
         if (w->ids[i] == SW_TRIM_INTERIOR || w->ids[i] == SW_TRIM_CROSSING)
@@ -303,99 +259,157 @@ static uint64_t count_cracks(const sw_seam_walk *w, const sw_trim_tess_result *t
     return cracks;
 }
 
-/* One sample: the flat triangle's point at barycentric weights b against the
- * exact surface at the same interpolated (u, v), in pixels at its depth;
- * also what it exceeds the surface's sewing offset by, against the bound. */
-static void sample(const sw_seam_walk *w, uint32_t s, uint32_t n, const uint16_t idx[3],
-                   const double b[3], const sw_view *view, sw_stats *stats, sw_seam_frame *frame)
+/* The tessellator's output into surface s's place in the cache, and into
+ * the GL buffers. 0 when the cache cannot hold it. */
+static int keep(sw_seam_walk *w, uint32_t s, const sw_trim_tess_result *t, sw_gl_pool *pool,
+                sw_seam_frame *frame)
 {
-    double flat[3] = { 0, 0, 0 }, uv[2] = { 0, 0 };
-    for (int k = 0; k < 3; k++) {
-        for (int c = 0; c < 3; c++)
-            flat[c] += b[k] * w->positions[3 * idx[k] + c];
-        for (int c = 0; c < 2; c++)
-            uv[c] += b[k] * w->uvs[2 * idx[k] + c];
+    sw_seam_cache *c = &w->cache;
+    uint32_t evictions = c->evictions;
+    int placed = sw_seam_cache_place(c, s, t->vertex_count, t->index_count, w->evictable);
+    frame->evicted += c->evictions - evictions;
+    if (!placed)
+        return 0;
+    uint32_t v0 = sw_seam_cache_first_vertex(c, s), i0 = sw_seam_cache_first_index(c, s);
+    for (uint32_t i = 0; i < t->vertex_count; i++) {
+        sw_vertex *v = &c->verts[v0 + i];
+        memcpy(v->pos, w->positions + 3 * i, sizeof v->pos);
+        for (int k = 0; k < 3; k++)
+            v->normal[k] = snorm8(w->normals[3 * i + k]);
+        v->normal[3] = 0;
     }
-    sw_vec3 q = surface_point(w, n, uv[0], uv[1]);
-    double px = view->px_per_unit / fmax(sw_view_depth(view, q), view->near_z);
-    double d = sw_v3_length(sw_v3_sub(q, sw_v3(flat[0], flat[1], flat[2])));
-    sw_stats_add_error_px(stats, d * px);
-    /* in pixels where the bound is half a pixel; scaled down where the
-     * bound's floor (a tenth of the sewing tolerance) is coarser */
-    double allowed = fmax(w->error_px / px, (double)w->bound_floor);
-    frame->error_beyond_sewing_px = fmax(frame->error_beyond_sewing_px,
-                                         (d - (double)w->sew_offset[s]) / allowed * w->error_px);
+    memcpy(c->uvs + 2 * (size_t)v0, w->uvs, 2 * sizeof(float) * t->vertex_count);
+    memcpy(c->index_data + i0, w->indices, sizeof(uint16_t) * t->index_count);
+    uint64_t before = pool->bytes_uploaded;
+    sw_gl_pool_upload(pool, v0, c->verts + v0, t->vertex_count, i0, c->index_data + i0,
+                      t->index_count);
+    frame->upload_bytes += pool->bytes_uploaded - before;
+    return 1;
 }
 
-/* Every triangle at its centroid and edge midpoints. */
-static void measure_surface(const sw_seam_walk *w, uint32_t s, uint32_t patch_count,
-                            const sw_trim_tess_result *t, const sw_view *view, sw_stats *stats,
-                            sw_seam_frame *frame)
+/* Makes surface s's entry for its target from its current loops: a mesh,
+ * or the reason there is none (vanished, refused, no room). */
+static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
 {
-    static const double weights[4][3] = { { 1 / 3.0, 1 / 3.0, 1 / 3.0 }, { 0.5, 0.5, 0 },
-                                          { 0, 0.5, 0.5 }, { 0.5, 0, 0.5 } };
-    for (uint32_t i = 0; i + 2 < t->index_count; i += 3)
-        for (int k = 0; k < 4; k++)
-            sample(w, s, patch_count, w->indices + i, weights[k], view, stats, frame);
-    double depth = fmax((double)w->depth[s], view->near_z);
-    frame->sewing_offset_px = fmax(frame->sewing_offset_px,
-                                   w->sew_offset[s] * view->px_per_unit / depth);
+    sw_seam_entry *e = &w->cache.entries[s];
+    sw_seam_cache_drop(&w->cache, s);
+    w->dirty[s] = 0;
+    e->made_bound = w->target[s];
+    e->cracks = e->crossings = 0;
+    e->capped = e->holes_filled = 0;
+    sw_trim_loops loops;
+    uint32_t outer = 0;
+    if (!gather_loops(w, s, &loops, &outer)) {
+        e->state = SW_SEAM_GONE;
+        return;
+    }
+    sw_trim_tess_result t;
+    int capped = 0;
+    sw_status st = tessellate(w, s, &loops, &t, &capped);
+    if (st == SW_ERR_FORMAT && outer < loops.loop_count) {
+        /* A hole's coarse polyline crosses another loop (both are within
+         * the bound of where they belong, and so of each other): drawn
+         * without its holes rather than not at all. */
+        loops.loop_count = outer;
+        st = tessellate(w, s, &loops, &t, &capped);
+        e->holes_filled = st == SW_OK;
+    }
+    frame->retessellated++;
+    if (st == SW_OK && keep(w, s, &t, pool, frame)) {
+        e->error_bound = (float)t.error_bound;
+        e->capped = (uint8_t)capped;
+        uint32_t crossings = 0;
+        e->cracks = count_cracks(w, &t, &crossings);
+        e->crossings = crossings;
+        frame->retess_triangles += t.index_count / 3;
+        return;
+    }
+    /* A visible surface left out is a hole: every point of its border has
+     * nothing on this side, so each counts as a crack. */
+    e->state = SW_SEAM_FAILED;
+    e->cracks = loops.loop_first[loops.loop_count] - loops.loop_first[0];
 }
 
-void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, const sw_view *view, sw_stats *stats,
-                       sw_seam_frame *frame)
+/* The drawn mesh (in the cache) against the exact surface. */
+static void measure_surface(sw_seam_walk *w, uint32_t s, const sw_view *view, sw_stats *stats,
+                            sw_seam_error *acc)
 {
+    const sw_seam_cache *c = &w->cache;
+    const sw_seam_entry *e = &c->entries[s];
+    uint32_t patch_count = 0;
+    if (sw_trim_patches_from_pack(w->pack, s, w->patches, w->max_patches, &patch_count, NULL))
+        return;
+    uint32_t v0 = sw_seam_cache_first_vertex(c, s);
+    const sw_seam_mesh mesh = { c->verts + v0, c->uvs + 2 * (size_t)v0,
+                                c->index_data + sw_seam_cache_first_index(c, s),
+                                e->vertex_count, e->index_count };
+    const sw_seam_exact exact = { w->patches, patch_count, w->sew_offset[s], w->depth[s],
+                                  w->error_px, w->bound_floor };
+    sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
+}
+
+static double ms_since(const struct timespec *a)
+{
+    struct timespec b;
+    clock_gettime(CLOCK_MONOTONIC, &b);
+    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
+}
+
+/* Surface s's part of the frame: remade if needed, drawn, counted. */
+static void draw_surface(sw_seam_walk *w, uint32_t s, sw_renderer *r, sw_gl_pool *pool,
+                         uint32_t *part, sw_seam_frame *frame)
+{
+    sw_seam_entry *e = &w->cache.entries[s];
+    if (e->state == SW_SEAM_EMPTY || e->made_bound != w->target[s] || w->dirty[s]) {
+        struct timespec t0;
+        clock_gettime(CLOCK_MONOTONIC, &t0);
+        remake(w, s, pool, frame);
+        frame->tess_ms += ms_since(&t0);
+    }
+    if (e->state == SW_SEAM_GONE) {
+        frame->vanished_surfaces++;
+        return;
+    }
+    frame->cracks += e->cracks;
+    if (e->state != SW_SEAM_READY) {
+        frame->failed_surfaces++;
+        return;
+    }
     const sw_pack *pack = w->pack;
+    if (pack->surfaces[s].part != *part) {
+        *part = pack->surfaces[s].part;
+        sw_renderer_set_color(r, pack->parts[*part].color);
+    }
+    sw_gl_pool_draw(pool, r, sw_seam_cache_first_vertex(&w->cache, s),
+                    sw_seam_cache_first_index(&w->cache, s), e->index_count);
+    e->last_frame = w->frame;
+    frame->drawn_surfaces++;
+    frame->triangles += e->index_count / 3;
+    frame->crossings += e->crossings;
+    frame->capped_surfaces += e->capped;
+    frame->holes_filled += e->holes_filled;
+}
+
+void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const sw_view *view,
+                       sw_stats *stats, sw_seam_frame *frame)
+{
     uint32_t part = UINT32_MAX;
+    sw_seam_error acc = { 0, 0 };
     if (stats)
         stats->measured_frames++;
-    for (uint32_t s = 0; s < pack->seam.surface_count; s++) {
-        if (!w->visible[s])
-            continue;
-        if (w->visible[s] == SW_SEAM_WALK_TINY) {
+    for (uint32_t s = 0; s < w->pack->seam.surface_count; s++) {
+        if (w->visible[s] == SW_SEAM_WALK_TINY)
             frame->vanished_surfaces++;
+        if (w->visible[s] != 1)
             continue;
-        }
-        sw_trim_loops loops;
-        uint32_t outer = 0;
-        if (!gather_loops(w, s, &loops, &outer)) {
-            frame->vanished_surfaces++;
-            continue;
-        }
-        sw_trim_tess_result t;
-        uint32_t patch_count = 0;
-        sw_status st = tessellate(w, s, &loops, &t, &patch_count);
-        if (st == SW_ERR_FORMAT && outer < loops.loop_count) {
-            /* A hole's coarse polyline crosses another loop (both are within
-             * the bound of where they belong, and so of each other): drawn
-             * without its holes rather than not at all. */
-            loops.loop_count = outer;
-            st = tessellate(w, s, &loops, &t, &patch_count);
-            frame->holes_filled += st == SW_OK;
-        }
-        if (st != SW_OK) {
-            /* A visible surface left out is a hole: every point of its
-             * border has nothing on this side, so each counts as a crack. */
-            frame->failed_surfaces++;
-            frame->cracks += loops.loop_first[loops.loop_count] - loops.loop_first[0];
-            continue;
-        }
-        if (pack->surfaces[s].part != part) {
-            flush(w, r);
-            part = pack->surfaces[s].part;
-            sw_renderer_set_color(r, pack->parts[part].color);
-        }
-        append(w, r, &t);
-        frame->drawn_surfaces++;
-        frame->triangles += t.index_count / 3;
-        frame->cracks += count_cracks(w, &t, &frame->crossings);
-        if (stats) {
-            struct timespec a, b;
-            clock_gettime(CLOCK_MONOTONIC, &a);
-            measure_surface(w, s, patch_count, &t, view, stats, frame);
-            clock_gettime(CLOCK_MONOTONIC, &b);
-            frame->measure_ms += (double)(b.tv_sec - a.tv_sec) * 1e3 + (b.tv_nsec - a.tv_nsec) * 1e-6;
+        draw_surface(w, s, r, pool, &part, frame);
+        if (stats && w->cache.entries[s].state == SW_SEAM_READY) {
+            struct timespec t0;
+            clock_gettime(CLOCK_MONOTONIC, &t0);
+            measure_surface(w, s, view, stats, &acc);
+            frame->measure_ms += ms_since(&t0);
         }
     }
-    flush(w, r);
+    frame->error_beyond_sewing_px = acc.beyond_sewing_px;
+    frame->sewing_offset_px = acc.sewing_offset_px;
 }

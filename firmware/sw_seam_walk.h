@@ -1,28 +1,40 @@
 /* The frame work of a walk through the Seam Graph (paper 004, sections 5.5,
- * 6.1 and 6.3), the path `seamwalk --seams` takes: per surface an error
- * bound from the view (half a pixel at the surface's nearest depth, never
- * below a tenth of the sewing tolerance), the view-dependent cut of the seam
- * hierarchy for the seams' share of those bounds (core/sw_seam_select.h), and
- * every visible surface tessellated inside its current loops
+ * 6.1, 6.3 and 6.4), what `seamwalk` draws: per surface an error bound from
+ * the view (half a pixel at the surface's nearest depth, never below a
+ * tenth of the sewing tolerance), the view-dependent cut of the seam
+ * hierarchy for the seams' share of those bounds (core/sw_seam_select.h),
+ * and every visible surface tessellated inside its current loops
  * (core/sw_trim_tess.h), the cells the loops cross to the rest of the bound,
  * its border vertices the seam's own, then drawn. Surfaces whose outer loop
  * has vanished, or whose box fits within their bound, are not drawn: far
  * away whole patches disappear.
  *
+ * Tessellate once (paper 6.4): a surface's tessellation is kept in the
+ * cache (sw_seam_cache.h, and the same layout in GL buffers, sw_gl_pool.h)
+ * with the bound it was made for, t. It stays valid while the view's bound b
+ * lies in [t, 2 t]: finer than needed by at most 2x, never coarser. When b
+ * leaves that range the surface gets a new t, b rounded down to a power of
+ * sqrt 2 (so neighbours at similar depths share levels and their seams do
+ * not move every frame), and is tessellated again. The seams are selected
+ * for the t of each surface, not for b, so the loops of a surface whose
+ * tessellation is still valid do not change unless a neighbour's t does;
+ * when they do (sw_seam_select_surface_changed), the surface is tessellated
+ * again too. A still camera re-tessellates nothing.
+ *
  * Memory: one block sized once from the validated pack
  * (sw_seam_walk_arena_bytes) before the first frame; the frame functions
- * never allocate. Every visible surface is tessellated every frame: the
- * tessellation cache and the per-frame budget of paper 6.4 are not written
- * yet, so frames cost what the tessellator costs (about 1 million triangles
- * a second on one core). */
+ * never allocate. Single-threaded: tessellation runs in the frame (threads
+ * and budgets are issue 10). */
 #ifndef SW_SEAM_WALK_H
 #define SW_SEAM_WALK_H
 
 #include <stdint.h>
 
 #include "sw_arena.h"
+#include "sw_gl_pool.h"
 #include "sw_pack.h"
 #include "sw_renderer.h"
+#include "sw_seam_cache.h"
 #include "sw_seam_select.h"
 #include "sw_stats.h"
 #include "sw_tess.h"
@@ -33,13 +45,22 @@
 #define SW_SEAM_WALK_VERTICES 65536u
 #define SW_SEAM_WALK_INDICES (6u * 65536u)
 
+/* The cache's pools: 2^19 vertices (8 MiB as drawn, 4 MiB of (u, v)) and
+ * six indices a vertex (6 MiB), the same again in GL buffers. */
+#define SW_SEAM_CACHE_VERTICES (1u << 19)
+#define SW_SEAM_CACHE_INDICES (6u << 19)
+
 typedef struct sw_seam_walk {
     const sw_pack *pack;
     sw_seam_select select;
-    float *bound;                 /* surface_count: this frame's error bound, model units */
-    float *seam_bound;            /* surface_count: its seams' share of it */
+    sw_seam_cache cache;
+    float *target;                /* surface_count: the bound its tessellation is (to be) made
+                                     for, model units; huge for surfaces without one */
+    float *seam_bound;            /* surface_count: its seams' share of the target */
     uint8_t *visible;             /* surface_count: 0 out of view, 1 drawn, 2 too small to
                                      draw (its box within its bound) */
+    uint8_t *evictable;           /* surface_count: not drawn this frame */
+    uint8_t *dirty;               /* surface_count: its loops changed since it was made */
     sw_seam_point *loop_points;   /* the largest surface's slots */
     sw_trim_point *points;        /* the same, as the tessellator takes them */
     uint32_t *loop_first;         /* the most loops of a surface, + 1 */
@@ -48,30 +69,35 @@ typedef struct sw_seam_walk {
     sw_arena scratch;             /* the tessellator's */
     float *positions, *normals, *uvs;
     uint32_t *ids;
-    uint16_t *indices;            /* one surface's */
-    sw_vertex *batch_vertices;
-    uint16_t *batch_indices;
-    uint32_t batch_vertex_count, batch_index_count;
+    uint16_t *indices;            /* one surface's, as the tessellator writes it */
     float *sew_offset;            /* surface_count: its border's largest distance from the
                                      surface, model units (sewing joins faces across the
                                      file's gaps; no level of detail makes that smaller) */
     float *depth;                 /* surface_count: this frame's nearest depth */
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
+    uint32_t frame;               /* frames selected so far */
 } sw_seam_walk;
 
 typedef struct sw_seam_frame {
     uint32_t visible_surfaces, drawn_surfaces, vanished_surfaces;
     uint32_t active_vertices;
-    uint32_t failed_surfaces;     /* the tessellator refused them (not drawn) */
+    uint32_t failed_surfaces;     /* the tessellator refused them, or the cache could not
+                                     hold them (not drawn) */
+    uint32_t capped_surfaces;     /* drawn coarser than their bound (over 65536 vertices) */
     uint32_t holes_filled;        /* drawn without their holes: a hole's coarse polyline
                                      crossed another loop, the tessellator refused the whole */
+    uint32_t retessellated;       /* surfaces tessellated this frame */
+    uint32_t evicted;             /* meshes the cache gave up for them */
+    uint64_t retess_triangles;    /* triangles those made */
+    uint64_t upload_bytes;        /* bytes written into the GL buffers */
     uint64_t triangles;
     uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
                                      plus loop points the tessellator dropped, plus every
-                                     border point of a surface it refused (a hole) */
+                                     border point of a visible surface not drawn (a hole) */
     uint64_t crossings;           /* border vertices on a seam segment between its vertices
                                      (T-vertices on a straight edge, not gaps) */
+    double tess_ms;               /* of the draw, spent tessellating and uploading */
     double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
     double error_beyond_sewing_px;/* measured: the most a sample's error exceeds its surface's
                                      sewing offset, what the level of detail and the
@@ -92,11 +118,13 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
                               sw_error *err);
 
-/* Tessellates and draws the visible surfaces, one colour per part. With
- * stats, also measures every drawn triangle against the exact surface at its
- * centroid and edge midpoints (pixels at that point's depth) into the error
- * histogram. GL thread only. */
-void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, const sw_view *view, sw_stats *stats,
-                       sw_seam_frame *frame);
+/* Tessellates the visible surfaces whose tessellation is missing or no
+ * longer valid, uploads them into pool (same layout as w->cache: created
+ * with w->cache.vertices and w->cache.indices), and draws every visible
+ * surface from it, one colour per part. With stats, also measures every
+ * drawn triangle against the exact surface (sw_seam_measure.h). GL thread
+ * only. */
+void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const sw_view *view,
+                       sw_stats *stats, sw_seam_frame *frame);
 
 #endif

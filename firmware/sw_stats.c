@@ -6,9 +6,9 @@
 size_t sw_stats_arena_bytes(int frames)
 {
     size_t n = (size_t)frames;
-    return sw_arena_worst_case(n * sizeof(float), 8) + 2 * sw_arena_worst_case(n * 4, 8) +
+    return 2 * sw_arena_worst_case(n * sizeof(float), 8) + 3 * sw_arena_worst_case(n * 4, 8) +
            sw_arena_worst_case(SW_ERROR_BINS * sizeof(uint64_t), 8) +
-           3 * sw_arena_worst_case(n * sizeof(float), 8); /* sorting scratch at the end */
+           6 * sw_arena_worst_case(n * sizeof(float) + 1, 8); /* sorting scratch at the end */
 }
 
 sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_bound_px,
@@ -20,7 +20,9 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
     s->tris = sw_arena_alloc(arena, (size_t)frames * 4, 8);
     s->visible = sw_arena_alloc(arena, (size_t)frames * 4, 8);
     s->error_bins = sw_arena_alloc(arena, SW_ERROR_BINS * sizeof(uint64_t), 8);
-    if (!s->frame_ms || !s->tris || !s->visible || !s->error_bins)
+    s->retess = sw_arena_alloc(arena, (size_t)frames * 4, 8);
+    s->tess_ms = sw_arena_alloc(arena, (size_t)frames * sizeof(float), 8);
+    if (!s->frame_ms || !s->tris || !s->visible || !s->error_bins || !s->retess || !s->tess_ms)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the statistics");
     memset(s->error_bins, 0, SW_ERROR_BINS * sizeof(uint64_t));
     s->error_bound_px = error_bound_px;
@@ -39,6 +41,23 @@ void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible)
     s->tris[s->frames] = tris;
     s->visible[s->frames] = visible;
     s->frames++;
+}
+
+void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,
+                              uint64_t upload_bytes, uint32_t evictions, double tess_ms)
+{
+    if (s->frames >= s->frame_capacity)
+        return;
+    s->retess[s->frames] = surfaces;
+    s->tess_ms[s->frames] = (float)tess_ms;
+    s->retess_total += surfaces;
+    s->retess_triangles_total += triangles;
+    s->retess_triangles_max = triangles > s->retess_triangles_max ? triangles
+                                                                  : s->retess_triangles_max;
+    s->upload_bytes_total += upload_bytes;
+    s->upload_bytes_max = upload_bytes > s->upload_bytes_max ? upload_bytes : s->upload_bytes_max;
+    s->evictions += evictions;
+    s->frames_without_retess += surfaces == 0;
 }
 
 void sw_stats_add_error_px(sw_stats *s, double e)
@@ -127,6 +146,36 @@ static void write_store(FILE *f, const sw_stats *s)
     fputs("},\n", f);
 }
 
+/* The cache's figures; draw_only is frame_ms less tess_ms, per frame: what
+ * drawing the same cached triangles costs without tessellating. */
+static sw_status write_cache(FILE *f, const sw_stats *s, sw_arena *scratch)
+{
+    int n = s->frames;
+    float *tess = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *draw = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *count = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    if (!tess || !draw || !count)
+        return SW_ERR_NO_MEMORY;
+    for (int i = 0; i < n; i++) {
+        tess[i] = s->tess_ms[i];
+        draw[i] = s->frame_ms[i] - s->tess_ms[i];
+        count[i] = (float)s->retess[i];
+    }
+    sw_percentiles t = sw_percentiles_of(tess, n), d = sw_percentiles_of(draw, n);
+    sw_percentiles c = sw_percentiles_of(count, n);
+    fprintf(f, "  \"cache\": {\"retessellated\": {\"p50\": %.0f, \"max\": %.0f, \"total\": %llu}, "
+               "\"frames_without_retess\": %d, \"retess_triangles\": {\"max\": %llu, "
+               "\"total\": %llu}, \"upload_bytes\": {\"max\": %llu, \"total\": %llu}, "
+               "\"evictions\": %llu, \"tess_ms\": {\"p50\": %.3f, \"max\": %.3f}, "
+               "\"draw_only_ms\": {\"p50\": %.3f, \"p99\": %.3f}},\n",
+            c.p50, c.max, (unsigned long long)s->retess_total, s->frames_without_retess,
+            (unsigned long long)s->retess_triangles_max,
+            (unsigned long long)s->retess_triangles_total,
+            (unsigned long long)s->upload_bytes_max, (unsigned long long)s->upload_bytes_total,
+            (unsigned long long)s->evictions, t.p50, t.max, d.p50, d.p99);
+    return SW_OK;
+}
+
 static float *copy_as_float_u32(const uint32_t *v, int n, sw_arena *a)
 {
     float *out = sw_arena_alloc(a, (size_t)n * sizeof(float) + 1, 8);
@@ -162,8 +211,11 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
             (unsigned long long)s->error_samples, s->measured_frames, s->measure_every);
     fprintf(f, "  \"cracks_max\": %llu,\n", (unsigned long long)s->cracks_max);
     fprintf(f, "  \"capped_patches_max\": %llu,\n", (unsigned long long)s->capped_patches_max);
-    if (s->seams)
-        fprintf(f, "  \"seam\": {\"active_vertices_min\": %u, \"active_vertices_max\": %u, "
+    if (s->frames && write_cache(f, s, scratch) != SW_OK) {
+        sw_arena_reset_to(scratch, mark);
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small to sort the statistics");
+    }
+    fprintf(f, "  \"seam\": {\"active_vertices_min\": %u, \"active_vertices_max\": %u, "
                    "\"surfaces_vanished_max\": %u, \"surfaces_failed_max\": %u, "
                    "\"surfaces_holes_filled_max\": %u, "
                    "\"crossings_max\": %llu, \"arena_bytes\": %llu, \"arena_peak_bytes\": %llu, "

@@ -32,13 +32,19 @@ typedef struct sw_stats {
 
     uint64_t cracks_max;
     uint64_t capped_patches_max; /* patches whose grid hit SW_TESS_MAX_SEGMENTS */
-    int seams;                   /* the walk drew through the Seam Graph: the fields below */
     uint32_t seam_active_min, seam_active_max;       /* active seam vertices per frame */
     uint32_t surfaces_vanished_max, surfaces_failed_max, surfaces_holes_filled_max;
     uint64_t seam_crossings_max;  /* T-vertices on seam segments, per frame */
     uint64_t seam_arena_bytes, seam_arena_peak_bytes; /* the seam walk's own block */
     double seam_error_beyond_sewing_px; /* measured error beyond each surface's sewing offset */
     double seam_sewing_offset_px;       /* largest sewing offset of a drawn surface, pixels */
+
+    /* The tessellation cache (firmware/sw_seam_walk.h), per frame and in all. */
+    uint32_t *retess;            /* per frame: surfaces tessellated */
+    float *tess_ms;              /* per frame: of frame_ms, tessellating and uploading */
+    uint64_t retess_total, retess_triangles_total, retess_triangles_max;
+    uint64_t upload_bytes_total, upload_bytes_max, evictions;
+    int frames_without_retess;
 
     /* With --store (firmware/sw_boot.h): which slot ran and what the boot did. */
     int store;                   /* the fields below are meaningful */
@@ -63,6 +69,9 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
 
 void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible);
 void sw_stats_add_error_px(sw_stats *s, double error_px);
+/* The cache's work in the frame sw_stats_add_frame records next. */
+void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,
+                              uint64_t upload_bytes, uint32_t evictions, double tess_ms);
 
 typedef struct sw_percentiles { double p50, p90, p99, max; } sw_percentiles;
 /* Nearest-rank percentiles; sorts values in place. */

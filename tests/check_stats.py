@@ -1,16 +1,18 @@
 #!/usr/bin/env python3
-"""check_stats.py STATS.json FRAMES [--seams] [--bound PX]: the stats file
+"""check_stats.py STATS.json FRAMES [--bound PX]: the stats file
 holds every contract field, counts FRAMES frames, allocates nothing after
 init, and measured an error within the bound the test asked for (--bound,
 default seamwalk's 0.5 px; the walk must also report that bound, so a walk
 that quietly ran at another one fails). Prints what it checked; exit 1
-on a failure. --seams (a walk through the Seam Graph): the seam fields, no
+on a failure. The walk goes through the Seam Graph: the seam fields, no
 crack (border vertices bit-identical to their seam vertices, no loop point
 dropped), no surface the tessellator refused, and the error within the bound
 beyond each surface's sewing offset (where a file's faces are apart, the
 sewn border is off a face by up to the gap whatever the level of detail:
 the walk measures that offset once per surface and reports it); error_px.max
-itself may exceed the bound by no more than that offset."""
+itself may exceed the bound by no more than that offset. The cache's fields
+are there and consistent (no more surfaces re-tessellated in a frame than
+the pack has)."""
 import json
 import sys
 
@@ -26,7 +28,6 @@ def main():
     stats = json.load(open(sys.argv[1]))
     frames = int(sys.argv[2])
     rest = sys.argv[3:]
-    seams = "--seams" in rest
     bound = float(rest[rest.index("--bound") + 1]) if "--bound" in rest else 0.5
     failures = []
     for key, sub in REQUIRED.items():
@@ -49,28 +50,32 @@ def main():
     checks.append((abs(stats["error_px"]["bound"] - bound) <= 1e-6,
                    "the walk's bound %.4f is the one asked for, %.4f" % (stats["error_px"]["bound"],
                                                                           bound)))
-    error = "error_px.max %.4f <= bound %.4f" % (stats["error_px"]["max"], bound)
-    if not seams:
-        checks.append((stats["error_px"]["max"] <= bound, error))
-    else:
-        seam = stats.get("seam", {})
-        beyond = seam.get("error_px_beyond_sewing_max", float("inf"))
-        offset = seam.get("sewing_offset_px_max", float("inf"))
-        checks.append((beyond <= bound,
-                       "error_px beyond the sewing offset %.4f <= bound %.4f (error_px.max %.4f, "
-                       "sewing offset up to %.4f px)" % (beyond, bound, stats["error_px"]["max"],
-                                                         offset)))
-        checks.append((stats["error_px"]["max"] <= bound + offset,
-                       "error_px.max %.4f <= bound + sewing offset %.4f" % (stats["error_px"]["max"],
-                                                                            bound + offset)))
-        checks += [
-            ("active_vertices_max" in seam and seam["active_vertices_min"] > 0,
-             "seam fields, active vertices %s..%s" % (seam.get("active_vertices_min"),
-                                                      seam.get("active_vertices_max"))),
-            (stats["cracks_max"] == 0, "cracks_max %d == 0" % stats["cracks_max"]),
-            (seam.get("surfaces_failed_max", 1) == 0,
-             "surfaces the tessellator refused: %s" % seam.get("surfaces_failed_max")),
-        ]
+    seam = stats.get("seam", {})
+    beyond = seam.get("error_px_beyond_sewing_max", float("inf"))
+    offset = seam.get("sewing_offset_px_max", float("inf"))
+    checks.append((beyond <= bound,
+                   "error_px beyond the sewing offset %.4f <= bound %.4f (error_px.max %.4f, "
+                   "sewing offset up to %.4f px)" % (beyond, bound, stats["error_px"]["max"],
+                                                     offset)))
+    checks.append((stats["error_px"]["max"] <= bound + offset,
+                   "error_px.max %.4f <= bound + sewing offset %.4f" % (stats["error_px"]["max"],
+                                                                        bound + offset)))
+    checks += [
+        ("active_vertices_max" in seam and seam["active_vertices_min"] > 0,
+         "seam fields, active vertices %s..%s" % (seam.get("active_vertices_min"),
+                                                  seam.get("active_vertices_max"))),
+        (stats["cracks_max"] == 0, "cracks_max %d == 0" % stats["cracks_max"]),
+        (seam.get("surfaces_failed_max", 1) == 0,
+         "surfaces the tessellator refused: %s" % seam.get("surfaces_failed_max")),
+    ]
+    cache = stats.get("cache", {})
+    retess = cache.get("retessellated", {})
+    checks.append(("total" in retess and 0 < retess["total"] and
+                   retess["max"] <= stats["patches"]["total"] and
+                   0 <= cache.get("frames_without_retess", -1) <= frames,
+                   "cache fields: %s surfaces re-tessellated in all, at most %s a frame, %s "
+                   "frames without" % (retess.get("total"), retess.get("max"),
+                                       cache.get("frames_without_retess"))))
     for ok, what in checks:
         print(("ok   " if ok else "FAIL ") + what)
     return 0 if all(ok for ok, _ in checks) else 1

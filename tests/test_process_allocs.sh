@@ -2,7 +2,7 @@
 # seamwalk's own heap calls after start-up (mallocs_after_init, counted
 # through --wrap) beside the whole process's (process_mallocs_after_init,
 # counted by the preloaded tests/process_alloc_shim.so): the first must be 0
-# on both walks, the second is measured and printed per frame.
+# the second is measured and printed per frame.
 #   test_process_allocs.sh SEAMWALK_PACK SEAMWALK SHIM.so SAMPLES_DIR
 set -uo pipefail
 pack=$1 walker=$2 shim=$3 samples=$4
@@ -10,10 +10,10 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/swallocs.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT
 "$pack" build "$samples/teaset.ini" -o "$work/teaset.swpack" --quiet || { echo "FAIL build"; exit 1; }
 failed=0
-for walk in "" "--seams"; do
+for walk in ""; do
   LD_PRELOAD="$shim" "$walker" --pack "$work/teaset.swpack" --headless 320x240 --orbit --frames 16 \
     $walk --stats "$work/stats.json" > /dev/null || { echo "FAIL walk $walk"; exit 1; }
-  python3 - "$work/stats.json" "${walk:-grids}" <<'PY' || failed=1
+  python3 - "$work/stats.json" "${walk:-seams}" <<'PY' || failed=1
 import json, sys
 s, walk = json.load(open(sys.argv[1])), sys.argv[2]
 own, process, frames = s["mallocs_after_init"], s["process_mallocs_after_init"], s["frames"]

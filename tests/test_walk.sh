@@ -46,14 +46,14 @@ seams)
   # Through the Seam Graph: the same pictures and contract, no crack, and a
   # pack without a graph is refused in one line.
   "$pack_tool" build "$src/assets/samples/teaset.ini" -o "$work/model.swpack" > /dev/null || fail "build"
-  "$walker" --pack "$work/model.swpack" --headless 320x240 --orbit --frames 8 --seams \
-    --png-dir "$work/png" --png-every 4 --stats "$work/stats.json" || fail "walk --seams"
-  python3 "$src/tests/check_stats.py" "$work/stats.json" 8 --seams || fail "stats"
+  "$walker" --pack "$work/model.swpack" --headless 320x240 --orbit --frames 8 \
+    --png-dir "$work/png" --png-every 4 --stats "$work/stats.json" || fail "walk"
+  python3 "$src/tests/check_stats.py" "$work/stats.json" 8 || fail "stats"
   for f in "$work/png"/frame_*.png; do
     "$compare" --coverage "$f" 0.02 || fail "the model is not in $f"
   done
   expect_failure 1 "has no Seam Graph" "$walker" --pack "$src/tests/fuzz/corpus/pack/seed-sample" \
-    --headless 64x64 --orbit --frames 1 --seams
+    --headless 64x64 --orbit --frames 1
   # Far away whole patches vanish: 300 model sizes off (two or three pixels),
   # fewer triangles than patches, some surfaces not drawn at all, no crack.
   "$pack_tool" info --json "$work/model.swpack" > "$work/info.json" || fail "info"
@@ -66,7 +66,7 @@ d = 300 * max(b - a for a, b in zip(lo, hi))
 print("0 %r %r %r %r %r %r 0 1 0" % (c[0] + d, c[1] + 0.3 * d, c[2] + 0.7 * d, c[0], c[1], c[2]))
 EOF
   "$walker" --pack "$work/model.swpack" --headless 640x480 --path "$work/far.path" --frames 1 \
-    --seams --stats "$work/far.json" > /dev/null || fail "walk --seams, far"
+    --stats "$work/far.json" > /dev/null || fail "walk, far"
   python3 - "$work/far.json" <<'EOF' || fail "far away"
 import json, sys
 j = json.load(open(sys.argv[1]))

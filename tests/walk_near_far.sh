@@ -5,7 +5,7 @@
 # end, where the whole model spans half a pixel (tests/near_far_path.py).
 # Every view, every frame measured: no crack, no surface the tessellator
 # refused, the error within the bound beyond the sewing offset
-# (check_stats.py --seams). The far end alone: fewer triangles than patches.
+# (check_stats.py). The far end alone: fewer triangles than patches.
 # Prints what it checked; exit 1 on a failure.
 set -uo pipefail
 walker=$1 pack=$2 info=$3 work=$4 src=$5
@@ -13,12 +13,12 @@ shift 5
 fail() { echo "FAIL: $*"; exit 1; }
 python3 "$src/tests/near_far_path.py" "$info" "$work" || fail "close-to-far path"
 "$walker" --pack "$pack" --headless 320x240 --path "$work/near_far.path" --frames 6 \
-  --measure-every 1 --seams --stats "$work/near_far.json" "$@" > "$work/near_far.log" \
-  || fail "walk --seams: $(tail -n 3 "$work/near_far.log")"
-python3 "$src/tests/check_stats.py" "$work/near_far.json" 6 --seams | sed 's/^/  seams: /'
+  --measure-every 1 --stats "$work/near_far.json" "$@" > "$work/near_far.log" \
+  || fail "walk: $(tail -n 3 "$work/near_far.log")"
+python3 "$src/tests/check_stats.py" "$work/near_far.json" 6 | sed 's/^/  seams: /'
 [ "${PIPESTATUS[0]}" -eq 0 ] || fail "stats through the Seam Graph"
-"$walker" --pack "$pack" --headless 320x240 --path "$work/far.path" --frames 1 --seams \
-  --stats "$work/far.json" "$@" > /dev/null || fail "walk --seams, far"
+"$walker" --pack "$pack" --headless 320x240 --path "$work/far.path" --frames 1 \
+  --stats "$work/far.json" "$@" > /dev/null || fail "walk, far"
 python3 - "$work/near_far.json" "$work/far.json" <<'PY' || fail "far end"
 import json, sys
 near, far = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))

@@ -1,0 +1,113 @@
+#include "sw_buddy.h"
+
+#include <string.h>
+
+#define NONE 0xFFFFFFFFu
+enum { INSIDE = 0, FREE = 1, USED = 2 };
+
+size_t sw_buddy_arena_bytes(uint32_t units)
+{
+    size_t n = (size_t)units + 1;
+    return 2 * sw_arena_worst_case(n * sizeof(uint32_t), 8) + 2 * sw_arena_worst_case(n, 8);
+}
+
+static void push(sw_buddy *b, uint32_t first, uint32_t k)
+{
+    b->order[first] = (uint8_t)k;
+    b->state[first] = FREE;
+    b->prev[first] = NONE;
+    b->next[first] = b->head[k];
+    if (b->head[k] != NONE)
+        b->prev[b->head[k]] = first;
+    b->head[k] = first;
+}
+
+static void unlink_block(sw_buddy *b, uint32_t first)
+{
+    uint32_t k = b->order[first], p = b->prev[first], n = b->next[first];
+    if (p != NONE)
+        b->next[p] = n;
+    else
+        b->head[k] = n;
+    if (n != NONE)
+        b->prev[n] = p;
+    b->state[first] = INSIDE;
+}
+
+sw_status sw_buddy_init(sw_buddy *b, uint32_t units, sw_arena *arena, sw_error *err)
+{
+    memset(b, 0, sizeof *b);
+    if (units == 0)
+        return sw_error_set(err, SW_ERR_ARG, "buddy: no units");
+    size_t n = (size_t)units + 1;
+    b->next = sw_arena_alloc(arena, n * sizeof(uint32_t), 8);
+    b->prev = sw_arena_alloc(arena, n * sizeof(uint32_t), 8);
+    b->order = sw_arena_alloc(arena, n, 8);
+    b->state = sw_arena_alloc(arena, n, 8);
+    if (!b->next || !b->prev || !b->order || !b->state)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "buddy: arena too small for %u units",
+                            (unsigned)units);
+    b->units = units;
+    memset(b->state, INSIDE, n);
+    for (int k = 0; k <= SW_BUDDY_MAX_ORDER; k++)
+        b->head[k] = NONE;
+    /* The largest block aligned at each position that still fits. */
+    for (uint32_t at = 0; at < units;) {
+        uint32_t k = 0;
+        while (k < SW_BUDDY_MAX_ORDER && (at & ((2u << k) - 1)) == 0 &&
+               (uint64_t)at + (2ull << k) <= units)
+            k++;
+        push(b, at, k);
+        at += 1u << k;
+    }
+    return SW_OK;
+}
+
+int sw_buddy_alloc(sw_buddy *b, uint32_t count, uint32_t *first)
+{
+    if (count == 0 || count > b->units)
+        return 0;
+    uint32_t want = 0;
+    while ((1ull << want) < count)
+        want++;
+    uint32_t k = want;
+    while (k <= SW_BUDDY_MAX_ORDER && b->head[k] == NONE)
+        k++;
+    if (k > SW_BUDDY_MAX_ORDER)
+        return 0;
+    uint32_t at = b->head[k];
+    unlink_block(b, at);
+    while (k > want) { /* split: the upper half stays free */
+        k--;
+        push(b, at + (1u << k), k);
+    }
+    b->order[at] = (uint8_t)want;
+    b->state[at] = USED;
+    b->used_units += 1u << want;
+    *first = at;
+    return 1;
+}
+
+int sw_buddy_free(sw_buddy *b, uint32_t first)
+{
+    if (first >= b->units || b->state[first] != USED)
+        return 0;
+    uint32_t k = b->order[first];
+    b->used_units -= 1u << k;
+    b->state[first] = INSIDE;
+    while (k < SW_BUDDY_MAX_ORDER) {
+        uint32_t buddy = first ^ (1u << k);
+        if (buddy >= b->units || b->state[buddy] != FREE || b->order[buddy] != k)
+            break;
+        unlink_block(b, buddy);
+        first = first < buddy ? first : buddy;
+        k++;
+    }
+    push(b, first, k);
+    return 1;
+}
+
+uint32_t sw_buddy_block_units(const sw_buddy *b, uint32_t first)
+{
+    return first < b->units && b->state[first] == USED ? 1u << b->order[first] : 0;
+}

@@ -1,0 +1,47 @@
+/* A buddy allocator over a range of units (no memory of its own to hand
+ * out: it says where in the caller's pools a block lies). The tessellation
+ * cache keeps every surface's mesh in one block of a vertex pool and one of
+ * an index pool, in the arena and in GL buffers of the same layout, so a
+ * block's place is its offset in both. Blocks are 2^k units; a request is
+ * rounded up (at most 2x waste), freeing merges buddies, both O(log units).
+ * The bookkeeping comes from an arena at init; no allocation after. Not
+ * thread-safe: one owner. */
+#ifndef SW_BUDDY_H
+#define SW_BUDDY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sw_arena.h"
+#include "sw_error.h"
+
+#define SW_BUDDY_MAX_ORDER 31
+
+typedef struct sw_buddy {
+    uint32_t units;
+    uint32_t *next, *prev;     /* units: free-list links of a free block's first unit */
+    uint8_t *order;            /* units: a block's order, at its first unit */
+    uint8_t *state;            /* units: 0 inside a block, 1 first unit of a free block,
+                                  2 first unit of a used block */
+    uint32_t head[SW_BUDDY_MAX_ORDER + 1];
+    uint32_t used_units;       /* in used blocks, rounded sizes */
+} sw_buddy;
+
+size_t sw_buddy_arena_bytes(uint32_t units);
+
+/* Covers [0, units) with the largest aligned free blocks. SW_ERR_ARG for
+ * units 0, SW_ERR_NO_MEMORY when the arena is too small. */
+sw_status sw_buddy_init(sw_buddy *b, uint32_t units, sw_arena *arena, sw_error *err);
+
+/* A block of at least count units (count >= 1): 1 and *first set, or 0 when
+ * no free block is large enough (nothing changes). */
+int sw_buddy_alloc(sw_buddy *b, uint32_t count, uint32_t *first);
+
+/* Gives back the block starting at first (a value sw_buddy_alloc returned
+ * and not yet freed; anything else is ignored and returns 0). */
+int sw_buddy_free(sw_buddy *b, uint32_t first);
+
+/* Units the block at first spans (0 when first starts no used block). */
+uint32_t sw_buddy_block_units(const sw_buddy *b, uint32_t first);
+
+#endif

@@ -1,0 +1,89 @@
+#include "sw_seam_measure.h"
+
+#include <math.h>
+
+/* The patch whose domain holds (u, v) (the nearest one for points an ulp
+ * outside), and the point's local parameters in it. */
+static const sw_trim_patch *patch_at(const sw_trim_patch *patches, uint32_t n, double u,
+                                     double v, double *s, double *t)
+{
+    const sw_trim_patch *best = &patches[0];
+    double best_out = INFINITY;
+    for (uint32_t i = 0; i < n; i++) {
+        const float *d = patches[i].domain;
+        double out = fmax(fmax(d[0] - u, u - d[1]), fmax(d[2] - v, v - d[3]));
+        if (out < best_out)
+            best_out = out, best = &patches[i];
+    }
+    const float *d = best->domain;
+    *s = fmin(fmax((u - d[0]) / (d[1] - d[0]), 0.0), 1.0);
+    *t = fmin(fmax((v - d[2]) / (d[3] - d[2]), 0.0), 1.0);
+    return best;
+}
+
+/* The exact surface at (u, v). */
+static sw_vec3 surface_point(const sw_trim_patch *patches, uint32_t n, double u, double v)
+{
+    double s, t, ctrl[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
+    const sw_trim_patch *tp = patch_at(patches, n, u, v, &s, &t);
+    sw_bezier_patch exact = sw_bezier_patch_from_float(&tp->patch, ctrl);
+    sw_surface_point sp;
+    sw_bezier_eval(&exact, s, t, SW_EVAL_POINT, &sp);
+    return sp.p;
+}
+
+double sw_seam_measure_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
+                                     const sw_trim_patch *patches, uint32_t patch_count)
+{
+    double worst = 0;
+    for (uint32_t k = 0; k < loop->slot_count; k++) {
+        const sw_seam_slot *a = &g->slots[loop->first_slot + k];
+        const sw_seam_slot *b = &g->slots[loop->first_slot + (k + 1) % loop->slot_count];
+        const float *p = g->vertices[a->vertex].p, *q = g->vertices[b->vertex].p;
+        sw_vec3 at = surface_point(patches, patch_count, a->uv[0], a->uv[1]);
+        sw_vec3 mid = surface_point(patches, patch_count, 0.5 * ((double)a->uv[0] + b->uv[0]),
+                                    0.5 * ((double)a->uv[1] + b->uv[1]));
+        sw_vec3 chord = sw_v3(0.5 * ((double)p[0] + q[0]), 0.5 * ((double)p[1] + q[1]),
+                              0.5 * ((double)p[2] + q[2]));
+        worst = fmax(worst, sw_v3_length(sw_v3_sub(at, sw_v3(p[0], p[1], p[2]))));
+        worst = fmax(worst, sw_v3_length(sw_v3_sub(mid, chord)));
+    }
+    return worst;
+}
+
+/* One sample: the flat triangle's point at barycentric weights b against the
+ * exact surface at the same interpolated (u, v), in pixels at its depth;
+ * also what it exceeds the surface's sewing offset by, against the bound. */
+static void sample(const sw_seam_mesh *m, const sw_seam_exact *e, const uint16_t idx[3],
+                   const double b[3], const sw_view *view, sw_stats *stats, sw_seam_error *acc)
+{
+    double flat[3] = { 0, 0, 0 }, uv[2] = { 0, 0 };
+    for (int k = 0; k < 3; k++) {
+        for (int c = 0; c < 3; c++)
+            flat[c] += b[k] * m->verts[idx[k]].pos[c];
+        for (int c = 0; c < 2; c++)
+            uv[c] += b[k] * m->uvs[2 * idx[k] + c];
+    }
+    sw_vec3 q = surface_point(e->patches, e->patch_count, uv[0], uv[1]);
+    double px = view->px_per_unit / fmax(sw_view_depth(view, q), view->near_z);
+    double d = sw_v3_length(sw_v3_sub(q, sw_v3(flat[0], flat[1], flat[2])));
+    sw_stats_add_error_px(stats, d * px);
+    /* in pixels where the bound is half a pixel; scaled down where the
+     * bound's floor (a tenth of the sewing tolerance) is coarser */
+    double allowed = fmax(e->error_px / px, e->bound_floor);
+    acc->beyond_sewing_px = fmax(acc->beyond_sewing_px,
+                                 (d - e->sew_offset) / allowed * e->error_px);
+}
+
+void sw_seam_measure_mesh(const sw_seam_mesh *mesh, const sw_seam_exact *exact,
+                          const sw_view *view, sw_stats *stats, sw_seam_error *acc)
+{
+    static const double weights[4][3] = { { 1 / 3.0, 1 / 3.0, 1 / 3.0 }, { 0.5, 0.5, 0 },
+                                          { 0, 0.5, 0.5 }, { 0.5, 0, 0.5 } };
+    for (uint32_t i = 0; i + 2 < mesh->index_count; i += 3)
+        for (int k = 0; k < 4; k++)
+            sample(mesh, exact, mesh->indices + i, weights[k], view, stats, acc);
+    double depth = fmax(exact->depth, view->near_z);
+    acc->sewing_offset_px = fmax(acc->sewing_offset_px,
+                                 exact->sew_offset * view->px_per_unit / depth);
+}

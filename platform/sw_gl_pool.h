@@ -1,0 +1,39 @@
+/* GL buffers that keep meshes across frames (paper 004 section 6.4: a
+ * surface's tessellation is uploaded once and drawn until it is redone).
+ * One vertex buffer and one index buffer, sized at start (GLES2 has no
+ * buffer growth without reallocating and re-uploading everything); the
+ * caller decides where each mesh lives (sw_buddy.h) and uploads a mesh's
+ * ranges with glBufferSubData when it changes. Indices are local to their
+ * mesh: a draw points the attributes at the mesh's first vertex, since
+ * GLES2 has no base-vertex draw. Only the GL thread calls it. */
+#ifndef SW_GL_POOL_H
+#define SW_GL_POOL_H
+
+#include <stdint.h>
+
+#include "sw_error.h"
+#include "sw_renderer.h"
+#include "sw_tess.h"
+
+typedef struct sw_gl_pool {
+    unsigned int vertex_buffer, index_buffer;
+    uint32_t vertices, indices;      /* capacities */
+    uint64_t bytes_uploaded;         /* since init */
+    uint64_t draw_calls, triangles;  /* since init */
+} sw_gl_pool;
+
+/* Creates both buffers (GL_DYNAMIC_DRAW). SW_ERR_GL when the GL refuses. */
+sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices, sw_error *err);
+void sw_gl_pool_destroy(sw_gl_pool *p);
+
+/* Writes a mesh: n vertices at first_vertex, m indices at first_index
+ * (ranges within the capacities; out-of-range writes are refused, 0). */
+int sw_gl_pool_upload(sw_gl_pool *p, uint32_t first_vertex, const sw_vertex *verts, uint32_t n,
+                      uint32_t first_index, const uint16_t *indices, uint32_t m);
+
+/* Draws index_count indices from first_index, their vertices counted from
+ * first_vertex, with r's program (its camera and colour as set). */
+void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
+                     uint32_t first_index, uint32_t index_count);
+
+#endif
