@@ -70,7 +70,7 @@ typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
     uint32_t version;                 /* SW_PACK_VERSION */
     uint32_t byte_order;              /* SW_PACK_BYTE_ORDER_MARK */
     uint64_t total_size;              /* bytes in the file */
-    uint64_t runtime_bytes;           /* sw_pack_runtime_bytes(total_size, patch_count) */
+    uint64_t runtime_bytes;           /* sw_pack_runtime_bytes(total_size, patch_count, walk) */
     uint32_t section_count;           /* 1..SW_PACK_MAX_SECTIONS */
     uint32_t section_table_offset;    /* 64: the table follows the header */
     uint64_t header_checksum;         /* XXH3-64 of header (this field 0) + section table */
@@ -246,15 +246,11 @@ typedef struct sw_pack {
     uint32_t import_note_count;
 } sw_pack;
 
-/* runtime_bytes for a pack of total_size bytes and patch_count patches: the
- * pack itself, 64-byte aligned, plus the per-patch state. Writer and reader
- * both use it.
- * SEAM RUNTIME HOOK: the Seam Graph walk's state (selection front,
- * tessellator scratch; sw_seam_walk_arena_bytes) is not counted: it depends
- * on the graph, so `seamwalk --seams` sizes a second block after loading the
- * pack. Counting it here would change rule 21 for packs with a graph (a
- * version bump: the reader requires equality; PACK_FORMAT.md, runtime_bytes). */
-uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count);
+/* runtime_bytes for a pack of total_size bytes and patch_count patches whose
+ * walk takes walk_bytes (sw_walk_arena_bytes of its Seam Graph, 0 without
+ * one): the pack itself, 64-byte aligned, the per-patch state and the walk.
+ * Writer, signer and reader all use it (PACK_FORMAT.md, runtime_bytes). */
+uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count, uint64_t walk_bytes);
 
 /* Validates everything (every rule in PACK_FORMAT.md, "Validation rules")
  * and fills out with views into data; nothing is copied or allocated. data

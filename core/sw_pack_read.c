@@ -18,6 +18,7 @@
 #include "sw_pack_notes.h"
 #include "sw_pack_validate.h"
 #include "sw_up_axis.h"
+#include "sw_walk_memory.h"
 
 /* The records are read in place, so their layout is the format. */
 #define SW_PIN(type, field, off) _Static_assert(offsetof(type, field) == (off), #type "." #field)
@@ -172,12 +173,12 @@ const char *sw_section_type_name(uint32_t type)
     return "unknown";
 }
 
-uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count)
+uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count, uint64_t walk_bytes)
 {
-    if (total_size > UINT64_MAX / 2)
+    if (total_size > UINT64_MAX / 4 || walk_bytes > UINT64_MAX / 4)
         return UINT64_MAX; /* no real pack; saturate instead of wrapping */
     uint64_t pack = (total_size + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN;
-    return pack + (uint64_t)patch_count * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
+    return pack + (uint64_t)patch_count * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN + walk_bytes;
 }
 
 /* The fields sw_pack_read_header and sw_pack_open_memory both check; what
@@ -561,16 +562,25 @@ static sw_status map_seam(const uint8_t *data, const int32_t index[], sw_pack *o
     return SW_OK;
 }
 
+/* After the seam sections are validated: the walk's size follows their
+ * indices. A pack whose graph this reader skips (the seam sections under
+ * types it does not know) may count a walk it cannot size: then the value
+ * must cover the pack at least. */
 static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
 {
-    uint64_t expected = sw_pack_runtime_bytes(pack->header->total_size, pack->meta->patch_count);
-    if (pack->header->runtime_bytes != expected)
+    uint64_t walk = pack->seam_header ? sw_walk_arena_bytes(&pack->seam, pack->surfaces) : 0;
+    uint64_t expected = sw_pack_runtime_bytes(pack->header->total_size, pack->meta->patch_count,
+                                              walk);
+    uint64_t got = pack->header->runtime_bytes;
+    if (pack->seam_header ? got != expected : got < expected)
         return sw_error_set(err, SW_ERR_FORMAT,
-                            "header.runtime_bytes: %llu, expected %llu for %llu bytes and %u "
-                            "patches", (unsigned long long)pack->header->runtime_bytes,
+                            "header.runtime_bytes: %llu, expected %llu for %llu bytes, %u "
+                            "patches and a walk of %llu bytes (a pack from an older "
+                            "seamwalk-pack: build it again)",
+                            (unsigned long long)pack->header->runtime_bytes,
                             (unsigned long long)expected,
                             (unsigned long long)pack->header->total_size,
-                            (unsigned)pack->meta->patch_count);
+                            (unsigned)pack->meta->patch_count, (unsigned long long)walk);
     return SW_OK;
 }
 
@@ -604,10 +614,10 @@ sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_er
     if ((s = map_sections(bytes, index, &pack, err)) != SW_OK ||
         (s = map_optional(bytes, index, &pack, err)) != SW_OK ||
         (s = map_seam(bytes, index, &pack, err)) != SW_OK ||
-        (s = check_runtime_bytes(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_records(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_trim(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_seam(&pack, err)) != SW_OK ||
+        (s = check_runtime_bytes(&pack, err)) != SW_OK ||
         (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK ||
         (s = sw_pack_map_import_notes(bytes, &pack, err)) != SW_OK)
         return s;

@@ -36,9 +36,8 @@ typedef struct runtime {
     void *block;
     sw_pack pack;
     sw_camera_path path;
-    sw_seam_walk seam;        /* in its own block: */
-    void *seam_block;         /* sized from the loaded pack, taken before the first frame */
-    sw_arena seam_arena;
+    sw_seam_walk seam;
+    size_t walk_bytes;        /* of the arena, what the seam walk took */
     sw_stats stats;
     sw_egl_headless egl;
     sw_renderer renderer;
@@ -76,7 +75,8 @@ static sw_status file_size(const char *path, size_t *size, sw_error *err)
 static size_t arena_bytes_needed(const runtime *rt, const sw_pack_header *h, size_t path_bytes,
                                  size_t path_keys)
 {
-    /* runtime_bytes covers the pack and every patch's state (sw_pack.h). */
+    /* runtime_bytes covers the pack, every patch's state and the walk
+     * (sw_pack.h, core/sw_walk_memory.h); the rest depends on the options. */
     size_t bytes = (size_t)h->runtime_bytes + sw_stats_arena_bytes(rt->opt.frames);
     bytes += sw_arena_worst_case(path_bytes + 1, 8) +
              sw_arena_worst_case(path_keys * sizeof(sw_camera_key) + 1, 8);
@@ -112,28 +112,18 @@ static sw_status load_path(runtime *rt, size_t path_bytes, sw_error *err)
     return sw_camera_path_parse(text, path_bytes, rt->opt.path_file, keys, n, &rt->path, err);
 }
 
-/* The seam walk's block: its size depends on the Seam Graph, so it is taken
- * once the pack is loaded, still before the first frame, within the same
- * --memory-mb limit as the main arena. */
+/* The seam walk, from the same arena: the header's runtime_bytes counted
+ * it (the reader checked that against the loaded graph). */
 static sw_status init_seams(runtime *rt, sw_error *err)
 {
     if (!rt->pack.seam_header)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: the pack has no Seam Graph (build it "
                             "again with this seamwalk-pack)", rt->opt.pack_path);
-    size_t bytes = sw_seam_walk_arena_bytes(&rt->pack);
-    double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
-    if ((double)bytes + (double)rt->arena.size > limit)
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: the walk needs %.1f MiB, more than "
-                            "--memory-mb %.0f", rt->opt.pack_path,
-                            ((double)bytes + (double)rt->arena.size) / 1048576.0,
-                            rt->opt.memory_mb);
-    rt->seam_block = malloc(bytes);
-    if (!rt->seam_block)
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the seam walk",
-                            bytes);
-    sw_arena_init(&rt->seam_arena, rt->seam_block, bytes);
+    size_t before = rt->arena.used;
     rt->stats.seam_active_min = UINT32_MAX;
-    return sw_seam_walk_init(&rt->seam, &rt->pack, &rt->seam_arena, rt->opt.max_error_px, err);
+    sw_status st = sw_seam_walk_init(&rt->seam, &rt->pack, &rt->arena, rt->opt.max_error_px, err);
+    rt->walk_bytes = rt->arena.used - before;
+    return st;
 }
 
 static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
@@ -481,8 +471,9 @@ static sw_status write_stats(runtime *rt, sw_error *err)
     s->measure_every = rt->opt.measure_every;
     s->arena_bytes = rt->arena.size;
     s->arena_peak_bytes = rt->arena.peak;
-    s->seam_arena_bytes = rt->seam_arena.size;
-    s->seam_arena_peak_bytes = rt->seam_arena.peak;
+    s->seam_arena_bytes = rt->pack.seam_header ? sw_seam_walk_arena_bytes(&rt->pack) : 0;
+    s->seam_arena_peak_bytes = rt->walk_bytes;
+    s->runtime_bytes = rt->pack.header ? rt->pack.header->runtime_bytes : 0;
     s->width = rt->opt.width;
     s->height = rt->opt.height;
     if (!rt->opt.stats_path)
@@ -498,8 +489,6 @@ static sw_status write_stats(runtime *rt, sw_error *err)
 
 static void stop(runtime *rt)
 {
-    free(rt->seam_block);
-    rt->seam_block = NULL;
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
     if (rt->renderer_up)
@@ -513,10 +502,11 @@ static void print_summary(const runtime *rt)
 {
     const sw_stats *s = &rt->stats;
     printf("seamwalk: %d frames of %u patches at %dx%d in %.2f s; error max %.3f px (bound %.2f);"
-           " cracks max %llu; arena %.1f MiB; mallocs after init %lld\n",
+           " cracks max %llu; arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
+           " frame stats and pictures the rest); mallocs after init %lld\n",
            s->frames, s->patches_total, s->width, s->height, s->walk_s, s->error_max_px,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->arena_bytes / 1048576.0,
-           (long long)s->mallocs_after_init);
+           s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
     if (rt->opt.png_dir)
         printf("seamwalk: pictures in %s/\n", rt->opt.png_dir);
     if (rt->opt.stats_path)

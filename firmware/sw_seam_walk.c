@@ -14,44 +14,9 @@ enum { SW_SEAM_WALK_TINY = 2 }; /* w->visible: in view, smaller than its bound *
  * vertices still meet the bounds of visible neighbours that show them). */
 #define SW_SEAM_INVISIBLE_BOUND 1e30f
 
-typedef struct surface_sizes {
-    uint32_t points, loops, patches;
-} surface_sizes;
-
-/* The largest surface in points, loops and patches, each on its own. */
-static surface_sizes largest_surface(const sw_pack *pack)
-{
-    const sw_seam_graph *g = &pack->seam;
-    surface_sizes m = { 0, 0, 0 };
-    for (uint32_t s = 0; s < g->surface_count; s++) {
-        uint32_t points = 0, l0 = g->surface_loops[s], l1 = g->surface_loops[s + 1];
-        for (uint32_t l = l0; l < l1; l++)
-            points += g->loops[l].slot_count;
-        const sw_pack_surface *ps = &pack->surfaces[s];
-        m.points = points > m.points ? points : m.points;
-        m.loops = l1 - l0 > m.loops ? l1 - l0 : m.loops;
-        m.patches = ps->patch_count > m.patches ? ps->patch_count : m.patches;
-    }
-    return m;
-}
-
-static size_t scratch_bytes(const surface_sizes *m)
-{
-    return sw_trim_tess_scratch_bytes(m->patches, m->points, SW_BEZIER_MAX_DEGREE, NULL);
-}
-
 size_t sw_seam_walk_arena_bytes(const sw_pack *pack)
 {
-    surface_sizes m = largest_surface(pack);
-    size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES, i = SW_SEAM_WALK_INDICES;
-    return sw_seam_select_arena_bytes(&pack->seam) + sw_arena_worst_case(n * 19 + 1, 64) +
-           sw_seam_cache_arena_bytes((uint32_t)n, SW_SEAM_CACHE_VERTICES, SW_SEAM_CACHE_INDICES) +
-           sw_arena_worst_case((m.points + 1) * (sizeof(sw_seam_point) + sizeof(sw_trim_point)), 64) +
-           sw_arena_worst_case((m.loops + 1) * sizeof(uint32_t), 64) +
-           sw_arena_worst_case((m.patches + 1) * sizeof(sw_trim_patch), 64) +
-           sw_arena_worst_case(scratch_bytes(&m), 64) +
-           sw_arena_worst_case(v * (8 * sizeof(float) + sizeof(uint32_t)), 64) +
-           sw_arena_worst_case(i * sizeof(uint16_t), 64) + 16 * 64;
+    return (size_t)sw_walk_arena_bytes(&pack->seam, pack->surfaces);
 }
 
 static void *take(sw_arena *a, size_t bytes, int *failed)
@@ -92,7 +57,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     sw_status st = sw_seam_select_init(&w->select, &pack->seam, arena, err);
     if (st != SW_OK)
         return st;
-    surface_sizes m = largest_surface(pack);
+    sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
     w->max_points = m.points, w->max_loops = m.loops, w->max_patches = m.patches;
     size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES;
     int failed = 0;
@@ -107,7 +72,8 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->points = take(arena, (m.points + 1) * sizeof(sw_trim_point), &failed);
     w->loop_first = take(arena, (m.loops + 1) * sizeof(uint32_t), &failed);
     w->patches = take(arena, (m.patches + 1) * sizeof(sw_trim_patch), &failed);
-    void *scratch = take(arena, scratch_bytes(&m), &failed);
+    size_t scratch_bytes = (size_t)sw_walk_scratch_bytes(&m);
+    void *scratch = take(arena, scratch_bytes, &failed);
     w->positions = take(arena, v * 3 * sizeof(float), &failed);
     w->normals = take(arena, v * 3 * sizeof(float), &failed);
     w->uvs = take(arena, v * 2 * sizeof(float), &failed);
@@ -116,10 +82,10 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     if (failed)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the seam walk "
                             "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
-    sw_arena_init(&w->scratch, scratch, scratch_bytes(&m));
+    sw_arena_init(&w->scratch, scratch, scratch_bytes);
     for (size_t k = 0; k < n; k++)
         w->target[k] = SW_SEAM_INVISIBLE_BOUND;
-    st = sw_seam_cache_init(&w->cache, (uint32_t)n, SW_SEAM_CACHE_VERTICES, SW_SEAM_CACHE_INDICES,
+    st = sw_seam_cache_init(&w->cache, (uint32_t)n, SW_WALK_CACHE_VERTICES, SW_WALK_CACHE_INDICES,
                             arena, err);
     return st != SW_OK ? st : measure_sewing(w, err);
 }

@@ -21,9 +21,10 @@
  * when they do (sw_seam_select_surface_changed), the surface is tessellated
  * again too. A still camera re-tessellates nothing.
  *
- * Memory: one block sized once from the validated pack
- * (sw_seam_walk_arena_bytes) before the first frame; the frame functions
- * never allocate. Single-threaded: tessellation runs in the frame (threads
+ * Memory: taken once from the runtime's arena before the first frame,
+ * sw_seam_walk_arena_bytes, which the pack's header counts in its
+ * runtime_bytes (core/sw_walk_memory.h); the frame functions never
+ * allocate. Single-threaded: tessellation runs in the frame (threads
  * and budgets are issue 10). */
 #ifndef SW_SEAM_WALK_H
 #define SW_SEAM_WALK_H
@@ -40,15 +41,11 @@
 #include "sw_tess.h"
 #include "sw_trim_tess.h"
 #include "sw_view.h"
+#include "sw_walk_memory.h"
 
-/* Vertices per tessellated surface (and per draw batch): 16-bit indices. */
-#define SW_SEAM_WALK_VERTICES 65536u
-#define SW_SEAM_WALK_INDICES (6u * 65536u)
-
-/* The cache's pools: 2^19 vertices (8 MiB as drawn, 4 MiB of (u, v)) and
- * six indices a vertex (6 MiB), the same again in GL buffers. */
-#define SW_SEAM_CACHE_VERTICES (1u << 19)
-#define SW_SEAM_CACHE_INDICES (6u << 19)
+/* Vertices per tessellated surface: 16-bit indices (core/sw_walk_memory.h). */
+#define SW_SEAM_WALK_VERTICES SW_WALK_VERTICES
+#define SW_SEAM_WALK_INDICES SW_WALK_INDICES
 
 typedef struct sw_seam_walk {
     const sw_pack *pack;

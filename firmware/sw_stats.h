@@ -35,7 +35,8 @@ typedef struct sw_stats {
     uint32_t seam_active_min, seam_active_max;       /* active seam vertices per frame */
     uint32_t surfaces_vanished_max, surfaces_failed_max, surfaces_holes_filled_max;
     uint64_t seam_crossings_max;  /* T-vertices on seam segments, per frame */
-    uint64_t seam_arena_bytes, seam_arena_peak_bytes; /* the seam walk's own block */
+    uint64_t seam_arena_bytes, seam_arena_peak_bytes; /* the seam walk's share of the arena:
+                                                         its bound, and what it took */
     double seam_error_beyond_sewing_px; /* measured error beyond each surface's sewing offset */
     double seam_sewing_offset_px;       /* largest sewing offset of a drawn surface, pixels */
 
@@ -55,7 +56,8 @@ typedef struct sw_stats {
     const char *store_message;   /* the message screen's text, or NULL */
 
     double pack_open_ms, first_frame_ms, walk_s;
-    uint64_t arena_bytes, arena_peak_bytes;
+    uint64_t arena_bytes, arena_peak_bytes;  /* the one arena: every byte the walk uses */
+    uint64_t runtime_bytes;      /* of it, the pack header's (pack, patch state, walk) */
     int64_t mallocs_after_init;  /* -1 when the binary could not count */
     int64_t process_mallocs_after_init; /* the whole process's, Mesa's and libc's too, when
                                            tests/process_alloc_shim.so is preloaded; else -1 */

@@ -54,13 +54,15 @@ frames=16 every=4
 python3 "$src/tests/check_stats.py" "$work/stats.json" $frames | sed 's/^/  /'
 [ "${PIPESTATUS[0]}" -eq 0 ] || fail "stats"
 # Thin parts seen edge-on cover little (a 1% floor); seen across they must
-# cover more (the best of the orbit's frames reaches 5%).
+# cover more (the best of the orbit's frames reaches 3%: the hammer, a thin
+# handle in a box set by its head, shows 3.7%; the uniform grids of the old
+# walk drew trimmed faces whole and showed more than there is).
 best=0
 for f in "$work/png"/frame_*.png; do
   "$compare" --coverage "$f" 0.01 > /dev/null || fail "the model is not in $f"
-  "$compare" --coverage "$f" 0.05 > /dev/null && best=1
+  "$compare" --coverage "$f" 0.03 > /dev/null && best=1
 done
-[ $best -eq 1 ] || fail "no frame of the orbit shows the model across 5% of the picture"
+[ $best -eq 1 ] || fail "no frame of the orbit shows the model across 3% of the picture"
 echo "  the model shows in all $(( frames / every )) pictures"
 
 # Through the Seam Graph from close to far (tests/walk_near_far.sh).

@@ -40,7 +40,7 @@ static void test_round_trip_keeps_every_field(void)
     sw_error err = { 0 };
     SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
     SW_CHECK(pack.header->total_size == size);
-    SW_CHECK(pack.header->runtime_bytes == sw_pack_runtime_bytes(size, 3));
+    SW_CHECK(pack.header->runtime_bytes == sw_pack_runtime_bytes(size, 3, 0));
     SW_CHECK(pack.header->section_count == SAMPLE_SECTIONS);
     SW_CHECK(memcmp(pack.meta, &s.meta, sizeof s.meta) == 0);
     SW_CHECK(memcmp(pack.parts, s.parts, sizeof s.parts) == 0);
@@ -104,10 +104,11 @@ static void test_bezier_only_pack_has_no_optional_views(void)
 
 static void test_runtime_bytes_formula(void)
 {
-    /* 100 bytes round up to 128, 10 patches x 16, 64 slack. */
-    SW_CHECK(sw_pack_runtime_bytes(100, 10) == 128 + 160 + 64);
-    SW_CHECK(sw_pack_runtime_bytes(128, 0) == 128 + 64);
-    SW_CHECK(sw_pack_runtime_bytes(UINT64_MAX, 1) == UINT64_MAX);
+    /* 100 bytes round up to 128, 10 patches x 16, 64 slack, the walk. */
+    SW_CHECK(sw_pack_runtime_bytes(100, 10, 0) == 128 + 160 + 64);
+    SW_CHECK(sw_pack_runtime_bytes(128, 0, 1000) == 128 + 64 + 1000);
+    SW_CHECK(sw_pack_runtime_bytes(UINT64_MAX, 1, 0) == UINT64_MAX);
+    SW_CHECK(sw_pack_runtime_bytes(100, 1, UINT64_MAX) == UINT64_MAX);
 }
 
 static void test_section_type_names(void)

@@ -11,6 +11,7 @@
 #include <xxhash.h>
 
 #include "sw_pack.h"
+#include "sw_walk_memory.h"
 
 static const char secret_tag[] = "seamwalk-ed25519-secret";
 
@@ -216,7 +217,10 @@ static sw_status build_signed(const sw_pack *in, uint32_t kept, const sw_sign_re
     *h = *in->header;
     h->section_count = kept + 1;
     h->total_size = size;
-    h->runtime_bytes = sw_pack_runtime_bytes(size, in->meta->patch_count);
+    h->runtime_bytes = sw_pack_runtime_bytes(size, in->meta->patch_count,
+                                             in->seam_header ? sw_walk_arena_bytes(&in->seam,
+                                                                                   in->surfaces)
+                                                             : 0);
     copy_sections(in, offsets, bytes);
     free(offsets);
     sw_pack_section *entry = (sw_pack_section *)(bytes + 64) + kept;

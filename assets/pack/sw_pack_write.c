@@ -17,6 +17,8 @@
 #include "sw_pack_adjacency.h"
 #include "sw_pack_sections.h"
 #include "sw_pack_validate.h"
+#include "sw_seam_check.h"
+#include "sw_walk_memory.h"
 
 /* Types 1..13 (the first five always written), then the seam group's eight,
  * then ORIENTATION and IMPORT_NOTES. */
@@ -132,6 +134,16 @@ static sw_status lay_out(const section_source *src, int n, sw_pack_section *tabl
     return SW_OK;
 }
 
+/* The walk's share of runtime_bytes; 0 for a graph that does not check
+ * (the reader refuses such a pack for its graph before it sizes a walk). */
+static uint64_t walk_bytes(const sw_pack_contents *c)
+{
+    if (!c->seam || c->seam->surface_count != c->surface_count ||
+        sw_seam_graph_check(c->seam, NULL) != SW_OK)
+        return 0;
+    return sw_walk_arena_bytes(c->seam, c->surfaces);
+}
+
 sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *out_size,
                             sw_error *err)
 {
@@ -154,7 +166,8 @@ sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *ou
             memcpy(buf + table[i].offset, src[i].bytes, (size_t)src[i].size);
     sw_pack_header h = { .version = SW_PACK_VERSION, .byte_order = SW_PACK_BYTE_ORDER_MARK,
                          .total_size = total,
-                         .runtime_bytes = sw_pack_runtime_bytes(total, c->meta.patch_count),
+                         .runtime_bytes = sw_pack_runtime_bytes(total, c->meta.patch_count,
+                                                                walk_bytes(c)),
                          .section_count = (uint32_t)n, .section_table_offset = HEADER_BYTES };
     memcpy(h.magic, SW_PACK_MAGIC, sizeof h.magic);
     memcpy(buf, &h, sizeof h);

@@ -1,0 +1,47 @@
+#include "sw_walk_memory.h"
+
+#include "sw_arena.h"
+#include "sw_seam_cache.h"
+#include "sw_seam_select.h"
+#include "sw_trim_tess.h"
+
+sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surface *surfaces)
+{
+    sw_walk_sizes m = { 0, 0, 0 };
+    for (uint32_t s = 0; s < g->surface_count; s++) {
+        uint32_t points = 0, l0 = g->surface_loops[s], l1 = g->surface_loops[s + 1];
+        for (uint32_t l = l0; l < l1; l++)
+            points += g->loops[l].slot_count;
+        m.points = points > m.points ? points : m.points;
+        m.loops = l1 - l0 > m.loops ? l1 - l0 : m.loops;
+        m.patches = surfaces[s].patch_count > m.patches ? surfaces[s].patch_count : m.patches;
+    }
+    return m;
+}
+
+uint64_t sw_walk_scratch_bytes(const sw_walk_sizes *m)
+{
+    return sw_trim_tess_scratch_bytes(m->patches, m->points, SW_BEZIER_MAX_DEGREE, NULL);
+}
+
+/* Each allocation as sw_seam_walk_init makes it: bytes + 1, 64-aligned. */
+static uint64_t take(uint64_t bytes) { return sw_arena_worst_case(bytes + 1, 64); }
+
+uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces)
+{
+    if (!g || g->surface_count == 0)
+        return 0;
+    sw_walk_sizes m = sw_walk_largest_surface(g, surfaces);
+    uint64_t n = g->surface_count, v = SW_WALK_VERTICES;
+    uint64_t bytes = sw_seam_select_arena_bytes(g);
+    bytes += 4 * take(n * sizeof(float)) + 3 * take(n);  /* target, seam bound, offset, depth;
+                                                             visible, evictable, dirty */
+    bytes += take((m.points + 1ull) * sizeof(sw_seam_point)) +
+             take((m.points + 1ull) * sizeof(sw_trim_point)) +
+             take((m.loops + 1ull) * sizeof(uint32_t)) +
+             take((m.patches + 1ull) * sizeof(sw_trim_patch)) + take(sw_walk_scratch_bytes(&m));
+    bytes += 2 * take(v * 3 * sizeof(float)) + take(v * 2 * sizeof(float)) +
+             take(v * sizeof(uint32_t)) + take(SW_WALK_INDICES * sizeof(uint16_t));
+    return bytes + sw_seam_cache_arena_bytes((uint32_t)n, SW_WALK_CACHE_VERTICES,
+                                             SW_WALK_CACHE_INDICES);
+}

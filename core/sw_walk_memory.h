@@ -1,0 +1,40 @@
+/* What the runtime's walk through a pack's Seam Graph takes from its arena
+ * (firmware/sw_seam_walk.h): the selection's front, per-surface state, the
+ * tessellation cache's pools, the trimmed tessellator's scratch and one
+ * surface's output. A function of the pack alone, so the pack writer puts it
+ * into the header's runtime_bytes (PACK_FORMAT.md, "runtime_bytes"), the
+ * reader checks it there, and the runtime sizes its one arena from the
+ * header before loading anything. No allocation. */
+#ifndef SW_WALK_MEMORY_H
+#define SW_WALK_MEMORY_H
+
+#include <stdint.h>
+
+#include "sw_pack.h"
+#include "sw_seam_graph.h"
+
+/* One surface's tessellation at most: 16-bit indices (GLES2). */
+#define SW_WALK_VERTICES 65536u
+#define SW_WALK_INDICES (6u * 65536u)
+
+/* The cache's pools: 2^19 vertices (8 MiB as drawn, 4 MiB of (u, v)) and
+ * six indices a vertex (6 MiB), the same again in GL buffers. */
+#define SW_WALK_CACHE_VERTICES (1u << 19)
+#define SW_WALK_CACHE_INDICES (6u << 19)
+
+/* The largest surface in loop points (slots), loops and patches, each on
+ * its own: the walk's per-surface buffers hold any surface. */
+typedef struct sw_walk_sizes {
+    uint32_t points, loops, patches;
+} sw_walk_sizes;
+
+/* g and surfaces must be validated (their indices are followed). */
+sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surface *surfaces);
+
+/* Bytes of the walk, worst case (every alignment included); 0 for no graph. */
+uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces);
+
+/* Of those: the tessellator's scratch, for its own sub-arena. */
+uint64_t sw_walk_scratch_bytes(const sw_walk_sizes *m);
+
+#endif
