@@ -43,8 +43,9 @@ case $mode in
 teaset)
   walk_model "$src/assets/samples/teaset.ini" 24 ;;
 seams)
-  # Through the Seam Graph: the same pictures and contract, no crack, and a
-  # pack without a graph is refused in one line.
+  # Through the Seam Graph: the same pictures and contract, no crack, a still
+  # camera re-tessellates nothing, and a pack without a graph is refused in
+  # one line.
   "$pack_tool" build "$src/assets/samples/teaset.ini" -o "$work/model.swpack" > /dev/null || fail "build"
   "$walker" --pack "$work/model.swpack" --headless 320x240 --orbit --frames 8 \
     --png-dir "$work/png" --png-every 4 --stats "$work/stats.json" || fail "walk"
@@ -52,6 +53,19 @@ seams)
   for f in "$work/png"/frame_*.png; do
     "$compare" --coverage "$f" 0.02 || fail "the model is not in $f"
   done
+  # A still camera re-tessellates nothing after the first frame (the cache
+  # holds every surface at a valid bound), and uploads nothing.
+  printf '0 0.4 1.2 3.2 0.25 0.35 0.4 0 1 0\n1 0.4 1.2 3.2 0.25 0.35 0.4 0 1 0\n' > "$work/still.path"
+  "$walker" --pack "$work/model.swpack" --headless 320x240 --path "$work/still.path" --frames 8 \
+    --stats "$work/still.json" > /dev/null || fail "walk, still camera"
+  python3 - "$work/still.json" <<'EOF' || fail "still camera"
+import json, sys
+c = json.load(open(sys.argv[1]))["cache"]
+print("still camera: %d surfaces tessellated in 8 frames, %d frames without, %d bytes uploaded"
+      % (c["retessellated"]["total"], c["frames_without_retess"], c["upload_bytes"]["total"]))
+assert c["retessellated"]["total"] == c["retessellated"]["max"] > 0, "tessellated after frame 0"
+assert c["frames_without_retess"] == 7 and c["upload_bytes"]["total"] == c["upload_bytes"]["max"]
+EOF
   expect_failure 1 "has no Seam Graph" "$walker" --pack "$src/tests/fuzz/corpus/pack/seed-sample" \
     --headless 64x64 --orbit --frames 1
   # Far away whole patches vanish: 300 model sizes off (two or three pixels),
