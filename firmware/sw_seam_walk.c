@@ -112,7 +112,7 @@ static int still_valid(const sw_seam_entry *e, float t, double b)
  * of the bound: a few times farther). Then the target: kept while valid,
  * else the bound's level; out of view, kept while the cache holds a mesh
  * (its seams stay where they were), else as coarse as the hierarchy goes. */
-static void cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
+static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
 {
     const sw_pack_surface *ps = &w->pack->surfaces[s];
     double depth = INFINITY;
@@ -142,7 +142,10 @@ static void cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
     } else if (e->state != SW_SEAM_READY) {
         w->target[s] = SW_SEAM_INVISIBLE_BOUND;
     }
-    w->seam_bound[s] = w->target[s] * (float)SW_SEAM_SHARE;
+    float seam = w->target[s] * (float)SW_SEAM_SHARE;
+    int changed = seam != w->seam_bound[s];
+    w->seam_bound[s] = seam;
+    return changed;
 }
 
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
@@ -150,14 +153,21 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
 {
     memset(frame, 0, sizeof *frame);
     uint32_t n = w->pack->seam.surface_count;
+    int changed = w->frame == 0;
     for (uint32_t s = 0; s < n; s++) {
-        cull_surface(w, view, s);
+        changed |= cull_surface(w, view, s);
         frame->visible_surfaces += w->visible[s] != 0;
     }
-    sw_seam_update_result r;
-    sw_status st = sw_seam_select_update(&w->select, w->seam_bound, 0, &r, err);
-    if (st != SW_OK)
-        return st;
+    /* The update is complete (no operation cap) and depends on the bounds
+     * alone, so with no bound changed the front already meets them: a
+     * still camera, or one whose surfaces all keep their tessellations,
+     * skips the pass over the whole graph. */
+    if (changed) {
+        sw_seam_update_result r;
+        sw_status st = sw_seam_select_update(&w->select, w->seam_bound, 0, &r, err);
+        if (st != SW_OK)
+            return st;
+    }
     for (uint32_t s = 0; s < n; s++)
         w->dirty[s] |= (uint8_t)sw_seam_select_surface_changed(&w->select, s);
     sw_seam_select_clear_changed(&w->select);

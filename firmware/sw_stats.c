@@ -146,28 +146,29 @@ static void write_store(FILE *f, const sw_stats *s)
     fputs("},\n", f);
 }
 
-/* The cache's figures; draw_only is frame_ms less tess_ms, per frame: what
- * drawing the same cached triangles costs without tessellating. */
+/* The cache's figures; without_tess is frame_ms less tess_ms, per frame:
+ * what the frame costs with the same cached triangles and no tessellating
+ * (culling, seam selection, drawing, glFinish). */
 static sw_status write_cache(FILE *f, const sw_stats *s, sw_arena *scratch)
 {
     int n = s->frames;
     float *tess = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
-    float *draw = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *rest = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
     float *count = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
-    if (!tess || !draw || !count)
+    if (!tess || !rest || !count)
         return SW_ERR_NO_MEMORY;
     for (int i = 0; i < n; i++) {
         tess[i] = s->tess_ms[i];
-        draw[i] = s->frame_ms[i] - s->tess_ms[i];
+        rest[i] = s->frame_ms[i] - s->tess_ms[i];
         count[i] = (float)s->retess[i];
     }
-    sw_percentiles t = sw_percentiles_of(tess, n), d = sw_percentiles_of(draw, n);
+    sw_percentiles t = sw_percentiles_of(tess, n), d = sw_percentiles_of(rest, n);
     sw_percentiles c = sw_percentiles_of(count, n);
     fprintf(f, "  \"cache\": {\"retessellated\": {\"p50\": %.0f, \"max\": %.0f, \"total\": %llu}, "
                "\"frames_without_retess\": %d, \"retess_triangles\": {\"max\": %llu, "
                "\"total\": %llu}, \"upload_bytes\": {\"max\": %llu, \"total\": %llu}, "
                "\"evictions\": %llu, \"tess_ms\": {\"p50\": %.3f, \"max\": %.3f}, "
-               "\"draw_only_ms\": {\"p50\": %.3f, \"p99\": %.3f}},\n",
+               "\"without_tess_ms\": {\"p50\": %.3f, \"p99\": %.3f}},\n",
             c.p50, c.max, (unsigned long long)s->retess_total, s->frames_without_retess,
             (unsigned long long)s->retess_triangles_max,
             (unsigned long long)s->retess_triangles_total,
