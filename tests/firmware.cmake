@@ -70,3 +70,7 @@ if(NOT SW_ASAN AND NOT SW_TSAN)
             $<TARGET_FILE:seamwalk> $<TARGET_FILE:process_alloc_shim> ${SW_SAMPLES}
     WORKING_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
 endif()
+
+# The tessellation cache, and runtime_bytes holding the pack and the walk.
+sw_add_test(test_seam_cache SOURCES test_seam_cache.c LIBS sw_runtime
+            ARGS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack/seed-seam-graph)

@@ -1,0 +1,114 @@
+/* The tessellation cache (core/sw_seam_cache.h) and the walk's memory
+ * (core/sw_walk_memory.h):
+ * - meshes get blocks that never overlap, a surface's new mesh replaces its
+ *   old one, the least recently drawn evictable surface goes first, a
+ *   surface marked not evictable is never evicted, and a mesh that cannot
+ *   fit leaves its surface EMPTY;
+ * - a pack's runtime_bytes holds the loaded pack and the whole seam walk
+ *   (sw_seam_walk_init), with little to spare: the figure is the memory. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "sw_pack.h"
+#include "sw_seam_cache.h"
+#include "sw_seam_walk.h"
+#include "sw_test.h"
+#include "sw_walk_memory.h"
+
+static unsigned char block[1 << 22] __attribute__((aligned(64)));
+
+static void init(sw_seam_cache *c, sw_arena *a, uint32_t surfaces, uint32_t vertices)
+{
+    sw_arena_init(a, block, sizeof block);
+    SW_CHECK(sw_seam_cache_init(c, surfaces, vertices, 6 * vertices, a, NULL) == SW_OK);
+    SW_CHECK(a->used <= sw_seam_cache_arena_bytes(surfaces, vertices, 6 * vertices));
+}
+
+static void test_meshes_get_their_own_blocks(void)
+{
+    sw_arena a;
+    sw_seam_cache c;
+    init(&c, &a, 4, 1024);
+    uint8_t evictable[4] = { 1, 1, 1, 1 };
+    SW_CHECK(sw_seam_cache_place(&c, 0, 300, 900, evictable));
+    SW_CHECK(sw_seam_cache_place(&c, 1, 100, 300, evictable));
+    uint32_t v0 = sw_seam_cache_first_vertex(&c, 0), v1 = sw_seam_cache_first_vertex(&c, 1);
+    SW_CHECK(v0 + 300 <= v1 || v1 + 100 <= v0);
+    SW_CHECK(c.entries[0].state == SW_SEAM_READY && c.entries[0].vertex_count == 300);
+    /* A new mesh for surface 1 gives its old blocks back first. */
+    SW_CHECK(sw_seam_cache_place(&c, 1, 200, 600, evictable));
+    SW_CHECK(c.evictions == 0 && c.entries[0].state == SW_SEAM_READY);
+    sw_seam_cache_drop(&c, 1);
+    SW_CHECK(c.entries[1].state == SW_SEAM_EMPTY);
+    SW_CHECK(c.vertex_pool.used_units == 512 / SW_SEAM_CACHE_VERTEX_UNIT);
+}
+
+static void test_least_recently_drawn_goes_first(void)
+{
+    sw_arena a;
+    sw_seam_cache c;
+    init(&c, &a, 4, 1024);
+    uint8_t evictable[4] = { 1, 1, 1, 1 };
+    for (uint32_t s = 0; s < 4; s++) {
+        SW_CHECK(sw_seam_cache_place(&c, s, 256, 256, evictable));
+        c.entries[s].last_frame = 10 - s; /* 3 was drawn longest ago */
+    }
+    SW_CHECK(sw_seam_cache_place(&c, 0, 256 + 64, 256, evictable)); /* needs a block of 512 */
+    SW_CHECK(c.evictions >= 1 && c.entries[0].state == SW_SEAM_READY);
+    /* 3 and 2 are the oldest; surface 0's old block was its own */
+    SW_CHECK(c.entries[3].state == SW_SEAM_EMPTY);
+    SW_CHECK(c.entries[1].state == SW_SEAM_READY);
+}
+
+static void test_surfaces_in_view_are_never_evicted(void)
+{
+    sw_arena a;
+    sw_seam_cache c;
+    init(&c, &a, 3, 512);
+    uint8_t all[3] = { 1, 1, 1 }, none[3] = { 0, 0, 0 };
+    SW_CHECK(sw_seam_cache_place(&c, 0, 256, 256, all));
+    SW_CHECK(sw_seam_cache_place(&c, 1, 256, 256, all));
+    SW_CHECK(!sw_seam_cache_place(&c, 2, 256, 256, none));
+    SW_CHECK(c.entries[2].state == SW_SEAM_EMPTY && c.evictions == 0);
+    SW_CHECK(c.entries[0].state == SW_SEAM_READY && c.entries[1].state == SW_SEAM_READY);
+    SW_CHECK(!sw_seam_cache_place(&c, 2, 5000, 256, all)); /* larger than the pool */
+    SW_CHECK(c.entries[2].state == SW_SEAM_EMPTY);
+}
+
+/* The fuzz seed with a Seam Graph: loaded and walked in an arena of exactly
+ * its runtime_bytes. */
+static void test_runtime_bytes_hold_pack_and_walk(const char *seed)
+{
+    sw_pack_header h;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_read_header(seed, &h, &err) == SW_OK, "%s", err.message);
+    unsigned char *mem = malloc((size_t)h.runtime_bytes);
+    SW_CHECK(mem != NULL);
+    if (!mem)
+        return;
+    sw_arena a;
+    sw_arena_init(&a, mem, (size_t)h.runtime_bytes);
+    sw_pack pack;
+    SW_CHECK_MSG(sw_pack_load(seed, &a, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.seam_header != NULL);
+    sw_seam_walk w;
+    SW_CHECK_MSG(sw_seam_walk_init(&w, &pack, &a, 0.5, &err) == SW_OK, "%s", err.message);
+    uint64_t walk = sw_walk_arena_bytes(&pack.seam, pack.surfaces);
+    SW_CHECK(a.used <= h.runtime_bytes);
+    SW_CHECK_MSG(h.runtime_bytes - a.used < 16384 && walk > (uint64_t)SW_WALK_CACHE_VERTICES * 24,
+                 "runtime_bytes %llu, used %zu, walk %llu", (unsigned long long)h.runtime_bytes,
+                 a.used, (unsigned long long)walk);
+    free(mem);
+}
+
+int main(int argc, char **argv)
+{
+    SW_RUN(test_meshes_get_their_own_blocks);
+    SW_RUN(test_least_recently_drawn_goes_first);
+    SW_RUN(test_surfaces_in_view_are_never_evicted);
+    if (argc == 2)
+        test_runtime_bytes_hold_pack_and_walk(argv[1]);
+    else
+        SW_CHECK_MSG(0, "usage: test_seam_cache SEED_WITH_SEAM_GRAPH");
+    return sw_test_finish();
+}
