@@ -12,7 +12,8 @@
  * Tessellate once (paper 6.4): a surface's tessellation is kept in the
  * cache (sw_seam_cache.h, and the same layout in GL buffers, sw_gl_pool.h)
  * with the bound it was made for, t. It stays valid while the view's bound b
- * lies in [t, 2 t]: finer than needed by at most 2x, never coarser. When b
+ * lies in [t, 1.6 t]: finer than needed by at most 1.6x, never coarser
+ * (SW_SEAM_KEEP in the .c says why 1.6). When b
  * leaves that range the surface gets a new t, b rounded down to a power of
  * sqrt 2 (so neighbours at similar depths share levels and their seams do
  * not move every frame), and is tessellated again. The seams are selected
