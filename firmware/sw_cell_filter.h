@@ -2,9 +2,10 @@
  * (sw_pack_trim_mask: 32 x 32 cells of the patch's domain that touch the
  * trimmed face). A grid cell is kept when it overlaps any set mask cell, so
  * the filter is as conservative as the mask: nothing of the face is lost,
- * and what is drawn beyond the trim is at most one mask cell wide. Exact
- * trimmed tessellation comes with the Seam Graph. Used by the frame loop and
- * by the measurement; no allocation. */
+ * and what is drawn beyond the trim is at most one mask cell wide. The
+ * runtime draws through the Seam Graph (exact trims) and no longer uses it:
+ * it stays for the uniform-grid baseline of the walkthrough benchmark
+ * (issue 10). No allocation. */
 #ifndef SW_CELL_FILTER_H
 #define SW_CELL_FILTER_H
 
