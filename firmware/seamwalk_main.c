@@ -123,6 +123,7 @@ static sw_status init_seams(runtime *rt, sw_error *err)
     rt->stats.seam_active_min = UINT32_MAX;
     sw_status st = sw_seam_walk_init(&rt->seam, &rt->pack, &rt->arena, rt->opt.max_error_px, err);
     rt->walk_bytes = rt->arena.used - before;
+    rt->seam.no_cache = rt->opt.no_cache;
     return st;
 }
 

@@ -159,6 +159,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         } else if (!strcmp(a, "--orbit")) {
             o->orbit = 1;
             takes_value = 0;
+        } else if (!strcmp(a, "--no-cache")) {
+            o->no_cache = 1;
+            takes_value = 0;
         } else if (!v) {
             return sw_error_set(err, SW_ERR_ARG, "%s: unknown option or missing value", a);
         } else if (!strcmp(a, "--config")) {
@@ -212,7 +215,7 @@ void sw_options_print_usage(const char *argv0)
             "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--config FILE]\n"
+            "          [--config FILE] [--no-cache]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --config FILE       read the unit's configuration (example, every key and its\n"
             "                      default: firmware/seamwalk.ini); its values fill what the\n"
@@ -232,6 +235,9 @@ void sw_options_print_usage(const char *argv0)
             "  --keys FILE         trusted public keys for --store (default DIR/keys)\n"
             "  --boot-attempts K   boots a pending slot gets before falling back (default 3)\n"
             "  --good-after-s S    walk time of healthy frames before a pending slot is\n"
-            "                      marked good (default 30)\n",
+            "                      marked good (default 30)\n"
+            "  --no-cache          tessellate every visible surface every frame at its exact\n"
+            "                      bound, keeping nothing: the baseline the cache is measured\n"
+            "                      against (tests/bench/walk_cache_bench.sh), not for units\n",
             argv0);
 }

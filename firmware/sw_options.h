@@ -13,6 +13,8 @@ typedef struct sw_options {
     int width, height;           /* from --headless WxH */
     const char *path_file;       /* --path FILE, or NULL with orbit set */
     int orbit;
+    int no_cache;                /* --no-cache: tessellate every visible surface every frame at
+                                    its exact bound (the benchmarks' baseline) */
     const char *view_name;       /* --view NAME: a still from the pack's named viewpoint */
     int frames;                  /* default 120 */
     const char *png_dir;         /* NULL: no pictures */

@@ -75,6 +75,8 @@ typedef struct sw_seam_walk {
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
     uint32_t frame;               /* frames selected so far */
+    int no_cache;                 /* every visible surface remade every frame at its exact
+                                     bound: the benchmarks' baseline */
 } sw_seam_walk;
 
 typedef struct sw_seam_frame {
