@@ -94,7 +94,8 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
                             "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
     sw_arena_init(&w->scratch, scratch, scratch_bytes);
     for (size_t k = 0; k < n; k++)
-        w->target[k] = SW_SEAM_INVISIBLE_BOUND;
+        w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0;
+    memset(w->dirty, 0, n);
     st = sw_seam_cache_init(&w->cache, (uint32_t)n, SW_WALK_CACHE_VERTICES, SW_WALK_CACHE_INDICES,
                             arena, err);
     return st != SW_OK ? st : measure_sewing(w, err);
