@@ -116,6 +116,26 @@ static int still_valid(const sw_seam_entry *e, float t, double b)
     return e->state != SW_SEAM_EMPTY && t <= b && b <= SW_SEAM_KEEP * t;
 }
 
+/* Surface s's target for this frame's bound (0 out of view) and its seams'
+ * share; 1 when that share changed. */
+static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
+{
+    const sw_seam_entry *e = &w->cache.entries[s];
+    if (w->visible[s] == 1) {
+        bound = fmax(bound, (double)w->bound_floor);
+        if (w->no_cache)
+            w->target[s] = (float)bound;
+        else if (!still_valid(e, w->target[s], bound))
+            w->target[s] = level_of(bound);
+    } else if (e->state != SW_SEAM_READY) {
+        w->target[s] = SW_SEAM_INVISIBLE_BOUND;
+    }
+    float seam = w->target[s] * (float)SW_SEAM_SHARE;
+    int changed = seam != w->seam_bound[s];
+    w->seam_bound[s] = seam;
+    return changed;
+}
+
 /* Visible when any of its patches' boxes is; depth the nearest of those.
  * A visible surface whose whole box fits within its bound is too small to
  * draw: leaving it out is within the bound (the paper's vanishing patch,
@@ -145,20 +165,7 @@ static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
     if (w->visible[s] && sw_v3_length(sw_v3_sub(all.max, all.min)) <= bound)
         w->visible[s] = SW_SEAM_WALK_TINY;
     w->evictable[s] = w->visible[s] != 1;
-    const sw_seam_entry *e = &w->cache.entries[s];
-    if (w->visible[s] == 1) {
-        bound = fmax(bound, (double)w->bound_floor);
-        if (w->no_cache)
-            w->target[s] = (float)bound;
-        else if (!still_valid(e, w->target[s], bound))
-            w->target[s] = level_of(bound);
-    } else if (e->state != SW_SEAM_READY) {
-        w->target[s] = SW_SEAM_INVISIBLE_BOUND;
-    }
-    float seam = w->target[s] * (float)SW_SEAM_SHARE;
-    int changed = seam != w->seam_bound[s];
-    w->seam_bound[s] = seam;
-    return changed;
+    return choose_target(w, s, bound);
 }
 
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
