@@ -2,26 +2,30 @@
  * tessellator, on the Newell teaset and on a grid of random bicubic patches,
  * at the same object-space tolerance (a fraction of the model's size).
  *
- * Both sides produce positions and normals. seamwalk: sw_tess_segments_for_error
- * + sw_tess_grid per patch, timed; the second-derivative bounds are computed
- * before timing because the pack builder stores them (the runtime never
- * recomputes them). GLU: GLU_NURBS_TESSELLATOR mode with
- * GLU_OBJECT_PARAMETRIC_ERROR sampling, triangles counted in the callbacks,
- * normals generated because a normal callback is set (GLU's surface evaluator
- * turns auto-normals on exactly then). GLU needs a desktop compatibility
- * context (it pushes GL_EVAL_BIT), which sw_egl_headless provides headless.
+ * Both sides produce positions and normals, and both are timed for the whole
+ * work from control points to triangles. seamwalk: the second-derivative
+ * bounds (sw_bezier_second_deriv_bounds), sw_tess_segments_for_error and
+ * sw_tess_grid per patch. The pack builder stores the bounds, so the runtime
+ * never computes them: a second line gives seamwalk's time without them,
+ * labelled as such. GLU (bench_glu.h): GLU_NURBS_TESSELLATOR mode with
+ * GLU_OBJECT_PARAMETRIC_ERROR sampling, triangles counted in the callbacks.
+ *
+ * Each side's achieved error is measured, outside the timed runs and
+ * independently of its own claims (bench_error.h): every output triangle's
+ * vertices, edge midpoints and centroid against the exact patch at the same
+ * (u, v); seamwalk's (u, v) come from the grid, GLU's from a texture-coordinate
+ * map holding the identity that rides along in a separate, untimed run (whose
+ * triangle count must equal the timed one's).
  *
  * Usage: tess_bench [--quick] [--repeats N] [--json FILE] [--samples DIR]
  * Prints figures; never fails on timing, only when a side cannot run. */
-#define _GNU_SOURCE   /* clock_gettime */
-#include <GL/gl.h>
-#include <GL/glu.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "bench_error.h"
+#include "bench_glu.h"
 #include "sw_bezier.h"
 #include "sw_egl_headless.h"
 #include "sw_import_newell.h"
@@ -37,7 +41,7 @@ enum { MAX_REPEATS = 31, MAX_RESULTS = 16 };
 /* One bicubic patch in both forms the two tessellators take. */
 typedef struct bench_patch {
     float ctrl[64];            /* sw_bezier_patch layout: (j * 4 + i) * 4 + xyzw */
-    sw_deriv_bounds bounds;
+    sw_deriv_bounds bounds;    /* for the stored-bounds line only */
 } bench_patch;
 
 typedef struct bench_model {
@@ -50,6 +54,7 @@ typedef struct bench_model {
 typedef struct timing {
     double median_s, min_s, max_s;
     uint64_t triangles, normals, capped;
+    double error;              /* measured max error (bench_error.h) */
 } timing;
 
 typedef struct result {
@@ -57,6 +62,7 @@ typedef struct result {
     size_t patches;
     double size, tol_rel, tol_abs;
     timing sw, glu;
+    timing sw_stored;          /* seamwalk with the bounds precomputed, as packs store them */
 } result;
 
 typedef struct options {
@@ -64,13 +70,6 @@ typedef struct options {
     const char *json_path;
     const char *samples;
 } options;
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* ---- models ---------------------------------------------------------------- */
 
@@ -179,13 +178,28 @@ typedef struct sw_buffers {
     uint16_t *indices;
 } sw_buffers;
 
-static void run_seamwalk(const bench_model *m, double tol, const sw_buffers *b, timing *t)
+/* The bounds from the float patch, the one both tessellators see. */
+static sw_deriv_bounds patch_bounds(const bench_patch *p)
+{
+    double exact[64];
+    sw_bezier_patchf pf = {3, 3, 0, p->ctrl};
+    sw_bezier_patch pd = sw_bezier_patch_from_float(&pf, exact);
+    sw_deriv_bounds b = {0, 0, 0};
+    sw_bezier_second_deriv_bounds(&pd, &b, NULL); /* checked when the model was made */
+    return b;
+}
+
+/* One run over the model; stored_bounds 0 computes each patch's bounds as
+ * part of the work, 1 takes the ones add_patch computed. */
+static void run_seamwalk(const bench_model *m, double tol, int stored_bounds, const sw_buffers *b,
+                         timing *t)
 {
     uint64_t tris = 0, capped = 0, normals = 0;
     for (size_t i = 0; i < m->count; i++) {
         const bench_patch *p = &m->patches[i];
+        sw_deriv_bounds bounds = stored_bounds ? p->bounds : patch_bounds(p);
         uint32_t nu, nv;
-        capped += !sw_tess_segments_for_error(&p->bounds, tol, &nu, &nv);
+        capped += !sw_tess_segments_for_error(&bounds, tol, &nu, &nv);
         sw_bezier_patchf pf = { 3, 3, 0, p->ctrl };
         sw_tess_grid(&pf, nu, nv, 0, b->verts, b->indices);
         tris += 2ull * nu * nv;
@@ -196,154 +210,144 @@ static void run_seamwalk(const bench_model *m, double tol, const sw_buffers *b, 
     t->capped = capped;
 }
 
+/* Vertex k of an nu x nv grid sits at (k mod (nu + 1), k div (nu + 1)). */
+static double grid_error(const sw_bezier_patchf *pf, uint32_t nu, uint32_t nv,
+                         const sw_buffers *b)
+{
+    double worst = 0;
+    for (uint32_t t = 0; t < 2 * nu * nv; t++) {
+        float p[3][3], uv[3][2];
+        for (int k = 0; k < 3; k++) {
+            uint32_t v = b->indices[3 * t + (uint32_t)k];
+            memcpy(p[k], b->verts[v].pos, sizeof p[k]);
+            uv[k][0] = (float)(v % (nu + 1)) / (float)nu;
+            uv[k][1] = (float)(v / (nu + 1)) / (float)nv;
+        }
+        worst = fmax(worst, bench_triangle_error(p, uv, bench_patchf_at, pf));
+    }
+    return worst;
+}
+
+static double measure_seamwalk(const bench_model *m, double tol, const sw_buffers *b)
+{
+    double worst = 0;
+    for (size_t i = 0; i < m->count; i++) {
+        sw_deriv_bounds bounds = patch_bounds(&m->patches[i]);
+        uint32_t nu, nv;
+        sw_tess_segments_for_error(&bounds, tol, &nu, &nv);
+        sw_bezier_patchf pf = {3, 3, 0, m->patches[i].ctrl};
+        sw_tess_grid(&pf, nu, nv, 0, b->verts, b->indices);
+        worst = fmax(worst, grid_error(&pf, nu, nv, b));
+    }
+    return worst;
+}
+
 /* ---- GLU ------------------------------------------------------------------- */
 
-typedef struct glu_counter {
-    GLenum type;
-    uint64_t run, vertices, normals, triangles;
-    GLenum error;
-    float sink;                /* touches the data, as a real consumer would */
-} glu_counter;
-
-static uint64_t triangles_in(GLenum type, uint64_t n)
-{
-    switch (type) {
-    case GL_TRIANGLES: return n / 3;
-    case GL_TRIANGLE_STRIP:
-    case GL_TRIANGLE_FAN:
-    case GL_POLYGON: return n >= 3 ? n - 2 : 0;
-    case GL_QUAD_STRIP: return n >= 4 ? 2 * ((n - 2) / 2) : 0;
-    case GL_QUADS: return 2 * (n / 4);
-    default: return 0;   /* points and lines (trim curves) are not surface */
-    }
-}
-
-static void GLAPIENTRY glu_begin(GLenum type, void *data)
-{
-    glu_counter *c = data;
-    c->type = type;
-    c->run = 0;
-}
-
-static void GLAPIENTRY glu_vertex(GLfloat *v, void *data)
-{
-    glu_counter *c = data;
-    c->run++;
-    c->vertices++;
-    c->sink += v[0];
-}
-
-static void GLAPIENTRY glu_normal(GLfloat *n, void *data)
-{
-    glu_counter *c = data;
-    c->normals++;
-    c->sink += n[2];
-}
-
-static void GLAPIENTRY glu_end(void *data)
-{
-    glu_counter *c = data;
-    c->triangles += triangles_in(c->type, c->run);
-}
-
-static void GLAPIENTRY glu_error(GLenum code, void *data)
-{
-    glu_counter *c = data;
-    c->error = code;
-}
-
-/* A fresh tessellator per run, so no setting or cache carries over. */
-static GLUnurbs *glu_create(double tol, glu_counter *c)
-{
-    GLUnurbs *nurb = gluNewNurbsRenderer();
-    if (!nurb)
-        return NULL;
-    gluNurbsProperty(nurb, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR);
-    gluNurbsProperty(nurb, GLU_SAMPLING_METHOD, GLU_OBJECT_PARAMETRIC_ERROR);
-    gluNurbsProperty(nurb, GLU_PARAMETRIC_TOLERANCE, (GLfloat)tol);
-    /* Object-space sampling already turned GLU_AUTO_LOAD_MATRIX off and the
-     * sampling matrix to identity; loading matrices here would rescale it. */
-    gluNurbsProperty(nurb, GLU_CULLING, GL_FALSE);
-    gluNurbsCallbackData(nurb, c);
-    /* _GLUfuncptr is void (*)(void), which GCC lets any function pointer become. */
-    gluNurbsCallback(nurb, GLU_NURBS_BEGIN_DATA, (_GLUfuncptr)glu_begin);
-    gluNurbsCallback(nurb, GLU_NURBS_VERTEX_DATA, (_GLUfuncptr)glu_vertex);
-    gluNurbsCallback(nurb, GLU_NURBS_NORMAL_DATA, (_GLUfuncptr)glu_normal);
-    gluNurbsCallback(nurb, GLU_NURBS_END_DATA, (_GLUfuncptr)glu_end);
-    gluNurbsCallback(nurb, GLU_NURBS_ERROR, (_GLUfuncptr)glu_error);
-    return nurb;
-}
-
 /* A Bezier patch is a NURBS patch with knots {0,0,0,0,1,1,1,1}. Our layout
- * steps 4 floats along u and 16 along v; GL_MAP2_VERTEX_3 reads x, y, z. */
-static void run_glu(const bench_model *m, GLUnurbs *nurb)
+ * steps 4 floats along u and 16 along v; GL_MAP2_VERTEX_3 reads x, y, z.
+ * tex_uv: also the identity map for capturing runs (NULL: none). */
+static void glu_patch(GLUnurbs *nurb, const bench_patch *p, GLfloat *tex_uv)
 {
     static GLfloat knots[8] = { 0, 0, 0, 0, 1, 1, 1, 1 };
-    for (size_t i = 0; i < m->count; i++) {
-        gluBeginSurface(nurb);
-        gluNurbsSurface(nurb, 8, knots, 8, knots, 4, 16, (GLfloat *)m->patches[i].ctrl, 4, 4,
-                        GL_MAP2_VERTEX_3);
-        gluEndSurface(nurb);
+    gluBeginSurface(nurb);
+    if (tex_uv)
+        gluNurbsSurface(nurb, 8, knots, 8, knots, 2, 8, tex_uv, 4, 4, GL_MAP2_TEXTURE_COORD_2);
+    gluNurbsSurface(nurb, 8, knots, 8, knots, 4, 16, (GLfloat *)p->ctrl, 4, 4, GL_MAP2_VERTEX_3);
+    gluEndSurface(nurb);
+}
+
+static void run_glu(const bench_model *m, GLUnurbs *nurb)
+{
+    for (size_t i = 0; i < m->count; i++)
+        glu_patch(nurb, &m->patches[i], NULL);
+}
+
+/* The patch GLU is tessellating in a capturing run and the worst error yet. */
+typedef struct glu_probe {
+    const bench_patch *patch;
+    double worst;
+} glu_probe;
+
+static void probe_triangle(void *user, const float p[3][3], const float uv[3][2])
+{
+    glu_probe *probe = user;
+    sw_bezier_patchf pf = {3, 3, 0, probe->patch->ctrl};
+    double e = bench_triangle_error(p, uv, bench_patchf_at, &pf);
+    probe->worst = fmax(probe->worst, e);
+}
+
+/* The measured error of GLU at tol; 0 (and a message) when GLU fails or its
+ * capturing run gives another triangle count than expect_tris. */
+static int measure_glu(const bench_model *m, double tol, uint64_t expect_tris, double *error)
+{
+    /* The identity in Bernstein form: control point (i, j) at (i/3, j/3). */
+    GLfloat tex[32];
+    for (int j = 0; j < 4; j++)
+        for (int i = 0; i < 4; i++)
+            tex[(j * 4 + i) * 2] = (GLfloat)i / 3, tex[(j * 4 + i) * 2 + 1] = (GLfloat)j / 3;
+    glu_probe probe = {NULL, 0};
+    bench_glu g;
+    if (!bench_glu_open(&g, tol, probe_triangle, &probe)) {
+        fprintf(stderr, "gluNewNurbsRenderer failed\n");
+        return 0;
     }
+    for (size_t i = 0; i < m->count; i++) {
+        probe.patch = &m->patches[i];
+        glu_patch(g.nurb, probe.patch, tex);
+    }
+    const char *problem = bench_glu_problem(&g);
+    uint64_t tris = g.triangles;
+    bench_glu_close(&g);
+    if (!problem && tris != expect_tris)
+        problem = "the capturing run's triangle count differs from the timed runs'";
+    if (problem) {
+        fprintf(stderr, "%s: GLU: %s\n", m->name, problem);
+        return 0;
+    }
+    *error = probe.worst;
+    return 1;
 }
 
 /* ---- measurement ------------------------------------------------------------ */
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static void summarise(double *s, int n, timing *t)
-{
-    qsort(s, (size_t)n, sizeof *s, cmp_double);
-    t->min_s = s[0];
-    t->max_s = s[n - 1];
-    t->median_s = n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
-}
-
-static void time_seamwalk(const bench_model *m, double tol, int repeats, const sw_buffers *b,
-                          timing *t)
+static void time_seamwalk(const bench_model *m, double tol, int repeats, int stored_bounds,
+                          const sw_buffers *b, timing *t)
 {
     double s[MAX_REPEATS];
     for (int r = 0; r < repeats; r++) {
-        double t0 = now_s();
-        run_seamwalk(m, tol, b, t);
-        s[r] = now_s() - t0;
+        double t0 = bench_now_s();
+        run_seamwalk(m, tol, stored_bounds, b, t);
+        s[r] = bench_now_s() - t0;
     }
-    summarise(s, repeats, t);
+    bench_spread sp = bench_summarise(s, repeats);
+    t->median_s = sp.median_s, t->min_s = sp.min_s, t->max_s = sp.max_s;
 }
 
 static int time_glu(const bench_model *m, double tol, int repeats, timing *t)
 {
     double s[MAX_REPEATS];
     for (int r = 0; r < repeats; r++) {
-        glu_counter c = { 0 };
-        GLUnurbs *nurb = glu_create(tol, &c);
-        if (!nurb) {
+        bench_glu g;
+        if (!bench_glu_open(&g, tol, NULL, NULL)) {
             fprintf(stderr, "gluNewNurbsRenderer failed\n");
             return 0;
         }
-        double t0 = now_s();
-        run_glu(m, nurb);
-        s[r] = now_s() - t0;
-        gluDeleteNurbsRenderer(nurb);
-        if (c.error) {
-            fprintf(stderr, "GLU NURBS error %u: %s\n", (unsigned)c.error,
-                    (const char *)gluErrorString(c.error));
+        double t0 = bench_now_s();
+        run_glu(m, g.nurb);
+        s[r] = bench_now_s() - t0;
+        const char *problem = bench_glu_problem(&g);
+        bench_glu_close(&g);
+        if (problem) {
+            fprintf(stderr, "%s: GLU: %s\n", m->name, problem);
             return 0;
         }
-        t->triangles = c.triangles;
-        t->normals = c.normals;
+        t->triangles = g.triangles;
+        t->normals = g.normals;
         t->capped = 0;
-        if (c.normals != c.vertices) {
-            fprintf(stderr, "GLU gave %llu normals for %llu vertices\n",
-                    (unsigned long long)c.normals, (unsigned long long)c.vertices);
-            return 0;
-        }
     }
-    summarise(s, repeats, t);
+    bench_spread sp = bench_summarise(s, repeats);
+    t->median_s = sp.median_s, t->min_s = sp.min_s, t->max_s = sp.max_s;
     return 1;
 }
 
@@ -352,10 +356,12 @@ static double mtri_per_s(const timing *t)
     return t->median_s > 0 ? (double)t->triangles / t->median_s * 1e-6 : 0.0;
 }
 
-static void print_timing(const char *name, const timing *t)
+static void print_timing(const char *name, const timing *t, double tol)
 {
-    printf("  %-9s triangles %10llu  median %.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s",
-           name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s, mtri_per_s(t));
+    printf("  %-9s triangles %10llu  median %.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s"
+           "  measured error %.3g (%.2f x tolerance)",
+           name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s,
+           mtri_per_s(t), t->error, t->error / tol);
     if (t->capped)
         printf("  [%llu patches capped at %u segments]", (unsigned long long)t->capped,
                SW_TESS_MAX_SEGMENTS);
@@ -366,12 +372,19 @@ static void print_result(const result *r)
 {
     printf("%s (%zu patches, size %.4g), tolerance %.0e of size = %.4g\n", r->model, r->patches,
            r->size, r->tol_rel, r->tol_abs);
-    print_timing("seamwalk", &r->sw);
-    print_timing("glu", &r->glu);
+    print_timing("seamwalk", &r->sw, r->tol_abs);
+    print_timing("glu", &r->glu, r->tol_abs);
     double mt = mtri_per_s(&r->glu) > 0 ? mtri_per_s(&r->sw) / mtri_per_s(&r->glu) : 0.0;
     double tr = r->glu.triangles ? (double)r->sw.triangles / (double)r->glu.triangles : 0.0;
     double ti = r->glu.median_s > 0 ? r->sw.median_s / r->glu.median_s : 0.0;
-    printf("  ratio seamwalk/GLU: Mtri/s %.2f, triangles %.2f, time %.3f\n", mt, tr, ti);
+    printf("  ratio seamwalk/GLU: Mtri/s %.2f, triangles %.2f, time %.3f"
+           "  (measured error: seamwalk %.3g, GLU %.3g)\n",
+           mt, tr, ti, r->sw.error, r->glu.error);
+    const timing *st = &r->sw_stored;
+    printf("  bounds precomputed (as packs store them, not the whole work): seamwalk median "
+           "%.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s, time ratio to GLU %.3f\n",
+           st->median_s, st->min_s, st->max_s, mtri_per_s(st),
+           r->glu.median_s > 0 ? st->median_s / r->glu.median_s : 0.0);
 }
 
 /* ---- JSON ------------------------------------------------------------------ */
@@ -380,9 +393,10 @@ static void json_timing(FILE *f, const char *name, const timing *t, int last)
 {
     fprintf(f,
             "      \"%s\": {\"triangles\": %llu, \"median_s\": %.9f, \"min_s\": %.9f, "
-            "\"max_s\": %.9f, \"mtri_per_s\": %.4f, \"capped_patches\": %llu}%s\n",
+            "\"max_s\": %.9f, \"mtri_per_s\": %.4f, \"capped_patches\": %llu, "
+            "\"measured_error\": %.9g}%s\n",
             name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s,
-            mtri_per_s(t), (unsigned long long)t->capped, last ? "" : ",");
+            mtri_per_s(t), (unsigned long long)t->capped, t->error, last ? "" : ",");
 }
 
 static int write_json(const char *path, const options *o, const char *renderer, const result *r,
@@ -404,8 +418,11 @@ static int write_json(const char *path, const options *o, const char *renderer, 
                 r[i].tol_abs);
         json_timing(f, "seamwalk", &r[i].sw, 0);
         json_timing(f, "glu", &r[i].glu, 0);
-        fprintf(f, "      \"ratio_mtri_per_s\": %.4f\n    }%s\n",
-                glu_rate > 0 ? mtri_per_s(&r[i].sw) / glu_rate : 0.0, i + 1 < n ? "," : "");
+        json_timing(f, "seamwalk_bounds_precomputed", &r[i].sw_stored, 0);
+        fprintf(f, "      \"ratio_mtri_per_s\": %.4f, \"ratio_time\": %.4f\n    }%s\n",
+                glu_rate > 0 ? mtri_per_s(&r[i].sw) / glu_rate : 0.0,
+                r[i].glu.median_s > 0 ? r[i].sw.median_s / r[i].glu.median_s : 0.0,
+                i + 1 < n ? "," : "");
     }
     fprintf(f, "  ]\n}\n");
     int ok = !ferror(f);
@@ -455,13 +472,18 @@ static int bench_model_all(const bench_model *m, const options *o, const sw_buff
         result *r = &out[(*n)++];
         *r = (result){ .model = m->name, .patches = m->count, .size = m->size,
                        .tol_rel = tols[k], .tol_abs = tols[k] * m->size };
-        time_seamwalk(m, r->tol_abs, o->repeats, b, &r->sw);
+        time_seamwalk(m, r->tol_abs, o->repeats, 0, b, &r->sw);
+        time_seamwalk(m, r->tol_abs, o->repeats, 1, b, &r->sw_stored);
         if (!time_glu(m, r->tol_abs, o->repeats, &r->glu))
             return 0;
         if (!r->sw.triangles || !r->glu.triangles) {
             fprintf(stderr, "%s: a tessellator produced no triangles\n", m->name);
             return 0;
         }
+        r->sw.error = measure_seamwalk(m, r->tol_abs, b);
+        r->sw_stored.error = r->sw.error; /* the same triangles */
+        if (!measure_glu(m, r->tol_abs, r->glu.triangles, &r->glu.error))
+            return 0;
         print_result(r);
     }
     return 1;
