@@ -30,6 +30,13 @@ double bench_triangle_error(const float p[3][3], const float uv[3][2], bench_sur
     return worst;
 }
 
+double bench_uv_area(const float uv[3][2])
+{
+    double a = ((double)uv[1][0] - uv[0][0]) * ((double)uv[2][1] - uv[0][1]) -
+               ((double)uv[2][0] - uv[0][0]) * ((double)uv[1][1] - uv[0][1]);
+    return 0.5 * fabs(a);
+}
+
 sw_vec3 bench_patchf_at(const void *patch, double u, double v)
 {
     const sw_bezier_patchf *pf = patch;

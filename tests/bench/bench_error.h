@@ -22,6 +22,9 @@ typedef sw_vec3 (*bench_surface_at_fn)(const void *surface, double u, double v);
 double bench_triangle_error(const float p[3][3], const float uv[3][2], bench_surface_at_fn at,
                             const void *surface);
 
+/* The (u, v) area of a triangle, either orientation. */
+double bench_uv_area(const float uv[3][2]);
+
 /* A surface made of sw_trim_patch pieces (a view: nothing is copied). */
 typedef struct bench_trim_surface {
     const sw_trim_patch *patches;
