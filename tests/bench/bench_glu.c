@@ -1,6 +1,7 @@
 /* GLU's NURBS tessellator driven through callbacks: see bench_glu.h. */
 #include "bench_glu.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -157,5 +158,44 @@ const char *bench_glu_problem(const bench_glu *g)
         return "out of memory capturing GLU's triangles";
     if (g->normals != g->vertices)
         return "GLU gave fewer normals than vertices";
+    return NULL;
+}
+
+enum { MAX_TRIES = 16 };
+#define EQUAL_SLACK 0.01
+
+const char *bench_glu_tune(bench_glu_measure_fn measure, const void *ctx, double start,
+                           double target, double *tolerance, int *tries)
+{
+    double ok = 0, bad = 0, t = start;
+    uint64_t ok_tris = 0;
+    int n = 0;
+    while (n < MAX_TRIES) {
+        uint64_t tris = 0;
+        double e = 0;
+        const char *problem = measure(ctx, t, &tris, &e);
+        n++;
+        if (problem)
+            return problem;
+        int met = e <= target * (1 + EQUAL_SLACK);
+        if (met && bad == 0 && ok > 0 && tris == ok_tris)
+            break; /* doubling changed nothing: GLU's coarsest */
+        if (met && t > ok)
+            ok = t, ok_tris = tris;
+        else if (!met && (bad == 0 || t < bad))
+            bad = t;
+        if (ok == 0)
+            t *= 0.5;
+        else if (bad == 0)
+            t *= 2;
+        else if (bad / ok < 1.1)
+            break;
+        else
+            t = sqrt(ok * bad);
+    }
+    *tries = n;
+    if (ok == 0)
+        return "no GLU tolerance tried meets seamwalk's measured error";
+    *tolerance = ok;
     return NULL;
 }

@@ -47,6 +47,22 @@ void bench_glu_close(bench_glu *g);
  * missing, out of memory while capturing). */
 const char *bench_glu_problem(const bench_glu *g);
 
+/* One capturing run at tolerance: the triangles and measured max error
+ * (bench_error.h) it gave, NULL on success, else the problem. */
+typedef const char *(*bench_glu_measure_fn)(const void *ctx, double tolerance,
+                                            uint64_t *triangles, double *error);
+
+/* The largest GLU_PARAMETRIC_TOLERANCE found whose measured error is <=
+ * target within 1% (where both sides' error is a floor they share, as the
+ * trims' own chords, GLU's float evaluation lands a few 1e-4 off): halving
+ * from start until met, doubling until not (or until GLU's output stops
+ * changing: its coarsest sampling), then bisecting geometrically to within
+ * 10%. GLU's tolerance is not a bound on its measured error, so this is the
+ * only way to compare at equal error. *tries: tolerances measured. NULL on
+ * success, else the problem (a run's, or no tolerance tried meets target). */
+const char *bench_glu_tune(bench_glu_measure_fn measure, const void *ctx, double start,
+                           double target, double *tolerance, int *tries);
+
 /* Triangles in a GL primitive of n vertices (0 for points and lines). */
 uint64_t bench_glu_triangles_in(GLenum type, uint64_t n);
 

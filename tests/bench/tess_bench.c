@@ -15,7 +15,10 @@
  * vertices, edge midpoints and centroid against the exact patch at the same
  * (u, v); seamwalk's (u, v) come from the grid, GLU's from a texture-coordinate
  * map holding the identity that rides along in a separate, untimed run (whose
- * triangle count must equal the timed one's).
+ * triangle count must equal the timed one's). GLU's tolerance is not a bound
+ * on its measured error (up to 3.5x it here), so a third line gives GLU at
+ * the GLU_PARAMETRIC_TOLERANCE a search (bench_glu_tune, untimed) found to
+ * meet seamwalk's measured error, timed there: the ratio at equal error.
  *
  * Usage: tess_bench [--quick] [--repeats N] [--json FILE] [--samples DIR]
  * Prints figures; never fails on timing, only when a side cannot run. */
@@ -63,6 +66,9 @@ typedef struct result {
     double size, tol_rel, tol_abs;
     timing sw, glu;
     timing sw_stored;          /* seamwalk with the bounds precomputed, as packs store them */
+    timing glu_eq;             /* GLU at the tolerance that meets seamwalk's measured error */
+    double glu_eq_tol;
+    int glu_eq_tries;
 } result;
 
 typedef struct options {
@@ -277,10 +283,11 @@ static void probe_triangle(void *user, const float p[3][3], const float uv[3][2]
     probe->worst = fmax(probe->worst, e);
 }
 
-/* The measured error of GLU at tol; 0 (and a message) when GLU fails or its
- * capturing run gives another triangle count than expect_tris. */
-static int measure_glu(const bench_model *m, double tol, uint64_t expect_tris, double *error)
+/* GLU's triangles and measured error at tol (bench_glu_measure_fn on a
+ * const bench_model *): NULL, else GLU's problem. */
+static const char *glu_error_at(const void *model, double tol, uint64_t *tris, double *error)
 {
+    const bench_model *m = model;
     /* The identity in Bernstein form: control point (i, j) at (i/3, j/3). */
     GLfloat tex[32];
     for (int j = 0; j < 4; j++)
@@ -288,25 +295,29 @@ static int measure_glu(const bench_model *m, double tol, uint64_t expect_tris, d
             tex[(j * 4 + i) * 2] = (GLfloat)i / 3, tex[(j * 4 + i) * 2 + 1] = (GLfloat)j / 3;
     glu_probe probe = {NULL, 0};
     bench_glu g;
-    if (!bench_glu_open(&g, tol, probe_triangle, &probe)) {
-        fprintf(stderr, "gluNewNurbsRenderer failed\n");
-        return 0;
-    }
+    if (!bench_glu_open(&g, tol, probe_triangle, &probe))
+        return "gluNewNurbsRenderer failed";
     for (size_t i = 0; i < m->count; i++) {
         probe.patch = &m->patches[i];
         glu_patch(g.nurb, probe.patch, tex);
     }
     const char *problem = bench_glu_problem(&g);
-    uint64_t tris = g.triangles;
+    *tris = g.triangles, *error = probe.worst;
     bench_glu_close(&g);
-    if (!problem && tris != expect_tris)
+    return problem;
+}
+
+/* The measured error of the timed runs' t (at tol): 0 and a message when
+ * GLU fails or the capturing run gives another triangle count. */
+static int measure_glu(const bench_model *m, double tol, timing *t)
+{
+    uint64_t tris = 0;
+    const char *problem = glu_error_at(m, tol, &tris, &t->error);
+    if (!problem && tris != t->triangles)
         problem = "the capturing run's triangle count differs from the timed runs'";
-    if (problem) {
+    if (problem)
         fprintf(stderr, "%s: GLU: %s\n", m->name, problem);
-        return 0;
-    }
-    *error = probe.worst;
-    return 1;
+    return !problem;
 }
 
 /* ---- measurement ------------------------------------------------------------ */
@@ -380,6 +391,14 @@ static void print_result(const result *r)
     printf("  ratio seamwalk/GLU: Mtri/s %.2f, triangles %.2f, time %.3f"
            "  (measured error: seamwalk %.3g, GLU %.3g)\n",
            mt, tr, ti, r->sw.error, r->glu.error);
+    const timing *eq = &r->glu_eq;
+    printf("  glu at seamwalk's measured error (tolerance %.3g, %d tried): triangles %llu  "
+           "median %.6f s (min %.6f .. max %.6f)  %.2f Mtri/s  measured error %.3g; "
+           "ratio seamwalk/GLU: time %.3f, time per triangle %.3f\n",
+           r->glu_eq_tol, r->glu_eq_tries, (unsigned long long)eq->triangles, eq->median_s,
+           eq->min_s, eq->max_s, mtri_per_s(eq), eq->error,
+           eq->median_s > 0 ? r->sw.median_s / eq->median_s : 0.0,
+           mtri_per_s(&r->sw) > 0 ? mtri_per_s(eq) / mtri_per_s(&r->sw) : 0.0);
     const timing *st = &r->sw_stored;
     printf("  bounds precomputed (as packs store them, not the whole work): seamwalk median "
            "%.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s, time ratio to GLU %.3f\n",
@@ -419,6 +438,9 @@ static int write_json(const char *path, const options *o, const char *renderer, 
         json_timing(f, "seamwalk", &r[i].sw, 0);
         json_timing(f, "glu", &r[i].glu, 0);
         json_timing(f, "seamwalk_bounds_precomputed", &r[i].sw_stored, 0);
+        json_timing(f, "glu_at_equal_error", &r[i].glu_eq, 0);
+        fprintf(f, "      \"glu_at_equal_error_tolerance\": %.9g, \"glu_tolerances_tried\": %d,\n",
+                r[i].glu_eq_tol, r[i].glu_eq_tries);
         fprintf(f, "      \"ratio_mtri_per_s\": %.4f, \"ratio_time\": %.4f\n    }%s\n",
                 glu_rate > 0 ? mtri_per_s(&r[i].sw) / glu_rate : 0.0,
                 r[i].glu.median_s > 0 ? r[i].sw.median_s / r[i].glu.median_s : 0.0,
@@ -461,6 +483,20 @@ static int parse_options(int argc, char **argv, options *o)
     return 1;
 }
 
+/* GLU again, its tolerance searched (untimed) so that its measured error is
+ * at most seamwalk's, then timed and measured there. */
+static int glu_at_equal_error(const bench_model *m, int repeats, result *r)
+{
+    const char *problem = bench_glu_tune(glu_error_at, m, r->tol_abs, r->sw.error,
+                                         &r->glu_eq_tol, &r->glu_eq_tries);
+    if (problem) {
+        fprintf(stderr, "%s at %g: GLU: %s\n", m->name, r->tol_abs, problem);
+        return 0;
+    }
+    return time_glu(m, r->glu_eq_tol, repeats, &r->glu_eq) &&
+           measure_glu(m, r->glu_eq_tol, &r->glu_eq);
+}
+
 static int bench_model_all(const bench_model *m, const options *o, const sw_buffers *b,
                            result *out, int *n)
 {
@@ -482,7 +518,9 @@ static int bench_model_all(const bench_model *m, const options *o, const sw_buff
         }
         r->sw.error = measure_seamwalk(m, r->tol_abs, b);
         r->sw_stored.error = r->sw.error; /* the same triangles */
-        if (!measure_glu(m, r->tol_abs, r->glu.triangles, &r->glu.error))
+        if (!measure_glu(m, r->tol_abs, &r->glu))
+            return 0;
+        if (!glu_at_equal_error(m, o->repeats, r))
             return 0;
         print_result(r);
     }

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { MAX_BREAKS = 64, MAX_TRIES = 16 };
+enum { MAX_BREAKS = 64 };
 
 static int cmp_float(const void *a, const void *b)
 {
@@ -252,45 +252,18 @@ const char *trim_glu_run(const trim_glu_surface *g, double tolerance, int measur
     return NULL;
 }
 
-/* Within this fraction above the target still counts as equal: where both
- * sides' error is the seams' own chords (the loops are the same), GLU's float
- * evaluation of them lands a few 1e-4 off seamwalk's. */
-#define EQUAL_SLACK 0.01
+static const char *measure_at(const void *ctx, double tolerance, uint64_t *triangles,
+                              double *error)
+{
+    trim_glu_output o = {0, 0, 0, 0};
+    const char *problem = trim_glu_run(ctx, tolerance, 1, 1, NULL, &o);
+    *triangles = o.triangles, *error = o.error;
+    return problem;
+}
 
-/* Halving until the target is met, doubling until it is not (or GLU's
- * output stops changing: its coarsest sampling), then bisecting
- * (geometrically) to within 10%. */
 const char *trim_glu_tune(const trim_glu_surface *g, double start, double target,
                           double *tolerance, trim_glu_output *out, int *tries)
 {
-    double ok = 0, bad = 0, t = start;
-    trim_glu_output best = {0, 0, 0, 0};
-    int n = 0;
-    while (n < MAX_TRIES) {
-        trim_glu_output o;
-        const char *problem = trim_glu_run(g, t, 1, 1, NULL, &o);
-        n++;
-        if (problem)
-            return problem;
-        int met = o.error <= target * (1 + EQUAL_SLACK);
-        if (met && bad == 0 && ok > 0 && o.triangles == best.triangles)
-            break; /* doubling changed nothing: GLU's coarsest */
-        if (met && t > ok)
-            ok = t, best = o;
-        else if (!met && (bad == 0 || t < bad))
-            bad = t;
-        if (ok == 0)
-            t *= 0.5;
-        else if (bad == 0)
-            t *= 2;
-        else if (bad / ok < 1.1)
-            break;
-        else
-            t = sqrt(ok * bad);
-    }
-    *tries = n;
-    if (ok == 0)
-        return "no GLU tolerance tried meets seamwalk's measured error";
-    *tolerance = ok, *out = best;
-    return NULL;
+    const char *problem = bench_glu_tune(measure_at, g, start, target, tolerance, tries);
+    return problem ? problem : trim_glu_run(g, *tolerance, 1, 1, NULL, out);
 }

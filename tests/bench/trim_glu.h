@@ -10,7 +10,8 @@
  *
  * GLU is tuned to seamwalk's measured error: trim_glu_tune searches
  * GLU_PARAMETRIC_TOLERANCE (outside the timed region) for the largest value
- * whose measured error (bench_error.h) is at most a target (within 1%). Host-side
+ * whose measured error (bench_error.h) is at most a target (within 1%: the
+ * seams' own chords, which both sides share, bound both errors from below). Host-side
  * benchmark code: allocates, and frees what it allocates. */
 #ifndef TRIM_GLU_H
 #define TRIM_GLU_H
@@ -56,12 +57,9 @@ typedef struct trim_glu_output {
 const char *trim_glu_run(const trim_glu_surface *g, double tolerance, int measure, int repeats,
                          double *samples, trim_glu_output *out);
 
-/* The largest GLU_PARAMETRIC_TOLERANCE found (doubling or halving from
- * start, then bisecting) whose measured error is <= target (within 1%: the
- * seams' own chords, which both sides share, bound both errors from below),
- * the capturing run's output there and the number of tolerances tried. NULL
- * on success, else the problem (a GLU error, or no tolerance tried meets the
- * target). */
+/* bench_glu_tune on this surface: the tolerance found, the capturing run's
+ * output there and the number of tolerances tried. NULL on success, else the
+ * problem. */
 const char *trim_glu_tune(const trim_glu_surface *g, double start, double target,
                           double *tolerance, trim_glu_output *out, int *tries);
 

@@ -362,9 +362,10 @@ static void print_result(const result *r)
            r->glu_tries, r->glu.uv_area / r->loops_area);
     double per_tri = per_triangle_ratio(&r->trim, &r->glu);
     double per_surface = r->glu.median_s > 0 ? r->trim.median_s / r->glu.median_s : 0;
+    double tris = r->glu.triangles ? (double)r->trim.triangles / (double)r->glu.triangles : 0;
     printf("  ratio seamwalk/GLU at equal measured error: time per triangle %.3f, "
            "time per surface %.3f, triangles %.3f  (> 1: seamwalk slower)\n", per_tri,
-           per_surface, r->glu.triangles ? (double)r->trim.triangles / (double)r->glu.triangles : 0);
+           per_surface, tris);
     /* Issue 9's target, reported, not tested: at 1e-3 and 1e-4 of the size. */
     if (r->tol_rel <= 1.5e-3)
         printf("  target >= 20 Mtri/s and >= 3x GLU (time ratio <= 1/3): %.3f Mtri/s, "
