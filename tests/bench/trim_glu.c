@@ -16,18 +16,25 @@ static int cmp_float(const void *a, const void *b)
 }
 
 /* The distinct domain borders of the patches along axis (0 u, 1 v), sorted;
- * shared edges have equal coordinates (sw_trim_patch), so equality dedups. */
+ * shared edges have equal coordinates (sw_trim_patch), so equality dedups.
+ * 0 when there are more than MAX_BREAKS. */
 static uint32_t breakpoints(const sw_trim_patch *patches, uint32_t count, int axis, float *out)
 {
     uint32_t n = 0;
-    for (uint32_t i = 0; i < count && n + 2 <= MAX_BREAKS; i++)
-        out[n++] = patches[i].domain[2 * axis], out[n++] = patches[i].domain[2 * axis + 1];
+    for (uint32_t i = 0; i < count; i++)
+        for (int e = 0; e < 2; e++) {
+            float x = patches[i].domain[2 * axis + e];
+            uint32_t k = 0;
+            while (k < n && out[k] != x)
+                k++;
+            if (k < n)
+                continue;
+            if (n == MAX_BREAKS)
+                return 0;
+            out[n++] = x;
+        }
     qsort(out, n, sizeof *out, cmp_float);
-    uint32_t k = 0;
-    for (uint32_t i = 0; i < n; i++)
-        if (k == 0 || out[i] != out[k - 1])
-            out[k++] = out[i];
-    return k;
+    return n;
 }
 
 static int index_of(const float *breaks, uint32_t n, float x)
@@ -86,7 +93,7 @@ static int make_net(trim_glu_surface *g, const sw_trim_patch *patches, uint32_t 
     int du = p0->degree_u, dv = p0->degree_v, rational = 0;
     for (uint32_t i = 0; i < count; i++)
         rational |= patches[i].patch.rational;
-    if (count == 0 || 2 * count > MAX_BREAKS || (nu - 1) * (nv - 1) != count) {
+    if (nu < 2 || nv < 2 || (nu - 1) * (nv - 1) != count) {
         snprintf(why, why_size, "the %u patches do not tile a grid of knot intervals", count);
         return 0;
     }
@@ -106,6 +113,10 @@ static int make_net(trim_glu_surface *g, const sw_trim_patch *patches, uint32_t 
         int a = index_of(bu, nu, p->domain[0]), b = index_of(bv, nv, p->domain[2]);
         if (p->patch.degree_u != du || p->patch.degree_v != dv) {
             snprintf(why, why_size, "patch %u has another degree than patch 0", i);
+            return 0;
+        }
+        if (index_of(bu, nu, p->domain[1]) != a + 1 || index_of(bv, nv, p->domain[3]) != b + 1) {
+            snprintf(why, why_size, "patch %u spans more than one knot interval", i);
             return 0;
         }
         put_patch(g, &p->patch, a, b);
