@@ -19,6 +19,10 @@
  * on its measured error (up to 3.5x it here), so a third line gives GLU at
  * the GLU_PARAMETRIC_TOLERANCE a search (bench_glu_tune, untimed) found to
  * meet seamwalk's measured error, timed there: the ratio at equal error.
+ * Each error is also given to the nearest surface point: where the two
+ * differ much (slivers along a patch's collapsed edge, whose (u, v) slip but
+ * whose points lie on the surface) the same-(u, v) one, which the search
+ * uses, overstates what is seen.
  *
  * Usage: tess_bench [--quick] [--repeats N] [--json FILE] [--samples DIR]
  * Prints figures; never fails on timing, only when a side cannot run. */
@@ -57,7 +61,8 @@ typedef struct bench_model {
 typedef struct timing {
     double median_s, min_s, max_s;
     uint64_t triangles, normals, capped;
-    double error;              /* measured max error (bench_error.h) */
+    double error;              /* measured max error (bench_error.h), at the same (u, v) */
+    double error_nearest;      /* the same, to the nearest surface point */
 } timing;
 
 typedef struct result {
@@ -216,11 +221,20 @@ static void run_seamwalk(const bench_model *m, double tol, int stored_bounds, co
     t->capped = capped;
 }
 
-/* Vertex k of an nu x nv grid sits at (k mod (nu + 1), k div (nu + 1)). */
-static double grid_error(const sw_bezier_patchf *pf, uint32_t nu, uint32_t nv,
-                         const sw_buffers *b)
+/* Both measured errors of one triangle of patch pf into the running maxima. */
+static void measure_triangle(const sw_bezier_patchf *pf, const float p[3][3],
+                             const float uv[3][2], int nearest, double worst[2])
 {
-    double worst = 0;
+    static const double unit[4] = {0, 1, 0, 1};
+    worst[0] = fmax(worst[0], bench_triangle_error(p, uv, bench_patchf_at, pf));
+    if (nearest)
+        worst[1] = bench_triangle_error_nearest(p, uv, bench_patchf_at, pf, unit, worst[1]);
+}
+
+/* Vertex k of an nu x nv grid sits at (k mod (nu + 1), k div (nu + 1)). */
+static void grid_error(const sw_bezier_patchf *pf, uint32_t nu, uint32_t nv,
+                       const sw_buffers *b, double worst[2])
+{
     for (uint32_t t = 0; t < 2 * nu * nv; t++) {
         float p[3][3], uv[3][2];
         for (int k = 0; k < 3; k++) {
@@ -229,23 +243,22 @@ static double grid_error(const sw_bezier_patchf *pf, uint32_t nu, uint32_t nv,
             uv[k][0] = (float)(v % (nu + 1)) / (float)nu;
             uv[k][1] = (float)(v / (nu + 1)) / (float)nv;
         }
-        worst = fmax(worst, bench_triangle_error(p, uv, bench_patchf_at, pf));
+        measure_triangle(pf, p, uv, 1, worst);
     }
-    return worst;
 }
 
-static double measure_seamwalk(const bench_model *m, double tol, const sw_buffers *b)
+static void measure_seamwalk(const bench_model *m, double tol, const sw_buffers *b, timing *t)
 {
-    double worst = 0;
+    double worst[2] = {0, 0};
     for (size_t i = 0; i < m->count; i++) {
         sw_deriv_bounds bounds = patch_bounds(&m->patches[i]);
         uint32_t nu, nv;
         sw_tess_segments_for_error(&bounds, tol, &nu, &nv);
         sw_bezier_patchf pf = {3, 3, 0, m->patches[i].ctrl};
         sw_tess_grid(&pf, nu, nv, 0, b->verts, b->indices);
-        worst = fmax(worst, grid_error(&pf, nu, nv, b));
+        grid_error(&pf, nu, nv, b, worst);
     }
-    return worst;
+    t->error = worst[0], t->error_nearest = worst[1];
 }
 
 /* ---- GLU ------------------------------------------------------------------- */
@@ -269,31 +282,31 @@ static void run_glu(const bench_model *m, GLUnurbs *nurb)
         glu_patch(nurb, &m->patches[i], NULL);
 }
 
-/* The patch GLU is tessellating in a capturing run and the worst error yet. */
+/* The patch GLU is tessellating in a capturing run and the worst errors yet
+ * (the nearest-point one only when asked: it costs ten times more). */
 typedef struct glu_probe {
     const bench_patch *patch;
-    double worst;
+    int nearest;
+    double worst[2];
 } glu_probe;
 
 static void probe_triangle(void *user, const float p[3][3], const float uv[3][2])
 {
     glu_probe *probe = user;
     sw_bezier_patchf pf = {3, 3, 0, probe->patch->ctrl};
-    double e = bench_triangle_error(p, uv, bench_patchf_at, &pf);
-    probe->worst = fmax(probe->worst, e);
+    measure_triangle(&pf, p, uv, probe->nearest, probe->worst);
 }
 
-/* GLU's triangles and measured error at tol (bench_glu_measure_fn on a
- * const bench_model *): NULL, else GLU's problem. */
-static const char *glu_error_at(const void *model, double tol, uint64_t *tris, double *error)
+/* GLU's triangles and measured errors at tol: NULL, else GLU's problem. */
+static const char *glu_errors(const bench_model *m, double tol, int nearest, uint64_t *tris,
+                              double error[2])
 {
-    const bench_model *m = model;
     /* The identity in Bernstein form: control point (i, j) at (i/3, j/3). */
     GLfloat tex[32];
     for (int j = 0; j < 4; j++)
         for (int i = 0; i < 4; i++)
             tex[(j * 4 + i) * 2] = (GLfloat)i / 3, tex[(j * 4 + i) * 2 + 1] = (GLfloat)j / 3;
-    glu_probe probe = {NULL, 0};
+    glu_probe probe = {NULL, nearest, {0, 0}};
     bench_glu g;
     if (!bench_glu_open(&g, tol, probe_triangle, &probe))
         return "gluNewNurbsRenderer failed";
@@ -302,8 +315,17 @@ static const char *glu_error_at(const void *model, double tol, uint64_t *tris, d
         glu_patch(g.nurb, probe.patch, tex);
     }
     const char *problem = bench_glu_problem(&g);
-    *tris = g.triangles, *error = probe.worst;
+    *tris = g.triangles, error[0] = probe.worst[0], error[1] = probe.worst[1];
     bench_glu_close(&g);
+    return problem;
+}
+
+/* bench_glu_measure_fn on a const bench_model *: the same-(u, v) error only. */
+static const char *glu_error_at(const void *model, double tol, uint64_t *tris, double *error)
+{
+    double e[2];
+    const char *problem = glu_errors(model, tol, 0, tris, e);
+    *error = e[0];
     return problem;
 }
 
@@ -312,7 +334,9 @@ static const char *glu_error_at(const void *model, double tol, uint64_t *tris, d
 static int measure_glu(const bench_model *m, double tol, timing *t)
 {
     uint64_t tris = 0;
-    const char *problem = glu_error_at(m, tol, &tris, &t->error);
+    double e[2] = {0, 0};
+    const char *problem = glu_errors(m, tol, 1, &tris, e);
+    t->error = e[0], t->error_nearest = e[1];
     if (!problem && tris != t->triangles)
         problem = "the capturing run's triangle count differs from the timed runs'";
     if (problem)
@@ -370,9 +394,9 @@ static double mtri_per_s(const timing *t)
 static void print_timing(const char *name, const timing *t, double tol)
 {
     printf("  %-9s triangles %10llu  median %.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s"
-           "  measured error %.3g (%.2f x tolerance)",
+           "  measured error %.3g (%.2f x tolerance; to the nearest point %.3g)",
            name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s,
-           mtri_per_s(t), t->error, t->error / tol);
+           mtri_per_s(t), t->error, t->error / tol, t->error_nearest);
     if (t->capped)
         printf("  [%llu patches capped at %u segments]", (unsigned long long)t->capped,
                SW_TESS_MAX_SEGMENTS);
@@ -393,10 +417,10 @@ static void print_result(const result *r)
            mt, tr, ti, r->sw.error, r->glu.error);
     const timing *eq = &r->glu_eq;
     printf("  glu at seamwalk's measured error (tolerance %.3g, %d tried): triangles %llu  "
-           "median %.6f s (min %.6f .. max %.6f)  %.2f Mtri/s  measured error %.3g; "
-           "ratio seamwalk/GLU: time %.3f, time per triangle %.3f\n",
+           "median %.6f s (min %.6f .. max %.6f)  %.2f Mtri/s  measured error %.3g (nearest "
+           "point %.3g); ratio seamwalk/GLU: time %.3f, time per triangle %.3f\n",
            r->glu_eq_tol, r->glu_eq_tries, (unsigned long long)eq->triangles, eq->median_s,
-           eq->min_s, eq->max_s, mtri_per_s(eq), eq->error,
+           eq->min_s, eq->max_s, mtri_per_s(eq), eq->error, eq->error_nearest,
            eq->median_s > 0 ? r->sw.median_s / eq->median_s : 0.0,
            mtri_per_s(&r->sw) > 0 ? mtri_per_s(eq) / mtri_per_s(&r->sw) : 0.0);
     const timing *st = &r->sw_stored;
@@ -413,9 +437,10 @@ static void json_timing(FILE *f, const char *name, const timing *t, int last)
     fprintf(f,
             "      \"%s\": {\"triangles\": %llu, \"median_s\": %.9f, \"min_s\": %.9f, "
             "\"max_s\": %.9f, \"mtri_per_s\": %.4f, \"capped_patches\": %llu, "
-            "\"measured_error\": %.9g}%s\n",
+            "\"measured_error\": %.9g, \"measured_error_nearest\": %.9g}%s\n",
             name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s,
-            mtri_per_s(t), (unsigned long long)t->capped, t->error, last ? "" : ",");
+            mtri_per_s(t), (unsigned long long)t->capped, t->error, t->error_nearest,
+            last ? "" : ",");
 }
 
 static int write_json(const char *path, const options *o, const char *renderer, const result *r,
@@ -516,8 +541,9 @@ static int bench_model_all(const bench_model *m, const options *o, const sw_buff
             fprintf(stderr, "%s: a tessellator produced no triangles\n", m->name);
             return 0;
         }
-        r->sw.error = measure_seamwalk(m, r->tol_abs, b);
+        measure_seamwalk(m, r->tol_abs, b, &r->sw);
         r->sw_stored.error = r->sw.error; /* the same triangles */
+        r->sw_stored.error_nearest = r->sw.error_nearest;
         if (!measure_glu(m, r->tol_abs, &r->glu))
             return 0;
         if (!glu_at_equal_error(m, o->repeats, r))

@@ -232,13 +232,16 @@ static void draw(const trim_glu_surface *g, GLUnurbs *nurb, int with_tex)
 
 typedef struct probe {
     const bench_trim_surface *exact;
-    double worst, uv_area;
+    double domain[4];
+    double worst, worst_nearest, uv_area;
 } probe;
 
 static void probe_triangle(void *user, const float p[3][3], const float uv[3][2])
 {
     probe *pr = user;
     pr->worst = fmax(pr->worst, bench_triangle_error(p, uv, bench_trim_surface_at, pr->exact));
+    pr->worst_nearest = bench_triangle_error_nearest(p, uv, bench_trim_surface_at, pr->exact,
+                                                     pr->domain, pr->worst_nearest);
     pr->uv_area += bench_uv_area(uv);
 }
 
@@ -246,7 +249,8 @@ const char *trim_glu_run(const trim_glu_surface *g, double tolerance, int measur
                          double *samples, trim_glu_output *out)
 {
     for (int r = 0; r < (measure ? 1 : repeats); r++) {
-        probe pr = {&g->exact, 0, 0};
+        probe pr = {&g->exact, {0, 0, 0, 0}, 0, 0, 0};
+        bench_trim_surface_domain(&g->exact, pr.domain);
         bench_glu glu;
         if (!bench_glu_open(&glu, tolerance, measure ? probe_triangle : NULL, &pr))
             return "gluNewNurbsRenderer failed";
@@ -255,7 +259,8 @@ const char *trim_glu_run(const trim_glu_surface *g, double tolerance, int measur
         if (!measure)
             samples[r] = bench_now_s() - t0;
         const char *problem = bench_glu_problem(&glu);
-        *out = (trim_glu_output){glu.triangles, glu.vertices, pr.worst, pr.uv_area};
+        *out = (trim_glu_output){glu.triangles, glu.vertices, pr.worst, pr.worst_nearest,
+                                 pr.uv_area};
         bench_glu_close(&glu);
         if (problem)
             return problem;
@@ -266,7 +271,7 @@ const char *trim_glu_run(const trim_glu_surface *g, double tolerance, int measur
 static const char *measure_at(const void *ctx, double tolerance, uint64_t *triangles,
                               double *error)
 {
-    trim_glu_output o = {0, 0, 0, 0};
+    trim_glu_output o = {0, 0, 0, 0, 0};
     const char *problem = trim_glu_run(ctx, tolerance, 1, 1, NULL, &o);
     *triangles = o.triangles, *error = o.error;
     return problem;

@@ -48,7 +48,7 @@ void trim_glu_free(trim_glu_surface *g);
  * given). */
 typedef struct trim_glu_output {
     uint64_t triangles, vertices;
-    double error, uv_area;
+    double error, error_nearest, uv_area; /* at the same (u, v), to the nearest point */
 } trim_glu_output;
 
 /* GLU's tessellation of the surface at tolerance: measure 0 times repeats

@@ -19,7 +19,8 @@
  * happen inside gluEndSurface. Their achieved max errors are measured outside
  * the timed runs against the exact surface at the same (u, v)
  * (bench_error.h): seamwalk's (u, v) come from its uvs output, GLU's from an
- * identity texture map. GLU's GLU_PARAMETRIC_TOLERANCE is then searched so
+ * identity texture map; the distance to the nearest surface point is given
+ * beside it. GLU's GLU_PARAMETRIC_TOLERANCE is then searched so
  * that its measured error is at most seamwalk's, and GLU timed at it: the
  * ratios are at equal (or, for GLU, smaller) measured error. The grid does
  * not trim: its triangle count is given for the whole patches and for the
@@ -64,6 +65,7 @@ typedef struct stats {
     double median_s, min_s, max_s;
     uint64_t triangles, vertices;
     double error;   /* measured max error (bench_error.h); the grid: not measured */
+    double error_nearest; /* the same to the nearest surface point */
     double uv_area; /* (u, v) area the triangles cover; the grid: not measured */
 } stats;
 
@@ -250,7 +252,8 @@ static int measure_trim(const surface *s, const trims *t, double tol, buffers *b
         return 0;
     }
     bench_trim_surface exact = {s->patches, s->count};
-    double worst = 0;
+    double worst = 0, worst_nearest = 0, domain[4];
+    bench_trim_surface_domain(&exact, domain);
     for (uint32_t i = 0; i < res.index_count; i += 3) {
         float p[3][3], uv[3][2];
         for (int k = 0; k < 3; k++) {
@@ -259,9 +262,11 @@ static int measure_trim(const surface *s, const trims *t, double tol, buffers *b
             memcpy(uv[k], b->uvs + 2 * v, sizeof uv[k]);
         }
         worst = fmax(worst, bench_triangle_error(p, uv, bench_trim_surface_at, &exact));
+        worst_nearest = bench_triangle_error_nearest(p, uv, bench_trim_surface_at, &exact, domain,
+                                                     worst_nearest);
         r->trim.uv_area += bench_uv_area(uv);
     }
-    r->trim.error = worst;
+    r->trim.error = worst, r->trim.error_nearest = worst_nearest;
     return 1;
 }
 
@@ -287,7 +292,8 @@ static int time_glu(const surface *s, const trims *t, int repeats, result *r)
         problem = "the timed runs' triangle count differs from the measured run's";
     trim_glu_free(&g);
     r->glu.triangles = tuned.triangles, r->glu.vertices = tuned.vertices;
-    r->glu.error = tuned.error, r->glu.uv_area = tuned.uv_area;
+    r->glu.error = tuned.error, r->glu.error_nearest = tuned.error_nearest;
+    r->glu.uv_area = tuned.uv_area;
     if (problem) {
         fprintf(stderr, "%s at %g: GLU: %s\n", s->name, r->tol_abs, problem);
         return 0;
@@ -353,13 +359,14 @@ static void print_result(const result *r)
     printf("%s, error %.0e of size = %.4g, %u seam points\n", r->model, r->tol_rel, r->tol_abs,
            r->seam_points);
     print_stats("seamwalk", &r->trim);
-    printf("  measured error %.3g (%.2f x asked; bound %.3g%s), covers %.4f of the loops' area\n",
-           r->trim.error, r->trim.error / r->tol_abs, r->trim_bound,
-           r->capped ? ", capped cells" : "", r->trim.uv_area / r->loops_area);
+    printf("  measured error %.3g (%.2f x asked; nearest point %.3g; bound %.3g%s), covers %.4f "
+           "of the loops' area\n", r->trim.error, r->trim.error / r->tol_abs,
+           r->trim.error_nearest, r->trim_bound, r->capped ? ", capped cells" : "",
+           r->trim.uv_area / r->loops_area);
     print_stats("glu", &r->glu);
-    printf("  measured error %.3g (%.2f x asked; tolerance %.3g, %d tried), covers %.4f of the "
-           "loops' area\n", r->glu.error, r->glu.error / r->tol_abs, r->glu_tolerance,
-           r->glu_tries, r->glu.uv_area / r->loops_area);
+    printf("  measured error %.3g (%.2f x asked; nearest point %.3g; tolerance %.3g, %d tried), "
+           "covers %.4f of the loops' area\n", r->glu.error, r->glu.error / r->tol_abs,
+           r->glu.error_nearest, r->glu_tolerance, r->glu_tries, r->glu.uv_area / r->loops_area);
     double per_tri = per_triangle_ratio(&r->trim, &r->glu);
     double per_surface = r->glu.median_s > 0 ? r->trim.median_s / r->glu.median_s : 0;
     double tris = r->glu.triangles ? (double)r->trim.triangles / (double)r->glu.triangles : 0;
@@ -382,9 +389,9 @@ static void json_stats(FILE *f, const char *name, const stats *t, const char *ta
 {
     fprintf(f, "      \"%s\": {\"triangles\": %llu, \"vertices\": %llu, \"median_s\": %.9f, "
             "\"min_s\": %.9f, \"max_s\": %.9f, \"mtri_per_s\": %.6f, \"measured_error\": %.9g, "
-            "\"uv_area\": %.9g}%s\n",
+            "\"measured_error_nearest\": %.9g, \"uv_area\": %.9g}%s\n",
             name, (unsigned long long)t->triangles, (unsigned long long)t->vertices, t->median_s,
-            t->min_s, t->max_s, mtri_per_s(t), t->error, t->uv_area, tail);
+            t->min_s, t->max_s, mtri_per_s(t), t->error, t->error_nearest, t->uv_area, tail);
 }
 
 static void json_result(FILE *f, const result *r, const char *tail)
