@@ -37,6 +37,14 @@ static double clamp(double x, double lo, double hi)
     return x < lo ? lo : x > hi ? hi : x;
 }
 
+/* The central difference along (hu, hv) at t. */
+static sw_vec3 derivative(bench_surface_at_fn at, const void *surface, const double t[2],
+                          double hu, double hv)
+{
+    sw_vec3 d = sw_v3_sub(at(surface, t[0] + hu, t[1] + hv), at(surface, t[0] - hu, t[1] - hv));
+    return sw_v3_scale(d, 0.5 / (hu + hv));
+}
+
 /* Damped Gauss-Newton on |S(u, v) - q|^2 from t, derivatives by central
  * differences (the callback gives points only), steps clamped into the
  * domain and halved until they help: the smallest distance met. */
@@ -47,10 +55,7 @@ static double nearest_from(sw_vec3 q, double t[2], bench_surface_at_fn at, const
     double h = 1e-6 * fmax(d[1] - d[0], d[3] - d[2]);
     for (int it = 0; it < 8 && best > 0; it++) {
         sw_vec3 r = sw_v3_sub(at(surface, t[0], t[1]), q);
-        sw_vec3 su = sw_v3_scale(sw_v3_sub(at(surface, t[0] + h, t[1]), at(surface, t[0] - h, t[1])),
-                                 0.5 / h);
-        sw_vec3 sv = sw_v3_scale(sw_v3_sub(at(surface, t[0], t[1] + h), at(surface, t[0], t[1] - h)),
-                                 0.5 / h);
+        sw_vec3 su = derivative(at, surface, t, h, 0), sv = derivative(at, surface, t, 0, h);
         double a = sw_v3_dot(su, su), b = sw_v3_dot(su, sv), c = sw_v3_dot(sv, sv);
         double damp = 1e-9 * (a + c) + 1e-300;
         a += damp, c += damp;
