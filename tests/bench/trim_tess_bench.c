@@ -26,6 +26,9 @@
  * not trim: its triangle count is given for the whole patches and for the
  * grid cells whose centre lies inside the loops.
  *
+ * Each repeat runs seamwalk, GLU and the grid once in turn, so that load
+ * from elsewhere on the machine falls on all three alike.
+ *
  * Usage: trim_tess_bench [--quick] [--repeats N] [--json FILE]
  * Prints figures (median, min, max over the repeats); never fails on timing,
  * only when a tessellation fails. */
@@ -220,37 +223,18 @@ static sw_status trim_once(const surface *s, const trims *t, double tol, buffers
     return sw_trim_tess(s->patches, s->count, &loops, tol, &opt, &a, &out, res, e);
 }
 
-static int time_trim(const surface *s, const trims *t, double tol, int repeats, buffers *b,
-                     result *r)
-{
-    double samples[MAX_REPEATS];
-    for (int k = 0; k < repeats; k++) {
-        sw_trim_tess_result res;
-        sw_error e = {0};
-        double t0 = bench_now_s();
-        sw_status st = trim_once(s, t, tol, b, 0, &res, &e);
-        samples[k] = bench_now_s() - t0;
-        if (st != SW_OK) {
-            fprintf(stderr, "%s at %g: %s\n", s->name, tol, e.message);
-            return 0;
-        }
-        r->trim.triangles = res.index_count / 3, r->trim.vertices = res.vertex_count;
-        r->trim_bound = res.error_bound, r->capped = res.capped_count;
-    }
-    put_spread(samples, repeats, &r->trim);
-    return 1;
-}
-
-/* One more call, untimed, with the uvs the timed runs skip: the same
- * triangles (checked), measured against the exact surface. */
+/* The call, untimed, with the uvs the timed runs skip: its counts, and the
+ * triangles measured against the exact surface. */
 static int measure_trim(const surface *s, const trims *t, double tol, buffers *b, result *r)
 {
     sw_trim_tess_result res;
     sw_error e = {0};
-    if (trim_once(s, t, tol, b, 1, &res, &e) != SW_OK || res.index_count / 3 != r->trim.triangles) {
-        fprintf(stderr, "%s at %g: the measuring call differs: %s\n", s->name, tol, e.message);
+    if (trim_once(s, t, tol, b, 1, &res, &e) != SW_OK) {
+        fprintf(stderr, "%s at %g: %s\n", s->name, tol, e.message);
         return 0;
     }
+    r->trim.triangles = res.index_count / 3, r->trim.vertices = res.vertex_count;
+    r->trim_bound = res.error_bound, r->capped = res.capped_count;
     bench_trim_surface exact = {s->patches, s->count};
     double worst = 0, worst_nearest = 0, domain[4];
     bench_trim_surface_domain(&exact, domain);
@@ -270,54 +254,46 @@ static int measure_trim(const surface *s, const trims *t, double tol, buffers *b
     return 1;
 }
 
-/* GLU tuned to seamwalk's measured error (starting from the asked error),
- * then timed at the tolerance found. */
-static int time_glu(const surface *s, const trims *t, int repeats, result *r)
+/* GLU's form of the surface, its tolerance searched (untimed, from the asked
+ * error) so that its measured error meets seamwalk's. */
+static int tune_glu(const surface *s, const trims *t, trim_glu_surface *g, result *r)
 {
     sw_trim_loops loops = {t->pts, t->first, t->count};
-    trim_glu_surface g;
     char why[160];
-    if (!trim_glu_make(&g, s->patches, s->count, &loops, why, sizeof why)) {
+    if (!trim_glu_make(g, s->patches, s->count, &loops, why, sizeof why)) {
         fprintf(stderr, "%s: GLU: %s\n", s->name, why);
-        trim_glu_free(&g);
         return 0;
     }
-    double samples[MAX_REPEATS];
-    trim_glu_output tuned, timed;
-    const char *problem = trim_glu_tune(&g, r->tol_abs, r->trim.error, &r->glu_tolerance,
-                                        &tuned, &r->glu_tries);
-    if (!problem)
-        problem = trim_glu_run(&g, r->glu_tolerance, 0, repeats, samples, &timed);
-    if (!problem && timed.triangles != tuned.triangles)
-        problem = "the timed runs' triangle count differs from the measured run's";
-    trim_glu_free(&g);
-    r->glu.triangles = tuned.triangles, r->glu.vertices = tuned.vertices;
-    r->glu.error = tuned.error, r->glu.error_nearest = tuned.error_nearest;
-    r->glu.uv_area = tuned.uv_area;
+    trim_glu_output tuned;
+    const char *problem = trim_glu_tune(g, r->tol_abs, r->trim.error, &r->glu_tolerance, &tuned,
+                                        &r->glu_tries);
     if (problem) {
         fprintf(stderr, "%s at %g: GLU: %s\n", s->name, r->tol_abs, problem);
         return 0;
     }
-    put_spread(samples, repeats, &r->glu);
+    r->glu.triangles = tuned.triangles, r->glu.vertices = tuned.vertices;
+    r->glu.error = tuned.error, r->glu.error_nearest = tuned.error_nearest;
+    r->glu.uv_area = tuned.uv_area;
     return 1;
 }
 
-static void time_grid(const surface *s, const trims *t, double tol, int repeats, buffers *b,
-                      result *r)
+/* The untrimmed grid over the whole patches: its triangles and vertices. */
+static void grid_once(const surface *s, double tol, buffers *b, stats *grid)
 {
-    double samples[MAX_REPEATS];
-    uint64_t tris = 0, verts = 0, inside = 0;
-    for (int k = 0; k < repeats; k++) {
-        tris = verts = 0;
-        double t0 = bench_now_s();
-        for (uint32_t i = 0; i < s->count; i++) {
-            uint32_t nu, nv;
-            sw_tess_segments_for_error(&s->bounds[i], tol, &nu, &nv);
-            sw_tess_grid(&s->patches[i].patch, nu, nv, 0, b->verts, b->idx);
-            tris += 2ull * nu * nv, verts += (uint64_t)(nu + 1) * (nv + 1);
-        }
-        samples[k] = bench_now_s() - t0;
+    uint64_t tris = 0, verts = 0;
+    for (uint32_t i = 0; i < s->count; i++) {
+        uint32_t nu, nv;
+        sw_tess_segments_for_error(&s->bounds[i], tol, &nu, &nv);
+        sw_tess_grid(&s->patches[i].patch, nu, nv, 0, b->verts, b->idx);
+        tris += 2ull * nu * nv, verts += (uint64_t)(nu + 1) * (nv + 1);
     }
+    grid->triangles = tris, grid->vertices = verts;
+}
+
+/* The grid triangles whose cell centre lies inside the loops. */
+static uint64_t grid_inside(const surface *s, const trims *t, double tol)
+{
+    uint64_t inside = 0;
     for (uint32_t i = 0; i < s->count; i++) {
         uint32_t nu, nv;
         sw_tess_segments_for_error(&s->bounds[i], tol, &nu, &nv);
@@ -327,9 +303,40 @@ static void time_grid(const surface *s, const trims *t, double tol, int repeats,
                 inside += 2 * in_loops(t, d[0] + (d[1] - d[0]) * (ai + 0.5) / nu,
                                        d[2] + (d[3] - d[2]) * (bj + 0.5) / nv);
     }
-    r->grid.triangles = tris, r->grid.vertices = verts;
-    r->grid_inside_triangles = inside;
-    put_spread(samples, repeats, &r->grid);
+    return inside;
+}
+
+/* The three sides in turn, repeats rounds: load from elsewhere on the
+ * machine falls on all of them alike, so their ratios hold up under it.
+ * Every timed run must give the triangles the measured one did. */
+static int time_sides(const surface *s, const trims *t, const trim_glu_surface *g, int repeats,
+                      buffers *b, result *r)
+{
+    double sw_s[MAX_REPEATS], glu_s[MAX_REPEATS], grid_s[MAX_REPEATS];
+    for (int k = 0; k < repeats; k++) {
+        sw_trim_tess_result res;
+        sw_error e = {0};
+        double t0 = bench_now_s();
+        sw_status st = trim_once(s, t, r->tol_abs, b, 0, &res, &e);
+        sw_s[k] = bench_now_s() - t0;
+        trim_glu_output o;
+        const char *problem = trim_glu_run(g, r->glu_tolerance, 0, 1, &glu_s[k], &o);
+        t0 = bench_now_s();
+        grid_once(s, r->tol_abs, b, &r->grid);
+        grid_s[k] = bench_now_s() - t0;
+        if (st != SW_OK || res.index_count / 3 != r->trim.triangles)
+            problem = "seamwalk's timed run differs from its measured one";
+        else if (!problem && o.triangles != r->glu.triangles)
+            problem = "GLU's timed run differs from its measured one";
+        if (problem) {
+            fprintf(stderr, "%s at %g: %s\n", s->name, r->tol_abs, problem);
+            return 0;
+        }
+    }
+    put_spread(sw_s, repeats, &r->trim);
+    put_spread(glu_s, repeats, &r->glu);
+    put_spread(grid_s, repeats, &r->grid);
+    return 1;
 }
 
 /* ---- output ---------------------------------------------------------------------------- */
@@ -471,10 +478,14 @@ static int run_model(surface *s, int holes, double tol_rel, int repeats, buffers
     make_trims(s, holes, tol, t);
     *r = (result){.model = s->name, .tol_rel = tol_rel, .tol_abs = tol, .seam_points = t->n,
                   .loops_area = loops_area(t)};
-    if (!time_trim(s, t, tol, repeats, b, r) || !measure_trim(s, t, tol, b, r) ||
-        !time_glu(s, t, repeats, r))
+    trim_glu_surface g;
+    memset(&g, 0, sizeof g); /* freed below whichever step fails */
+    int ok = measure_trim(s, t, tol, b, r) && tune_glu(s, t, &g, r) &&
+             time_sides(s, t, &g, repeats, b, r);
+    trim_glu_free(&g);
+    if (!ok)
         return 0;
-    time_grid(s, t, tol, repeats, b, r);
+    r->grid_inside_triangles = grid_inside(s, t, tol);
     print_result(r);
     return 1;
 }
