@@ -24,6 +24,10 @@
  * whose points lie on the surface) the same-(u, v) one, which the search
  * uses, overstates what is seen.
  *
+ * Each repeat runs the four (seamwalk whole, seamwalk with stored bounds,
+ * GLU, GLU at equal error) once in turn, so that load from elsewhere on the
+ * machine falls on all of them alike.
+ *
  * Usage: tess_bench [--quick] [--repeats N] [--json FILE] [--samples DIR]
  * Prints figures; never fails on timing, only when a side cannot run. */
 #include <math.h>
@@ -346,43 +350,54 @@ static int measure_glu(const bench_model *m, double tol, timing *t)
 
 /* ---- measurement ------------------------------------------------------------ */
 
-static void time_seamwalk(const bench_model *m, double tol, int repeats, int stored_bounds,
-                          const sw_buffers *b, timing *t)
+static void put_spread(double *samples, int n, timing *t)
 {
-    double s[MAX_REPEATS];
-    for (int r = 0; r < repeats; r++) {
-        double t0 = bench_now_s();
-        run_seamwalk(m, tol, stored_bounds, b, t);
-        s[r] = bench_now_s() - t0;
-    }
-    bench_spread sp = bench_summarise(s, repeats);
+    bench_spread sp = bench_summarise(samples, n);
     t->median_s = sp.median_s, t->min_s = sp.min_s, t->max_s = sp.max_s;
 }
 
-static int time_glu(const bench_model *m, double tol, int repeats, timing *t)
+/* One timed GLU run at tol into t's counts and *seconds; 0 and a message
+ * when GLU fails. */
+static int glu_once(const bench_model *m, double tol, timing *t, double *seconds)
 {
-    double s[MAX_REPEATS];
-    for (int r = 0; r < repeats; r++) {
-        bench_glu g;
-        if (!bench_glu_open(&g, tol, NULL, NULL)) {
-            fprintf(stderr, "gluNewNurbsRenderer failed\n");
-            return 0;
-        }
-        double t0 = bench_now_s();
-        run_glu(m, g.nurb);
-        s[r] = bench_now_s() - t0;
-        const char *problem = bench_glu_problem(&g);
-        bench_glu_close(&g);
-        if (problem) {
-            fprintf(stderr, "%s: GLU: %s\n", m->name, problem);
-            return 0;
-        }
-        t->triangles = g.triangles;
-        t->normals = g.normals;
-        t->capped = 0;
+    bench_glu g;
+    if (!bench_glu_open(&g, tol, NULL, NULL)) {
+        fprintf(stderr, "gluNewNurbsRenderer failed\n");
+        return 0;
     }
-    bench_spread sp = bench_summarise(s, repeats);
-    t->median_s = sp.median_s, t->min_s = sp.min_s, t->max_s = sp.max_s;
+    double t0 = bench_now_s();
+    run_glu(m, g.nurb);
+    *seconds = bench_now_s() - t0;
+    const char *problem = bench_glu_problem(&g);
+    bench_glu_close(&g);
+    if (problem) {
+        fprintf(stderr, "%s: GLU: %s\n", m->name, problem);
+        return 0;
+    }
+    t->triangles = g.triangles, t->normals = g.normals, t->capped = 0;
+    return 1;
+}
+
+/* The four runs in turn, repeats rounds: load from elsewhere on the machine
+ * falls on all of them alike, so their ratios hold up under it. */
+static int time_sides(const bench_model *m, int repeats, const sw_buffers *b, result *r)
+{
+    double s[4][MAX_REPEATS];
+    for (int k = 0; k < repeats; k++) {
+        double t0 = bench_now_s();
+        run_seamwalk(m, r->tol_abs, 0, b, &r->sw);
+        s[0][k] = bench_now_s() - t0;
+        t0 = bench_now_s();
+        run_seamwalk(m, r->tol_abs, 1, b, &r->sw_stored);
+        s[1][k] = bench_now_s() - t0;
+        if (!glu_once(m, r->tol_abs, &r->glu, &s[2][k]) ||
+            !glu_once(m, r->glu_eq_tol, &r->glu_eq, &s[3][k]))
+            return 0;
+    }
+    put_spread(s[0], repeats, &r->sw);
+    put_spread(s[1], repeats, &r->sw_stored);
+    put_spread(s[2], repeats, &r->glu);
+    put_spread(s[3], repeats, &r->glu_eq);
     return 1;
 }
 
@@ -508,18 +523,15 @@ static int parse_options(int argc, char **argv, options *o)
     return 1;
 }
 
-/* GLU again, its tolerance searched (untimed) so that its measured error is
- * at most seamwalk's, then timed and measured there. */
-static int glu_at_equal_error(const bench_model *m, int repeats, result *r)
+/* GLU's tolerance searched (untimed) so that its measured error is at most
+ * seamwalk's. */
+static int tune_glu(const bench_model *m, result *r)
 {
     const char *problem = bench_glu_tune(glu_error_at, m, r->tol_abs, r->sw.error,
                                          &r->glu_eq_tol, &r->glu_eq_tries);
-    if (problem) {
+    if (problem)
         fprintf(stderr, "%s at %g: GLU: %s\n", m->name, r->tol_abs, problem);
-        return 0;
-    }
-    return time_glu(m, r->glu_eq_tol, repeats, &r->glu_eq) &&
-           measure_glu(m, r->glu_eq_tol, &r->glu_eq);
+    return !problem;
 }
 
 static int bench_model_all(const bench_model *m, const options *o, const sw_buffers *b,
@@ -533,20 +545,16 @@ static int bench_model_all(const bench_model *m, const options *o, const sw_buff
         result *r = &out[(*n)++];
         *r = (result){ .model = m->name, .patches = m->count, .size = m->size,
                        .tol_rel = tols[k], .tol_abs = tols[k] * m->size };
-        time_seamwalk(m, r->tol_abs, o->repeats, 0, b, &r->sw);
-        time_seamwalk(m, r->tol_abs, o->repeats, 1, b, &r->sw_stored);
-        if (!time_glu(m, r->tol_abs, o->repeats, &r->glu))
+        measure_seamwalk(m, r->tol_abs, b, &r->sw);
+        if (!tune_glu(m, r) || !time_sides(m, o->repeats, b, r))
             return 0;
         if (!r->sw.triangles || !r->glu.triangles) {
             fprintf(stderr, "%s: a tessellator produced no triangles\n", m->name);
             return 0;
         }
-        measure_seamwalk(m, r->tol_abs, b, &r->sw);
         r->sw_stored.error = r->sw.error; /* the same triangles */
         r->sw_stored.error_nearest = r->sw.error_nearest;
-        if (!measure_glu(m, r->tol_abs, &r->glu))
-            return 0;
-        if (!glu_at_equal_error(m, o->repeats, r))
+        if (!measure_glu(m, r->tol_abs, &r->glu) || !measure_glu(m, r->glu_eq_tol, &r->glu_eq))
             return 0;
         print_result(r);
     }
