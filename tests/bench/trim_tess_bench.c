@@ -53,7 +53,7 @@ typedef struct surface {
     const char *name;
     sw_trim_patch patches[MAX_PATCHES];
     float ctrl[MAX_PATCHES][64];
-    sw_deriv_bounds bounds[MAX_PATCHES]; /* the grid's, computed outside its timing */
+    sw_deriv_bounds bounds[MAX_PATCHES]; /* for counting the grid's cells inside the loops */
     uint32_t count;
     double size; /* control-box diagonal: errors are fractions of it */
 } surface;
@@ -277,13 +277,18 @@ static int tune_glu(const surface *s, const trims *t, trim_glu_surface *g, resul
     return 1;
 }
 
-/* The untrimmed grid over the whole patches: its triangles and vertices. */
+/* The untrimmed grid over the whole patches, the bounds included (the whole
+ * work, as for the other two): its triangles and vertices. */
 static void grid_once(const surface *s, double tol, buffers *b, stats *grid)
 {
     uint64_t tris = 0, verts = 0;
     for (uint32_t i = 0; i < s->count; i++) {
+        double exact[64]; /* bicubic at most (trim_tess_shapes.h) */
+        sw_bezier_patch p = sw_bezier_patch_from_float(&s->patches[i].patch, exact);
+        sw_deriv_bounds bounds = {0, 0, 0};
+        sw_bezier_second_deriv_bounds(&p, &bounds, NULL); /* positive weights: cannot fail */
         uint32_t nu, nv;
-        sw_tess_segments_for_error(&s->bounds[i], tol, &nu, &nv);
+        sw_tess_segments_for_error(&bounds, tol, &nu, &nv);
         sw_tess_grid(&s->patches[i].patch, nu, nv, 0, b->verts, b->idx);
         tris += 2ull * nu * nv, verts += (uint64_t)(nu + 1) * (nv + 1);
     }
