@@ -2,26 +2,41 @@
  * tessellator, on the Newell teaset and on a grid of random bicubic patches,
  * at the same object-space tolerance (a fraction of the model's size).
  *
- * Both sides produce positions and normals. seamwalk: sw_tess_segments_for_error
- * + sw_tess_grid per patch, timed; the second-derivative bounds are computed
- * before timing because the pack builder stores them (the runtime never
- * recomputes them). GLU: GLU_NURBS_TESSELLATOR mode with
- * GLU_OBJECT_PARAMETRIC_ERROR sampling, triangles counted in the callbacks,
- * normals generated because a normal callback is set (GLU's surface evaluator
- * turns auto-normals on exactly then). GLU needs a desktop compatibility
- * context (it pushes GL_EVAL_BIT), which sw_egl_headless provides headless.
+ * Both sides produce positions and normals, and both are timed for the whole
+ * work from control points to triangles. seamwalk: the second-derivative
+ * bounds (sw_bezier_second_deriv_bounds), sw_tess_segments_for_error and
+ * sw_tess_grid per patch. The pack builder stores the bounds, so the runtime
+ * never computes them: a second line gives seamwalk's time without them,
+ * labelled as such. GLU (bench_glu.h): GLU_NURBS_TESSELLATOR mode with
+ * GLU_OBJECT_PARAMETRIC_ERROR sampling, triangles counted in the callbacks.
+ *
+ * Each side's achieved error is measured, outside the timed runs and
+ * independently of its own claims (bench_error.h): every output triangle's
+ * vertices, edge midpoints and centroid against the exact patch at the same
+ * (u, v); seamwalk's (u, v) come from the grid, GLU's from a texture-coordinate
+ * map holding the identity that rides along in a separate, untimed run (whose
+ * triangle count must equal the timed one's). GLU's tolerance is not a bound
+ * on its measured error (up to 3.5x it here), so a third line gives GLU at
+ * the GLU_PARAMETRIC_TOLERANCE a search (bench_glu_tune, untimed) found to
+ * meet seamwalk's measured error, timed there: the ratio at equal error.
+ * Each error is also given to the nearest surface point: where the two
+ * differ much (slivers along a patch's collapsed edge, whose (u, v) slip but
+ * whose points lie on the surface) the same-(u, v) one, which the search
+ * uses, overstates what is seen.
+ *
+ * Each repeat runs the four (seamwalk whole, seamwalk with stored bounds,
+ * GLU, GLU at equal error) once in turn, so that load from elsewhere on the
+ * machine falls on all of them alike.
  *
  * Usage: tess_bench [--quick] [--repeats N] [--json FILE] [--samples DIR]
  * Prints figures; never fails on timing, only when a side cannot run. */
-#define _GNU_SOURCE   /* clock_gettime */
-#include <GL/gl.h>
-#include <GL/glu.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "bench_error.h"
+#include "bench_glu.h"
 #include "sw_bezier.h"
 #include "sw_egl_headless.h"
 #include "sw_import_newell.h"
@@ -37,7 +52,7 @@ enum { MAX_REPEATS = 31, MAX_RESULTS = 16 };
 /* One bicubic patch in both forms the two tessellators take. */
 typedef struct bench_patch {
     float ctrl[64];            /* sw_bezier_patch layout: (j * 4 + i) * 4 + xyzw */
-    sw_deriv_bounds bounds;
+    sw_deriv_bounds bounds;    /* for the stored-bounds line only */
 } bench_patch;
 
 typedef struct bench_model {
@@ -50,6 +65,8 @@ typedef struct bench_model {
 typedef struct timing {
     double median_s, min_s, max_s;
     uint64_t triangles, normals, capped;
+    double error;              /* measured max error (bench_error.h), at the same (u, v) */
+    double error_nearest;      /* the same, to the nearest surface point */
 } timing;
 
 typedef struct result {
@@ -57,6 +74,10 @@ typedef struct result {
     size_t patches;
     double size, tol_rel, tol_abs;
     timing sw, glu;
+    timing sw_stored;          /* seamwalk with the bounds precomputed, as packs store them */
+    timing glu_eq;             /* GLU at the tolerance that meets seamwalk's measured error */
+    double glu_eq_tol;
+    int glu_eq_tries;
 } result;
 
 typedef struct options {
@@ -64,13 +85,6 @@ typedef struct options {
     const char *json_path;
     const char *samples;
 } options;
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* ---- models ---------------------------------------------------------------- */
 
@@ -179,13 +193,28 @@ typedef struct sw_buffers {
     uint16_t *indices;
 } sw_buffers;
 
-static void run_seamwalk(const bench_model *m, double tol, const sw_buffers *b, timing *t)
+/* The bounds from the float patch, the one both tessellators see. */
+static sw_deriv_bounds patch_bounds(const bench_patch *p)
+{
+    double exact[64];
+    sw_bezier_patchf pf = {3, 3, 0, p->ctrl};
+    sw_bezier_patch pd = sw_bezier_patch_from_float(&pf, exact);
+    sw_deriv_bounds b = {0, 0, 0};
+    sw_bezier_second_deriv_bounds(&pd, &b, NULL); /* checked when the model was made */
+    return b;
+}
+
+/* One run over the model; stored_bounds 0 computes each patch's bounds as
+ * part of the work, 1 takes the ones add_patch computed. */
+static void run_seamwalk(const bench_model *m, double tol, int stored_bounds, const sw_buffers *b,
+                         timing *t)
 {
     uint64_t tris = 0, capped = 0, normals = 0;
     for (size_t i = 0; i < m->count; i++) {
         const bench_patch *p = &m->patches[i];
+        sw_deriv_bounds bounds = stored_bounds ? p->bounds : patch_bounds(p);
         uint32_t nu, nv;
-        capped += !sw_tess_segments_for_error(&p->bounds, tol, &nu, &nv);
+        capped += !sw_tess_segments_for_error(&bounds, tol, &nu, &nv);
         sw_bezier_patchf pf = { 3, 3, 0, p->ctrl };
         sw_tess_grid(&pf, nu, nv, 0, b->verts, b->indices);
         tris += 2ull * nu * nv;
@@ -196,154 +225,179 @@ static void run_seamwalk(const bench_model *m, double tol, const sw_buffers *b, 
     t->capped = capped;
 }
 
+/* Both measured errors of one triangle of patch pf into the running maxima. */
+static void measure_triangle(const sw_bezier_patchf *pf, const float p[3][3],
+                             const float uv[3][2], int nearest, double worst[2])
+{
+    static const double unit[4] = {0, 1, 0, 1};
+    worst[0] = fmax(worst[0], bench_triangle_error(p, uv, bench_patchf_at, pf));
+    if (nearest)
+        worst[1] = bench_triangle_error_nearest(p, uv, bench_patchf_at, pf, unit, worst[1]);
+}
+
+/* Vertex k of an nu x nv grid sits at (k mod (nu + 1), k div (nu + 1)). */
+static void grid_error(const sw_bezier_patchf *pf, uint32_t nu, uint32_t nv,
+                       const sw_buffers *b, double worst[2])
+{
+    for (uint32_t t = 0; t < 2 * nu * nv; t++) {
+        float p[3][3], uv[3][2];
+        for (int k = 0; k < 3; k++) {
+            uint32_t v = b->indices[3 * t + (uint32_t)k];
+            memcpy(p[k], b->verts[v].pos, sizeof p[k]);
+            uv[k][0] = (float)(v % (nu + 1)) / (float)nu;
+            uv[k][1] = (float)(v / (nu + 1)) / (float)nv;
+        }
+        measure_triangle(pf, p, uv, 1, worst);
+    }
+}
+
+static void measure_seamwalk(const bench_model *m, double tol, const sw_buffers *b, timing *t)
+{
+    double worst[2] = {0, 0};
+    for (size_t i = 0; i < m->count; i++) {
+        sw_deriv_bounds bounds = patch_bounds(&m->patches[i]);
+        uint32_t nu, nv;
+        sw_tess_segments_for_error(&bounds, tol, &nu, &nv);
+        sw_bezier_patchf pf = {3, 3, 0, m->patches[i].ctrl};
+        sw_tess_grid(&pf, nu, nv, 0, b->verts, b->indices);
+        grid_error(&pf, nu, nv, b, worst);
+    }
+    t->error = worst[0], t->error_nearest = worst[1];
+}
+
 /* ---- GLU ------------------------------------------------------------------- */
 
-typedef struct glu_counter {
-    GLenum type;
-    uint64_t run, vertices, normals, triangles;
-    GLenum error;
-    float sink;                /* touches the data, as a real consumer would */
-} glu_counter;
-
-static uint64_t triangles_in(GLenum type, uint64_t n)
-{
-    switch (type) {
-    case GL_TRIANGLES: return n / 3;
-    case GL_TRIANGLE_STRIP:
-    case GL_TRIANGLE_FAN:
-    case GL_POLYGON: return n >= 3 ? n - 2 : 0;
-    case GL_QUAD_STRIP: return n >= 4 ? 2 * ((n - 2) / 2) : 0;
-    case GL_QUADS: return 2 * (n / 4);
-    default: return 0;   /* points and lines (trim curves) are not surface */
-    }
-}
-
-static void GLAPIENTRY glu_begin(GLenum type, void *data)
-{
-    glu_counter *c = data;
-    c->type = type;
-    c->run = 0;
-}
-
-static void GLAPIENTRY glu_vertex(GLfloat *v, void *data)
-{
-    glu_counter *c = data;
-    c->run++;
-    c->vertices++;
-    c->sink += v[0];
-}
-
-static void GLAPIENTRY glu_normal(GLfloat *n, void *data)
-{
-    glu_counter *c = data;
-    c->normals++;
-    c->sink += n[2];
-}
-
-static void GLAPIENTRY glu_end(void *data)
-{
-    glu_counter *c = data;
-    c->triangles += triangles_in(c->type, c->run);
-}
-
-static void GLAPIENTRY glu_error(GLenum code, void *data)
-{
-    glu_counter *c = data;
-    c->error = code;
-}
-
-/* A fresh tessellator per run, so no setting or cache carries over. */
-static GLUnurbs *glu_create(double tol, glu_counter *c)
-{
-    GLUnurbs *nurb = gluNewNurbsRenderer();
-    if (!nurb)
-        return NULL;
-    gluNurbsProperty(nurb, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR);
-    gluNurbsProperty(nurb, GLU_SAMPLING_METHOD, GLU_OBJECT_PARAMETRIC_ERROR);
-    gluNurbsProperty(nurb, GLU_PARAMETRIC_TOLERANCE, (GLfloat)tol);
-    /* Object-space sampling already turned GLU_AUTO_LOAD_MATRIX off and the
-     * sampling matrix to identity; loading matrices here would rescale it. */
-    gluNurbsProperty(nurb, GLU_CULLING, GL_FALSE);
-    gluNurbsCallbackData(nurb, c);
-    /* _GLUfuncptr is void (*)(void), which GCC lets any function pointer become. */
-    gluNurbsCallback(nurb, GLU_NURBS_BEGIN_DATA, (_GLUfuncptr)glu_begin);
-    gluNurbsCallback(nurb, GLU_NURBS_VERTEX_DATA, (_GLUfuncptr)glu_vertex);
-    gluNurbsCallback(nurb, GLU_NURBS_NORMAL_DATA, (_GLUfuncptr)glu_normal);
-    gluNurbsCallback(nurb, GLU_NURBS_END_DATA, (_GLUfuncptr)glu_end);
-    gluNurbsCallback(nurb, GLU_NURBS_ERROR, (_GLUfuncptr)glu_error);
-    return nurb;
-}
-
 /* A Bezier patch is a NURBS patch with knots {0,0,0,0,1,1,1,1}. Our layout
- * steps 4 floats along u and 16 along v; GL_MAP2_VERTEX_3 reads x, y, z. */
-static void run_glu(const bench_model *m, GLUnurbs *nurb)
+ * steps 4 floats along u and 16 along v; GL_MAP2_VERTEX_3 reads x, y, z.
+ * tex_uv: also the identity map for capturing runs (NULL: none). */
+static void glu_patch(GLUnurbs *nurb, const bench_patch *p, GLfloat *tex_uv)
 {
     static GLfloat knots[8] = { 0, 0, 0, 0, 1, 1, 1, 1 };
+    gluBeginSurface(nurb);
+    if (tex_uv)
+        gluNurbsSurface(nurb, 8, knots, 8, knots, 2, 8, tex_uv, 4, 4, GL_MAP2_TEXTURE_COORD_2);
+    gluNurbsSurface(nurb, 8, knots, 8, knots, 4, 16, (GLfloat *)p->ctrl, 4, 4, GL_MAP2_VERTEX_3);
+    gluEndSurface(nurb);
+}
+
+static void run_glu(const bench_model *m, GLUnurbs *nurb)
+{
+    for (size_t i = 0; i < m->count; i++)
+        glu_patch(nurb, &m->patches[i], NULL);
+}
+
+/* The patch GLU is tessellating in a capturing run and the worst errors yet
+ * (the nearest-point one only when asked: it costs ten times more). */
+typedef struct glu_probe {
+    const bench_patch *patch;
+    int nearest;
+    double worst[2];
+} glu_probe;
+
+static void probe_triangle(void *user, const float p[3][3], const float uv[3][2])
+{
+    glu_probe *probe = user;
+    sw_bezier_patchf pf = {3, 3, 0, probe->patch->ctrl};
+    measure_triangle(&pf, p, uv, probe->nearest, probe->worst);
+}
+
+/* GLU's triangles and measured errors at tol: NULL, else GLU's problem. */
+static const char *glu_errors(const bench_model *m, double tol, int nearest, uint64_t *tris,
+                              double error[2])
+{
+    /* The identity in Bernstein form: control point (i, j) at (i/3, j/3). */
+    GLfloat tex[32];
+    for (int j = 0; j < 4; j++)
+        for (int i = 0; i < 4; i++)
+            tex[(j * 4 + i) * 2] = (GLfloat)i / 3, tex[(j * 4 + i) * 2 + 1] = (GLfloat)j / 3;
+    glu_probe probe = {NULL, nearest, {0, 0}};
+    bench_glu g;
+    if (!bench_glu_open(&g, tol, probe_triangle, &probe))
+        return "gluNewNurbsRenderer failed";
     for (size_t i = 0; i < m->count; i++) {
-        gluBeginSurface(nurb);
-        gluNurbsSurface(nurb, 8, knots, 8, knots, 4, 16, (GLfloat *)m->patches[i].ctrl, 4, 4,
-                        GL_MAP2_VERTEX_3);
-        gluEndSurface(nurb);
+        probe.patch = &m->patches[i];
+        glu_patch(g.nurb, probe.patch, tex);
     }
+    const char *problem = bench_glu_problem(&g);
+    *tris = g.triangles, error[0] = probe.worst[0], error[1] = probe.worst[1];
+    bench_glu_close(&g);
+    return problem;
+}
+
+/* bench_glu_measure_fn on a const bench_model *: the same-(u, v) error only. */
+static const char *glu_error_at(const void *model, double tol, uint64_t *tris, double *error)
+{
+    double e[2];
+    const char *problem = glu_errors(model, tol, 0, tris, e);
+    *error = e[0];
+    return problem;
+}
+
+/* The measured error of the timed runs' t (at tol): 0 and a message when
+ * GLU fails or the capturing run gives another triangle count. */
+static int measure_glu(const bench_model *m, double tol, timing *t)
+{
+    uint64_t tris = 0;
+    double e[2] = {0, 0};
+    const char *problem = glu_errors(m, tol, 1, &tris, e);
+    t->error = e[0], t->error_nearest = e[1];
+    if (!problem && tris != t->triangles)
+        problem = "the capturing run's triangle count differs from the timed runs'";
+    if (problem)
+        fprintf(stderr, "%s: GLU: %s\n", m->name, problem);
+    return !problem;
 }
 
 /* ---- measurement ------------------------------------------------------------ */
 
-static int cmp_double(const void *a, const void *b)
+static void put_spread(double *samples, int n, timing *t)
 {
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
+    bench_spread sp = bench_summarise(samples, n);
+    t->median_s = sp.median_s, t->min_s = sp.min_s, t->max_s = sp.max_s;
 }
 
-static void summarise(double *s, int n, timing *t)
+/* One timed GLU run at tol into t's counts and *seconds; 0 and a message
+ * when GLU fails. */
+static int glu_once(const bench_model *m, double tol, timing *t, double *seconds)
 {
-    qsort(s, (size_t)n, sizeof *s, cmp_double);
-    t->min_s = s[0];
-    t->max_s = s[n - 1];
-    t->median_s = n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
-}
-
-static void time_seamwalk(const bench_model *m, double tol, int repeats, const sw_buffers *b,
-                          timing *t)
-{
-    double s[MAX_REPEATS];
-    for (int r = 0; r < repeats; r++) {
-        double t0 = now_s();
-        run_seamwalk(m, tol, b, t);
-        s[r] = now_s() - t0;
+    bench_glu g;
+    if (!bench_glu_open(&g, tol, NULL, NULL)) {
+        fprintf(stderr, "gluNewNurbsRenderer failed\n");
+        return 0;
     }
-    summarise(s, repeats, t);
+    double t0 = bench_now_s();
+    run_glu(m, g.nurb);
+    *seconds = bench_now_s() - t0;
+    const char *problem = bench_glu_problem(&g);
+    bench_glu_close(&g);
+    if (problem) {
+        fprintf(stderr, "%s: GLU: %s\n", m->name, problem);
+        return 0;
+    }
+    t->triangles = g.triangles, t->normals = g.normals, t->capped = 0;
+    return 1;
 }
 
-static int time_glu(const bench_model *m, double tol, int repeats, timing *t)
+/* The four runs in turn, repeats rounds: load from elsewhere on the machine
+ * falls on all of them alike, so their ratios hold up under it. */
+static int time_sides(const bench_model *m, int repeats, const sw_buffers *b, result *r)
 {
-    double s[MAX_REPEATS];
-    for (int r = 0; r < repeats; r++) {
-        glu_counter c = { 0 };
-        GLUnurbs *nurb = glu_create(tol, &c);
-        if (!nurb) {
-            fprintf(stderr, "gluNewNurbsRenderer failed\n");
+    double s[4][MAX_REPEATS];
+    for (int k = 0; k < repeats; k++) {
+        double t0 = bench_now_s();
+        run_seamwalk(m, r->tol_abs, 0, b, &r->sw);
+        s[0][k] = bench_now_s() - t0;
+        t0 = bench_now_s();
+        run_seamwalk(m, r->tol_abs, 1, b, &r->sw_stored);
+        s[1][k] = bench_now_s() - t0;
+        if (!glu_once(m, r->tol_abs, &r->glu, &s[2][k]) ||
+            !glu_once(m, r->glu_eq_tol, &r->glu_eq, &s[3][k]))
             return 0;
-        }
-        double t0 = now_s();
-        run_glu(m, nurb);
-        s[r] = now_s() - t0;
-        gluDeleteNurbsRenderer(nurb);
-        if (c.error) {
-            fprintf(stderr, "GLU NURBS error %u: %s\n", (unsigned)c.error,
-                    (const char *)gluErrorString(c.error));
-            return 0;
-        }
-        t->triangles = c.triangles;
-        t->normals = c.normals;
-        t->capped = 0;
-        if (c.normals != c.vertices) {
-            fprintf(stderr, "GLU gave %llu normals for %llu vertices\n",
-                    (unsigned long long)c.normals, (unsigned long long)c.vertices);
-            return 0;
-        }
     }
-    summarise(s, repeats, t);
+    put_spread(s[0], repeats, &r->sw);
+    put_spread(s[1], repeats, &r->sw_stored);
+    put_spread(s[2], repeats, &r->glu);
+    put_spread(s[3], repeats, &r->glu_eq);
     return 1;
 }
 
@@ -352,10 +406,12 @@ static double mtri_per_s(const timing *t)
     return t->median_s > 0 ? (double)t->triangles / t->median_s * 1e-6 : 0.0;
 }
 
-static void print_timing(const char *name, const timing *t)
+static void print_timing(const char *name, const timing *t, double tol)
 {
-    printf("  %-9s triangles %10llu  median %.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s",
-           name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s, mtri_per_s(t));
+    printf("  %-9s triangles %10llu  median %.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s"
+           "  measured error %.3g (%.2f x tolerance; to the nearest point %.3g)",
+           name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s,
+           mtri_per_s(t), t->error, t->error / tol, t->error_nearest);
     if (t->capped)
         printf("  [%llu patches capped at %u segments]", (unsigned long long)t->capped,
                SW_TESS_MAX_SEGMENTS);
@@ -366,12 +422,27 @@ static void print_result(const result *r)
 {
     printf("%s (%zu patches, size %.4g), tolerance %.0e of size = %.4g\n", r->model, r->patches,
            r->size, r->tol_rel, r->tol_abs);
-    print_timing("seamwalk", &r->sw);
-    print_timing("glu", &r->glu);
+    print_timing("seamwalk", &r->sw, r->tol_abs);
+    print_timing("glu", &r->glu, r->tol_abs);
     double mt = mtri_per_s(&r->glu) > 0 ? mtri_per_s(&r->sw) / mtri_per_s(&r->glu) : 0.0;
     double tr = r->glu.triangles ? (double)r->sw.triangles / (double)r->glu.triangles : 0.0;
     double ti = r->glu.median_s > 0 ? r->sw.median_s / r->glu.median_s : 0.0;
-    printf("  ratio seamwalk/GLU: Mtri/s %.2f, triangles %.2f, time %.3f\n", mt, tr, ti);
+    printf("  ratio seamwalk/GLU: Mtri/s %.2f, triangles %.2f, time %.3f"
+           "  (measured error: seamwalk %.3g, GLU %.3g)\n",
+           mt, tr, ti, r->sw.error, r->glu.error);
+    const timing *eq = &r->glu_eq;
+    printf("  glu at seamwalk's measured error (tolerance %.3g, %d tried): triangles %llu  "
+           "median %.6f s (min %.6f .. max %.6f)  %.2f Mtri/s  measured error %.3g (nearest "
+           "point %.3g); ratio seamwalk/GLU: time %.3f, time per triangle %.3f\n",
+           r->glu_eq_tol, r->glu_eq_tries, (unsigned long long)eq->triangles, eq->median_s,
+           eq->min_s, eq->max_s, mtri_per_s(eq), eq->error, eq->error_nearest,
+           eq->median_s > 0 ? r->sw.median_s / eq->median_s : 0.0,
+           mtri_per_s(&r->sw) > 0 ? mtri_per_s(eq) / mtri_per_s(&r->sw) : 0.0);
+    const timing *st = &r->sw_stored;
+    printf("  bounds precomputed (as packs store them, not the whole work): seamwalk median "
+           "%.6f s (min %.6f .. max %.6f)  %8.2f Mtri/s, time ratio to GLU %.3f\n",
+           st->median_s, st->min_s, st->max_s, mtri_per_s(st),
+           r->glu.median_s > 0 ? st->median_s / r->glu.median_s : 0.0);
 }
 
 /* ---- JSON ------------------------------------------------------------------ */
@@ -380,9 +451,11 @@ static void json_timing(FILE *f, const char *name, const timing *t, int last)
 {
     fprintf(f,
             "      \"%s\": {\"triangles\": %llu, \"median_s\": %.9f, \"min_s\": %.9f, "
-            "\"max_s\": %.9f, \"mtri_per_s\": %.4f, \"capped_patches\": %llu}%s\n",
+            "\"max_s\": %.9f, \"mtri_per_s\": %.4f, \"capped_patches\": %llu, "
+            "\"measured_error\": %.9g, \"measured_error_nearest\": %.9g}%s\n",
             name, (unsigned long long)t->triangles, t->median_s, t->min_s, t->max_s,
-            mtri_per_s(t), (unsigned long long)t->capped, last ? "" : ",");
+            mtri_per_s(t), (unsigned long long)t->capped, t->error, t->error_nearest,
+            last ? "" : ",");
 }
 
 static int write_json(const char *path, const options *o, const char *renderer, const result *r,
@@ -404,8 +477,14 @@ static int write_json(const char *path, const options *o, const char *renderer, 
                 r[i].tol_abs);
         json_timing(f, "seamwalk", &r[i].sw, 0);
         json_timing(f, "glu", &r[i].glu, 0);
-        fprintf(f, "      \"ratio_mtri_per_s\": %.4f\n    }%s\n",
-                glu_rate > 0 ? mtri_per_s(&r[i].sw) / glu_rate : 0.0, i + 1 < n ? "," : "");
+        json_timing(f, "seamwalk_bounds_precomputed", &r[i].sw_stored, 0);
+        json_timing(f, "glu_at_equal_error", &r[i].glu_eq, 0);
+        fprintf(f, "      \"glu_at_equal_error_tolerance\": %.9g, \"glu_tolerances_tried\": %d,\n",
+                r[i].glu_eq_tol, r[i].glu_eq_tries);
+        fprintf(f, "      \"ratio_mtri_per_s\": %.4f, \"ratio_time\": %.4f\n    }%s\n",
+                glu_rate > 0 ? mtri_per_s(&r[i].sw) / glu_rate : 0.0,
+                r[i].glu.median_s > 0 ? r[i].sw.median_s / r[i].glu.median_s : 0.0,
+                i + 1 < n ? "," : "");
     }
     fprintf(f, "  ]\n}\n");
     int ok = !ferror(f);
@@ -444,6 +523,17 @@ static int parse_options(int argc, char **argv, options *o)
     return 1;
 }
 
+/* GLU's tolerance searched (untimed) so that its measured error is at most
+ * seamwalk's. */
+static int tune_glu(const bench_model *m, result *r)
+{
+    const char *problem = bench_glu_tune(glu_error_at, m, r->tol_abs, r->sw.error,
+                                         &r->glu_eq_tol, &r->glu_eq_tries);
+    if (problem)
+        fprintf(stderr, "%s at %g: GLU: %s\n", m->name, r->tol_abs, problem);
+    return !problem;
+}
+
 static int bench_model_all(const bench_model *m, const options *o, const sw_buffers *b,
                            result *out, int *n)
 {
@@ -455,13 +545,17 @@ static int bench_model_all(const bench_model *m, const options *o, const sw_buff
         result *r = &out[(*n)++];
         *r = (result){ .model = m->name, .patches = m->count, .size = m->size,
                        .tol_rel = tols[k], .tol_abs = tols[k] * m->size };
-        time_seamwalk(m, r->tol_abs, o->repeats, b, &r->sw);
-        if (!time_glu(m, r->tol_abs, o->repeats, &r->glu))
+        measure_seamwalk(m, r->tol_abs, b, &r->sw);
+        if (!tune_glu(m, r) || !time_sides(m, o->repeats, b, r))
             return 0;
         if (!r->sw.triangles || !r->glu.triangles) {
             fprintf(stderr, "%s: a tessellator produced no triangles\n", m->name);
             return 0;
         }
+        r->sw_stored.error = r->sw.error; /* the same triangles */
+        r->sw_stored.error_nearest = r->sw.error_nearest;
+        if (!measure_glu(m, r->tol_abs, &r->glu) || !measure_glu(m, r->glu_eq_tol, &r->glu_eq))
+            return 0;
         print_result(r);
     }
     return 1;
