@@ -57,21 +57,32 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     size_t d = (size_t)(max_degree < 1 ? 1 : max_degree > SW_BEZIER_MAX_DEGREE
                                                  ? SW_BEZIER_MAX_DEGREE : max_degree);
     size_t ctrl = sw_tt_ctrl_doubles((int)d, (int)d) * sizeof(double) + 8;
-    size_t v = max_vertices_of(opt, 0), n = point_count, depth = max_depth_of(opt);
-    size_t bytes = patch_count * (ctrl + sizeof(sw_bezier_patch) + 8);
-    bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t)) + (n / 3 + 1) * sizeof(sw_tt_loop);
-    bytes += (2 * depth + 4) * (sizeof(tt_frame) + ctrl) + ctrl;
-    bytes += ((2 * depth + 4) * n + 64) * sizeof(uint32_t);            /* list stack */
-    bytes += v * sizeof(tt_leaf) + (4 * v + 2 * n) * sizeof(uint32_t);  /* leaves, lists */
-    bytes += 2 * 4 * (v + 1) * 2 * sizeof(double);                     /* corner index */
+    size_t v = max_vertices_of(opt, 0), n = point_count, np = patch_count;
+    /* patches, loops (sw_trim_loops.c) */
+    size_t bytes = np * (ctrl + sizeof(sw_bezier_patch) + 8) + ctrl;
+    bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t) + 2 * sizeof(double)) +
+             (n / 3 + 1) * sizeof(sw_tt_loop) + 64;
+    /* knots, patch table, sub-patch bounds and counts (sw_trim_grid.c) */
+    bytes += np * (4 * sizeof(double) + 1 + 3 * SW_TT_SUB * SW_TT_SUB * sizeof(double) +
+                   4 * SW_TT_SUB * sizeof(double)) + (4 * np + 16) * sizeof(uint32_t);
+    /* grid lines, each axis at most v + 4 np + SW_TT_MAX_INSERT (lay_lines) */
+    size_t lines = v + 4 * np + SW_TT_MAX_INSERT + 2;
+    bytes += 2 * lines * (sizeof(double) + sizeof(uint32_t) + 1);
+    /* pairs twice, row and column starts (sw_trim_bucket.c) */
+    bytes += 2 * (4 * v + 2 * n + 64) * sizeof(tt_pair) + 2 * lines * sizeof(uint32_t);
+    /* vertex table */
     bytes += v * (2 * sizeof(double) + 1) + hash_size((uint32_t)v) * sizeof(uint32_t);
-    /* One cell at a time: its border (SW_TT_MAX_BORDER points), then per
-     * border point or loop point: an item of the walk (56 bytes), a ring
-     * vertex and its ring end (36), chain tables (21) and the ear clipping's
-     * map, links and triangles (24); rounded up. */
-    size_t cell = SW_TT_MAX_BORDER + 3 * n + 8;
-    bytes += SW_TT_MAX_BORDER * sizeof(sw_tt_pv) + cell * 160;
-    return bytes + 64 * 32; /* alignment of every allocation */
+    /* the sweep: per loop point a mark, a crossing, a segment; per column
+     * split flags and two vertex ids; the evaluation cache per knot column */
+    bytes += (n + 1) * 16 + lines * (3 + 2 * sizeof(uint32_t)) +
+             4 * np * (8 * (d + 1) * sizeof(double) + sizeof(uint32_t));
+    /* One cell at a time: per border point (at most 4 SW_TT_MAX_SPLIT) or
+     * loop point an item of the walk (56 bytes), a ring vertex and its ring
+     * end (36), chain tables (21) and the ear clipping's map, links and
+     * triangles (24); rounded up. */
+    size_t cell = 4 * SW_TT_MAX_SPLIT + 3 * n + 8;
+    bytes += cell * 160;
+    return bytes + 64 * 64; /* alignment of every allocation */
 }
 
 /* ---- input ----------------------------------------------------------------- */
@@ -146,9 +157,15 @@ static uint32_t hash_key(double u, double v, uint32_t kind)
     return (uint32_t)(h ^ (h >> 32));
 }
 
-/* The patch whose domain holds (u, v) (the nearest when none does). */
-static uint32_t patch_at(const tt_ctx *c, double u, double v)
+/* The patch whose knot cell holds (u, v): binary search on the knot lines,
+ * the nearest patch by a scan where the grid has no patch there. */
+uint32_t sw_tt_patch_at(const tt_ctx *c, double u, double v)
 {
+    const tt_grid *g = &c->grid;
+    uint32_t p = sw_tt_knot_patch(c, sw_tt_interval(g->ku, g->nku, u),
+                                  sw_tt_interval(g->kv, g->nkv, v));
+    if (p != SW_TT_NONE)
+        return p;
     uint32_t best = 0;
     double best_d = INFINITY;
     for (uint32_t i = 0; i < c->patch_count; i++) {
@@ -156,18 +173,8 @@ static uint32_t patch_at(const tt_ctx *c, double u, double v)
         double du = fmax(fmax(d[0] - u, u - d[1]), 0), dv = fmax(fmax(d[2] - v, v - d[3]), 0);
         if (du + dv < best_d)
             best = i, best_d = du + dv;
-        if (best_d == 0)
-            break;
     }
     return best;
-}
-
-static void eval_surface(const tt_ctx *c, uint32_t p, double u, double v, sw_surface_point *q)
-{
-    const float *d = c->in_patches[p].domain;
-    double s = fmin(fmax((u - d[0]) / ((double)d[1] - d[0]), 0), 1);
-    double t = fmin(fmax((v - d[2]) / ((double)d[3] - d[2]), 0), 1);
-    sw_bezier_eval(&c->patches[p], s, t, SW_EVAL_FIRST, q);
 }
 
 static sw_status new_vertex(tt_ctx *c, uint32_t *index)
@@ -198,12 +205,12 @@ static void put_vertex(const tt_ctx *c, uint32_t i, const float p[3], sw_vec3 n,
 
 /* A loop point or a crossing: the caller's position, the surface's normal
  * at the loop point's own (u, v). */
-static void put_border(const tt_ctx *c, uint32_t i, uint32_t src, double u, double v)
+static void put_border(tt_ctx *c, uint32_t i, uint32_t src, double u, double v)
 {
     const sw_trim_point *tp = &c->in_loops->points[src];
-    sw_surface_point q;
-    eval_surface(c, patch_at(c, tp->uv[0], tp->uv[1]), tp->uv[0], tp->uv[1], &q);
-    put_vertex(c, i, tp->p, q.normal, u, v, tp->id);
+    sw_vec3 pos, normal;
+    sw_tt_eval_at(c, sw_tt_patch_at(c, tp->uv[0], tp->uv[1]), tp->uv[0], tp->uv[1], &pos, &normal);
+    put_vertex(c, i, tp->p, normal, u, v, tp->id);
 }
 
 /* A crossing on its seam segment (crossing_on_segment): the chord point
@@ -213,11 +220,11 @@ static void put_border(const tt_ctx *c, uint32_t i, uint32_t src, double u, doub
  * away from where the surface puts (u, v) (teaset: 1 px of a 0.5 px bound).
  * Deterministic: the crossing is one vertex of the surface's mesh, evaluated
  * once on the patch patch_at picks for its (u, v). */
-static void put_on_segment(const tt_ctx *c, uint32_t i, const sw_tt_pv *pv)
+static void put_on_segment(tt_ctx *c, uint32_t i, const sw_tt_pv *pv)
 {
     const float *a = c->in_loops->points[pv->ref_a].p, *b = c->in_loops->points[pv->ref_b].p;
     sw_surface_point q;
-    eval_surface(c, patch_at(c, pv->u, pv->v), pv->u, pv->v, &q);
+    sw_tt_eval_at(c, sw_tt_patch_at(c, pv->u, pv->v), pv->u, pv->v, &q.p, &q.normal);
     double ab[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
     double aq[3] = {q.p.x - a[0], q.p.y - a[1], q.p.z - a[2]};
     double len2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
@@ -229,7 +236,7 @@ static void put_on_segment(const tt_ctx *c, uint32_t i, const sw_tt_pv *pv)
     put_vertex(c, i, p, q.normal, pv->u, pv->v, SW_TRIM_CROSSING);
 }
 
-static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32_t *out)
+sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32_t *out)
 {
     if (pv->kind == SW_TT_SEAM) {
         uint32_t *slot = &c->seam_out[pv->ref];
@@ -261,73 +268,47 @@ static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint3
     } else if (pv->kind == SW_TT_CROSS) {
         put_border(c, *out, pv->ref, pv->u, pv->v);
     } else {
-        sw_surface_point q;
-        eval_surface(c, patch, pv->u, pv->v, &q);
-        float p[3] = {(float)q.p.x, (float)q.p.y, (float)q.p.z};
-        put_vertex(c, *out, p, q.normal, pv->u, pv->v, SW_TRIM_INTERIOR);
+        sw_vec3 pos, normal;
+        sw_tt_eval_at(c, patch, pv->u, pv->v, &pos, &normal);
+        float p[3] = {(float)pos.x, (float)pos.y, (float)pos.z};
+        put_vertex(c, *out, p, normal, pv->u, pv->v, SW_TRIM_INTERIOR);
     }
     return SW_OK;
 }
 
-static sw_status emit_ring(tt_ctx *c, uint32_t patch, const sw_tt_pv *ring, uint32_t n)
+sw_status sw_tt_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
+                            uint32_t *out)
 {
-    uint32_t *map = sw_arena_alloc(c->arena, sizeof(uint32_t) * 6 * (size_t)n, 4);
-    if (!map)
-        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
-    uint32_t *scratch = map + n, *tri = map + 3 * (size_t)n;
-    for (uint32_t i = 0; i < n; i++) {
-        sw_status s = vertex_for(c, patch, &ring[i], &map[i]);
-        if (s != SW_OK)
-            return s;
+    uint32_t *slot = &c->line_ids[line & 1][col];
+    if (*slot != SW_TT_NONE) {
+        *out = *slot;
+        return SW_OK;
     }
-    uint32_t count = sw_tt_ear_clip(ring, n, scratch, tri, &c->res->fallback_ears);
+    sw_status s = new_vertex(c, slot);
+    if (s != SW_OK)
+        return s;
+    sw_vec3 pos, normal;
+    sw_tt_eval_grid(c, patch, col, line, &pos, &normal);
+    float p[3] = {(float)pos.x, (float)pos.y, (float)pos.z};
+    put_vertex(c, *slot, p, normal, c->grid.gu[col], c->grid.gv[line], SW_TRIM_INTERIOR);
+    *out = *slot;
+    return SW_OK;
+}
+
+void sw_tt_put_triangle(tt_ctx *c, uint32_t a, uint32_t b, uint32_t d)
+{
     const sw_trim_tess_buffers *o = c->out;
-    for (uint32_t t = 0; t < count; t++) {
-        for (int k = 0; k < 3; k++) {
-            if (o && c->index_count < o->index_capacity)
-                o->indices[c->index_count] = (uint16_t)(o->base_vertex + map[tri[3 * t + k]]);
-            c->index_count++;
-        }
+    if (o && c->index_count + 3 <= o->index_capacity) {
+        uint16_t *x = o->indices + c->index_count;
+        x[0] = (uint16_t)(o->base_vertex + a), x[1] = (uint16_t)(o->base_vertex + b);
+        x[2] = (uint16_t)(o->base_vertex + d);
+    } else if (o) {
+        const uint32_t v[3] = {a, b, d};
+        for (uint32_t k = 0; k < 3; k++)
+            if (c->index_count + k < o->index_capacity)
+                o->indices[c->index_count + k] = (uint16_t)(o->base_vertex + v[k]);
     }
-    return SW_OK;
-}
-
-static sw_status emit_leaf(tt_ctx *c, uint32_t l)
-{
-    const tt_leaf *leaf = &c->leaves[l];
-    sw_tt_pv *border = sw_arena_alloc(c->arena, sizeof *border * SW_TT_MAX_BORDER, 8);
-    if (!border)
-        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
-    uint32_t nb = sw_tt_leaf_border(c, l, border, SW_TT_MAX_BORDER);
-    if (nb == SW_TT_NONE)
-        return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: a cell borders more than %d finer "
-                            "cells: coarsen the bound", SW_TT_MAX_BORDER);
-    if (!leaf->crossed)
-        return emit_ring(c, leaf->patch, border, nb);
-    c->res->crossed_count++;
-    sw_tt_rings rings;
-    int rc = sw_tt_cell_rings(&c->trims, &leaf->r, c->leaf_segs + leaf->seg_first,
-                              leaf->seg_count, border, nb, c->stamp, l + 1, c->arena, &rings,
-                              &c->res->skipped_loops);
-    if (rc == SW_TT_CELL_NO_MEMORY)
-        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
-    if (rc == SW_TT_CELL_BAD)
-        return sw_error_set(c->err, SW_ERR_FORMAT, "trim tess: loops cross each other or "
-                            "themselves near (%g, %g)", 0.5 * (leaf->r.u0 + leaf->r.u1),
-                            0.5 * (leaf->r.v0 + leaf->r.v1));
-    if (rc == SW_TT_CELL_EMPTY) {
-        const sw_tt_rect *r = &leaf->r;
-        if (!sw_tt_classify(&c->trims, 0.5 * (r->u0 + r->u1), 0.5 * (r->v0 + r->v1)))
-            return SW_OK;
-        return emit_ring(c, leaf->patch, border, nb);
-    }
-    for (uint32_t k = 0; k < rings.ring_count; k++) {
-        uint32_t first = k ? rings.ring_end[k - 1] : 0;
-        sw_status s = emit_ring(c, leaf->patch, rings.verts + first, rings.ring_end[k] - first);
-        if (s != SW_OK)
-            return s;
-    }
-    return SW_OK;
+    c->index_count += 3;
 }
 
 static sw_status emit_all(tt_ctx *c)
@@ -341,15 +322,7 @@ static sw_status emit_all(tt_ctx *c)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "vertex table (see sw_trim_tess_scratch_bytes)");
     memset(c->hash, 0xFF, sizeof(uint32_t) * hs);
-    for (uint32_t l = 0; l < c->leaf_count; l++) {
-        size_t mark = sw_arena_mark(c->arena);
-        sw_status s = emit_leaf(c, l);
-        sw_arena_reset_to(c->arena, mark);
-        if (s != SW_OK)
-            return s;
-    }
-    c->res->leaf_count = c->leaf_count;
-    return SW_OK;
+    return sw_tt_sweep(c);
 }
 
 /* ---- entry points ------------------------------------------------------------ */
@@ -381,8 +354,11 @@ static sw_status run(tt_ctx *c)
         return s;
     double dom[4];
     domain_of(c, dom);
-    if ((s = sw_tt_prepare_loops(c, dom)) != SW_OK || (s = sw_tt_build_tree(c)) != SW_OK ||
-        (s = emit_all(c)) != SW_OK)
+    if ((s = sw_tt_prepare_loops(c, dom)) != SW_OK)
+        return s;
+    if (c->trims.loop_count > 0 &&
+        ((s = sw_tt_build_grid(c)) != SW_OK || (s = sw_tt_bucket(c)) != SW_OK ||
+         (s = emit_all(c)) != SW_OK))
         return s;
     c->res->vertex_count = c->vertex_count;
     c->res->index_count = c->index_count;
@@ -416,6 +392,9 @@ static sw_status tessellate(const sw_trim_patch *patches, uint32_t patch_count,
     c.crossing_on_segment = opt && opt->crossing_on_segment;
     c.border_error = opt && opt->border_fraction > 0 && opt->border_fraction < 1
                          ? error_world * opt->border_fraction : error_world;
+    c.split_k = 1;
+    while (c.split_k < SW_TT_MAX_SPLIT && c.split_k * c.split_k * c.border_error < error_world)
+        c.split_k++;
     size_t mark = sw_arena_mark(scratch);
     s = run(&c);
     sw_arena_reset_to(scratch, mark);

@@ -1,0 +1,359 @@
+/* The trimmed tessellator's conformal tensor grid (core/sw_trim_tess.c):
+ * columns are the patches' knot intervals in u, rows in v, each split into
+ * SW_TT_SUB sub-patch intervals and those into uniform grid intervals. The
+ * counts come from the second-derivative bounds of every sub-patch
+ * (sw_bezier_second_deriv_bounds on the exact de Casteljau sub-patch): a
+ * column takes the largest count any sub-patch in it needs, a row likewise,
+ * so every cell of every sub-patch meets (M_uu h_u^2 + 2 M_uv h_u h_v +
+ * M_vv h_v^2) / 8 <= error and any triangle with its corners in one cell is
+ * within error of the surface (Taylor with integral remainder; barycentric
+ * variance <= h^2 / 4). Whole grid lines, never a local split, so no cell
+ * has a T-vertex. Only sub-patches meeting the loops' box are bounded. */
+#include <math.h>
+#include <string.h>
+
+#include "sw_trim_tess_internal.h"
+
+static void sift_down(double *a, uint32_t i, uint32_t n)
+{
+    for (;;) {
+        uint32_t big = i, l = 2 * i + 1, r = l + 1;
+        if (l < n && a[l] > a[big])
+            big = l;
+        if (r < n && a[r] > a[big])
+            big = r;
+        if (big == i)
+            return;
+        double t = a[i];
+        a[i] = a[big], a[big] = t, i = big;
+    }
+}
+
+/* Heap sort (libc's qsort may allocate), then repeats dropped. */
+static uint32_t sort_unique(double *a, uint32_t n)
+{
+    for (uint32_t i = n / 2; i-- > 0;)
+        sift_down(a, i, n);
+    for (uint32_t end = n; end-- > 1;) {
+        double t = a[0];
+        a[0] = a[end], a[end] = t;
+        sift_down(a, 0, end);
+    }
+    uint32_t m = 0;
+    for (uint32_t i = 0; i < n; i++)
+        if (m == 0 || a[i] != a[m - 1])
+            a[m++] = a[i];
+    return m;
+}
+
+uint32_t sw_tt_interval(const double *lines, uint32_t n, double x)
+{
+    uint32_t lo = 0, hi = n - 1;
+    while (hi - lo > 1) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (lines[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+uint32_t sw_tt_knot_patch(const tt_ctx *c, uint32_t kc, uint32_t kr)
+{
+    const tt_grid *g = &c->grid;
+    if (kc + 1 >= g->nku || kr + 1 >= g->nkv)
+        return SW_TT_NONE;
+    return g->table[(size_t)kr * (g->nku - 1) + kc];
+}
+
+/* The knot lines and which patch covers which knot cell. Patches must tile
+ * a grid of knot intervals (sw_pack_patch_domain), one cell each. */
+static sw_status build_knots(tt_ctx *c)
+{
+    tt_grid *g = &c->grid;
+    uint32_t n = c->patch_count;
+    g->ku = sw_arena_alloc(c->arena, sizeof(double) * 2 * n, 8);
+    g->kv = sw_arena_alloc(c->arena, sizeof(double) * 2 * n, 8);
+    if (!g->ku || !g->kv)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for knots");
+    for (uint32_t i = 0; i < n; i++) {
+        const float *d = c->in_patches[i].domain;
+        g->ku[2 * i] = d[0], g->ku[2 * i + 1] = d[1], g->kv[2 * i] = d[2], g->kv[2 * i + 1] = d[3];
+    }
+    g->nku = sort_unique(g->ku, 2 * n), g->nkv = sort_unique(g->kv, 2 * n);
+    uint64_t cells = (uint64_t)(g->nku - 1) * (g->nkv - 1);
+    if (cells > 4 * (uint64_t)n + 16)
+        return sw_error_set(c->err, SW_ERR_ARG, "trim tess: %u patches on %u x %u knot "
+                            "intervals: expected a grid of knot intervals", (unsigned)n,
+                            (unsigned)g->nku - 1, (unsigned)g->nkv - 1);
+    g->table = sw_arena_alloc(c->arena, sizeof(uint32_t) * (size_t)cells, 4);
+    g->bounded = sw_arena_alloc(c->arena, n, 1);
+    g->bounds = sw_arena_alloc(c->arena, sizeof(double) * 3 * SW_TT_SUB * SW_TT_SUB * n, 8);
+    if (!g->table || !g->bounded || !g->bounds)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for knots");
+    memset(g->table, 0xFF, sizeof(uint32_t) * (size_t)cells);
+    memset(g->bounded, 0, n);
+    for (uint32_t i = 0; i < n; i++) {
+        const float *d = c->in_patches[i].domain;
+        uint32_t kc = sw_tt_interval(g->ku, g->nku, d[0]), kr = sw_tt_interval(g->kv, g->nkv, d[2]);
+        uint32_t *slot = &g->table[(size_t)kr * (g->nku - 1) + kc];
+        if (g->ku[kc + 1] != d[1] || g->kv[kr + 1] != d[3] || *slot != SW_TT_NONE)
+            return sw_error_set(c->err, SW_ERR_ARG, "trim tess: patch %u: domain [%g, %g] x "
+                                "[%g, %g] spans several knot intervals or overlaps patch %u",
+                                (unsigned)i, d[0], d[1], d[2], d[3],
+                                *slot == SW_TT_NONE ? (unsigned)i : (unsigned)*slot);
+        *slot = i;
+    }
+    return SW_OK;
+}
+
+/* Bounds of the SW_TT_SUB^2 sub-patches of patch p, in the sub-patch's own
+ * [0,1]^2 parameters. */
+static sw_status bound_patch(tt_ctx *c, uint32_t p, double *tmp)
+{
+    tt_grid *g = &c->grid;
+    if (g->bounded[p])
+        return SW_OK;
+    const sw_bezier_patch *src = &c->patches[p];
+    for (int sv = 0; sv < SW_TT_SUB; sv++) {
+        for (int su = 0; su < SW_TT_SUB; su++) {
+            sw_bezier_subpatch(src, (double)su / SW_TT_SUB, (double)(su + 1) / SW_TT_SUB,
+                               (double)sv / SW_TT_SUB, (double)(sv + 1) / SW_TT_SUB, tmp);
+            sw_bezier_patch sub = {src->degree_u, src->degree_v, src->rational, tmp};
+            sw_deriv_bounds b;
+            sw_status s = sw_bezier_second_deriv_bounds(&sub, &b, c->err);
+            if (s != SW_OK)
+                return s;
+            double *o = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB + sv * SW_TT_SUB + su);
+            o[0] = b.uu, o[1] = b.uv, o[2] = b.vv;
+        }
+    }
+    g->bounded[p] = 1;
+    return SW_OK;
+}
+
+static double cell_error(const double *m, double hu, double hv)
+{
+    return (m[0] * hu * hu + 2 * m[1] * hu * hv + m[2] * hv * hv) / 8;
+}
+
+/* Fewest rows nv with nu columns, or 0 when none is enough. */
+static double rows_for(const double *m, double r, double nu)
+{
+    double x = 1 / nu, rest = r - m[0] * x * x;
+    if (!(rest > 0))
+        return 0;
+    double bx = m[1] * x, y;
+    if (m[2] > 0)
+        y = (-bx + sqrt(bx * bx + m[2] * rest)) / m[2];
+    else
+        y = bx > 0 ? rest / (2 * bx) : 1;
+    double nv = fmax(1, ceil(1 / y));
+    while (cell_error(m, x, 1 / nv) * 8 > r)
+        nv++;
+    return nv;
+}
+
+/* Counts (nu, nv) for a sub-patch with bounds m, about the fewest cells:
+ * the continuous optimum h_u sqrt(M_uu) = h_v sqrt(M_vv) rounded, and its
+ * neighbours. Capped at cap (then *capped). */
+static void solve_counts(const double *m, double e, double cap, double *nu, double *nv,
+                         int *capped)
+{
+    double r = 8 * e;
+    *nu = *nv = 1, *capped = 0;
+    if (m[0] + 2 * m[1] + m[2] <= r)
+        return;
+    double lo = floor(sqrt(m[0] / r)) + 1, ideal = lo;
+    if (m[0] > 0 && m[2] > 0) {
+        double sa = sqrt(m[0]), sc = sqrt(m[2]);
+        double k = sqrt(r / (2 + 2 * m[1] / (sa * sc)));
+        ideal = fmax(lo, sa / k);
+    }
+    double cand[4] = {lo, floor(ideal), ceil(ideal), ceil(ideal) + 1}, best = INFINITY;
+    for (int i = 0; i < 4; i++) {
+        double a = fmin(fmax(cand[i], lo), cap), b = rows_for(m, r, a);
+        if (b > 0 && a * b < best)
+            best = a * b, *nu = a, *nv = b;
+    }
+    if (!isfinite(best))
+        *nu = cap, *nv = cap;
+    if (*nu > cap || *nv > cap || !isfinite(best))
+        *capped = 1;
+    *nu = fmin(*nu, cap), *nv = fmin(*nv, cap);
+}
+
+static int meets_box(const tt_grid *g, uint32_t kc, uint32_t kr, int su, int sv)
+{
+    double w = (g->ku[kc + 1] - g->ku[kc]) / SW_TT_SUB, h = (g->kv[kr + 1] - g->kv[kr]) / SW_TT_SUB;
+    double u0 = g->ku[kc] + su * w, v0 = g->kv[kr] + sv * h;
+    return u0 <= g->box[1] && u0 + w >= g->box[0] && v0 <= g->box[3] && v0 + h >= g->box[2];
+}
+
+/* Per sub-patch interval of each axis the count of grid intervals. */
+static sw_status choose_counts(tt_ctx *c, double *cu, double *cv)
+{
+    tt_grid *g = &c->grid;
+    uint32_t nkc = g->nku - 1, nkr = g->nkv - 1;
+    double cap = fmin(ldexp(1.0, (int)c->max_depth), (double)c->max_vertices);
+    double *tmp = sw_arena_alloc(c->arena, sizeof(double) * sw_tt_ctrl_doubles(c->max_n, c->max_m), 8);
+    if (!tmp)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a patch");
+    for (uint32_t i = 0; i < nkc * SW_TT_SUB; i++)
+        cu[i] = 1;
+    for (uint32_t i = 0; i < nkr * SW_TT_SUB; i++)
+        cv[i] = 1;
+    for (uint32_t kr = 0; kr < nkr; kr++) {
+        for (uint32_t kc = 0; kc < nkc; kc++) {
+            uint32_t p = sw_tt_knot_patch(c, kc, kr);
+            if (p == SW_TT_NONE || !(g->ku[kc] <= g->box[1] && g->ku[kc + 1] >= g->box[0] && g->kv[kr] <= g->box[3] &&
+                  g->kv[kr + 1] >= g->box[2]))
+                continue;
+            sw_status s = bound_patch(c, p, tmp);
+            if (s != SW_OK)
+                return s;
+            for (int sv = 0; sv < SW_TT_SUB; sv++) {
+                for (int su = 0; su < SW_TT_SUB; su++) {
+                    if (!meets_box(g, kc, kr, su, sv))
+                        continue;
+                    const double *m = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB +
+                                                       sv * SW_TT_SUB + su);
+                    double nu, nv;
+                    int capped;
+                    solve_counts(m, c->error, cap, &nu, &nv, &capped);
+                    c->res->capped_count += (uint32_t)capped;
+                    cu[kc * SW_TT_SUB + su] = fmax(cu[kc * SW_TT_SUB + su], nu);
+                    cv[kr * SW_TT_SUB + sv] = fmax(cv[kr * SW_TT_SUB + sv], nv);
+                }
+            }
+        }
+    }
+    return SW_OK;
+}
+
+/* Grid lines of one axis from the counts; SW_ERR_RANGE past the cap. */
+static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const double *count,
+                           double **lines, uint32_t **kidx, uint8_t **sidx, uint32_t *n,
+                           uint32_t *cap)
+{
+    double total = 0;
+    for (uint32_t i = 0; i < (nk - 1) * SW_TT_SUB; i++)
+        total += count[i];
+    if (total > (double)c->max_vertices + 4.0 * c->patch_count)
+        return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: %.0f grid lines at error %g: "
+                            "coarsen the bound", total, c->error);
+    *cap = (uint32_t)total + SW_TT_MAX_INSERT;
+    *lines = sw_arena_alloc(c->arena, sizeof(double) * (*cap + 1), 8);
+    *kidx = sw_arena_alloc(c->arena, sizeof(uint32_t) * (*cap + 1), 4);
+    *sidx = sw_arena_alloc(c->arena, *cap + 1, 1);
+    if (!*lines || !*kidx || !*sidx)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the grid");
+    uint32_t m = 0;
+    for (uint32_t k = 0; k + 1 < nk; k++) {
+        double w = knots[k + 1] - knots[k];
+        for (int s = 0; s < SW_TT_SUB; s++) {
+            uint32_t cnt = (uint32_t)count[k * SW_TT_SUB + (uint32_t)s];
+            for (uint32_t i = 0; i < cnt; i++) {
+                double x = knots[k] + w * ((s + (double)i / cnt) / SW_TT_SUB);
+                if (m > 0 && !(x > (*lines)[m - 1]))
+                    return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: grid intervals "
+                                        "below the double step at error %g", c->error);
+                (*lines)[m] = x, (*kidx)[m] = k, (*sidx)[m] = (uint8_t)s, m++;
+            }
+        }
+    }
+    (*lines)[m] = knots[nk - 1], (*kidx)[m] = nk - 2, (*sidx)[m] = SW_TT_SUB - 1;
+    *n = m;
+    return SW_OK;
+}
+
+/* Largest bound over the bounded sub-patches with the chosen counts. */
+static void report_bound(tt_ctx *c, const double *cu, const double *cv)
+{
+    const tt_grid *g = &c->grid;
+    for (uint32_t kr = 0; kr + 1 < g->nkv; kr++)
+        for (uint32_t kc = 0; kc + 1 < g->nku; kc++) {
+            uint32_t p = sw_tt_knot_patch(c, kc, kr);
+            if (p == SW_TT_NONE || !g->bounded[p])
+                continue;
+            for (int sv = 0; sv < SW_TT_SUB; sv++)
+                for (int su = 0; su < SW_TT_SUB; su++) {
+                    const double *m = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB +
+                                                       sv * SW_TT_SUB + su);
+                    double e = cell_error(m, 1 / cu[kc * SW_TT_SUB + su], 1 / cv[kr * SW_TT_SUB + sv]);
+                    if (meets_box(g, kc, kr, su, sv))
+                        c->res->error_bound = fmax(c->res->error_bound, e);
+                }
+        }
+}
+
+double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts)
+{
+    const tt_grid *g = &c->grid;
+    uint32_t kc = g->col_k[col], kr = g->row_k[row], p = sw_tt_knot_patch(c, kc, kr);
+    if (p == SW_TT_NONE || !g->bounded[p])
+        return -1;
+    const double *m = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB +
+                                       g->row_s[row] * SW_TT_SUB + g->col_s[col]);
+    double hu = (g->gu[col + 1] - g->gu[col]) * SW_TT_SUB / (g->ku[kc + 1] - g->ku[kc]);
+    double hv = (g->gv[row + 1] - g->gv[row]) * SW_TT_SUB / (g->kv[kr + 1] - g->kv[kr]);
+    return cell_error(m, hu / parts, hv / parts);
+}
+
+static void find_box_range(tt_ctx *c)
+{
+    tt_grid *g = &c->grid;
+    g->c0 = sw_tt_interval(g->gu, g->ncol + 1, g->box[0]);
+    g->c1 = sw_tt_interval(g->gu, g->ncol + 1, g->box[1]) + 1;
+    g->r0 = sw_tt_interval(g->gv, g->nrow + 1, g->box[2]);
+    g->r1 = sw_tt_interval(g->gv, g->nrow + 1, g->box[3]) + 1;
+}
+
+sw_status sw_tt_insert_line(tt_ctx *c, int axis, double x)
+{
+    tt_grid *g = &c->grid;
+    double *l = axis ? g->gv : g->gu;
+    uint32_t *n = axis ? &g->nrow : &g->ncol, *kidx = axis ? g->row_k : g->col_k;
+    uint8_t *sidx = axis ? g->row_s : g->col_s;
+    uint32_t k = sw_tt_interval(l, *n + 1, x);
+    if (!(x > l[k] && x < l[k + 1]))
+        return SW_OK;
+    if (*n >= (axis ? g->cap_v : g->cap_u))
+        return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: more than %d grid lines added "
+                            "for the loops", SW_TT_MAX_INSERT);
+    memmove(l + k + 2, l + k + 1, sizeof(double) * (*n - k));
+    memmove(kidx + k + 2, kidx + k + 1, sizeof(uint32_t) * (*n - k));
+    memmove(sidx + k + 2, sidx + k + 1, *n - k);
+    l[k + 1] = x, kidx[k + 1] = kidx[k], sidx[k + 1] = sidx[k];
+    (*n)++;
+    find_box_range(c);
+    return SW_OK;
+}
+
+sw_status sw_tt_build_grid(tt_ctx *c)
+{
+    tt_grid *g = &c->grid;
+    sw_status s = build_knots(c);
+    if (s != SW_OK)
+        return s;
+    g->box[0] = g->box[2] = INFINITY, g->box[1] = g->box[3] = -INFINITY;
+    for (uint32_t k = 0; k < c->trims.loop_count; k++)
+        for (int i = 0; i < 4; i++)
+            g->box[i] = i % 2 ? fmax(g->box[i], c->loops[k].box[i]) : fmin(g->box[i], c->loops[k].box[i]);
+    double *cu = sw_arena_alloc(c->arena, sizeof(double) * (g->nku - 1) * SW_TT_SUB, 8);
+    double *cv = sw_arena_alloc(c->arena, sizeof(double) * (g->nkv - 1) * SW_TT_SUB, 8);
+    if (!cu || !cv)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the grid");
+    s = choose_counts(c, cu, cv);
+    if (s != SW_OK)
+        return s;
+    report_bound(c, cu, cv);
+    if ((s = lay_lines(c, g->ku, g->nku, cu, &g->gu, &g->col_k, &g->col_s, &g->ncol,
+                       &g->cap_u)) != SW_OK ||
+        (s = lay_lines(c, g->kv, g->nkv, cv, &g->gv, &g->row_k, &g->row_s, &g->nrow,
+                       &g->cap_v)) != SW_OK)
+        return s;
+    find_box_range(c);
+    return SW_OK;
+}

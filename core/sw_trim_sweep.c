@@ -1,0 +1,349 @@
+/* The row sweep of the trimmed tessellator (core/sw_trim_tess.c): the grid's
+ * rows inside the loops' box from bottom to top. A row's crossed cells are
+ * its runs of (cell, segment) pairs; between them lie runs of cells no loop
+ * touches, wholly inside or wholly outside: the even-odd count of the loop
+ * crossings on the row's middle line left of the run decides. Inside cells
+ * are two triangles on the grid points (vertex ids of the current and next
+ * grid line only); crossed cells go through the clipping (sw_tt_cell_rings)
+ * and ear clipping. Crossed cells whose bound exceeds border_error are
+ * clipped as k x k sub-cells; their neighbours then carry the sub-cells'
+ * corners on the shared side, so no T-vertex appears. */
+#include <math.h>
+#include <string.h>
+
+#include "sw_trim_tess_internal.h"
+
+typedef struct sweep {
+    tt_ctx *c;
+    uint8_t *split[3];       /* per row slot (row % 3): crossed cell split k x k */
+    uint32_t *seg_mark, mark;
+    double *xs;              /* crossings of the row's middle line, sorted */
+    uint32_t nx;
+    uint32_t *segs;          /* a (sub)cell's segments */
+} sweep;
+
+static int is_split(const sweep *w, uint32_t col, uint32_t row)
+{
+    return w->c->split_k > 1 && row < w->c->grid.nrow && w->split[row % 3][col];
+}
+
+static void mark_splits(sweep *w, uint32_t row)
+{
+    tt_ctx *c = w->c;
+    if (c->split_k < 2 || row >= c->grid.nrow)
+        return;
+    uint8_t *s = w->split[row % 3];
+    memset(s, 0, c->grid.ncol);
+    for (uint32_t a = c->row_first[row]; a < c->row_first[row + 1]; a++) {
+        uint32_t col = c->pairs[a].col;
+        if (!s[col] && (a == c->row_first[row] || c->pairs[a - 1].col != col))
+            s[col] = sw_tt_cell_bound(c, col, row, 1) > c->border_error;
+    }
+}
+
+/* Even-odd count of the row's segments crossing the line v right of u. */
+static int classify_in_row(sweep *w, uint32_t row, double u, double v)
+{
+    tt_ctx *c = w->c;
+    int inside = 0;
+    w->mark++;
+    for (uint32_t a = c->row_first[row]; a < c->row_first[row + 1]; a++) {
+        uint32_t s = c->pairs[a].seg;
+        if (w->seg_mark[s] == w->mark)
+            continue;
+        w->seg_mark[s] = w->mark;
+        const sw_tt_point *p = &c->pts[s], *q = &c->pts[p->next];
+        if ((p->v > v) == (q->v > v))
+            continue;
+        inside ^= p->u + (v - p->v) / (q->v - p->v) * (q->u - p->u) > u;
+    }
+    return inside;
+}
+
+static void sort_doubles(double *a, uint32_t n)
+{
+    for (uint32_t i = 1; i < n; i++) {
+        double x = a[i];
+        uint32_t j = i;
+        for (; j > 0 && a[j - 1] > x; j--)
+            a[j] = a[j - 1];
+        a[j] = x;
+    }
+}
+
+/* The crossings of the row's middle line, sorted. Rows hold few; a row
+ * with many (a comb of a loop) sorts by insertion in O(k^2), bounded by the
+ * loop points. */
+static void row_crossings(sweep *w, uint32_t row)
+{
+    tt_ctx *c = w->c;
+    double v = 0.5 * (c->grid.gv[row] + c->grid.gv[row + 1]);
+    w->nx = 0;
+    w->mark++;
+    for (uint32_t a = c->row_first[row]; a < c->row_first[row + 1]; a++) {
+        uint32_t s = c->pairs[a].seg;
+        if (w->seg_mark[s] == w->mark)
+            continue;
+        w->seg_mark[s] = w->mark;
+        const sw_tt_point *p = &c->pts[s], *q = &c->pts[p->next];
+        if ((p->v > v) != (q->v > v))
+            w->xs[w->nx++] = p->u + (v - p->v) / (q->v - p->v) * (q->u - p->u);
+    }
+    sort_doubles(w->xs, w->nx);
+}
+
+/* Vertex of a polygon point of cell (col, row): a grid corner through the
+ * line arrays, anything else through the vertex table. */
+static sw_status map_pv(tt_ctx *c, uint32_t p, uint32_t col, uint32_t row, const sw_tt_pv *pv,
+                        uint32_t *out)
+{
+    const tt_grid *g = &c->grid;
+    if (pv->kind == SW_TT_GRID) {
+        int iu = pv->u == g->gu[col] ? 0 : pv->u == g->gu[col + 1] ? 1 : -1;
+        int iv = pv->v == g->gv[row] ? 0 : pv->v == g->gv[row + 1] ? 1 : -1;
+        if (iu >= 0 && iv >= 0)
+            return sw_tt_grid_vertex(c, p, col + (uint32_t)iu, row + (uint32_t)iv, out);
+    }
+    return sw_tt_vertex_for(c, p, pv, out);
+}
+
+static sw_status emit_ring(tt_ctx *c, uint32_t p, uint32_t col, uint32_t row,
+                           const sw_tt_pv *ring, uint32_t n)
+{
+    uint32_t *map = sw_arena_alloc(c->arena, sizeof(uint32_t) * 6 * (size_t)n, 4);
+    if (!map)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
+    uint32_t *scratch = map + n, *tri = map + 3 * (size_t)n;
+    for (uint32_t i = 0; i < n; i++) {
+        sw_status s = map_pv(c, p, col, row, &ring[i], &map[i]);
+        if (s != SW_OK)
+            return s;
+    }
+    uint32_t count = sw_tt_ear_clip(ring, n, scratch, tri, &c->res->fallback_ears);
+    for (uint32_t t = 0; t < count; t++)
+        sw_tt_put_triangle(c, map[tri[3 * t]], map[tri[3 * t + 1]], map[tri[3 * t + 2]]);
+    return SW_OK;
+}
+
+static sw_tt_pv grid_pv(double u, double v)
+{
+    sw_tt_pv pv = {u, v, SW_TT_GRID, SW_TT_NONE, 0, 0, 0};
+    return pv;
+}
+
+/* x of the m-th of k parts of [a, b] (exactly b at m = k). */
+static double part(double a, double b, uint32_t m, uint32_t k)
+{
+    return m == k ? b : a + (b - a) * m / k;
+}
+
+/* The border of cell (col, row) counter-clockwise from (u0, v0): corners and
+ * the sub-cell corners of split neighbours on the shared sides. */
+static uint32_t cell_border(const sweep *w, uint32_t col, uint32_t row, sw_tt_pv *out)
+{
+    const tt_grid *g = &w->c->grid;
+    uint32_t k = w->c->split_k, n = 0;
+    double u0 = g->gu[col], u1 = g->gu[col + 1], v0 = g->gv[row], v1 = g->gv[row + 1];
+    int nb[4] = {row > 0 && is_split(w, col, row - 1), col + 1 < g->ncol && is_split(w, col + 1, row),
+                 is_split(w, col, row + 1), col > 0 && is_split(w, col - 1, row)};
+    out[n++] = grid_pv(u0, v0);
+    for (uint32_t m = 1; nb[0] && m < k; m++)
+        out[n++] = grid_pv(part(u0, u1, m, k), v0);
+    out[n++] = grid_pv(u1, v0);
+    for (uint32_t m = 1; nb[1] && m < k; m++)
+        out[n++] = grid_pv(u1, part(v0, v1, m, k));
+    out[n++] = grid_pv(u1, v1);
+    for (uint32_t m = k - 1; nb[2] && m >= 1; m--)
+        out[n++] = grid_pv(part(u0, u1, m, k), v1);
+    out[n++] = grid_pv(u0, v1);
+    for (uint32_t m = k - 1; nb[3] && m >= 1; m--)
+        out[n++] = grid_pv(u0, part(v0, v1, m, k));
+    return n;
+}
+
+static sw_status emit_quad(tt_ctx *c, uint32_t p, uint32_t col, uint32_t row)
+{
+    uint32_t a, b, d, e;
+    sw_status s;
+    if ((s = sw_tt_grid_vertex(c, p, col, row, &a)) != SW_OK ||
+        (s = sw_tt_grid_vertex(c, p, col + 1, row, &b)) != SW_OK ||
+        (s = sw_tt_grid_vertex(c, p, col + 1, row + 1, &d)) != SW_OK ||
+        (s = sw_tt_grid_vertex(c, p, col, row + 1, &e)) != SW_OK)
+        return s;
+    sw_tt_put_triangle(c, a, b, d);
+    sw_tt_put_triangle(c, a, d, e);
+    return SW_OK;
+}
+
+/* A cell no loop touches, inside the loops. */
+static sw_status emit_inside(sweep *w, uint32_t col, uint32_t row)
+{
+    tt_ctx *c = w->c;
+    const tt_grid *g = &c->grid;
+    uint32_t p = sw_tt_knot_patch(c, g->col_k[col], g->row_k[row]);
+    if (p == SW_TT_NONE)
+        return SW_OK;
+    c->res->leaf_count++;
+    if (c->split_k < 2 || !((row > 0 && is_split(w, col, row - 1)) || is_split(w, col, row + 1) ||
+                            (col > 0 && is_split(w, col - 1, row)) ||
+                            (col + 1 < g->ncol && is_split(w, col + 1, row))))
+        return emit_quad(c, p, col, row);
+    sw_tt_pv border[4 * SW_TT_MAX_SPLIT];
+    size_t mark = sw_arena_mark(c->arena);
+    sw_status s = emit_ring(c, p, col, row, border, cell_border(w, col, row, border));
+    sw_arena_reset_to(c->arena, mark);
+    return s;
+}
+
+/* The segments of pairs [a, b) meeting the closed rectangle r. */
+static uint32_t segs_in(const sweep *w, const sw_tt_rect *r, uint32_t a, uint32_t b)
+{
+    uint32_t n = 0;
+    for (uint32_t k = a; k < b; k++) {
+        uint32_t s = w->c->pairs[k].seg;
+        const sw_tt_point *p = &w->c->pts[s], *q = &w->c->pts[p->next];
+        double t0, t1;
+        int s0, s1;
+        if (sw_tt_clip(r, p, q, &t0, &s0, &t1, &s1))
+            w->segs[n++] = s;
+    }
+    return n;
+}
+
+/* One clipped (sub)cell r of grid cell (col, row) with its border. */
+static sw_status clip_cell(sweep *w, uint32_t p, uint32_t col, uint32_t row, const sw_tt_rect *r,
+                           uint32_t nsegs, const sw_tt_pv *border, uint32_t nb)
+{
+    tt_ctx *c = w->c;
+    sw_tt_rings rings;
+    int rc = sw_tt_cell_rings(&c->trims, r, w->segs, nsegs, border, nb, c->stamp, ++c->cell_id,
+                              c->arena, &rings, &c->res->skipped_loops);
+    if (rc == SW_TT_CELL_NO_MEMORY)
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
+    if (rc == SW_TT_CELL_BAD)
+        return sw_error_set(c->err, SW_ERR_FORMAT, "trim tess: loops cross each other or "
+                            "themselves near (%g, %g)", 0.5 * (r->u0 + r->u1),
+                            0.5 * (r->v0 + r->v1));
+    if (rc == SW_TT_CELL_EMPTY) {
+        if (!classify_in_row(w, row, 0.5 * (r->u0 + r->u1), 0.5 * (r->v0 + r->v1)))
+            return SW_OK;
+        return emit_ring(c, p, col, row, border, nb);
+    }
+    for (uint32_t k = 0; k < rings.ring_count; k++) {
+        uint32_t first = k ? rings.ring_end[k - 1] : 0;
+        sw_status s = emit_ring(c, p, col, row, rings.verts + first, rings.ring_end[k] - first);
+        if (s != SW_OK)
+            return s;
+    }
+    return SW_OK;
+}
+
+/* A cell the loops cross: pairs [a, b). */
+static sw_status emit_crossed(sweep *w, uint32_t col, uint32_t row, uint32_t a, uint32_t b)
+{
+    tt_ctx *c = w->c;
+    const tt_grid *g = &c->grid;
+    uint32_t p = sw_tt_knot_patch(c, g->col_k[col], g->row_k[row]);
+    if (p == SW_TT_NONE)
+        return SW_OK;
+    c->res->leaf_count++, c->res->crossed_count++;
+    double u0 = g->gu[col], u1 = g->gu[col + 1], v0 = g->gv[row], v1 = g->gv[row + 1];
+    uint32_t k = is_split(w, col, row) ? c->split_k : 1;
+    sw_tt_pv border[4 * SW_TT_MAX_SPLIT];
+    for (uint32_t sb = 0; sb < k; sb++) {
+        for (uint32_t sa = 0; sa < k; sa++) {
+            sw_tt_rect r = {part(u0, u1, sa, k), part(u0, u1, sa + 1, k), part(v0, v1, sb, k),
+                            part(v0, v1, sb + 1, k)};
+            uint32_t nb = 4;
+            if (k == 1) {
+                nb = cell_border(w, col, row, border);
+            } else {
+                border[0] = grid_pv(r.u0, r.v0), border[1] = grid_pv(r.u1, r.v0);
+                border[2] = grid_pv(r.u1, r.v1), border[3] = grid_pv(r.u0, r.v1);
+            }
+            size_t mark = sw_arena_mark(c->arena);
+            sw_status s = clip_cell(w, p, col, row, &r, segs_in(w, &r, a, b), border, nb);
+            sw_arena_reset_to(c->arena, mark);
+            if (s != SW_OK)
+                return s;
+        }
+    }
+    return SW_OK;
+}
+
+/* Cells [a, b) of the row, none touched by a loop: inside when an odd
+ * number of crossings of the middle line lies left of them. */
+static sw_status emit_run(sweep *w, uint32_t row, uint32_t a, uint32_t b, uint32_t *x)
+{
+    if (a >= b)
+        return SW_OK;
+    const tt_grid *g = &w->c->grid;
+    double mid = 0.5 * (g->gu[a] + g->gu[a + 1]);
+    while (*x < w->nx && w->xs[*x] < mid)
+        (*x)++;
+    if (*x % 2 == 0)
+        return SW_OK;
+    for (uint32_t col = a; col < b; col++) {
+        sw_status s = emit_inside(w, col, row);
+        if (s != SW_OK)
+            return s;
+    }
+    return SW_OK;
+}
+
+static sw_status sweep_row(sweep *w, uint32_t row)
+{
+    tt_ctx *c = w->c;
+    const tt_grid *g = &c->grid;
+    mark_splits(w, row + 1);
+    uint32_t *next = c->line_ids[(row + 1) & 1];
+    for (uint32_t i = g->c0; i <= g->c1; i++)
+        next[i] = SW_TT_NONE;
+    row_crossings(w, row);
+    uint32_t col = g->c0, x = 0, end = c->row_first[row + 1];
+    for (uint32_t a = c->row_first[row]; a < end;) {
+        uint32_t b = a + 1, cc = c->pairs[a].col;
+        while (b < end && c->pairs[b].col == cc)
+            b++;
+        sw_status s = emit_run(w, row, col, cc, &x);
+        if (s == SW_OK)
+            s = emit_crossed(w, cc, row, a, b);
+        if (s != SW_OK)
+            return s;
+        col = cc + 1, a = b;
+    }
+    return emit_run(w, row, col, g->c1, &x);
+}
+
+sw_status sw_tt_sweep(tt_ctx *c)
+{
+    const tt_grid *g = &c->grid;
+    sweep w;
+    memset(&w, 0, sizeof w);
+    w.c = c;
+    uint32_t n = c->trims.point_count;
+    w.seg_mark = sw_arena_alloc(c->arena, sizeof(uint32_t) * (n + 1), 4);
+    w.xs = sw_arena_alloc(c->arena, sizeof(double) * (n + 1), 8);
+    w.segs = sw_arena_alloc(c->arena, sizeof(uint32_t) * (n + 1), 4);
+    for (int k = 0; k < 3; k++)
+        w.split[k] = sw_arena_alloc(c->arena, g->ncol + 1, 1);
+    for (int k = 0; k < 2; k++)
+        c->line_ids[k] = sw_arena_alloc(c->arena, sizeof(uint32_t) * (g->ncol + 2), 4);
+    if (!w.seg_mark || !w.xs || !w.segs || !w.split[0] || !w.split[1] || !w.split[2] ||
+        !c->line_ids[0] || !c->line_ids[1])
+        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
+                            "sweep (see sw_trim_tess_scratch_bytes)");
+    memset(w.seg_mark, 0, sizeof(uint32_t) * (n + 1));
+    sw_status s = sw_tt_eval_init(c);
+    if (s != SW_OK)
+        return s;
+    if (g->r0 > 0)
+        mark_splits(&w, g->r0 - 1);
+    mark_splits(&w, g->r0);
+    for (uint32_t i = g->c0; i <= g->c1; i++)
+        c->line_ids[g->r0 & 1][i] = SW_TT_NONE;
+    for (uint32_t row = g->r0; row < g->r1; row++)
+        if ((s = sweep_row(&w, row)) != SW_OK)
+            return s;
+    return SW_OK;
+}
