@@ -130,7 +130,7 @@ static void split_crowded(const tt_ctx *c, uint32_t a, uint32_t b, additions *ad
         box[0] = fmin(box[0], q->u), box[1] = fmax(box[1], q->u);
         box[2] = fmin(box[2], q->v), box[3] = fmax(box[3], q->v);
     }
-    if (inside <= SW_TT_MAX_CELL_POINTS)
+    if (inside <= SW_TT_MAX_CELL_POINTS * SW_TT_MAX_SPLIT)
         return;
     int axis = (box[3] - box[2]) / (r.v1 - r.v0) > (box[1] - box[0]) / (r.u1 - r.u0);
     add_line(ad, axis, 0.5 * (box[2 * axis] + box[2 * axis + 1]));
@@ -165,7 +165,7 @@ static sw_status refine_round(tt_ctx *c, int *added)
         while (b < c->pair_count && c->pairs[b].col == c->pairs[a].col &&
                c->pairs[b].row == c->pairs[a].row)
             b++;
-        if (b - a > SW_TT_MAX_CELL_POINTS)
+        if (b - a > SW_TT_MAX_CELL_POINTS * SW_TT_MAX_SPLIT)
             split_crowded(c, a, b, &ad);
         a = b;
     }

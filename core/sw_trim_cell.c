@@ -143,11 +143,11 @@ static sw_tt_pv crossing(const sw_tt_rect *r, const sw_tt_trims *t, uint32_t a, 
     const sw_tt_point *pa = &t->pts[a], *pb = &t->pts[pa->next];
     if (tp == 0 || tp == 1) {
         const sw_tt_point *p = tp == 0 ? pa : pb;
-        sw_tt_pv end = {p->u, p->v, SW_TT_SEAM, tp == 0 ? a : pa->next, 0, 0, 0};
+        sw_tt_pv end = {p->u, p->v, SW_TT_SEAM, tp == 0 ? a : pa->next, 0, 0, 0, 0};
         return end;
     }
     sw_tt_pv pv = {pa->u + tp * (pb->u - pa->u), pa->v + tp * (pb->v - pa->v), SW_TT_CROSS,
-                   tp <= 0.5 ? pa->src : pb->src, pa->src, pb->src, tp};
+                   tp <= 0.5 ? pa->src : pb->src, pa->src, pb->src, tp, a};
     if (s == 0 || s == 1)
         pv.u = s == 0 ? r->u0 : r->u1;
     if (s == 2 || s == 3)
@@ -268,7 +268,7 @@ static void append_chain(const walk *w, uint32_t c, sw_tt_rings *out)
     push_pv(out, w->items[w->chain_entry[c]].pv);
     for (uint32_t k = 0; k < w->chain_len[c]; k++) {
         const sw_tt_point *p = &w->t->pts[w->seam[w->chain_first[c] + k]];
-        sw_tt_pv pv = {p->u, p->v, SW_TT_SEAM, w->seam[w->chain_first[c] + k], 0, 0, 0};
+        sw_tt_pv pv = {p->u, p->v, SW_TT_SEAM, w->seam[w->chain_first[c] + k], 0, 0, 0, 0};
         push_pv(out, pv);
     }
     push_pv(out, w->items[w->chain_exit[c]].pv);
@@ -346,7 +346,7 @@ static void closed_loops(const walk *w, const uint32_t *segs, uint32_t seg_count
             continue;
         }
         for (uint32_t i = l->first; i < l->first + l->count; i++) {
-            sw_tt_pv pv = {pts[i].u, pts[i].v, SW_TT_SEAM, i, 0, 0, 0};
+            sw_tt_pv pv = {pts[i].u, pts[i].v, SW_TT_SEAM, i, 0, 0, 0, 0};
             push_pv(out, pv);
         }
         close_ring(out);

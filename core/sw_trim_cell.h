@@ -38,6 +38,7 @@ typedef struct sw_tt_pv {
     uint32_t kind, ref;
     uint32_t ref_a, ref_b;   /* a crossing: its segment's loop points (sources) */
     double t;                /* and where along it, 0..1 */
+    uint32_t seg;            /* a crossing: its segment's start (sw_tt_point index) */
 } sw_tt_pv;
 
 /* The loops as one read-only bundle. */

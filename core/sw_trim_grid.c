@@ -11,6 +11,8 @@
  * has a T-vertex. Only sub-patches meeting the loops' box are bounded. */
 #include <math.h>
 #include <string.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #include "sw_trim_tess_internal.h"
 
@@ -138,26 +140,29 @@ static double cell_error(const double *m, double hu, double hv)
     return (m[0] * hu * hu + 2 * m[1] * hu * hv + m[2] * hv * hv) / 8;
 }
 
-/* Fewest rows nv with nu columns, or 0 when none is enough. */
-static double rows_for(const double *m, double r, double nu)
+/* Fewest intervals along the second axis with n along the first, for
+ * bounds a (first axis), b (mixed), cc (second), or 0 when none is enough. */
+static double second_for(double a, double b, double cc, double r, double n)
 {
-    double x = 1 / nu, rest = r - m[0] * x * x;
+    double x = 1 / n, rest = r - a * x * x;
     if (!(rest > 0))
         return 0;
-    double bx = m[1] * x, y;
-    if (m[2] > 0)
-        y = (-bx + sqrt(bx * bx + m[2] * rest)) / m[2];
+    double bx = b * x, y;
+    if (cc > 0)
+        y = (-bx + sqrt(bx * bx + cc * rest)) / cc;
     else
         y = bx > 0 ? rest / (2 * bx) : 1;
-    double nv = fmax(1, ceil(1 / y));
-    while (cell_error(m, x, 1 / nv) * 8 > r)
-        nv++;
-    return nv;
+    double k = fmax(1, ceil(1 / y));
+    while ((a * x * x + 2 * b * x / k + cc / (k * k)) > r)
+        k++;
+    return k;
 }
 
 /* Counts (nu, nv) for a sub-patch with bounds m, about the fewest cells:
- * the continuous optimum h_u sqrt(M_uu) = h_v sqrt(M_vv) rounded, and its
- * neighbours. Capped at cap (then *capped). */
+ * the continuous optimum h_u sqrt(M_uu) = h_v sqrt(M_vv) rounded and its
+ * neighbours, and the slivers one or two intervals wide along either axis
+ * (a bound with M_uv > 0 but M_vv = 0, as the rational cylinder's, is
+ * cheapest with full-height strips). Capped at cap (then *capped). */
 static void solve_counts(const double *m, double e, double cap, double *nu, double *nv,
                          int *capped)
 {
@@ -165,17 +170,21 @@ static void solve_counts(const double *m, double e, double cap, double *nu, doub
     *nu = *nv = 1, *capped = 0;
     if (m[0] + 2 * m[1] + m[2] <= r)
         return;
-    double lo = floor(sqrt(m[0] / r)) + 1, ideal = lo;
+    double ideal = 1;
     if (m[0] > 0 && m[2] > 0) {
         double sa = sqrt(m[0]), sc = sqrt(m[2]);
-        double k = sqrt(r / (2 + 2 * m[1] / (sa * sc)));
-        ideal = fmax(lo, sa / k);
+        ideal = sa / sqrt(r / (2 + 2 * m[1] / (sa * sc)));
     }
-    double cand[4] = {lo, floor(ideal), ceil(ideal), ceil(ideal) + 1}, best = INFINITY;
-    for (int i = 0; i < 4; i++) {
-        double a = fmin(fmax(cand[i], lo), cap), b = rows_for(m, r, a);
+    /* first-axis counts to try: along u (k < 5) or along v */
+    const double cand[8] = {fmax(1, floor(ideal)), ceil(ideal), ceil(ideal) + 1, 1, 2, 1, 2,
+                            ceil(ideal * sqrt(m[2] / fmax(m[0], 1e-300)))};
+    double best = INFINITY;
+    for (int k = 0; k < 8; k++) {
+        int along_v = k >= 5;
+        double a = fmin(cand[k], cap);
+        double b = along_v ? second_for(m[2], m[1], m[0], r, a) : second_for(m[0], m[1], m[2], r, a);
         if (b > 0 && a * b < best)
-            best = a * b, *nu = a, *nv = b;
+            best = a * b, *nu = along_v ? b : a, *nv = along_v ? a : b;
     }
     if (!isfinite(best))
         *nu = cap, *nv = cap;
@@ -222,7 +231,7 @@ static sw_status choose_counts(tt_ctx *c, double *cu, double *cv)
                     double nu, nv;
                     int capped;
                     solve_counts(m, c->error, cap, &nu, &nv, &capped);
-                    c->res->capped_count += (uint32_t)capped;
+                    c->res->capped_count += (uint32_t)capped; if (getenv("TTDBG")) fprintf(stderr, "p%u s%d%d m %g %g %g -> %g x %g\n", p, su, sv, m[0], m[1], m[2], nu, nv);
                     cu[kc * SW_TT_SUB + su] = fmax(cu[kc * SW_TT_SUB + su], nu);
                     cv[kr * SW_TT_SUB + sv] = fmax(cv[kr * SW_TT_SUB + sv], nv);
                 }

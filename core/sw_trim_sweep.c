@@ -5,9 +5,9 @@
  * crossings on the row's middle line left of the run decides. Inside cells
  * are two triangles on the grid points (vertex ids of the current and next
  * grid line only); crossed cells go through the clipping (sw_tt_cell_rings)
- * and ear clipping. Crossed cells whose bound exceeds border_error are
- * clipped as k x k sub-cells; their neighbours then carry the sub-cells'
- * corners on the shared side, so no T-vertex appears. */
+ * and ear clipping. Crossed cells whose bound exceeds border_error, or that
+ * hold many loop points, are clipped as k x k parts; their neighbours then
+ * carry the parts' corners on the shared side, so no T-vertex appears. */
 #include <math.h>
 #include <string.h>
 
@@ -15,29 +15,56 @@
 
 typedef struct sweep {
     tt_ctx *c;
-    uint8_t *split[3];       /* per row slot (row % 3): crossed cell split k x k */
+    uint8_t *split[3];       /* per row slot (row % 3): parts per axis of a crossed cell, 0: 1 */
     uint32_t *seg_mark, mark;
     double *xs;              /* crossings of the row's middle line, sorted */
     uint32_t nx;
     uint32_t *segs;          /* a (sub)cell's segments */
 } sweep;
 
-static int is_split(const sweep *w, uint32_t col, uint32_t row)
+/* Parts per axis of cell (col, row): 1 unless crossed and split. */
+static uint32_t parts_of(const sweep *w, uint32_t col, uint32_t row)
 {
-    return w->c->split_k > 1 && row < w->c->grid.nrow && w->split[row % 3][col];
+    const tt_grid *g = &w->c->grid;
+    if (row >= g->nrow || col >= g->ncol)
+        return 1;
+    uint8_t k = w->split[row % 3][col];
+    return k ? k : 1;
+}
+
+/* Parts of a crossed cell: split_k where its bound exceeds border_error,
+ * more where it holds many loop points (clipping cost grows with their
+ * square), at most SW_TT_MAX_SPLIT. */
+static uint8_t parts_for(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t a, uint32_t b)
+{
+    const tt_grid *g = &c->grid;
+    sw_tt_rect r = {g->gu[col], g->gu[col + 1], g->gv[row], g->gv[row + 1]};
+    uint32_t k = 1, inside = 0;
+    if (c->split_k > 1 && sw_tt_cell_bound(c, col, row, 1) > c->border_error)
+        k = c->split_k;
+    for (uint32_t i = a; i < b; i++) {
+        const sw_tt_point *q = &c->pts[c->pairs[i].seg];
+        inside += sw_tt_inside(&r, q->u, q->v);
+    }
+    uint32_t crowd = (inside + SW_TT_MAX_CELL_POINTS - 1) / SW_TT_MAX_CELL_POINTS;
+    k = crowd > k ? crowd : k;
+    return (uint8_t)(k > SW_TT_MAX_SPLIT ? SW_TT_MAX_SPLIT : k);
 }
 
 static void mark_splits(sweep *w, uint32_t row)
 {
     tt_ctx *c = w->c;
-    if (c->split_k < 2 || row >= c->grid.nrow)
+    if (row >= c->grid.nrow)
         return;
     uint8_t *s = w->split[row % 3];
     memset(s, 0, c->grid.ncol);
-    for (uint32_t a = c->row_first[row]; a < c->row_first[row + 1]; a++) {
-        uint32_t col = c->pairs[a].col;
-        if (!s[col] && (a == c->row_first[row] || c->pairs[a - 1].col != col))
-            s[col] = sw_tt_cell_bound(c, col, row, 1) > c->border_error;
+    uint32_t end = c->row_first[row + 1];
+    for (uint32_t a = c->row_first[row]; a < end;) {
+        uint32_t b = a + 1, col = c->pairs[a].col;
+        while (b < end && c->pairs[b].col == col)
+            b++;
+        s[col] = parts_for(c, col, row, a, b);
+        a = b;
     }
 }
 
@@ -120,44 +147,71 @@ static sw_status emit_ring(tt_ctx *c, uint32_t p, uint32_t col, uint32_t row,
             return s;
     }
     uint32_t count = sw_tt_ear_clip(ring, n, scratch, tri, &c->res->fallback_ears);
-    for (uint32_t t = 0; t < count; t++)
-        sw_tt_put_triangle(c, map[tri[3 * t]], map[tri[3 * t + 1]], map[tri[3 * t + 2]]);
+    for (uint32_t t = 0; t < count; t++) {
+        uint32_t a = map[tri[3 * t]], b = map[tri[3 * t + 1]], d = map[tri[3 * t + 2]];
+        if (a != b && b != d && d != a) /* not collapsed onto a loop point */
+            sw_tt_put_triangle(c, a, b, d);
+    }
     return SW_OK;
 }
 
 static sw_tt_pv grid_pv(double u, double v)
 {
-    sw_tt_pv pv = {u, v, SW_TT_GRID, SW_TT_NONE, 0, 0, 0};
+    sw_tt_pv pv = {u, v, SW_TT_GRID, SW_TT_NONE, 0, 0, 0, 0};
     return pv;
 }
 
-/* x of the m-th of k parts of [a, b] (exactly b at m = k). */
+/* x of the m-th of k parts of [a, b]: a + (b - a) (m / k), so that equal
+ * fractions of different k give the same double (m / k is correctly rounded),
+ * and exactly a and b at the ends. */
 static double part(double a, double b, uint32_t m, uint32_t k)
 {
-    return m == k ? b : a + (b - a) * m / k;
+    return m == 0 ? a : m == k ? b : a + (b - a) * ((double)m / k);
 }
 
-/* The border of cell (col, row) counter-clockwise from (u0, v0): corners and
- * the sub-cell corners of split neighbours on the shared sides. */
-static uint32_t cell_border(const sweep *w, uint32_t col, uint32_t row, sw_tt_pv *out)
+/* Points of a neighbour split in k parts on the side from fraction f0 to
+ * f1 (exclusive), the side running from a to b along u (along_v 0) or v,
+ * at the fixed coordinate x; in the order of the walk (reverse: from f1). */
+static uint32_t side_points(double a, double b, double x, int along_v, uint32_t k, double f0,
+                            double f1, int reverse, sw_tt_pv *out)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 1; i < k; i++) {
+        uint32_t m = reverse ? k - i : i;
+        double f = (double)m / k;
+        if (!(f > f0 && f < f1))
+            continue;
+        double y = part(a, b, m, k);
+        out[n++] = along_v ? grid_pv(x, y) : grid_pv(y, x);
+    }
+    return n;
+}
+
+/* The border of part (sa, sb) of k x k of cell (col, row), counter-clockwise
+ * from its (u0, v0): its corners and, on the cell's sides, the part corners
+ * of split neighbours, so no T-vertex appears. */
+static uint32_t cell_border(const sweep *w, uint32_t col, uint32_t row, uint32_t k, uint32_t sa,
+                            uint32_t sb, sw_tt_pv *out)
 {
     const tt_grid *g = &w->c->grid;
-    uint32_t k = w->c->split_k, n = 0;
     double u0 = g->gu[col], u1 = g->gu[col + 1], v0 = g->gv[row], v1 = g->gv[row + 1];
-    int nb[4] = {row > 0 && is_split(w, col, row - 1), col + 1 < g->ncol && is_split(w, col + 1, row),
-                 is_split(w, col, row + 1), col > 0 && is_split(w, col - 1, row)};
-    out[n++] = grid_pv(u0, v0);
-    for (uint32_t m = 1; nb[0] && m < k; m++)
-        out[n++] = grid_pv(part(u0, u1, m, k), v0);
-    out[n++] = grid_pv(u1, v0);
-    for (uint32_t m = 1; nb[1] && m < k; m++)
-        out[n++] = grid_pv(u1, part(v0, v1, m, k));
-    out[n++] = grid_pv(u1, v1);
-    for (uint32_t m = k - 1; nb[2] && m >= 1; m--)
-        out[n++] = grid_pv(part(u0, u1, m, k), v1);
-    out[n++] = grid_pv(u0, v1);
-    for (uint32_t m = k - 1; nb[3] && m >= 1; m--)
-        out[n++] = grid_pv(u0, part(v0, v1, m, k));
+    double pu0 = part(u0, u1, sa, k), pu1 = part(u0, u1, sa + 1, k);
+    double pv0 = part(v0, v1, sb, k), pv1 = part(v0, v1, sb + 1, k);
+    double fu0 = (double)sa / k, fu1 = (double)(sa + 1) / k;
+    double fv0 = (double)sb / k, fv1 = (double)(sb + 1) / k;
+    uint32_t n = 0;
+    out[n++] = grid_pv(pu0, pv0);
+    if (sb == 0 && row > 0)
+        n += side_points(u0, u1, v0, 0, parts_of(w, col, row - 1), fu0, fu1, 0, out + n);
+    out[n++] = grid_pv(pu1, pv0);
+    if (sa + 1 == k)
+        n += side_points(v0, v1, u1, 1, parts_of(w, col + 1, row), fv0, fv1, 0, out + n);
+    out[n++] = grid_pv(pu1, pv1);
+    if (sb + 1 == k)
+        n += side_points(u0, u1, v1, 0, parts_of(w, col, row + 1), fu0, fu1, 1, out + n);
+    out[n++] = grid_pv(pu0, pv1);
+    if (sa == 0 && col > 0)
+        n += side_points(v0, v1, u0, 1, parts_of(w, col - 1, row), fv0, fv1, 1, out + n);
     return n;
 }
 
@@ -184,13 +238,12 @@ static sw_status emit_inside(sweep *w, uint32_t col, uint32_t row)
     if (p == SW_TT_NONE)
         return SW_OK;
     c->res->leaf_count++;
-    if (c->split_k < 2 || !((row > 0 && is_split(w, col, row - 1)) || is_split(w, col, row + 1) ||
-                            (col > 0 && is_split(w, col - 1, row)) ||
-                            (col + 1 < g->ncol && is_split(w, col + 1, row))))
+    if ((row == 0 || parts_of(w, col, row - 1) == 1) && parts_of(w, col, row + 1) == 1 &&
+        (col == 0 || parts_of(w, col - 1, row) == 1) && parts_of(w, col + 1, row) == 1)
         return emit_quad(c, p, col, row);
-    sw_tt_pv border[4 * SW_TT_MAX_SPLIT];
+    sw_tt_pv border[4 * SW_TT_MAX_SPLIT + 4];
     size_t mark = sw_arena_mark(c->arena);
-    sw_status s = emit_ring(c, p, col, row, border, cell_border(w, col, row, border));
+    sw_status s = emit_ring(c, p, col, row, border, cell_border(w, col, row, 1, 0, 0, border));
     sw_arena_reset_to(c->arena, mark);
     return s;
 }
@@ -248,19 +301,13 @@ static sw_status emit_crossed(sweep *w, uint32_t col, uint32_t row, uint32_t a, 
         return SW_OK;
     c->res->leaf_count++, c->res->crossed_count++;
     double u0 = g->gu[col], u1 = g->gu[col + 1], v0 = g->gv[row], v1 = g->gv[row + 1];
-    uint32_t k = is_split(w, col, row) ? c->split_k : 1;
-    sw_tt_pv border[4 * SW_TT_MAX_SPLIT];
+    uint32_t k = parts_of(w, col, row);
+    sw_tt_pv border[4 * SW_TT_MAX_SPLIT + 4];
     for (uint32_t sb = 0; sb < k; sb++) {
         for (uint32_t sa = 0; sa < k; sa++) {
             sw_tt_rect r = {part(u0, u1, sa, k), part(u0, u1, sa + 1, k), part(v0, v1, sb, k),
                             part(v0, v1, sb + 1, k)};
-            uint32_t nb = 4;
-            if (k == 1) {
-                nb = cell_border(w, col, row, border);
-            } else {
-                border[0] = grid_pv(r.u0, r.v0), border[1] = grid_pv(r.u1, r.v0);
-                border[2] = grid_pv(r.u1, r.v1), border[3] = grid_pv(r.u0, r.v1);
-            }
+            uint32_t nb = cell_border(w, col, row, k, sa, sb, border);
             size_t mark = sw_arena_mark(c->arena);
             sw_status s = clip_cell(w, p, col, row, &r, segs_in(w, &r, a, b), border, nb);
             sw_arena_reset_to(c->arena, mark);

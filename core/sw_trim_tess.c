@@ -27,6 +27,8 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #include "sw_trim_tess_internal.h"
 
@@ -250,6 +252,20 @@ sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32
         *out = *slot;
         return SW_OK;
     }
+    if (pv->kind == SW_TT_CROSS) {
+        /* A crossing that rounds to an end's own float (u, v) (a grid line a
+         * float step from a loop point) is that loop point: both cells at the
+         * crossing find the same one, the edge between the two collapses, and
+         * no triangle degenerates in the float (u, v) of the output. */
+        uint32_t ends[2] = {pv->seg, c->pts[pv->seg].next};
+        for (int k = 0; k < 2; k++) {
+            const float *uv = c->in_loops->points[c->pts[ends[k]].src].uv;
+            if ((float)pv->u == uv[0] && (float)pv->v == uv[1]) {
+                sw_tt_pv end = {c->pts[ends[k]].u, c->pts[ends[k]].v, SW_TT_SEAM, ends[k], 0, 0, 0, 0};
+                return sw_tt_vertex_for(c, patch, &end, out);
+            }
+        }
+    }
     uint32_t h = hash_key(pv->u, pv->v, pv->kind) & c->hash_mask;
     for (; c->hash[h] != SW_TT_NONE; h = (h + 1) & c->hash_mask) {
         uint32_t i = c->hash[h];
@@ -322,6 +338,7 @@ static sw_status emit_all(tt_ctx *c)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "vertex table (see sw_trim_tess_scratch_bytes)");
     memset(c->hash, 0xFF, sizeof(uint32_t) * hs);
+    if (getenv("TTDBG")) fprintf(stderr, "grid %u x %u box cols %u..%u rows %u..%u pairs %u\n", c->grid.ncol, c->grid.nrow, c->grid.c0, c->grid.c1, c->grid.r0, c->grid.r1, c->pair_count);
     return sw_tt_sweep(c);
 }
 

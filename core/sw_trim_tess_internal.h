@@ -9,9 +9,9 @@
 #include "sw_trim_tess.h"
 
 enum {
-    SW_TT_MAX_CELL_POINTS = 32,  /* loop points a crossed cell may hold before lines are added */
+    SW_TT_MAX_CELL_POINTS = 32,  /* loop points per part of a crossed cell (split up to 8 x 8, then lines) */
     SW_TT_SUB = 2,               /* sub-patch intervals per knot interval, per axis */
-    SW_TT_MAX_SPLIT = 4,         /* crossed cells split at most 4 x 4 (border_fraction) */
+    SW_TT_MAX_SPLIT = 8,         /* crossed cells split at most 8 x 8 (border_fraction, crowding) */
     SW_TT_MAX_INSERT = 4096,     /* grid lines added for the loops, per axis */
     SW_TT_REFINE_ROUNDS = 24,
     SW_TT_DEFAULT_DEPTH = 24,
