@@ -11,8 +11,6 @@
  * has a T-vertex. Only sub-patches meeting the loops' box are bounded. */
 #include <math.h>
 #include <string.h>
-#include <stdio.h>
-#include <stdlib.h>
 
 #include "sw_trim_tess_internal.h"
 
@@ -92,7 +90,8 @@ static sw_status build_knots(tt_ctx *c)
     g->table = sw_arena_alloc(c->arena, sizeof(uint32_t) * (size_t)cells, 4);
     g->bounded = sw_arena_alloc(c->arena, n, 1);
     g->bounds = sw_arena_alloc(c->arena, sizeof(double) * 3 * SW_TT_SUB * SW_TT_SUB * n, 8);
-    if (!g->table || !g->bounded || !g->bounds)
+    g->whole = sw_arena_alloc(c->arena, sizeof(double) * 3 * n, 8);
+    if (!g->table || !g->bounded || !g->bounds || !g->whole)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for knots");
     memset(g->table, 0xFF, sizeof(uint32_t) * (size_t)cells);
     memset(g->bounded, 0, n);
@@ -118,6 +117,11 @@ static sw_status bound_patch(tt_ctx *c, uint32_t p, double *tmp)
     if (g->bounded[p])
         return SW_OK;
     const sw_bezier_patch *src = &c->patches[p];
+    sw_deriv_bounds w;
+    sw_status st = sw_bezier_second_deriv_bounds(src, &w, c->err);
+    if (st != SW_OK)
+        return st;
+    g->whole[3 * p] = w.uu, g->whole[3 * p + 1] = w.uv, g->whole[3 * p + 2] = w.vv;
     for (int sv = 0; sv < SW_TT_SUB; sv++) {
         for (int su = 0; su < SW_TT_SUB; su++) {
             sw_bezier_subpatch(src, (double)su / SW_TT_SUB, (double)(su + 1) / SW_TT_SUB,
@@ -231,7 +235,7 @@ static sw_status choose_counts(tt_ctx *c, double *cu, double *cv)
                     double nu, nv;
                     int capped;
                     solve_counts(m, c->error, cap, &nu, &nv, &capped);
-                    c->res->capped_count += (uint32_t)capped; if (getenv("TTDBG")) fprintf(stderr, "p%u s%d%d m %g %g %g -> %g x %g\n", p, su, sv, m[0], m[1], m[2], nu, nv);
+                    c->res->capped_count += (uint32_t)capped;
                     cu[kc * SW_TT_SUB + su] = fmax(cu[kc * SW_TT_SUB + su], nu);
                     cv[kr * SW_TT_SUB + sv] = fmax(cv[kr * SW_TT_SUB + sv], nv);
                 }
@@ -261,10 +265,15 @@ static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const do
     uint32_t m = 0;
     for (uint32_t k = 0; k + 1 < nk; k++) {
         double w = knots[k + 1] - knots[k];
+        int merged = count[k * SW_TT_SUB + 1] == 0;
         for (int s = 0; s < SW_TT_SUB; s++) {
             uint32_t cnt = (uint32_t)count[k * SW_TT_SUB + (uint32_t)s];
             for (uint32_t i = 0; i < cnt; i++) {
-                double x = knots[k] + w * ((s + (double)i / cnt) / SW_TT_SUB);
+                double x = merged ? knots[k] : knots[k] + w * ((s + (double)i / cnt) / SW_TT_SUB);
+                if (merged) {
+                    (*lines)[m] = x, (*kidx)[m] = k, (*sidx)[m] = SW_TT_WHOLE, m++;
+                    continue;
+                }
                 if (m > 0 && !(x > (*lines)[m - 1]))
                     return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: grid intervals "
                                         "below the double step at error %g", c->error);
@@ -277,37 +286,96 @@ static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const do
     return SW_OK;
 }
 
-/* Largest bound over the bounded sub-patches with the chosen counts. */
-static void report_bound(tt_ctx *c, const double *cu, const double *cv)
+/* The bound of a cell hu x hv (patch units) in sub-patch (su, sv) of patch
+ * p; SW_TT_WHOLE for an interval not split into sub-patches (then the whole
+ * patch's bounds hold). */
+static double bound_in(const tt_grid *g, uint32_t p, uint32_t su, uint32_t sv, double hu, double hv)
+{
+    if (su == SW_TT_WHOLE || sv == SW_TT_WHOLE)
+        return cell_error(g->whole + 3 * (size_t)p, hu, hv);
+    return cell_error(g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB + sv * SW_TT_SUB + su),
+                      hu * SW_TT_SUB, hv * SW_TT_SUB);
+}
+
+/* Interval s of knot interval k with counts cnt: its sub-patch index
+ * (SW_TT_WHOLE when merged) and its grid intervals' size in patch units;
+ * 0 when s is merged into s = 0. */
+static double interval_size(const double *cnt, uint32_t k, uint32_t s, uint32_t *sub)
+{
+    const double *n = cnt + (size_t)k * SW_TT_SUB;
+    int merged = n[1] == 0;
+    *sub = merged ? SW_TT_WHOLE : s;
+    if (merged)
+        return s == 0 ? 1.0 : 0.0;
+    return 1.0 / (SW_TT_SUB * n[s]);
+}
+
+/* Largest bound over the cells of the bounded patches meeting the box (of
+ * knot column or row `only` along axis, when axis >= 0); with check, 1 when
+ * it is within e (nothing reported). */
+static int grid_bound(tt_ctx *c, const double *cu, const double *cv, double e, int check,
+                      int axis, uint32_t only)
 {
     const tt_grid *g = &c->grid;
-    for (uint32_t kr = 0; kr + 1 < g->nkv; kr++)
-        for (uint32_t kc = 0; kc + 1 < g->nku; kc++) {
+    uint32_t r0 = axis == 1 ? only : 0, r1 = axis == 1 ? only + 1 : g->nkv - 1;
+    uint32_t c0 = axis == 0 ? only : 0, c1 = axis == 0 ? only + 1 : g->nku - 1;
+    for (uint32_t kr = r0; kr < r1; kr++)
+        for (uint32_t kc = c0; kc < c1; kc++) {
             uint32_t p = sw_tt_knot_patch(c, kc, kr);
             if (p == SW_TT_NONE || !g->bounded[p])
                 continue;
-            for (int sv = 0; sv < SW_TT_SUB; sv++)
-                for (int su = 0; su < SW_TT_SUB; su++) {
-                    const double *m = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB +
-                                                       sv * SW_TT_SUB + su);
-                    double e = cell_error(m, 1 / cu[kc * SW_TT_SUB + su], 1 / cv[kr * SW_TT_SUB + sv]);
-                    if (meets_box(g, kc, kr, su, sv))
-                        c->res->error_bound = fmax(c->res->error_bound, e);
+            for (uint32_t sv = 0; sv < SW_TT_SUB; sv++)
+                for (uint32_t su = 0; su < SW_TT_SUB; su++) {
+                    uint32_t bu, bv;
+                    double hu = interval_size(cu, kc, su, &bu), hv = interval_size(cv, kr, sv, &bv);
+                    if (hu == 0 || hv == 0 || !meets_box(g, kc, kr, (int)su, (int)sv))
+                        continue;
+                    double b = bound_in(g, p, bu, bv, hu, hv);
+                    if (check && b > e)
+                        return 0;
+                    if (!check)
+                        c->res->error_bound = fmax(c->res->error_bound, b);
                 }
         }
+    return 1;
 }
 
-double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts)
+/* Knot intervals whose sub-intervals all take one grid interval become one
+ * grid interval where the whole patch's bound allows it (a plane stays two
+ * triangles; far away a patch needs no more): columns first, then rows,
+ * each kept only if every cell of the grid stays within e. */
+static void merge_intervals(tt_ctx *c, double *cu, double *cv)
+{
+    const tt_grid *g = &c->grid;
+    for (int axis = 0; axis < 2; axis++) {
+        double *cnt = axis ? cv : cu;
+        uint32_t nk = (axis ? g->nkv : g->nku) - 1;
+        for (uint32_t k = 0; k < nk; k++) {
+            double *n = cnt + (size_t)k * SW_TT_SUB;
+            int ones = 1;
+            for (int s = 0; s < SW_TT_SUB; s++)
+                ones &= n[s] == 1;
+            if (!ones)
+                continue;
+            for (int s = 1; s < SW_TT_SUB; s++)
+                n[s] = 0;
+            if (!grid_bound(c, cu, cv, c->error, 1, axis, k))
+                for (int s = 1; s < SW_TT_SUB; s++)
+                    n[s] = 1;
+        }
+    }
+}
+
+double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts_u,
+                        uint32_t parts_v)
 {
     const tt_grid *g = &c->grid;
     uint32_t kc = g->col_k[col], kr = g->row_k[row], p = sw_tt_knot_patch(c, kc, kr);
     if (p == SW_TT_NONE || !g->bounded[p])
         return -1;
-    const double *m = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB +
-                                       g->row_s[row] * SW_TT_SUB + g->col_s[col]);
-    double hu = (g->gu[col + 1] - g->gu[col]) * SW_TT_SUB / (g->ku[kc + 1] - g->ku[kc]);
-    double hv = (g->gv[row + 1] - g->gv[row]) * SW_TT_SUB / (g->kv[kr + 1] - g->kv[kr]);
-    return cell_error(m, hu / parts, hv / parts);
+    double hu = (g->gu[col + 1] - g->gu[col]) / (g->ku[kc + 1] - g->ku[kc]);
+    double hv = (g->gv[row + 1] - g->gv[row]) / (g->kv[kr + 1] - g->kv[kr]);
+    return bound_in(g, p, g->col_s[col], g->row_s[row], hu / parts_u, hv / parts_v);
 }
 
 static void find_box_range(tt_ctx *c)
@@ -357,7 +425,8 @@ sw_status sw_tt_build_grid(tt_ctx *c)
     s = choose_counts(c, cu, cv);
     if (s != SW_OK)
         return s;
-    report_bound(c, cu, cv);
+    merge_intervals(c, cu, cv);
+    grid_bound(c, cu, cv, 0, 0, -1, 0);
     if ((s = lay_lines(c, g->ku, g->nku, cu, &g->gu, &g->col_k, &g->col_s, &g->ncol,
                        &g->cap_u)) != SW_OK ||
         (s = lay_lines(c, g->kv, g->nkv, cv, &g->gv, &g->row_k, &g->row_s, &g->nrow,

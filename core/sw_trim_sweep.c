@@ -15,40 +15,53 @@
 
 typedef struct sweep {
     tt_ctx *c;
-    uint8_t *split[3];       /* per row slot (row % 3): parts per axis of a crossed cell, 0: 1 */
+    uint8_t *split[3];       /* per row slot (row % 3): a crossed cell's parts (parts_of) */
     uint32_t *seg_mark, mark;
     double *xs;              /* crossings of the row's middle line, sorted */
     uint32_t nx;
     uint32_t *segs;          /* a (sub)cell's segments */
 } sweep;
 
-/* Parts per axis of cell (col, row): 1 unless crossed and split. */
-static uint32_t parts_of(const sweep *w, uint32_t col, uint32_t row)
+/* Parts of cell (col, row) along u (axis 0) or v: 1 unless crossed and
+ * split. A slot holds parts_u - 1 in its low and parts_v - 1 in its high
+ * nibble. */
+static uint32_t parts_of(const sweep *w, uint32_t col, uint32_t row, int axis)
 {
     const tt_grid *g = &w->c->grid;
     if (row >= g->nrow || col >= g->ncol)
         return 1;
     uint8_t k = w->split[row % 3][col];
-    return k ? k : 1;
+    return 1u + (axis ? k >> 4 : k & 15u);
 }
 
-/* Parts of a crossed cell: split_k where its bound exceeds border_error,
- * more where it holds many loop points (clipping cost grows with their
- * square), at most SW_TT_MAX_SPLIT. */
-static uint8_t parts_for(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t a, uint32_t b)
+/* Parts of a crossed cell: the fewest parts_u x parts_v that bring its
+ * bound within border_error, at least k x k where it holds k times
+ * SW_TT_MAX_CELL_POINTS loop points (clipping cost grows with their
+ * square), at most SW_TT_MAX_SPLIT per axis. */
+static uint8_t parts_for(tt_ctx *c, uint32_t col, uint32_t row, uint32_t a, uint32_t b)
 {
     const tt_grid *g = &c->grid;
     sw_tt_rect r = {g->gu[col], g->gu[col + 1], g->gv[row], g->gv[row + 1]};
-    uint32_t k = 1, inside = 0;
-    if (c->split_k > 1 && sw_tt_cell_bound(c, col, row, 1) > c->border_error)
-        k = c->split_k;
+    uint32_t inside = 0, ku = 1, kv = 1;
     for (uint32_t i = a; i < b; i++) {
         const sw_tt_point *q = &c->pts[c->pairs[i].seg];
         inside += sw_tt_inside(&r, q->u, q->v);
     }
     uint32_t crowd = (inside + SW_TT_MAX_CELL_POINTS - 1) / SW_TT_MAX_CELL_POINTS;
-    k = crowd > k ? crowd : k;
-    return (uint8_t)(k > SW_TT_MAX_SPLIT ? SW_TT_MAX_SPLIT : k);
+    crowd = crowd < 1 ? 1 : crowd > SW_TT_MAX_SPLIT ? SW_TT_MAX_SPLIT : crowd;
+    if (c->border_error < c->error && sw_tt_cell_bound(c, col, row, crowd, crowd) > c->border_error) {
+        uint32_t best = SW_TT_MAX_SPLIT * SW_TT_MAX_SPLIT + 1;
+        ku = kv = SW_TT_MAX_SPLIT;
+        for (uint32_t i = crowd; i <= SW_TT_MAX_SPLIT; i++)
+            for (uint32_t j = crowd; j <= SW_TT_MAX_SPLIT && i * j < best; j++)
+                if (sw_tt_cell_bound(c, col, row, i, j) <= c->border_error)
+                    best = i * j, ku = i, kv = j;
+        if (best > SW_TT_MAX_SPLIT * SW_TT_MAX_SPLIT) /* capped: say so */
+            c->res->error_bound = fmax(c->res->error_bound, sw_tt_cell_bound(c, col, row, ku, kv));
+    } else {
+        ku = kv = crowd;
+    }
+    return (uint8_t)((ku - 1) | (kv - 1) << 4);
 }
 
 static void mark_splits(sweep *w, uint32_t row)
@@ -187,31 +200,31 @@ static uint32_t side_points(double a, double b, double x, int along_v, uint32_t 
     return n;
 }
 
-/* The border of part (sa, sb) of k x k of cell (col, row), counter-clockwise
- * from its (u0, v0): its corners and, on the cell's sides, the part corners
- * of split neighbours, so no T-vertex appears. */
-static uint32_t cell_border(const sweep *w, uint32_t col, uint32_t row, uint32_t k, uint32_t sa,
-                            uint32_t sb, sw_tt_pv *out)
+/* The border of part (sa, sb) of ku x kv of cell (col, row), counter-
+ * clockwise from its (u0, v0): its corners and, on the cell's sides, the
+ * part corners of split neighbours, so no T-vertex appears. */
+static uint32_t cell_border(const sweep *w, uint32_t col, uint32_t row, uint32_t ku, uint32_t kv,
+                            uint32_t sa, uint32_t sb, sw_tt_pv *out)
 {
     const tt_grid *g = &w->c->grid;
     double u0 = g->gu[col], u1 = g->gu[col + 1], v0 = g->gv[row], v1 = g->gv[row + 1];
-    double pu0 = part(u0, u1, sa, k), pu1 = part(u0, u1, sa + 1, k);
-    double pv0 = part(v0, v1, sb, k), pv1 = part(v0, v1, sb + 1, k);
-    double fu0 = (double)sa / k, fu1 = (double)(sa + 1) / k;
-    double fv0 = (double)sb / k, fv1 = (double)(sb + 1) / k;
+    double pu0 = part(u0, u1, sa, ku), pu1 = part(u0, u1, sa + 1, ku);
+    double pv0 = part(v0, v1, sb, kv), pv1 = part(v0, v1, sb + 1, kv);
+    double fu0 = (double)sa / ku, fu1 = (double)(sa + 1) / ku;
+    double fv0 = (double)sb / kv, fv1 = (double)(sb + 1) / kv;
     uint32_t n = 0;
     out[n++] = grid_pv(pu0, pv0);
     if (sb == 0 && row > 0)
-        n += side_points(u0, u1, v0, 0, parts_of(w, col, row - 1), fu0, fu1, 0, out + n);
+        n += side_points(u0, u1, v0, 0, parts_of(w, col, row - 1, 0), fu0, fu1, 0, out + n);
     out[n++] = grid_pv(pu1, pv0);
-    if (sa + 1 == k)
-        n += side_points(v0, v1, u1, 1, parts_of(w, col + 1, row), fv0, fv1, 0, out + n);
+    if (sa + 1 == ku)
+        n += side_points(v0, v1, u1, 1, parts_of(w, col + 1, row, 1), fv0, fv1, 0, out + n);
     out[n++] = grid_pv(pu1, pv1);
-    if (sb + 1 == k)
-        n += side_points(u0, u1, v1, 0, parts_of(w, col, row + 1), fu0, fu1, 1, out + n);
+    if (sb + 1 == kv)
+        n += side_points(u0, u1, v1, 0, parts_of(w, col, row + 1, 0), fu0, fu1, 1, out + n);
     out[n++] = grid_pv(pu0, pv1);
     if (sa == 0 && col > 0)
-        n += side_points(v0, v1, u0, 1, parts_of(w, col - 1, row), fv0, fv1, 1, out + n);
+        n += side_points(v0, v1, u0, 1, parts_of(w, col - 1, row, 1), fv0, fv1, 1, out + n);
     return n;
 }
 
@@ -238,12 +251,12 @@ static sw_status emit_inside(sweep *w, uint32_t col, uint32_t row)
     if (p == SW_TT_NONE)
         return SW_OK;
     c->res->leaf_count++;
-    if ((row == 0 || parts_of(w, col, row - 1) == 1) && parts_of(w, col, row + 1) == 1 &&
-        (col == 0 || parts_of(w, col - 1, row) == 1) && parts_of(w, col + 1, row) == 1)
+    if ((row == 0 || parts_of(w, col, row - 1, 0) == 1) && parts_of(w, col, row + 1, 0) == 1 &&
+        (col == 0 || parts_of(w, col - 1, row, 1) == 1) && parts_of(w, col + 1, row, 1) == 1)
         return emit_quad(c, p, col, row);
     sw_tt_pv border[4 * SW_TT_MAX_SPLIT + 4];
     size_t mark = sw_arena_mark(c->arena);
-    sw_status s = emit_ring(c, p, col, row, border, cell_border(w, col, row, 1, 0, 0, border));
+    sw_status s = emit_ring(c, p, col, row, border, cell_border(w, col, row, 1, 1, 0, 0, border));
     sw_arena_reset_to(c->arena, mark);
     return s;
 }
@@ -301,13 +314,13 @@ static sw_status emit_crossed(sweep *w, uint32_t col, uint32_t row, uint32_t a, 
         return SW_OK;
     c->res->leaf_count++, c->res->crossed_count++;
     double u0 = g->gu[col], u1 = g->gu[col + 1], v0 = g->gv[row], v1 = g->gv[row + 1];
-    uint32_t k = parts_of(w, col, row);
+    uint32_t ku = parts_of(w, col, row, 0), kv = parts_of(w, col, row, 1);
     sw_tt_pv border[4 * SW_TT_MAX_SPLIT + 4];
-    for (uint32_t sb = 0; sb < k; sb++) {
-        for (uint32_t sa = 0; sa < k; sa++) {
-            sw_tt_rect r = {part(u0, u1, sa, k), part(u0, u1, sa + 1, k), part(v0, v1, sb, k),
-                            part(v0, v1, sb + 1, k)};
-            uint32_t nb = cell_border(w, col, row, k, sa, sb, border);
+    for (uint32_t sb = 0; sb < kv; sb++) {
+        for (uint32_t sa = 0; sa < ku; sa++) {
+            sw_tt_rect r = {part(u0, u1, sa, ku), part(u0, u1, sa + 1, ku), part(v0, v1, sb, kv),
+                            part(v0, v1, sb + 1, kv)};
+            uint32_t nb = cell_border(w, col, row, ku, kv, sa, sb, border);
             size_t mark = sw_arena_mark(c->arena);
             sw_status s = clip_cell(w, p, col, row, &r, segs_in(w, &r, a, b), border, nb);
             sw_arena_reset_to(c->arena, mark);

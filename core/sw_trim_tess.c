@@ -27,8 +27,6 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
-#include <stdio.h>
-#include <stdlib.h>
 
 #include "sw_trim_tess_internal.h"
 
@@ -338,7 +336,6 @@ static sw_status emit_all(tt_ctx *c)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "vertex table (see sw_trim_tess_scratch_bytes)");
     memset(c->hash, 0xFF, sizeof(uint32_t) * hs);
-    if (getenv("TTDBG")) fprintf(stderr, "grid %u x %u box cols %u..%u rows %u..%u pairs %u\n", c->grid.ncol, c->grid.nrow, c->grid.c0, c->grid.c1, c->grid.r0, c->grid.r1, c->pair_count);
     return sw_tt_sweep(c);
 }
 
@@ -409,9 +406,6 @@ static sw_status tessellate(const sw_trim_patch *patches, uint32_t patch_count,
     c.crossing_on_segment = opt && opt->crossing_on_segment;
     c.border_error = opt && opt->border_fraction > 0 && opt->border_fraction < 1
                          ? error_world * opt->border_fraction : error_world;
-    c.split_k = 1;
-    while (c.split_k < SW_TT_MAX_SPLIT && c.split_k * c.split_k * c.border_error < error_world)
-        c.split_k++;
     size_t mark = sw_arena_mark(scratch);
     s = run(&c);
     sw_arena_reset_to(scratch, mark);

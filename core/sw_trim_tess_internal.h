@@ -11,6 +11,7 @@
 enum {
     SW_TT_MAX_CELL_POINTS = 32,  /* loop points per part of a crossed cell (split up to 8 x 8, then lines) */
     SW_TT_SUB = 2,               /* sub-patch intervals per knot interval, per axis */
+    SW_TT_WHOLE = 0xFF,          /* a knot interval left whole: the patch's own bounds */
     SW_TT_MAX_SPLIT = 8,         /* crossed cells split at most 8 x 8 (border_fraction, crowding) */
     SW_TT_MAX_INSERT = 4096,     /* grid lines added for the loops, per axis */
     SW_TT_REFINE_ROUNDS = 24,
@@ -32,10 +33,11 @@ typedef struct tt_grid {
     uint32_t nku, nkv;
     uint32_t *table;            /* patch of knot cell (kc, kr) at kr * (nku - 1) + kc, or NONE */
     double *bounds;             /* per patch and sub-patch: M_uu, M_uv, M_vv of the sub-patch */
+    double *whole;              /* per patch: its own M_uu, M_uv, M_vv */
     uint8_t *bounded;           /* per patch: bounds computed */
     double *gu, *gv;            /* grid lines: ncol + 1 and nrow + 1 */
     uint32_t *col_k, *row_k;    /* knot interval of each grid column / row */
-    uint8_t *col_s, *row_s;     /* sub-patch interval within it */
+    uint8_t *col_s, *row_s;     /* sub-patch interval within it, SW_TT_WHOLE: not split */
     uint32_t ncol, nrow, cap_u, cap_v;
     uint32_t c0, c1, r0, r1;    /* columns [c0, c1) and rows [r0, r1) meeting the loops' box */
     double box[4];              /* the loops' box (moved points) */
@@ -57,7 +59,6 @@ typedef struct tt_ctx {
     uint32_t max_vertices, max_depth;
     int crossing_on_segment;
     double border_error;     /* error for cells a loop runs through */
-    uint32_t split_k;        /* crossed cells over border_error split k x k */
     tt_grid grid;
     /* segments by cell, sorted by (row, col); row_first[r] the first of row r */
     tt_pair *pairs;
@@ -102,8 +103,9 @@ uint32_t sw_tt_interval(const double *lines, uint32_t n, double x);
 uint32_t sw_tt_knot_patch(const tt_ctx *c, uint32_t kc, uint32_t kr);
 
 /* The bound (M_uu h_u^2 + 2 M_uv h_u h_v + M_vv h_v^2) / 8 of grid cell
- * (col, row) or of a k-th part of it (parts = k); -1 when not known. */
-double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts);
+ * (col, row) cut into parts_u x parts_v parts; -1 when not known. */
+double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts_u,
+                        uint32_t parts_v);
 
 /* Segments into cells (c->pairs, c->row_first), refining the grid where a
  * cell holds a whole hole or too many loop points (core/sw_trim_bucket.c). */
