@@ -408,10 +408,15 @@ static int same(const sw_tt_pv *a, const sw_tt_pv *b) { return a->u == b->u && a
 
 /* Is any other ring vertex in or on triangle (a, b, c)? Vertices at the
  * same place as a corner do not count (a ring may touch itself there). */
-static int blocked(const sw_tt_pv *v, const uint32_t *next, uint32_t a, uint32_t b, uint32_t c)
+static int blocked(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next, uint32_t a,
+                   uint32_t b, uint32_t c)
 {
     for (uint32_t p = next[c]; p != a; p = next[p]) {
         const sw_tt_pv *q = &v[p];
+        /* Only a reflex or flat vertex can be the first inside an ear (the
+         * one farthest from its diagonal is reflex): convex ones are skipped. */
+        if (orient(&v[prev[p]], q, &v[next[p]]) > 0)
+            continue;
         if (same(q, &v[a]) || same(q, &v[b]) || same(q, &v[c]))
             continue;
         if (orient(&v[a], &v[b], q) >= 0 && orient(&v[b], &v[c], q) >= 0 &&
@@ -437,7 +442,7 @@ static uint32_t pick_ear(const sw_tt_pv *v, const uint32_t *prev, const uint32_t
     double best_q = 0;
     do {
         double q = ear_quality(&v[prev[i]], &v[i], &v[next[i]]);
-        if (q > best_q && (!check || !blocked(v, next, prev[i], i, next[i])))
+        if (q > best_q && (!check || !blocked(v, prev, next, prev[i], i, next[i])))
             best = i, best_q = q;
         i = next[i];
     } while (i != start);

@@ -31,40 +31,40 @@ static void basis(int n, double t, double *b, double *d)
 }
 
 /* q[0][i] = sum_j B_j(t) H_ij, q[1][i] = sum_j B_j'(t) H_ij: the patch
- * contracted in v at t (H homogeneous: w x, w y, w z, w). */
+ * contracted in v at t (H homogeneous: w x, w y, w z, w; w = 1 when the
+ * patch is polynomial, the common case, without the multiplications). */
 static void contract_v(const sw_bezier_patch *p, double t, double *q, size_t stride)
 {
     double b[SW_BEZIER_MAX_ORDER], d[SW_BEZIER_MAX_ORDER];
     int n = p->degree_u, m = p->degree_v;
+    size_t row = 4 * (size_t)(n + 1);
     basis(m, t, b, d);
     double *q0 = q, *q1 = q + stride;
-    memset(q0, 0, sizeof(double) * 4 * (size_t)(n + 1));
-    memset(q1, 0, sizeof(double) * 4 * (size_t)(n + 1));
+    memset(q0, 0, sizeof(double) * row);
+    memset(q1, 0, sizeof(double) * row);
     for (int j = 0; j <= m; j++) {
-        const double *row = p->ctrl + (size_t)j * (size_t)(n + 1) * 4;
-        for (int i = 0; i <= n; i++) {
-            const double *c = row + 4 * i;
-            double w = p->rational ? c[3] : 1;
-            double h[4] = {c[0] * w, c[1] * w, c[2] * w, w};
-            for (int k = 0; k < 4; k++)
-                q0[4 * i + k] += b[j] * h[k], q1[4 * i + k] += d[j] * h[k];
+        const double *c = p->ctrl + (size_t)j * row;
+        double bj = b[j], dj = d[j];
+        if (!p->rational) {
+            for (size_t i = 0; i < row; i += 4) {
+                q0[i] += bj * c[i], q0[i + 1] += bj * c[i + 1], q0[i + 2] += bj * c[i + 2];
+                q1[i] += dj * c[i], q1[i + 1] += dj * c[i + 1], q1[i + 2] += dj * c[i + 2];
+                q0[i + 3] += bj, q1[i + 3] += dj;
+            }
+            continue;
+        }
+        for (size_t i = 0; i < row; i += 4) {
+            double w = c[i + 3], h0 = c[i] * w, h1 = c[i + 1] * w, h2 = c[i + 2] * w;
+            q0[i] += bj * h0, q0[i + 1] += bj * h1, q0[i + 2] += bj * h2, q0[i + 3] += bj * w;
+            q1[i] += dj * h0, q1[i + 1] += dj * h1, q1[i + 2] += dj * h2, q1[i + 3] += dj * w;
         }
     }
 }
 
-static int normal_of(sw_vec3 du, sw_vec3 dv, sw_vec3 *n)
-{
-    double a = sw_v3_length(du), b = sw_v3_length(dv);
-    sw_vec3 x = sw_v3_cross(du, dv);
-    double l = sw_v3_length(x);
-    if (!(l > 1e-10 * a * b) || !(fmin(a, b) > 1e-10 * fmax(a, b)))
-        return 0;
-    *n = sw_v3_scale(x, 1.0 / l);
-    return 1;
-}
-
-/* The point at s of a contracted patch; *normal from sw_bezier_eval at the
- * patch's (s, t) where the quotient-rule normal degenerates. */
+/* The point at s of a contracted patch. The normal is F_u x F_v
+ * normalised, as sw_bezier_eval's (zero-free only where neither derivative
+ * is rounding noise next to the other); where that fails, sw_bezier_eval's
+ * limit normal at the patch's (s, t). */
 static void finish(const sw_bezier_patch *p, const double *q, size_t stride, double s, double t,
                    sw_vec3 *pos, sw_vec3 *normal)
 {
@@ -73,19 +73,27 @@ static void finish(const sw_bezier_patch *p, const double *q, size_t stride, dou
     int n = p->degree_u;
     basis(n, s, b, d);
     const double *q1 = q + stride;
-    for (int i = 0; i <= n; i++)
+    for (int i = 0; i <= n; i++) {
+        const double *a = q + 4 * i, *e = q1 + 4 * i;
         for (int k = 0; k < 4; k++)
-            x[k] += b[i] * q[4 * i + k], xu[k] += d[i] * q[4 * i + k], xv[k] += b[i] * q1[4 * i + k];
-    double iw = 1 / x[3];
-    sw_vec3 f = sw_v3(x[0] * iw, x[1] * iw, x[2] * iw);
-    sw_vec3 fu = sw_v3_scale(sw_v3_sub(sw_v3(xu[0], xu[1], xu[2]), sw_v3_scale(f, xu[3])), iw);
-    sw_vec3 fv = sw_v3_scale(sw_v3_sub(sw_v3(xv[0], xv[1], xv[2]), sw_v3_scale(f, xv[3])), iw);
-    *pos = f;
-    if (!normal_of(fu, fv, normal)) {
-        sw_surface_point sp;
-        sw_bezier_eval(p, s, t, SW_EVAL_FIRST, &sp);
-        *normal = sp.normal;
+            x[k] += b[i] * a[k], xu[k] += d[i] * a[k], xv[k] += b[i] * e[k];
     }
+    double iw = 1 / x[3], f[3] = {x[0] * iw, x[1] * iw, x[2] * iw}, fu[3], fv[3];
+    for (int k = 0; k < 3; k++)
+        fu[k] = (xu[k] - f[k] * xu[3]) * iw, fv[k] = (xv[k] - f[k] * xv[3]) * iw;
+    *pos = sw_v3(f[0], f[1], f[2]);
+    double cx = fu[1] * fv[2] - fu[2] * fv[1], cy = fu[2] * fv[0] - fu[0] * fv[2];
+    double cz = fu[0] * fv[1] - fu[1] * fv[0];
+    double a2 = fu[0] * fu[0] + fu[1] * fu[1] + fu[2] * fu[2];
+    double b2 = fv[0] * fv[0] + fv[1] * fv[1] + fv[2] * fv[2], l2 = cx * cx + cy * cy + cz * cz;
+    if (l2 > 1e-20 * a2 * b2 && (a2 < b2 ? a2 > 1e-20 * b2 : b2 > 1e-20 * a2)) {
+        double il = 1 / sqrt(l2);
+        *normal = sw_v3(cx * il, cy * il, cz * il);
+        return;
+    }
+    sw_surface_point sp;
+    sw_bezier_eval(p, s, t, SW_EVAL_FIRST, &sp);
+    *normal = sp.normal;
 }
 
 static double local(const float *d, int axis, double x)

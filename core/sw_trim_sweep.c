@@ -20,6 +20,7 @@ typedef struct sweep {
     double *xs;              /* crossings of the row's middle line, sorted */
     uint32_t nx;
     uint32_t *segs;          /* a (sub)cell's segments */
+    uint8_t *group_parts;    /* per pair starting a cell's run: the cell's parts */
 } sweep;
 
 /* Parts of cell (col, row) along u (axis 0) or v: 1 unless crossed and
@@ -64,6 +65,26 @@ static uint8_t parts_for(tt_ctx *c, uint32_t col, uint32_t row, uint32_t a, uint
     return (uint8_t)((ku - 1) | (kv - 1) << 4);
 }
 
+/* Every crossed cell's parts, at the first of its pairs; returns a bound on
+ * the vertices the table will hold: per segment in a cell its crossings with
+ * the parts' lines, per split cell its parts' corners. */
+static uint32_t plan_parts(sweep *w)
+{
+    tt_ctx *c = w->c;
+    uint64_t hashed = 64;
+    for (uint32_t a = 0; a < c->pair_count;) {
+        uint32_t b = a + 1, col = c->pairs[a].col, row = c->pairs[a].row;
+        while (b < c->pair_count && c->pairs[b].col == col && c->pairs[b].row == row)
+            b++;
+        uint8_t k = parts_for(c, col, row, a, b);
+        uint32_t ku = 1u + (k & 15u), kv = 1u + (k >> 4);
+        w->group_parts[a] = k;
+        hashed += (uint64_t)(b - a) * (ku + kv + 2) + (k ? (ku + 1) * (kv + 1) : 0);
+        a = b;
+    }
+    return hashed > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)hashed;
+}
+
 static void mark_splits(sweep *w, uint32_t row)
 {
     tt_ctx *c = w->c;
@@ -71,14 +92,9 @@ static void mark_splits(sweep *w, uint32_t row)
         return;
     uint8_t *s = w->split[row % 3];
     memset(s, 0, c->grid.ncol);
-    uint32_t end = c->row_first[row + 1];
-    for (uint32_t a = c->row_first[row]; a < end;) {
-        uint32_t b = a + 1, col = c->pairs[a].col;
-        while (b < end && c->pairs[b].col == col)
-            b++;
-        s[col] = parts_for(c, col, row, a, b);
-        a = b;
-    }
+    for (uint32_t a = c->row_first[row]; a < c->row_first[row + 1]; a++)
+        if (a == c->row_first[row] || c->pairs[a - 1].col != c->pairs[a].col)
+            s[c->pairs[a].col] = w->group_parts[a];
 }
 
 /* Even-odd count of the row's segments crossing the line v right of u. */
@@ -385,16 +401,19 @@ sw_status sw_tt_sweep(tt_ctx *c)
     w.seg_mark = sw_arena_alloc(c->arena, sizeof(uint32_t) * (n + 1), 4);
     w.xs = sw_arena_alloc(c->arena, sizeof(double) * (n + 1), 8);
     w.segs = sw_arena_alloc(c->arena, sizeof(uint32_t) * (n + 1), 4);
+    w.group_parts = sw_arena_alloc(c->arena, c->pair_count + 1, 1);
     for (int k = 0; k < 3; k++)
         w.split[k] = sw_arena_alloc(c->arena, g->ncol + 1, 1);
     for (int k = 0; k < 2; k++)
         c->line_ids[k] = sw_arena_alloc(c->arena, sizeof(uint32_t) * (g->ncol + 2), 4);
-    if (!w.seg_mark || !w.xs || !w.segs || !w.split[0] || !w.split[1] || !w.split[2] ||
+    if (!w.seg_mark || !w.xs || !w.segs || !w.group_parts || !w.split[0] || !w.split[1] || !w.split[2] ||
         !c->line_ids[0] || !c->line_ids[1])
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "sweep (see sw_trim_tess_scratch_bytes)");
     memset(w.seg_mark, 0, sizeof(uint32_t) * (n + 1));
     sw_status s = sw_tt_eval_init(c);
+    if (s == SW_OK)
+        s = sw_tt_init_vertices(c, plan_parts(&w));
     if (s != SW_OK)
         return s;
     if (g->r0 > 0)

@@ -71,7 +71,8 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     /* pairs twice, row and column starts (sw_trim_bucket.c) */
     bytes += 2 * (4 * v + 2 * n + 64) * sizeof(tt_pair) + 2 * lines * sizeof(uint32_t);
     /* vertex table */
-    bytes += v * (2 * sizeof(double) + 1) + hash_size((uint32_t)v) * sizeof(uint32_t);
+    bytes += v * (2 * sizeof(double) + 1) + hash_size((uint32_t)v) * sizeof(uint32_t) +
+             n * (sizeof(sw_vec3) + 1) + (4 * v + 2 * n + 64);
     /* the sweep: per loop point a mark, a crossing, a segment; per column
      * split flags and two vertex ids; the evaluation cache per knot column */
     bytes += (n + 1) * 16 + lines * (3 + 2 * sizeof(uint32_t)) +
@@ -208,9 +209,14 @@ static void put_vertex(const tt_ctx *c, uint32_t i, const float p[3], sw_vec3 n,
 static void put_border(tt_ctx *c, uint32_t i, uint32_t src, double u, double v)
 {
     const sw_trim_point *tp = &c->in_loops->points[src];
-    sw_vec3 pos, normal;
-    sw_tt_eval_at(c, sw_tt_patch_at(c, tp->uv[0], tp->uv[1]), tp->uv[0], tp->uv[1], &pos, &normal);
-    put_vertex(c, i, tp->p, normal, u, v, tp->id);
+    sw_vec3 *normal = &c->src_normal[src];
+    if (!c->src_has_normal[src]) { /* a loop point and its crossings share one */
+        sw_vec3 pos;
+        sw_tt_eval_at(c, sw_tt_patch_at(c, tp->uv[0], tp->uv[1]), tp->uv[0], tp->uv[1], &pos,
+                      normal);
+        c->src_has_normal[src] = 1;
+    }
+    put_vertex(c, i, tp->p, *normal, u, v, tp->id);
 }
 
 /* A crossing on its seam segment (crossing_on_segment): the chord point
@@ -264,6 +270,9 @@ sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32
             }
         }
     }
+    if (c->hashed_count >= c->hash_mask / 2)
+        return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: more than %u crossings and part "
+                            "corners", (unsigned)c->hash_mask / 2);
     uint32_t h = hash_key(pv->u, pv->v, pv->kind) & c->hash_mask;
     for (; c->hash[h] != SW_TT_NONE; h = (h + 1) & c->hash_mask) {
         uint32_t i = c->hash[h];
@@ -276,6 +285,7 @@ sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32
     if (s != SW_OK)
         return s;
     c->hash[h] = *out;
+    c->hashed_count++;
     c->key_uv[2 * *out] = pv->u, c->key_uv[2 * *out + 1] = pv->v, c->key_kind[*out] = (uint8_t)pv->kind;
     if (pv->kind == SW_TT_CROSS && c->crossing_on_segment) {
         put_on_segment(c, *out, pv);
@@ -325,18 +335,22 @@ void sw_tt_put_triangle(tt_ctx *c, uint32_t a, uint32_t b, uint32_t d)
     c->index_count += 3;
 }
 
-static sw_status emit_all(tt_ctx *c)
+sw_status sw_tt_init_vertices(tt_ctx *c, uint32_t hashed)
 {
-    uint32_t hs = hash_size(c->max_vertices);
+    uint32_t hs = hash_size(hashed < c->max_vertices ? hashed : c->max_vertices);
+    uint32_t in = c->in_loops->loop_first[c->in_loops->loop_count];
     c->hash_mask = hs - 1;
     c->hash = sw_arena_alloc(c->arena, sizeof(uint32_t) * hs, 4);
     c->key_uv = sw_arena_alloc(c->arena, sizeof(double) * 2 * c->max_vertices, 8);
     c->key_kind = sw_arena_alloc(c->arena, c->max_vertices, 1);
-    if (!c->hash || !c->key_uv || !c->key_kind)
+    c->src_normal = sw_arena_alloc(c->arena, sizeof(sw_vec3) * in, 8);
+    c->src_has_normal = sw_arena_alloc(c->arena, in, 1);
+    if (!c->hash || !c->key_uv || !c->key_kind || !c->src_normal || !c->src_has_normal)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "vertex table (see sw_trim_tess_scratch_bytes)");
     memset(c->hash, 0xFF, sizeof(uint32_t) * hs);
-    return sw_tt_sweep(c);
+    memset(c->src_has_normal, 0, in);
+    return SW_OK;
 }
 
 /* ---- entry points ------------------------------------------------------------ */
@@ -372,7 +386,7 @@ static sw_status run(tt_ctx *c)
         return s;
     if (c->trims.loop_count > 0 &&
         ((s = sw_tt_build_grid(c)) != SW_OK || (s = sw_tt_bucket(c)) != SW_OK ||
-         (s = emit_all(c)) != SW_OK))
+         (s = sw_tt_sweep(c)) != SW_OK))
         return s;
     c->res->vertex_count = c->vertex_count;
     c->res->index_count = c->index_count;

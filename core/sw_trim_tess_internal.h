@@ -72,7 +72,9 @@ typedef struct tt_ctx {
     const sw_trim_tess_buffers *out;
     double *key_uv;
     uint8_t *key_kind;
-    uint32_t *hash, hash_mask;
+    uint32_t *hash, hash_mask, hashed_count;
+    sw_vec3 *src_normal;     /* per caller's loop point: the surface normal there, once */
+    uint8_t *src_has_normal;
     uint32_t *seam_out;
     uint32_t *line_ids[2];   /* vertex of grid point (col, line), slot line & 1 */
     uint32_t vertex_count, index_count;
@@ -127,6 +129,8 @@ sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32
 sw_status sw_tt_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
                             uint32_t *out);
 void sw_tt_put_triangle(tt_ctx *c, uint32_t a, uint32_t b, uint32_t d);
+/* The vertex table for at most `hashed` crossings and part corners. */
+sw_status sw_tt_init_vertices(tt_ctx *c, uint32_t hashed);
 uint32_t sw_tt_patch_at(const tt_ctx *c, double u, double v);
 
 #endif
