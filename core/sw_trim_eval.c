@@ -10,24 +10,30 @@
 
 #include "sw_trim_tess_internal.h"
 
-/* Bernstein values b[0..n] of degree n at t and their derivatives d. */
+/* Bernstein values b[0..n] of degree n at t and their derivatives d: the
+ * degree n - 1 values by the triangle (closed form for the bicubic's), then
+ * one more step for b and the differences for d. */
 static void basis(int n, double t, double *b, double *d)
 {
-    double lower[SW_BEZIER_MAX_ORDER], s = 1 - t;
-    b[0] = 1;
-    for (int k = 1; k <= n; k++) {
-        if (k == n)
-            memcpy(lower, b, sizeof(double) * (size_t)n);
-        double carry = 0;
-        for (int i = 0; i < k; i++) {
-            double x = b[i];
-            b[i] = carry + s * x;
-            carry = t * x;
+    double lo[SW_BEZIER_MAX_ORDER], s = 1 - t;
+    if (n == 3) {
+        lo[0] = s * s, lo[1] = 2 * s * t, lo[2] = t * t;
+    } else {
+        lo[0] = 1;
+        for (int k = 1; k < n; k++) {
+            double carry = 0;
+            for (int i = 0; i < k; i++) {
+                double x = lo[i];
+                lo[i] = carry + s * x;
+                carry = t * x;
+            }
+            lo[k] = carry;
         }
-        b[k] = carry;
     }
-    for (int i = 0; i <= n; i++)
-        d[i] = n * ((i > 0 ? lower[i - 1] : 0) - (i < n ? lower[i] : 0));
+    b[0] = s * lo[0], d[0] = -n * lo[0];
+    for (int i = 1; i < n; i++)
+        b[i] = s * lo[i] + t * lo[i - 1], d[i] = n * (lo[i - 1] - lo[i]);
+    b[n] = t * lo[n - 1], d[n] = n * lo[n - 1];
 }
 
 /* q[0][i] = sum_j B_j(t) H_ij, q[1][i] = sum_j B_j'(t) H_ij: the patch
@@ -65,13 +71,11 @@ static void contract_v(const sw_bezier_patch *p, double t, double *q, size_t str
  * normalised, as sw_bezier_eval's (zero-free only where neither derivative
  * is rounding noise next to the other); where that fails, sw_bezier_eval's
  * limit normal at the patch's (s, t). */
-static void finish(const sw_bezier_patch *p, const double *q, size_t stride, double s, double t,
-                   sw_vec3 *pos, sw_vec3 *normal)
+static void finish(const sw_bezier_patch *p, const double *q, size_t stride, const double *b,
+                   const double *d, double s, double t, sw_vec3 *pos, sw_vec3 *normal)
 {
-    double b[SW_BEZIER_MAX_ORDER], d[SW_BEZIER_MAX_ORDER];
     double x[4] = {0, 0, 0, 0}, xu[4] = {0, 0, 0, 0}, xv[4] = {0, 0, 0, 0};
     int n = p->degree_u;
-    basis(n, s, b, d);
     const double *q1 = q + stride;
     for (int i = 0; i <= n; i++) {
         const double *a = q + 4 * i, *e = q1 + 4 * i;
@@ -105,10 +109,12 @@ static double local(const float *d, int axis, double x)
 void sw_tt_eval_at(tt_ctx *c, uint32_t p, double u, double v, sw_vec3 *pos, sw_vec3 *normal)
 {
     double q[2 * 4 * SW_BEZIER_MAX_ORDER];
-    const float *d = c->in_patches[p].domain;
-    double s = local(d, 0, u), t = local(d, 1, v);
+    const float *dom = c->in_patches[p].domain;
+    double s = local(dom, 0, u), t = local(dom, 1, v);
+    double b[SW_BEZIER_MAX_ORDER], d[SW_BEZIER_MAX_ORDER];
     contract_v(&c->patches[p], t, q, 4 * SW_BEZIER_MAX_ORDER);
-    finish(&c->patches[p], q, 4 * SW_BEZIER_MAX_ORDER, s, t, pos, normal);
+    basis(c->patches[p].degree_u, s, b, d);
+    finish(&c->patches[p], q, 4 * SW_BEZIER_MAX_ORDER, b, d, s, t, pos, normal);
 }
 
 sw_status sw_tt_eval_init(tt_ctx *c)
@@ -120,6 +126,17 @@ sw_status sw_tt_eval_init(tt_ctx *c)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "evaluation cache");
     memset(c->line_stamp, 0, sizeof(uint32_t) * slots);
+    /* The u basis per grid column of the box, when it fits the budget. */
+    size_t cols = c->grid.c1 - c->grid.c0 + 1, per = 2 * (size_t)(c->max_n + 1) + 1;
+    c->col_basis = NULL;
+    if (cols * per * sizeof(double) <= SW_TT_BASIS_BYTES) {
+        c->col_basis = sw_arena_alloc(c->arena, sizeof(double) * cols * per, 8);
+        if (!c->col_basis)
+            return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
+                                "evaluation cache");
+        for (size_t i = 0; i < cols; i++)
+            c->col_basis[i * per] = -1; /* no degree yet */
+    }
     return SW_OK;
 }
 
@@ -143,5 +160,19 @@ void sw_tt_eval_grid(tt_ctx *c, uint32_t p, uint32_t col, uint32_t line, sw_vec3
         contract_v(&c->patches[p], t, q, stride);
         c->line_stamp[slot] = line + 1;
     }
-    finish(&c->patches[p], q, stride, local(d, 0, u), t, pos, normal);
+    int n = c->patches[p].degree_u;
+    double s = local(d, 0, u), bb[SW_BEZIER_MAX_ORDER], dd[SW_BEZIER_MAX_ORDER];
+    const double *b = bb, *db = dd;
+    if (c->col_basis) {
+        size_t per = 2 * (size_t)(c->max_n + 1) + 1;
+        double *e = c->col_basis + (col - g->c0) * per;
+        if (e[0] != n) {
+            basis(n, s, e + 1, e + 2 + c->max_n);
+            e[0] = n;
+        }
+        b = e + 1, db = e + 2 + c->max_n;
+    } else {
+        basis(n, s, bb, dd);
+    }
+    finish(&c->patches[p], q, stride, b, db, s, t, pos, normal);
 }

@@ -81,6 +81,7 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
      * loop point an item of the walk (56 bytes), a ring vertex and its ring
      * end (36), chain tables (21) and the ear clipping's map, links and
      * triangles (24); rounded up. */
+    bytes += SW_TT_BASIS_BYTES;
     size_t cell = 4 * SW_TT_MAX_SPLIT + 3 * n + 8;
     bytes += cell * 160;
     return bytes + 64 * 64; /* alignment of every allocation */

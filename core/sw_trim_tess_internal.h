@@ -15,6 +15,7 @@ enum {
     SW_TT_MAX_SPLIT = 8,         /* crossed cells split at most 8 x 8 (border_fraction, crowding) */
     SW_TT_MAX_INSERT = 4096,     /* grid lines added for the loops, per axis */
     SW_TT_REFINE_ROUNDS = 24,
+    SW_TT_BASIS_BYTES = 1 << 20, /* the column basis cache, at most */
     SW_TT_DEFAULT_DEPTH = 24,
     SW_TT_MAX_DEPTH = 40,
 };
@@ -68,6 +69,7 @@ typedef struct tt_ctx {
      * contracted in v at the line (core/sw_trim_eval.c) */
     double *line_q;
     uint32_t *line_stamp;
+    double *col_basis;       /* per box column: degree, then B_i(s) and B_i'(s), or NULL */
     /* output */
     const sw_trim_tess_buffers *out;
     double *key_uv;
