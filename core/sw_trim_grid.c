@@ -9,6 +9,7 @@
  * within error of the surface (Taylor with integral remainder; barycentric
  * variance <= h^2 / 4). Whole grid lines, never a local split, so no cell
  * has a T-vertex. Only sub-patches meeting the loops' box are bounded. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -109,30 +110,122 @@ static sw_status build_knots(tt_ctx *c)
     return SW_OK;
 }
 
+/* sw_bezier_second_deriv_bounds for a polynomial patch (w = 1: the quotient
+ * rule's terms vanish), the same bound with one square root per derivative
+ * instead of one per difference: the largest second differences of the
+ * control points translated to the hull's centre, times n (n - 1), n m,
+ * m (m - 1), with the same rounding margin. Checked against it in
+ * tests/test_trim_tess.c. */
+static void poly_bounds(const double *ctrl, int n, int m, double *out)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    size_t row = 4 * (size_t)(n + 1);
+    for (int j = 0; j <= m; j++)
+        for (int i = 0; i <= n; i++)
+            for (int k = 0; k < 3; k++) {
+                double x = ctrl[(size_t)j * row + 4 * (size_t)i + (size_t)k];
+                lo[k] = fmin(lo[k], x), hi[k] = fmax(hi[k], x);
+            }
+    double c[3] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
+    double r2 = 0, uu = 0, uv = 0, vv = 0;
+    for (int j = 0; j <= m; j++) {
+        for (int i = 0; i <= n; i++) {
+            const double *p = ctrl + (size_t)j * row + 4 * (size_t)i;
+            double du2 = 0, dv2 = 0, duv = 0, pr = 0;
+            for (int k = 0; k < 3; k++) {
+                double x = p[k] - c[k];
+                pr += x * x;
+                if (i + 2 <= n) {
+                    double d = (p[8 + k] - c[k]) - 2 * (p[4 + k] - c[k]) + x;
+                    du2 += d * d;
+                }
+                if (j + 2 <= m) {
+                    double d = (p[2 * row + k] - c[k]) - 2 * (p[row + k] - c[k]) + x;
+                    dv2 += d * d;
+                }
+                if (i < n && j < m) {
+                    double d = ((p[row + 4 + k] - c[k]) - (p[row + k] - c[k])) -
+                               ((p[4 + k] - c[k]) - x);
+                    duv += d * d;
+                }
+            }
+            r2 = fmax(r2, pr), uu = fmax(uu, du2), vv = fmax(vv, dv2), uv = fmax(uv, duv);
+        }
+    }
+    double fn = n, fm = m, radius = sqrt(r2);
+    double slack = 64 * DBL_EPSILON * radius * (n + m) * (n + m);
+    out[0] = sqrt(uu) * fn * (fn - 1) * (1 + 1e-12) + (n > 1 ? slack : 0);
+    out[1] = sqrt(uv) * fn * fm * (1 + 1e-12) + slack;
+    out[2] = sqrt(vv) * fm * (fm - 1) * (1 + 1e-12) + (m > 1 ? slack : 0);
+}
+
+static sw_status patch_bounds(tt_ctx *c, const sw_bezier_patch *p, double *out)
+{
+    if (!p->rational) {
+        poly_bounds(p->ctrl, p->degree_u, p->degree_v, out);
+        return SW_OK;
+    }
+    sw_deriv_bounds b;
+    sw_status s = sw_bezier_second_deriv_bounds(p, &b, c->err);
+    out[0] = b.uu, out[1] = b.uv, out[2] = b.vv;
+    return s;
+}
+
 /* Bounds of the SW_TT_SUB^2 sub-patches of patch p, in the sub-patch's own
  * [0,1]^2 parameters. */
+/* A polynomial patch split at the middle of axis (0: u) by de Casteljau
+ * (exact up to rounding): lo and hi, the same layout. */
+static void split_half(const double *ctrl, int n, int m, int axis, double *lo, double *hi)
+{
+    size_t row = 4 * (size_t)(n + 1);
+    int deg = axis ? m : n, lines = axis ? n + 1 : m + 1;
+    size_t step = axis ? row : 4, across = axis ? 4 : row;
+    for (int l = 0; l < lines; l++) {
+        for (int k = 0; k < 4; k++) {
+            double t[SW_BEZIER_MAX_ORDER];
+            size_t at = (size_t)l * across + (size_t)k;
+            for (int i = 0; i <= deg; i++)
+                t[i] = ctrl[at + (size_t)i * step];
+            for (int r = 0; r <= deg; r++) {
+                lo[at + (size_t)r * step] = t[0];
+                hi[at + (size_t)(deg - r) * step] = t[deg - r];
+                for (int i = 0; i < deg - r; i++)
+                    t[i] = 0.5 * (t[i] + t[i + 1]);
+            }
+        }
+    }
+}
+
+/* Bounds of patch p and of its SW_TT_SUB^2 sub-patches (in the sub-patch's
+ * own [0,1]^2 parameters); tmp holds three patches. */
 static sw_status bound_patch(tt_ctx *c, uint32_t p, double *tmp)
 {
     tt_grid *g = &c->grid;
     if (g->bounded[p])
         return SW_OK;
     const sw_bezier_patch *src = &c->patches[p];
-    sw_deriv_bounds w;
-    sw_status st = sw_bezier_second_deriv_bounds(src, &w, c->err);
+    sw_status st = patch_bounds(c, src, g->whole + 3 * (size_t)p);
     if (st != SW_OK)
         return st;
-    g->whole[3 * p] = w.uu, g->whole[3 * p + 1] = w.uv, g->whole[3 * p + 2] = w.vv;
-    for (int sv = 0; sv < SW_TT_SUB; sv++) {
-        for (int su = 0; su < SW_TT_SUB; su++) {
-            sw_bezier_subpatch(src, (double)su / SW_TT_SUB, (double)(su + 1) / SW_TT_SUB,
-                               (double)sv / SW_TT_SUB, (double)(sv + 1) / SW_TT_SUB, tmp);
-            sw_bezier_patch sub = {src->degree_u, src->degree_v, src->rational, tmp};
-            sw_deriv_bounds b;
-            sw_status s = sw_bezier_second_deriv_bounds(&sub, &b, c->err);
-            if (s != SW_OK)
-                return s;
+    size_t size = sw_tt_ctrl_doubles(src->degree_u, src->degree_v);
+    double *half = tmp + size, *sub_ctrl = tmp + 2 * size;
+    for (int su = 0; su < SW_TT_SUB; su++) {
+        if (!src->rational && SW_TT_SUB == 2)
+            split_half(src->ctrl, src->degree_u, src->degree_v, 0, su ? tmp : half, su ? half : tmp);
+        for (int sv = 0; sv < SW_TT_SUB; sv++) {
+            if (!src->rational && SW_TT_SUB == 2) {
+                if (sv == 0)
+                    split_half(half, src->degree_u, src->degree_v, 1, sub_ctrl, tmp);
+                else
+                    memcpy(sub_ctrl, tmp, sizeof(double) * size);
+            } else {
+                sw_bezier_subpatch(src, (double)su / SW_TT_SUB, (double)(su + 1) / SW_TT_SUB,
+                                   (double)sv / SW_TT_SUB, (double)(sv + 1) / SW_TT_SUB, sub_ctrl);
+            }
+            sw_bezier_patch sub = {src->degree_u, src->degree_v, src->rational, sub_ctrl};
             double *o = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB + sv * SW_TT_SUB + su);
-            o[0] = b.uu, o[1] = b.uv, o[2] = b.vv;
+            if ((st = patch_bounds(c, &sub, o)) != SW_OK)
+                return st;
         }
     }
     g->bounded[p] = 1;
@@ -210,7 +303,7 @@ static sw_status choose_counts(tt_ctx *c, double *cu, double *cv)
     tt_grid *g = &c->grid;
     uint32_t nkc = g->nku - 1, nkr = g->nkv - 1;
     double cap = fmin(ldexp(1.0, (int)c->max_depth), (double)c->max_vertices);
-    double *tmp = sw_arena_alloc(c->arena, sizeof(double) * sw_tt_ctrl_doubles(c->max_n, c->max_m), 8);
+    double *tmp = sw_arena_alloc(c->arena, 3 * sizeof(double) * sw_tt_ctrl_doubles(c->max_n, c->max_m), 8);
     if (!tmp)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a patch");
     for (uint32_t i = 0; i < nkc * SW_TT_SUB; i++)

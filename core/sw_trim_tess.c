@@ -59,7 +59,7 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     size_t ctrl = sw_tt_ctrl_doubles((int)d, (int)d) * sizeof(double) + 8;
     size_t v = max_vertices_of(opt, 0), n = point_count, np = patch_count;
     /* patches, loops (sw_trim_loops.c) */
-    size_t bytes = np * (ctrl + sizeof(sw_bezier_patch) + 8) + ctrl;
+    size_t bytes = np * (ctrl + sizeof(sw_bezier_patch) + 8) + 3 * ctrl;
     bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t) + 2 * sizeof(double)) +
              (n / 3 + 1) * sizeof(sw_tt_loop) + 64;
     /* knots, patch table, sub-patch bounds and counts (sw_trim_grid.c) */
