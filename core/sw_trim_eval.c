@@ -82,9 +82,17 @@ static void finish(const sw_bezier_patch *p, const double *q, size_t stride, con
         for (int k = 0; k < 4; k++)
             x[k] += b[i] * a[k], xu[k] += d[i] * a[k], xv[k] += b[i] * e[k];
     }
-    double iw = 1 / x[3], f[3] = {x[0] * iw, x[1] * iw, x[2] * iw}, fu[3], fv[3];
-    for (int k = 0; k < 3; k++)
-        fu[k] = (xu[k] - f[k] * xu[3]) * iw, fv[k] = (xv[k] - f[k] * xv[3]) * iw;
+    double f[3], fu[3], fv[3];
+    if (!p->rational) { /* w = 1: no quotient */
+        for (int k = 0; k < 3; k++)
+            f[k] = x[k], fu[k] = xu[k], fv[k] = xv[k];
+    } else {
+        double iw = 1 / x[3];
+        for (int k = 0; k < 3; k++) {
+            f[k] = x[k] * iw;
+            fu[k] = (xu[k] - f[k] * xu[3]) * iw, fv[k] = (xv[k] - f[k] * xv[3]) * iw;
+        }
+    }
     *pos = sw_v3(f[0], f[1], f[2]);
     double cx = fu[1] * fv[2] - fu[2] * fv[1], cy = fu[2] * fv[0] - fu[0] * fv[2];
     double cz = fu[0] * fv[1] - fu[1] * fv[0];

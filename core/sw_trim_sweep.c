@@ -21,6 +21,7 @@ typedef struct sweep {
     uint32_t nx;
     uint32_t *segs;          /* a (sub)cell's segments */
     uint8_t *group_parts;    /* per pair starting a cell's run: the cell's parts */
+    int any_split[3];        /* per row slot: some cell split */
 } sweep;
 
 /* Parts of cell (col, row) along u (axis 0) or v: 1 unless crossed and
@@ -92,9 +93,12 @@ static void mark_splits(sweep *w, uint32_t row)
         return;
     uint8_t *s = w->split[row % 3];
     memset(s, 0, c->grid.ncol);
+    w->any_split[row % 3] = 0;
     for (uint32_t a = c->row_first[row]; a < c->row_first[row + 1]; a++)
-        if (a == c->row_first[row] || c->pairs[a - 1].col != c->pairs[a].col)
+        if (a == c->row_first[row] || c->pairs[a - 1].col != c->pairs[a].col) {
             s[c->pairs[a].col] = w->group_parts[a];
+            w->any_split[row % 3] |= w->group_parts[a] != 0;
+        }
 }
 
 /* Even-odd count of the row's segments crossing the line v right of u. */
@@ -267,6 +271,9 @@ static sw_status emit_inside(sweep *w, uint32_t col, uint32_t row)
     if (p == SW_TT_NONE)
         return SW_OK;
     c->res->leaf_count++;
+    if (!w->any_split[row % 3] && !w->any_split[(row + 1) % 3] &&
+        (row == 0 || !w->any_split[(row + 2) % 3]))
+        return emit_quad(c, p, col, row);
     if ((row == 0 || parts_of(w, col, row - 1, 0) == 1) && parts_of(w, col, row + 1, 0) == 1 &&
         (col == 0 || parts_of(w, col - 1, row, 1) == 1) && parts_of(w, col + 1, row, 1) == 1)
         return emit_quad(c, p, col, row);
