@@ -1,6 +1,7 @@
 /* The trimmed tessellator's conformal tensor grid (core/sw_trim_tess.c):
  * columns are the patches' knot intervals in u, rows in v, each split into
- * SW_TT_SUB sub-patch intervals and those into uniform grid intervals. The
+ * sub-patch intervals (2, or 4 on rational surfaces, whose bounds tighten
+ * slowly) and those into uniform grid intervals. The
  * counts come from the second-derivative bounds of every sub-patch
  * (sw_bezier_second_deriv_bounds on the exact de Casteljau sub-patch): a
  * column takes the largest count any sub-patch in it needs, a row likewise,
@@ -14,6 +15,8 @@
 #include <string.h>
 
 #include "sw_trim_tess_internal.h"
+
+#define SUB ((int)g->sub) /* sub-patch intervals per knot interval, per axis */
 
 static void sift_down(double *a, uint32_t i, uint32_t n)
 {
@@ -83,6 +86,10 @@ static sw_status build_knots(tt_ctx *c)
         g->ku[2 * i] = d[0], g->ku[2 * i + 1] = d[1], g->kv[2 * i] = d[2], g->kv[2 * i + 1] = d[3];
     }
     g->nku = sort_unique(g->ku, 2 * n), g->nkv = sort_unique(g->kv, 2 * n);
+    g->sub = 2;
+    for (uint32_t i = 0; i < n; i++)
+        if (c->in_patches[i].patch.rational)
+            g->sub = SW_TT_MAX_SUB;
     uint64_t cells = (uint64_t)(g->nku - 1) * (g->nkv - 1);
     if (cells > 4 * (uint64_t)n + 16)
         return sw_error_set(c->err, SW_ERR_ARG, "trim tess: %u patches on %u x %u knot "
@@ -90,7 +97,7 @@ static sw_status build_knots(tt_ctx *c)
                             (unsigned)g->nku - 1, (unsigned)g->nkv - 1);
     g->table = sw_arena_alloc(c->arena, sizeof(uint32_t) * (size_t)cells, 4);
     g->bounded = sw_arena_alloc(c->arena, n, 1);
-    g->bounds = sw_arena_alloc(c->arena, sizeof(double) * 3 * SW_TT_SUB * SW_TT_SUB * n, 8);
+    g->bounds = sw_arena_alloc(c->arena, sizeof(double) * 3 * SUB * SUB * n, 8);
     g->whole = sw_arena_alloc(c->arena, sizeof(double) * 3 * n, 8);
     if (!g->table || !g->bounded || !g->bounds || !g->whole)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for knots");
@@ -171,7 +178,7 @@ static sw_status patch_bounds(tt_ctx *c, const sw_bezier_patch *p, double *out)
     return s;
 }
 
-/* Bounds of the SW_TT_SUB^2 sub-patches of patch p, in the sub-patch's own
+/* Bounds of the sub^2 sub-patches of patch p, in the sub-patch's own
  * [0,1]^2 parameters. */
 /* A polynomial patch split at the middle of axis (0: u) by de Casteljau
  * (exact up to rounding): lo and hi, the same layout. */
@@ -196,7 +203,7 @@ static void split_half(const double *ctrl, int n, int m, int axis, double *lo, d
     }
 }
 
-/* Bounds of patch p and of its SW_TT_SUB^2 sub-patches (in the sub-patch's
+/* Bounds of patch p and of its sub^2 sub-patches (in the sub-patch's
  * own [0,1]^2 parameters); tmp holds three patches. */
 static sw_status bound_patch(tt_ctx *c, uint32_t p, double *tmp)
 {
@@ -209,21 +216,21 @@ static sw_status bound_patch(tt_ctx *c, uint32_t p, double *tmp)
         return st;
     size_t size = sw_tt_ctrl_doubles(src->degree_u, src->degree_v);
     double *half = tmp + size, *sub_ctrl = tmp + 2 * size;
-    for (int su = 0; su < SW_TT_SUB; su++) {
-        if (!src->rational && SW_TT_SUB == 2)
+    for (int su = 0; su < SUB; su++) {
+        if (!src->rational && SUB == 2)
             split_half(src->ctrl, src->degree_u, src->degree_v, 0, su ? tmp : half, su ? half : tmp);
-        for (int sv = 0; sv < SW_TT_SUB; sv++) {
-            if (!src->rational && SW_TT_SUB == 2) {
+        for (int sv = 0; sv < SUB; sv++) {
+            if (!src->rational && SUB == 2) {
                 if (sv == 0)
                     split_half(half, src->degree_u, src->degree_v, 1, sub_ctrl, tmp);
                 else
                     memcpy(sub_ctrl, tmp, sizeof(double) * size);
             } else {
-                sw_bezier_subpatch(src, (double)su / SW_TT_SUB, (double)(su + 1) / SW_TT_SUB,
-                                   (double)sv / SW_TT_SUB, (double)(sv + 1) / SW_TT_SUB, sub_ctrl);
+                sw_bezier_subpatch(src, (double)su / SUB, (double)(su + 1) / SUB,
+                                   (double)sv / SUB, (double)(sv + 1) / SUB, sub_ctrl);
             }
             sw_bezier_patch sub = {src->degree_u, src->degree_v, src->rational, sub_ctrl};
-            double *o = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB + sv * SW_TT_SUB + su);
+            double *o = g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su);
             if ((st = patch_bounds(c, &sub, o)) != SW_OK)
                 return st;
         }
@@ -292,7 +299,7 @@ static void solve_counts(const double *m, double e, double cap, double *nu, doub
 
 static int meets_box(const tt_grid *g, uint32_t kc, uint32_t kr, int su, int sv)
 {
-    double w = (g->ku[kc + 1] - g->ku[kc]) / SW_TT_SUB, h = (g->kv[kr + 1] - g->kv[kr]) / SW_TT_SUB;
+    double w = (g->ku[kc + 1] - g->ku[kc]) / SUB, h = (g->kv[kr + 1] - g->kv[kr]) / SUB;
     double u0 = g->ku[kc] + su * w, v0 = g->kv[kr] + sv * h;
     return u0 <= g->box[1] && u0 + w >= g->box[0] && v0 <= g->box[3] && v0 + h >= g->box[2];
 }
@@ -306,9 +313,9 @@ static sw_status choose_counts(tt_ctx *c, double *cu, double *cv)
     double *tmp = sw_arena_alloc(c->arena, 3 * sizeof(double) * sw_tt_ctrl_doubles(c->max_n, c->max_m), 8);
     if (!tmp)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a patch");
-    for (uint32_t i = 0; i < nkc * SW_TT_SUB; i++)
+    for (uint32_t i = 0; i < nkc * SUB; i++)
         cu[i] = 1;
-    for (uint32_t i = 0; i < nkr * SW_TT_SUB; i++)
+    for (uint32_t i = 0; i < nkr * SUB; i++)
         cv[i] = 1;
     for (uint32_t kr = 0; kr < nkr; kr++) {
         for (uint32_t kc = 0; kc < nkc; kc++) {
@@ -319,18 +326,18 @@ static sw_status choose_counts(tt_ctx *c, double *cu, double *cv)
             sw_status s = bound_patch(c, p, tmp);
             if (s != SW_OK)
                 return s;
-            for (int sv = 0; sv < SW_TT_SUB; sv++) {
-                for (int su = 0; su < SW_TT_SUB; su++) {
+            for (int sv = 0; sv < SUB; sv++) {
+                for (int su = 0; su < SUB; su++) {
                     if (!meets_box(g, kc, kr, su, sv))
                         continue;
-                    const double *m = g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB +
-                                                       sv * SW_TT_SUB + su);
+                    const double *m = g->bounds + 3 * ((size_t)p * SUB * SUB +
+                                                       sv * SUB + su);
                     double nu, nv;
                     int capped;
                     solve_counts(m, c->error, cap, &nu, &nv, &capped);
                     c->res->capped_count += (uint32_t)capped;
-                    cu[kc * SW_TT_SUB + su] = fmax(cu[kc * SW_TT_SUB + su], nu);
-                    cv[kr * SW_TT_SUB + sv] = fmax(cv[kr * SW_TT_SUB + sv], nv);
+                    cu[kc * SUB + su] = fmax(cu[kc * SUB + su], nu);
+                    cv[kr * SUB + sv] = fmax(cv[kr * SUB + sv], nv);
                 }
             }
         }
@@ -343,8 +350,9 @@ static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const do
                            double **lines, uint32_t **kidx, uint8_t **sidx, uint32_t *n,
                            uint32_t *cap)
 {
+    const tt_grid *g = &c->grid;
     double total = 0;
-    for (uint32_t i = 0; i < (nk - 1) * SW_TT_SUB; i++)
+    for (uint32_t i = 0; i < (nk - 1) * SUB; i++)
         total += count[i];
     if (total > (double)c->max_vertices + 4.0 * c->patch_count)
         return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: %.0f grid lines at error %g: "
@@ -358,11 +366,11 @@ static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const do
     uint32_t m = 0;
     for (uint32_t k = 0; k + 1 < nk; k++) {
         double w = knots[k + 1] - knots[k];
-        int merged = count[k * SW_TT_SUB + 1] == 0;
-        for (int s = 0; s < SW_TT_SUB; s++) {
-            uint32_t cnt = (uint32_t)count[k * SW_TT_SUB + (uint32_t)s];
+        int merged = count[k * SUB + 1] == 0;
+        for (int s = 0; s < SUB; s++) {
+            uint32_t cnt = (uint32_t)count[k * SUB + (uint32_t)s];
             for (uint32_t i = 0; i < cnt; i++) {
-                double x = merged ? knots[k] : knots[k] + w * ((s + (double)i / cnt) / SW_TT_SUB);
+                double x = merged ? knots[k] : knots[k] + w * ((s + (double)i / cnt) / SUB);
                 if (merged) {
                     (*lines)[m] = x, (*kidx)[m] = k, (*sidx)[m] = SW_TT_WHOLE, m++;
                     continue;
@@ -374,7 +382,7 @@ static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const do
             }
         }
     }
-    (*lines)[m] = knots[nk - 1], (*kidx)[m] = nk - 2, (*sidx)[m] = SW_TT_SUB - 1;
+    (*lines)[m] = knots[nk - 1], (*kidx)[m] = nk - 2, (*sidx)[m] = SUB - 1;
     *n = m;
     return SW_OK;
 }
@@ -386,21 +394,22 @@ static double bound_in(const tt_grid *g, uint32_t p, uint32_t su, uint32_t sv, d
 {
     if (su == SW_TT_WHOLE || sv == SW_TT_WHOLE)
         return cell_error(g->whole + 3 * (size_t)p, hu, hv);
-    return cell_error(g->bounds + 3 * ((size_t)p * SW_TT_SUB * SW_TT_SUB + sv * SW_TT_SUB + su),
-                      hu * SW_TT_SUB, hv * SW_TT_SUB);
+    return cell_error(g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su),
+                      hu * SUB, hv * SUB);
 }
 
 /* Interval s of knot interval k with counts cnt: its sub-patch index
  * (SW_TT_WHOLE when merged) and its grid intervals' size in patch units;
  * 0 when s is merged into s = 0. */
-static double interval_size(const double *cnt, uint32_t k, uint32_t s, uint32_t *sub)
+static double interval_size(const tt_grid *g, const double *cnt, uint32_t k, uint32_t s,
+                            uint32_t *sub)
 {
-    const double *n = cnt + (size_t)k * SW_TT_SUB;
+    const double *n = cnt + (size_t)k * SUB;
     int merged = n[1] == 0;
     *sub = merged ? SW_TT_WHOLE : s;
     if (merged)
         return s == 0 ? 1.0 : 0.0;
-    return 1.0 / (SW_TT_SUB * n[s]);
+    return 1.0 / (SUB * n[s]);
 }
 
 /* Largest bound over the cells of the bounded patches meeting the box (of
@@ -417,10 +426,11 @@ static int grid_bound(tt_ctx *c, const double *cu, const double *cv, double e, i
             uint32_t p = sw_tt_knot_patch(c, kc, kr);
             if (p == SW_TT_NONE || !g->bounded[p])
                 continue;
-            for (uint32_t sv = 0; sv < SW_TT_SUB; sv++)
-                for (uint32_t su = 0; su < SW_TT_SUB; su++) {
+            for (uint32_t sv = 0; sv < g->sub; sv++)
+                for (uint32_t su = 0; su < g->sub; su++) {
                     uint32_t bu, bv;
-                    double hu = interval_size(cu, kc, su, &bu), hv = interval_size(cv, kr, sv, &bv);
+                    double hu = interval_size(g, cu, kc, su, &bu);
+                    double hv = interval_size(g, cv, kr, sv, &bv);
                     if (hu == 0 || hv == 0 || !meets_box(g, kc, kr, (int)su, (int)sv))
                         continue;
                     double b = bound_in(g, p, bu, bv, hu, hv);
@@ -444,16 +454,16 @@ static void merge_intervals(tt_ctx *c, double *cu, double *cv)
         double *cnt = axis ? cv : cu;
         uint32_t nk = (axis ? g->nkv : g->nku) - 1;
         for (uint32_t k = 0; k < nk; k++) {
-            double *n = cnt + (size_t)k * SW_TT_SUB;
+            double *n = cnt + (size_t)k * SUB;
             int ones = 1;
-            for (int s = 0; s < SW_TT_SUB; s++)
+            for (int s = 0; s < SUB; s++)
                 ones &= n[s] == 1;
             if (!ones)
                 continue;
-            for (int s = 1; s < SW_TT_SUB; s++)
+            for (int s = 1; s < SUB; s++)
                 n[s] = 0;
             if (!grid_bound(c, cu, cv, c->error, 1, axis, k))
-                for (int s = 1; s < SW_TT_SUB; s++)
+                for (int s = 1; s < SUB; s++)
                     n[s] = 1;
         }
     }
@@ -511,8 +521,8 @@ sw_status sw_tt_build_grid(tt_ctx *c)
     for (uint32_t k = 0; k < c->trims.loop_count; k++)
         for (int i = 0; i < 4; i++)
             g->box[i] = i % 2 ? fmax(g->box[i], c->loops[k].box[i]) : fmin(g->box[i], c->loops[k].box[i]);
-    double *cu = sw_arena_alloc(c->arena, sizeof(double) * (g->nku - 1) * SW_TT_SUB, 8);
-    double *cv = sw_arena_alloc(c->arena, sizeof(double) * (g->nkv - 1) * SW_TT_SUB, 8);
+    double *cu = sw_arena_alloc(c->arena, sizeof(double) * (g->nku - 1) * SUB, 8);
+    double *cv = sw_arena_alloc(c->arena, sizeof(double) * (g->nkv - 1) * SUB, 8);
     if (!cu || !cv)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the grid");
     s = choose_counts(c, cu, cv);

@@ -63,8 +63,8 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t) + 2 * sizeof(double)) +
              (n / 3 + 1) * sizeof(sw_tt_loop) + 64;
     /* knots, patch table, sub-patch bounds and counts (sw_trim_grid.c) */
-    bytes += np * (4 * sizeof(double) + 1 + 3 * SW_TT_SUB * SW_TT_SUB * sizeof(double) +
-                   4 * SW_TT_SUB * sizeof(double)) + (4 * np + 16) * sizeof(uint32_t);
+    bytes += np * (4 * sizeof(double) + 1 + 3 * SW_TT_MAX_SUB * SW_TT_MAX_SUB * sizeof(double) +
+                   4 * SW_TT_MAX_SUB * sizeof(double)) + (4 * np + 16) * sizeof(uint32_t);
     /* grid lines, each axis at most v + 4 np + SW_TT_MAX_INSERT (lay_lines) */
     size_t lines = v + 4 * np + SW_TT_MAX_INSERT + 2;
     bytes += 2 * lines * (sizeof(double) + sizeof(uint32_t) + 1);

@@ -10,7 +10,7 @@
 
 enum {
     SW_TT_MAX_CELL_POINTS = 32,  /* loop points per part of a crossed cell (split up to 8 x 8, then lines) */
-    SW_TT_SUB = 2,               /* sub-patch intervals per knot interval, per axis */
+    SW_TT_MAX_SUB = 4,           /* sub-patch intervals per knot interval, per axis (tt_grid.sub) */
     SW_TT_WHOLE = 0xFF,          /* a knot interval left whole: the patch's own bounds */
     SW_TT_MAX_SPLIT = 8,         /* crossed cells split at most 8 x 8 (border_fraction, crowding) */
     SW_TT_MAX_INSERT = 4096,     /* grid lines added for the loops, per axis */
@@ -27,11 +27,11 @@ typedef struct tt_pair {
 } tt_pair;
 
 /* The conformal tensor grid (core/sw_trim_grid.c). Knot lines are the
- * patches' domain edges; each knot interval splits into SW_TT_SUB sub-patch
+ * patches' domain edges; each knot interval splits into `sub` sub-patch
  * intervals, each of those into a uniform count of grid intervals. */
 typedef struct tt_grid {
     double *ku, *kv;            /* knot lines, nku and nkv of them */
-    uint32_t nku, nkv;
+    uint32_t nku, nkv, sub;
     uint32_t *table;            /* patch of knot cell (kc, kr) at kr * (nku - 1) + kc, or NONE */
     double *bounds;             /* per patch and sub-patch: M_uu, M_uv, M_vv of the sub-patch */
     double *whole;              /* per patch: its own M_uu, M_uv, M_vv */
