@@ -38,8 +38,9 @@ static sw_status bucket_segment(tt_ctx *c, uint32_t s)
 {
     const tt_grid *g = &c->grid;
     const sw_tt_point *a = &c->pts[s], *b = &c->pts[a->next];
-    double umin = fmin(a->u, b->u), umax = fmax(a->u, b->u);
-    double vmin = fmin(a->v, b->v), vmax = fmax(a->v, b->v), du = b->u - a->u, dv = b->v - a->v;
+    double umin = a->u < b->u ? a->u : b->u, umax = a->u < b->u ? b->u : a->u;
+    double vmin = a->v < b->v ? a->v : b->v, vmax = a->v < b->v ? b->v : a->v;
+    double du = b->u - a->u, dv = b->v - a->v;
     double slack = 1e-9 * (vmax - vmin) + 1e-12 * (g->gv[g->nrow] - g->gv[0]);
     uint32_t i0, i1;
     cell_range(g->gu, g->ncol, umin, umax, &i0, &i1);

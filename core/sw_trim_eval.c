@@ -110,8 +110,8 @@ static void finish(const sw_bezier_patch *p, const double *q, size_t stride, con
 
 static double local(const float *d, int axis, double x)
 {
-    double lo = d[2 * axis], hi = d[2 * axis + 1];
-    return fmin(fmax((x - lo) / (hi - lo), 0), 1);
+    double lo = d[2 * axis], hi = d[2 * axis + 1], s = (x - lo) / (hi - lo);
+    return s > 0 ? (s < 1 ? s : 1) : 0;
 }
 
 void sw_tt_eval_at(tt_ctx *c, uint32_t p, double u, double v, sw_vec3 *pos, sw_vec3 *normal)

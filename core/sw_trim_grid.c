@@ -131,7 +131,7 @@ static void poly_bounds(const double *ctrl, int n, int m, double *out)
         for (int i = 0; i <= n; i++)
             for (int k = 0; k < 3; k++) {
                 double x = ctrl[(size_t)j * row + 4 * (size_t)i + (size_t)k];
-                lo[k] = fmin(lo[k], x), hi[k] = fmax(hi[k], x);
+                lo[k] = x < lo[k] ? x : lo[k], hi[k] = x > hi[k] ? x : hi[k];
             }
     double c[3] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
     double r2 = 0, uu = 0, uv = 0, vv = 0;
@@ -156,7 +156,9 @@ static void poly_bounds(const double *ctrl, int n, int m, double *out)
                     duv += d * d;
                 }
             }
-            r2 = fmax(r2, pr), uu = fmax(uu, du2), vv = fmax(vv, dv2), uv = fmax(uv, duv);
+            /* plain comparisons: fmax is a libm call here, and all are finite */
+            r2 = pr > r2 ? pr : r2, uu = du2 > uu ? du2 : uu;
+            vv = dv2 > vv ? dv2 : vv, uv = duv > uv ? duv : uv;
         }
     }
     double fn = n, fm = m, radius = sqrt(r2);
