@@ -13,14 +13,28 @@
 
 #include "sw_trim_tess_internal.h"
 
+/* sw_tt_interval, trying *hint and its neighbours first: consecutive loop
+ * points mostly lie in one cell or the next. */
+static uint32_t locate(const double *lines, uint32_t n, double x, uint32_t *hint)
+{
+    uint32_t h = *hint;
+    if (h < n && lines[h] <= x && (x < lines[h + 1] || h + 1 == n))
+        return h;
+    if (h + 1 < n && lines[h + 1] <= x && (x < lines[h + 2] || h + 2 == n))
+        return *hint = h + 1;
+    if (h > 0 && h - 1 < n && lines[h - 1] <= x && x < lines[h])
+        return *hint = h - 1;
+    return *hint = sw_tt_interval(lines, n + 1, x);
+}
+
 /* The cells whose closed interval meets [lo, hi]: first and last. */
 static void cell_range(const double *lines, uint32_t n, double lo, double hi, uint32_t *a,
-                       uint32_t *b)
+                       uint32_t *b, uint32_t *hint)
 {
-    *a = sw_tt_interval(lines, n + 1, lo);
+    *a = locate(lines, n, lo, hint);
     if (*a > 0 && lines[*a] == lo)
         (*a)--;
-    *b = sw_tt_interval(lines, n + 1, hi);
+    *b = lo == hi ? locate(lines, n, hi, hint) : sw_tt_interval(lines, n + 1, hi);
 }
 
 static sw_status add_pair(tt_ctx *c, uint32_t col, uint32_t row, uint32_t seg)
@@ -34,7 +48,7 @@ static sw_status add_pair(tt_ctx *c, uint32_t col, uint32_t row, uint32_t seg)
     return SW_OK;
 }
 
-static sw_status bucket_segment(tt_ctx *c, uint32_t s)
+static sw_status bucket_segment(tt_ctx *c, uint32_t s, uint32_t hint[2])
 {
     const tt_grid *g = &c->grid;
     const sw_tt_point *a = &c->pts[s], *b = &c->pts[a->next];
@@ -43,7 +57,7 @@ static sw_status bucket_segment(tt_ctx *c, uint32_t s)
     double du = b->u - a->u, dv = b->v - a->v;
     double slack = 1e-9 * (vmax - vmin) + 1e-12 * (g->gv[g->nrow] - g->gv[0]);
     uint32_t i0, i1;
-    cell_range(g->gu, g->ncol, umin, umax, &i0, &i1);
+    cell_range(g->gu, g->ncol, umin, umax, &i0, &i1, &hint[0]);
     for (uint32_t i = i0; i <= i1; i++) {
         double lo = vmin, hi = vmax;
         if (du != 0) {
@@ -52,7 +66,7 @@ static sw_status bucket_segment(tt_ctx *c, uint32_t s)
             lo = fmax(vmin, fmin(va, vb) - slack), hi = fmin(vmax, fmax(va, vb) + slack);
         }
         uint32_t j0, j1;
-        cell_range(g->gv, g->nrow, lo, hi, &j0, &j1);
+        cell_range(g->gv, g->nrow, lo, hi, &j0, &j1, &hint[1]);
         for (uint32_t j = j0; j <= j1; j++) {
             sw_tt_rect r = {g->gu[i], g->gu[i + 1], g->gv[j], g->gv[j + 1]};
             double t0, t1;
@@ -89,8 +103,9 @@ static void count_sort(const tt_pair *src, tt_pair *dst, uint32_t count, int by_
 static sw_status bucket_all(tt_ctx *c, tt_pair *tmp, uint32_t *col_first)
 {
     c->pair_count = 0;
+    uint32_t hint[2] = {0, 0};
     for (uint32_t s = 0; s < c->trims.point_count; s++) {
-        sw_status st = bucket_segment(c, s);
+        sw_status st = bucket_segment(c, s, hint);
         if (st != SW_OK)
             return st;
     }
