@@ -1,5 +1,5 @@
 /* Internal to the trimmed tessellator (core/sw_trim_tess.c): one cell of the
- * binary tree cut by the trimming loops (paper 004, section 6.3) and the
+ * grid (or a part of one) cut by the trimming loops (paper 004, section 6.3) and the
  * triangulation of the resulting polygons. Parameter-space geometry only; no
  * surface evaluation, no output. Scratch from the caller's arena. */
 #ifndef SW_TRIM_CELL_H

@@ -1,24 +1,18 @@
-/* Trimmed tessellation, paper 004 section 6.3, with these changes:
- * - The leaf test is a proof, not a sample: a cell stops splitting when the
- *   second-derivative bound of its own sub-patch (exact de Casteljau
- *   subdivision, sw_bezier_subpatch) gives (M_uu + 2 M_uv + M_vv) / 8 <=
- *   error; that bounds every triangle with corners in the cell (Taylor with
- *   integral remainder; the barycentric variance is at most a^2 / 4). The
- *   split still goes through the sampled point of largest distance from the
- *   bilinear approximation, as in the paper, clamped to the middle half.
- * - Cells entirely outside the loops are not refined at all.
- * - Cells the loops cross are refined further while they hold a whole hole
- *   or more than SW_TT_MAX_CELL_POINTS loop points: every crossed cell then
- *   becomes simple polygons (no holes) that ear clipping handles, and long
- *   seams do not end in fans of slivers.
- * - Degenerate cases (loops along a patch edge or the domain's border, loop
- *   points on a cell line, loops touching) are removed by a region shrink:
- *   for all topology the loop points are moved by a tiny distance into the
- *   trimmed region along their mitre (SW_TT_SHRINK_REL of the domain), so no loop
- *   runs along a cell side and the loops no longer touch; the output keeps
+/* Trimmed tessellation (paper 004 section 6.3's trimming, on a grid instead
+ * of the paper's binary trees). The steps, one file each:
+ * - sw_trim_loops.c: the loops oriented and moved a tiny distance into the
+ *   trimmed region (the region shrink, SW_TT_SHRINK_REL of the domain), so
+ *   no loop runs along a grid line and loops no longer touch; output keeps
  *   every loop point's own (u, v) and position.
- * - No T-vertices: each kept cell's border carries the corners of all kept
- *   neighbours on it (a sorted corner index), and the triangulation uses them.
+ * - sw_trim_grid.c: the conformal tensor grid from the sub-patches' proven
+ *   second-derivative bounds (every cell within error, no T-vertex).
+ * - sw_trim_bucket.c: loop segments by cell, grid lines added through holes
+ *   inside one cell and through very crowded cells.
+ * - sw_trim_sweep.c: the row sweep: inside cells as two triangles, crossed
+ *   cells clipped (sw_trim_cell.c) and ear clipped, in parts where their
+ *   bound exceeds border_error or they hold many loop points.
+ * - sw_trim_eval.c: exact evaluation, once per vertex.
+ * This file: input checks, the vertex table and output, the entry points.
  * Partial: loops are assumed not to cross each other or themselves (the
  * clipping reports SW_ERR_FORMAT where its walk notices, not always);
  * consecutive loop points with equal (u, v) are merged. */
