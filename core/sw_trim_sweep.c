@@ -284,12 +284,17 @@ static sw_status emit_inside(sweep *w, uint32_t col, uint32_t row)
     return s;
 }
 
-/* The segments of pairs [a, b) meeting the closed rectangle r. */
-static uint32_t segs_in(const sweep *w, const sw_tt_rect *r, uint32_t a, uint32_t b)
+/* The segments of pairs [a, b) meeting the closed rectangle r (all of
+ * them for the whole cell: the bucketing tested them). */
+static uint32_t segs_in(const sweep *w, const sw_tt_rect *r, uint32_t a, uint32_t b, int whole)
 {
     uint32_t n = 0;
     for (uint32_t k = a; k < b; k++) {
         uint32_t s = w->c->pairs[k].seg;
+        if (whole) {
+            w->segs[n++] = s;
+            continue;
+        }
         const sw_tt_point *p = &w->c->pts[s], *q = &w->c->pts[p->next];
         double t0, t1;
         int s0, s1;
@@ -345,7 +350,7 @@ static sw_status emit_crossed(sweep *w, uint32_t col, uint32_t row, uint32_t a, 
                             part(v0, v1, sb + 1, kv)};
             uint32_t nb = cell_border(w, col, row, ku, kv, sa, sb, border);
             size_t mark = sw_arena_mark(c->arena);
-            sw_status s = clip_cell(w, p, col, row, &r, segs_in(w, &r, a, b), border, nb);
+            sw_status s = clip_cell(w, p, col, row, &r, segs_in(w, &r, a, b, ku * kv == 1), border, nb);
             sw_arena_reset_to(c->arena, mark);
             if (s != SW_OK)
                 return s;
