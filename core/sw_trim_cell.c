@@ -435,33 +435,70 @@ static double ear_quality(const sw_tt_pv *a, const sw_tt_pv *b, const sw_tt_pv *
     return s > 0 ? orient(a, b, c) / s : 0;
 }
 
-static uint32_t pick_ear(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next,
-                         uint32_t start, int check)
+/* The quality of the ear at i, 0 when there is none (not convex, or
+ * blocked). */
+static double ear_at(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next, uint32_t i)
+{
+    double q = ear_quality(&v[prev[i]], &v[i], &v[next[i]]);
+    return q > 0 && !blocked(v, prev, next, prev[i], i, next[i]) ? q : 0;
+}
+
+/* The best cached ear from start on, or SW_TT_NONE. */
+static uint32_t best_ear(const uint32_t *next, const double *quality, uint32_t start)
+{
+    uint32_t best = SW_TT_NONE, i = start;
+    double best_q = 0;
+    do {
+        if (quality[i] > best_q)
+            best = i, best_q = quality[i];
+        i = next[i];
+    } while (i != start);
+    return best;
+}
+
+/* The largest convex corner, blocked or not (rings that cross themselves). */
+static uint32_t any_corner(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next,
+                           uint32_t start)
 {
     uint32_t best = SW_TT_NONE, i = start;
     double best_q = 0;
     do {
         double q = ear_quality(&v[prev[i]], &v[i], &v[next[i]]);
-        if (q > best_q && (!check || !blocked(v, prev, next, prev[i], i, next[i])))
+        if (q > best_q)
             best = i, best_q = q;
         i = next[i];
     } while (i != start);
     return best;
 }
 
-uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, uint32_t *tri,
-                        uint32_t *fallbacks)
+/* Ears are scored once and rescored only at the two corners a cut changes:
+ * cutting never blocks another ear (its triangle and the other vertices stay
+ * or go), so a scored ear stays valid; an ear a removed vertex unblocked is
+ * found by rescoring all when no scored ear is left. O(n^2) for most rings
+ * instead of O(n^3). */
+uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, double *quality,
+                        uint32_t *tri, uint32_t *fallbacks)
 {
     if (n < 3)
         return 0;
     uint32_t *prev = scratch, *next = scratch + n, count = 0, start = 0;
     for (uint32_t i = 0; i < n; i++)
         prev[i] = (i + n - 1) % n, next[i] = (i + 1) % n;
+    for (uint32_t i = 0; i < n; i++)
+        quality[i] = ear_at(v, prev, next, i);
     for (uint32_t left = n; left > 3; left--) {
-        uint32_t e = pick_ear(v, prev, next, start, 1);
+        uint32_t e = best_ear(next, quality, start);
+        if (e == SW_TT_NONE) {
+            uint32_t i = start;
+            do {
+                quality[i] = ear_at(v, prev, next, i);
+                i = next[i];
+            } while (i != start);
+            e = best_ear(next, quality, start);
+        }
         if (e == SW_TT_NONE) {
             (*fallbacks)++;
-            e = pick_ear(v, prev, next, start, 0);
+            e = any_corner(v, prev, next, start);
         }
         if (e == SW_TT_NONE) {
             /* Only flat corners left: what remains has no area. */
@@ -471,6 +508,8 @@ uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, uint32
         count++;
         next[prev[e]] = next[e], prev[next[e]] = prev[e];
         start = next[e];
+        quality[prev[e]] = ear_at(v, prev, next, prev[e]);
+        quality[next[e]] = ear_at(v, prev, next, next[e]);
     }
     if (orient(&v[prev[start]], &v[start], &v[next[start]]) > 0) {
         tri[3 * count] = prev[start], tri[3 * count + 1] = start, tri[3 * count + 2] = next[start];

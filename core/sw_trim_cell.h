@@ -88,10 +88,11 @@ int sw_tt_cell_rings(const sw_tt_trims *t, const sw_tt_rect *r, const uint32_t *
 /* Ear clipping of one counter-clockwise ring of n vertices into at most
  * n - 2 triangles of local indices (tri[3 k + 0..2]); returns the count.
  * An ear is a convex corner with no other ring vertex in or on it (so no
- * vertex ends up inside a triangle edge); of all ears the best-shaped is cut.
- * When no ear exists (only for rings that cross themselves) the largest
- * convex corner is cut and *fallbacks counted. Needs 2 n uint32 of scratch. */
-uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, uint32_t *tri,
-                        uint32_t *fallbacks);
+ * vertex ends up inside a triangle edge); of the ears scored the best-shaped
+ * is cut. When no ear exists (only for rings that cross themselves) the
+ * largest convex corner is cut and *fallbacks counted. Needs 2 n uint32 of
+ * scratch and n doubles of quality. */
+uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, double *quality,
+                        uint32_t *tri, uint32_t *fallbacks);
 
 #endif

@@ -171,7 +171,8 @@ static sw_status emit_ring(tt_ctx *c, uint32_t p, uint32_t col, uint32_t row,
                            const sw_tt_pv *ring, uint32_t n)
 {
     uint32_t *map = sw_arena_alloc(c->arena, sizeof(uint32_t) * 6 * (size_t)n, 4);
-    if (!map)
+    double *quality = sw_arena_alloc(c->arena, sizeof(double) * n, 8);
+    if (!map || !quality)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
     uint32_t *scratch = map + n, *tri = map + 3 * (size_t)n;
     for (uint32_t i = 0; i < n; i++) {
@@ -179,7 +180,7 @@ static sw_status emit_ring(tt_ctx *c, uint32_t p, uint32_t col, uint32_t row,
         if (s != SW_OK)
             return s;
     }
-    uint32_t count = sw_tt_ear_clip(ring, n, scratch, tri, &c->res->fallback_ears);
+    uint32_t count = sw_tt_ear_clip(ring, n, scratch, quality, tri, &c->res->fallback_ears);
     for (uint32_t t = 0; t < count; t++) {
         uint32_t a = map[tri[3 * t]], b = map[tri[3 * t + 1]], d = map[tri[3 * t + 2]];
         if (a != b && b != d && d != a) /* not collapsed onto a loop point */

@@ -73,11 +73,11 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
              4 * np * (8 * (d + 1) * sizeof(double) + sizeof(uint32_t));
     /* One cell at a time: per border point (at most 4 SW_TT_MAX_SPLIT) or
      * loop point an item of the walk (56 bytes), a ring vertex and its ring
-     * end (36), chain tables (21) and the ear clipping's map, links and
-     * triangles (24); rounded up. */
+     * end (36), chain tables (21) and the ear clipping's map, links,
+     * triangles and quality (32); rounded up. */
     bytes += SW_TT_BASIS_BYTES;
     size_t cell = 4 * SW_TT_MAX_SPLIT + 3 * n + 8;
-    bytes += cell * 160;
+    bytes += cell * 168;
     return bytes + 64 * 64; /* alignment of every allocation */
 }
 
