@@ -435,12 +435,32 @@ static double ear_quality(const sw_tt_pv *a, const sw_tt_pv *b, const sw_tt_pv *
     return s > 0 ? orient(a, b, c) / s : 0;
 }
 
+/* Does the ring turn strictly left at every vertex and wind once? Then it
+ * is strictly convex (the common crossed cell: a rectangle cut by a seam),
+ * no vertex lies in or on any ear, and it stays so as ears are cut (a flat
+ * vertex could lie on an ear's diagonal: such rings take the checks).
+ * Winding once: the edge direction, turning counter-clockwise only, passes
+ * +u at most once. */
+static int convex_ring(const sw_tt_pv *v, uint32_t n)
+{
+    uint32_t passes = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        const sw_tt_pv *a = &v[(i + n - 1) % n], *b = &v[i], *c = &v[(i + 1) % n];
+        if (!(orient(a, b, c) > 0))
+            return 0;
+        double d0 = b->v - a->v, d1 = c->v - b->v;
+        passes += d0 < 0 && d1 >= 0 && c->u - b->u > 0;
+    }
+    return passes <= 1;
+}
+
 /* The quality of the ear at i, 0 when there is none (not convex, or
  * blocked). */
-static double ear_at(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next, uint32_t i)
+static double ear_at(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next, uint32_t i,
+                     int convex)
 {
     double q = ear_quality(&v[prev[i]], &v[i], &v[next[i]]);
-    return q > 0 && !blocked(v, prev, next, prev[i], i, next[i]) ? q : 0;
+    return q > 0 && (convex || !blocked(v, prev, next, prev[i], i, next[i])) ? q : 0;
 }
 
 /* The best cached ear from start on, or SW_TT_NONE. */
@@ -484,14 +504,15 @@ uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, double
     uint32_t *prev = scratch, *next = scratch + n, count = 0, start = 0;
     for (uint32_t i = 0; i < n; i++)
         prev[i] = (i + n - 1) % n, next[i] = (i + 1) % n;
+    int convex = convex_ring(v, n);
     for (uint32_t i = 0; i < n; i++)
-        quality[i] = ear_at(v, prev, next, i);
+        quality[i] = ear_at(v, prev, next, i, convex);
     for (uint32_t left = n; left > 3; left--) {
         uint32_t e = best_ear(next, quality, start);
         if (e == SW_TT_NONE) {
             uint32_t i = start;
             do {
-                quality[i] = ear_at(v, prev, next, i);
+                quality[i] = ear_at(v, prev, next, i, convex);
                 i = next[i];
             } while (i != start);
             e = best_ear(next, quality, start);
@@ -508,8 +529,8 @@ uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, double
         count++;
         next[prev[e]] = next[e], prev[next[e]] = prev[e];
         start = next[e];
-        quality[prev[e]] = ear_at(v, prev, next, prev[e]);
-        quality[next[e]] = ear_at(v, prev, next, next[e]);
+        quality[prev[e]] = ear_at(v, prev, next, prev[e], convex);
+        quality[next[e]] = ear_at(v, prev, next, next[e], convex);
     }
     if (orient(&v[prev[start]], &v[start], &v[next[start]]) > 0) {
         tri[3 * count] = prev[start], tri[3 * count + 1] = start, tri[3 * count + 2] = next[start];
