@@ -39,6 +39,25 @@ static void basis(int n, double t, double *b, double *d)
 /* q[0][i] = sum_j B_j(t) H_ij, q[1][i] = sum_j B_j'(t) H_ij: the patch
  * contracted in v at t (H homogeneous: w x, w y, w z, w; w = 1 when the
  * patch is polynomial, the common case, without the multiplications). */
+/* The polynomial sums with the degrees as constants (inlined for the
+ * bicubic, most CAD patches: the loops unroll). */
+static inline __attribute__((always_inline)) void contract_poly(const double *ctrl, int n, int m,
+                                                               const double *b, const double *d,
+                                                               double *q0, double *q1)
+{
+    size_t row = 4 * (size_t)(n + 1);
+    for (int i = 0; i <= n; i++) {
+        double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0, w0 = 0, w1 = 0;
+        for (int j = 0; j <= m; j++) {
+            const double *c = ctrl + (size_t)j * row + 4 * (size_t)i;
+            x0 += b[j] * c[0], y0 += b[j] * c[1], z0 += b[j] * c[2], w0 += b[j];
+            x1 += d[j] * c[0], y1 += d[j] * c[1], z1 += d[j] * c[2], w1 += d[j];
+        }
+        q0[4 * i] = x0, q0[4 * i + 1] = y0, q0[4 * i + 2] = z0, q0[4 * i + 3] = w0;
+        q1[4 * i] = x1, q1[4 * i + 1] = y1, q1[4 * i + 2] = z1, q1[4 * i + 3] = w1;
+    }
+}
+
 static void contract_v(const sw_bezier_patch *p, double t, double *q, size_t stride)
 {
     double b[SW_BEZIER_MAX_ORDER], d[SW_BEZIER_MAX_ORDER];
@@ -46,25 +65,37 @@ static void contract_v(const sw_bezier_patch *p, double t, double *q, size_t str
     size_t row = 4 * (size_t)(n + 1);
     basis(m, t, b, d);
     double *q0 = q, *q1 = q + stride;
+    if (!p->rational) {
+        if (n == 3 && m == 3)
+            contract_poly(p->ctrl, 3, 3, b, d, q0, q1);
+        else
+            contract_poly(p->ctrl, n, m, b, d, q0, q1);
+        return;
+    }
     memset(q0, 0, sizeof(double) * row);
     memset(q1, 0, sizeof(double) * row);
     for (int j = 0; j <= m; j++) {
         const double *c = p->ctrl + (size_t)j * row;
         double bj = b[j], dj = d[j];
-        if (!p->rational) {
-            for (size_t i = 0; i < row; i += 4) {
-                q0[i] += bj * c[i], q0[i + 1] += bj * c[i + 1], q0[i + 2] += bj * c[i + 2];
-                q1[i] += dj * c[i], q1[i + 1] += dj * c[i + 1], q1[i + 2] += dj * c[i + 2];
-                q0[i + 3] += bj, q1[i + 3] += dj;
-            }
-            continue;
-        }
         for (size_t i = 0; i < row; i += 4) {
             double w = c[i + 3], h0 = c[i] * w, h1 = c[i + 1] * w, h2 = c[i + 2] * w;
             q0[i] += bj * h0, q0[i + 1] += bj * h1, q0[i + 2] += bj * h2, q0[i + 3] += bj * w;
             q1[i] += dj * h0, q1[i + 1] += dj * h1, q1[i + 2] += dj * h2, q1[i + 3] += dj * w;
         }
     }
+}
+
+/* x = sum_i B_i(s) q0_i, xu with B_i', xv = sum_i B_i(s) q1_i. */
+static inline __attribute__((always_inline)) void sum_u(const double *q0, const double *q1,
+                                                       const double *b, const double *d, int n,
+                                                       double *x, double *xu, double *xv)
+{
+    for (int k = 0; k < 4; k++)
+        x[k] = xu[k] = xv[k] = 0;
+    for (int i = 0; i <= n; i++)
+        for (int k = 0; k < 4; k++)
+            x[k] += b[i] * q0[4 * i + k], xu[k] += d[i] * q0[4 * i + k],
+                xv[k] += b[i] * q1[4 * i + k];
 }
 
 /* The point at s of a contracted patch. The normal is F_u x F_v
@@ -74,14 +105,11 @@ static void contract_v(const sw_bezier_patch *p, double t, double *q, size_t str
 static void finish(const sw_bezier_patch *p, const double *q, size_t stride, const double *b,
                    const double *d, double s, double t, sw_vec3 *pos, sw_vec3 *normal)
 {
-    double x[4] = {0, 0, 0, 0}, xu[4] = {0, 0, 0, 0}, xv[4] = {0, 0, 0, 0};
-    int n = p->degree_u;
-    const double *q1 = q + stride;
-    for (int i = 0; i <= n; i++) {
-        const double *a = q + 4 * i, *e = q1 + 4 * i;
-        for (int k = 0; k < 4; k++)
-            x[k] += b[i] * a[k], xu[k] += d[i] * a[k], xv[k] += b[i] * e[k];
-    }
+    double x[4], xu[4], xv[4];
+    if (p->degree_u == 3)
+        sum_u(q, q + stride, b, d, 3, x, xu, xv);
+    else
+        sum_u(q, q + stride, b, d, p->degree_u, x, xu, xv);
     double f[3], fu[3], fv[3];
     if (!p->rational) { /* w = 1: no quotient */
         for (int k = 0; k < 3; k++)
