@@ -51,7 +51,8 @@ static uint8_t parts_for(tt_ctx *c, uint32_t col, uint32_t row, uint32_t a, uint
     }
     uint32_t crowd = (inside + SW_TT_MAX_CELL_POINTS - 1) / SW_TT_MAX_CELL_POINTS;
     crowd = crowd < 1 ? 1 : crowd > SW_TT_MAX_SPLIT ? SW_TT_MAX_SPLIT : crowd;
-    if (c->border_error < c->error && sw_tt_cell_bound(c, col, row, crowd, crowd) > c->border_error) {
+    if (c->border_error < c->error &&
+        sw_tt_cell_bound(c, col, row, crowd, crowd) > c->border_error) {
         uint32_t best = SW_TT_MAX_SPLIT * SW_TT_MAX_SPLIT + 1;
         ku = kv = SW_TT_MAX_SPLIT;
         for (uint32_t i = crowd; i <= SW_TT_MAX_SPLIT; i++)
@@ -351,7 +352,8 @@ static sw_status emit_crossed(sweep *w, uint32_t col, uint32_t row, uint32_t a, 
                             part(v0, v1, sb + 1, kv)};
             uint32_t nb = cell_border(w, col, row, ku, kv, sa, sb, border);
             size_t mark = sw_arena_mark(c->arena);
-            sw_status s = clip_cell(w, p, col, row, &r, segs_in(w, &r, a, b, ku * kv == 1), border, nb);
+            uint32_t nsegs = segs_in(w, &r, a, b, ku * kv == 1);
+            sw_status s = clip_cell(w, p, col, row, &r, nsegs, border, nb);
             sw_arena_reset_to(c->arena, mark);
             if (s != SW_OK)
                 return s;
@@ -419,8 +421,8 @@ sw_status sw_tt_sweep(tt_ctx *c)
         w.split[k] = sw_arena_alloc(c->arena, g->ncol + 1, 1);
     for (int k = 0; k < 2; k++)
         c->line_ids[k] = sw_arena_alloc(c->arena, sizeof(uint32_t) * (g->ncol + 2), 4);
-    if (!w.seg_mark || !w.xs || !w.segs || !w.group_parts || !w.split[0] || !w.split[1] || !w.split[2] ||
-        !c->line_ids[0] || !c->line_ids[1])
+    if (!w.seg_mark || !w.xs || !w.segs || !w.group_parts || !w.split[0] || !w.split[1] ||
+        !w.split[2] || !c->line_ids[0] || !c->line_ids[1])
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "sweep (see sw_trim_tess_scratch_bytes)");
     memset(w.seg_mark, 0, sizeof(uint32_t) * (n + 1));

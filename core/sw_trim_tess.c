@@ -57,8 +57,9 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t) + 2 * sizeof(double)) +
              (n / 3 + 1) * sizeof(sw_tt_loop) + 64;
     /* knots, patch table, sub-patch bounds and counts (sw_trim_grid.c) */
-    bytes += np * (4 * sizeof(double) + 1 + 3 * SW_TT_MAX_SUB * SW_TT_MAX_SUB * sizeof(double) +
-                   4 * SW_TT_MAX_SUB * sizeof(double)) + (4 * np + 16) * sizeof(uint32_t);
+    size_t bounds = 3 * (SW_TT_MAX_SUB * SW_TT_MAX_SUB + 1) * sizeof(double); /* subs, whole */
+    bytes += np * (4 * sizeof(double) + 1 + bounds + 4 * SW_TT_MAX_SUB * sizeof(double)) +
+             (4 * np + 16) * sizeof(uint32_t);
     /* grid lines, each axis at most v + 4 np + SW_TT_MAX_INSERT (lay_lines) */
     size_t lines = v + 4 * np + SW_TT_MAX_INSERT + 2;
     bytes += 2 * lines * (sizeof(double) + sizeof(uint32_t) + 1);
@@ -276,7 +277,8 @@ sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32
         for (int k = 0; k < 2; k++) {
             const float *uv = c->in_loops->points[c->pts[ends[k]].src].uv;
             if ((float)pv->u == uv[0] && (float)pv->v == uv[1]) {
-                sw_tt_pv end = {c->pts[ends[k]].u, c->pts[ends[k]].v, SW_TT_SEAM, ends[k], 0, 0, 0, 0};
+                sw_tt_pv end = {c->pts[ends[k]].u, c->pts[ends[k]].v, SW_TT_SEAM, ends[k],
+                                0, 0, 0, 0};
                 return sw_tt_vertex_for(c, patch, &end, out);
             }
         }
@@ -311,14 +313,10 @@ sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32
     return SW_OK;
 }
 
-sw_status sw_tt_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
-                            uint32_t *out)
+sw_status sw_tt_new_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
+                                uint32_t *out)
 {
     uint32_t *slot = &c->line_ids[line & 1][col];
-    if (*slot != SW_TT_NONE) {
-        *out = *slot;
-        return SW_OK;
-    }
     sw_status s = new_vertex(c, slot);
     if (s != SW_OK)
         return s;
@@ -330,21 +328,6 @@ sw_status sw_tt_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t li
     return SW_OK;
 }
 
-void sw_tt_put_triangle(tt_ctx *c, uint32_t a, uint32_t b, uint32_t d)
-{
-    const sw_trim_tess_buffers *o = c->out;
-    if (o && c->index_count + 3 <= o->index_capacity) {
-        uint16_t *x = o->indices + c->index_count;
-        x[0] = (uint16_t)(o->base_vertex + a), x[1] = (uint16_t)(o->base_vertex + b);
-        x[2] = (uint16_t)(o->base_vertex + d);
-    } else if (o) {
-        const uint32_t v[3] = {a, b, d};
-        for (uint32_t k = 0; k < 3; k++)
-            if (c->index_count + k < o->index_capacity)
-                o->indices[c->index_count + k] = (uint16_t)(o->base_vertex + v[k]);
-    }
-    c->index_count += 3;
-}
 
 sw_status sw_tt_init_vertices(tt_ctx *c, uint32_t hashed)
 {

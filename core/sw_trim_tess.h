@@ -59,15 +59,18 @@
  * about 21 MB for 16 bicubic patches and 16384 loop points at the full
  * 16-bit range, less with options.max_vertices). Work is O(patches + grid
  * cells in the loops' box + loop points x grid lines they cross), with no
- * search or allocation per triangle. Triangles: about 1.2-1.4 times the
- * binary trees' on polynomial surfaces and 1.2-1.4 times on the rational
- * cylinder (tests/bench/trim_tess_bench.c, 1e-3 and 1e-4 of the size).
- * Speed, measured on one core of the reference machine (the benchmark,
- * medians of 5): 11-22 million triangles a second on the untrimmed bicubic
- * bump, 6-12 on the bump with holes, 6-10 on the rational cylinder at 1e-3
- * and 1e-4 of the size (the trees: 0.6-1.1); what bounds it is the work per
- * loop point (clipping the crossed cells, a normal per loop point) and the
- * exact evaluation per grid point. */
+ * search or allocation per triangle. Triangles: 1.2-1.4 times the binary
+ * trees' on the benchmark's shapes at 1e-3 and 1e-4 of the size (a column
+ * or row takes its finest sub-patch's count). Speed on one core of the
+ * reference machine (tests/bench/trim_tess_bench.c, default options,
+ * medians): at 1e-4 of the size 24 million triangles a second on the
+ * untrimmed bicubic bump, 13 on the bump with holes, 10 on the rational
+ * cylinder; at 1e-3 13, 7 and 7 (the trees: 0.6-1.1 everywhere). The
+ * runtime's options (crossing_on_segment, border_fraction 0.65) cost up to
+ * 2x on the cylinder, whose cells the border all crosses. What bounds it:
+ * the work per loop point (clipping and ear clipping the crossed cells, a
+ * normal per loop point, bucketing) and the exact evaluation per grid
+ * point; at 1e-3 the fixed cost per patch (sub-patch bounds) too. */
 #ifndef SW_TRIM_TESS_H
 #define SW_TRIM_TESS_H
 

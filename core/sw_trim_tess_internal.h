@@ -9,7 +9,8 @@
 #include "sw_trim_tess.h"
 
 enum {
-    SW_TT_MAX_CELL_POINTS = 32,  /* loop points per part of a crossed cell (split up to 8 x 8, then lines) */
+    SW_TT_MAX_CELL_POINTS = 32,  /* loop points per part of a crossed cell (up to 8 x 8 parts,
+                                    then grid lines) */
     SW_TT_MAX_SUB = 4,           /* sub-patch intervals per knot interval, per axis (tt_grid.sub) */
     SW_TT_WHOLE = 0xFF,          /* a knot interval left whole: the patch's own bounds */
     SW_TT_MAX_SPLIT = 8,         /* crossed cells split at most 8 x 8 (border_fraction, crowding) */
@@ -128,9 +129,30 @@ sw_status sw_tt_eval_init(tt_ctx *c);
 
 /* Vertex output (core/sw_trim_tess.c). */
 sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32_t *out);
-sw_status sw_tt_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
-                            uint32_t *out);
-void sw_tt_put_triangle(tt_ctx *c, uint32_t a, uint32_t b, uint32_t d);
+sw_status sw_tt_new_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
+                                uint32_t *out);
+
+/* The vertex of grid point (col, line), evaluated on patch the first time. */
+static inline sw_status sw_tt_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
+                                          uint32_t *out)
+{
+    uint32_t id = c->line_ids[line & 1][col];
+    if (id == SW_TT_NONE)
+        return sw_tt_new_grid_vertex(c, patch, col, line, out);
+    *out = id;
+    return SW_OK;
+}
+
+/* Writes a triangle where the caller's buffer holds it, counts it always. */
+static inline void sw_tt_put_triangle(tt_ctx *c, uint32_t a, uint32_t b, uint32_t d)
+{
+    const sw_trim_tess_buffers *o = c->out;
+    const uint32_t v[3] = {a, b, d};
+    for (uint32_t k = 0; o && k < 3; k++)
+        if (c->index_count + k < o->index_capacity)
+            o->indices[c->index_count + k] = (uint16_t)(o->base_vertex + v[k]);
+    c->index_count += 3;
+}
 /* The vertex table for at most `hashed` crossings and part corners. */
 sw_status sw_tt_init_vertices(tt_ctx *c, uint32_t hashed);
 uint32_t sw_tt_patch_at(const tt_ctx *c, double u, double v);
