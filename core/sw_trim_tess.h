@@ -63,9 +63,9 @@
  * trees' on the benchmark's shapes at 1e-3 and 1e-4 of the size (a column
  * or row takes its finest sub-patch's count). Speed on one core of the
  * reference machine (tests/bench/trim_tess_bench.c, default options,
- * medians): at 1e-4 of the size 24 million triangles a second on the
- * untrimmed bicubic bump, 13 on the bump with holes, 10 on the rational
- * cylinder; at 1e-3 13, 7 and 7 (the trees: 0.6-1.1 everywhere). The
+ * medians of 3 runs of 7): at 1e-4 of the size 22 million triangles a
+ * second on the untrimmed bicubic bump, 13 on the bump with holes, 9 on the
+ * rational cylinder; at 1e-3 13, 7 and 6 (the trees: 0.6-1.1). The
  * runtime's options (crossing_on_segment, border_fraction 0.65) cost up to
  * 2x on the cylinder, whose cells the border all crosses. What bounds it:
  * the work per loop point (clipping and ear clipping the crossed cells, a
