@@ -143,11 +143,11 @@ static sw_tt_pv crossing(const sw_tt_rect *r, const sw_tt_trims *t, uint32_t a, 
     const sw_tt_point *pa = &t->pts[a], *pb = &t->pts[pa->next];
     if (tp == 0 || tp == 1) {
         const sw_tt_point *p = tp == 0 ? pa : pb;
-        sw_tt_pv end = {p->u, p->v, SW_TT_SEAM, tp == 0 ? a : pa->next, 0, 0, 0};
+        sw_tt_pv end = {p->u, p->v, SW_TT_SEAM, tp == 0 ? a : pa->next, 0, 0, 0, 0};
         return end;
     }
     sw_tt_pv pv = {pa->u + tp * (pb->u - pa->u), pa->v + tp * (pb->v - pa->v), SW_TT_CROSS,
-                   tp <= 0.5 ? pa->src : pb->src, pa->src, pb->src, tp};
+                   tp <= 0.5 ? pa->src : pb->src, pa->src, pb->src, tp, a};
     if (s == 0 || s == 1)
         pv.u = s == 0 ? r->u0 : r->u1;
     if (s == 2 || s == 3)
@@ -268,7 +268,7 @@ static void append_chain(const walk *w, uint32_t c, sw_tt_rings *out)
     push_pv(out, w->items[w->chain_entry[c]].pv);
     for (uint32_t k = 0; k < w->chain_len[c]; k++) {
         const sw_tt_point *p = &w->t->pts[w->seam[w->chain_first[c] + k]];
-        sw_tt_pv pv = {p->u, p->v, SW_TT_SEAM, w->seam[w->chain_first[c] + k], 0, 0, 0};
+        sw_tt_pv pv = {p->u, p->v, SW_TT_SEAM, w->seam[w->chain_first[c] + k], 0, 0, 0, 0};
         push_pv(out, pv);
     }
     push_pv(out, w->items[w->chain_exit[c]].pv);
@@ -346,7 +346,7 @@ static void closed_loops(const walk *w, const uint32_t *segs, uint32_t seg_count
             continue;
         }
         for (uint32_t i = l->first; i < l->first + l->count; i++) {
-            sw_tt_pv pv = {pts[i].u, pts[i].v, SW_TT_SEAM, i, 0, 0, 0};
+            sw_tt_pv pv = {pts[i].u, pts[i].v, SW_TT_SEAM, i, 0, 0, 0, 0};
             push_pv(out, pv);
         }
         close_ring(out);
@@ -408,10 +408,15 @@ static int same(const sw_tt_pv *a, const sw_tt_pv *b) { return a->u == b->u && a
 
 /* Is any other ring vertex in or on triangle (a, b, c)? Vertices at the
  * same place as a corner do not count (a ring may touch itself there). */
-static int blocked(const sw_tt_pv *v, const uint32_t *next, uint32_t a, uint32_t b, uint32_t c)
+static int blocked(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next, uint32_t a,
+                   uint32_t b, uint32_t c)
 {
     for (uint32_t p = next[c]; p != a; p = next[p]) {
         const sw_tt_pv *q = &v[p];
+        /* Only a reflex or flat vertex can be the first inside an ear (the
+         * one farthest from its diagonal is reflex): convex ones are skipped. */
+        if (orient(&v[prev[p]], q, &v[next[p]]) > 0)
+            continue;
         if (same(q, &v[a]) || same(q, &v[b]) || same(q, &v[c]))
             continue;
         if (orient(&v[a], &v[b], q) >= 0 && orient(&v[b], &v[c], q) >= 0 &&
@@ -430,33 +435,91 @@ static double ear_quality(const sw_tt_pv *a, const sw_tt_pv *b, const sw_tt_pv *
     return s > 0 ? orient(a, b, c) / s : 0;
 }
 
-static uint32_t pick_ear(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next,
-                         uint32_t start, int check)
+/* Does the ring turn strictly left at every vertex and wind once? Then it
+ * is strictly convex (the common crossed cell: a rectangle cut by a seam),
+ * no vertex lies in or on any ear, and it stays so as ears are cut (a flat
+ * vertex could lie on an ear's diagonal: such rings take the checks).
+ * Winding once: the edge direction, turning counter-clockwise only, passes
+ * +u at most once. */
+static int convex_ring(const sw_tt_pv *v, uint32_t n)
+{
+    uint32_t passes = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        const sw_tt_pv *a = &v[(i + n - 1) % n], *b = &v[i], *c = &v[(i + 1) % n];
+        if (!(orient(a, b, c) > 0))
+            return 0;
+        double d0 = b->v - a->v, d1 = c->v - b->v;
+        passes += d0 < 0 && d1 >= 0 && c->u - b->u > 0;
+    }
+    return passes <= 1;
+}
+
+/* The quality of the ear at i, 0 when there is none (not convex, or
+ * blocked). */
+static double ear_at(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next, uint32_t i,
+                     int convex)
+{
+    double q = ear_quality(&v[prev[i]], &v[i], &v[next[i]]);
+    return q > 0 && (convex || !blocked(v, prev, next, prev[i], i, next[i])) ? q : 0;
+}
+
+/* The best cached ear from start on, or SW_TT_NONE. */
+static uint32_t best_ear(const uint32_t *next, const double *quality, uint32_t start)
+{
+    uint32_t best = SW_TT_NONE, i = start;
+    double best_q = 0;
+    do {
+        if (quality[i] > best_q)
+            best = i, best_q = quality[i];
+        i = next[i];
+    } while (i != start);
+    return best;
+}
+
+/* The largest convex corner, blocked or not (rings that cross themselves). */
+static uint32_t any_corner(const sw_tt_pv *v, const uint32_t *prev, const uint32_t *next,
+                           uint32_t start)
 {
     uint32_t best = SW_TT_NONE, i = start;
     double best_q = 0;
     do {
         double q = ear_quality(&v[prev[i]], &v[i], &v[next[i]]);
-        if (q > best_q && (!check || !blocked(v, next, prev[i], i, next[i])))
+        if (q > best_q)
             best = i, best_q = q;
         i = next[i];
     } while (i != start);
     return best;
 }
 
-uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, uint32_t *tri,
-                        uint32_t *fallbacks)
+/* Ears are scored once and rescored only at the two corners a cut changes:
+ * cutting never blocks another ear (its triangle and the other vertices stay
+ * or go), so a scored ear stays valid; an ear a removed vertex unblocked is
+ * found by rescoring all when no scored ear is left. O(n^2) for most rings
+ * instead of O(n^3). */
+uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, double *quality,
+                        uint32_t *tri, uint32_t *fallbacks)
 {
     if (n < 3)
         return 0;
     uint32_t *prev = scratch, *next = scratch + n, count = 0, start = 0;
     for (uint32_t i = 0; i < n; i++)
         prev[i] = (i + n - 1) % n, next[i] = (i + 1) % n;
+    int convex = convex_ring(v, n);
+    for (uint32_t i = 0; i < n; i++)
+        quality[i] = ear_at(v, prev, next, i, convex);
     for (uint32_t left = n; left > 3; left--) {
-        uint32_t e = pick_ear(v, prev, next, start, 1);
+        uint32_t e = best_ear(next, quality, start);
+        if (e == SW_TT_NONE) {
+            uint32_t i = start;
+            do {
+                quality[i] = ear_at(v, prev, next, i, convex);
+                i = next[i];
+            } while (i != start);
+            e = best_ear(next, quality, start);
+        }
         if (e == SW_TT_NONE) {
             (*fallbacks)++;
-            e = pick_ear(v, prev, next, start, 0);
+            e = any_corner(v, prev, next, start);
         }
         if (e == SW_TT_NONE) {
             /* Only flat corners left: what remains has no area. */
@@ -466,6 +529,8 @@ uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, uint32
         count++;
         next[prev[e]] = next[e], prev[next[e]] = prev[e];
         start = next[e];
+        quality[prev[e]] = ear_at(v, prev, next, prev[e], convex);
+        quality[next[e]] = ear_at(v, prev, next, next[e], convex);
     }
     if (orient(&v[prev[start]], &v[start], &v[next[start]]) > 0) {
         tri[3 * count] = prev[start], tri[3 * count + 1] = start, tri[3 * count + 2] = next[start];

@@ -1,5 +1,5 @@
 /* Internal to the trimmed tessellator (core/sw_trim_tess.c): one cell of the
- * binary tree cut by the trimming loops (paper 004, section 6.3) and the
+ * grid (or a part of one) cut by the trimming loops (paper 004, section 6.3) and the
  * triangulation of the resulting polygons. Parameter-space geometry only; no
  * surface evaluation, no output. Scratch from the caller's arena. */
 #ifndef SW_TRIM_CELL_H
@@ -38,6 +38,7 @@ typedef struct sw_tt_pv {
     uint32_t kind, ref;
     uint32_t ref_a, ref_b;   /* a crossing: its segment's loop points (sources) */
     double t;                /* and where along it, 0..1 */
+    uint32_t seg;            /* a crossing: its segment's start (sw_tt_point index) */
 } sw_tt_pv;
 
 /* The loops as one read-only bundle. */
@@ -87,10 +88,11 @@ int sw_tt_cell_rings(const sw_tt_trims *t, const sw_tt_rect *r, const uint32_t *
 /* Ear clipping of one counter-clockwise ring of n vertices into at most
  * n - 2 triangles of local indices (tri[3 k + 0..2]); returns the count.
  * An ear is a convex corner with no other ring vertex in or on it (so no
- * vertex ends up inside a triangle edge); of all ears the best-shaped is cut.
- * When no ear exists (only for rings that cross themselves) the largest
- * convex corner is cut and *fallbacks counted. Needs 2 n uint32 of scratch. */
-uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, uint32_t *tri,
-                        uint32_t *fallbacks);
+ * vertex ends up inside a triangle edge); of the ears scored the best-shaped
+ * is cut. When no ear exists (only for rings that cross themselves) the
+ * largest convex corner is cut and *fallbacks counted. Needs 2 n uint32 of
+ * scratch and n doubles of quality. */
+uint32_t sw_tt_ear_clip(const sw_tt_pv *v, uint32_t n, uint32_t *scratch, double *quality,
+                        uint32_t *tri, uint32_t *fallbacks);
 
 #endif

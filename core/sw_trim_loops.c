@@ -89,10 +89,11 @@ static int point_in_loop(const sw_tt_point *p, const sw_tt_loop *l, double u, do
 static int spike(const sw_tt_point *a, const sw_tt_point *b, const sw_tt_point *c)
 {
     double e1u = b->u - a->u, e1v = b->v - a->v, e2u = c->u - b->u, e2v = c->v - b->v;
-    double l1 = sqrt(e1u * e1u + e1v * e1v), l2 = sqrt(e2u * e2u + e2v * e2v);
+    double l1 = e1u * e1u + e1v * e1v, l2 = e2u * e2u + e2v * e2v; /* squared */
     if (l1 == 0 || l2 == 0)
         return 1;
-    return e1u * e2u + e1v * e2v < 0 && fabs(e1u * e2v - e1v * e2u) <= 1e-6 * l1 * l2;
+    double cross = e1u * e2v - e1v * e2u;
+    return e1u * e2u + e1v * e2v < 0 && cross * cross <= 1e-12 * l1 * l2;
 }
 
 /* Counts a dropped point as lost unless a kept neighbour carries its id (a
@@ -137,8 +138,9 @@ static void copy_loops(tt_ctx *c, const double dom[4])
                same_uv(&l->points[end - 1], &l->points[l->loop_first[k]]))
             end--;
         for (uint32_t i = l->loop_first[k]; i < end; i++) {
-            double u = fmin(fmax(l->points[i].uv[0], dom[0]), dom[1]);
-            double v = fmin(fmax(l->points[i].uv[1], dom[2]), dom[3]);
+            double u = l->points[i].uv[0], v = l->points[i].uv[1]; /* checked finite */
+            u = u < dom[0] ? dom[0] : u > dom[1] ? dom[1] : u;
+            v = v < dom[2] ? dom[2] : v > dom[3] ? dom[3] : v;
             if (n > first && fabs(u - c->pts[n - 1].u) + fabs(v - c->pts[n - 1].v) < eps) {
                 c->res->dropped_points += !same_uv(&l->points[i], &l->points[i - 1]) &&
                                           lost(l->points, i, c->pts[n - 1].src, c->pts[n - 1].src);
@@ -248,8 +250,9 @@ static sw_status shrink_region(tt_ctx *c, const double dom[4])
         sw_tt_loop *l = &c->loops[k];
         l->box[0] = l->box[2] = INFINITY, l->box[1] = l->box[3] = -INFINITY;
         for (uint32_t i = l->first; i < l->first + l->count; i++) {
-            l->box[0] = fmin(l->box[0], c->pts[i].u), l->box[1] = fmax(l->box[1], c->pts[i].u);
-            l->box[2] = fmin(l->box[2], c->pts[i].v), l->box[3] = fmax(l->box[3], c->pts[i].v);
+            double u = c->pts[i].u, v = c->pts[i].v; /* finite: no fmin/fmax calls */
+            l->box[0] = u < l->box[0] ? u : l->box[0], l->box[1] = u > l->box[1] ? u : l->box[1];
+            l->box[2] = v < l->box[2] ? v : l->box[2], l->box[3] = v > l->box[3] ? v : l->box[3];
         }
     }
     return SW_OK;

@@ -1,24 +1,18 @@
-/* Trimmed tessellation, paper 004 section 6.3, with these changes:
- * - The leaf test is a proof, not a sample: a cell stops splitting when the
- *   second-derivative bound of its own sub-patch (exact de Casteljau
- *   subdivision, sw_bezier_subpatch) gives (M_uu + 2 M_uv + M_vv) / 8 <=
- *   error; that bounds every triangle with corners in the cell (Taylor with
- *   integral remainder; the barycentric variance is at most a^2 / 4). The
- *   split still goes through the sampled point of largest distance from the
- *   bilinear approximation, as in the paper, clamped to the middle half.
- * - Cells entirely outside the loops are not refined at all.
- * - Cells the loops cross are refined further while they hold a whole hole
- *   or more than SW_TT_MAX_CELL_POINTS loop points: every crossed cell then
- *   becomes simple polygons (no holes) that ear clipping handles, and long
- *   seams do not end in fans of slivers.
- * - Degenerate cases (loops along a patch edge or the domain's border, loop
- *   points on a cell line, loops touching) are removed by a region shrink:
- *   for all topology the loop points are moved by a tiny distance into the
- *   trimmed region along their mitre (SW_TT_SHRINK_REL of the domain), so no loop
- *   runs along a cell side and the loops no longer touch; the output keeps
+/* Trimmed tessellation (paper 004 section 6.3's trimming, on a grid instead
+ * of the paper's binary trees). The steps, one file each:
+ * - sw_trim_loops.c: the loops oriented and moved a tiny distance into the
+ *   trimmed region (the region shrink, SW_TT_SHRINK_REL of the domain), so
+ *   no loop runs along a grid line and loops no longer touch; output keeps
  *   every loop point's own (u, v) and position.
- * - No T-vertices: each kept cell's border carries the corners of all kept
- *   neighbours on it (a sorted corner index), and the triangulation uses them.
+ * - sw_trim_grid.c: the conformal tensor grid from the sub-patches' proven
+ *   second-derivative bounds (every cell within error, no T-vertex).
+ * - sw_trim_bucket.c: loop segments by cell, grid lines added through holes
+ *   inside one cell and through very crowded cells.
+ * - sw_trim_sweep.c: the row sweep: inside cells as two triangles, crossed
+ *   cells clipped (sw_trim_cell.c) and ear clipped, in parts where their
+ *   bound exceeds border_error or they hold many loop points.
+ * - sw_trim_eval.c: exact evaluation, once per vertex.
+ * This file: input checks, the vertex table and output, the entry points.
  * Partial: loops are assumed not to cross each other or themselves (the
  * clipping reports SW_ERR_FORMAT where its walk notices, not always);
  * consecutive loop points with equal (u, v) are merged. */
@@ -57,21 +51,35 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     size_t d = (size_t)(max_degree < 1 ? 1 : max_degree > SW_BEZIER_MAX_DEGREE
                                                  ? SW_BEZIER_MAX_DEGREE : max_degree);
     size_t ctrl = sw_tt_ctrl_doubles((int)d, (int)d) * sizeof(double) + 8;
-    size_t v = max_vertices_of(opt, 0), n = point_count, depth = max_depth_of(opt);
-    size_t bytes = patch_count * (ctrl + sizeof(sw_bezier_patch) + 8);
-    bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t)) + (n / 3 + 1) * sizeof(sw_tt_loop);
-    bytes += (2 * depth + 4) * (sizeof(tt_frame) + ctrl) + ctrl;
-    bytes += ((2 * depth + 4) * n + 64) * sizeof(uint32_t);            /* list stack */
-    bytes += v * sizeof(tt_leaf) + (4 * v + 2 * n) * sizeof(uint32_t);  /* leaves, lists */
-    bytes += 2 * 4 * (v + 1) * 2 * sizeof(double);                     /* corner index */
-    bytes += v * (2 * sizeof(double) + 1) + hash_size((uint32_t)v) * sizeof(uint32_t);
-    /* One cell at a time: its border (SW_TT_MAX_BORDER points), then per
-     * border point or loop point: an item of the walk (56 bytes), a ring
-     * vertex and its ring end (36), chain tables (21) and the ear clipping's
-     * map, links and triangles (24); rounded up. */
-    size_t cell = SW_TT_MAX_BORDER + 3 * n + 8;
-    bytes += SW_TT_MAX_BORDER * sizeof(sw_tt_pv) + cell * 160;
-    return bytes + 64 * 32; /* alignment of every allocation */
+    size_t v = max_vertices_of(opt, 0), n = point_count, np = patch_count;
+    /* patches, loops (sw_trim_loops.c) */
+    size_t bytes = np * (ctrl + sizeof(sw_bezier_patch) + 8) + 3 * ctrl;
+    bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t) + 2 * sizeof(double)) +
+             (n / 3 + 1) * sizeof(sw_tt_loop) + 64;
+    /* knots, patch table, sub-patch bounds and counts (sw_trim_grid.c) */
+    size_t bounds = 3 * (SW_TT_MAX_SUB * SW_TT_MAX_SUB + 1) * sizeof(double); /* subs, whole */
+    bytes += np * (4 * sizeof(double) + 1 + bounds + 4 * SW_TT_MAX_SUB * sizeof(double)) +
+             (4 * np + 16) * sizeof(uint32_t);
+    /* grid lines, each axis at most v + 4 np + SW_TT_MAX_INSERT (lay_lines) */
+    size_t lines = v + 4 * np + SW_TT_MAX_INSERT + 2;
+    bytes += 2 * lines * (sizeof(double) + sizeof(uint32_t) + 1);
+    /* pairs twice, row and column starts (sw_trim_bucket.c) */
+    bytes += 2 * (4 * v + 2 * n + 64) * sizeof(tt_pair) + 2 * lines * sizeof(uint32_t);
+    /* vertex table */
+    bytes += v * (2 * sizeof(double) + 1) + hash_size((uint32_t)v) * sizeof(uint32_t) +
+             n * (sizeof(sw_vec3) + 1) + (4 * v + 2 * n + 64);
+    /* the sweep: per loop point a mark, a crossing, a segment; per column
+     * split flags and two vertex ids; the evaluation cache per knot column */
+    bytes += (n + 1) * 16 + lines * (3 + 2 * sizeof(uint32_t)) +
+             4 * np * (8 * (d + 1) * sizeof(double) + sizeof(uint32_t));
+    /* One cell at a time: per border point (at most 4 SW_TT_MAX_SPLIT) or
+     * loop point an item of the walk (56 bytes), a ring vertex and its ring
+     * end (36), chain tables (21) and the ear clipping's map, links,
+     * triangles and quality (32); rounded up. */
+    bytes += SW_TT_BASIS_BYTES;
+    size_t cell = 4 * SW_TT_MAX_SPLIT + 3 * n + 8;
+    bytes += cell * 168;
+    return bytes + 64 * 64; /* alignment of every allocation */
 }
 
 /* ---- input ----------------------------------------------------------------- */
@@ -99,6 +107,25 @@ static sw_status check_patches(tt_ctx *c)
     return SW_OK;
 }
 
+/* What sw_bezier_second_deriv_bounds would refuse, without its work:
+ * non-finite coordinates, weights not finite and > 0. */
+static sw_status check_control(tt_ctx *c, uint32_t p)
+{
+    const sw_bezier_patch *b = &c->patches[p];
+    for (int j = 0; j <= b->degree_v; j++)
+        for (int i = 0; i <= b->degree_u; i++) {
+            const double *x = b->ctrl + ((size_t)j * (size_t)(b->degree_u + 1) + (size_t)i) * 4;
+            if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]))
+                return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: patch %u: control point "
+                                    "(%d, %d): coordinate not finite", (unsigned)p, i, j);
+            if (b->rational && !(x[3] > 0 && isfinite(x[3])))
+                return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: patch %u: control point "
+                                    "(%d, %d): weight %g, expected finite > 0", (unsigned)p, i,
+                                    j, x[3]);
+        }
+    return SW_OK;
+}
+
 static sw_status copy_patches(tt_ctx *c)
 {
     c->patches = sw_arena_alloc(c->arena, sizeof *c->patches * c->patch_count, 8);
@@ -111,12 +138,9 @@ static sw_status copy_patches(tt_ctx *c)
         if (!ctrl)
             return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for patches");
         c->patches[i] = sw_bezier_patch_from_float(pf, ctrl);
-        sw_deriv_bounds b;
-        sw_status st = sw_bezier_second_deriv_bounds(&c->patches[i], &b, c->err);
-        if (st != SW_OK) {
-            sw_error_prefix(c->err, "trim tess: patch %u", (unsigned)i);
+        sw_status st = check_control(c, i);
+        if (st != SW_OK)
             return st;
-        }
     }
     return SW_OK;
 }
@@ -146,9 +170,15 @@ static uint32_t hash_key(double u, double v, uint32_t kind)
     return (uint32_t)(h ^ (h >> 32));
 }
 
-/* The patch whose domain holds (u, v) (the nearest when none does). */
-static uint32_t patch_at(const tt_ctx *c, double u, double v)
+/* The patch whose knot cell holds (u, v): binary search on the knot lines,
+ * the nearest patch by a scan where the grid has no patch there. */
+uint32_t sw_tt_patch_at(const tt_ctx *c, double u, double v)
 {
+    const tt_grid *g = &c->grid;
+    uint32_t p = sw_tt_knot_patch(c, sw_tt_interval(g->ku, g->nku, u),
+                                  sw_tt_interval(g->kv, g->nkv, v));
+    if (p != SW_TT_NONE)
+        return p;
     uint32_t best = 0;
     double best_d = INFINITY;
     for (uint32_t i = 0; i < c->patch_count; i++) {
@@ -156,18 +186,8 @@ static uint32_t patch_at(const tt_ctx *c, double u, double v)
         double du = fmax(fmax(d[0] - u, u - d[1]), 0), dv = fmax(fmax(d[2] - v, v - d[3]), 0);
         if (du + dv < best_d)
             best = i, best_d = du + dv;
-        if (best_d == 0)
-            break;
     }
     return best;
-}
-
-static void eval_surface(const tt_ctx *c, uint32_t p, double u, double v, sw_surface_point *q)
-{
-    const float *d = c->in_patches[p].domain;
-    double s = fmin(fmax((u - d[0]) / ((double)d[1] - d[0]), 0), 1);
-    double t = fmin(fmax((v - d[2]) / ((double)d[3] - d[2]), 0), 1);
-    sw_bezier_eval(&c->patches[p], s, t, SW_EVAL_FIRST, q);
 }
 
 static sw_status new_vertex(tt_ctx *c, uint32_t *index)
@@ -198,12 +218,17 @@ static void put_vertex(const tt_ctx *c, uint32_t i, const float p[3], sw_vec3 n,
 
 /* A loop point or a crossing: the caller's position, the surface's normal
  * at the loop point's own (u, v). */
-static void put_border(const tt_ctx *c, uint32_t i, uint32_t src, double u, double v)
+static void put_border(tt_ctx *c, uint32_t i, uint32_t src, double u, double v)
 {
     const sw_trim_point *tp = &c->in_loops->points[src];
-    sw_surface_point q;
-    eval_surface(c, patch_at(c, tp->uv[0], tp->uv[1]), tp->uv[0], tp->uv[1], &q);
-    put_vertex(c, i, tp->p, q.normal, u, v, tp->id);
+    sw_vec3 *normal = &c->src_normal[src];
+    if (!c->src_has_normal[src]) { /* a loop point and its crossings share one */
+        sw_vec3 pos;
+        sw_tt_eval_at(c, sw_tt_patch_at(c, tp->uv[0], tp->uv[1]), tp->uv[0], tp->uv[1], &pos,
+                      normal);
+        c->src_has_normal[src] = 1;
+    }
+    put_vertex(c, i, tp->p, *normal, u, v, tp->id);
 }
 
 /* A crossing on its seam segment (crossing_on_segment): the chord point
@@ -213,11 +238,11 @@ static void put_border(const tt_ctx *c, uint32_t i, uint32_t src, double u, doub
  * away from where the surface puts (u, v) (teaset: 1 px of a 0.5 px bound).
  * Deterministic: the crossing is one vertex of the surface's mesh, evaluated
  * once on the patch patch_at picks for its (u, v). */
-static void put_on_segment(const tt_ctx *c, uint32_t i, const sw_tt_pv *pv)
+static void put_on_segment(tt_ctx *c, uint32_t i, const sw_tt_pv *pv)
 {
     const float *a = c->in_loops->points[pv->ref_a].p, *b = c->in_loops->points[pv->ref_b].p;
     sw_surface_point q;
-    eval_surface(c, patch_at(c, pv->u, pv->v), pv->u, pv->v, &q);
+    sw_tt_eval_at(c, sw_tt_patch_at(c, pv->u, pv->v), pv->u, pv->v, &q.p, &q.normal);
     double ab[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
     double aq[3] = {q.p.x - a[0], q.p.y - a[1], q.p.z - a[2]};
     double len2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
@@ -229,7 +254,7 @@ static void put_on_segment(const tt_ctx *c, uint32_t i, const sw_tt_pv *pv)
     put_vertex(c, i, p, q.normal, pv->u, pv->v, SW_TRIM_CROSSING);
 }
 
-static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32_t *out)
+sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32_t *out)
 {
     if (pv->kind == SW_TT_SEAM) {
         uint32_t *slot = &c->seam_out[pv->ref];
@@ -243,6 +268,24 @@ static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint3
         *out = *slot;
         return SW_OK;
     }
+    if (pv->kind == SW_TT_CROSS) {
+        /* A crossing that rounds to an end's own float (u, v) (a grid line a
+         * float step from a loop point) is that loop point: both cells at the
+         * crossing find the same one, the edge between the two collapses, and
+         * no triangle degenerates in the float (u, v) of the output. */
+        uint32_t ends[2] = {pv->seg, c->pts[pv->seg].next};
+        for (int k = 0; k < 2; k++) {
+            const float *uv = c->in_loops->points[c->pts[ends[k]].src].uv;
+            if ((float)pv->u == uv[0] && (float)pv->v == uv[1]) {
+                sw_tt_pv end = {c->pts[ends[k]].u, c->pts[ends[k]].v, SW_TT_SEAM, ends[k],
+                                0, 0, 0, 0};
+                return sw_tt_vertex_for(c, patch, &end, out);
+            }
+        }
+    }
+    if (c->hashed_count >= c->hash_mask / 2)
+        return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: more than %u crossings and part "
+                            "corners", (unsigned)c->hash_mask / 2);
     uint32_t h = hash_key(pv->u, pv->v, pv->kind) & c->hash_mask;
     for (; c->hash[h] != SW_TT_NONE; h = (h + 1) & c->hash_mask) {
         uint32_t i = c->hash[h];
@@ -255,100 +298,52 @@ static sw_status vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint3
     if (s != SW_OK)
         return s;
     c->hash[h] = *out;
+    c->hashed_count++;
     c->key_uv[2 * *out] = pv->u, c->key_uv[2 * *out + 1] = pv->v, c->key_kind[*out] = (uint8_t)pv->kind;
     if (pv->kind == SW_TT_CROSS && c->crossing_on_segment) {
         put_on_segment(c, *out, pv);
     } else if (pv->kind == SW_TT_CROSS) {
         put_border(c, *out, pv->ref, pv->u, pv->v);
     } else {
-        sw_surface_point q;
-        eval_surface(c, patch, pv->u, pv->v, &q);
-        float p[3] = {(float)q.p.x, (float)q.p.y, (float)q.p.z};
-        put_vertex(c, *out, p, q.normal, pv->u, pv->v, SW_TRIM_INTERIOR);
+        sw_vec3 pos, normal;
+        sw_tt_eval_at(c, patch, pv->u, pv->v, &pos, &normal);
+        float p[3] = {(float)pos.x, (float)pos.y, (float)pos.z};
+        put_vertex(c, *out, p, normal, pv->u, pv->v, SW_TRIM_INTERIOR);
     }
     return SW_OK;
 }
 
-static sw_status emit_ring(tt_ctx *c, uint32_t patch, const sw_tt_pv *ring, uint32_t n)
+sw_status sw_tt_new_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
+                                uint32_t *out)
 {
-    uint32_t *map = sw_arena_alloc(c->arena, sizeof(uint32_t) * 6 * (size_t)n, 4);
-    if (!map)
-        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
-    uint32_t *scratch = map + n, *tri = map + 3 * (size_t)n;
-    for (uint32_t i = 0; i < n; i++) {
-        sw_status s = vertex_for(c, patch, &ring[i], &map[i]);
-        if (s != SW_OK)
-            return s;
-    }
-    uint32_t count = sw_tt_ear_clip(ring, n, scratch, tri, &c->res->fallback_ears);
-    const sw_trim_tess_buffers *o = c->out;
-    for (uint32_t t = 0; t < count; t++) {
-        for (int k = 0; k < 3; k++) {
-            if (o && c->index_count < o->index_capacity)
-                o->indices[c->index_count] = (uint16_t)(o->base_vertex + map[tri[3 * t + k]]);
-            c->index_count++;
-        }
-    }
+    uint32_t *slot = &c->line_ids[line & 1][col];
+    sw_status s = new_vertex(c, slot);
+    if (s != SW_OK)
+        return s;
+    sw_vec3 pos, normal;
+    sw_tt_eval_grid(c, patch, col, line, &pos, &normal);
+    float p[3] = {(float)pos.x, (float)pos.y, (float)pos.z};
+    put_vertex(c, *slot, p, normal, c->grid.gu[col], c->grid.gv[line], SW_TRIM_INTERIOR);
+    *out = *slot;
     return SW_OK;
 }
 
-static sw_status emit_leaf(tt_ctx *c, uint32_t l)
-{
-    const tt_leaf *leaf = &c->leaves[l];
-    sw_tt_pv *border = sw_arena_alloc(c->arena, sizeof *border * SW_TT_MAX_BORDER, 8);
-    if (!border)
-        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
-    uint32_t nb = sw_tt_leaf_border(c, l, border, SW_TT_MAX_BORDER);
-    if (nb == SW_TT_NONE)
-        return sw_error_set(c->err, SW_ERR_RANGE, "trim tess: a cell borders more than %d finer "
-                            "cells: coarsen the bound", SW_TT_MAX_BORDER);
-    if (!leaf->crossed)
-        return emit_ring(c, leaf->patch, border, nb);
-    c->res->crossed_count++;
-    sw_tt_rings rings;
-    int rc = sw_tt_cell_rings(&c->trims, &leaf->r, c->leaf_segs + leaf->seg_first,
-                              leaf->seg_count, border, nb, c->stamp, l + 1, c->arena, &rings,
-                              &c->res->skipped_loops);
-    if (rc == SW_TT_CELL_NO_MEMORY)
-        return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for a cell");
-    if (rc == SW_TT_CELL_BAD)
-        return sw_error_set(c->err, SW_ERR_FORMAT, "trim tess: loops cross each other or "
-                            "themselves near (%g, %g)", 0.5 * (leaf->r.u0 + leaf->r.u1),
-                            0.5 * (leaf->r.v0 + leaf->r.v1));
-    if (rc == SW_TT_CELL_EMPTY) {
-        const sw_tt_rect *r = &leaf->r;
-        if (!sw_tt_classify(&c->trims, 0.5 * (r->u0 + r->u1), 0.5 * (r->v0 + r->v1)))
-            return SW_OK;
-        return emit_ring(c, leaf->patch, border, nb);
-    }
-    for (uint32_t k = 0; k < rings.ring_count; k++) {
-        uint32_t first = k ? rings.ring_end[k - 1] : 0;
-        sw_status s = emit_ring(c, leaf->patch, rings.verts + first, rings.ring_end[k] - first);
-        if (s != SW_OK)
-            return s;
-    }
-    return SW_OK;
-}
 
-static sw_status emit_all(tt_ctx *c)
+sw_status sw_tt_init_vertices(tt_ctx *c, uint32_t hashed)
 {
-    uint32_t hs = hash_size(c->max_vertices);
+    uint32_t hs = hash_size(hashed < c->max_vertices ? hashed : c->max_vertices);
+    uint32_t in = c->in_loops->loop_first[c->in_loops->loop_count];
     c->hash_mask = hs - 1;
     c->hash = sw_arena_alloc(c->arena, sizeof(uint32_t) * hs, 4);
     c->key_uv = sw_arena_alloc(c->arena, sizeof(double) * 2 * c->max_vertices, 8);
     c->key_kind = sw_arena_alloc(c->arena, c->max_vertices, 1);
-    if (!c->hash || !c->key_uv || !c->key_kind)
+    c->src_normal = sw_arena_alloc(c->arena, sizeof(sw_vec3) * in, 8);
+    c->src_has_normal = sw_arena_alloc(c->arena, in, 1);
+    if (!c->hash || !c->key_uv || !c->key_kind || !c->src_normal || !c->src_has_normal)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for the "
                             "vertex table (see sw_trim_tess_scratch_bytes)");
     memset(c->hash, 0xFF, sizeof(uint32_t) * hs);
-    for (uint32_t l = 0; l < c->leaf_count; l++) {
-        size_t mark = sw_arena_mark(c->arena);
-        sw_status s = emit_leaf(c, l);
-        sw_arena_reset_to(c->arena, mark);
-        if (s != SW_OK)
-            return s;
-    }
-    c->res->leaf_count = c->leaf_count;
+    memset(c->src_has_normal, 0, in);
     return SW_OK;
 }
 
@@ -381,8 +376,11 @@ static sw_status run(tt_ctx *c)
         return s;
     double dom[4];
     domain_of(c, dom);
-    if ((s = sw_tt_prepare_loops(c, dom)) != SW_OK || (s = sw_tt_build_tree(c)) != SW_OK ||
-        (s = emit_all(c)) != SW_OK)
+    if ((s = sw_tt_prepare_loops(c, dom)) != SW_OK)
+        return s;
+    if (c->trims.loop_count > 0 &&
+        ((s = sw_tt_build_grid(c)) != SW_OK || (s = sw_tt_bucket(c)) != SW_OK ||
+         (s = sw_tt_sweep(c)) != SW_OK))
         return s;
     c->res->vertex_count = c->vertex_count;
     c->res->index_count = c->index_count;

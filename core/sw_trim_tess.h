@@ -1,48 +1,76 @@
 /* Runtime trimmed tessellation of one surface (Guthe et al. 2002, paper 004,
- * section 6.3): the surface's rational Bezier patches are refined by binary
- * trees until a proven object-space error bound holds, cells outside the
- * current trimming loops are dropped, cells inside are triangulated whole and
- * cells the loops cross are clipped by them in parameter space and
- * triangulated. Called by the runtime's tessellation workers with the loops
- * the Seam Graph shows at the moment (core/sw_seam_graph.h) and by the tests
- * and the benchmark. Never allocates: scratch comes from an sw_arena (given
- * back before returning), output goes into the caller's buffers.
+ * section 6.3, with a conformal grid in place of the paper's binary trees):
+ * the surface's rational Bezier patches get one tensor grid whose cells meet
+ * a proven object-space error bound, cells outside the current trimming
+ * loops are dropped, cells inside are two triangles and cells the loops
+ * cross are clipped by them in parameter space and triangulated. Called by
+ * the runtime's tessellation workers with the loops the Seam Graph shows at
+ * the moment (core/sw_seam_graph.h) and by the tests and the benchmark.
+ * Never allocates: scratch comes from an sw_arena (given back before
+ * returning), output goes into the caller's buffers.
+ *
+ * The grid: columns are the patches' knot intervals in u, rows in v, each
+ * split into 2 sub-patch intervals (4 on rational surfaces), each of those
+ * into a uniform count. Per sub-patch (exact de Casteljau sub-patch) the
+ * bounds M_uu, M_uv, M_vv (sw_bezier_second_deriv_bounds) give the fewest
+ * cells with (M_uu h_u^2 + 2 M_uv h_u h_v + M_vv h_v^2) / 8 <= error; a
+ * column takes the largest count any sub-patch in it needs, a row likewise.
+ * A knot interval whose sub-intervals all need one cell stays whole where
+ * the whole patch's bound allows (a plane is two triangles). Only
+ * sub-patches meeting the loops' box are bounded. The rows inside the box
+ * are swept bottom to top with the vertex ids of two grid lines only; a cell
+ * no loop touches is inside or outside by the even-odd count of the loops'
+ * crossings of its row's middle line.
  *
  * Guarantees, for valid input:
  * - Watertight in parameter space: the triangles tile the trimmed region
- *   (loops even-odd, any orientation) with no T-vertex: where a cell meets a
- *   finer neighbour, the neighbour's corners on the shared edge are vertices of
- *   the cell's triangles too.
+ *   (loops even-odd, any orientation) with no T-vertex: the grid is
+ *   conformal; where a crossed cell is clipped in parts, its neighbours
+ *   carry the parts' corners on the shared side.
  * - The border is the seam: every loop point is an output vertex whose
  *   position is the given float[3], copied bit for bit, so two surfaces sharing
  *   a seam have bit-identical border vertices. Where a loop segment crosses a
  *   cell border the new vertex takes the position (and normal) of the nearer
  *   end of the segment (the paper's nearest-neighbour rule) instead of an
  *   interpolated one, so no position exists on the border that the neighbouring
- *   surface lacks; the vertex keeps its own (u, v).
- * - Interior vertices (cell corners) are evaluated on the exact surface; every
- *   normal is the surface normal at the vertex's (u, v).
- * - Every triangle's vertices lie in one cell, and a cell is a leaf only when
- *   (M_uu + 2 M_uv + M_vv) / 8 <= error, with M the second-derivative bounds of
- *   the cell's sub-patch (sw_bezier_second_deriv_bounds): the distance from any
- *   point of a triangle to the surface at the same (u, v) is then at most
- *   error (a rigorous bound, where the paper tests the distance at sampled
- *   points only). Exception, along the border: loop points have the caller's
- *   positions (the seam's own error), and a triangle at a crossing is inscribed
- *   at the (u, v) of the loop point whose position it took, so its cell's box
- *   grows by up to half a seam segment there (measured in the tests and the
- *   benchmark's seams: within about 1-2x the bound when the seam's own chord
- *   error is a tenth of it). To keep crossings rare, a cell whose loop runs
- *   across the split axis is split through a loop point where one lies in
- *   the cell's middle (then the loop point itself is the border vertex).
+ *   surface lacks; the vertex keeps its own (u, v). A crossing whose float
+ *   (u, v) equals an end's is that loop point (the edge between collapses).
+ * - Interior vertices (grid points) are evaluated on the exact surface, once
+ *   each; every normal is the surface normal at the vertex's (u, v).
+ * - Every triangle's vertices lie in one cell (or part of a crossed cell),
+ *   and every cell meets (M_uu h_u^2 + 2 M_uv h_u h_v + M_vv h_v^2) / 8 <=
+ *   error, a crossed one border_error, with M the bounds of the sub-patch
+ *   holding the cell (of the whole patch for an interval left whole): the
+ *   distance from any point of a triangle to the surface at the same (u, v)
+ *   is then at most error (Taylor with integral remainder; the barycentric
+ *   variance is at most h^2 / 4; a rigorous bound, where the paper tests
+ *   the distance at sampled points only). Exception, along the border: loop
+ *   points have the caller's positions (the seam's own error), and a
+ *   triangle at a crossing is inscribed at the (u, v) of the loop point whose
+ *   position it took, so its cell's box grows by up to half a seam segment
+ *   there (see crossing_on_segment).
+ * - Holes inside one cell get a grid line through them; cells with more
+ *   than 32 loop points are clipped in up to 8 x 8 parts, past 2048 points
+ *   grid lines are added: ear clipping stays on small rings.
  *
  * Limits: at most 65536 - base_vertex vertices (16-bit indices, GLES2): a
  * surface that needs more at the asked error gets SW_ERR_RANGE and the caller
- * coarsens. Scratch is sized by sw_trim_tess_scratch_bytes: about 16-18 MB
- * for the full 16-bit range and 1000-4000 loop points, about 5 MB with
- * options.max_vertices = 4096. Work is O(cells log cells + cells x loop points
- * per cell); about 0.6-1 million triangles a second on one core of the
- * reference machine (tests/bench/trim_tess_bench.c). */
+ * coarsens. Scratch is sized by sw_trim_tess_scratch_bytes (a worst case:
+ * about 21 MB for 16 bicubic patches and 16384 loop points at the full
+ * 16-bit range, less with options.max_vertices). Work is O(patches + grid
+ * cells in the loops' box + loop points x grid lines they cross), with no
+ * search or allocation per triangle. Triangles: 1.2-1.4 times the binary
+ * trees' on the benchmark's shapes at 1e-3 and 1e-4 of the size (a column
+ * or row takes its finest sub-patch's count). Speed on one core of the
+ * reference machine (tests/bench/trim_tess_bench.c, default options,
+ * medians of 3 runs of 7): at 1e-4 of the size 22 million triangles a
+ * second on the untrimmed bicubic bump, 13 on the bump with holes, 9 on the
+ * rational cylinder; at 1e-3 13, 7 and 6 (the trees: 0.6-1.1). The
+ * runtime's options (crossing_on_segment, border_fraction 0.65) cost up to
+ * 2x on the cylinder, whose cells the border all crosses. What bounds it:
+ * the work per loop point (clipping and ear clipping the crossed cells, a
+ * normal per loop point, bucketing) and the exact evaluation per grid
+ * point; at 1e-3 the fixed cost per patch (sub-patch bounds) too. */
 #ifndef SW_TRIM_TESS_H
 #define SW_TRIM_TESS_H
 
@@ -100,7 +128,8 @@ typedef struct sw_trim_loops {
 /* Zero means default, as everywhere in seamwalk. */
 typedef struct sw_trim_tess_options {
     uint32_t max_vertices; /* default and cap: 65536 - base_vertex (16-bit indices) */
-    uint32_t max_depth;    /* splits per patch, default 24, at most 40 */
+    uint32_t max_depth;    /* grid intervals per sub-patch interval at most 2^max_depth,
+                              default 24, at most 40 */
     /* 0 (default): a crossing takes the nearer loop point's position (the
      * paper's rule: no T-vertex, but the triangles at a crossing are
      * distorted by up to half a seam segment, which with the Seam Graph's
@@ -137,16 +166,17 @@ typedef struct sw_trim_tess_buffers {
 
 typedef struct sw_trim_tess_result {
     uint32_t vertex_count, index_count;  /* what the surface needs (also on NO_MEMORY) */
-    uint32_t leaf_count;                 /* cells kept (inside or crossed) */
+    uint32_t leaf_count;                 /* grid cells kept (inside or crossed) */
     uint32_t crossed_count;              /* of those, cells a loop crosses */
-    uint32_t capped_count;               /* leaves at max_depth whose bound exceeds error */
-    uint32_t skipped_loops;              /* loops with no area, or holes below max_depth */
+    uint32_t capped_count;               /* sub-patches whose count max_depth or the vertex
+                                            limit capped (their bound exceeds error) */
+    uint32_t skipped_loops;              /* loops with no area, or holes left inside a cell */
     uint32_t dropped_points;             /* loop points dropped (spike tips, near repeats)
                                             whose id no kept neighbour carries: not in
                                             the output */
     uint32_t fallback_ears;              /* clipping steps taken without a valid ear: 0 for
                                             valid loops */
-    double error_bound;                  /* the largest leaf bound: <= error unless capped */
+    double error_bound;                  /* the largest cell bound: <= error unless capped */
 } sw_trim_tess_result;
 
 /* Scratch bytes sw_trim_tess may take from its arena, worst case, for a

@@ -9,22 +9,41 @@
 #include "sw_trim_tess.h"
 
 enum {
-    SW_TT_MAX_CELL_POINTS = 32,  /* loop points a crossed cell may hold before it splits */
-    SW_TT_MAX_BORDER = 4096,     /* grid points on one cell's border */
+    SW_TT_MAX_CELL_POINTS = 32,  /* loop points per part of a crossed cell (up to 8 x 8 parts,
+                                    then grid lines) */
+    SW_TT_MAX_SUB = 4,           /* sub-patch intervals per knot interval, per axis (tt_grid.sub) */
+    SW_TT_WHOLE = 0xFF,          /* a knot interval left whole: the patch's own bounds */
+    SW_TT_MAX_SPLIT = 8,         /* crossed cells split at most 8 x 8 (border_fraction, crowding) */
+    SW_TT_MAX_INSERT = 4096,     /* grid lines added for the loops, per axis */
+    SW_TT_REFINE_ROUNDS = 24,
+    SW_TT_BASIS_BYTES = 1 << 20, /* the column basis cache, at most */
     SW_TT_DEFAULT_DEPTH = 24,
     SW_TT_MAX_DEPTH = 40,
 };
 #define SW_TT_SHRINK_REL 1e-9 /* of the domain: how far loop points move into the region */
 
-typedef struct tt_leaf {
-    sw_tt_rect r;
-    uint32_t patch, seg_first, seg_count, crossed;
-} tt_leaf;
+/* A loop segment (by its start point) meeting grid cell (col, row), closed. */
+typedef struct tt_pair {
+    uint32_t col, row, seg;
+} tt_pair;
 
-typedef struct tt_frame {
-    sw_tt_rect r;
-    uint32_t patch, depth, list_off, list_count, inside;
-} tt_frame;
+/* The conformal tensor grid (core/sw_trim_grid.c). Knot lines are the
+ * patches' domain edges; each knot interval splits into `sub` sub-patch
+ * intervals, each of those into a uniform count of grid intervals. */
+typedef struct tt_grid {
+    double *ku, *kv;            /* knot lines, nku and nkv of them */
+    uint32_t nku, nkv, sub;
+    uint32_t *table;            /* patch of knot cell (kc, kr) at kr * (nku - 1) + kc, or NONE */
+    double *bounds;             /* per patch and sub-patch: M_uu, M_uv, M_vv of the sub-patch */
+    double *whole;              /* per patch: its own M_uu, M_uv, M_vv */
+    uint8_t *bounded;           /* per patch: bounds computed */
+    double *gu, *gv;            /* grid lines: ncol + 1 and nrow + 1 */
+    uint32_t *col_k, *row_k;    /* knot interval of each grid column / row */
+    uint8_t *col_s, *row_s;     /* sub-patch interval within it, SW_TT_WHOLE: not split */
+    uint32_t ncol, nrow, cap_u, cap_v;
+    uint32_t c0, c1, r0, r1;    /* columns [c0, c1) and rows [r0, r1) meeting the loops' box */
+    double box[4];              /* the loops' box (moved points) */
+} tt_grid;
 
 typedef struct tt_ctx {
     const sw_trim_patch *in_patches;
@@ -42,21 +61,25 @@ typedef struct tt_ctx {
     uint32_t max_vertices, max_depth;
     int crossing_on_segment;
     double border_error;     /* error for cells a loop runs through */
-    /* tree */
-    tt_leaf *leaves;
-    uint32_t leaf_count, leaf_cap;
-    uint32_t *leaf_segs, leaf_seg_count, leaf_seg_cap;
-    uint32_t *list, list_top, list_cap;
-    /* corner index: the kept cells' corners, distinct, as (v, u) pairs sorted
-     * (for horizontal sides) and as (u, v) pairs sorted (vertical sides) */
-    double *by_v, *by_u;
-    uint32_t corner_count;
+    tt_grid grid;
+    /* segments by cell, sorted by (row, col); row_first[r] the first of row r */
+    tt_pair *pairs;
+    uint32_t pair_count, pair_cap, *row_first;
+    uint32_t cell_id;        /* stamp for sw_tt_cell_rings, one per (sub)cell */
+    /* evaluation: per grid line slot (line & 1) and knot column, the patch
+     * contracted in v at the line (core/sw_trim_eval.c) */
+    double *line_q;
+    uint32_t *line_stamp;
+    double *col_basis;       /* per box column: degree, then B_i(s) and B_i'(s), or NULL */
     /* output */
     const sw_trim_tess_buffers *out;
     double *key_uv;
     uint8_t *key_kind;
-    uint32_t *hash, hash_mask;
+    uint32_t *hash, hash_mask, hashed_count;
+    sw_vec3 *src_normal;     /* per caller's loop point: the surface normal there, once */
+    uint8_t *src_has_normal;
     uint32_t *seam_out;
+    uint32_t *line_ids[2];   /* vertex of grid point (col, line), slot line & 1 */
     uint32_t vertex_count, index_count;
     sw_trim_tess_result *res;
 } tt_ctx;
@@ -70,13 +93,68 @@ static inline size_t sw_tt_ctrl_doubles(int n, int m)
  * region (c->pts, c->loops, c->trims) and checks them against the domain. */
 sw_status sw_tt_prepare_loops(tt_ctx *c, const double dom[4]);
 
-/* Refines every patch into leaves (c->leaves, c->leaf_segs) and builds the
- * corner index (c->by_u, c->by_v). */
-sw_status sw_tt_build_tree(tt_ctx *c);
+/* The knot grid, the sub-patch bounds and the grid lines meeting the
+ * loops' box (core/sw_trim_grid.c). */
+sw_status sw_tt_build_grid(tt_ctx *c);
 
-/* The grid points on the border of leaf l in counter-clockwise order from
- * (u0, v0): its corners and its kept neighbours' corners. Returns the count,
- * or SW_TT_NONE when there are more than cap. */
-uint32_t sw_tt_leaf_border(const tt_ctx *c, uint32_t l, sw_tt_pv *out, uint32_t cap);
+/* Inserts a grid line at x (axis 0: u, 1: v) if none is there. */
+sw_status sw_tt_insert_line(tt_ctx *c, int axis, double x);
+
+/* Index k of the interval lines[k] <= x < lines[k + 1] (clamped into
+ * 0 .. n - 2 for n lines). */
+uint32_t sw_tt_interval(const double *lines, uint32_t n, double x);
+
+/* The patch of knot cell (kc, kr), or SW_TT_NONE. */
+uint32_t sw_tt_knot_patch(const tt_ctx *c, uint32_t kc, uint32_t kr);
+
+/* The bound (M_uu h_u^2 + 2 M_uv h_u h_v + M_vv h_v^2) / 8 of grid cell
+ * (col, row) cut into parts_u x parts_v parts; -1 when not known. */
+double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts_u,
+                        uint32_t parts_v);
+
+/* Segments into cells (c->pairs, c->row_first), refining the grid where a
+ * cell holds a whole hole or too many loop points (core/sw_trim_bucket.c). */
+sw_status sw_tt_bucket(tt_ctx *c);
+
+/* The row sweep: every cell inside or crossed, triangulated and written
+ * (core/sw_trim_sweep.c). */
+sw_status sw_tt_sweep(tt_ctx *c);
+
+/* Exact evaluation (core/sw_trim_eval.c): position and unit normal of patch
+ * p at the surface's (u, v); grid point (col, line) through the line cache. */
+void sw_tt_eval_at(tt_ctx *c, uint32_t p, double u, double v, sw_vec3 *pos, sw_vec3 *normal);
+void sw_tt_eval_grid(tt_ctx *c, uint32_t p, uint32_t col, uint32_t line, sw_vec3 *pos,
+                     sw_vec3 *normal);
+sw_status sw_tt_eval_init(tt_ctx *c);
+
+/* Vertex output (core/sw_trim_tess.c). */
+sw_status sw_tt_vertex_for(tt_ctx *c, uint32_t patch, const sw_tt_pv *pv, uint32_t *out);
+sw_status sw_tt_new_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
+                                uint32_t *out);
+
+/* The vertex of grid point (col, line), evaluated on patch the first time. */
+static inline sw_status sw_tt_grid_vertex(tt_ctx *c, uint32_t patch, uint32_t col, uint32_t line,
+                                          uint32_t *out)
+{
+    uint32_t id = c->line_ids[line & 1][col];
+    if (id == SW_TT_NONE)
+        return sw_tt_new_grid_vertex(c, patch, col, line, out);
+    *out = id;
+    return SW_OK;
+}
+
+/* Writes a triangle where the caller's buffer holds it, counts it always. */
+static inline void sw_tt_put_triangle(tt_ctx *c, uint32_t a, uint32_t b, uint32_t d)
+{
+    const sw_trim_tess_buffers *o = c->out;
+    const uint32_t v[3] = {a, b, d};
+    for (uint32_t k = 0; o && k < 3; k++)
+        if (c->index_count + k < o->index_capacity)
+            o->indices[c->index_count + k] = (uint16_t)(o->base_vertex + v[k]);
+    c->index_count += 3;
+}
+/* The vertex table for at most `hashed` crossings and part corners. */
+sw_status sw_tt_init_vertices(tt_ctx *c, uint32_t hashed);
+uint32_t sw_tt_patch_at(const tt_ctx *c, double u, double v);
 
 #endif

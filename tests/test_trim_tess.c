@@ -178,13 +178,15 @@ static double dense_error(const surface *s, const loops *l, const mesh *m, int g
 
 /* Every loop point is an output vertex with its position bit for bit, and
  * every border vertex's position is some loop point's. */
-static void check_border(const loops *l, const mesh *m)
+/* on_segment: crossings carry SW_TRIM_CROSSING and their own positions
+ * (crossing_on_segment), so only loop points are checked. */
+static void check_border(const loops *l, const mesh *m, int on_segment)
 {
     static uint8_t seen[MAXP];
     memset(seen, 0, sizeof seen);
     uint32_t wrong = 0;
     for (uint32_t v = 0; v < m->nv; v++) {
-        if (g_ids[v] == SW_TRIM_INTERIOR)
+        if (g_ids[v] == SW_TRIM_INTERIOR || (on_segment && g_ids[v] == SW_TRIM_CROSSING))
             continue;
         uint32_t k = g_ids[v] - 1000;
         if (k >= l->n) {
@@ -248,7 +250,7 @@ static void test_untrimmed_covers_domain_and_meets_bound(void)
         int negative;
         SW_CHECK_NEAR(total_area(&m, &negative), 1.0, 1e-6);
         check_mesh_topology(&m);
-        check_border(&l, &m);
+        check_border(&l, &m, 0);
         double inner, border;
         measure_error(&s, &l, &m, 8, &inner, &border);
         uint32_t uncovered;
@@ -303,7 +305,7 @@ static void test_disc_with_hole(void)
         double area = total_area(&m, &negative);
         SW_CHECK_NEAR(area, expect, 1e-6);
         check_mesh_topology(&m);
-        check_border(&l, &m);
+        check_border(&l, &m, 0);
         uint32_t outside = 0;
         for (uint32_t t = 0; t < m.ni; t += 3) {
             double cu = 0, cv = 0;
@@ -335,7 +337,7 @@ static void test_cylinder_quarter(void)
     int negative;
     SW_CHECK_NEAR(total_area(&m, &negative), 1.0, 1e-6);
     check_mesh_topology(&m);
-    check_border(&l, &m);
+    check_border(&l, &m, 0);
     double inner, border, worst_radius = 0, worst_normal = 0;
     measure_error(&s, &l, &m, 8, &inner, &border);
     for (uint32_t v = 0; v < m.nv; v++) {
@@ -372,11 +374,117 @@ static void test_trim_along_knot_line(void)
     int negative;
     SW_CHECK_NEAR(total_area(&m, &negative), 0.5, 1e-6);
     check_mesh_topology(&m);
-    check_border(&l, &m);
+    check_border(&l, &m, 0);
     uint32_t right = 0;
     for (uint32_t v = 0; v < m.nv; v++)
         right += g_uv[2 * v] > 0.5f;
     SW_CHECK_MSG(right == 0, "%u vertices right of the trim", right);
+}
+
+/* As run(), with the runtime's options (core/sw_seam_surface.c). */
+static sw_status run_runtime(const surface *s, const loops *l, double err, mesh *m)
+{
+    sw_arena a;
+    sw_arena_init(&a, g_block, sizeof g_block);
+    sw_trim_loops lv = view(l);
+    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0};
+    const sw_trim_tess_options opt = {.crossing_on_segment = 1, .border_fraction = 0.65};
+    sw_status st = sw_trim_tess(s->patches, s->count, &lv, err, &opt, &a, &b, &m->res, NULL);
+    m->nv = m->res.vertex_count, m->ni = m->res.index_count;
+    SW_CHECK(a.used == 0);
+    return st;
+}
+
+static uint32_t triangles_outside(const loops *l, const mesh *m)
+{
+    uint32_t outside = 0;
+    for (uint32_t t = 0; t < m->ni; t += 3) {
+        double cu = 0, cv = 0;
+        for (int c = 0; c < 3; c++)
+            cu += g_uv[2 * g_idx[t + c]] / 3.0, cv += g_uv[2 * g_idx[t + c] + 1] / 3.0;
+        outside += !in_region(l, cu, cv);
+    }
+    return outside;
+}
+
+/* A small hole in a surface coarse enough to be one grid cell (a bolt hole
+ * in a face): the cell gets a grid line through the hole, so the hole's
+ * rim is clipped like any crossing and nothing is skipped. */
+static void test_hole_inside_one_cell(void)
+{
+    static surface s;
+    static loops l;
+    make_bump(&s, 1);
+    begin_loops(&l);
+    add_rect(&l, &s, 0, 1, 0, 1, 1);
+    add_circle(&l, &s, 0.3, 0.6, 0.05, 24, 1);
+    double expect = fabs(loop_area(&l, 0)) - fabs(loop_area(&l, 1));
+    for (int opts = 0; opts < 2; opts++) {
+        mesh m;
+        SW_CHECK((opts ? run_runtime(&s, &l, 1.0, &m) : run(&s, &l, 1.0, &m)) == SW_OK);
+        int negative;
+        SW_CHECK_NEAR(total_area(&m, &negative), expect, 1e-6);
+        check_mesh_topology(&m);
+        check_border(&l, &m, opts);
+        SW_CHECK(triangles_outside(&l, &m) == 0);
+        SW_CHECK(m.res.skipped_loops == 0 && m.res.fallback_ears == 0);
+        SW_CHECK(m.res.leaf_count >= 2 && m.res.error_bound <= 1.0);
+    }
+}
+
+/* 2000 loop points in what would be one cell: the cell is clipped in parts
+ * and gets grid lines until no part holds more than a few dozen points (no
+ * quadratic ear clipping over the whole seam, no fan of slivers). */
+static void test_many_points_in_one_cell(void)
+{
+    static surface s;
+    static loops l;
+    make_bump(&s, 1);
+    begin_loops(&l);
+    add_circle(&l, &s, 0.5, 0.5, 0.3, 2000, 0);
+    add_circle(&l, &s, 0.55, 0.45, 0.1, 1000, 1);
+    double expect = fabs(loop_area(&l, 0)) - fabs(loop_area(&l, 1));
+    for (int opts = 0; opts < 2; opts++) {
+        mesh m;
+        SW_CHECK((opts ? run_runtime(&s, &l, 1.0, &m) : run(&s, &l, 1.0, &m)) == SW_OK);
+        int negative;
+        SW_CHECK_NEAR(total_area(&m, &negative), expect, 1e-6);
+        check_mesh_topology(&m);
+        check_border(&l, &m, opts);
+        SW_CHECK(triangles_outside(&l, &m) == 0);
+        SW_CHECK(m.res.fallback_ears == 0 && m.res.skipped_loops == 0);
+        SW_CHECK_MSG(m.res.leaf_count > 8, "%u cells", m.res.leaf_count);
+    }
+}
+
+/* Loops exactly on grid lines: the knot lines at 0.5 and the sub-patch
+ * lines at 0.25 and 0.75 of a 2 x 2 bump, with a hole whose corners are
+ * grid points. The region shrink keeps every loop point off the lines, and
+ * the output keeps the caller's (u, v). */
+static void test_loops_on_grid_lines(void)
+{
+    static surface s;
+    static loops l;
+    make_bump(&s, 2);
+    begin_loops(&l);
+    add_rect(&l, &s, 0.25, 0.75, 0.25, 0.75, 8);
+    add_rect(&l, &s, 0.5, 0.625, 0.5, 0.625, 2);
+    for (int opts = 0; opts < 2; opts++) {
+        mesh m;
+        SW_CHECK((opts ? run_runtime(&s, &l, 1e-3, &m) : run(&s, &l, 1e-3, &m)) == SW_OK);
+        int negative;
+        SW_CHECK_NEAR(total_area(&m, &negative), 0.25 - 0.125 * 0.125, 1e-6);
+        check_mesh_topology(&m);
+        check_border(&l, &m, opts);
+        SW_CHECK(triangles_outside(&l, &m) == 0);
+        uint32_t beyond = 0;
+        for (uint32_t v = 0; v < m.nv; v++)
+            beyond += g_uv[2 * v] < 0.25f || g_uv[2 * v] > 0.75f || g_uv[2 * v + 1] < 0.25f ||
+                      g_uv[2 * v + 1] > 0.75f;
+        SW_CHECK_MSG(beyond == 0, "%u vertices beyond the loop", beyond);
+        SW_CHECK(m.res.fallback_ears == 0 && m.res.capped_count == 0 &&
+                 m.res.error_bound <= 1e-3);
+    }
 }
 
 static void test_sizes_and_determinism(void)
@@ -591,7 +699,7 @@ static void test_random_star_loops(void)
         int negative;
         SW_CHECK_NEAR(total_area(&m, &negative), expect, 1e-6);
         check_mesh_topology(&m);
-        check_border(&l, &m);
+        check_border(&l, &m, 0);
         SW_CHECK(m.res.fallback_ears == 0);
         if ((uint32_t)sw_test_failures != failures_before) {
             fprintf(stderr, "  trial %d failed\n", trial);
@@ -681,6 +789,9 @@ int main(void)
     SW_RUN(test_disc_with_hole);
     SW_RUN(test_cylinder_quarter);
     SW_RUN(test_trim_along_knot_line);
+    SW_RUN(test_hole_inside_one_cell);
+    SW_RUN(test_many_points_in_one_cell);
+    SW_RUN(test_loops_on_grid_lines);
     SW_RUN(test_sizes_and_determinism);
     SW_RUN(test_small_buffers);
     SW_RUN(test_bad_inputs);

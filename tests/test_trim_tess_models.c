@@ -1,7 +1,9 @@
 /* sw_trim_tess on real CAD trims: every surface of the shared IGES models
  * (imported natively, packed in memory), its trimming curves sampled into
  * polylines with the surface's positions (an untrimmed one: its domain
- * rectangle), tessellated at 1e-3 and 1e-4 of the model's size. Each surface
+ * rectangle), tessellated at 1e-3 and 1e-4 of the model's size, with the
+ * default options and with the runtime's (crossings on their segments, border
+ * cells at 0.65 of the error: more cells clipped in parts). Each surface
  * must succeed (or need more than 16-bit vertices), cover the area of its
  * sampled loops (even-odd), use every loop point it did not drop as a spike or
  * near repeat, and have no interior edge with one triangle (no crack, no
@@ -183,8 +185,8 @@ typedef struct tally {
     double seconds;
 } tally;
 
-static void check_surface(const sw_pack *pack, uint32_t s, double err, void *block, size_t bytes,
-                          tally *t)
+static void check_surface(const sw_pack *pack, uint32_t s, double err,
+                          const sw_trim_tess_options *opt, void *block, size_t bytes, tally *t)
 {
     const sw_pack_surface *surf = &pack->surfaces[s];
     uint32_t np = 0;
@@ -209,7 +211,7 @@ static void check_surface(const sw_pack *pack, uint32_t s, double err, void *blo
     sw_trim_tess_result r;
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    sw_status st = sw_trim_tess(g_patches, np, &loops, err, NULL, &a, &b, &r, &e);
+    sw_status st = sw_trim_tess(g_patches, np, &loops, err, opt, &a, &b, &r, &e);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     t->seconds += (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     t->surfaces++;
@@ -286,14 +288,17 @@ static int run_model(const char *path, void *block, size_t bytes)
         double diag = sqrt(((double)hi[0] - lo[0]) * (hi[0] - lo[0]) +
                            ((double)hi[1] - lo[1]) * (hi[1] - lo[1]) +
                            ((double)hi[2] - lo[2]) * (hi[2] - lo[2]));
-        for (double rel = 1e-3; rel >= 1e-4; rel /= 10) {
+        const sw_trim_tess_options runtime = {.crossing_on_segment = 1, .border_fraction = 0.65};
+        for (int k = 0; k < 4; k++) {
+            double rel = k % 2 ? 1e-4 : 1e-3;
             tally t = {0};
             for (uint32_t s = 0; s < pack.surface_count; s++)
-                check_surface(&pack, s, rel * diag, block, bytes, &t);
-            printf("%s: %u surfaces at error %.3g: %u ok (%llu triangles, %.3f s), %u too "
-                   "fine, %u failed; %u area, %u missing-point, %u open-edge mismatches\n", path,
-                   t.surfaces, rel * diag, t.ok, (unsigned long long)t.triangles, t.seconds,
-                   t.range, t.other, t.area_bad, t.points_missing, t.open);
+                check_surface(&pack, s, rel * diag, k < 2 ? NULL : &runtime, block, bytes, &t);
+            printf("%s (%s options): %u surfaces at error %.3g: %u ok (%llu triangles, %.3f s), "
+                   "%u too fine, %u failed; %u area, %u missing-point, %u open-edge mismatches\n",
+                   path, k < 2 ? "default" : "runtime", t.surfaces, rel * diag, t.ok,
+                   (unsigned long long)t.triangles, t.seconds, t.range, t.other, t.area_bad,
+                   t.points_missing, t.open);
             SW_CHECK(t.surfaces > 0 && t.ok + t.range == t.surfaces);
             SW_CHECK(t.area_bad == 0 && t.points_missing == 0 && t.open == 0);
             SW_CHECK_MSG(t.unchecked == 0, "%s: %u surfaces not checked (too many loops or "
