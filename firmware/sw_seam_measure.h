@@ -1,7 +1,7 @@
 /* Measurement of what the seam walk (sw_seam_walk.h) drew, independent of
- * how it was made: each drawn triangle is sampled and compared with the exact
- * surface at the same (u, v), in pixels; and once at start, each surface's
- * sewing offset (how far its sewn border lies from the surface: the file's
+ * how it was made: each drawn triangle is sampled and compared with the
+ * exact surface at the same (u, v), both projected to the screen, in
+ * pixels; and once at start, each surface's sewing offset (how far its sewn border lies from the surface: the file's
  * own gaps, which no level of detail removes). No allocation; GL-free. */
 #ifndef SW_SEAM_MEASURE_H
 #define SW_SEAM_MEASURE_H
@@ -42,9 +42,10 @@ typedef struct sw_seam_error {
                                   nearest depth */
 } sw_seam_error;
 
-/* Samples every triangle of mesh (centroid and edge midpoints) against the
- * exact surface, adds each sample's error in pixels to stats and the worst
- * figures to acc. */
+/* Samples every triangle of mesh (vertices, centroid and edge midpoints)
+ * against the exact surface, both projected to the screen (samples with a
+ * point off screen are not counted), adds each sample's error in pixels to
+ * stats and the worst figures to acc. */
 void sw_seam_measure_mesh(const sw_seam_mesh *mesh, const sw_seam_exact *exact,
                           const sw_view *view, sw_stats *stats, sw_seam_error *acc);
 
