@@ -26,6 +26,7 @@
 #include "sw_pack.h"
 #include "sw_png.h"
 #include "sw_renderer.h"
+#include "sw_seam_depth.h"
 #include "sw_seam_walk.h"
 #include "sw_stats.h"
 #include "sw_up_axis.h"
@@ -225,10 +226,13 @@ static sw_status start(runtime *rt, sw_error *err)
         if (mkdir(rt->opt.png_dir, 0777) != 0 && errno != EEXIST)
             return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.png_dir, strerror(errno));
     }
-    if ((st = sw_egl_headless_init(&rt->egl, SW_GL_API_GLES2, rt->opt.width, rt->opt.height,
-                                   err)))
+    if ((st = sw_egl_headless_init_depth(&rt->egl, SW_GL_API_GLES2, rt->opt.width,
+                                         rt->opt.height, rt->opt.depth_bits, err)))
         return st;
     rt->egl_up = 1;
+    rt->stats.depth_bits = rt->egl.depth_bits;
+    if (rt->opt.drop_surface >= 0)
+        rt->seam.drop_surface = (uint32_t)rt->opt.drop_surface;
     if ((st = sw_renderer_init(&rt->renderer, SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES,
                                  err)))
         return st;
@@ -270,15 +274,39 @@ static sw_status write_png(runtime *rt, int frame, sw_error *err)
                         (size_t)rt->opt.width * 3, &rt->arena, err);
 }
 
-/* Selects and draws through the Seam Graph; its own measurement. */
-static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uint64_t *triangles,
-                            uint32_t *drawn, uint32_t *capped, double *measure_ms, sw_error *err)
+/* The frame's view with near and far fitted to what the walk selected
+ * (sw_seam_depth.h), so the depth buffer's bits go where the model is; its
+ * projection starts the frame. */
+static sw_view begin_frame(runtime *rt, const sw_view *culled)
+{
+    static const float default_background[4] = { 0.93f, 0.94f, 0.96f, 1.0f };
+    float background[4] = { rt->opt.background[0], rt->opt.background[1],
+                            rt->opt.background[2], 1.0f };
+    double nearest, farthest;
+    sw_view view = *culled;
+    if (rt->opt.depth_fit && sw_seam_depth_range(&rt->seam, culled, &nearest, &farthest))
+        view = sw_view_fit_depth(culled, nearest, farthest, rt->egl.depth_bits);
+    sw_stats_add_depth_range(&rt->stats, view.near_z, view.far_z);
+    float mv[16], proj[16];
+    sw_mat4_to_float(&view.view, mv);
+    sw_mat4_to_float(&view.proj, proj);
+    sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height,
+                            rt->opt.background_set ? background : default_background, mv, proj);
+    return view;
+}
+
+/* Selects, starts the frame and draws through the Seam Graph; its own
+ * measurement. */
+static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
+                            uint64_t *triangles, uint32_t *drawn, uint32_t *capped,
+                            double *measure_ms, sw_error *err)
 {
     sw_seam_frame f;
-    sw_status st = sw_seam_walk_select(&rt->seam, view, &f, err);
+    sw_status st = sw_seam_walk_select(&rt->seam, culled, &f, err);
     if (st != SW_OK)
         return st;
-    sw_seam_walk_draw(&rt->seam, &rt->renderer, &rt->pool, view, measuring ? &rt->stats : NULL,
+    sw_view view = begin_frame(rt, culled);
+    sw_seam_walk_draw(&rt->seam, &rt->renderer, &rt->pool, &view, measuring ? &rt->stats : NULL,
                       &f);
     *triangles = f.triangles;
     *drawn = f.drawn_surfaces;
@@ -311,19 +339,14 @@ static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uin
 
 static sw_status run_frame(runtime *rt, int frame, sw_error *err)
 {
-    static const float background[4] = { 0.93f, 0.94f, 0.96f, 1.0f };
     double t0 = now_s();
     sw_camera_pose pose = pose_at(rt, frame);
-    sw_view view = sw_view_make(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
-                                rt->opt.height, &rt->model_box);
+    sw_view view = sw_view_make_depth(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
+                                      rt->opt.height, &rt->model_box, rt->egl.depth_bits);
     int measuring = frame % rt->opt.measure_every == 0;
-    float mv[16], proj[16];
-    sw_mat4_to_float(&view.view, mv);
-    sw_mat4_to_float(&view.proj, proj);
     uint64_t triangles = 0;
     uint32_t drawn = 0, capped = 0;
     double measure_ms = 0;
-    sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv, proj);
     sw_status st = seam_frame(rt, &view, measuring, &triangles, &drawn, &capped, &measure_ms,
                               err);
     if (st != SW_OK)

@@ -89,6 +89,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->pack = pack;
     w->error_px = error_px;
     w->bound_floor = 0.1f * pack->seam.tolerance;
+    w->drop_surface = UINT32_MAX;
     sw_status st = sw_seam_select_init(&w->select, &pack->seam, arena, err);
     if (st != SW_OK)
         return st;
@@ -400,7 +401,7 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
     for (uint32_t s = 0; s < w->pack->seam.surface_count; s++) {
         if (w->visible[s] == SW_SEAM_WALK_TINY)
             frame->vanished_surfaces++;
-        if (w->visible[s] != 1)
+        if (w->visible[s] != 1 || s == w->drop_surface)
             continue;
         draw_surface(w, s, r, pool, &part, frame);
         if (stats && w->cache.entries[s].state == SW_SEAM_READY) {

@@ -77,6 +77,8 @@ typedef struct sw_seam_walk {
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
     uint32_t frame;               /* frames selected so far */
+    uint32_t drop_surface;        /* a mutation for the image tests: this surface is never
+                                     drawn, and nothing counts it (UINT32_MAX: none) */
 } sw_seam_walk;
 
 typedef struct sw_seam_frame {

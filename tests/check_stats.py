@@ -12,7 +12,8 @@ sewn border is off a face by up to the gap whatever the level of detail:
 the walk measures that offset once per surface and reports it); error_px.max
 itself may exceed the bound by no more than that offset. The cache's fields
 are there and consistent (no more surfaces re-tessellated in a frame than
-the pack has)."""
+the pack has). The depth buffer's bits (16 at least) and the largest far /
+near of a frame are reported."""
 import json
 import sys
 
@@ -76,6 +77,10 @@ def main():
                    "cache fields: %s surfaces re-tessellated in all, at most %s a frame, %s "
                    "frames without" % (retess.get("total"), retess.get("max"),
                                        cache.get("frames_without_retess"))))
+    depth = stats.get("depth", {})
+    checks.append((depth.get("bits", 0) >= 16 and depth.get("far_over_near_max", 0) > 1,
+                   "depth buffer %s bits, far / near up to %s" % (depth.get("bits"),
+                                                                 depth.get("far_over_near_max"))))
     for ok, what in checks:
         print(("ok   " if ok else "FAIL ") + what)
     return 0 if all(ok for ok, _ in checks) else 1
