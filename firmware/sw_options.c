@@ -217,6 +217,11 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         } else if (!strcmp(a, "--background")) {
             o->background_set = 1;
             st = parse_rgb(v, o->background, err);
+        } else if (!strcmp(a, "--back-faces")) {
+            o->back_background = !strcmp(v, "background");
+            if (!o->back_background && strcmp(v, "lit"))
+                st = sw_error_set(err, SW_ERR_ARG, "--back-faces expects lit or background, "
+                                  "got '%s'", v);
         } else if (!strcmp(a, "--depth-bits")) {
             st = parse_int(a, v, 16, 24, &o->depth_bits, err);
             if (st == SW_OK && o->depth_bits != 16 && o->depth_bits != 24)
@@ -245,7 +250,8 @@ void sw_options_print_usage(const char *argv0)
             "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--config FILE] [--background R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
+            "          [--config FILE] [--background R,G,B] [--back-faces lit|background]\n"
+            "          [--depth-bits 16|24] [--depth-fit 0|1]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --config FILE       read the unit's configuration (example, every key and its\n"
             "                      default: firmware/seamwalk.ini); its values fill what the\n"
@@ -268,6 +274,9 @@ void sw_options_print_usage(const char *argv0)
             "                      marked good (default 30)\n"
             "  --background R,G,B  clear to this colour, levels 0..255 (default 237,240,245);\n"
             "                      one the model never has shows holes (tests/image_holes.c)\n"
+            "  --back-faces M      lit (default: both sides shaded) or background: back faces\n"
+            "                      flat in the background colour, so a crack into a solid\n"
+            "                      shows as background\n"
             "  --depth-bits B      at most B bits of depth, 16 or 24 (default 24: 24 where\n"
             "                      GL_OES_depth24 is offered, else 16; the stats say which)\n"
             "  --depth-fit 0|1     fit near and far to the surfaces drawn each frame (1,\n"

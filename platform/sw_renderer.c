@@ -39,6 +39,7 @@ static const char *const fragment_source =
     "precision mediump float;\n"
     "#endif\n"
     "uniform vec4 u_color;\n"
+    "uniform vec4 u_back;\n"
     "varying vec3 v_normal;\n"
     "varying vec3 v_eye_pos;\n"
     "const vec3 key_dir = vec3(0.408248, 0.816497, 0.408248);\n" /* normalize(1, 2, 1) */
@@ -48,6 +49,7 @@ static const char *const fragment_source =
     "const float specular = 0.2;\n"
     "const float shininess = 32.0;\n"
     "void main() {\n"
+    "    if (!gl_FrontFacing && u_back.a > 0.5) { gl_FragColor = vec4(u_back.rgb, 1.0); return; }\n"
     "    vec3 n = normalize(v_normal);\n"
     /* Two-sided: patch soups mix orientations, so light the side we see. */
     "    if (!gl_FrontFacing) n = -n;\n"
@@ -112,13 +114,14 @@ static sw_status link_program(sw_renderer *r, sw_error *err)
     r->u_model_view = glGetUniformLocation(prog, "u_model_view");
     r->u_projection = glGetUniformLocation(prog, "u_projection");
     r->u_color = glGetUniformLocation(prog, "u_color");
+    r->u_back = glGetUniformLocation(prog, "u_back");
     return SW_OK;
 }
 
 sw_status sw_renderer_init(sw_renderer *r, uint32_t max_vertices, uint32_t max_indices,
                            sw_error *err)
 {
-    *r = (sw_renderer){ .u_model_view = -1, .u_projection = -1, .u_color = -1 };
+    *r = (sw_renderer){ .u_model_view = -1, .u_projection = -1, .u_color = -1, .u_back = -1 };
     if (max_vertices < 1 || max_vertices > 65536 || max_indices < 3)
         return sw_error_set(err, SW_ERR_ARG,
                             "renderer: max_vertices %u must be 1..65536 (16-bit indices) and "
@@ -169,6 +172,14 @@ void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float 
     glUseProgram(r->program);
     glUniformMatrix4fv(r->u_model_view, 1, GL_FALSE, model_view);
     glUniformMatrix4fv(r->u_projection, 1, GL_FALSE, projection);
+}
+
+void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3])
+{
+    const float off[4] = { 0, 0, 0, 0 };
+    const float on[4] = { rgb ? rgb[0] : 0, rgb ? rgb[1] : 0, rgb ? rgb[2] : 0, 1 };
+    glUseProgram(r->program);
+    glUniform4fv(r->u_back, 1, rgb ? on : off);
 }
 
 void sw_renderer_set_color(sw_renderer *r, const float rgba[4])

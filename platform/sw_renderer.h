@@ -12,7 +12,7 @@
 
 typedef struct sw_renderer {
     unsigned int program;
-    int u_model_view, u_projection, u_color;
+    int u_model_view, u_projection, u_color, u_back;
     int a_position, a_normal;
     unsigned int vertex_buffer, index_buffer;
     uint32_t max_vertices, max_indices;
@@ -30,6 +30,12 @@ void sw_renderer_destroy(sw_renderer *r);
 void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float clear_rgba[4],
                              const float model_view[16], const float projection[16]);
 void sw_renderer_set_color(sw_renderer *r, const float rgba[4]);
+
+/* With rgb, back faces (clockwise on screen) are drawn flat in rgb instead
+ * of lit: drawn in the background colour, a crack into a closed solid shows
+ * as background, not as the solid's inside (tests/test_image_holes.sh).
+ * NULL, the default: both sides lit. */
+void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3]);
 
 /* Uploads one batch (buffer orphaning, then glBufferSubData) and draws it as
  * GL_TRIANGLES. vertex_count <= max_vertices, index_count <= max_indices. */

@@ -13,6 +13,9 @@ sw_add_fuzz_target(fuzz_camera_path SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz
 # The whole programs, end to end (tests/test_walk.sh).
 add_executable(image_compare image_compare.c)
 target_link_libraries(image_compare PRIVATE sw_stb ${MATH_LIBRARY})
+add_executable(image_holes image_holes.c)
+target_link_libraries(image_holes PRIVATE sw_stb ${MATH_LIBRARY})
+sw_apply_warnings(image_holes)
 foreach(mode teaset teapot golden errors seams)
   add_test(NAME walk_${mode}
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_walk.sh ${mode} ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
