@@ -38,6 +38,8 @@ typedef struct runtime {
     sw_pack pack;
     sw_camera_path path;
     sw_seam_walk seam;        /* in its own block: */
+    sw_seam_drawn drawn;      /* the seams as drawn, checked in measured frames */
+    sw_seam_fill fill;        /* fans over the tessellations' seam crossings */
     void *seam_block;         /* sized from the loaded pack, taken before the first frame */
     sw_arena seam_arena;
     sw_stats stats;
@@ -116,12 +118,17 @@ static sw_status load_path(runtime *rt, size_t path_bytes, sw_error *err)
 /* The seam walk's block: its size depends on the Seam Graph, so it is taken
  * once the pack is loaded, still before the first frame, within the same
  * --memory-mb limit as the main arena. */
+/* Border edges the drawn-seam check holds in a frame. */
+#define SW_DRAWN_EDGES (1u << 18)
+
 static sw_status init_seams(runtime *rt, sw_error *err)
 {
     if (!rt->pack.seam_header)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: the pack has no Seam Graph (build it "
                             "again with this seamwalk-pack)", rt->opt.pack_path);
-    size_t bytes = sw_seam_walk_arena_bytes(&rt->pack);
+    size_t bytes = sw_seam_walk_arena_bytes(&rt->pack) +
+                   sw_seam_drawn_arena_bytes(SW_DRAWN_EDGES, SW_SEAM_WALK_INDICES) +
+                   sw_seam_fill_arena_bytes(SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES);
     double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
     if ((double)bytes + (double)rt->arena.size > limit)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: the walk needs %.1f MiB, more than "
@@ -134,7 +141,17 @@ static sw_status init_seams(runtime *rt, sw_error *err)
                             bytes);
     sw_arena_init(&rt->seam_arena, rt->seam_block, bytes);
     rt->stats.seam_active_min = UINT32_MAX;
-    return sw_seam_walk_init(&rt->seam, &rt->pack, &rt->seam_arena, rt->opt.max_error_px, err);
+    sw_status st = sw_seam_walk_init(&rt->seam, &rt->pack, &rt->seam_arena, rt->opt.max_error_px,
+                                     err);
+    if (st == SW_OK)
+        st = sw_seam_drawn_init(&rt->drawn, &rt->model_box, rt->pack.seam.tolerance,
+                                SW_DRAWN_EDGES, SW_SEAM_WALK_INDICES, &rt->seam_arena, err);
+    if (st == SW_OK && rt->opt.fill_crossings)
+        st = sw_seam_fill_init(&rt->fill, SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES,
+                               &rt->seam_arena, err);
+    rt->seam.drawn = &rt->drawn;
+    rt->seam.fill = rt->opt.fill_crossings ? &rt->fill : NULL;
+    return st;
 }
 
 static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
@@ -298,6 +315,19 @@ static sw_view begin_frame(runtime *rt, const sw_view *culled)
     return view;
 }
 
+/* The frame's seams as drawn into the stats. */
+static void add_drawn(sw_stats *s, sw_seam_drawn *d)
+{
+    sw_seam_drawn_result r;
+    sw_seam_drawn_check(d, &r);
+    s->drawn_unchecked_frames += !r.checked;
+    s->drawn_points_max = r.points > s->drawn_points_max ? r.points : s->drawn_points_max;
+    s->drawn_t_vertices_max = r.t_vertices > s->drawn_t_vertices_max ? r.t_vertices
+                                                                     : s->drawn_t_vertices_max;
+    s->drawn_gaps_max = r.gaps > s->drawn_gaps_max ? r.gaps : s->drawn_gaps_max;
+    s->drawn_free_max = r.free_points > s->drawn_free_max ? r.free_points : s->drawn_free_max;
+}
+
 /* Selects, starts the frame and draws through the Seam Graph; its own
  * measurement. */
 static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
@@ -309,8 +339,11 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
     if (st != SW_OK)
         return st;
     sw_view view = begin_frame(rt, culled);
+    sw_seam_drawn_begin(&rt->drawn);
     sw_seam_walk_draw(&rt->seam, &rt->renderer, &rt->pool, &view, measuring ? &rt->stats : NULL,
                       &f);
+    if (measuring)
+        add_drawn(&rt->stats, &rt->drawn);
     *triangles = f.triangles;
     *drawn = f.drawn_surfaces;
     *capped = f.capped_surfaces;
@@ -336,6 +369,7 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
         s->seam_error_beyond_sewing_px = fmax(s->seam_error_beyond_sewing_px,
                                               f.error_beyond_sewing_px);
         s->seam_sewing_offset_px = fmax(s->seam_sewing_offset_px, f.sewing_offset_px);
+        s->seam_chord_px_max = fmax(s->seam_chord_px_max, f.seam_chord_px);
     }
     return SW_OK;
 }

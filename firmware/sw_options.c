@@ -79,6 +79,7 @@ static void set_defaults(sw_options *o)
     o->good_after_s = c.good_after_s;
     o->depth_bits = 24;
     o->depth_fit = 1;
+    o->fill_crossings = 1;
     o->drop_surface = -1;
 }
 
@@ -228,6 +229,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
                 st = sw_error_set(err, SW_ERR_ARG, "--depth-bits expects 16 or 24, got '%s'", v);
         } else if (!strcmp(a, "--depth-fit")) {
             st = parse_int(a, v, 0, 1, &o->depth_fit, err);
+        } else if (!strcmp(a, "--fill-crossings")) {
+            st = parse_int(a, v, 0, 1, &o->fill_crossings, err);
         } else if (!strcmp(a, "--test-drop-surface")) {
             int s = 0;
             st = parse_int(a, v, 0, INT_MAX, &s, err);
@@ -251,7 +254,7 @@ void sw_options_print_usage(const char *argv0)
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
             "          [--config FILE] [--background R,G,B] [--back-faces lit|background]\n"
-            "          [--depth-bits 16|24] [--depth-fit 0|1]\n"
+            "          [--depth-bits 16|24] [--depth-fit 0|1] [--fill-crossings 0|1]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --config FILE       read the unit's configuration (example, every key and its\n"
             "                      default: firmware/seamwalk.ini); its values fill what the\n"
@@ -281,6 +284,9 @@ void sw_options_print_usage(const char *argv0)
             "                      GL_OES_depth24 is offered, else 16; the stats say which)\n"
             "  --depth-fit 0|1     fit near and far to the surfaces drawn each frame (1,\n"
             "                      default) or to the model's box (0)\n"
+            "  --fill-crossings 0|1  close each seam crossing (a T-junction with the surface\n"
+            "                      across) with a zero-area fan (1, default), or not (0:\n"
+            "                      single-pixel pinholes open along such seams)\n"
             "  --test-drop-surface S  never draw surface S: a hole on purpose, for the image\n"
             "                      tests' mutants\n",
             argv0);

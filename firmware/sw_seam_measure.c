@@ -67,9 +67,11 @@ static int on_screen(const sw_view *view, sw_vec3 p, double xy[2])
 /* One sample: the flat triangle's point at barycentric weights b and the
  * exact surface at the same interpolated (u, v), both projected to the
  * screen; their distance in pixels, counted only when both are on screen.
- * Also what it exceeds the surface's sewing offset by, against the bound. */
+ * Also what it exceeds the surface's sewing offset by, against the bound.
+ * Samples of a zero-area triangle (chord) go to acc->chord_px alone. */
 static void sample(const sw_seam_mesh *m, const sw_seam_exact *e, const uint16_t idx[3],
-                   const double b[3], const sw_view *view, sw_stats *stats, sw_seam_error *acc)
+                   const double b[3], int chord, const sw_view *view, sw_stats *stats,
+                   sw_seam_error *acc)
 {
     double flat[3] = { 0, 0, 0 }, uv[2] = { 0, 0 };
     for (int k = 0; k < 3; k++) {
@@ -84,6 +86,10 @@ static void sample(const sw_seam_mesh *m, const sw_seam_exact *e, const uint16_t
     if (!on_screen(view, q, sq) || !on_screen(view, p, sp))
         return;
     double error_px = hypot(sq[0] - sp[0], sq[1] - sp[1]);
+    if (chord) {
+        acc->chord_px = fmax(acc->chord_px, error_px);
+        return;
+    }
     sw_stats_add_error_px(stats, error_px);
     double d = sw_v3_length(sw_v3_sub(q, p));
     if (d <= e->sew_offset || error_px == 0)
@@ -97,6 +103,19 @@ static void sample(const sw_seam_mesh *m, const sw_seam_exact *e, const uint16_t
     acc->beyond_sewing_px = fmax(acc->beyond_sewing_px, (d - e->sew_offset) / allowed * e->error_px);
 }
 
+/* A triangle whose corners lie on one line (to 1e-5 of its edges): the
+ * fill fans over seam crossings (sw_seam_fill.h), which cover no area and
+ * lie on a seam's chord. */
+static int collinear(const sw_seam_mesh *m, const uint16_t idx[3])
+{
+    const float *a = m->verts[idx[0]].pos, *b = m->verts[idx[1]].pos, *c = m->verts[idx[2]].pos;
+    sw_vec3 ab = sw_v3(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+    sw_vec3 ac = sw_v3(c[0] - a[0], c[1] - a[1], c[2] - a[2]);
+    sw_vec3 n = sw_v3(ab.y * ac.z - ab.z * ac.y, ab.z * ac.x - ab.x * ac.z,
+                      ab.x * ac.y - ab.y * ac.x);
+    return sw_v3_length(n) <= 1e-5 * sw_v3_length(ab) * sw_v3_length(ac);
+}
+
 void sw_seam_measure_mesh(const sw_seam_mesh *mesh, const sw_seam_exact *exact,
                           const sw_view *view, sw_stats *stats, sw_seam_error *acc)
 {
@@ -105,9 +124,11 @@ void sw_seam_measure_mesh(const sw_seam_mesh *mesh, const sw_seam_exact *exact,
     static const double weights[7][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
                                           { 1 / 3.0, 1 / 3.0, 1 / 3.0 }, { 0.5, 0.5, 0 },
                                           { 0, 0.5, 0.5 }, { 0.5, 0, 0.5 } };
-    for (uint32_t i = 0; i + 2 < mesh->index_count; i += 3)
+    for (uint32_t i = 0; i + 2 < mesh->index_count; i += 3) {
+        int chord = collinear(mesh, mesh->indices + i);
         for (int k = 0; k < 7; k++)
-            sample(mesh, exact, mesh->indices + i, weights[k], view, stats, acc);
+            sample(mesh, exact, mesh->indices + i, weights[k], chord, view, stats, acc);
+    }
     double depth = fmax(exact->depth, view->near_z);
     acc->sewing_offset_px = fmax(acc->sewing_offset_px,
                                  exact->sew_offset * view->px_per_unit / depth);

@@ -316,6 +316,11 @@ static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame 
         e->holes_filled = st == SW_OK;
     }
     frame->retessellated++;
+    if (st == SW_OK && w->fill) {
+        uint32_t left = 0;
+        sw_seam_fill_crossings(w->fill, w->ids, t.vertex_count, w->indices, &t.index_count,
+                               SW_SEAM_WALK_INDICES, &left);
+    }
     if (st == SW_OK && keep(w, s, &t, pool, frame)) {
         e->error_bound = (float)t.error_bound;
         e->capped = (uint8_t)capped;
@@ -347,6 +352,8 @@ static void measure_surface(sw_seam_walk *w, uint32_t s, const sw_view *view, sw
     const sw_seam_exact exact = { w->patches, patch_count, w->sew_offset[s], w->depth[s],
                                   w->error_px, w->bound_floor };
     sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
+    if (w->drawn)
+        sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
 }
 
 static double ms_since(const struct timespec *a)
@@ -395,7 +402,7 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
                        sw_stats *stats, sw_seam_frame *frame)
 {
     uint32_t part = UINT32_MAX;
-    sw_seam_error acc = { 0, 0 };
+    sw_seam_error acc = { 0, 0, 0 };
     if (stats)
         stats->measured_frames++;
     for (uint32_t s = 0; s < w->pack->seam.surface_count; s++) {
@@ -413,4 +420,5 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
     }
     frame->error_beyond_sewing_px = acc.beyond_sewing_px;
     frame->sewing_offset_px = acc.sewing_offset_px;
+    frame->seam_chord_px = acc.chord_px;
 }

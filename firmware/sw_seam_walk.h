@@ -35,6 +35,8 @@
 #include "sw_pack.h"
 #include "sw_renderer.h"
 #include "sw_seam_cache.h"
+#include "sw_seam_drawn.h"
+#include "sw_seam_fill.h"
 #include "sw_seam_select.h"
 #include "sw_stats.h"
 #include "sw_tess.h"
@@ -77,6 +79,10 @@ typedef struct sw_seam_walk {
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
     uint32_t frame;               /* frames selected so far */
+    sw_seam_drawn *drawn;         /* with it, measuring also hands it every drawn mesh (the
+                                     caller begins and checks it); NULL: not */
+    sw_seam_fill *fill;           /* with it, every tessellation's crossings get fill fans
+                                     (no T-junction pinholes); NULL: drawn as made */
     uint32_t drop_surface;        /* a mutation for the image tests: this surface is never
                                      drawn, and nothing counts it (UINT32_MAX: none) */
 } sw_seam_walk;
@@ -108,6 +114,8 @@ typedef struct sw_seam_frame {
                                      coarser than half a pixel (so <= error_px holds) */
     double sewing_offset_px;      /* measured: the largest sewing offset of a drawn surface, in
                                      pixels at its nearest depth */
+    double seam_chord_px;         /* measured: the most a seam chord lies from its surface at
+                                     the same (u, v), sw_seam_measure.h */
 } sw_seam_frame;
 
 /* Bytes sw_seam_walk_init takes from its arena for this validated pack

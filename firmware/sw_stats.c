@@ -233,6 +233,12 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
                 (unsigned long long)s->seam_arena_bytes,
                 (unsigned long long)s->seam_arena_peak_bytes, s->seam_sewing_offset_px,
                 s->seam_error_beyond_sewing_px);
+    fprintf(f, "  \"seam_drawn\": {\"points_max\": %llu, \"t_vertices_max\": %llu, "
+               "\"gaps_max\": %llu, \"free_points_max\": %llu, \"unchecked_frames\": %d, "
+               "\"chord_error_px_max\": %.5f},\n",
+            (unsigned long long)s->drawn_points_max, (unsigned long long)s->drawn_t_vertices_max,
+            (unsigned long long)s->drawn_gaps_max, (unsigned long long)s->drawn_free_max,
+            s->drawn_unchecked_frames, s->seam_chord_px_max);
     fprintf(f, "  \"depth\": {\"bits\": %d, \"far_over_near_max\": %.1f},\n", s->depth_bits,
             s->depth_far_over_near_max);
     if (s->store)

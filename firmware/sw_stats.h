@@ -39,6 +39,11 @@ typedef struct sw_stats {
     double seam_error_beyond_sewing_px; /* measured error beyond each surface's sewing offset */
     double seam_sewing_offset_px;       /* largest sewing offset of a drawn surface, pixels */
 
+    /* The seams as drawn (firmware/sw_seam_drawn.h), the most of a measured frame. */
+    uint64_t drawn_points_max, drawn_t_vertices_max, drawn_gaps_max, drawn_free_max;
+    int drawn_unchecked_frames;
+    double seam_chord_px_max;    /* seam chords against their surfaces, sw_seam_measure.h */  /* measured frames whose borders overflowed the check */
+
     /* The depth buffer (platform/sw_egl_headless.h) and the planes fitted
      * to each frame's drawn surfaces (firmware/sw_seam_depth.h). */
     int depth_bits;
