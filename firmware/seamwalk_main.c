@@ -254,9 +254,8 @@ static sw_status start(runtime *rt, sw_error *err)
                                  err)))
         return st;
     rt->renderer_up = 1;
-    if (rt->opt.back_background) /* the default background when none is given */
-        sw_renderer_set_back_color(&rt->renderer, rt->opt.background_set ? rt->opt.background
-                                                  : (const float[3]){ 0.93f, 0.94f, 0.96f });
+    if (rt->opt.back_flat)
+        sw_renderer_set_back_color(&rt->renderer, rt->opt.back_color);
     if ((st = sw_gl_pool_init(&rt->pool, rt->seam.cache.vertices, rt->seam.cache.indices, err)))
         return st;
     rt->pool_up = 1;

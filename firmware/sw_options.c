@@ -45,18 +45,18 @@ static sw_status parse_size(const char *text, int *w, int *h, sw_error *err)
     return st != SW_OK ? st : parse_int("--headless height", x + 1, 16, 8192, h, err);
 }
 
-/* --background R,G,B: three levels 0..255. */
-static sw_status parse_rgb(const char *text, float rgb[3], sw_error *err)
+/* --background R,G,B (and --back-faces): three levels 0..255. */
+static sw_status parse_rgb(const char *opt, const char *text, float rgb[3], sw_error *err)
 {
     int level[3], used = 0;
     if (sscanf(text, "%d,%d,%d%n", &level[0], &level[1], &level[2], &used) != 3 ||
         text[used] != '\0')
-        return sw_error_set(err, SW_ERR_ARG, "--background expects R,G,B (0..255 each), got '%s'",
+        return sw_error_set(err, SW_ERR_ARG, "%s expects R,G,B (0..255 each), got '%s'", opt,
                             text);
     for (int c = 0; c < 3; c++) {
         if (level[c] < 0 || level[c] > 255)
-            return sw_error_set(err, SW_ERR_ARG, "--background expects R,G,B (0..255 each), "
-                                "got '%s'", text);
+            return sw_error_set(err, SW_ERR_ARG, "%s expects R,G,B (0..255 each), got '%s'", opt,
+                                text);
         rgb[c] = (float)level[c] / 255.0f;
     }
     return SW_OK;
@@ -217,12 +217,11 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_real(a, v, 0, 1e9, &o->good_after_s, err);
         } else if (!strcmp(a, "--background")) {
             o->background_set = 1;
-            st = parse_rgb(v, o->background, err);
+            st = parse_rgb(a, v, o->background, err);
         } else if (!strcmp(a, "--back-faces")) {
-            o->back_background = !strcmp(v, "background");
-            if (!o->back_background && strcmp(v, "lit"))
-                st = sw_error_set(err, SW_ERR_ARG, "--back-faces expects lit or background, "
-                                  "got '%s'", v);
+            o->back_flat = strcmp(v, "lit") != 0;
+            if (o->back_flat)
+                st = parse_rgb(a, v, o->back_color, err);
         } else if (!strcmp(a, "--depth-bits")) {
             st = parse_int(a, v, 16, 24, &o->depth_bits, err);
             if (st == SW_OK && o->depth_bits != 16 && o->depth_bits != 24)
@@ -253,7 +252,7 @@ void sw_options_print_usage(const char *argv0)
             "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--config FILE] [--background R,G,B] [--back-faces lit|background]\n"
+            "          [--config FILE] [--background R,G,B] [--back-faces lit|R,G,B]\n"
             "          [--depth-bits 16|24] [--depth-fit 0|1] [--fill-crossings 0|1]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --config FILE       read the unit's configuration (example, every key and its\n"
@@ -277,9 +276,9 @@ void sw_options_print_usage(const char *argv0)
             "                      marked good (default 30)\n"
             "  --background R,G,B  clear to this colour, levels 0..255 (default 237,240,245);\n"
             "                      one the model never has shows holes (tests/image_holes.c)\n"
-            "  --back-faces M      lit (default: both sides shaded) or background: back faces\n"
-            "                      flat in the background colour, so a crack into a solid\n"
-            "                      shows as background\n"
+            "  --back-faces M      lit (default: both sides shaded) or R,G,B: back faces flat\n"
+            "                      in that colour, so the inside of a solid showing through\n"
+            "                      a crack can be told from its outside\n"
             "  --depth-bits B      at most B bits of depth, 16 or 24 (default 24: 24 where\n"
             "                      GL_OES_depth24 is offered, else 16; the stats say which)\n"
             "  --depth-fit 0|1     fit near and far to the surfaces drawn each frame (1,\n"

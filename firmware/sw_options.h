@@ -28,8 +28,9 @@ typedef struct sw_options {
     double good_after_s;         /* --good-after-s S: healthy walk time before mark-good; default 30 */
     int background_set;          /* --background R,G,B: clear to it instead of the default */
     float background[3];         /* 0..1, from 0..255 levels */
-    int back_background;         /* --back-faces background: back faces in the background
-                                    colour (tests/test_image_holes.sh); 0, lit: default */
+    int back_flat;               /* --back-faces R,G,B: back faces flat in that colour
+                                    (tests/test_image_holes.sh); 0, lit: default */
+    float back_color[3];
     int depth_bits;              /* --depth-bits 16|24: at most this many; default 24 */
     int depth_fit;               /* --depth-fit 0|1: near and far fitted to the drawn
                                     surfaces each frame (1, default) or to the model box */

@@ -1,5 +1,5 @@
-/* image_holes TEST.png REFERENCE.png R,G,B [--margin PX] [--reach PX] [--max N]
- *             [--out HOLES.png]
+/* image_holes TEST.png REFERENCE.png R,G,B [--inside R,G,B] [--margin PX] [--reach PX]
+ *             [--max N] [--max-inside N] [--out HOLES.png]
  * Cracks and holes in a picture, told by pixels alone (no bookkeeping of the
  * program that drew it): both pictures are the same view drawn over the
  * background R,G,B, a colour the model never has, REFERENCE densely (the
@@ -8,12 +8,17 @@
  * around it, so it is inside the reference's silhouette, not on its edge,
  * where a coarser tessellation may rightly cut a pixel off, and TEST shows
  * the background. One exception: where a front part's contour crosses a
- * rear part's silhouette, both may move by their bound and open a notch of
- * background a few pixels into the union's interior; background reached from
- * outside the interior through at most --reach (default 3) background pixels
- * of TEST is such a notch (counted apart), not a hole. A crack or a missing
- * surface lies farther in. A background pixel is one within 2 levels of
- * R,G,B per channel. Prints the
+ * rear part's silhouette, or a thin wedge of background ends, edges that
+ * move by their bound can open a notch a few pixels into the union's
+ * interior; candidates within --reach (default 3) pixels of TEST's open
+ * pixels outside the interior are such notches (counted apart), not holes.
+ * A crack or a missing surface lies farther in. With --inside, back faces were drawn flat in
+ * that colour: the reference's back faces bound its interior as its
+ * background does (a contour is a silhouette too), and TEST pixels of that
+ * colour inside are the solid's inside showing through (a crack into it, or
+ * a contour the coarser tessellation moved: counted apart, at most
+ * --max-inside, default no limit). A pixel is of a colour when within 2
+ * levels of it per channel. Prints the
  * count, the model's interior pixels and the first holes; --out writes the
  * holes in red over the test picture dimmed. Exit 0 when at most N (default
  * 0) holes, 1 when more, 2 on error (unreadable files, sizes that differ, a
@@ -44,16 +49,30 @@ static int load(const char *path, picture *p)
 
 static int is_background(const unsigned char *px, const int bg[3])
 {
+    if (bg[0] < 0)
+        return 0;
     for (int c = 0; c < 3; c++)
         if (abs(px[c] - bg[c]) > 2)
             return 0;
     return 1;
 }
 
+typedef struct options {
+    int bg[3], inside[3], margin, reach;
+    long max_holes, max_inside;
+    const char *out;
+} options;
+
+/* Not the model's outside: the background or, with --inside, a back face. */
+static int is_open(const unsigned char *px, const options *o)
+{
+    return is_background(px, o->bg) || is_background(px, o->inside);
+}
+
 /* Inside the reference's silhouette: the model at every pixel within
  * margin (Euclidean) of (x, y); beyond the picture's edge counts as model
  * (the frame's edge is no silhouette). */
-static int interior(const picture *ref, const int bg[3], int x, int y, int margin)
+static int interior(const picture *ref, const options *o, int x, int y, int margin)
 {
     for (int dy = -margin; dy <= margin; dy++)
         for (int dx = -margin; dx <= margin; dx++) {
@@ -61,7 +80,7 @@ static int interior(const picture *ref, const int bg[3], int x, int y, int margi
             if (dx * dx + dy * dy > margin * margin || u < 0 || v < 0 || u >= ref->w ||
                 v >= ref->h)
                 continue;
-            if (is_background(ref->rgb + 3 * ((size_t)v * ref->w + u), bg))
+            if (is_open(ref->rgb + 3 * ((size_t)v * ref->w + u), o))
                 return 0;
         }
     return 1;
@@ -78,15 +97,10 @@ static int parse_rgb(const char *text, int bg[3])
     return 1;
 }
 
-typedef struct options {
-    int bg[3], margin, reach;
-    long max_holes;
-    const char *out;
-} options;
-
 static int parse_options(int argc, char **argv, options *o)
 {
-    o->margin = 2, o->reach = 3, o->max_holes = 0, o->out = NULL;
+    o->margin = 2, o->reach = 3, o->max_holes = 0, o->max_inside = -1, o->out = NULL;
+    o->inside[0] = o->inside[1] = o->inside[2] = -1;
     if (argc < 4 || !parse_rgb(argv[3], o->bg))
         return 0;
     for (int i = 4; i < argc; i++) {
@@ -94,6 +108,11 @@ static int parse_options(int argc, char **argv, options *o)
             return 0;
         if (!strcmp(argv[i], "--margin"))
             o->margin = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--inside")) {
+            if (!parse_rgb(argv[++i], o->inside))
+                return 0;
+        } else if (!strcmp(argv[i], "--max-inside"))
+            o->max_inside = atol(argv[++i]);
         else if (!strcmp(argv[i], "--reach"))
             o->reach = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--max"))
@@ -122,32 +141,21 @@ static int write_holes(const char *path, const picture *test, const unsigned cha
     return ok;
 }
 
-/* mark[i]: 0 model in TEST, 1 TEST background outside the reference's
- * interior, 2 TEST background inside it (a hole candidate). Candidates
- * within reach steps (8-connected, through candidates) of a 1 become 3:
- * notches at crossing silhouettes. Rounds of growth, reach of them. */
+/* mark[i]: 0 model in TEST, 1 TEST open (background or inside) outside the
+ * reference's interior, 2 TEST open inside it (a hole candidate).
+ * Candidates within reach pixels (Chebyshev) of a 1 become 4: notches where
+ * silhouettes cross or a thin wedge of background ends (its tip moves along
+ * the wedge by far more than the edges move across it). */
 static void mark_notches(unsigned char *mark, int w, int h, int reach)
 {
-    for (int round = 0; round < reach; round++) {
-        int grown = 0;
-        for (int y = 0; y < h; y++)
-            for (int x = 0; x < w; x++) {
-                unsigned char *m = &mark[(size_t)y * w + x];
-                if (*m != 2)
-                    continue;
-                for (int d = 0; d < 9 && *m == 2; d++) {
-                    int u = x + d % 3 - 1, v = y + d / 3 - 1;
-                    if (u >= 0 && v >= 0 && u < w && v < h &&
-                        (mark[(size_t)v * w + u] == 1 || mark[(size_t)v * w + u] == 4))
-                        *m = 5; /* reached this round; a 4 from the rounds before */
-                }
-                grown += *m == 5;
-            }
-        for (size_t i = 0; i < (size_t)w * h; i++)
-            mark[i] = mark[i] == 5 ? 4 : mark[i];
-        if (!grown)
-            break;
-    }
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            unsigned char *m = &mark[(size_t)y * w + x];
+            for (int v = y - reach; v <= y + reach && *m == 2; v++)
+                for (int u = x - reach; u <= x + reach && *m == 2; u++)
+                    if (u >= 0 && v >= 0 && u < w && v < h && mark[(size_t)v * w + u] == 1)
+                        *m = 4;
+        }
 }
 
 static int compare(const char *test_path, const char *ref_path, const picture *test,
@@ -157,14 +165,14 @@ static int compare(const char *test_path, const char *ref_path, const picture *t
     unsigned char *mark = calloc(n, 1);
     if (!mark)
         return 2;
-    long holes = 0, notches = 0, inside = 0, model = 0;
+    long holes = 0, insides = 0, notches = 0, inside = 0, model = 0;
     for (int y = 0; y < ref->h; y++)
         for (int x = 0; x < ref->w; x++) {
             size_t i = (size_t)y * ref->w + x;
-            model += !is_background(ref->rgb + 3 * i, o->bg);
-            int in = interior(ref, o->bg, x, y, o->margin);
+            model += !is_open(ref->rgb + 3 * i, o);
+            int in = interior(ref, o, x, y, o->margin);
             inside += in;
-            if (is_background(test->rgb + 3 * i, o->bg))
+            if (is_open(test->rgb + 3 * i, o))
                 mark[i] = in ? 2 : 1;
         }
     mark_notches(mark, ref->w, ref->h, o->reach);
@@ -172,18 +180,21 @@ static int compare(const char *test_path, const char *ref_path, const picture *t
         notches += mark[i] == 4;
         if (mark[i] != 2)
             continue;
-        if (holes++ < 8)
-            printf("  hole at %zu,%zu\n", i % (size_t)ref->w, i / (size_t)ref->w);
+        int background = is_background(test->rgb + 3 * i, o->bg);
+        holes += background, insides += !background;
+        if (holes + insides <= 8)
+            printf("  %s at %zu,%zu\n", background ? "hole" : "inside", i % (size_t)ref->w,
+                   i / (size_t)ref->w);
     }
     for (size_t i = 0; i < n; i++)
         mark[i] = mark[i] == 2;
-    int rc = model == 0 ? 2 : holes > o->max_holes;
+    int rc = model == 0 ? 2 : holes > o->max_holes || (o->max_inside >= 0 && insides > o->max_inside);
     if (model == 0)
         fprintf(stderr, "image_holes: %s shows no model over %d,%d,%d: nothing to compare\n",
                 ref_path, o->bg[0], o->bg[1], o->bg[2]);
-    printf("%s vs %s: %ld holes in %ld interior pixels of the model (%ld pixels; margin %d px; "
-           "%ld notch pixels at crossing silhouettes, reach %d; at most %ld)\n", test_path,
-           ref_path, holes, inside, model, o->margin, notches, o->reach, o->max_holes);
+    printf("%s vs %s: %ld holes, %ld inside in %ld interior pixels of the model (%ld pixels; "
+           "margin %d px; %ld notch pixels at crossing silhouettes, reach %d)\n", test_path,
+           ref_path, holes, insides, inside, model, o->margin, notches, o->reach);
     if (o->out && holes && !write_holes(o->out, test, mark))
         fprintf(stderr, "image_holes: cannot write %s\n", o->out), rc = 2;
     free(mark);
@@ -194,8 +205,9 @@ int main(int argc, char **argv)
 {
     options o;
     if (!parse_options(argc, argv, &o)) {
-        fprintf(stderr, "usage: image_holes TEST.png REFERENCE.png R,G,B [--margin PX] "
-                        "[--reach PX] [--max N] [--out HOLES.png]\n");
+        fprintf(stderr, "usage: image_holes TEST.png REFERENCE.png R,G,B [--inside R,G,B] "
+                        "[--margin PX] [--reach PX] [--max N] [--max-inside N] "
+                        "[--out HOLES.png]\n");
         return 2;
     }
     picture test = { 0 }, ref = { 0 };
