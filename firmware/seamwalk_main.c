@@ -360,6 +360,8 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
         s->surfaces_holes_filled_max = f.holes_filled;
     if (f.cracks > s->cracks_max)   /* counted every frame: a refused surface is one */
         s->cracks_max = f.cracks;
+    if (f.fill_triangles > s->fill_triangles_max)
+        s->fill_triangles_max = f.fill_triangles;
     if (f.crossings > s->seam_crossings_max)
         s->seam_crossings_max = f.crossings;
     sw_stats_add_cache_frame(s, f.retessellated, f.retess_triangles, f.upload_bytes, f.evicted,

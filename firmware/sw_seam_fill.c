@@ -86,23 +86,24 @@ static int link_border(sw_seam_fill *f, const uint32_t *ids, uint32_t vertex_cou
 }
 
 /* The fan over the run of crossings after seam vertex a; the crossings it
- * covered, 0 when the run does not end at a seam vertex or does not fit. */
+ * covered, 0 when the run does not end at a seam vertex (a itself, for a
+ * loop shrunk to one) or does not fit. */
 static uint32_t fill_run(const sw_seam_fill *f, const uint32_t *ids, uint32_t vertex_count,
                          uint32_t a, uint16_t *indices, uint32_t *index_count, uint32_t capacity)
 {
     uint32_t c = f->next[a], k = 0, start = *index_count;
     while (c < vertex_count && ids[c] == SW_TRIM_CROSSING && k <= vertex_count) {
         uint32_t n = f->next[c];
-        if (n >= vertex_count || n == a)
+        k++;
+        if (n == a) /* a loop left with a as its only seam vertex: the fan is whole */
+            return k;
+        if (n >= vertex_count)
             break;
-        if (*index_count + 3 > capacity) {
-            *index_count = start;
-            return 0;
-        }
+        if (*index_count + 3 > capacity)
+            break;
         indices[(*index_count)++] = (uint16_t)a;
         indices[(*index_count)++] = (uint16_t)c;
         indices[(*index_count)++] = (uint16_t)n;
-        k++;
         c = n;
     }
     if (k == 0 || c >= vertex_count || ids[c] == SW_TRIM_CROSSING) {
@@ -125,9 +126,9 @@ uint32_t sw_seam_fill_crossings(sw_seam_fill *f, const uint32_t *ids, uint32_t v
     for (uint32_t a = 0; a < vertex_count; a++) {
         if (ids[a] == SW_TRIM_CROSSING || !on_border(ids[a]) || f->next[a] >= vertex_count)
             continue;
-        uint32_t k = fill_run(f, ids, vertex_count, a, indices, index_count, capacity);
-        filled += k;
-        triangles += k;
+        uint32_t before = *index_count;
+        filled += fill_run(f, ids, vertex_count, a, indices, index_count, capacity);
+        triangles += (*index_count - before) / 3;
     }
     *crossings_left = crossings - filled;
     return triangles;

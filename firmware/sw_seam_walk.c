@@ -316,10 +316,11 @@ static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame 
         e->holes_filled = st == SW_OK;
     }
     frame->retessellated++;
+    e->fill_triangles = 0;
     if (st == SW_OK && w->fill) {
         uint32_t left = 0;
-        sw_seam_fill_crossings(w->fill, w->ids, t.vertex_count, w->indices, &t.index_count,
-                               SW_SEAM_WALK_INDICES, &left);
+        e->fill_triangles = sw_seam_fill_crossings(w->fill, w->ids, t.vertex_count, w->indices,
+                                                   &t.index_count, SW_SEAM_WALK_INDICES, &left);
     }
     if (st == SW_OK && keep(w, s, &t, pool, frame)) {
         e->error_bound = (float)t.error_bound;
@@ -327,7 +328,7 @@ static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame 
         uint32_t crossings = 0;
         e->cracks = count_cracks(w, &t, &crossings);
         e->crossings = crossings;
-        frame->retess_triangles += t.index_count / 3;
+        frame->retess_triangles += t.index_count / 3 - e->fill_triangles;
         return;
     }
     /* A visible surface left out is a hole: every point of its border has
@@ -392,7 +393,8 @@ static void draw_surface(sw_seam_walk *w, uint32_t s, sw_renderer *r, sw_gl_pool
                     sw_seam_cache_first_index(&w->cache, s), e->index_count);
     e->last_frame = w->frame;
     frame->drawn_surfaces++;
-    frame->triangles += e->index_count / 3;
+    frame->triangles += e->index_count / 3 - e->fill_triangles;
+    frame->fill_triangles += e->fill_triangles;
     frame->crossings += e->crossings;
     frame->capped_surfaces += e->capped;
     frame->holes_filled += e->holes_filled;

@@ -99,7 +99,8 @@ typedef struct sw_seam_frame {
     uint32_t evicted;             /* meshes the cache gave up for them */
     uint64_t retess_triangles;    /* triangles those made */
     uint64_t upload_bytes;        /* bytes written into the GL buffers */
-    uint64_t triangles;
+    uint64_t triangles;           /* the tessellations', the fill fans not counted: */
+    uint64_t fill_triangles;      /* zero-area fans over seam crossings (sw_seam_fill.h) */
     uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
                                      plus loop points the tessellator dropped, plus every
                                      border point of a visible surface not drawn (a hole) */

@@ -235,10 +235,11 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
                 s->seam_error_beyond_sewing_px);
     fprintf(f, "  \"seam_drawn\": {\"points_max\": %llu, \"t_vertices_max\": %llu, "
                "\"gaps_max\": %llu, \"free_points_max\": %llu, \"unchecked_frames\": %d, "
-               "\"chord_error_px_max\": %.5f},\n",
+               "\"chord_error_px_max\": %.5f, \"fill_triangles_max\": %llu},\n",
             (unsigned long long)s->drawn_points_max, (unsigned long long)s->drawn_t_vertices_max,
             (unsigned long long)s->drawn_gaps_max, (unsigned long long)s->drawn_free_max,
-            s->drawn_unchecked_frames, s->seam_chord_px_max);
+            s->drawn_unchecked_frames, s->seam_chord_px_max,
+            (unsigned long long)s->fill_triangles_max);
     fprintf(f, "  \"depth\": {\"bits\": %d, \"far_over_near_max\": %.1f},\n", s->depth_bits,
             s->depth_far_over_near_max);
     if (s->store)

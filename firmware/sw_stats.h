@@ -42,6 +42,8 @@ typedef struct sw_stats {
     /* The seams as drawn (firmware/sw_seam_drawn.h), the most of a measured frame. */
     uint64_t drawn_points_max, drawn_t_vertices_max, drawn_gaps_max, drawn_free_max;
     int drawn_unchecked_frames;
+    uint64_t fill_triangles_max; /* zero-area fans over seam crossings drawn in a frame,
+                                    beside tris_per_frame (sw_seam_fill.h) */
     double seam_chord_px_max;    /* seam chords against their surfaces, sw_seam_measure.h */  /* measured frames whose borders overflowed the check */
 
     /* The depth buffer (platform/sw_egl_headless.h) and the planes fitted
