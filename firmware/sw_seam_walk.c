@@ -389,8 +389,14 @@ static void draw_surface(sw_seam_walk *w, uint32_t s, sw_renderer *r, sw_gl_pool
         *part = pack->surfaces[s].part;
         sw_renderer_set_color(r, pack->parts[*part].color);
     }
-    sw_gl_pool_draw(pool, r, sw_seam_cache_first_vertex(&w->cache, s),
-                    sw_seam_cache_first_index(&w->cache, s), e->index_count);
+    uint32_t v0 = sw_seam_cache_first_vertex(&w->cache, s);
+    uint32_t i0 = sw_seam_cache_first_index(&w->cache, s), fill = 3 * e->fill_triangles;
+    sw_gl_pool_draw(pool, r, v0, i0, e->index_count - fill);
+    if (fill) { /* the fans after the mesh, lit as the surface (sw_renderer_set_fill) */
+        sw_renderer_set_fill(r, 1);
+        sw_gl_pool_draw(pool, r, v0, i0 + e->index_count - fill, fill);
+        sw_renderer_set_fill(r, 0);
+    }
     e->last_frame = w->frame;
     frame->drawn_surfaces++;
     frame->triangles += e->index_count / 3 - e->fill_triangles;
