@@ -24,6 +24,10 @@ foreach(mode teaset teapot golden errors seams)
   set_tests_properties(walk_${mode} PROPERTIES SKIP_RETURN_CODE 77)
 endforeach()
 
+# The seams as drawn on a real walk, with and without the crossing fans.
+add_test(NAME seam_drawn_walk
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_seam_drawn_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+
 # The native IGES reader against OpenCASCADE on the shared models.
 sw_add_test(test_iges_crosscheck SOURCES test_iges_crosscheck.c LIBS sw_assets sw_core
   ARGS ${SW_SHARED_MODELS})
