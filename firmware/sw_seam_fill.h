@@ -3,9 +3,11 @@
  * segment's chord); the neighbour across the seam has no vertex there, so
  * the two sides meet in a T-junction. In exact arithmetic the T-vertex is
  * on the neighbour's edge; on screen the rasteriser snaps the three points
- * to its sub-pixel grid independently and pinholes open along the edge
- * (single pixels of whatever lies behind: the dark speckle of a tube seen
- * at 1920x1080, its inside showing through). The fix needs nothing from
+ * to its sub-pixel grid independently and pinholes can open along the
+ * edge (single pixels of whatever lies behind). On the shared models the
+ * drawn-seam check (sw_seam_drawn.h) finds thousands of such T-vertices a
+ * frame; the dark speckle seen at 1920x1080 was mostly depth precision
+ * (platform/sw_egl_headless.h, sw_seam_depth.h), not these. The fix needs nothing from
  * the neighbour: for each run a, c1 .. ck, b of crossings between two seam
  * vertices of the mesh's border, the fan (a, ci, ci+1) .. (a, ck, b) closes
  * the mesh's border onto the straight edge a-b, the one the neighbour
