@@ -8,8 +8,9 @@
  * drawn-seam check (sw_seam_drawn.h) finds thousands of such T-vertices a
  * frame; the dark speckle seen at 1920x1080 was mostly depth precision
  * (platform/sw_egl_headless.h, sw_seam_depth.h), not these. The fix
- * needs nothing from the neighbour: for each run a, c1 .. ck, b of crossings between two seam
- * vertices of the mesh's border, the fan (a, ci, ci+1) .. (a, ck, b) closes
+ * needs nothing from the neighbour: for each run a, c1 .. ck, b of
+ * crossings between two seam vertices of the mesh's border, the fan
+ * (a, ci, ci+1) .. (a, ck, b) closes
  * the mesh's border onto the straight edge a-b, the one the neighbour
  * draws (or closes its own crossings onto), with the same two endpoints:
  * the rasteriser's shared-edge rule then leaves no pixel out. The fans are
