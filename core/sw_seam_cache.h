@@ -38,6 +38,7 @@ typedef struct sw_seam_entry {
     uint32_t cracks;         /* border vertices off their seam vertex, loop points dropped;
                                 a failed surface: its border points */
     uint32_t crossings;      /* border vertices on a seam segment */
+    uint32_t fill_triangles; /* of index_count / 3, the fans over crossings (sw_seam_fill.h) */
     uint8_t state, capped, holes_filled;
 } sw_seam_entry;
 

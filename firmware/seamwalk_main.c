@@ -26,6 +26,7 @@
 #include "sw_pack.h"
 #include "sw_png.h"
 #include "sw_renderer.h"
+#include "sw_seam_depth.h"
 #include "sw_seam_walk.h"
 #include "sw_stats.h"
 #include "sw_up_axis.h"
@@ -38,6 +39,8 @@ typedef struct runtime {
     sw_camera_path path;
     sw_seam_walk seam;
     size_t walk_bytes;        /* of the arena, what the seam walk took */
+    sw_seam_drawn drawn;      /* the seams as drawn, checked in measured frames */
+    sw_seam_fill fill;        /* fans over the tessellations' seam crossings */
     sw_stats stats;
     sw_egl_headless egl;
     sw_renderer renderer;
@@ -70,6 +73,9 @@ static sw_status file_size(const char *path, size_t *size, sw_error *err)
     return SW_OK;
 }
 
+/* Border edges the drawn-seam check holds in a frame. */
+#define SW_DRAWN_EDGES (1u << 18)
+
 /* Everything the walk will take from the arena, from the pack header and the
  * options alone, so the decision to run is made before any allocation. */
 static size_t arena_bytes_needed(const runtime *rt, const sw_pack_header *h, size_t path_bytes,
@@ -77,7 +83,10 @@ static size_t arena_bytes_needed(const runtime *rt, const sw_pack_header *h, siz
 {
     /* runtime_bytes covers the pack, every patch's state and the walk
      * (sw_pack.h, core/sw_walk_memory.h); the rest depends on the options. */
-    size_t bytes = (size_t)h->runtime_bytes + sw_stats_arena_bytes(rt->opt.frames);
+    size_t bytes = (size_t)h->runtime_bytes + sw_stats_arena_bytes(rt->opt.frames) +
+                   sw_seam_drawn_arena_bytes(SW_DRAWN_EDGES, SW_SEAM_WALK_INDICES);
+    if (rt->opt.fill_crossings)
+        bytes += sw_seam_fill_arena_bytes(SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES);
     bytes += sw_arena_worst_case(path_bytes + 1, 8) +
              sw_arena_worst_case(path_keys * sizeof(sw_camera_key) + 1, 8);
     if (rt->opt.png_dir)
@@ -113,7 +122,9 @@ static sw_status load_path(runtime *rt, size_t path_bytes, sw_error *err)
 }
 
 /* The seam walk, from the same arena: the header's runtime_bytes counted
- * it (the reader checked that against the loaded graph). */
+ * it (the reader checked that against the loaded graph). The drawn-seam
+ * check and the crossing fans come from the arena too, counted with the
+ * run's other extras (arena_bytes_needed). */
 static sw_status init_seams(runtime *rt, sw_error *err)
 {
     if (!rt->pack.seam_header)
@@ -124,6 +135,14 @@ static sw_status init_seams(runtime *rt, sw_error *err)
     sw_status st = sw_seam_walk_init(&rt->seam, &rt->pack, &rt->arena, rt->opt.max_error_px, err);
     rt->walk_bytes = rt->arena.used - before;
     rt->seam.no_cache = rt->opt.no_cache;
+    if (st == SW_OK)
+        st = sw_seam_drawn_init(&rt->drawn, &rt->model_box, rt->pack.seam.tolerance,
+                                SW_DRAWN_EDGES, SW_SEAM_WALK_INDICES, &rt->arena, err);
+    if (st == SW_OK && rt->opt.fill_crossings)
+        st = sw_seam_fill_init(&rt->fill, SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES,
+                               &rt->arena, err);
+    rt->seam.drawn = &rt->drawn;
+    rt->seam.fill = rt->opt.fill_crossings ? &rt->fill : NULL;
     return st;
 }
 
@@ -216,14 +235,19 @@ static sw_status start(runtime *rt, sw_error *err)
         if (mkdir(rt->opt.png_dir, 0777) != 0 && errno != EEXIST)
             return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.png_dir, strerror(errno));
     }
-    if ((st = sw_egl_headless_init(&rt->egl, SW_GL_API_GLES2, rt->opt.width, rt->opt.height,
-                                   err)))
+    if ((st = sw_egl_headless_init_depth(&rt->egl, SW_GL_API_GLES2, rt->opt.width,
+                                         rt->opt.height, rt->opt.depth_bits, err)))
         return st;
     rt->egl_up = 1;
+    rt->stats.depth_bits = rt->egl.depth_bits;
+    if (rt->opt.drop_surface >= 0)
+        rt->seam.drop_surface = (uint32_t)rt->opt.drop_surface;
     if ((st = sw_renderer_init(&rt->renderer, SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES,
                                  err)))
         return st;
     rt->renderer_up = 1;
+    if (rt->opt.back_flat)
+        sw_renderer_set_back_color(&rt->renderer, rt->opt.back_color);
     if ((st = sw_gl_pool_init(&rt->pool, rt->seam.cache.vertices, rt->seam.cache.indices, err)))
         return st;
     rt->pool_up = 1;
@@ -261,20 +285,61 @@ static sw_status write_png(runtime *rt, int frame, sw_error *err)
                         (size_t)rt->opt.width * 3, &rt->arena, err);
 }
 
-/* Selects and draws through the Seam Graph; its own measurement. */
-static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uint64_t *triangles,
-                            uint32_t *drawn, uint32_t *capped, double *measure_ms, sw_error *err)
+/* The frame's view with near and far fitted to what the walk selected
+ * (sw_seam_depth.h), so the depth buffer's bits go where the model is; its
+ * projection starts the frame. */
+static sw_view begin_frame(runtime *rt, const sw_view *culled)
+{
+    static const float default_background[4] = { 0.93f, 0.94f, 0.96f, 1.0f };
+    float background[4] = { rt->opt.background[0], rt->opt.background[1],
+                            rt->opt.background[2], 1.0f };
+    double nearest, farthest;
+    sw_view view = *culled;
+    if (rt->opt.depth_fit && sw_seam_depth_range(&rt->seam, culled, &nearest, &farthest))
+        view = sw_view_fit_depth(culled, nearest, farthest, rt->egl.depth_bits);
+    sw_stats_add_depth_range(&rt->stats, view.near_z, view.far_z);
+    float mv[16], proj[16];
+    sw_mat4_to_float(&view.view, mv);
+    sw_mat4_to_float(&view.proj, proj);
+    sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height,
+                            rt->opt.background_set ? background : default_background, mv, proj);
+    return view;
+}
+
+/* The frame's seams as drawn into the stats. */
+static void add_drawn(sw_stats *s, sw_seam_drawn *d)
+{
+    sw_seam_drawn_result r;
+    sw_seam_drawn_check(d, &r);
+    s->drawn_unchecked_frames += !r.checked;
+    s->drawn_points_max = r.points > s->drawn_points_max ? r.points : s->drawn_points_max;
+    s->drawn_t_vertices_max = r.t_vertices > s->drawn_t_vertices_max ? r.t_vertices
+                                                                     : s->drawn_t_vertices_max;
+    s->drawn_gaps_max = r.gaps > s->drawn_gaps_max ? r.gaps : s->drawn_gaps_max;
+    s->drawn_free_max = r.free_points > s->drawn_free_max ? r.free_points : s->drawn_free_max;
+}
+
+/* Selects, starts the frame and draws through the Seam Graph; its own
+ * measurement. */
+static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
+                            uint64_t *triangles, uint32_t *drawn, uint32_t *capped,
+                            double *measure_ms, sw_error *err)
 {
     sw_seam_frame f;
-    sw_status st = sw_seam_walk_select(&rt->seam, view, &f, err);
+    sw_status st = sw_seam_walk_select(&rt->seam, culled, &f, err);
     if (st != SW_OK)
         return st;
-    sw_seam_walk_draw(&rt->seam, &rt->renderer, &rt->pool, view, measuring ? &rt->stats : NULL,
+    sw_view view = begin_frame(rt, culled);
+    sw_seam_drawn_begin(&rt->drawn);
+    sw_seam_walk_draw(&rt->seam, &rt->renderer, &rt->pool, &view, measuring ? &rt->stats : NULL,
                       &f);
+    double check_s = now_s();
+    if (measuring) /* measurement, like the walk's own: not part of the frame's time */
+        add_drawn(&rt->stats, &rt->drawn);
     *triangles = f.triangles;
     *drawn = f.drawn_surfaces;
     *capped = f.capped_surfaces;
-    *measure_ms = f.measure_ms;
+    *measure_ms = f.measure_ms + (now_s() - check_s) * 1000.0;
     sw_stats *s = &rt->stats;
     s->seam_active_min = f.active_vertices < s->seam_active_min ? f.active_vertices
                                                                 : s->seam_active_min;
@@ -288,6 +353,8 @@ static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uin
         s->surfaces_holes_filled_max = f.holes_filled;
     if (f.cracks > s->cracks_max)   /* counted every frame: a refused surface is one */
         s->cracks_max = f.cracks;
+    if (f.fill_triangles > s->fill_triangles_max)
+        s->fill_triangles_max = f.fill_triangles;
     if (f.crossings > s->seam_crossings_max)
         s->seam_crossings_max = f.crossings;
     sw_stats_add_cache_frame(s, f.retessellated, f.retess_triangles, f.upload_bytes, f.evicted,
@@ -296,25 +363,21 @@ static sw_status seam_frame(runtime *rt, const sw_view *view, int measuring, uin
         s->seam_error_beyond_sewing_px = fmax(s->seam_error_beyond_sewing_px,
                                               f.error_beyond_sewing_px);
         s->seam_sewing_offset_px = fmax(s->seam_sewing_offset_px, f.sewing_offset_px);
+        s->seam_chord_px_max = fmax(s->seam_chord_px_max, f.seam_chord_px);
     }
     return SW_OK;
 }
 
 static sw_status run_frame(runtime *rt, int frame, sw_error *err)
 {
-    static const float background[4] = { 0.93f, 0.94f, 0.96f, 1.0f };
     double t0 = now_s();
     sw_camera_pose pose = pose_at(rt, frame);
-    sw_view view = sw_view_make(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
-                                rt->opt.height, &rt->model_box);
+    sw_view view = sw_view_make_depth(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
+                                      rt->opt.height, &rt->model_box, rt->egl.depth_bits);
     int measuring = frame % rt->opt.measure_every == 0;
-    float mv[16], proj[16];
-    sw_mat4_to_float(&view.view, mv);
-    sw_mat4_to_float(&view.proj, proj);
     uint64_t triangles = 0;
     uint32_t drawn = 0, capped = 0;
     double measure_ms = 0;
-    sw_renderer_begin_frame(&rt->renderer, rt->opt.width, rt->opt.height, background, mv, proj);
     sw_status st = seam_frame(rt, &view, measuring, &triangles, &drawn, &capped, &measure_ms,
                               err);
     if (st != SW_OK)

@@ -45,6 +45,23 @@ static sw_status parse_size(const char *text, int *w, int *h, sw_error *err)
     return st != SW_OK ? st : parse_int("--headless height", x + 1, 16, 8192, h, err);
 }
 
+/* --background R,G,B (and --back-faces): three levels 0..255. */
+static sw_status parse_rgb(const char *opt, const char *text, float rgb[3], sw_error *err)
+{
+    int level[3], used = 0;
+    if (sscanf(text, "%d,%d,%d%n", &level[0], &level[1], &level[2], &used) != 3 ||
+        text[used] != '\0')
+        return sw_error_set(err, SW_ERR_ARG, "%s expects R,G,B (0..255 each), got '%s'", opt,
+                            text);
+    for (int c = 0; c < 3; c++) {
+        if (level[c] < 0 || level[c] > 255)
+            return sw_error_set(err, SW_ERR_ARG, "%s expects R,G,B (0..255 each), got '%s'", opt,
+                                text);
+        rgb[c] = (float)level[c] / 255.0f;
+    }
+    return SW_OK;
+}
+
 /* The defaults the config file also has come from it (sw_config_defaults),
  * so the two cannot drift apart; the rest are the command line's own. */
 static void set_defaults(sw_options *o)
@@ -60,6 +77,10 @@ static void set_defaults(sw_options *o)
     o->fov_deg = c.fov_deg;
     o->boot_attempts = c.boot_attempts;
     o->good_after_s = c.good_after_s;
+    o->depth_bits = 24;
+    o->depth_fit = 1;
+    o->fill_crossings = 1;
+    o->drop_surface = -1;
 }
 
 /* The file's values, before the command line overrides them. Its defaults
@@ -197,6 +218,25 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_int(a, v, 1, 1000, &o->boot_attempts, err);
         } else if (!strcmp(a, "--good-after-s")) {
             st = parse_real(a, v, 0, 1e9, &o->good_after_s, err);
+        } else if (!strcmp(a, "--background")) {
+            o->background_set = 1;
+            st = parse_rgb(a, v, o->background, err);
+        } else if (!strcmp(a, "--back-faces")) {
+            o->back_flat = strcmp(v, "lit") != 0;
+            if (o->back_flat)
+                st = parse_rgb(a, v, o->back_color, err);
+        } else if (!strcmp(a, "--depth-bits")) {
+            st = parse_int(a, v, 16, 24, &o->depth_bits, err);
+            if (st == SW_OK && o->depth_bits != 16 && o->depth_bits != 24)
+                st = sw_error_set(err, SW_ERR_ARG, "--depth-bits expects 16 or 24, got '%s'", v);
+        } else if (!strcmp(a, "--depth-fit")) {
+            st = parse_int(a, v, 0, 1, &o->depth_fit, err);
+        } else if (!strcmp(a, "--fill-crossings")) {
+            st = parse_int(a, v, 0, 1, &o->fill_crossings, err);
+        } else if (!strcmp(a, "--test-drop-surface")) {
+            int s = 0;
+            st = parse_int(a, v, 0, INT_MAX, &s, err);
+            o->drop_surface = s;
         } else if (!strcmp(a, "--fov-deg")) {
             st = parse_real(a, v, 5, 150, &o->fov_deg, err);
         } else {
@@ -215,7 +255,8 @@ void sw_options_print_usage(const char *argv0)
             "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--config FILE] [--no-cache]\n"
+            "          [--config FILE] [--no-cache] [--background R,G,B] [--back-faces lit|R,G,B]\n"
+            "          [--depth-bits 16|24] [--depth-fit 0|1] [--fill-crossings 0|1]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --config FILE       read the unit's configuration (example, every key and its\n"
             "                      default: firmware/seamwalk.ini); its values fill what the\n"
@@ -238,6 +279,20 @@ void sw_options_print_usage(const char *argv0)
             "                      marked good (default 30)\n"
             "  --no-cache          tessellate every visible surface every frame at its exact\n"
             "                      bound, keeping nothing: the baseline the cache is measured\n"
-            "                      against (tests/bench/walk_cache_bench.sh), not for units\n",
+            "                      against (tests/bench/walk_cache_bench.sh), not for units\n"
+            "  --background R,G,B  clear to this colour, levels 0..255 (default 237,240,245);\n"
+            "                      one the model never has shows holes (tests/image_holes.c)\n"
+            "  --back-faces M      lit (default: both sides shaded) or R,G,B: back faces flat\n"
+            "                      in that colour, so the inside of a solid showing through\n"
+            "                      a crack can be told from its outside\n"
+            "  --depth-bits B      at most B bits of depth, 16 or 24 (default 24: 24 where\n"
+            "                      GL_OES_depth24 is offered, else 16; the stats say which)\n"
+            "  --depth-fit 0|1     fit near and far to the surfaces drawn each frame (1,\n"
+            "                      default) or to the model's box (0)\n"
+            "  --fill-crossings 0|1  close each seam crossing (a T-junction with the surface\n"
+            "                      across) with a zero-area fan (1, default), or not (0:\n"
+            "                      single-pixel pinholes open along such seams)\n"
+            "  --test-drop-surface S  never draw surface S: a hole on purpose, for the image\n"
+            "                      tests' mutants\n",
             argv0);
 }

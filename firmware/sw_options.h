@@ -28,6 +28,18 @@ typedef struct sw_options {
     const char *keys_path;       /* --keys FILE: trusted keys; default DIR/keys */
     int boot_attempts;           /* --boot-attempts K: boots a pending slot gets; default 3 */
     double good_after_s;         /* --good-after-s S: healthy walk time before mark-good; default 30 */
+    int background_set;          /* --background R,G,B: clear to it instead of the default */
+    float background[3];         /* 0..1, from 0..255 levels */
+    int back_flat;               /* --back-faces R,G,B: back faces flat in that colour
+                                    (tests/test_image_holes.sh); 0, lit: default */
+    float back_color[3];
+    int depth_bits;              /* --depth-bits 16|24: at most this many; default 24 */
+    int depth_fit;               /* --depth-fit 0|1: near and far fitted to the drawn
+                                    surfaces each frame (1, default) or to the model box */
+    int fill_crossings;          /* --fill-crossings 0|1: fans over seam crossings (1, default;
+                                    0 shows the T-junction pinholes they close) */
+    long drop_surface;           /* --test-drop-surface S: surface S is never drawn (a
+                                    mutation for the image tests); -1, default: none */
     int help;
     const char *config_path;     /* --config FILE, or NULL: no file is read */
     /* The file's values. pack_path, store_dir and keys_path may point into

@@ -1,7 +1,7 @@
 /* Measurement of what the seam walk (sw_seam_walk.h) drew, independent of
- * how it was made: each drawn triangle is sampled and compared with the exact
- * surface at the same (u, v), in pixels; and once at start, each surface's
- * sewing offset (how far its sewn border lies from the surface: the file's
+ * how it was made: each drawn triangle is sampled and compared with the
+ * exact surface at the same (u, v), both projected to the screen, in
+ * pixels; and once at start, each surface's sewing offset (how far its sewn border lies from the surface: the file's
  * own gaps, which no level of detail removes). No allocation; GL-free. */
 #ifndef SW_SEAM_MEASURE_H
 #define SW_SEAM_MEASURE_H
@@ -40,11 +40,16 @@ typedef struct sw_seam_error {
                                   over the bound where the floor is coarser than that) */
     double sewing_offset_px;   /* the largest sewing offset, in pixels at its surface's
                                   nearest depth */
+    double chord_px;           /* the most a seam chord lies from its surface at the same
+                                  (u, v), on screen: the samples of zero-area triangles
+                                  (the fill fans, sw_seam_fill.h), kept out of the rest */
 } sw_seam_error;
 
-/* Samples every triangle of mesh (centroid and edge midpoints) against the
- * exact surface, adds each sample's error in pixels to stats and the worst
- * figures to acc. */
+/* Samples every triangle of mesh (vertices, centroid and edge midpoints)
+ * against the exact surface, both projected to the screen (samples with a
+ * point off screen are not counted), adds each sample's error in pixels to
+ * stats and the worst figures to acc; a zero-area triangle's go to
+ * acc->chord_px only. */
 void sw_seam_measure_mesh(const sw_seam_mesh *mesh, const sw_seam_exact *exact,
                           const sw_view *view, sw_stats *stats, sw_seam_error *acc);
 

@@ -64,6 +64,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->pack = pack;
     w->error_px = error_px;
     w->bound_floor = 0.1f * pack->seam.tolerance;
+    w->drop_surface = UINT32_MAX;
     sw_status st = sw_seam_select_init(&w->select, &pack->seam, arena, err);
     if (st != SW_OK)
         return st;
@@ -311,13 +312,19 @@ static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame 
         e->holes_filled = st == SW_OK;
     }
     frame->retessellated++;
+    e->fill_triangles = 0;
+    if (st == SW_OK && w->fill) {
+        uint32_t left = 0;
+        e->fill_triangles = sw_seam_fill_crossings(w->fill, w->ids, t.vertex_count, w->indices,
+                                                   &t.index_count, SW_SEAM_WALK_INDICES, &left);
+    }
     if (st == SW_OK && keep(w, s, &t, pool, frame)) {
         e->error_bound = (float)t.error_bound;
         e->capped = (uint8_t)capped;
         uint32_t crossings = 0;
         e->cracks = count_cracks(w, &t, &crossings);
         e->crossings = crossings;
-        frame->retess_triangles += t.index_count / 3;
+        frame->retess_triangles += t.index_count / 3 - e->fill_triangles;
         return;
     }
     /* A visible surface left out is a hole: every point of its border has
@@ -342,6 +349,8 @@ static void measure_surface(sw_seam_walk *w, uint32_t s, const sw_view *view, sw
     const sw_seam_exact exact = { w->patches, patch_count, w->sew_offset[s], w->depth[s],
                                   w->error_px, w->bound_floor };
     sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
+    if (w->drawn)
+        sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
 }
 
 static double ms_since(const struct timespec *a)
@@ -384,11 +393,18 @@ static void draw_surface(sw_seam_walk *w, uint32_t s, sw_renderer *r, sw_gl_pool
         *part = pack->surfaces[s].part;
         sw_renderer_set_color(r, pack->parts[*part].color);
     }
-    sw_gl_pool_draw(pool, r, sw_seam_cache_first_vertex(&w->cache, s),
-                    sw_seam_cache_first_index(&w->cache, s), e->index_count);
+    uint32_t v0 = sw_seam_cache_first_vertex(&w->cache, s);
+    uint32_t i0 = sw_seam_cache_first_index(&w->cache, s), fill = 3 * e->fill_triangles;
+    sw_gl_pool_draw(pool, r, v0, i0, e->index_count - fill);
+    if (fill) { /* the fans after the mesh, lit as the surface (sw_renderer_set_fill) */
+        sw_renderer_set_fill(r, 1);
+        sw_gl_pool_draw(pool, r, v0, i0 + e->index_count - fill, fill);
+        sw_renderer_set_fill(r, 0);
+    }
     e->last_frame = w->frame;
     frame->drawn_surfaces++;
-    frame->triangles += e->index_count / 3;
+    frame->triangles += e->index_count / 3 - e->fill_triangles;
+    frame->fill_triangles += e->fill_triangles;
     frame->crossings += e->crossings;
     frame->capped_surfaces += e->capped;
     frame->holes_filled += e->holes_filled;
@@ -398,7 +414,7 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
                        sw_stats *stats, sw_seam_frame *frame)
 {
     uint32_t part = UINT32_MAX;
-    sw_seam_error acc = { 0, 0 };
+    sw_seam_error acc = { 0, 0, 0 };
     if (stats)
         stats->measured_frames++;
     uint32_t n = w->pack->seam.surface_count;
@@ -411,7 +427,7 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
     for (uint32_t s = 0; s < n; s++) {
         if (w->visible[s] == SW_SEAM_WALK_TINY)
             frame->vanished_surfaces++;
-        if (w->visible[s] != 1)
+        if (w->visible[s] != 1 || s == w->drop_surface)
             continue;
         draw_surface(w, s, r, pool, &part, frame);
         if (stats && w->cache.entries[s].state == SW_SEAM_READY) {
@@ -423,4 +439,5 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
     }
     frame->error_beyond_sewing_px = acc.beyond_sewing_px;
     frame->sewing_offset_px = acc.sewing_offset_px;
+    frame->seam_chord_px = acc.chord_px;
 }

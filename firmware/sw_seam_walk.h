@@ -37,6 +37,8 @@
 #include "sw_pack.h"
 #include "sw_renderer.h"
 #include "sw_seam_cache.h"
+#include "sw_seam_drawn.h"
+#include "sw_seam_fill.h"
 #include "sw_seam_select.h"
 #include "sw_stats.h"
 #include "sw_tess.h"
@@ -77,6 +79,12 @@ typedef struct sw_seam_walk {
     uint32_t frame;               /* frames selected so far */
     int no_cache;                 /* every visible surface remade every frame at its exact
                                      bound: the benchmarks' baseline */
+    sw_seam_drawn *drawn;         /* with it, measuring also hands it every drawn mesh (the
+                                     caller begins and checks it); NULL: not */
+    sw_seam_fill *fill;           /* with it, every tessellation's crossings get fill fans
+                                     (no T-junction pinholes); NULL: drawn as made */
+    uint32_t drop_surface;        /* a mutation for the image tests: this surface is never
+                                     drawn, and nothing counts it (UINT32_MAX: none) */
 } sw_seam_walk;
 
 typedef struct sw_seam_frame {
@@ -91,7 +99,8 @@ typedef struct sw_seam_frame {
     uint32_t evicted;             /* meshes the cache gave up for them */
     uint64_t retess_triangles;    /* triangles those made */
     uint64_t upload_bytes;        /* bytes written into the GL buffers */
-    uint64_t triangles;
+    uint64_t triangles;           /* the tessellations', the fill fans not counted: */
+    uint64_t fill_triangles;      /* zero-area fans over seam crossings (sw_seam_fill.h) */
     uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
                                      plus loop points the tessellator dropped, plus every
                                      border point of a visible surface not drawn (a hole) */
@@ -106,6 +115,8 @@ typedef struct sw_seam_frame {
                                      coarser than half a pixel (so <= error_px holds) */
     double sewing_offset_px;      /* measured: the largest sewing offset of a drawn surface, in
                                      pixels at its nearest depth */
+    double seam_chord_px;         /* measured: the most a seam chord lies from its surface at
+                                     the same (u, v), sw_seam_measure.h */
 } sw_seam_frame;
 
 /* Bytes sw_seam_walk_init takes from its arena for this validated pack

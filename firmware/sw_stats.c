@@ -60,6 +60,13 @@ void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles
     s->frames_without_retess += surfaces == 0;
 }
 
+void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z)
+{
+    double ratio = far_z / near_z;
+    if (ratio > s->depth_far_over_near_max)
+        s->depth_far_over_near_max = ratio;
+}
+
 void sw_stats_add_error_px(sw_stats *s, double e)
 {
     if (e > s->error_max_px)
@@ -227,6 +234,15 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
                 (unsigned long long)s->seam_arena_bytes,
                 (unsigned long long)s->seam_arena_peak_bytes, s->seam_sewing_offset_px,
                 s->seam_error_beyond_sewing_px);
+    fprintf(f, "  \"seam_drawn\": {\"points_max\": %llu, \"t_vertices_max\": %llu, "
+               "\"gaps_max\": %llu, \"free_points_max\": %llu, \"unchecked_frames\": %d, "
+               "\"chord_error_px_max\": %.5f, \"fill_triangles_max\": %llu},\n",
+            (unsigned long long)s->drawn_points_max, (unsigned long long)s->drawn_t_vertices_max,
+            (unsigned long long)s->drawn_gaps_max, (unsigned long long)s->drawn_free_max,
+            s->drawn_unchecked_frames, s->seam_chord_px_max,
+            (unsigned long long)s->fill_triangles_max);
+    fprintf(f, "  \"depth\": {\"bits\": %d, \"far_over_near_max\": %.1f},\n", s->depth_bits,
+            s->depth_far_over_near_max);
     if (s->store)
         write_store(f, s);
     fprintf(f, "  \"arena_bytes\": %llu,\n  \"arena_peak_bytes\": %llu,\n  \"runtime_bytes\": %llu,\n",

@@ -40,6 +40,19 @@ typedef struct sw_stats {
     double seam_error_beyond_sewing_px; /* measured error beyond each surface's sewing offset */
     double seam_sewing_offset_px;       /* largest sewing offset of a drawn surface, pixels */
 
+    /* The seams as drawn (firmware/sw_seam_drawn.h), the most of a measured frame. */
+    uint64_t drawn_points_max, drawn_t_vertices_max, drawn_gaps_max, drawn_free_max;
+    int drawn_unchecked_frames;
+    uint64_t fill_triangles_max; /* zero-area fans over seam crossings drawn in a frame,
+                                    beside tris_per_frame (sw_seam_fill.h) */
+    double seam_chord_px_max;    /* seam chords against their surfaces, sw_seam_measure.h */  /* measured frames whose borders overflowed the check */
+
+    /* The depth buffer (platform/sw_egl_headless.h) and the planes fitted
+     * to each frame's drawn surfaces (firmware/sw_seam_depth.h). */
+    int depth_bits;
+    double depth_far_over_near_max;     /* the largest far / near of a frame: the depth
+                                           buffer resolves depth^2 * this / (far * 2^bits) */
+
     /* The tessellation cache (firmware/sw_seam_walk.h), per frame and in all. */
     uint32_t *retess;            /* per frame: surfaces tessellated */
     float *tess_ms;              /* per frame: of frame_ms, tessellating and uploading */
@@ -71,6 +84,8 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
 
 void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible);
 void sw_stats_add_error_px(sw_stats *s, double error_px);
+/* The frame's near and far planes. */
+void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z);
 /* The cache's work in the frame sw_stats_add_frame records next. */
 void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,
                               uint64_t upload_bytes, uint32_t evictions, double tess_ms);

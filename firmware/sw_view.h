@@ -19,7 +19,7 @@ typedef struct sw_view {
     double px_per_unit;
 } sw_view;
 
-/* Near and far are fitted to model_box so the 16-bit depth buffer keeps its
+/* Near and far are fitted to model_box so a 16-bit depth buffer keeps its
  * precision: far just past the farthest box corner, near at the nearest
  * corner's depth but never below far / 2000. The camera's up is pose->up
  * (the orbit's is the pack's up axis); no model-to-world rotation is
@@ -27,6 +27,19 @@ typedef struct sw_view {
  * the pack's coordinates, the ones that are drawn. */
 sw_view sw_view_make(const sw_camera_pose *pose, double fovy_rad, int width, int height,
                      const sw_box *model_box);
+
+/* The same for a depth buffer of depth_bits (16 or more): near never below
+ * far / (2000 * 2^(depth_bits - 16)), each bit past 16 doubling the depth
+ * range the buffer resolves as well as 16 bits did 2000. */
+sw_view sw_view_make_depth(const sw_camera_pose *pose, double fovy_rad, int width, int height,
+                           const sw_box *model_box, int depth_bits);
+
+/* v with near and far fitted to what the frame draws: the nearest depth of
+ * a drawn box and its farthest corner (the seam walk's visible surfaces,
+ * sw_seam_depth.h), with the same margins and near floor as
+ * sw_view_make_depth. Far never grows past v's, so nothing culled against
+ * v's frustum comes back. v itself when the range is empty or invalid. */
+sw_view sw_view_fit_depth(const sw_view *v, double nearest, double farthest, int depth_bits);
 
 /* Eye-space depth of p (distance along forward). */
 double sw_view_depth(const sw_view *v, sw_vec3 p);

@@ -1,6 +1,8 @@
 /* Headless EGL through Mesa's surfaceless platform. The steps follow kmscube's
  * egl setup, minus the window: platform display, config, context made current
- * without a surface (EGL_KHR_surfaceless_context), then an FBO to draw into. */
+ * without a surface (EGL_KHR_surfaceless_context), then an FBO to draw into.
+ * The depth buffer is the FBO's renderbuffer, not the EGL config's (there is
+ * no surface), so its bits come from GL_OES_depth24, not EGL_DEPTH_SIZE. */
 #define _GNU_SOURCE /* dl_iterate_phdr, RTLD_NODELETE */
 #include "sw_egl_headless.h"
 
@@ -133,7 +135,37 @@ static sw_status fbo_fail(sw_egl_headless *egl, sw_error *err, const char *what,
                         egl->width, egl->height, what, code);
 }
 
-static sw_status create_framebuffer(sw_egl_headless *egl, sw_error *err)
+#ifndef GL_DEPTH_COMPONENT24_OES
+#define GL_DEPTH_COMPONENT24_OES 0x81A6
+#endif
+
+/* The depth renderbuffer: 24 bits where GL_OES_depth24 offers them and
+ * max_bits allows (16 bits show z-fighting on close faces, a claw's or a
+ * chamfer's), else core GLES2's 16. The bits the framebuffer really has
+ * are read back, not assumed. 0 when the framebuffer is incomplete. */
+static int attach_depth(sw_egl_headless *egl, int max_bits)
+{
+    const char *ext = (const char *)glGetString(GL_EXTENSIONS);
+    int offer24 = max_bits >= 24 && has_extension(ext, "GL_OES_depth24");
+    for (int bits = offer24 ? 24 : 16; bits >= 16; bits -= 8) {
+        glBindRenderbuffer(GL_RENDERBUFFER, egl->depth_renderbuffer);
+        glRenderbufferStorage(GL_RENDERBUFFER,
+                              bits == 24 ? GL_DEPTH_COMPONENT24_OES : GL_DEPTH_COMPONENT16,
+                              egl->width, egl->height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  egl->depth_renderbuffer);
+        if (glGetError() == GL_NO_ERROR &&
+            glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+            GLint got = 0;
+            glGetIntegerv(GL_DEPTH_BITS, &got);
+            egl->depth_bits = got > 0 ? got : bits;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static sw_status create_framebuffer(sw_egl_headless *egl, int max_depth_bits, sw_error *err)
 {
     GLint max_tex = 0, max_rb = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
@@ -152,18 +184,13 @@ static sw_status create_framebuffer(sw_egl_headless *egl, sw_error *err)
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, egl->width, egl->height, 0, GL_RGBA,
                  GL_UNSIGNED_BYTE, NULL);
     glGenRenderbuffers(1, &egl->depth_renderbuffer);
-    glBindRenderbuffer(GL_RENDERBUFFER, egl->depth_renderbuffer);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, egl->width, egl->height);
     glGenFramebuffers(1, &egl->fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, egl->fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
                            egl->color_texture, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                              egl->depth_renderbuffer);
-    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
+    if (!attach_depth(egl, max_depth_bits))
         return fbo_fail(egl, err, "glCheckFramebufferStatus is not GL_FRAMEBUFFER_COMPLETE",
-                        status);
+                        glCheckFramebufferStatus(GL_FRAMEBUFFER));
     GLenum gl_err = glGetError();
     if (gl_err != GL_NO_ERROR)
         return fbo_fail(egl, err, "glGetError after creating the attachments", gl_err);
@@ -201,6 +228,12 @@ static int pin_dri_driver(struct dl_phdr_info *info, size_t size, void *data)
 sw_status sw_egl_headless_init(sw_egl_headless *egl, sw_gl_api api, int width, int height,
                                sw_error *err)
 {
+    return sw_egl_headless_init_depth(egl, api, width, height, 24, err);
+}
+
+sw_status sw_egl_headless_init_depth(sw_egl_headless *egl, sw_gl_api api, int width, int height,
+                                     int max_depth_bits, sw_error *err)
+{
     memset(egl, 0, sizeof *egl);
     egl->api = api;
     egl->width = width;
@@ -218,7 +251,7 @@ sw_status sw_egl_headless_init(sw_egl_headless *egl, sw_gl_api api, int width, i
     record_renderer(egl);
     dl_iterate_phdr(pin_dri_driver, NULL);
     if (api == SW_GL_API_GLES2)
-        return create_framebuffer(egl, err);
+        return create_framebuffer(egl, max_depth_bits, err);
     return SW_OK;
 }
 

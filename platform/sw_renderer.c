@@ -39,6 +39,8 @@ static const char *const fragment_source =
     "precision mediump float;\n"
     "#endif\n"
     "uniform vec4 u_color;\n"
+    "uniform vec4 u_back;\n"
+    "uniform float u_fill;\n"
     "varying vec3 v_normal;\n"
     "varying vec3 v_eye_pos;\n"
     "const vec3 key_dir = vec3(0.408248, 0.816497, 0.408248);\n" /* normalize(1, 2, 1) */
@@ -49,9 +51,17 @@ static const char *const fragment_source =
     "const float shininess = 32.0;\n"
     "void main() {\n"
     "    vec3 n = normalize(v_normal);\n"
-    /* Two-sided: patch soups mix orientations, so light the side we see. */
-    "    if (!gl_FrontFacing) n = -n;\n"
     "    vec3 view_dir = normalize(-v_eye_pos);\n"
+    /* Fill fans (u_fill) have no facing of their own: a sliver between two
+     * sides of a seam winds either way once snapped, so it takes the side
+     * its normals face, as the surface around it does. */
+    "    if (u_fill > 0.5) {\n"
+    "        if (dot(n, view_dir) < 0.0) n = -n;\n"
+    "    } else if (!gl_FrontFacing) {\n"
+    "        if (u_back.a > 0.5) { gl_FragColor = vec4(u_back.rgb, 1.0); return; }\n"
+    /* Two-sided: patch soups mix orientations, so light the side we see. */
+    "        n = -n;\n"
+    "    }\n"
     /* Headlight: light direction equals view direction, so its half vector too. */
     "    float head = max(dot(n, view_dir), 0.0);\n"
     "    float key = max(dot(n, key_dir), 0.0);\n"
@@ -112,13 +122,16 @@ static sw_status link_program(sw_renderer *r, sw_error *err)
     r->u_model_view = glGetUniformLocation(prog, "u_model_view");
     r->u_projection = glGetUniformLocation(prog, "u_projection");
     r->u_color = glGetUniformLocation(prog, "u_color");
+    r->u_back = glGetUniformLocation(prog, "u_back");
+    r->u_fill = glGetUniformLocation(prog, "u_fill");
     return SW_OK;
 }
 
 sw_status sw_renderer_init(sw_renderer *r, uint32_t max_vertices, uint32_t max_indices,
                            sw_error *err)
 {
-    *r = (sw_renderer){ .u_model_view = -1, .u_projection = -1, .u_color = -1 };
+    *r = (sw_renderer){ .u_model_view = -1, .u_projection = -1, .u_color = -1, .u_back = -1,
+                        .u_fill = -1 };
     if (max_vertices < 1 || max_vertices > 65536 || max_indices < 3)
         return sw_error_set(err, SW_ERR_ARG,
                             "renderer: max_vertices %u must be 1..65536 (16-bit indices) and "
@@ -169,6 +182,20 @@ void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float 
     glUseProgram(r->program);
     glUniformMatrix4fv(r->u_model_view, 1, GL_FALSE, model_view);
     glUniformMatrix4fv(r->u_projection, 1, GL_FALSE, projection);
+}
+
+void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3])
+{
+    const float off[4] = { 0, 0, 0, 0 };
+    const float on[4] = { rgb ? rgb[0] : 0, rgb ? rgb[1] : 0, rgb ? rgb[2] : 0, 1 };
+    glUseProgram(r->program);
+    glUniform4fv(r->u_back, 1, rgb ? on : off);
+}
+
+void sw_renderer_set_fill(sw_renderer *r, int fill)
+{
+    glUseProgram(r->program);
+    glUniform1f(r->u_fill, fill ? 1.0f : 0.0f);
 }
 
 void sw_renderer_set_color(sw_renderer *r, const float rgba[4])

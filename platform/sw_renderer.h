@@ -12,7 +12,7 @@
 
 typedef struct sw_renderer {
     unsigned int program;
-    int u_model_view, u_projection, u_color;
+    int u_model_view, u_projection, u_color, u_back, u_fill;
     int a_position, a_normal;
     unsigned int vertex_buffer, index_buffer;
     uint32_t max_vertices, max_indices;
@@ -30,6 +30,17 @@ void sw_renderer_destroy(sw_renderer *r);
 void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float clear_rgba[4],
                              const float model_view[16], const float projection[16]);
 void sw_renderer_set_color(sw_renderer *r, const float rgba[4]);
+
+/* With rgb, back faces (clockwise on screen) are drawn flat in rgb instead
+ * of lit: in a colour of their own, the inside of a closed solid showing
+ * through a crack can be told from its outside (tests/test_image_holes.sh).
+ * NULL, the default: both sides lit. */
+void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3]);
+
+/* Draws that follow, until set again, are fill fans over seam crossings
+ * (firmware/sw_seam_fill.h): lit on the side their normals face, whatever
+ * way the sliver winds, never flat like a back face. */
+void sw_renderer_set_fill(sw_renderer *r, int fill);
 
 /* Uploads one batch (buffer orphaning, then glBufferSubData) and draws it as
  * GL_TRIANGLES. vertex_count <= max_vertices, index_count <= max_indices. */

@@ -12,7 +12,10 @@ sewn border is off a face by up to the gap whatever the level of detail:
 the walk measures that offset once per surface and reports it); error_px.max
 itself may exceed the bound by no more than that offset. The cache's fields
 are there and consistent (no more surfaces re-tessellated in a frame than
-the pack has)."""
+the pack has). The seams as drawn (firmware/sw_seam_drawn.h): every measured
+frame checked, T-vertices reported, no gap where the model has no free
+border. The depth buffer's bits (16 at least) and the largest far /
+near of a frame are reported."""
 import json
 import sys
 
@@ -76,6 +79,26 @@ def main():
                    "cache fields: %s surfaces re-tessellated in all, at most %s a frame, %s "
                    "frames without" % (retess.get("total"), retess.get("max"),
                                        cache.get("frames_without_retess"))))
+    drawn = stats.get("seam_drawn", {})
+    # T-vertices are reported, not failed: the fill fans close the
+    # tessellator's crossings, but a file's own T-junctions the sewing
+    # leaves (the patch soup's, the boxed sphere's) and a crossing whose
+    # border chain is broken at the far end are still drawn as they are.
+    checks.append((drawn.get("unchecked_frames", 1) == 0 and "t_vertices_max" in drawn,
+                   "seams as drawn: %s border points, %s T-vertices (one side's point on the "
+                   "other's edge, not its vertex: reported), %s unchecked frames" % (
+                       drawn.get("points_max"), drawn.get("t_vertices_max"),
+                       drawn.get("unchecked_frames"))))
+    # A gap (a point off every other border by more than rounding, within the
+    # sewing tolerance of one) is a crack where the model is closed; where it
+    # has a free border, the end of one near a seam looks the same.
+    checks.append((drawn.get("gaps_max", 1) == 0 or drawn.get("free_points_max", 0) > 0,
+                   "seams as drawn: %s gap points, %s free border points" % (
+                       drawn.get("gaps_max"), drawn.get("free_points_max"))))
+    depth = stats.get("depth", {})
+    checks.append((depth.get("bits", 0) >= 16 and depth.get("far_over_near_max", 0) > 1,
+                   "depth buffer %s bits, far / near up to %s" % (depth.get("bits"),
+                                                                 depth.get("far_over_near_max"))))
     for ok, what in checks:
         print(("ok   " if ok else "FAIL ") + what)
     return 0 if all(ok for ok, _ in checks) else 1

@@ -4,6 +4,9 @@ sw_add_test(test_buddy SOURCES test_buddy.c LIBS sw_core)
 sw_add_test(test_camera_path SOURCES test_camera_path.c LIBS sw_runtime)
 sw_add_test(test_stats SOURCES test_stats.c LIBS sw_runtime)
 sw_add_test(test_view SOURCES test_view.c LIBS sw_runtime)
+sw_add_test(test_seam_measure SOURCES test_seam_measure.c LIBS sw_runtime)
+sw_add_test(test_seam_fill SOURCES test_seam_fill.c LIBS sw_runtime)
+sw_add_test(test_seam_drawn SOURCES test_seam_drawn.c LIBS sw_runtime)
 sw_add_test(test_cell_filter SOURCES test_cell_filter.c LIBS sw_runtime)
 sw_add_test(test_alloc_count SOURCES test_alloc_count.c LIBS sw_alloc_count)
 sw_add_fuzz_target(fuzz_camera_path SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_camera_path.c
@@ -12,11 +15,18 @@ sw_add_fuzz_target(fuzz_camera_path SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz
 # The whole programs, end to end (tests/test_walk.sh).
 add_executable(image_compare image_compare.c)
 target_link_libraries(image_compare PRIVATE sw_stb ${MATH_LIBRARY})
+add_executable(image_holes image_holes.c)
+target_link_libraries(image_holes PRIVATE sw_stb ${MATH_LIBRARY})
+sw_apply_warnings(image_holes)
 foreach(mode teaset teapot golden errors seams)
   add_test(NAME walk_${mode}
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_walk.sh ${mode} ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
   set_tests_properties(walk_${mode} PROPERTIES SKIP_RETURN_CODE 77)
 endforeach()
+
+# The seams as drawn on a real walk, with and without the crossing fans.
+add_test(NAME seam_drawn_walk
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_seam_drawn_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
 
 # The native IGES reader against OpenCASCADE on the shared models.
 sw_add_test(test_iges_crosscheck SOURCES test_iges_crosscheck.c LIBS sw_assets sw_core
@@ -36,6 +46,20 @@ foreach(file ${SW_SHARED_MODEL_FILES})
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_models.sh ${file} ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
   set_tests_properties(model_${model} PROPERTIES SKIP_RETURN_CODE 77)
 endforeach()
+
+# Cracks and holes told by pixels alone (tests/test_image_holes.sh): the
+# teaset sample and every shared model, close, mid and far, at the default
+# bound against a 0.05 px reference; a dropped-surface mutant must be caught.
+# Release only (the references are dense; the sanitizer runs cover the code
+# through test_seam_fill, test_seam_drawn and the walks).
+if(NOT SW_ASAN AND NOT SW_TSAN)
+  foreach(file ${SW_SAMPLES}/teaset.ini ${SW_SHARED_MODEL_FILES})
+    get_filename_component(model ${file} NAME)
+    add_test(NAME holes_${model}
+      COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_image_holes.sh ${file} ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+    set_tests_properties(holes_${model} PROPERTIES SKIP_RETURN_CODE 77)
+  endforeach()
+endif()
 
 # The corpus command on the shared models (tests/corpus.sh): every file built,
 # verified and walked close to far with no crack and no refused surface, and

@@ -1,0 +1,20 @@
+/* The depth range a frame of the seam walk (sw_seam_walk.h) draws: the
+ * nearest and farthest eye-space depths of the boxes of the surfaces it
+ * selected for drawing, so the frame loop can fit near and far to them
+ * (sw_view_fit_depth) and spend the depth buffer's bits where the model is.
+ * Called after sw_seam_walk_select, before the projection is uploaded.
+ * Reads the walk; no allocation; GL-free. */
+#ifndef SW_SEAM_DEPTH_H
+#define SW_SEAM_DEPTH_H
+
+#include "sw_seam_walk.h"
+#include "sw_view.h"
+
+/* Over the patches in view of every surface the walk will draw: *nearest
+ * their smallest box depth (clamped to view's near plane, as the walk's
+ * culling does), *farthest their farthest box corner. 0 when nothing is
+ * drawn (both left untouched). */
+int sw_seam_depth_range(const sw_seam_walk *w, const sw_view *view, double *nearest,
+                        double *farthest);
+
+#endif

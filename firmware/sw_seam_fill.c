@@ -1,0 +1,135 @@
+#include "sw_seam_fill.h"
+
+#include <string.h>
+
+#include "sw_trim_tess.h"
+
+#define UNSET 0xFFFFFFFFu
+#define TANGLED 0xFFFFFFFEu        /* next[]: the vertex starts two border edges */
+#define FIRST_WINDS_UP 0x80000000u /* uses: first seen as low -> high index */
+
+static uint32_t pow2_at_least(uint32_t n)
+{
+    uint32_t p = 16;
+    while (p < n && p < 0x80000000u)
+        p <<= 1;
+    return p;
+}
+
+size_t sw_seam_fill_arena_bytes(uint32_t max_vertices, uint32_t max_indices)
+{
+    size_t table = pow2_at_least(2 * max_indices);
+    return 2 * sw_arena_worst_case(table * sizeof(uint32_t), 64) +
+           sw_arena_worst_case((size_t)max_vertices * sizeof(uint32_t), 64);
+}
+
+sw_status sw_seam_fill_init(sw_seam_fill *f, uint32_t max_vertices, uint32_t max_indices,
+                            sw_arena *arena, sw_error *err)
+{
+    memset(f, 0, sizeof *f);
+    f->table = pow2_at_least(2 * max_indices);
+    f->max_vertices = max_vertices;
+    f->keys = sw_arena_alloc(arena, f->table * sizeof(uint32_t), 64);
+    f->uses = sw_arena_alloc(arena, f->table * sizeof(uint32_t), 64);
+    f->next = sw_arena_alloc(arena, (size_t)max_vertices * sizeof(uint32_t), 64);
+    if (!f->keys || !f->uses || !f->next)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the crossing fill "
+                            "(needs %zu bytes)", sw_seam_fill_arena_bytes(max_vertices, max_indices));
+    return SW_OK;
+}
+
+static int on_border(uint32_t id) { return id != SW_TRIM_INTERIOR; }
+
+static void use_edge(sw_seam_fill *f, uint32_t size, uint16_t a, uint16_t b)
+{
+    uint32_t lo = a < b ? a : b, hi = a < b ? b : a, key = (lo << 16 | hi) + 1;
+    uint32_t i = (key * 2654435761u) & (size - 1);
+    while (f->keys[i] && f->keys[i] != key)
+        i = (i + 1) & (size - 1);
+    if (!f->keys[i]) {
+        f->keys[i] = key;
+        f->uses[i] = a < b ? FIRST_WINDS_UP : 0;
+    }
+    f->uses[i]++;
+}
+
+/* next[v]: where the border edge leaving v goes, following its triangle's
+ * winding (edges between border vertices used by one triangle). 0 when the
+ * table cannot hold the mesh's border edges. */
+static int link_border(sw_seam_fill *f, const uint32_t *ids, uint32_t vertex_count,
+                       const uint16_t *indices, uint32_t index_count)
+{
+    uint32_t edges = 0;
+    for (uint32_t t = 0; t + 2 < index_count; t += 3)
+        for (int k = 0; k < 3; k++)
+            edges += on_border(ids[indices[t + k]]) && on_border(ids[indices[t + (k + 1) % 3]]);
+    uint32_t size = pow2_at_least(2 * edges + 16);
+    if (size > f->table || vertex_count > f->max_vertices)
+        return 0;
+    memset(f->keys, 0, size * sizeof(uint32_t));
+    for (uint32_t t = 0; t + 2 < index_count; t += 3)
+        for (int k = 0; k < 3; k++) {
+            uint16_t a = indices[t + k], b = indices[t + (k + 1) % 3];
+            if (on_border(ids[a]) && on_border(ids[b]))
+                use_edge(f, size, a, b);
+        }
+    memset(f->next, 0xFF, vertex_count * sizeof(uint32_t));
+    for (uint32_t i = 0; i < size; i++) {
+        if (!f->keys[i] || (f->uses[i] & ~FIRST_WINDS_UP) != 1)
+            continue;
+        uint32_t key = f->keys[i] - 1, lo = key >> 16, hi = key & 0xFFFFu;
+        int up = (f->uses[i] & FIRST_WINDS_UP) != 0;
+        uint32_t from = up ? lo : hi, to = up ? hi : lo;
+        f->next[from] = f->next[from] == UNSET ? to : TANGLED;
+    }
+    return 1;
+}
+
+/* The fan over the run of crossings after seam vertex a; the crossings it
+ * covered, 0 when the run does not end at a seam vertex (a itself, for a
+ * loop shrunk to one) or does not fit. */
+static uint32_t fill_run(const sw_seam_fill *f, const uint32_t *ids, uint32_t vertex_count,
+                         uint32_t a, uint16_t *indices, uint32_t *index_count, uint32_t capacity)
+{
+    uint32_t c = f->next[a], k = 0, start = *index_count;
+    while (c < vertex_count && ids[c] == SW_TRIM_CROSSING && k <= vertex_count) {
+        uint32_t n = f->next[c];
+        k++;
+        if (n == a) /* a loop left with a as its only seam vertex: the fan is whole */
+            return k;
+        if (n >= vertex_count)
+            break;
+        if (*index_count + 3 > capacity)
+            break;
+        indices[(*index_count)++] = (uint16_t)a;
+        indices[(*index_count)++] = (uint16_t)c;
+        indices[(*index_count)++] = (uint16_t)n;
+        c = n;
+    }
+    if (k == 0 || c >= vertex_count || ids[c] == SW_TRIM_CROSSING) {
+        *index_count = start;  /* not closed onto a seam vertex: left as it was */
+        return 0;
+    }
+    return k;
+}
+
+uint32_t sw_seam_fill_crossings(sw_seam_fill *f, const uint32_t *ids, uint32_t vertex_count,
+                                uint16_t *indices, uint32_t *index_count, uint32_t capacity,
+                                uint32_t *crossings_left)
+{
+    uint32_t crossings = 0, filled = 0, triangles = 0;
+    for (uint32_t v = 0; v < vertex_count; v++)
+        crossings += ids[v] == SW_TRIM_CROSSING;
+    *crossings_left = crossings;
+    if (!crossings || !link_border(f, ids, vertex_count, indices, *index_count))
+        return 0;
+    for (uint32_t a = 0; a < vertex_count; a++) {
+        if (ids[a] == SW_TRIM_CROSSING || !on_border(ids[a]) || f->next[a] >= vertex_count)
+            continue;
+        uint32_t before = *index_count;
+        filled += fill_run(f, ids, vertex_count, a, indices, index_count, capacity);
+        triangles += (*index_count - before) / 3;
+    }
+    *crossings_left = crossings - filled;
+    return triangles;
+}
