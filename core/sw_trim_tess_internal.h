@@ -1,7 +1,9 @@
 /* Internal to the trimmed tessellator: the state one sw_trim_tess call
  * shares between its steps (core/sw_trim_tess.c: input and output,
- * sw_trim_loops.c: the loops' orientation and region shrink, sw_trim_tree.c:
- * the binary trees and the corner index). Not a public API. */
+ * sw_trim_loops.c: the loops' orientation and region shrink, sw_trim_grid.c:
+ * the conformal grid and its bounds, sw_trim_bucket.c: loop segments by
+ * cell, sw_trim_sweep.c: the row sweep and crossed cells, sw_trim_eval.c:
+ * the surface at grid points and loop points). Not a public API. */
 #ifndef SW_TRIM_TESS_INTERNAL_H
 #define SW_TRIM_TESS_INTERNAL_H
 
