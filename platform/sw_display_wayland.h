@@ -1,0 +1,33 @@
+/* The Wayland developer window (sw_display.h "wayland"): wayland-client with
+ * xdg-shell, EGL on Wayland through wayland-egl, wl_keyboard keys turned into
+ * keysyms with the compositor's keymap (xkbcommon) and queued
+ * (sw_key_queue.h), xdg_toplevel close honoured. Written against the
+ * wayland-client and xdg-shell documentation; this machine has no
+ * compositor, so only the failure without one is tested here. The struct
+ * must stay where it was initialised: the listeners point at it. */
+#ifndef SW_DISPLAY_WAYLAND_H
+#define SW_DISPLAY_WAYLAND_H
+
+#include "sw_egl_window.h"
+#include "sw_error.h"
+#include "sw_key_queue.h"
+
+typedef struct sw_display_wayland {
+    void *display;             /* struct wl_display * */
+    void *registry, *compositor, *wm_base, *seat, *keyboard;
+    void *surface, *xdg_surface, *toplevel;
+    void *egl_window;          /* struct wl_egl_window * */
+    void *xkb_context, *xkb_keymap, *xkb_state;
+    int configured;            /* the first xdg_surface.configure was acked */
+    sw_egl_window egl;
+    sw_key_queue *keys;        /* the sw_display's */
+    int *close_requested;      /* the sw_display's */
+} sw_display_wayland;
+
+sw_status sw_display_wayland_init(sw_display_wayland *w, const char *title, int width,
+                                  int height, sw_key_queue *keys, int *close_requested,
+                                  sw_error *err);
+sw_status sw_display_wayland_present(sw_display_wayland *w, sw_error *err);
+void sw_display_wayland_destroy(sw_display_wayland *w);
+
+#endif
