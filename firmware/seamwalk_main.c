@@ -525,6 +525,8 @@ static void print_summary(const runtime *rt)
            s->frames, s->patches_total, s->width, s->height, s->walk_s, s->error_max_px,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
+    printf("seamwalk: display %s %dx%d (%s)\n", sw_display_kind_name(rt->display->kind),
+           rt->display->width, rt->display->height, rt->display->chosen_why);
     if (rt->opt.png_dir)
         printf("seamwalk: pictures in %s/\n", rt->opt.png_dir);
     if (rt->opt.stats_path)

@@ -1,7 +1,10 @@
 /* The window half of kmscube's init_egl: platform display, config matched to
  * the native visual, window surface, context. */
+#define _GNU_SOURCE /* dl_iterate_phdr, RTLD_NODELETE */
 #include "sw_egl_window.h"
 
+#include <dlfcn.h>
+#include <link.h>
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GLES2/gl2.h>
@@ -16,6 +19,18 @@ int sw_egl_has_extension(const char *list, const char *name)
         if (starts && ends)
             return 1;
     }
+    return 0;
+}
+
+/* As sw_egl_headless.c does, and for the same reason: Mesa unloads its DRI
+ * driver in eglTerminate, and blocks its globals still point to then look
+ * leaked to LeakSanitizer from an unnamed module. Kept mapped until exit. */
+static int pin_dri_driver(struct dl_phdr_info *info, size_t size, void *data)
+{
+    (void)size;
+    (void)data;
+    if (info->dlpi_name && strstr(info->dlpi_name, "/dri/"))
+        dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
     return 0;
 }
 
@@ -105,6 +120,7 @@ sw_status sw_egl_window_attach(sw_egl_window *w, void *native_window, sw_error *
     w->context = ctx;
     if (!eglMakeCurrent(w->display, s, s, ctx))
         return egl_fail(w, err, "eglMakeCurrent");
+    dl_iterate_phdr(pin_dri_driver, NULL);
     return SW_OK;
 }
 
