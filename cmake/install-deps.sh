@@ -14,6 +14,7 @@ packages=(
   libwayland-bin                     #   wayland-scanner for xdg-shell)
   libxkbcommon-dev                   # Wayland keyboard: keycodes to keysyms through the compositor's keymap
   xvfb xauth                         # the X11 window test runs EGL on a virtual X server
+  weston                             # the Wayland window test: Weston's headless compositor
   libxxhash-dev                      # pack section checksums (XXH3-64)
   libstb-dev                         # stb_image_write (PNG frames), stb_image (tests)
   libinih-dev                        # showroom scene files (INI)

@@ -18,3 +18,8 @@ sw_apply_warnings(test_display_x11)
 add_test(NAME display_x11
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_display_x11.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
 set_tests_properties(display_x11 PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120)
+# The Wayland window on Weston's headless backend (tests/test_display_wayland.sh);
+# skipped only where weston is not installed.
+add_test(NAME display_wayland
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_display_wayland.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+set_tests_properties(display_wayland PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120)
