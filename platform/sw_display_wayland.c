@@ -14,12 +14,10 @@
 #include <poll.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <unistd.h>
 #include <wayland-client.h>
 #include <wayland-egl.h>
-#include <xkbcommon/xkbcommon.h>
 
+#include "sw_xkb_keys.h"
 #include "xdg-shell-client-protocol.h"
 
 #ifndef EGL_PLATFORM_WAYLAND_KHR
@@ -58,27 +56,15 @@ static void toplevel_close(void *data, struct xdg_toplevel *t)
 static const struct xdg_toplevel_listener toplevel_listener = {
     .configure = toplevel_configure, .close = toplevel_close};
 
-/* The compositor's keymap, text in a shared file it hands us. */
+/* The compositor's keymap (sw_xkb_keys.h). One that does not compile leaves
+ * the keys without keysyms: a developer window still shows the walk. */
 static void kb_keymap(void *data, struct wl_keyboard *kb, uint32_t format, int32_t fd,
                       uint32_t size)
 {
     (void)kb;
     sw_display_wayland *w = data;
-    char *text = format == WL_KEYBOARD_KEYMAP_FORMAT_XKB_V1
-                     ? mmap(NULL, size, PROT_READ, MAP_PRIVATE, fd, 0) : MAP_FAILED;
-    close(fd);
-    if (text == MAP_FAILED)
-        return;
-    struct xkb_keymap *map = xkb_keymap_new_from_string(w->xkb_context, text,
-                                                        XKB_KEYMAP_FORMAT_TEXT_V1,
-                                                        XKB_KEYMAP_COMPILE_NO_FLAGS);
-    munmap(text, size);
-    if (!map)
-        return;
-    xkb_state_unref(w->xkb_state);
-    xkb_keymap_unref(w->xkb_keymap);
-    w->xkb_keymap = map;
-    w->xkb_state = xkb_state_new(map);
+    sw_xkb_keys_set_keymap(&w->xkb, format == WL_KEYBOARD_KEYMAP_FORMAT_XKB_V1, fd, size,
+                           NULL);
 }
 
 static void kb_enter(void *data, struct wl_keyboard *kb, uint32_t serial,
@@ -96,25 +82,16 @@ static void kb_key(void *data, struct wl_keyboard *kb, uint32_t serial, uint32_t
 {
     (void)kb; (void)serial; (void)time;
     sw_display_wayland *w = data;
-    if (!w->xkb_state)
-        return;
-    /* Wayland sends evdev codes; XKB's are 8 higher (the X11 convention). The
-     * keysym is taken from the base level, like X11's XLookupKeysym(ev, 0). */
-    xkb_keycode_t code = key + 8;
-    const xkb_keysym_t *syms;
-    xkb_layout_index_t layout = xkb_state_key_get_layout(w->xkb_state, code);
-    int n = xkb_keymap_key_get_syms_by_level(w->xkb_keymap, code, layout, 0, &syms);
-    if (n > 0)
-        sw_key_queue_push(w->keys, syms[0], state == WL_KEYBOARD_KEY_STATE_PRESSED);
+    uint32_t sym = sw_xkb_keys_keysym(&w->xkb, key);
+    if (sym)
+        sw_key_queue_push(w->keys, sym, state == WL_KEYBOARD_KEY_STATE_PRESSED);
 }
 
 static void kb_modifiers(void *data, struct wl_keyboard *kb, uint32_t serial, uint32_t dep,
                          uint32_t lat, uint32_t lock, uint32_t group)
 {
     (void)kb; (void)serial;
-    sw_display_wayland *w = data;
-    if (w->xkb_state)
-        xkb_state_update_mask(w->xkb_state, dep, lat, lock, 0, 0, group);
+    sw_xkb_keys_set_modifiers(&((sw_display_wayland *)data)->xkb, dep, lat, lock, group);
 }
 
 /* Held keys do not repeat: the input step sees the press and the release. */
@@ -183,8 +160,9 @@ static sw_status connect_globals(sw_display_wayland *w, sw_error *err)
         return sw_error_set(err, SW_ERR_IO, "wayland display: cannot connect to '%s' (%s; "
                             "no compositor there, or XDG_RUNTIME_DIR is wrong)", name,
                             strerror(errno));
-    if (!(w->xkb_context = xkb_context_new(XKB_CONTEXT_NO_FLAGS)))
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "wayland display: xkb_context_new failed");
+    sw_status st = sw_xkb_keys_init(&w->xkb, err);
+    if (st != SW_OK)
+        return st;
     w->registry = wl_display_get_registry(w->display);
     wl_registry_add_listener(w->registry, &registry_listener, w);
     wl_display_roundtrip(w->display);   /* the globals */
@@ -283,9 +261,7 @@ void sw_display_wayland_destroy(sw_display_wayland *w)
         wl_compositor_destroy(w->compositor);
     if (w->registry)
         wl_registry_destroy(w->registry);
-    xkb_state_unref(w->xkb_state);
-    xkb_keymap_unref(w->xkb_keymap);
-    xkb_context_unref(w->xkb_context);
+    sw_xkb_keys_destroy(&w->xkb);
     if (w->display)
         wl_display_disconnect(w->display);
     sw_key_queue *keys = w->keys;

@@ -11,13 +11,14 @@
 #include "sw_egl_window.h"
 #include "sw_error.h"
 #include "sw_key_queue.h"
+#include "sw_xkb_keys.h"
 
 typedef struct sw_display_wayland {
     void *display;             /* struct wl_display * */
     void *registry, *compositor, *wm_base, *seat, *keyboard;
     void *surface, *xdg_surface, *toplevel;
     void *egl_window;          /* struct wl_egl_window * */
-    void *xkb_context, *xkb_keymap, *xkb_state;
+    sw_xkb_keys xkb;           /* the compositor's keymap */
     int configured;            /* the first xdg_surface.configure was acked */
     sw_egl_window egl;
     sw_key_queue *keys;        /* the sw_display's */
