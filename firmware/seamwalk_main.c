@@ -11,6 +11,7 @@
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -547,6 +548,11 @@ int main(int argc, char **argv)
         sw_options_print_usage(argv[0]);
         return st != SW_OK ? 2 : 0;
     }
+    /* A service stop (SIGTERM) or Ctrl-C ends the walk after the frame, so
+     * the stats are written and a KMS display gives the screen back. */
+    struct sigaction stop_walk_on = {.sa_handler = sw_display_close_on_signal};
+    sigaction(SIGTERM, &stop_walk_on, NULL);
+    sigaction(SIGINT, &stop_walk_on, NULL);
     st = open_display(&rt, &err);
     if (st == SW_OK)
         st = rt.opt.store_dir ? start_from_store(&rt, &err) : start(&rt, &err);

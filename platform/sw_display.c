@@ -2,8 +2,18 @@
  * the existing sw_egl_headless, unchanged. */
 #include "sw_display.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
+
+/* Written by the signal handler, read by present on the GL thread. */
+static volatile sig_atomic_t close_signal;
+
+void sw_display_close_on_signal(int signum)
+{
+    (void)signum;
+    close_signal = 1;
+}
 
 static sw_status init_kind(sw_display *d, const sw_display_desc *desc, sw_error *err)
 {
@@ -55,6 +65,8 @@ sw_status sw_display_init(sw_display *d, const sw_display_desc *desc, sw_error *
 
 sw_status sw_display_present(sw_display *d, sw_error *err)
 {
+    if (close_signal)
+        d->close_requested = 1;
     switch (d->kind) {
     case SW_DISPLAY_KIND_KMS: return sw_display_kms_present(&d->u.kms, err);
     case SW_DISPLAY_KIND_X11: return sw_display_x11_present(&d->u.x11, err);

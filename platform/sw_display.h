@@ -45,7 +45,8 @@ typedef struct sw_display {
     int width, height;        /* what is drawn: the framebuffer, window or mode */
     char chosen_why[160];     /* why this kind ("--display kms", "auto: ...") */
     sw_key_queue keys;        /* filled by the window displays as they pump events */
-    int close_requested;      /* the window was closed (X11 WM_DELETE_WINDOW, xdg close) */
+    int close_requested;      /* the window was closed (X11 WM_DELETE_WINDOW, xdg close),
+                                 or SIGINT/SIGTERM came (sw_display_close_on_signal) */
     int up;
     union {
         sw_egl_headless headless;
@@ -100,5 +101,11 @@ sw_status sw_display_read_rgba(sw_display *d, uint8_t *rgba, sw_error *err);
 int sw_display_poll_keys(sw_display *d, sw_key_event *out, int capacity);
 
 void sw_display_destroy(sw_display *d);
+
+/* A signal handler (async-signal-safe) for SIGINT and SIGTERM: the next
+ * sw_display_present sets close_requested, so the walk ends as after a
+ * closed window and the display is destroyed normally (for KMS: the CRTC
+ * restored, master dropped) instead of the process dying mid-flip. */
+void sw_display_close_on_signal(int signum);
 
 #endif

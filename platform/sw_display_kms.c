@@ -83,7 +83,8 @@ static uint32_t pick_crtc(int fd, const drmModeRes *res, const drmModeConnector 
 }
 
 /* Connector, mode and CRTC on an open card. */
-static sw_status setup_card(sw_display_kms *k, int want_w, int want_h, int *w, int *h, sw_error *err)
+static sw_status setup_card(sw_display_kms *k, int want_w, int want_h, int *w, int *h,
+                            sw_error *err)
 {
     drmModeRes *res = drmModeGetResources(k->fd);
     if (!res)
@@ -95,10 +96,11 @@ static sw_status setup_card(sw_display_kms *k, int want_w, int want_h, int *w, i
     uint32_t crtc = m >= 0 ? pick_crtc(k->fd, res, conn) : 0;
     sw_status st = SW_OK;
     if (!ok)
-        st = sw_error_set(err, SW_ERR_UNSUPPORTED, "kms display: %s: no connected display", k->path);
+        st = sw_error_set(err, SW_ERR_UNSUPPORTED, "kms display: %s: no connected display",
+                          k->path);
     else if (!crtc)
-        st = sw_error_set(err, SW_ERR_UNSUPPORTED, "kms display: %s: no CRTC can drive connector %u",
-                     k->path, conn->connector_id);
+        st = sw_error_set(err, SW_ERR_UNSUPPORTED, "kms display: %s: no CRTC can drive "
+                          "connector %u", k->path, conn->connector_id);
     if (crtc) {
         memcpy(k->mode, &conn->modes[m], sizeof(drmModeModeInfo));
         k->connector_id = conn->connector_id;
@@ -122,9 +124,10 @@ static sw_status take_master(sw_display_kms *k, sw_error *err)
         k->was_master = 1;
         return SW_OK;
     }
-    return sw_error_set(err, SW_ERR_UNSUPPORTED, "kms display: %s: cannot become DRM master (%s): "
-                 "another program (an X server, a Wayland compositor) is showing on it; stop "
-                 "it, or use --display x11 or wayland", k->path, strerror(errno));
+    return sw_error_set(err, SW_ERR_UNSUPPORTED, "kms display: %s: cannot become DRM master "
+                        "(%s): another program (an X server, a Wayland compositor) is showing "
+                        "on it; stop it, or use --display x11 or wayland", k->path,
+                        strerror(errno));
 }
 
 static sw_status open_card(sw_display_kms *k, const char *device, int want_w, int want_h,

@@ -25,3 +25,6 @@ add_test(NAME display_wayland
 set_tests_properties(display_wayland PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120)
 # The Wayland keyboard's keymap and key codes with a real US keymap.
 sw_add_test(test_xkb_keys SOURCES test_xkb_keys.c LIBS sw_platform PkgConfig::XKBCOMMON)
+# SIGTERM and SIGINT end a walk cleanly (tests/test_display_signal.sh).
+add_test(NAME display_signal
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_display_signal.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})

@@ -5,9 +5,10 @@
 # /dev/dri/card0 is virtio-gpu's and Mesa renders through GBM with its
 # software rasteriser (kms_swrast). Checks from the host: the walk ran on
 # KMS, its frames equal the same walk --headless at the mode's size, no
-# mallocs after init, and a second walk (auto, which must pick kms at the
-# connector's preferred mode) opens the device again after the first one's
-# exit, restore and master drop. The restored CRTC itself is not inspected.
+# mallocs after init, a walk stopped by SIGTERM exits 0 through the normal
+# exit, and a last walk (auto, which must pick kms at the connector's
+# preferred mode) opens the device again after the others' exit, restore and
+# master drop. The restored CRTC itself is not inspected.
 # TCG (SW_QEMU_ACCEL=kvm where KVM works; in a nested VM it may hang at boot). Needs qemu-system-x86, linux-image-amd64, busybox-static.
 #   kms_in_qemu.sh BUILD_DIR SOURCE_DIR
 set -uo pipefail
@@ -63,9 +64,18 @@ cd /tmp
 $build/firmware/seamwalk --pack teaset.swpack --orbit --frames 3 --display kms --size 640x480 \
   --png-dir kms --stats kms.json > kms.out 2>&1
 echo "SW_KMS_RC=\$?"
+# A service stop mid-walk: SIGTERM ends it after the frame, through the
+# normal exit (restore, master dropped).
+$build/firmware/seamwalk --pack teaset.swpack --orbit --frames 100000 --display kms \
+  --size 640x480 > term.out 2>&1 &
+walker=\$!
+sleep 30
+kill -TERM \$walker
+wait \$walker
+echo "SW_TERM_RC=\$?"
 $build/firmware/seamwalk --pack teaset.swpack --orbit --frames 2 > auto.out 2>&1
 echo "SW_AUTO_RC=\$?"
-cat kms.out auto.out
+cat kms.out term.out auto.out
 GUEST
 
 accel=${SW_QEMU_ACCEL:-tcg}
@@ -79,6 +89,9 @@ grep -q "SW_QEMU_DONE" "$work/console.log" || fail "the guest did not finish: $(
 grep -q "SW_KMS_RC=0" "$work/console.log" || fail "seamwalk --display kms: $(tail -20 "$work/console.log")"
 grep -q "^seamwalk: display kms 640x480 (asked for kms)" "$work/out/kms.out" \
   || fail "the summary names kms: $(cat "$work/out/kms.out")"
+grep -q "SW_TERM_RC=0" "$work/console.log" || fail "SIGTERM: $(cat "$work/out/term.out")"
+grep -q "^seamwalk: display kms 640x480" "$work/out/term.out" \
+  || fail "SIGTERM: no summary: $(cat "$work/out/term.out")"
 grep -q "SW_AUTO_RC=0" "$work/console.log" || fail "seamwalk auto: $(cat "$work/out/auto.out")"
 grep -q "^seamwalk: display kms .*(auto: /dev/dri/card\* exists and EGL offers GBM)" \
   "$work/out/auto.out" || fail "auto did not choose kms: $(cat "$work/out/auto.out")"
