@@ -354,7 +354,7 @@ static sw_status walk(runtime *rt, sw_error *err)
         if (rt->opt.store_dir)
             sw_boot_poll_good(&rt->boot, now_s() - t0, rt->opt.good_after_s);
         if (rt->display->close_requested)
-            break;   /* a developer closed the window: end the walk as if it were done */
+            break;   /* the window closed, or SIGTERM/SIGINT: end as if the walk were done */
     }
     rt->stats.walk_s = now_s() - t0;
     rt->stats.mallocs_after_init = sw_alloc_count_active()

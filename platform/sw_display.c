@@ -60,6 +60,10 @@ sw_status sw_display_init(sw_display *d, const sw_display_desc *desc, sw_error *
     }
     sw_status st = init_kind(d, desc, err);
     d->up = st == SW_OK;
+    /* Say that auto chose it, and why, so a failing choice is understood
+     * (headless's size message says so already). */
+    if (st != SW_OK && desc->kind == SW_DISPLAY_KIND_AUTO && d->kind != SW_DISPLAY_KIND_HEADLESS)
+        sw_error_prefix(err, "%s", d->chosen_why);
     return st;
 }
 

@@ -2,8 +2,8 @@
  * drm-legacy.c and common.c do it: init_drm (device, connector, mode, CRTC),
  * init_gbm (scan-out surface), init_egl (EGL on GBM), then per frame lock the
  * front buffer, flip to it, wait for the flip event, release the previous one.
- * Untested on hardware from this machine (it has no /dev/dri); the failure
- * without a device is tested (tests/test_display.c). */
+ * Run for real on QEMU's virtio-gpu (tests/qemu/kms_in_qemu.sh); untested
+ * on a unit's GPU. The failure without a device: tests/test_display.c. */
 #include "sw_display_kms.h"
 
 #include <EGL/egl.h>

@@ -6,8 +6,9 @@
  * locks the new front buffer, page-flips to it with an event, waits for the
  * event and releases the previous buffer (sw_kms_flip.h). Destroy puts back
  * the CRTC as it was found (the console) and drops master.
- * Written against the libdrm/GBM documentation and kmscube; this machine
- * has no DRM device, so only the failure without one is tested here. */
+ * Written against the libdrm/GBM documentation and kmscube. Tested without a
+ * device (tests/test_display.c) and on QEMU's virtio-gpu
+ * (tests/qemu/kms_in_qemu.sh); a real GPU's scan-out only on a unit. */
 #ifndef SW_DISPLAY_KMS_H
 #define SW_DISPLAY_KMS_H
 

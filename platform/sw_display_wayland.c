@@ -4,8 +4,9 @@
  * through a wl_egl_window. The keyboard's keymap comes from the compositor
  * as a file descriptor and is compiled with xkbcommon, so keys arrive as the
  * same keysyms X11 gives. Events are dispatched after each swap without
- * blocking. Untested here (no compositor on this machine); the failure
- * without one is tested (tests/test_display.c). */
+ * blocking. Tested on Weston's headless backend (tests/test_display_wayland.sh),
+ * which has no input devices: the keyboard listener is exercised only by a
+ * real compositor. */
 #include "sw_display_wayland.h"
 
 #include <EGL/egl.h>

@@ -148,6 +148,11 @@ static void wayland_without_a_compositor_is_one_clear_error(void)
     SW_CHECK_MSG(!strncmp(err.message, "wayland display: cannot connect to "
                           "'sw-test-no-compositor'", 58) && one_line(err.message),
                  "%s", err.message);
+    /* Chosen by auto, the error says so. */
+    SW_CHECK(try_init(SW_DISPLAY_KIND_AUTO, NULL, &d, &err) == SW_ERR_IO);
+    SW_CHECK_MSG(!strncmp(err.message, "auto: WAYLAND_DISPLAY is set and EGL offers Wayland: "
+                          "wayland display: cannot connect to 'sw-test-no-compositor'", 111),
+                 "%s", err.message);
     unsetenv("WAYLAND_DISPLAY");
 }
 

@@ -14,7 +14,7 @@
 set -uo pipefail
 build=$(cd "$1" && pwd) src=$(cd "$2" && pwd)
 fail() { echo "FAIL: $*"; exit 1; }
-for tool in qemu-system-x86_64 busybox; do
+for tool in qemu-system-x86_64 busybox cpio modprobe; do
   command -v $tool > /dev/null || { echo "SKIP: $tool is not installed"; exit 77; }
 done
 kernel=$(ls /boot/vmlinuz-*-amd64 2> /dev/null | sort -V | tail -1)
