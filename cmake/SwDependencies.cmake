@@ -5,6 +5,16 @@ find_package(Threads REQUIRED)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)   # pack section checksums
 pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)            # headless and device displays
 pkg_check_modules(GLESV2 REQUIRED IMPORTED_TARGET glesv2)      # the renderer
+# The device and developer displays (platform/sw_display_*.c).
+pkg_check_modules(DRM REQUIRED IMPORTED_TARGET libdrm)         # KMS: connectors, modes, page flips
+pkg_check_modules(GBM REQUIRED IMPORTED_TARGET gbm)            # KMS: scan-out buffers for EGL
+pkg_check_modules(X11 REQUIRED IMPORTED_TARGET x11)            # the X11 window
+pkg_check_modules(WAYLAND REQUIRED IMPORTED_TARGET wayland-client wayland-egl)  # the Wayland window
+pkg_check_modules(XKBCOMMON REQUIRED IMPORTED_TARGET xkbcommon)  # Wayland keys to keysyms
+pkg_check_modules(WAYLAND_PROTOCOLS REQUIRED wayland-protocols)  # xdg-shell.xml
+pkg_get_variable(WAYLAND_PROTOCOLS_DIR wayland-protocols pkgdatadir)
+pkg_check_modules(WAYLAND_SCANNER REQUIRED wayland-scanner)
+pkg_get_variable(WAYLAND_SCANNER wayland-scanner wayland_scanner)
 pkg_check_modules(SODIUM REQUIRED IMPORTED_TARGET libsodium)   # ed25519 pack signatures
 pkg_check_modules(INIH REQUIRED IMPORTED_TARGET inih)          # showroom scene files
 

@@ -8,6 +8,13 @@ packages=(
   build-essential cmake pkg-config   # compiler, build system
   libegl-dev libgles-dev             # EGL and GLES2 headers and loaders (glvnd)
   libegl-mesa0 libgl1-mesa-dri       # Mesa's EGL and llvmpipe: headless rendering
+  libdrm-dev libgbm-dev              # the KMS display: connectors, modes, page flips; GBM scan-out buffers
+  libx11-dev                         # the X11 developer window
+  libwayland-dev wayland-protocols   # the Wayland developer window (wayland-client, wayland-egl,
+  libwayland-bin                     #   wayland-scanner for xdg-shell)
+  libxkbcommon-dev                   # Wayland keyboard: keycodes to keysyms through the compositor's keymap
+  xvfb xauth                         # the X11 window test runs EGL on a virtual X server
+  weston                             # the Wayland window test: Weston's headless compositor
   libxxhash-dev                      # pack section checksums (XXH3-64)
   libstb-dev                         # stb_image_write (PNG frames), stb_image (tests)
   libinih-dev                        # showroom scene files (INI)

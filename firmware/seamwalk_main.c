@@ -5,11 +5,13 @@
  * and bounds -> tessellate what changed -> draw -> optional PNG and
  * measurement.
  * After start-up nothing in our code calls malloc (sw_alloc_count proves it).
- * This build renders headless only (EGL surfaceless); device displays and
- * input come with later work. The main thread is the GL thread. */
+ * It draws into the display --display chose (platform/sw_display.h:
+ * headless, KMS, an X11 or Wayland window); input comes with later work.
+ * The main thread is the GL thread. */
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,7 +22,7 @@
 #include "sw_alloc_count.h"
 #include "sw_boot.h"
 #include "sw_camera_path.h"
-#include "sw_egl_headless.h"
+#include "sw_display.h"
 #include "sw_message_screen.h"
 #include "sw_options.h"
 #include "sw_pack.h"
@@ -42,10 +44,11 @@ typedef struct runtime {
     sw_seam_drawn drawn;      /* the seams as drawn, checked in measured frames */
     sw_seam_fill fill;        /* fans over the tessellations' seam crossings */
     sw_stats stats;
-    sw_egl_headless egl;
+    sw_display *display;      /* main's; opened once, kept across --store's slot attempts */
+    int depth_bits;           /* the display's depth buffer, as the GL reports it */
     sw_renderer renderer;
     sw_gl_pool pool;          /* the cached tessellations, as rt->seam.cache lays them out */
-    int egl_up, renderer_up, pool_up;
+    int renderer_up, pool_up;
     uint8_t *pixels;          /* read-back, width * height * 4, only with --png-dir */
     size_t png_scratch;       /* bytes kept free in the arena for sw_png_write */
     sw_box model_box;
@@ -235,11 +238,8 @@ static sw_status start(runtime *rt, sw_error *err)
         if (mkdir(rt->opt.png_dir, 0777) != 0 && errno != EEXIST)
             return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.png_dir, strerror(errno));
     }
-    if ((st = sw_egl_headless_init_depth(&rt->egl, SW_GL_API_GLES2, rt->opt.width,
-                                         rt->opt.height, rt->opt.depth_bits, err)))
-        return st;
-    rt->egl_up = 1;
-    rt->stats.depth_bits = rt->egl.depth_bits;
+    rt->depth_bits = sw_display_depth_bits(rt->display);
+    rt->stats.depth_bits = rt->depth_bits;
     if (rt->opt.drop_surface >= 0)
         rt->seam.drop_surface = (uint32_t)rt->opt.drop_surface;
     if ((st = sw_renderer_init(&rt->renderer, SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES,
@@ -273,7 +273,7 @@ static sw_camera_pose pose_at(const runtime *rt, int frame)
 
 static sw_status write_png(runtime *rt, int frame, sw_error *err)
 {
-    sw_status st = sw_egl_headless_read_rgba(&rt->egl, rt->pixels, err);
+    sw_status st = sw_display_read_rgba(rt->display, rt->pixels, err);
     if (st != SW_OK)
         return st;
     size_t n = (size_t)rt->opt.width * rt->opt.height;
@@ -296,7 +296,7 @@ static sw_view begin_frame(runtime *rt, const sw_view *culled)
     double nearest, farthest;
     sw_view view = *culled;
     if (rt->opt.depth_fit && sw_seam_depth_range(&rt->seam, culled, &nearest, &farthest))
-        view = sw_view_fit_depth(culled, nearest, farthest, rt->egl.depth_bits);
+        view = sw_view_fit_depth(culled, nearest, farthest, rt->depth_bits);
     sw_stats_add_depth_range(&rt->stats, view.near_z, view.far_z);
     float mv[16], proj[16];
     sw_mat4_to_float(&view.view, mv);
@@ -373,7 +373,7 @@ static sw_status run_frame(runtime *rt, int frame, sw_error *err)
     double t0 = now_s();
     sw_camera_pose pose = pose_at(rt, frame);
     sw_view view = sw_view_make_depth(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
-                                      rt->opt.height, &rt->model_box, rt->egl.depth_bits);
+                                      rt->opt.height, &rt->model_box, rt->depth_bits);
     int measuring = frame % rt->opt.measure_every == 0;
     uint64_t triangles = 0;
     uint32_t drawn = 0, capped = 0;
@@ -389,9 +389,10 @@ static sw_status run_frame(runtime *rt, int frame, sw_error *err)
         rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0;
     if (capped > rt->stats.capped_patches_max)
         rt->stats.capped_patches_max = capped;
-    if (rt->opt.png_dir && frame % rt->opt.png_every == 0)
-        return write_png(rt, frame, err);
-    return SW_OK;
+    if (rt->opt.png_dir && frame % rt->opt.png_every == 0 &&
+        (st = write_png(rt, frame, err)) != SW_OK)
+        return st;
+    return sw_display_present(rt->display, err);
 }
 
 /* The whole process's heap calls when tests/process_alloc_shim.so is
@@ -417,6 +418,8 @@ static sw_status walk(runtime *rt, sw_error *err)
             return st;
         if (rt->opt.store_dir)
             sw_boot_poll_good(&rt->boot, now_s() - t0, rt->opt.good_after_s);
+        if (rt->display->close_requested)
+            break;   /* the window closed, or SIGTERM/SIGINT: end as if the walk were done */
     }
     rt->stats.walk_s = now_s() - t0;
     rt->stats.mallocs_after_init = sw_alloc_count_active()
@@ -428,23 +431,26 @@ static sw_status walk(runtime *rt, sw_error *err)
 
 /* ---- --store: the unit's pack store (sw_boot.h) ---------------------------- */
 
-/* Back to before start(), keeping the options and the boot, so the next
- * slot can be tried from scratch. */
-static void stop(runtime *rt);
+/* Back to before start(), keeping the options, the boot and the display,
+ * so the next slot can be tried from scratch (a display that works is not
+ * the slot's fault). */
+static void stop_walk(runtime *rt);
 static void reset_runtime(runtime *rt)
 {
-    stop(rt);
+    stop_walk(rt);
     sw_options opt = rt->opt;
     double start_s = rt->start_s;
     sw_boot boot = rt->boot;
+    sw_display *display = rt->display;
     memset(rt, 0, sizeof *rt);
     rt->opt = opt;
     rt->start_s = start_s;
     rt->boot = boot;
+    rt->display = display;
 }
 
-/* No slot starts: a block for the stats and the read-back, and a display
- * for the message screen (sw_message_screen.h). */
+/* No slot starts: a block for the stats and the read-back of the message
+ * screen (sw_message_screen.h), on the display main opened. */
 static sw_status start_message(runtime *rt, sw_error *err)
 {
     rt->no_pack = 1;
@@ -461,10 +467,6 @@ static sw_status start_message(runtime *rt, sw_error *err)
     rt->pixels = sw_arena_alloc(&rt->arena, pixels, 64);
     if (rt->opt.png_dir && mkdir(rt->opt.png_dir, 0777) != 0 && errno != EEXIST)
         return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.png_dir, strerror(errno));
-    if ((st = sw_egl_headless_init(&rt->egl, SW_GL_API_GLES2, rt->opt.width, rt->opt.height,
-                                   err)))
-        return st;
-    rt->egl_up = 1;
     return SW_OK;
 }
 
@@ -499,12 +501,16 @@ static sw_status show_message(runtime *rt, sw_error *err)
     for (int f = 0; f < rt->opt.frames; f++) {
         double f0 = now_s();
         sw_message_screen_draw(rt->opt.width, rt->opt.height, "NO VALID PACK");
-        sw_status st = sw_egl_headless_read_rgba(&rt->egl, rt->pixels, err);
+        sw_status st = sw_display_read_rgba(rt->display, rt->pixels, err);
         if (st != SW_OK)
             return st;
         sw_stats_add_frame(&rt->stats, (now_s() - f0) * 1000.0, 0, 0);
         if (rt->opt.png_dir && f % rt->opt.png_every == 0 && (st = write_png(rt, f, err)))
             return st;
+        if ((st = sw_display_present(rt->display, err)) != SW_OK)
+            return st;
+        if (rt->display->close_requested)
+            break;
     }
     rt->stats.walk_s = now_s() - t0;
     rt->stats.mallocs_after_init = -1; /* not counted: this is no walk */
@@ -551,15 +557,29 @@ static sw_status write_stats(runtime *rt, sw_error *err)
     return st;
 }
 
-static void stop(runtime *rt)
+static void stop_walk(runtime *rt)
 {
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
     if (rt->renderer_up)
         sw_renderer_destroy(&rt->renderer);
-    if (rt->egl_up)
-        sw_egl_headless_destroy(&rt->egl);
+    rt->pool_up = rt->renderer_up = 0;
     free(rt->block);
+    rt->block = NULL;
+}
+
+/* Before anything else, because a KMS display decides the size (its mode)
+ * that the arena's read-back and the view are made for. */
+static sw_status open_display(runtime *rt, sw_error *err)
+{
+    sw_display_desc desc = {.kind = rt->opt.display, .width = rt->opt.width,
+                            .height = rt->opt.height, .max_depth_bits = rt->opt.depth_bits};
+    sw_status st = sw_display_init(rt->display, &desc, err);
+    if (st != SW_OK)
+        return st;
+    rt->opt.width = rt->display->width;
+    rt->opt.height = rt->display->height;
+    return SW_OK;
 }
 
 static void print_summary(const runtime *rt)
@@ -571,6 +591,8 @@ static void print_summary(const runtime *rt)
            s->frames, s->patches_total, s->width, s->height, s->walk_s, s->error_max_px,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
+    printf("seamwalk: display %s %dx%d (%s)\n", sw_display_kind_name(rt->display->kind),
+           rt->display->width, rt->display->height, rt->display->chosen_why);
     if (rt->opt.png_dir)
         printf("seamwalk: pictures in %s/\n", rt->opt.png_dir);
     if (rt->opt.stats_path)
@@ -580,7 +602,9 @@ static void print_summary(const runtime *rt)
 int main(int argc, char **argv)
 {
     static runtime rt;
+    static sw_display display;   /* stays put: window listeners point into it */
     sw_error err = { SW_OK, "" };
+    rt.display = &display;
     rt.start_s = now_s();
     sw_status st = sw_options_parse(argc, argv, &rt.opt, &err);
     if (st != SW_OK || rt.opt.help) {
@@ -589,7 +613,14 @@ int main(int argc, char **argv)
         sw_options_print_usage(argv[0]);
         return st != SW_OK ? 2 : 0;
     }
-    st = rt.opt.store_dir ? start_from_store(&rt, &err) : start(&rt, &err);
+    /* A service stop (SIGTERM) or Ctrl-C ends the walk after the frame, so
+     * the stats are written and a KMS display gives the screen back. */
+    struct sigaction stop_walk_on = {.sa_handler = sw_display_close_on_signal};
+    sigaction(SIGTERM, &stop_walk_on, NULL);
+    sigaction(SIGINT, &stop_walk_on, NULL);
+    st = open_display(&rt, &err);
+    if (st == SW_OK)
+        st = rt.opt.store_dir ? start_from_store(&rt, &err) : start(&rt, &err);
     if (st == SW_OK)
         st = rt.no_pack ? show_message(&rt, &err) : walk(&rt, &err);
     if (st == SW_OK)
@@ -598,7 +629,9 @@ int main(int argc, char **argv)
         print_summary(&rt);
     else if (st != SW_OK)
         fprintf(stderr, "seamwalk: %s\n", err.message);
-    stop(&rt);
+    stop_walk(&rt);
+    if (display.up)
+        sw_display_destroy(&display);
     /* 3: the unit had no pack to show and showed the message screen instead. */
     return st != SW_OK ? 1 : rt.no_pack ? 3 : 0;
 }

@@ -29,7 +29,7 @@ typedef struct key_desc {
     const char *const *words;
 } key_desc;
 
-static const char *const display_words[] = {"headless", "kms", "x11", "wayland", NULL};
+static const char *const display_words[] = {"auto", "headless", "kms", "x11", "wayland", NULL};
 static const char *const nav_words[] = {"walk", "orbit", NULL};
 static const char *const bias_words[] = {"as-is", "disable", "pull-up", "pull-down", NULL};
 static const char *const action_words[] = {"none", "forward", "back", "turn_left",
@@ -87,7 +87,7 @@ enum { SECTION_NONE = -1, SECTION_GPIO = 100 };
 void sw_config_defaults(sw_config *cfg)
 {
     memset(cfg, 0, sizeof *cfg);
-    cfg->display = SW_DISPLAY_HEADLESS;
+    cfg->display = SW_DISPLAY_AUTO;
     cfg->fov_deg = 45;
     cfg->boot_attempts = 3;
     cfg->good_after_s = 30;
@@ -557,7 +557,7 @@ long sw_config_key_line(const sw_config *cfg, const char *section_dot_key)
 
 const char *sw_config_display_name(sw_config_display display)
 {
-    return (unsigned)display < 4 ? display_words[display] : "?";
+    return (unsigned)display < 5 ? display_words[display] : "?";
 }
 
 sw_debounce_params sw_config_gpio_debounce(const sw_config_gpio *gpio)

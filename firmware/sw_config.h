@@ -25,8 +25,10 @@
 /* inih reads lines of at most 200 bytes, so paths stay below that. */
 enum { SW_CONFIG_PATH_MAX = 192, SW_CONFIG_NAME_MAX = 32, SW_CONFIG_GPIO_MAX = 16 };
 
+/* The same choices, in the same order, as sw_display_kind (platform/sw_display.h). */
 typedef enum sw_config_display {
-    SW_DISPLAY_HEADLESS = 0,  /* EGL surfaceless: the only one built so far */
+    SW_DISPLAY_AUTO = 0,      /* from what EGL offers and the machine has */
+    SW_DISPLAY_HEADLESS,      /* EGL surfaceless */
     SW_DISPLAY_KMS,
     SW_DISPLAY_X11,
     SW_DISPLAY_WAYLAND,

@@ -32,17 +32,31 @@ static sw_status parse_real(const char *opt, const char *text, double min, doubl
     return SW_OK;
 }
 
-static sw_status parse_size(const char *text, int *w, int *h, sw_error *err)
+static sw_status parse_size(const char *opt, const char *text, int *w, int *h, sw_error *err)
 {
     const char *x = text ? strchr(text, 'x') : NULL;
-    char width[16];
+    char width[16], what[32];
     if (!x || (size_t)(x - text) >= sizeof width)
-        return sw_error_set(err, SW_ERR_ARG, "--headless expects WIDTHxHEIGHT, got '%s'",
+        return sw_error_set(err, SW_ERR_ARG, "%s expects WIDTHxHEIGHT, got '%s'", opt,
                             text ? text : "");
     memcpy(width, text, (size_t)(x - text));
     width[x - text] = '\0';
-    sw_status st = parse_int("--headless width", width, 16, 8192, w, err);
-    return st != SW_OK ? st : parse_int("--headless height", x + 1, 16, 8192, h, err);
+    snprintf(what, sizeof what, "%s width", opt);
+    sw_status st = parse_int(what, width, 16, 8192, w, err);
+    snprintf(what, sizeof what, "%s height", opt);
+    return st != SW_OK ? st : parse_int(what, x + 1, 16, 8192, h, err);
+}
+
+/* The config's words are in sw_display_kind's order (sw_config.h). */
+static sw_display_kind display_of(sw_config_display d)
+{
+    switch (d) {
+    case SW_DISPLAY_HEADLESS: return SW_DISPLAY_KIND_HEADLESS;
+    case SW_DISPLAY_KMS: return SW_DISPLAY_KIND_KMS;
+    case SW_DISPLAY_X11: return SW_DISPLAY_KIND_X11;
+    case SW_DISPLAY_WAYLAND: return SW_DISPLAY_KIND_WAYLAND;
+    default: return SW_DISPLAY_KIND_AUTO;
+    }
 }
 
 /* --background R,G,B (and --back-faces): three levels 0..255. */
@@ -88,6 +102,7 @@ static void set_defaults(sw_options *o)
 static void apply_config(sw_options *o)
 {
     const sw_config *c = &o->config;
+    o->display = display_of(c->display);
     o->width = c->width;
     o->height = c->height;
     o->fov_deg = c->fov_deg;
@@ -125,7 +140,7 @@ static config_choice take_choice(sw_options *o)
     return c;
 }
 
-static sw_status merge_choice(sw_options *o, const config_choice *c, sw_error *err)
+static void merge_choice(sw_options *o, const config_choice *c)
 {
     if (!o->pack_path && !o->store_dir) {
         o->pack_path = c->pack_path;
@@ -134,25 +149,15 @@ static sw_status merge_choice(sw_options *o, const config_choice *c, sw_error *e
     if (!o->orbit && !o->path_file && !o->view_name)
         o->orbit = c->orbit;
     if (o->width)
-        return SW_OK;
+        return;
     o->width = c->width;
     o->height = c->height;
-    if (o->config_path && o->config.display != SW_DISPLAY_HEADLESS)
-        return sw_error_set(err, SW_ERR_UNSUPPORTED, "%s:%ld: [display] display = %s is not "
-                            "built yet: this build renders headless only (display = headless, "
-                            "or --headless WxH)", o->config_path,
-                            sw_config_key_line(&o->config, "display.display"),
-                            sw_config_display_name(o->config.display));
-    return SW_OK;
 }
 
 static sw_status check_complete(const sw_options *o, sw_error *err)
 {
     if (!o->pack_path == !o->store_dir)
         return sw_error_set(err, SW_ERR_ARG, "give exactly one of --pack FILE and --store DIR");
-    if (!o->width)
-        return sw_error_set(err, SW_ERR_ARG,
-                            "--headless WxH is required: this build has no device display yet");
     if (!!o->orbit + !!o->path_file + !!o->view_name != 1)
         return sw_error_set(err, SW_ERR_ARG,
                             "give exactly one of --path FILE, --orbit and --view NAME");
@@ -191,7 +196,12 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         } else if (!strcmp(a, "--pack")) {
             o->pack_path = v;
         } else if (!strcmp(a, "--headless")) {
-            st = parse_size(v, &o->width, &o->height, err);
+            o->display = SW_DISPLAY_KIND_HEADLESS;
+            st = parse_size(a, v, &o->width, &o->height, err);
+        } else if (!strcmp(a, "--size")) {
+            st = parse_size(a, v, &o->width, &o->height, err);
+        } else if (!strcmp(a, "--display")) {
+            st = sw_display_kind_parse(v, &o->display, err);
         } else if (!strcmp(a, "--path")) {
             o->path_file = v;
         } else if (!strcmp(a, "--view")) {
@@ -245,26 +255,44 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         i += takes_value;
     }
     if (st == SW_OK)
-        st = merge_choice(o, &choice, err);
+        merge_choice(o, &choice);
     return st != SW_OK ? st : check_complete(o, err);
 }
 
 void sw_options_print_usage(const char *argv0)
 {
     fprintf(stderr,
-            "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
+            "usage: %s (--pack FILE | --store DIR) (--path FILE | --orbit | --view NAME)\n"
+            "          [--display auto|headless|kms|x11|wayland] [--size WxH] [--headless WxH]\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
             "          [--config FILE] [--no-cache] [--background R,G,B] [--back-faces lit|R,G,B]\n"
             "          [--depth-bits 16|24] [--depth-fit 0|1] [--fill-crossings 0|1]\n"
-            "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
+            "Walks a seamwalk pack and shows it on a display.\n"
+            "  --display NAME      where to draw (default auto, or [display] display):\n"
+            "                        headless  EGL surfaceless, offscreen; needs a size (CI)\n"
+            "                        kms       full screen on /dev/dri/card*, no X or Wayland\n"
+            "                                  (libdrm + GBM; needs DRM master: nothing else\n"
+            "                                  showing on it)\n"
+            "                        x11       a window on $DISPLAY (EGL on X11)\n"
+            "                        wayland   a window on $WAYLAND_DISPLAY (EGL on Wayland)\n"
+            "                        auto      wayland if WAYLAND_DISPLAY is set, else x11 if\n"
+            "                                  DISPLAY is set, else kms if a /dev/dri/card*\n"
+            "                                  exists, each only if EGL offers it; else headless\n"
+            "                      the summary line says which ran and why; a display that\n"
+            "                      cannot open is one error line, exit 1\n"
+            "  --size WxH          headless: the picture; window: its size (default 1280x720);\n"
+            "                      kms: that mode if the connector has it, else its preferred\n"
+            "                      mode, else its largest\n"
+            "  --headless WxH      --display headless --size WxH\n"
             "  --config FILE       read the unit's configuration (example, every key and its\n"
             "                      default: firmware/seamwalk.ini); its values fill what the\n"
             "                      command line does not give; without it no file is read\n"
             "  --path FILE         follow a camera path (format: firmware/sw_camera_path.h)\n"
             "  --orbit             circle the model around the pack's up axis\n"
             "  --view NAME         stand at one of the pack's named viewpoints\n"
-            "  --frames N          frames to render (default 120)\n"
+            "  --frames N          frames to render (default 120); closing the window,\n"
+            "                      SIGTERM or Ctrl-C end the walk sooner, stats written\n"
             "  --png-dir DIR       write frame_NNNNN.png every --png-every frames\n"
             "  --stats FILE.json   write the walk's statistics\n"
             "  --memory-mb M       refuse to start if the arena needs more (default 256)\n"

@@ -6,11 +6,14 @@
 #define SW_OPTIONS_H
 
 #include "sw_config.h"
+#include "sw_display.h"
 #include "sw_error.h"
 
 typedef struct sw_options {
     const char *pack_path;
-    int width, height;           /* from --headless WxH */
+    sw_display_kind display;     /* --display NAME (--headless WxH: headless); default auto */
+    int width, height;           /* --size WxH or --headless WxH; 0: the display's own
+                                    (headless has none and refuses to start) */
     const char *path_file;       /* --path FILE, or NULL with orbit set */
     int orbit;
     int no_cache;                /* --no-cache: tessellate every visible surface every frame at

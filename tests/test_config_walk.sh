@@ -13,6 +13,7 @@ walker=$build/firmware/seamwalk
   > /dev/null || fail "build the teaset"
 cat > "$work/unit.ini" <<INI
 [display]
+display = headless
 size = 160x120
 [pack]
 pack = $work/teaset.swpack

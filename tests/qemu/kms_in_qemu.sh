@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# The KMS display on a real DRM device: boots Debian's kernel in QEMU with a
+# virtio-gpu, the host's root file system read-only over 9p and the work
+# folder writable, and runs seamwalk --display kms (and auto) inside, where
+# /dev/dri/card0 is virtio-gpu's and Mesa renders through GBM with its
+# software rasteriser (kms_swrast). Checks from the host: the walk ran on
+# KMS, its frames equal the same walk --headless at the mode's size, no
+# mallocs after init, a walk stopped by SIGTERM exits 0 through the normal
+# exit, and a last walk (auto, which must pick kms at the connector's
+# preferred mode) opens the device again after the others' exit, restore and
+# master drop. The restored CRTC itself is not inspected.
+# TCG (SW_QEMU_ACCEL=kvm where KVM works; in a nested VM it may hang at boot). Needs qemu-system-x86, linux-image-amd64, busybox-static.
+#   kms_in_qemu.sh BUILD_DIR SOURCE_DIR
+set -uo pipefail
+build=$(cd "$1" && pwd) src=$(cd "$2" && pwd)
+fail() { echo "FAIL: $*"; exit 1; }
+for tool in qemu-system-x86_64 busybox cpio modprobe; do
+  command -v $tool > /dev/null || { echo "SKIP: $tool is not installed"; exit 77; }
+done
+kernel=$(ls /boot/vmlinuz-*-amd64 2> /dev/null | sort -V | tail -1)
+[ -n "$kernel" ] || { echo "SKIP: no Debian kernel in /boot (linux-image-amd64)"; exit 77; }
+kver=${kernel#/boot/vmlinuz-}
+work=$build/tests/kms_qemu
+rm -rf "$work" && mkdir -p "$work/initrd/bin" "$work/initrd/lib/modules" "$work/out"
+
+# The initramfs: busybox and the 9p modules with their dependencies, in the
+# order modprobe would load them; the rest comes from the host root.
+cp "$(command -v busybox)" "$work/initrd/bin/busybox"
+for m in virtio_pci 9p 9pnet_virtio; do
+  modprobe -S "$kver" --show-depends $m | awk '$1 == "insmod" {print $2}'
+done | awk '!seen[$0]++' > "$work/modules.txt"
+[ -s "$work/modules.txt" ] || fail "modprobe found no 9p modules for $kver"
+while read -r ko; do
+  cp "$ko" "$work/initrd/lib/modules/"
+  echo "insmod /lib/modules/$(basename "$ko")" >> "$work/initrd/load-modules"
+done < "$work/modules.txt"
+cat > "$work/initrd/init" <<'INIT'
+#!/bin/busybox sh
+/bin/busybox --install -s /bin
+mount -t proc proc /proc 2> /dev/null || { mkdir -p /proc && mount -t proc proc /proc; }
+mkdir -p /sys /dev /host && mount -t sysfs sys /sys && mount -t devtmpfs dev /dev
+sh /load-modules
+mount -t 9p -o trans=virtio,version=9p2000.L,ro hostroot /host || echo "SW_QEMU: no host root"
+for d in proc sys dev; do mount --bind /$d /host/$d; done
+mount -t tmpfs tmp /host/tmp
+mount -t 9p -o trans=virtio,version=9p2000.L work /host/tmp || echo "SW_QEMU: no work"
+chroot /host /bin/bash /tmp/guest.sh
+echo "SW_QEMU_DONE"
+poweroff -f
+INIT
+chmod +x "$work/initrd/init"
+(cd "$work/initrd" && find . | cpio -o -H newc 2> /dev/null | gzip -1) > "$work/initrd.gz"
+
+"$build/assets/seamwalk-pack" build "$src/assets/samples/teaset.ini" -o "$work/out/teaset.swpack" \
+  > /dev/null || fail "build the teaset"
+# In the guest, /tmp is $work/out.
+cat > "$work/out/guest.sh" <<GUEST
+set -u
+export LIBGL_ALWAYS_SOFTWARE=1
+modprobe virtio_gpu || echo "SW_QEMU: modprobe virtio_gpu failed"
+for _ in \$(seq 50); do [ -e /dev/dri/card0 ] && break; sleep 0.2; done
+ls -l /dev/dri
+cd /tmp
+$build/firmware/seamwalk --pack teaset.swpack --orbit --frames 3 --display kms --size 640x480 \
+  --png-dir kms --stats kms.json > kms.out 2>&1
+echo "SW_KMS_RC=\$?"
+# A service stop mid-walk: SIGTERM ends it after the frame, through the
+# normal exit (restore, master dropped).
+$build/firmware/seamwalk --pack teaset.swpack --orbit --frames 100000 --display kms \
+  --size 640x480 > term.out 2>&1 &
+walker=\$!
+sleep 30
+kill -TERM \$walker
+wait \$walker
+echo "SW_TERM_RC=\$?"
+$build/firmware/seamwalk --pack teaset.swpack --orbit --frames 2 > auto.out 2>&1
+echo "SW_AUTO_RC=\$?"
+cat kms.out term.out auto.out
+GUEST
+
+accel=${SW_QEMU_ACCEL:-tcg}
+timeout 900 qemu-system-x86_64 -machine q35,accel="$accel" -m 1536 -smp 2 \
+  -kernel "$kernel" -initrd "$work/initrd.gz" \
+  -append "console=ttyS0 panic=-1" -nographic -no-reboot -display none \
+  -virtfs local,path=/,mount_tag=hostroot,security_model=none,readonly=on \
+  -virtfs local,path="$work/out",mount_tag=work,security_model=none \
+  -device virtio-gpu-pci > "$work/console.log" 2>&1
+grep -q "SW_QEMU_DONE" "$work/console.log" || fail "the guest did not finish: $(tail -20 "$work/console.log")"
+grep -q "SW_KMS_RC=0" "$work/console.log" || fail "seamwalk --display kms: $(tail -20 "$work/console.log")"
+grep -q "^seamwalk: display kms 640x480 (asked for kms)" "$work/out/kms.out" \
+  || fail "the summary names kms: $(cat "$work/out/kms.out")"
+grep -q "SW_TERM_RC=0" "$work/console.log" || fail "SIGTERM: $(cat "$work/out/term.out")"
+grep -q "^seamwalk: display kms 640x480" "$work/out/term.out" \
+  || fail "SIGTERM: no summary: $(cat "$work/out/term.out")"
+grep -q "SW_AUTO_RC=0" "$work/console.log" || fail "seamwalk auto: $(cat "$work/out/auto.out")"
+grep -q "^seamwalk: display kms .*(auto: /dev/dri/card\* exists and EGL offers GBM)" \
+  "$work/out/auto.out" || fail "auto did not choose kms: $(cat "$work/out/auto.out")"
+"$build/firmware/seamwalk" --pack "$work/out/teaset.swpack" --orbit --frames 3 \
+  --headless 640x480 --png-dir "$work/headless" > /dev/null || fail "walk headless"
+for f in "$work"/headless/frame_*.png; do
+  "$build/tests/image_compare" "$f" "$work/out/kms/$(basename "$f")" || fail "$(basename "$f") differs"
+done
+python3 - "$work/out/kms.json" <<'PY' || fail "stats of the KMS walk"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["mallocs_after_init"] == 0, s["mallocs_after_init"]
+assert s["viewport"] == [640, 480], s["viewport"]
+PY
+echo "ok: KMS on virtio-gpu in QEMU ($accel)"

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The X11 developer window for real: Xvfb (a virtual X server) with Mesa's
+# llvmpipe. Runs tests/test_display_x11 (draw, read back, keys, close), then
+# seamwalk --display x11 against --headless: the same frames (image_compare),
+# no mallocs after init, and auto choosing x11 when DISPLAY is set.
+# Skips (exit 77) only where Xvfb is not installed; cmake/install-deps.sh
+# installs it, so CI runs it.
+#   test_display_x11.sh BUILD_DIR SOURCE_DIR
+set -uo pipefail
+build=$1 src=$2
+command -v Xvfb > /dev/null || { echo "SKIP: Xvfb is not installed (Debian: xvfb)"; exit 77; }
+work=$build/tests/display_x11
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+
+# -displayfd: Xvfb picks a free display number and writes it when ready.
+Xvfb -displayfd 5 -screen 0 1024x768x24 -nolisten tcp 5> "$work/display" 2> "$work/xvfb.log" &
+xvfb=$!
+trap 'kill "$xvfb" 2> /dev/null; wait "$xvfb" 2> /dev/null' EXIT
+for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
+[ -s "$work/display" ] || fail "Xvfb did not start: $(cat "$work/xvfb.log")"
+export DISPLAY=:$(tr -d '\n' < "$work/display")
+unset WAYLAND_DISPLAY
+
+"$build/tests/test_display_x11" || fail "test_display_x11"
+
+"$build/assets/seamwalk-pack" build "$src/assets/samples/teaset.ini" -o "$work/teaset.swpack" \
+  > /dev/null || fail "build the teaset"
+walker=$build/firmware/seamwalk
+common=(--pack "$work/teaset.swpack" --orbit --frames 4 --png-every 1)
+"$walker" "${common[@]}" --display x11 --size 320x240 --png-dir "$work/x11" \
+  --stats "$work/x11.json" > "$work/x11.out" || fail "walk in the X11 window"
+grep -q "^seamwalk: display x11 320x240 (asked for x11)" "$work/x11.out" \
+  || fail "the summary names the display: $(cat "$work/x11.out")"
+"$walker" "${common[@]}" --headless 320x240 --png-dir "$work/headless" > /dev/null \
+  || fail "walk headless"
+for f in "$work"/headless/frame_*.png; do
+  "$build/tests/image_compare" "$f" "$work/x11/$(basename "$f")" || fail "$(basename "$f") differs"
+done
+python3 - "$work/x11.json" <<'PY' || fail "stats of the X11 walk"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["mallocs_after_init"] == 0, s["mallocs_after_init"]
+assert s["viewport"] == [320, 240], s["viewport"]
+assert s["frames"] == 4, s["frames"]
+PY
+"$walker" "${common[@]}" --size 160x120 --frames 1 > "$work/auto.out" || fail "walk with auto"
+grep -q "^seamwalk: display x11 160x120 (auto: DISPLAY is set and EGL offers X11)" \
+  "$work/auto.out" || fail "auto did not choose x11: $(cat "$work/auto.out")"
+echo "ok: X11 window on $DISPLAY"
