@@ -19,6 +19,17 @@ sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surf
     return m;
 }
 
+uint32_t sw_walk_cache_vertices(const sw_seam_graph *g, const sw_pack_surface *surfaces)
+{
+    uint64_t patches = 0;
+    for (uint32_t s = 0; s < g->surface_count; s++)
+        patches += surfaces[s].patch_count;
+    uint32_t v = SW_WALK_CACHE_MIN;
+    while (v < SW_WALK_CACHE_MAX && (uint64_t)v < 32 * patches)
+        v *= 2;
+    return v;
+}
+
 uint64_t sw_walk_scratch_bytes(const sw_walk_sizes *m)
 {
     return sw_trim_tess_scratch_bytes(m->patches, m->points, SW_BEZIER_MAX_DEGREE, NULL);
@@ -33,6 +44,7 @@ uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surf
         return 0;
     sw_walk_sizes m = sw_walk_largest_surface(g, surfaces);
     uint64_t n = g->surface_count, v = SW_WALK_VERTICES;
+    uint32_t cache = sw_walk_cache_vertices(g, surfaces);
     uint64_t bytes = sw_seam_select_arena_bytes(g);
     bytes += 4 * take(n * sizeof(float)) + 3 * take(n);  /* target, seam bound, offset, depth;
                                                              visible, evictable, dirty */
@@ -42,6 +54,5 @@ uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surf
              take((m.patches + 1ull) * sizeof(sw_trim_patch)) + take(sw_walk_scratch_bytes(&m));
     bytes += 2 * take(v * 3 * sizeof(float)) + take(v * 2 * sizeof(float)) +
              take(v * sizeof(uint32_t)) + take(SW_WALK_INDICES * sizeof(uint16_t));
-    return bytes + sw_seam_cache_arena_bytes((uint32_t)n, SW_WALK_CACHE_VERTICES,
-                                             SW_WALK_CACHE_INDICES);
+    return bytes + sw_seam_cache_arena_bytes((uint32_t)n, cache, sw_walk_cache_indices(cache));
 }

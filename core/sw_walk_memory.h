@@ -17,10 +17,16 @@
 #define SW_WALK_VERTICES 65536u
 #define SW_WALK_INDICES (6u * 65536u)
 
-/* The cache's pools: 2^19 vertices (8 MiB as drawn, 4 MiB of (u, v)) and
- * six indices a vertex (6 MiB), the same again in GL buffers. */
-#define SW_WALK_CACHE_VERTICES (1u << 19)
-#define SW_WALK_CACHE_INDICES (6u << 19)
+/* The cache's pools: vertices (16 bytes as drawn, 8 of (u, v)) and six
+ * indices a vertex (12 bytes), the same again in GL buffers, sized by the
+ * pack: 32 vertices a patch, a power of two from 2^17 (two of the largest
+ * surfaces) to 2^22 (the teaset gets 2^17, 4.5 MiB; the 40,000-patch
+ * showroom 2^21, 72 MiB, where 2^19 ran out with 10,600 surfaces in view:
+ * 423,000 triangles, blocks rounded to powers of two). */
+#define SW_WALK_CACHE_MIN (1u << 17)
+#define SW_WALK_CACHE_MAX (1u << 22)
+uint32_t sw_walk_cache_vertices(const sw_seam_graph *g, const sw_pack_surface *surfaces);
+static inline uint32_t sw_walk_cache_indices(uint32_t vertices) { return 6u * vertices; }
 
 /* The largest surface in loop points (slots), loops and patches, each on
  * its own: the walk's per-surface buffers hold any surface. */

@@ -97,8 +97,9 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     for (size_t k = 0; k < n; k++)
         w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0;
     memset(w->dirty, 0, n);
-    st = sw_seam_cache_init(&w->cache, (uint32_t)n, SW_WALK_CACHE_VERTICES, SW_WALK_CACHE_INDICES,
-                            arena, err);
+    uint32_t cache = sw_walk_cache_vertices(&pack->seam, pack->surfaces);
+    st = sw_seam_cache_init(&w->cache, (uint32_t)n, cache, sw_walk_cache_indices(cache), arena,
+                            err);
     return st != SW_OK ? st : measure_sewing(w, err);
 }
 
@@ -208,10 +209,11 @@ static int gather_loops(sw_seam_walk *w, uint32_t s, sw_trim_loops *loops, uint3
     return sw_seam_surface_loops(&w->select, s, w->seam_bound[s], &buf, loops, outer);
 }
 
-/* Tessellates surface s at its target, coarsening (x4, three times) when it
- * would need more than 65536 vertices (*capped then). */
+/* Tessellates surface s at bound (its target, or coarser: see remake),
+ * coarsening (x4, three times) when it would need more than 65536 vertices
+ * (*capped then). */
 static sw_status tessellate(sw_seam_walk *w, uint32_t s, const sw_trim_loops *loops,
-                            sw_trim_tess_result *result, int *capped)
+                            double bound, sw_trim_tess_result *result, int *capped)
 {
     uint32_t patch_count = 0;
     sw_status st = sw_trim_patches_from_pack(w->pack, s, w->patches, w->max_patches, &patch_count,
@@ -221,7 +223,6 @@ static sw_status tessellate(sw_seam_walk *w, uint32_t s, const sw_trim_loops *lo
     sw_trim_tess_buffers out = { w->positions, w->normals, w->uvs, w->ids, w->indices,
                                  SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES, 0 };
     const sw_trim_tess_options opt = sw_seam_surface_tess_options();
-    double bound = w->target[s];
     *capped = 0;
     for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
         st = sw_trim_tess(w->patches, patch_count, loops, bound, &opt, &w->scratch, &out, result,
@@ -300,32 +301,41 @@ static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame 
         e->state = SW_SEAM_GONE;
         return;
     }
-    sw_trim_tess_result t;
-    int capped = 0;
-    sw_status st = tessellate(w, s, &loops, &t, &capped);
-    if (st == SW_ERR_FORMAT && outer < loops.loop_count) {
-        /* A hole's coarse polyline crosses another loop (both are within
-         * the bound of where they belong, and so of each other): drawn
-         * without its holes rather than not at all. */
-        loops.loop_count = outer;
-        st = tessellate(w, s, &loops, &t, &capped);
-        e->holes_filled = st == SW_OK;
-    }
     frame->retessellated++;
-    e->fill_triangles = 0;
-    if (st == SW_OK && w->fill) {
-        uint32_t left = 0;
-        e->fill_triangles = sw_seam_fill_crossings(w->fill, w->ids, t.vertex_count, w->indices,
-                                                   &t.index_count, SW_SEAM_WALK_INDICES, &left);
-    }
-    if (st == SW_OK && keep(w, s, &t, pool, frame)) {
-        e->error_bound = (float)t.error_bound;
-        e->capped = (uint8_t)capped;
-        uint32_t crossings = 0;
-        e->cracks = count_cracks(w, &t, &crossings);
-        e->crossings = crossings;
-        frame->retess_triangles += t.index_count / 3 - e->fill_triangles;
-        return;
+    /* When the cache cannot hold the mesh (every surface in it is in view),
+     * the surface is drawn coarser (the bound x4, up to three times) rather
+     * than not at all, and counted as capped; its border stays the seams'. */
+    for (int coarser = 0; coarser < 4; coarser++) {
+        sw_trim_tess_result t;
+        int capped = 0;
+        double bound = w->target[s] * (double)(1u << (2 * coarser));
+        sw_status st = tessellate(w, s, &loops, bound, &t, &capped);
+        if (st == SW_ERR_FORMAT && outer < loops.loop_count) {
+            /* A hole's coarse polyline crosses another loop (both are within
+             * the bound of where they belong, and so of each other): drawn
+             * without its holes rather than not at all. */
+            loops.loop_count = outer;
+            st = tessellate(w, s, &loops, bound, &t, &capped);
+            e->holes_filled = st == SW_OK;
+        }
+        if (st != SW_OK)
+            break;
+        e->fill_triangles = 0;
+        if (w->fill) {
+            uint32_t left = 0;
+            e->fill_triangles = sw_seam_fill_crossings(w->fill, w->ids, t.vertex_count,
+                                                       w->indices, &t.index_count,
+                                                       SW_SEAM_WALK_INDICES, &left);
+        }
+        if (keep(w, s, &t, pool, frame)) {
+            e->error_bound = (float)t.error_bound;
+            e->capped = (uint8_t)(capped || coarser > 0);
+            uint32_t crossings = 0;
+            e->cracks = count_cracks(w, &t, &crossings);
+            e->crossings = crossings;
+            frame->retess_triangles += t.index_count / 3 - e->fill_triangles;
+            return;
+        }
     }
     /* A visible surface left out is a hole: every point of its border has
      * nothing on this side, so each counts as a crack. */

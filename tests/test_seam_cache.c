@@ -95,7 +95,7 @@ static void test_runtime_bytes_hold_pack_and_walk(const char *seed)
     SW_CHECK_MSG(sw_seam_walk_init(&w, &pack, &a, 0.5, &err) == SW_OK, "%s", err.message);
     uint64_t walk = sw_walk_arena_bytes(&pack.seam, pack.surfaces);
     SW_CHECK(a.used <= h.runtime_bytes);
-    SW_CHECK_MSG(h.runtime_bytes - a.used < 16384 && walk > (uint64_t)SW_WALK_CACHE_VERTICES * 24,
+    SW_CHECK_MSG(h.runtime_bytes - a.used < 16384 && walk > (uint64_t)SW_WALK_CACHE_MIN * 24,
                  "runtime_bytes %llu, used %zu, walk %llu", (unsigned long long)h.runtime_bytes,
                  a.used, (unsigned long long)walk);
     free(mem);
