@@ -19,11 +19,12 @@
 
 /* The cache's pools: vertices (16 bytes as drawn, 8 of (u, v)) and six
  * indices a vertex (12 bytes), the same again in GL buffers, sized by the
- * pack: 32 vertices a patch, a power of two from 2^17 (two of the largest
- * surfaces) to 2^22 (the teaset gets 2^17, 4.5 MiB; the 40,000-patch
- * showroom 2^21, 72 MiB, where 2^19 ran out with 10,600 surfaces in view:
- * 423,000 triangles, blocks rounded to powers of two). */
-#define SW_WALK_CACHE_MIN (1u << 17)
+ * pack: 32 vertices a patch, a power of two from 2^19 to 2^22 (the teaset
+ * and the generated 2,068-face courtyard get 2^19, 18 MiB: at 2^17 the
+ * courtyard's close views ran out and refused surfaces; the 40,000-patch
+ * showroom gets 2^21, 72 MiB, where 2^19 ran out with 10,600 surfaces in
+ * view: 423,000 triangles, blocks rounded to powers of two). */
+#define SW_WALK_CACHE_MIN (1u << 19)
 #define SW_WALK_CACHE_MAX (1u << 22)
 uint32_t sw_walk_cache_vertices(const sw_seam_graph *g, const sw_pack_surface *surfaces);
 static inline uint32_t sw_walk_cache_indices(uint32_t vertices) { return 6u * vertices; }
