@@ -42,9 +42,9 @@ mkdir -p /sys /dev /host && mount -t sysfs sys /sys && mount -t devtmpfs dev /de
 sh /load-modules
 mount -t 9p -o trans=virtio,version=9p2000.L,ro hostroot /host || echo "SW_QEMU: no host root"
 for d in proc sys dev; do mount --bind /$d /host/$d; done
-mount -t tmpfs tmp /host/tmp
-mount -t 9p -o trans=virtio,version=9p2000.L work /host/tmp || echo "SW_QEMU: no work"
-chroot /host /bin/bash /tmp/guest.sh
+mount -t tmpfs run /host/run && mkdir -p /host/run/sw
+mount -t 9p -o trans=virtio,version=9p2000.L work /host/run/sw || echo "SW_QEMU: no work"
+chroot /host /bin/bash /run/sw/guest.sh
 echo "SW_QEMU_DONE"
 poweroff -f
 INIT
@@ -53,14 +53,15 @@ chmod +x "$work/initrd/init"
 
 "$build/assets/seamwalk-pack" build "$src/assets/samples/teaset.ini" -o "$work/out/teaset.swpack" \
   > /dev/null || fail "build the teaset"
-# In the guest, /tmp is $work/out.
+# In the guest, /run/sw is $work/out. Not /tmp: a build under the host's
+# /tmp (a CI clone there) must stay visible through the host root.
 cat > "$work/out/guest.sh" <<GUEST
 set -u
 export LIBGL_ALWAYS_SOFTWARE=1
 modprobe virtio_gpu || echo "SW_QEMU: modprobe virtio_gpu failed"
 for _ in \$(seq 50); do [ -e /dev/dri/card0 ] && break; sleep 0.2; done
 ls -l /dev/dri
-cd /tmp
+cd /run/sw
 $build/firmware/seamwalk --pack teaset.swpack --orbit --frames 3 --display kms --size 640x480 \
   --png-dir kms --stats kms.json > kms.out 2>&1
 echo "SW_KMS_RC=\$?"
