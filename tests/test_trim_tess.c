@@ -407,6 +407,20 @@ static uint32_t triangles_outside(const loops *l, const mesh *m)
     return outside;
 }
 
+/* Tessellates at error 1 (opts: the runtime's options, else the defaults)
+ * and checks the mesh tiles the loops' region: its area, its topology, the
+ * border on the loop points, no triangle outside. */
+static void check_tiles_region(const surface *s, const loops *l, int opts, double expect,
+                               mesh *m)
+{
+    SW_CHECK((opts ? run_runtime(s, l, 1.0, m) : run(s, l, 1.0, m)) == SW_OK);
+    int negative;
+    SW_CHECK_NEAR(total_area(m, &negative), expect, 1e-6);
+    check_mesh_topology(m);
+    check_border(l, m, opts);
+    SW_CHECK(triangles_outside(l, m) == 0);
+}
+
 /* A small hole in a surface coarse enough to be one grid cell (a bolt hole
  * in a face): the cell gets a grid line through the hole, so the hole's
  * rim is clipped like any crossing and nothing is skipped. */
@@ -421,12 +435,7 @@ static void test_hole_inside_one_cell(void)
     double expect = fabs(loop_area(&l, 0)) - fabs(loop_area(&l, 1));
     for (int opts = 0; opts < 2; opts++) {
         mesh m;
-        SW_CHECK((opts ? run_runtime(&s, &l, 1.0, &m) : run(&s, &l, 1.0, &m)) == SW_OK);
-        int negative;
-        SW_CHECK_NEAR(total_area(&m, &negative), expect, 1e-6);
-        check_mesh_topology(&m);
-        check_border(&l, &m, opts);
-        SW_CHECK(triangles_outside(&l, &m) == 0);
+        check_tiles_region(&s, &l, opts, expect, &m);
         SW_CHECK(m.res.skipped_loops == 0 && m.res.fallback_ears == 0);
         SW_CHECK(m.res.leaf_count >= 2 && m.res.error_bound <= 1.0);
     }
@@ -446,12 +455,7 @@ static void test_many_points_in_one_cell(void)
     double expect = fabs(loop_area(&l, 0)) - fabs(loop_area(&l, 1));
     for (int opts = 0; opts < 2; opts++) {
         mesh m;
-        SW_CHECK((opts ? run_runtime(&s, &l, 1.0, &m) : run(&s, &l, 1.0, &m)) == SW_OK);
-        int negative;
-        SW_CHECK_NEAR(total_area(&m, &negative), expect, 1e-6);
-        check_mesh_topology(&m);
-        check_border(&l, &m, opts);
-        SW_CHECK(triangles_outside(&l, &m) == 0);
+        check_tiles_region(&s, &l, opts, expect, &m);
         SW_CHECK(m.res.fallback_ears == 0 && m.res.skipped_loops == 0);
         SW_CHECK_MSG(m.res.leaf_count > 8, "%u cells", m.res.leaf_count);
     }
