@@ -1,5 +1,6 @@
 # tests of the runtime trimmed tessellation (core/sw_trim_tess.c)
 sw_add_test(test_trim_tess SOURCES test_trim_tess.c LIBS sw_core)
+sw_add_test(test_trim_tess_errors SOURCES test_trim_tess_errors.c LIBS sw_core)
 sw_add_test(test_trim_tess_seams SOURCES test_trim_tess_seams.c LIBS sw_core)
 # The same on every trimmed surface of the shared IGES models (skipped, exit
 # 77, when none is present).
