@@ -6,7 +6,9 @@ pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)   # pack section ch
 pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)            # headless and device displays
 pkg_check_modules(GLESV2 REQUIRED IMPORTED_TARGET glesv2)      # the renderer
 pkg_check_modules(SODIUM REQUIRED IMPORTED_TARGET libsodium)   # ed25519 pack signatures
-pkg_check_modules(INIH REQUIRED IMPORTED_TARGET inih)          # showroom scene files
+pkg_check_modules(INIH REQUIRED IMPORTED_TARGET inih)          # showroom scene files, the config
+pkg_check_modules(HIDAPI REQUIRED IMPORTED_TARGET hidapi-hidraw)  # gamepads (sw_hid_hidapi.c)
+pkg_check_modules(GPIOD REQUIRED IMPORTED_TARGET libgpiod)     # GPIO buttons (sw_gpio_gpiod.c)
 
 # stb ships as headers (libstb-dev); we compile the implementations we use
 # ourselves so that allocation can be routed into the arena.

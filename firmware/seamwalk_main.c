@@ -5,8 +5,10 @@
  * and bounds -> tessellate what changed -> draw -> optional PNG and
  * measurement.
  * After start-up nothing in our code calls malloc (sw_alloc_count proves it).
- * This build renders headless only (EGL surfaceless); device displays and
- * input come with later work. The main thread is the GL thread. */
+ * This build renders headless only (EGL surfaceless); device displays come
+ * with later work. With --navigate or --input-timeline the camera comes from
+ * the input step (sw_kiosk_run.h), one call per frame. The main thread is
+ * the GL thread. */
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
@@ -21,6 +23,7 @@
 #include "sw_boot.h"
 #include "sw_camera_path.h"
 #include "sw_egl_headless.h"
+#include "sw_kiosk_run.h"
 #include "sw_message_screen.h"
 #include "sw_options.h"
 #include "sw_pack.h"
@@ -52,6 +55,9 @@ typedef struct runtime {
     sw_boot boot;             /* with --store: the slot being started, mark-good */
     int loading_slot;         /* with --store: the slot start() loads */
     int no_pack;              /* with --store: no slot started; the message screen runs */
+    sw_kiosk_run kiosk;       /* with --navigate or --input-timeline */
+    int kiosk_up;
+    sw_camera_pose kiosk_pose;   /* this frame's, from the input step */
 } runtime;
 
 static double now_s(void)
@@ -181,6 +187,15 @@ static sw_status find_view(runtime *rt, sw_error *err)
                         rt->pack.viewpoint_count ? ": see seamwalk-pack info" : "");
 }
 
+static sw_status start_kiosk(runtime *rt, sw_error *err)
+{
+    rt->kiosk_up = 1;
+    return sw_kiosk_run_start(&rt->kiosk, &rt->opt, &rt->frame, &rt->model_box,
+                              rt->pack.viewpoints, rt->pack.viewpoint_count,
+                              rt->opt.fov_deg * SW_PI / 180.0,
+                              (double)rt->opt.width / rt->opt.height, err);
+}
+
 static sw_status start(runtime *rt, sw_error *err)
 {
     size_t path_bytes;
@@ -202,6 +217,8 @@ static sw_status start(runtime *rt, sw_error *err)
     if (rt->opt.path_file && (st = load_path(rt, path_bytes, err)) != SW_OK)
         return st;
     if (rt->opt.view_name && (st = find_view(rt, err)) != SW_OK)
+        return st;
+    if ((rt->opt.navigate || rt->opt.input_timeline) && (st = start_kiosk(rt, err)) != SW_OK)
         return st;
     double pack_ms = rt->stats.pack_open_ms;
     if ((st = sw_stats_init(&rt->stats, &rt->arena, rt->opt.frames, rt->opt.max_error_px, err)))
@@ -235,6 +252,8 @@ static sw_vec3 vec3_of(const float v[3]) { return sw_v3(v[0], v[1], v[2]); }
 static sw_camera_pose pose_at(const runtime *rt, int frame)
 {
     double fovy = rt->opt.fov_deg * SW_PI / 180.0;
+    if (rt->kiosk_up)
+        return rt->kiosk_pose;
     if (rt->view)
         return (sw_camera_pose){ vec3_of(rt->view->eye), vec3_of(rt->view->target),
                                  sw_v3_normalize(vec3_of(rt->view->up)) };
@@ -349,6 +368,8 @@ static sw_status walk(runtime *rt, sw_error *err)
     uint64_t process_before = process ? process() : 0;
     double t0 = now_s();
     for (int f = 0; f < rt->opt.frames; f++) {
+        if (rt->kiosk_up) /* the input step: devices -> actions -> navigation -> pose */
+            rt->kiosk_pose = sw_kiosk_run_frame(&rt->kiosk, f);
         sw_status st = run_frame(rt, f, err);
         if (st != SW_OK)
             return st;
@@ -490,6 +511,9 @@ static sw_status write_stats(runtime *rt, sw_error *err)
 
 static void stop(runtime *rt)
 {
+    if (rt->kiosk_up)
+        sw_kiosk_run_stop(&rt->kiosk);
+    rt->kiosk_up = 0;
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
     if (rt->renderer_up)

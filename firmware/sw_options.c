@@ -110,7 +110,7 @@ static sw_status merge_choice(sw_options *o, const config_choice *c, sw_error *e
         o->pack_path = c->pack_path;
         o->store_dir = c->store_dir;
     }
-    if (!o->orbit && !o->path_file && !o->view_name)
+    if (!o->orbit && !o->path_file && !o->view_name && !o->navigate && !o->input_timeline)
         o->orbit = c->orbit;
     if (o->width)
         return SW_OK;
@@ -132,9 +132,9 @@ static sw_status check_complete(const sw_options *o, sw_error *err)
     if (!o->width)
         return sw_error_set(err, SW_ERR_ARG,
                             "--headless WxH is required: this build has no device display yet");
-    if (!!o->orbit + !!o->path_file + !!o->view_name != 1)
-        return sw_error_set(err, SW_ERR_ARG,
-                            "give exactly one of --path FILE, --orbit and --view NAME");
+    if (!!o->orbit + !!o->path_file + !!o->view_name + !!o->navigate + !!o->input_timeline != 1)
+        return sw_error_set(err, SW_ERR_ARG, "give exactly one of --path FILE, --orbit, --view "
+                            "NAME, --navigate and --input-timeline FILE");
     return SW_OK;
 }
 
@@ -159,6 +159,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         } else if (!strcmp(a, "--orbit")) {
             o->orbit = 1;
             takes_value = 0;
+        } else if (!strcmp(a, "--navigate")) {
+            o->navigate = 1;
+            takes_value = 0;
         } else if (!strcmp(a, "--no-cache")) {
             o->no_cache = 1;
             takes_value = 0;
@@ -175,6 +178,10 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             o->path_file = v;
         } else if (!strcmp(a, "--view")) {
             o->view_name = v;
+        } else if (!strcmp(a, "--input-timeline")) {
+            o->input_timeline = v;
+        } else if (!strcmp(a, "--pose-log")) {
+            o->pose_log = v;
         } else if (!strcmp(a, "--frames")) {
             st = parse_int(a, v, 1, 10000000, &o->frames, err);
         } else if (!strcmp(a, "--png-dir")) {
@@ -212,10 +219,11 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
 void sw_options_print_usage(const char *argv0)
 {
     fprintf(stderr,
-            "usage: %s (--pack FILE | --store DIR) --headless WxH (--path FILE | --orbit | --view NAME)\n"
+            "usage: %s (--pack FILE | --store DIR) --headless WxH\n"
+            "          (--path FILE | --orbit | --view NAME | --navigate | --input-timeline FILE)\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--config FILE] [--no-cache]\n"
+            "          [--config FILE] [--pose-log FILE] [--no-cache]\n"
             "Walks a seamwalk pack and renders it headless (EGL surfaceless).\n"
             "  --config FILE       read the unit's configuration (example, every key and its\n"
             "                      default: firmware/seamwalk.ini); its values fill what the\n"
@@ -223,6 +231,15 @@ void sw_options_print_usage(const char *argv0)
             "  --path FILE         follow a camera path (format: firmware/sw_camera_path.h)\n"
             "  --orbit             circle the model around the pack's up axis\n"
             "  --view NAME         stand at one of the pack's named viewpoints\n"
+            "  --navigate          the unit's inputs drive the camera: gamepads (hidapi,\n"
+            "                      hot-plugged), [gpio] buttons (libgpiod), the keyboard\n"
+            "                      (evdev); walk, orbit, viewpoints, home, attract tour\n"
+            "                      (README \"Inputs and navigation\"; keys: [gamepad],\n"
+            "                      [keyboard], [navigation], [gpio NAME] in the config)\n"
+            "  --input-timeline FILE  the same navigation driven by a recorded input timeline\n"
+            "                      (format: firmware/sw_input_timeline.h) through fake\n"
+            "                      devices on a simulated 30 Hz clock: replays exactly\n"
+            "  --pose-log FILE     write each frame's camera pose (frame t eye target up)\n"
             "  --frames N          frames to render (default 120)\n"
             "  --png-dir DIR       write frame_NNNNN.png every --png-every frames\n"
             "  --stats FILE.json   write the walk's statistics\n"

@@ -28,6 +28,9 @@ typedef struct sw_options {
     const char *keys_path;       /* --keys FILE: trusted keys; default DIR/keys */
     int boot_attempts;           /* --boot-attempts K: boots a pending slot gets; default 3 */
     double good_after_s;         /* --good-after-s S: healthy walk time before mark-good; default 30 */
+    int navigate;                /* --navigate: the unit's devices drive the camera */
+    const char *input_timeline;  /* --input-timeline FILE: a timeline drives it (fake devices) */
+    const char *pose_log;        /* --pose-log FILE: each frame's camera pose */
     int help;
     const char *config_path;     /* --config FILE, or NULL: no file is read */
     /* The file's values. pack_path, store_dir and keys_path may point into
