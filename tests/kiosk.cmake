@@ -8,3 +8,7 @@ sw_add_fuzz_target(fuzz_config SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_conf
 # seamwalk --config end to end (tests/test_config_walk.sh).
 add_test(NAME walk_config
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_config_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+
+# Inputs and navigation (issue 11 items 2-5): recorded descriptors in tests/hid/.
+set(SW_HID_FIXTURES ${CMAKE_CURRENT_SOURCE_DIR}/hid)
+sw_add_test(test_hid_desc SOURCES test_hid_desc.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
