@@ -12,3 +12,5 @@ add_test(NAME walk_config
 # Inputs and navigation (issue 11 items 2-5): recorded descriptors in tests/hid/.
 set(SW_HID_FIXTURES ${CMAKE_CURRENT_SOURCE_DIR}/hid)
 sw_add_test(test_hid_desc SOURCES test_hid_desc.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
+sw_add_test(test_gamepad_map SOURCES test_gamepad_map.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
+sw_add_test(test_pads SOURCES test_pads.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
