@@ -137,7 +137,8 @@ static void step_orbit(sw_nav *n, const sw_nav_input *in, double dt)
     n->v_turn = ramp(n->v_turn, in->turn * rate, rate, n, dt);
     n->v_look = ramp(n->v_look, in->look * rate, rate, n, dt);
     n->v_move = ramp(n->v_move, in->move, 1.0, n, dt);
-    n->azimuth = remainder(n->azimuth + n->v_turn * dt, 2 * SW_PI);
+    /* Turning right carries the camera to its right around the product. */
+    n->azimuth = remainder(n->azimuth - n->v_turn * dt, 2 * SW_PI);
     n->elevation = clamp(n->elevation + n->v_look * dt, -85 * DEG, 85 * DEG);
     /* Forward halves the distance in a second at full deflection. */
     n->radius = fmax(n->radius * exp2(-n->v_move * dt), 1.0);
@@ -239,7 +240,10 @@ void sw_nav_step(sw_nav *n, const sw_nav_input *in, double dt)
     } else {
         n->idle_s += dt;
     }
-    if (!in_attract && n->p.attract_timeout_s > 0 && n->idle_s >= n->p.attract_timeout_s) {
+    /* idle_s is a sum of frame times: allow its rounding so that 300 frames
+     * of 1/30 s are 10 s. */
+    if (!in_attract && n->p.attract_timeout_s > 0 &&
+        n->idle_s >= n->p.attract_timeout_s - 1e-9) {
         begin_attract(n);
         return;
     }
