@@ -144,8 +144,9 @@ static int gpio_open(void *ctx, const sw_config_gpio *g, int *high, sw_error *er
 
 static int gpio_read(void *ctx, int handle, sw_gpio_edge *edge)
 {
-    sw_fake_line *l = &((sw_fake_devices *)ctx)->lines[handle];
-    if (l->count == 0)
+    sw_fake_devices *f = ctx;
+    sw_fake_line *l = &f->lines[handle];
+    if (l->count == 0 || l->edges[l->head].t_ns > f->now_ns)
         return 0;
     *edge = l->edges[l->head];
     l->head = (l->head + 1) % SW_FAKE_QUEUE;
@@ -236,6 +237,7 @@ static void play_one(const sw_fake_player *p, sw_fake_devices *f, size_t i)
 
 void sw_fake_play(sw_fake_player *p, sw_fake_devices *f, double now_s)
 {
+    f->now_ns = (int64_t)llround(now_s * 1e9);
     while (p->next < p->timeline->count && p->timeline->events[p->next].t_s <= now_s)
         play_one(p, f, p->next++);
 }

@@ -41,6 +41,7 @@ typedef struct sw_fake_devices {
     int line_count;
     struct { int code, value; } keys[SW_FAKE_QUEUE];
     int key_head, key_count;
+    int64_t now_ns;               /* edges later than this are not read yet, as on a line */
     int enumerations;             /* how often the enumerator ran */
     int dropped;                  /* events that found a full queue */
 } sw_fake_devices;
@@ -67,7 +68,7 @@ typedef struct sw_fake_player {
     size_t next;
 } sw_fake_player;
 
-/* Feeds every event with t_s <= now_s. */
+/* Feeds every event with t_s <= now_s and sets f->now_ns. */
 void sw_fake_play(sw_fake_player *p, sw_fake_devices *f, double now_s);
 
 #endif

@@ -15,3 +15,4 @@ sw_add_test(test_hid_desc SOURCES test_hid_desc.c LIBS sw_runtime ARGS ${SW_HID_
 sw_add_test(test_gamepad_map SOURCES test_gamepad_map.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
 sw_add_test(test_pads SOURCES test_pads.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
 sw_add_test(test_nav SOURCES test_nav.c LIBS sw_runtime)
+sw_add_test(test_kiosk SOURCES test_kiosk.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
