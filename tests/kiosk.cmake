@@ -16,3 +16,10 @@ sw_add_test(test_gamepad_map SOURCES test_gamepad_map.c LIBS sw_runtime ARGS ${S
 sw_add_test(test_pads SOURCES test_pads.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
 sw_add_test(test_nav SOURCES test_nav.c LIBS sw_runtime)
 sw_add_test(test_kiosk SOURCES test_kiosk.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
+sw_add_test(test_input_timeline SOURCES test_input_timeline.c LIBS sw_runtime)
+sw_add_fuzz_target(fuzz_hid_desc SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_hid_desc.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/hid_desc)
+sw_add_fuzz_target(fuzz_pad_mapping SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pad_mapping.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pad_mapping)
+sw_add_fuzz_target(fuzz_input_timeline SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_input_timeline.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/input_timeline)
