@@ -23,3 +23,7 @@ sw_add_fuzz_target(fuzz_pad_mapping SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz
   LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pad_mapping)
 sw_add_fuzz_target(fuzz_input_timeline SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_input_timeline.c
   LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/input_timeline)
+
+# seamwalk --input-timeline end to end (tests/test_input_walk.sh).
+add_test(NAME walk_input_timeline
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_input_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
