@@ -87,6 +87,11 @@ static void start_transition(sw_nav *n, sw_camera_pose to, int attract)
 {
     n->from = sw_nav_pose(n);
     n->to = to;
+    /* The walk's target is a point far ahead; bring it to the destination's
+     * distance so the glide turns the view evenly instead of swinging it. */
+    double reach = sw_v3_length(sw_v3_sub(to.target, to.eye));
+    sw_vec3 dir = sw_v3_normalize(sw_v3_sub(n->from.target, n->from.eye));
+    n->from.target = sw_v3_add(n->from.eye, sw_v3_scale(dir, reach));
     n->after_orbit = n->mode == SW_NAV_MODE_ORBIT ||
                      (n->mode == SW_NAV_MODE_TRANSITION && n->after_orbit);
     n->mode = SW_NAV_MODE_TRANSITION;
