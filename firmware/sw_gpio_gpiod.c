@@ -28,8 +28,10 @@ static int fail(struct gpiod_chip *chip, sw_error *err, const sw_config_gpio *g,
 {
     if (chip)
         gpiod_chip_close(chip);
-    sw_error_set(err, SW_ERR_IO, "%s line %s: %s", g->chip,
-                 g->line_name[0] ? g->line_name : "(offset)", what);
+    if (g->line_name[0])
+        sw_error_set(err, SW_ERR_IO, "%s line %s: %s", g->chip, g->line_name, what);
+    else
+        sw_error_set(err, SW_ERR_IO, "%s line %d: %s", g->chip, g->line_offset, what);
     return -1;
 }
 

@@ -132,3 +132,12 @@ for ra, rg in zip(a, g):
     assert worst < 1e-5, (ra[0], worst)
 print("ok   poses match tests/golden/input_walk.poses")
 PY
+
+# The real devices on a machine without them (this one: no GPIO chip, no
+# controller): --navigate runs, each absence a log line, not a failure.
+sed -e 's/^chip = missing/chip = gpiochip-absent/' "$work/unit.ini" > "$work/live.ini"
+"$walker" --config "$work/live.ini" --navigate --frames 5 --stats "$work/live.json" \
+  > /dev/null 2> "$work/live.stderr" || { cat "$work/live.stderr"; fail "--navigate without devices exited $?"; }
+grep -q "\[gpio next\] not used: gpiochip0 line 17: no such GPIO chip" "$work/live.stderr" ||
+  [ -e /dev/gpiochip0 ] || fail "no log line for the absent GPIO chip: $(cat "$work/live.stderr")"
+echo "ok   --navigate without devices: $(wc -l < "$work/live.stderr") log lines, exit 0"
