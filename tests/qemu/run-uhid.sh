@@ -10,6 +10,7 @@
 set -euo pipefail
 build=$(cd "$1" && pwd) src=$(cd "$2" && pwd) kver=${3:-$(ls /lib/modules | sort -V | tail -n 1)}
 work=$build/tests/qemu && mkdir -p "$work"
+[ -r "/boot/vmlinuz-$kver" ] || { echo "FAIL: no /boot/vmlinuz-$kver to boot (linux-image-amd64)"; exit 1; }
 cc -O2 -I"$src/core" -I"$src/firmware" -o "$work/uhid_pad" "$src/tests/qemu/uhid_pad.c" \
   "$src/firmware/sw_input_timeline.c" "$src/core/sw_error.c" -lm
 [ -f "$build/tests/input_walk/teaset.swpack" ] || { echo "run tests/test_input_walk.sh first"; exit 1; }

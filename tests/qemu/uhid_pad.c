@@ -1,6 +1,7 @@
 /* A virtual gamepad through /dev/uhid for tests/qemu/run-uhid.sh: creates a
  * HID device with a recorded descriptor (a tests/hid/ hex file), so hidraw
- * and hidapi see a real device; after WAIT seconds pushes the left stick
+ * and hidapi see a real device; once something opens it (UHID_OPEN: hidapi
+ * opening /dev/hidrawN) and WAIT seconds more, pushes the left stick
  * forward for PUSH seconds (reports every 10 ms in the F310's D-mode
  * layout), centres it, and after one more second destroys the device (an
  * unplug). Runs inside the QEMU guest as root.
@@ -59,7 +60,9 @@ int main(int argc, char **argv)
     create.u.create2.rd_size = (uint16_t)read_descriptor(argv[1], create.u.create2.rd_data,
                                                          sizeof create.u.create2.rd_data);
     snprintf((char *)create.u.create2.name, sizeof create.u.create2.name, "seamwalk uhid F310");
-    create.u.create2.bus = 0x03; /* BUS_USB */
+    /* Bluetooth, not USB: hidapi's hidraw backend drops a USB-bus device
+     * that has no USB parent in sysfs, which a UHID device never has. */
+    create.u.create2.bus = 0x05; /* BUS_BLUETOOTH */
     create.u.create2.vendor = 0x046D;
     create.u.create2.product = 0xC216;
     create.u.create2.version = 0x0110;
@@ -71,12 +74,25 @@ int main(int argc, char **argv)
     fprintf(stderr, "uhid_pad: created\n");
     static const uint8_t rest[8] = {0x80, 0x80, 0x80, 0x80, 0x08, 0, 0, 0};
     static const uint8_t push[8] = {0x80, 0x00, 0x80, 0x80, 0x08, 0, 0, 0};
+    struct uhid_event ev;
+    do { /* the kernel passes reports on only while the device is open */
+        if (read(fd, &ev, sizeof ev) <= 0) {
+            perror("uhid_pad: read");
+            return 1;
+        }
+    } while (ev.type != UHID_OPEN);
+    fprintf(stderr, "uhid_pad: opened\n");
     report(fd, rest, sizeof rest);
     sleep_s(atof(argv[2]));
+    int sent = 0, failed = 0;
     for (double t = 0; t < atof(argv[3]); t += 0.01) {
-        report(fd, push, sizeof push);
+        if (report(fd, push, sizeof push) == 0)
+            sent++;
+        else
+            failed++;
         sleep_s(0.01);
     }
+    fprintf(stderr, "uhid_pad: %d reports pushed, %d failed\n", sent, failed);
     report(fd, rest, sizeof rest);
     sleep_s(1.0);
     struct uhid_event destroy = {.type = UHID_DESTROY};
