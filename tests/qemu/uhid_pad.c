@@ -60,8 +60,9 @@ int main(int argc, char **argv)
     create.u.create2.rd_size = (uint16_t)read_descriptor(argv[1], create.u.create2.rd_data,
                                                          sizeof create.u.create2.rd_data);
     snprintf((char *)create.u.create2.name, sizeof create.u.create2.name, "seamwalk uhid F310");
-    /* Bluetooth, not USB: hidapi's hidraw backend drops a USB-bus device
-     * that has no USB parent in sysfs, which a UHID device never has. */
+    /* Bluetooth, not USB: hidapi's hidraw backend looks up the USB parent
+     * of a USB-bus device in sysfs, which a UHID device does not have; with
+     * bus USB seamwalk never opened the pad (one run, 2026-12-01). */
     create.u.create2.bus = 0x05; /* BUS_BLUETOOTH */
     create.u.create2.vendor = 0x046D;
     create.u.create2.product = 0xC216;
@@ -75,12 +76,14 @@ int main(int argc, char **argv)
     static const uint8_t rest[8] = {0x80, 0x80, 0x80, 0x80, 0x08, 0, 0, 0};
     static const uint8_t push[8] = {0x80, 0x00, 0x80, 0x80, 0x08, 0, 0, 0};
     struct uhid_event ev;
+    alarm(300); /* nobody opened it: give up rather than hang the guest */
     do { /* the kernel passes reports on only while the device is open */
         if (read(fd, &ev, sizeof ev) <= 0) {
             perror("uhid_pad: read");
             return 1;
         }
     } while (ev.type != UHID_OPEN);
+    alarm(0);
     fprintf(stderr, "uhid_pad: opened\n");
     report(fd, rest, sizeof rest);
     sleep_s(atof(argv[2]));
