@@ -16,7 +16,9 @@ pkg_get_variable(WAYLAND_PROTOCOLS_DIR wayland-protocols pkgdatadir)
 pkg_check_modules(WAYLAND_SCANNER REQUIRED wayland-scanner)
 pkg_get_variable(WAYLAND_SCANNER wayland-scanner wayland_scanner)
 pkg_check_modules(SODIUM REQUIRED IMPORTED_TARGET libsodium)   # ed25519 pack signatures
-pkg_check_modules(INIH REQUIRED IMPORTED_TARGET inih)          # showroom scene files
+pkg_check_modules(INIH REQUIRED IMPORTED_TARGET inih)          # showroom scene files, the config
+pkg_check_modules(HIDAPI REQUIRED IMPORTED_TARGET hidapi-hidraw)  # gamepads (sw_hid_hidapi.c)
+pkg_check_modules(GPIOD REQUIRED IMPORTED_TARGET libgpiod)     # GPIO buttons (sw_gpio_gpiod.c)
 
 # stb ships as headers (libstb-dev); we compile the implementations we use
 # ourselves so that allocation can be routed into the arena.

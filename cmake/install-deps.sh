@@ -17,7 +17,9 @@ packages=(
   weston                             # the Wayland window test: Weston's headless compositor
   libxxhash-dev                      # pack section checksums (XXH3-64)
   libstb-dev                         # stb_image_write (PNG frames), stb_image (tests)
-  libinih-dev                        # showroom scene files (INI)
+  libinih-dev                        # showroom scene files and the unit's config (INI)
+  libhidapi-dev                      # gamepads and joysticks (hidapi-hidraw, firmware/sw_hid_hidapi.c)
+  libgpiod-dev                       # GPIO buttons (libgpiod v1, firmware/sw_gpio_gpiod.c)
   libsodium-dev                      # ed25519 signatures of packs (seamwalk-pack sign, seamwalk-flash)
   libgl-dev libglu1-mesa-dev         # the benchmark's reference: GLU's NURBS tessellator
   python3                            # tests read the stats JSON

@@ -6,8 +6,9 @@
  * measurement.
  * After start-up nothing in our code calls malloc (sw_alloc_count proves it).
  * It draws into the display --display chose (platform/sw_display.h:
- * headless, KMS, an X11 or Wayland window); input comes with later work.
- * The main thread is the GL thread. */
+ * headless, KMS, an X11 or Wayland window). With --navigate or
+ * --input-timeline the camera comes from the input step (sw_kiosk_run.h),
+ * one call per frame. The main thread is the GL thread. */
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
@@ -23,6 +24,7 @@
 #include "sw_boot.h"
 #include "sw_camera_path.h"
 #include "sw_display.h"
+#include "sw_kiosk_run.h"
 #include "sw_message_screen.h"
 #include "sw_options.h"
 #include "sw_pack.h"
@@ -58,6 +60,9 @@ typedef struct runtime {
     sw_boot boot;             /* with --store: the slot being started, mark-good */
     int loading_slot;         /* with --store: the slot start() loads */
     int no_pack;              /* with --store: no slot started; the message screen runs */
+    sw_kiosk_run kiosk;       /* with --navigate or --input-timeline */
+    int kiosk_up;
+    sw_camera_pose kiosk_pose;   /* this frame's, from the input step */
 } runtime;
 
 static double now_s(void)
@@ -203,6 +208,15 @@ static sw_status find_view(runtime *rt, sw_error *err)
                         rt->pack.viewpoint_count ? ": see seamwalk-pack info" : "");
 }
 
+static sw_status start_kiosk(runtime *rt, sw_error *err)
+{
+    rt->kiosk_up = 1;
+    return sw_kiosk_run_start(&rt->kiosk, &rt->opt, &rt->frame, &rt->model_box,
+                              rt->pack.viewpoints, rt->pack.viewpoint_count,
+                              rt->opt.fov_deg * SW_PI / 180.0,
+                              (double)rt->opt.width / rt->opt.height, err);
+}
+
 static sw_status start(runtime *rt, sw_error *err)
 {
     size_t path_bytes;
@@ -224,6 +238,8 @@ static sw_status start(runtime *rt, sw_error *err)
     if (rt->opt.path_file && (st = load_path(rt, path_bytes, err)) != SW_OK)
         return st;
     if (rt->opt.view_name && (st = find_view(rt, err)) != SW_OK)
+        return st;
+    if ((rt->opt.navigate || rt->opt.input_timeline) && (st = start_kiosk(rt, err)) != SW_OK)
         return st;
     double pack_ms = rt->stats.pack_open_ms;
     if ((st = sw_stats_init(&rt->stats, &rt->arena, rt->opt.frames, rt->opt.max_error_px, err)))
@@ -259,6 +275,8 @@ static sw_vec3 vec3_of(const float v[3]) { return sw_v3(v[0], v[1], v[2]); }
 static sw_camera_pose pose_at(const runtime *rt, int frame)
 {
     double fovy = rt->opt.fov_deg * SW_PI / 180.0;
+    if (rt->kiosk_up)
+        return rt->kiosk_pose;
     if (rt->view)
         return (sw_camera_pose){ vec3_of(rt->view->eye), vec3_of(rt->view->target),
                                  sw_v3_normalize(vec3_of(rt->view->up)) };
@@ -413,6 +431,8 @@ static sw_status walk(runtime *rt, sw_error *err)
     uint64_t process_before = process ? process() : 0;
     double t0 = now_s();
     for (int f = 0; f < rt->opt.frames; f++) {
+        if (rt->kiosk_up) /* the input step: devices -> actions -> navigation -> pose */
+            rt->kiosk_pose = sw_kiosk_run_frame(&rt->kiosk, f);
         sw_status st = run_frame(rt, f, err);
         if (st != SW_OK)
             return st;
@@ -559,6 +579,9 @@ static sw_status write_stats(runtime *rt, sw_error *err)
 
 static void stop_walk(runtime *rt)
 {
+    if (rt->kiosk_up)
+        sw_kiosk_run_stop(&rt->kiosk);
+    rt->kiosk_up = 0;
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
     if (rt->renderer_up)

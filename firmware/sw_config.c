@@ -34,7 +34,8 @@ static const char *const nav_words[] = {"walk", "orbit", NULL};
 static const char *const bias_words[] = {"as-is", "disable", "pull-up", "pull-down", NULL};
 static const char *const action_words[] = {"none", "forward", "back", "turn_left",
                                            "turn_right", "next_view", "prev_view", "home",
-                                           "toggle_mode", "attract", NULL};
+                                           "toggle_mode", "attract", "look_up", "look_down",
+                                           "strafe_left", "strafe_right", NULL};
 
 #define C(field) offsetof(sw_config, field)
 #define G(field) offsetof(sw_config_gpio, field)
@@ -56,10 +57,23 @@ static const key_desc config_keys[] = {
     {"gamepad", "enabled", K_BOOL, C(gamepad_enabled), 0, 0, 0, NULL},
     {"gamepad", "mapping", K_PATH, C(gamepad_mapping), 0, 0, 0, NULL},
     {"gamepad", "dead_zone", K_REAL, C(gamepad_dead_zone), 0, 0, 0.95, NULL},
+#define PAD_BUTTON(name, i) {"gamepad", name, K_ENUM, C(gamepad_action[i]), 0, 0, 0, action_words}
+    PAD_BUTTON("a", 0), PAD_BUTTON("b", 1), PAD_BUTTON("x", 2), PAD_BUTTON("y", 3),
+    PAD_BUTTON("back", 4), PAD_BUTTON("guide", 5), PAD_BUTTON("start", 6),
+    PAD_BUTTON("leftstick", 7), PAD_BUTTON("rightstick", 8), PAD_BUTTON("leftshoulder", 9),
+    PAD_BUTTON("rightshoulder", 10), PAD_BUTTON("dpup", 11), PAD_BUTTON("dpdown", 12),
+    PAD_BUTTON("dpleft", 13), PAD_BUTTON("dpright", 14),
+#undef PAD_BUTTON
+    {"keyboard", "enabled", K_BOOL, C(keyboard_enabled), 0, 0, 0, NULL},
+    {"keyboard", "device", K_PATH, C(keyboard_device), 0, 0, 0, NULL},
     {"navigation", "mode", K_ENUM, C(nav_mode), 0, 0, 0, nav_words},
     {"navigation", "walk_speed_mm_s", K_REAL, C(walk_speed_mm_s), 0, 0, 1e6, NULL},
     {"navigation", "turn_speed_deg_s", K_REAL, C(turn_speed_deg_s), 0, 0, 3600, NULL},
     {"navigation", "orbit_speed_deg_s", K_REAL, C(orbit_speed_deg_s), 0, 0, 3600, NULL},
+    {"navigation", "accel_s", K_REAL, C(accel_s), 0, 0.01, 10, NULL},
+    {"navigation", "eye_height_mm", K_REAL, C(eye_height_mm), 0, 0, 1e6, NULL},
+    {"navigation", "transition_s", K_REAL, C(transition_s), 0, 0.05, 60, NULL},
+    {"navigation", "attract_hold_s", K_REAL, C(attract_hold_s), 0, 0.5, 3600, NULL},
     {"navigation", "attract_timeout_s", K_REAL, C(attract_timeout_s), 0, 0, 86400, NULL},
 };
 enum { CONFIG_KEY_COUNT = sizeof config_keys / sizeof config_keys[0] };
@@ -81,7 +95,7 @@ static const key_desc gpio_keys[] = {
 enum { GPIO_KEY_COUNT = sizeof gpio_keys / sizeof gpio_keys[0] };
 
 static const char *const section_words[] = {"display", "pack", "render", "budgets",
-                                            "gamepad", "navigation", NULL};
+                                            "gamepad", "keyboard", "navigation", NULL};
 enum { SECTION_NONE = -1, SECTION_GPIO = 100 };
 
 void sw_config_defaults(sw_config *cfg)
@@ -98,6 +112,18 @@ void sw_config_defaults(sw_config *cfg)
     cfg->budget_tess_ms = 8;
     cfg->gamepad_enabled = 1;
     cfg->gamepad_dead_zone = 0.15;
+    static const sw_config_action pad_actions[SW_CONFIG_PAD_BUTTONS] = {
+        SW_ACTION_NEXT_VIEW, SW_ACTION_PREV_VIEW, SW_ACTION_TOGGLE_MODE, SW_ACTION_HOME,
+        SW_ACTION_NONE, SW_ACTION_HOME, SW_ACTION_ATTRACT, SW_ACTION_NONE, SW_ACTION_NONE,
+        SW_ACTION_PREV_VIEW, SW_ACTION_NEXT_VIEW, SW_ACTION_FORWARD, SW_ACTION_BACK,
+        SW_ACTION_TURN_LEFT, SW_ACTION_TURN_RIGHT};
+    memcpy(cfg->gamepad_action, pad_actions, sizeof pad_actions);
+    cfg->keyboard_enabled = 1;
+    memcpy(cfg->keyboard_device, "auto", 5);
+    cfg->accel_s = 0.4;
+    cfg->eye_height_mm = 1600;
+    cfg->transition_s = 1.5;
+    cfg->attract_hold_s = 8;
     cfg->nav_mode = SW_NAV_WALK;
     cfg->walk_speed_mm_s = 1500;
     cfg->turn_speed_deg_s = 90;
@@ -372,7 +398,8 @@ static int begin_section(config_parse *ps, const char *header, size_t len)
                                                   ps->section_name[4] == '\t'))
         return begin_gpio_section(ps, ps->section_name + 5 + strspn(ps->section_name + 5, " \t"));
     return fail_at(ps, ps->line, "unknown section [%s] (expected [display], [pack], [render], "
-                   "[budgets], [gamepad], [navigation] or [gpio NAME])", ps->section_name);
+                   "[budgets], [gamepad], [keyboard], [navigation] or [gpio NAME])",
+                   ps->section_name);
 }
 
 /* ---- keys ------------------------------------------------------------------ */

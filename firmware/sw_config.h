@@ -10,8 +10,9 @@
  * firmware/seamwalk.ini. An unknown section or key, a key given twice, a bad
  * value (not a number, out of range, an unknown word) or a line that is not
  * [section] or key = value is SW_ERR_FORMAT with "FILE:LINE: [section] key:
- * what was expected". Budgets and the navigation speeds are read and checked
- * now but used by later work (issues 6, 7 and 11 item 5). */
+ * what was expected". Budgets are read and checked now but used by later
+ * work (issues 6 and 7); [gamepad], [keyboard], [navigation] and [gpio]
+ * drive the kiosk's input step (sw_kiosk.h). */
 #ifndef SW_CONFIG_H
 #define SW_CONFIG_H
 
@@ -23,7 +24,8 @@
 #define SW_CONFIG_DEFAULT_PATH "/etc/seamwalk/seamwalk.ini"
 
 /* inih reads lines of at most 200 bytes, so paths stay below that. */
-enum { SW_CONFIG_PATH_MAX = 192, SW_CONFIG_NAME_MAX = 32, SW_CONFIG_GPIO_MAX = 16 };
+enum { SW_CONFIG_PATH_MAX = 192, SW_CONFIG_NAME_MAX = 32, SW_CONFIG_GPIO_MAX = 16,
+       SW_CONFIG_PAD_BUTTONS = 15 /* sw_pad_button, in its order */ };
 
 /* The same choices, in the same order, as sw_display_kind (platform/sw_display.h). */
 typedef enum sw_config_display {
@@ -40,11 +42,13 @@ typedef enum sw_config_bias {
     SW_BIAS_AS_IS = 0, SW_BIAS_DISABLE, SW_BIAS_PULL_UP, SW_BIAS_PULL_DOWN
 } sw_config_bias;
 
-/* What a button does (navigation, issue 11 item 5, not built yet). */
+/* What a button does (sw_kiosk.h): the movement ones act while held, the
+ * others once per press. */
 typedef enum sw_config_action {
     SW_ACTION_NONE = 0, SW_ACTION_FORWARD, SW_ACTION_BACK, SW_ACTION_TURN_LEFT,
     SW_ACTION_TURN_RIGHT, SW_ACTION_NEXT_VIEW, SW_ACTION_PREV_VIEW, SW_ACTION_HOME,
-    SW_ACTION_TOGGLE_MODE, SW_ACTION_ATTRACT,
+    SW_ACTION_TOGGLE_MODE, SW_ACTION_ATTRACT, SW_ACTION_LOOK_UP, SW_ACTION_LOOK_DOWN,
+    SW_ACTION_STRAFE_LEFT, SW_ACTION_STRAFE_RIGHT,
 } sw_config_action;
 
 /* One [gpio NAME] section: a button on a GPIO line (libgpiod, later work). */
@@ -76,15 +80,19 @@ typedef struct sw_config {
     int gamepad_enabled;
     char gamepad_mapping[SW_CONFIG_PATH_MAX];  /* gamecontrollerdb file, empty: none */
     double gamepad_dead_zone;
+    sw_config_action gamepad_action[SW_CONFIG_PAD_BUTTONS];  /* [gamepad] a = ..., ... */
+    int keyboard_enabled;
+    char keyboard_device[SW_CONFIG_PATH_MAX];  /* an evdev path or "auto" */
     sw_config_nav_mode nav_mode;
     double walk_speed_mm_s, turn_speed_deg_s, orbit_speed_deg_s;
+    double accel_s, eye_height_mm, transition_s, attract_hold_s;
     double attract_timeout_s;            /* 0: no attract mode */
     sw_config_gpio gpio[SW_CONFIG_GPIO_MAX];
     int gpio_count;
     /* The line each key of the sections above was given on (0: default),
      * indexed as sw_config_key_line finds them: a caller can tell a default
      * from a value equal to it and name the line. */
-    long key_line[40];
+    long key_line[64];
 } sw_config;
 
 /* Sets every field to its documented default (also what load starts from). */

@@ -146,7 +146,7 @@ static void merge_choice(sw_options *o, const config_choice *c)
         o->pack_path = c->pack_path;
         o->store_dir = c->store_dir;
     }
-    if (!o->orbit && !o->path_file && !o->view_name)
+    if (!o->orbit && !o->path_file && !o->view_name && !o->navigate && !o->input_timeline)
         o->orbit = c->orbit;
     if (o->width)
         return;
@@ -158,9 +158,9 @@ static sw_status check_complete(const sw_options *o, sw_error *err)
 {
     if (!o->pack_path == !o->store_dir)
         return sw_error_set(err, SW_ERR_ARG, "give exactly one of --pack FILE and --store DIR");
-    if (!!o->orbit + !!o->path_file + !!o->view_name != 1)
-        return sw_error_set(err, SW_ERR_ARG,
-                            "give exactly one of --path FILE, --orbit and --view NAME");
+    if (!!o->orbit + !!o->path_file + !!o->view_name + !!o->navigate + !!o->input_timeline != 1)
+        return sw_error_set(err, SW_ERR_ARG, "give exactly one of --path FILE, --orbit, --view "
+                            "NAME, --navigate and --input-timeline FILE");
     return SW_OK;
 }
 
@@ -185,6 +185,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         } else if (!strcmp(a, "--orbit")) {
             o->orbit = 1;
             takes_value = 0;
+        } else if (!strcmp(a, "--navigate")) {
+            o->navigate = 1;
+            takes_value = 0;
         } else if (!strcmp(a, "--no-cache")) {
             o->no_cache = 1;
             takes_value = 0;
@@ -206,6 +209,10 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             o->path_file = v;
         } else if (!strcmp(a, "--view")) {
             o->view_name = v;
+        } else if (!strcmp(a, "--input-timeline")) {
+            o->input_timeline = v;
+        } else if (!strcmp(a, "--pose-log")) {
+            o->pose_log = v;
         } else if (!strcmp(a, "--frames")) {
             st = parse_int(a, v, 1, 10000000, &o->frames, err);
         } else if (!strcmp(a, "--png-dir")) {
@@ -262,12 +269,14 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
 void sw_options_print_usage(const char *argv0)
 {
     fprintf(stderr,
-            "usage: %s (--pack FILE | --store DIR) (--path FILE | --orbit | --view NAME)\n"
+            "usage: %s (--pack FILE | --store DIR)\n"
+            "          (--path FILE | --orbit | --view NAME | --navigate | --input-timeline FILE)\n"
             "          [--display auto|headless|kms|x11|wayland] [--size WxH] [--headless WxH]\n"
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--config FILE] [--no-cache] [--background R,G,B] [--back-faces lit|R,G,B]\n"
-            "          [--depth-bits 16|24] [--depth-fit 0|1] [--fill-crossings 0|1]\n"
+            "          [--config FILE] [--pose-log FILE] [--no-cache] [--background R,G,B]\n"
+            "          [--back-faces lit|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
+            "          [--fill-crossings 0|1]\n"
             "Walks a seamwalk pack and shows it on a display.\n"
             "  --display NAME      where to draw (default auto, or [display] display):\n"
             "                        headless  EGL surfaceless, offscreen; needs a size (CI)\n"
@@ -291,6 +300,15 @@ void sw_options_print_usage(const char *argv0)
             "  --path FILE         follow a camera path (format: firmware/sw_camera_path.h)\n"
             "  --orbit             circle the model around the pack's up axis\n"
             "  --view NAME         stand at one of the pack's named viewpoints\n"
+            "  --navigate          the unit's inputs drive the camera: gamepads (hidapi,\n"
+            "                      hot-plugged), [gpio] buttons (libgpiod), the keyboard\n"
+            "                      (evdev); walk, orbit, viewpoints, home, attract tour\n"
+            "                      (README \"Inputs and navigation\"; keys: [gamepad],\n"
+            "                      [keyboard], [navigation], [gpio NAME] in the config)\n"
+            "  --input-timeline FILE  the same navigation driven by a recorded input timeline\n"
+            "                      (format: firmware/sw_input_timeline.h) through fake\n"
+            "                      devices on a simulated 30 Hz clock: replays exactly\n"
+            "  --pose-log FILE     write each frame's camera pose (frame t eye target up)\n"
             "  --frames N          frames to render (default 120); closing the window,\n"
             "                      SIGTERM or Ctrl-C end the walk sooner, stats written\n"
             "  --png-dir DIR       write frame_NNNNN.png every --png-every frames\n"

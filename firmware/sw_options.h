@@ -43,6 +43,9 @@ typedef struct sw_options {
                                     0 shows the T-junction pinholes they close) */
     long drop_surface;           /* --test-drop-surface S: surface S is never drawn (a
                                     mutation for the image tests); -1, default: none */
+    int navigate;                /* --navigate: the unit's devices drive the camera */
+    const char *input_timeline;  /* --input-timeline FILE: a timeline drives it (fake devices) */
+    const char *pose_log;        /* --pose-log FILE: each frame's camera pose */
     int help;
     const char *config_path;     /* --config FILE, or NULL: no file is read */
     /* The file's values. pack_path, store_dir and keys_path may point into

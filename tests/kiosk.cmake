@@ -8,3 +8,22 @@ sw_add_fuzz_target(fuzz_config SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_conf
 # seamwalk --config end to end (tests/test_config_walk.sh).
 add_test(NAME walk_config
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_config_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+
+# Inputs and navigation (issue 11 items 2-5): recorded descriptors in tests/hid/.
+set(SW_HID_FIXTURES ${CMAKE_CURRENT_SOURCE_DIR}/hid)
+sw_add_test(test_hid_desc SOURCES test_hid_desc.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
+sw_add_test(test_gamepad_map SOURCES test_gamepad_map.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
+sw_add_test(test_pads SOURCES test_pads.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
+sw_add_test(test_nav SOURCES test_nav.c LIBS sw_runtime)
+sw_add_test(test_kiosk SOURCES test_kiosk.c LIBS sw_runtime ARGS ${SW_HID_FIXTURES})
+sw_add_test(test_input_timeline SOURCES test_input_timeline.c LIBS sw_runtime)
+sw_add_fuzz_target(fuzz_hid_desc SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_hid_desc.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/hid_desc)
+sw_add_fuzz_target(fuzz_pad_mapping SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pad_mapping.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pad_mapping)
+sw_add_fuzz_target(fuzz_input_timeline SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_input_timeline.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/input_timeline)
+
+# seamwalk --input-timeline end to end (tests/test_input_walk.sh).
+add_test(NAME walk_input_timeline
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_input_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})

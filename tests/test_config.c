@@ -396,6 +396,38 @@ static void without_config_no_file_is_read(void)
     SW_CHECK(o.display == SW_DISPLAY_KIND_AUTO && o.width == 0 && o.height == 0);
 }
 
+/* The kiosk input keys ([gamepad] actions, [keyboard], the navigation
+ * timing) go through the same table: bad words, unknown keys and ranges
+ * name the file, the line and the key. */
+static void kiosk_input_keys_have_file_line_errors(void)
+{
+    static const struct { const char *text, *needle; } bad[] = {
+        {"[gamepad]\na = fly\n", "x.ini:2: [gamepad] a: expected none, forward, back"},
+        {"[gamepad]\nz = home\n", "x.ini:2: [gamepad] unknown key 'z'"},
+        {"[keyboard]\nenabled = maybe\n", "x.ini:2: [keyboard] enabled: expected no, yes"},
+        {"[keyboard]\nlayout = us\n", "x.ini:2: [keyboard] unknown key 'layout'"},
+        {"[navigation]\naccel_s = 0\n", "x.ini:2: [navigation] accel_s: expected 0.01..10"},
+        {"[navigation]\ntransition_s = -1\n", "transition_s: expected 0.05..60"},
+        {"[gpio b]\nchip = c\nline = 1\naction = strafe_up\n", "x.ini:4: [gpio b] action"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        sw_config cfg;
+        sw_error err = {0};
+        SW_CHECK(sw_config_load_memory(bad[i].text, strlen(bad[i].text), "x.ini", &cfg, &err) ==
+                 SW_ERR_FORMAT);
+        SW_CHECK_MSG(strstr(err.message, bad[i].needle) != NULL, "%s (expected '%s')",
+                     err.message, bad[i].needle);
+    }
+    static const char good[] = "[gamepad]\na = home\ndpup = look_up\n[keyboard]\n"
+                               "device = /dev/input/event3\n[navigation]\naccel_s = 1\n";
+    sw_config cfg;
+    sw_error err = {0};
+    SW_CHECK(sw_config_load_memory(good, sizeof good - 1, "x.ini", &cfg, &err) == SW_OK);
+    SW_CHECK(cfg.gamepad_action[0] == SW_ACTION_HOME && cfg.gamepad_action[11] ==
+             SW_ACTION_LOOK_UP && !strcmp(cfg.keyboard_device, "/dev/input/event3") &&
+             cfg.accel_s == 1 && cfg.gamepad_action[1] == SW_ACTION_PREV_VIEW);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -403,6 +435,7 @@ int main(int argc, char **argv)
         return 2;
     }
     example_path = argv[1];
+    SW_RUN(kiosk_input_keys_have_file_line_errors);
     SW_RUN(example_loads_and_is_the_defaults);
     SW_RUN(example_gpio_block_uncommented_is_the_gpio_defaults);
     SW_RUN(empty_file_is_the_defaults);
