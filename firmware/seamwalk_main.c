@@ -211,7 +211,7 @@ static sw_status find_view(runtime *rt, sw_error *err)
 static sw_status start_kiosk(runtime *rt, sw_error *err)
 {
     rt->kiosk_up = 1;
-    return sw_kiosk_run_start(&rt->kiosk, &rt->opt, &rt->frame, &rt->model_box,
+    return sw_kiosk_run_start(&rt->kiosk, &rt->opt, rt->display, &rt->frame, &rt->model_box,
                               rt->pack.viewpoints, rt->pack.viewpoint_count,
                               rt->opt.fov_deg * SW_PI / 180.0,
                               (double)rt->opt.width / rt->opt.height, err);

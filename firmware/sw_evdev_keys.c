@@ -1,5 +1,5 @@
 /* The keyboard backend on evdev (sw_input_backend.h), for the kiosk where
- * there is no window (a window's keyboard comes with the display work).
+ * there is no window (a window's keys come through sw_window_keys.c).
  * "auto" takes the first /dev/input/eventN that reports EV_KEY with KEY_A
  * and KEY_SPACE (a keyboard, not a power button). Non-blocking reads of
  * struct input_event; ENODEV means it was unplugged. Only a unit (or a

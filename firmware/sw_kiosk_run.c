@@ -1,6 +1,8 @@
 /* --navigate and --input-timeline (sw_kiosk_run.h). */
 #include "sw_kiosk_run.h"
 
+#include "sw_window_keys.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -88,7 +90,8 @@ static sw_status open_pose_log(sw_kiosk_run *r, const char *path, sw_error *err)
     return SW_OK;
 }
 
-sw_status sw_kiosk_run_start(sw_kiosk_run *r, const sw_options *opt, const sw_camera_frame *frame,
+sw_status sw_kiosk_run_start(sw_kiosk_run *r, const sw_options *opt, sw_display *display,
+                             const sw_camera_frame *frame,
                              const sw_box *box, const sw_pack_viewpoint *views,
                              uint32_t view_count, double fovy_rad, double aspect, sw_error *err)
 {
@@ -111,7 +114,8 @@ sw_status sw_kiosk_run_start(sw_kiosk_run *r, const sw_options *opt, const sw_ca
     } else {
         r->hid = sw_hid_hidapi_backend();
         r->gpio = sw_gpio_gpiod_backend();
-        r->keys = sw_evdev_key_backend();
+        r->keys = sw_window_has_keyboard(display) ? sw_window_key_backend(display)
+                                                  : sw_evdev_key_backend();
         r->t0_ns = monotonic_ns();
     }
     r->last_ns = r->t0_ns;

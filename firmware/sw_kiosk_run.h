@@ -11,6 +11,7 @@
 
 #include <stdio.h>
 
+#include "sw_display.h"
 #include "sw_input_fake.h"
 #include "sw_kiosk.h"
 #include "sw_options.h"
@@ -35,8 +36,10 @@ typedef struct sw_kiosk_run {
     char pose_buffer[1 << 16];       /* the log's stdio buffer: no allocation per frame */
 } sw_kiosk_run;
 
-/* Start-up: may allocate. fovy/aspect for the orbit's distance. */
-sw_status sw_kiosk_run_start(sw_kiosk_run *run, const sw_options *opt,
+/* Start-up: may allocate. fovy/aspect for the orbit's distance. display:
+ * with --navigate, a window's keyboard is read from it (else evdev); may be
+ * NULL. */
+sw_status sw_kiosk_run_start(sw_kiosk_run *run, const sw_options *opt, sw_display *display,
                              const sw_camera_frame *frame, const sw_box *box,
                              const sw_pack_viewpoint *views, uint32_t view_count,
                              double fovy_rad, double aspect, sw_error *err);

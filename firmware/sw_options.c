@@ -77,20 +77,22 @@ static sw_status parse_rgb(const char *opt, const char *text, float rgb[3], sw_e
 }
 
 /* The defaults the config file also has come from it (sw_config_defaults),
- * so the two cannot drift apart; the rest are the command line's own. */
+ * so the two cannot drift apart; the rest are the command line's own.
+ * Without --config the config keeps those defaults too: --navigate reads its
+ * devices, mapping and speeds from it. */
 static void set_defaults(sw_options *o)
 {
     memset(o, 0, sizeof *o);
-    sw_config c;
-    sw_config_defaults(&c);
+    sw_config_defaults(&o->config);
+    const sw_config *c = &o->config;
     o->frames = 120;
     o->png_every = 1;
     o->measure_every = 4;
-    o->memory_mb = c.memory_mb;
-    o->max_error_px = c.max_error_px;
-    o->fov_deg = c.fov_deg;
-    o->boot_attempts = c.boot_attempts;
-    o->good_after_s = c.good_after_s;
+    o->memory_mb = c->memory_mb;
+    o->max_error_px = c->max_error_px;
+    o->fov_deg = c->fov_deg;
+    o->boot_attempts = c->boot_attempts;
+    o->good_after_s = c->good_after_s;
     o->depth_bits = 24;
     o->depth_fit = 1;
     o->fill_crossings = 1;

@@ -354,6 +354,24 @@ static void display_comes_from_the_file_unless_the_command_line_names_one(void)
     SW_CHECK(o.display == SW_DISPLAY_KIND_X11 && o.width == 800 && o.height == 600);
 }
 
+/* --navigate without --config walks with the config's defaults: keyboard and
+ * gamepads on, the documented speeds (a zeroed config walked nowhere). */
+static void without_a_file_the_config_has_its_defaults(void)
+{
+    static sw_options o;
+    sw_config want;
+    sw_config_defaults(&want);
+    sw_error err = {0};
+    char *argv[] = {"seamwalk", "--pack", "a.swpack", "--navigate", "--headless", "64x48"};
+    sw_status st = parse(&o, &err, 6, argv);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    SW_CHECK(o.navigate && o.config_path == NULL);
+    SW_CHECK(o.config.keyboard_enabled && o.config.gamepad_enabled);
+    SW_CHECK(o.config.walk_speed_mm_s == want.walk_speed_mm_s && want.walk_speed_mm_s > 0);
+    SW_CHECK(o.config.attract_timeout_s == want.attract_timeout_s);
+    SW_CHECK(!strcmp(o.config.keyboard_device, "auto"));
+}
+
 static void an_unknown_display_word_is_refused(void)
 {
     static sw_options o;
@@ -448,6 +466,7 @@ int main(int argc, char **argv)
     SW_RUN(config_fills_what_the_command_line_leaves_out);
     SW_RUN(command_line_choice_replaces_the_files);
     SW_RUN(display_comes_from_the_file_unless_the_command_line_names_one);
+    SW_RUN(without_a_file_the_config_has_its_defaults);
     SW_RUN(an_unknown_display_word_is_refused);
     SW_RUN(bad_config_stops_option_parsing);
     SW_RUN(without_config_no_file_is_read);

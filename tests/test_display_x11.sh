@@ -47,4 +47,24 @@ PY
 "$walker" "${common[@]}" --size 160x120 --frames 1 > "$work/auto.out" || fail "walk with auto"
 grep -q "^seamwalk: display x11 160x120 (auto: DISPLAY is set and EGL offers X11)" \
   "$work/auto.out" || fail "auto did not choose x11: $(cat "$work/auto.out")"
+# --navigate in the window: another client holds Up for 1.5 s, as a
+# developer at the keyboard would; the window's keys drive the input step
+# (firmware/sw_window_keys.c), so the eye walks forward. SIGTERM ends the
+# walk after the key, through the normal exit.
+"$walker" --pack "$work/teaset.swpack" --navigate --display x11 --size 160x120 --frames 100000 \
+  --pose-log "$work/nav.poses" --stats "$work/nav.json" > "$work/nav.out" 2>&1 &
+nav=$!
+"$build/tests/x11_send_key" seamwalk Up 1.5 20 || { kill "$nav"; fail "no seamwalk window to press a key in"; }
+sleep 0.5
+kill -TERM "$nav"
+wait "$nav" || fail "walk --navigate in the X11 window: $(cat "$work/nav.out")"
+python3 - "$work/nav.poses" "$work/nav.json" <<'PY' || fail "the Up key did not walk: $(cat "$work/nav.out")"
+import json, math, sys
+rows = [l.split() for l in open(sys.argv[1]) if not l.startswith("#")]
+first, last = [float(v) for v in rows[0][2:5]], [float(v) for v in rows[-1][2:5]]
+moved = math.dist(first, last)
+assert moved > 1.0, moved      # mm: the default walk speed for about 1.5 s
+assert json.load(open(sys.argv[2]))["mallocs_after_init"] == 0
+print("the Up key walked the eye %.1f mm over %d frames" % (moved, len(rows)))
+PY
 echo "ok: X11 window on $DISPLAY"

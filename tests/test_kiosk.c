@@ -2,13 +2,15 @@
  * edges become exactly one action, a tap shorter than the debounce time is
  * not lost, a long press runs the long action, a missing chip is a log line,
  * keys and gamepad buttons fire once per press and movement acts while
- * held. Argument: tests/hid. */
+ * held, a window's keys drive the same key table. Argument: tests/hid. */
+#include <linux/input.h>
 #include <string.h>
 
 #include "hid_fixture.h"
 #include "sw_input_fake.h"
 #include "sw_kiosk.h"
 #include "sw_test.h"
+#include "sw_window_keys.h"
 
 static sw_fake_devices fake;
 static sw_kiosk kiosk;
@@ -35,7 +37,9 @@ static void add_button(const char *name, const char *chip, sw_config_action a,
     g->long_action = la;
 }
 
-static void start(void)
+/* The kiosk on the fake devices, with key_backend as its keyboard (NULL:
+ * the fake keyboard). */
+static void start_keys(const sw_key_backend *key_backend)
 {
     sw_config_defaults(&cfg);
     cfg.attract_timeout_s = 0;
@@ -46,13 +50,15 @@ static void start(void)
     sw_fake_init(&fake);
     hid = sw_fake_hid_backend(&fake);
     gpio = sw_fake_gpio_backend(&fake);
-    keys = sw_fake_key_backend(&fake);
+    keys = key_backend ? *key_backend : sw_fake_key_backend(&fake);
     sw_kiosk_devices dev = {&hid, &gpio, &keys, "auto"};
     sw_nav_params np = sw_kiosk_nav_params(&cfg, 0.8, 1.5, 0);
     sw_camera_frame f = sw_camera_frame_for_up(sw_v3(0, 0, 1));
     sw_box box = {sw_v3(-1000, -1000, 0), sw_v3(1000, 1000, 2000)};
     sw_kiosk_init(&kiosk, &cfg, &dev, NULL, &np, &f, &box, NULL, 0, 0);
 }
+
+static void start(void) { start_keys(NULL); }
 
 /* Steps frames of 10 ms from t0 to t1, counting actions a. */
 static int count_actions(int64_t t0, int64_t t1, sw_config_action a)
@@ -141,6 +147,42 @@ static void keys_fire_once_and_hold(void)
     SW_CHECK(kiosk.last.move == 0);
 }
 
+/* A developer window's keys (X11/XKB keysyms in the display's queue, as the
+ * X11 and Wayland displays fill it) drive the same key table: N fires next
+ * view once, Up walks while held, unknown keysyms are skipped. */
+static void window_keys_drive_the_same_table(void)
+{
+    static sw_display window;
+    memset(&window, 0, sizeof window);
+    window.kind = SW_DISPLAY_KIND_X11;
+    sw_key_queue_clear(&window.keys);
+    sw_key_backend wk = sw_window_key_backend(&window);
+    start_keys(&wk);
+    SW_CHECK(kiosk.keys_on);
+    sw_key_queue_push(&window.keys, 0xffbe, 1);  /* F1: no KEY_* in the table */
+    sw_key_queue_push(&window.keys, 'N', 1);     /* shifted letters are the key */
+    sw_key_queue_push(&window.keys, 0xff52, 1);  /* Up */
+    sw_kiosk_step(&kiosk, 0, 0.01);
+    SW_CHECK(kiosk.last.actions == 1u << SW_ACTION_NEXT_VIEW && kiosk.last.move == 1);
+    sw_key_queue_push(&window.keys, 'n', 0);
+    sw_kiosk_step(&kiosk, 10 * ms, 0.01);
+    SW_CHECK(kiosk.last.actions == 0 && kiosk.last.move == 1);
+    sw_key_queue_push(&window.keys, 0xff52, 0);
+    sw_kiosk_step(&kiosk, 20 * ms, 0.01);
+    SW_CHECK(kiosk.last.move == 0 && window.keys.count == 0);
+    sw_kiosk_close(&kiosk);
+
+    /* Headless has no window keyboard: opening it is an error, not a crash. */
+    window.kind = SW_DISPLAY_KIND_HEADLESS;
+    sw_error err = {0};
+    SW_CHECK(!sw_window_has_keyboard(&window));
+    SW_CHECK(wk.open(wk.ctx, "auto", &err) == -1);
+    SW_CHECK_MSG(strstr(err.message, "headless display has no window keyboard") != NULL, "%s",
+                 err.message);
+    SW_CHECK(sw_window_keysym_code('w') == KEY_W && sw_window_keysym_code('0') == KEY_0 &&
+             sw_window_keysym_code('9') == KEY_9 && sw_window_keysym_code(0xff55) == KEY_PAGEUP);
+}
+
 static void gamepad_buttons_fire_once_and_sticks_steer(void)
 {
     start();
@@ -167,6 +209,7 @@ int main(int argc, char **argv)
     SW_RUN(short_and_long_press_of_a_two_action_button);
     SW_RUN(a_held_movement_button_walks);
     SW_RUN(keys_fire_once_and_hold);
+    SW_RUN(window_keys_drive_the_same_table);
     SW_RUN(gamepad_buttons_fire_once_and_sticks_steer);
     return sw_test_finish();
 }
