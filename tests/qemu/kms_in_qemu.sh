@@ -9,47 +9,16 @@
 # exit, and a last walk (auto, which must pick kms at the connector's
 # preferred mode) opens the device again after the others' exit, restore and
 # master drop. The restored CRTC itself is not inspected.
-# TCG (SW_QEMU_ACCEL=kvm where KVM works; in a nested VM it may hang at boot). Needs qemu-system-x86, linux-image-amd64, busybox-static.
+# The boot: tests/qemu/qemu_boot.sh.
 #   kms_in_qemu.sh BUILD_DIR SOURCE_DIR
 set -uo pipefail
 build=$(cd "$1" && pwd) src=$(cd "$2" && pwd)
 fail() { echo "FAIL: $*"; exit 1; }
-for tool in qemu-system-x86_64 busybox cpio modprobe; do
-  command -v $tool > /dev/null || { echo "SKIP: $tool is not installed"; exit 77; }
-done
-kernel=$(ls /boot/vmlinuz-*-amd64 2> /dev/null | sort -V | tail -1)
-[ -n "$kernel" ] || { echo "SKIP: no Debian kernel in /boot (linux-image-amd64)"; exit 77; }
-kver=${kernel#/boot/vmlinuz-}
+. "$src/tests/qemu/qemu_boot.sh"
+sw_qemu_kernel
 work=$build/tests/kms_qemu
-rm -rf "$work" && mkdir -p "$work/initrd/bin" "$work/initrd/lib/modules" "$work/out"
-
-# The initramfs: busybox and the 9p modules with their dependencies, in the
-# order modprobe would load them; the rest comes from the host root.
-cp "$(command -v busybox)" "$work/initrd/bin/busybox"
-for m in virtio_pci 9p 9pnet_virtio; do
-  modprobe -S "$kver" --show-depends $m | awk '$1 == "insmod" {print $2}'
-done | awk '!seen[$0]++' > "$work/modules.txt"
-[ -s "$work/modules.txt" ] || fail "modprobe found no 9p modules for $kver"
-while read -r ko; do
-  cp "$ko" "$work/initrd/lib/modules/"
-  echo "insmod /lib/modules/$(basename "$ko")" >> "$work/initrd/load-modules"
-done < "$work/modules.txt"
-cat > "$work/initrd/init" <<'INIT'
-#!/bin/busybox sh
-/bin/busybox --install -s /bin
-mount -t proc proc /proc 2> /dev/null || { mkdir -p /proc && mount -t proc proc /proc; }
-mkdir -p /sys /dev /host && mount -t sysfs sys /sys && mount -t devtmpfs dev /dev
-sh /load-modules
-mount -t 9p -o trans=virtio,version=9p2000.L,ro hostroot /host || echo "SW_QEMU: no host root"
-for d in proc sys dev; do mount --bind /$d /host/$d; done
-mount -t tmpfs run /host/run && mkdir -p /host/run/sw
-mount -t 9p -o trans=virtio,version=9p2000.L work /host/run/sw || echo "SW_QEMU: no work"
-chroot /host /bin/bash /run/sw/guest.sh
-echo "SW_QEMU_DONE"
-poweroff -f
-INIT
-chmod +x "$work/initrd/init"
-(cd "$work/initrd" && find . | cpio -o -H newc 2> /dev/null | gzip -1) > "$work/initrd.gz"
+rm -rf "$work" && mkdir -p "$work/out"
+sw_qemu_initrd "$work"
 
 "$build/assets/seamwalk-pack" build "$src/assets/samples/teaset.ini" -o "$work/out/teaset.swpack" \
   > /dev/null || fail "build the teaset"
@@ -79,14 +48,7 @@ echo "SW_AUTO_RC=\$?"
 cat kms.out term.out auto.out
 GUEST
 
-accel=${SW_QEMU_ACCEL:-tcg}
-timeout 900 qemu-system-x86_64 -machine q35,accel="$accel" -m 1536 -smp 2 \
-  -kernel "$kernel" -initrd "$work/initrd.gz" \
-  -append "console=ttyS0 panic=-1" -nographic -no-reboot -display none \
-  -virtfs local,path=/,mount_tag=hostroot,security_model=none,readonly=on \
-  -virtfs local,path="$work/out",mount_tag=work,security_model=none \
-  -device virtio-gpu-pci > "$work/console.log" 2>&1
-grep -q "SW_QEMU_DONE" "$work/console.log" || fail "the guest did not finish: $(tail -20 "$work/console.log")"
+sw_qemu_boot "$work" "$work/out" "$work/console.log" -device virtio-gpu-pci
 grep -q "SW_KMS_RC=0" "$work/console.log" || fail "seamwalk --display kms: $(tail -20 "$work/console.log")"
 grep -q "^seamwalk: display kms 640x480 (asked for kms)" "$work/out/kms.out" \
   || fail "the summary names kms: $(cat "$work/out/kms.out")"
@@ -107,4 +69,4 @@ s = json.load(open(sys.argv[1]))
 assert s["mallocs_after_init"] == 0, s["mallocs_after_init"]
 assert s["viewport"] == [640, 480], s["viewport"]
 PY
-echo "ok: KMS on virtio-gpu in QEMU ($accel)"
+echo "ok: KMS on virtio-gpu in QEMU (${SW_QEMU_ACCEL:-tcg})"

@@ -1,11 +1,12 @@
 #!/bin/sh
-# PID 1 inside the QEMU guest (tests/qemu/run-uhid.sh), on the host's root
-# over 9p, read-only: a UHID gamepad that hidapi really opens drives
-# seamwalk --navigate; the results go to the serial console.
-#   guest.sh BUILD_DIR SOURCE_DIR   (from the kernel command line)
+# Inside the QEMU guest (tests/qemu/run-uhid.sh), chrooted into the host's
+# root over 9p, read-only, /tmp a tmpfs (tests/qemu/qemu_boot.sh): a UHID
+# gamepad that hidapi really opens drives seamwalk --navigate; the results
+# go to the serial console.
+#   uhid_guest.sh BUILD_DIR SOURCE_DIR
 build=$1 src=$2
-mount -t proc proc /proc; mount -t sysfs sys /sys; mount -t devtmpfs dev /dev
-mount -t tmpfs tmp /tmp
+modprobe uhid || echo "QEMU-UHID: modprobe uhid failed"
+modprobe hid-generic || echo "QEMU-UHID: modprobe hid-generic failed"
 export HOME=/tmp LIBGL_ALWAYS_SOFTWARE=1
 w=/tmp/w; mkdir -p $w
 cat > $w/unit.ini <<INI
@@ -34,5 +35,3 @@ sed -n '2p;$p' $w/poses | sed 's/^/QEMU-UHID: pose /'
 awk '!/^#/ { if (!n++) { x = $3; z = $5 } ; lx = $3; lz = $5 }
      END { d = sqrt((lx - x)^2 + (lz - z)^2); printf "QEMU-UHID: frames %d moved %.3f\n", n, d }' $w/poses
 grep -o '"mallocs_after_init": [-0-9]*' $w/stats.json | sed 's/^/QEMU-UHID: /'
-echo o > /proc/sysrq-trigger
-sleep 10
