@@ -7,28 +7,19 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "sw_hex.h"
+
 _Static_assert(sizeof(sw_pack_signature) == 160, "SIGNATURE record is 160 bytes");
 _Static_assert(offsetof(sw_pack_signature, public_key) == 64, "public_key at 64");
 _Static_assert(offsetof(sw_pack_signature, signature) == 96, "signature at 96");
 
 static const char public_tag[] = "seamwalk-ed25519-public";
 
-static int hex_value(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    return -1;
-}
-
 /* 2 * n hex digits at s into out; 0 on success, else the offending index. */
 static size_t parse_hex(const char *s, size_t n, uint8_t *out)
 {
     for (size_t i = 0; i < 2 * n; i++) {
-        int v = hex_value(s[i]);
+        int v = sw_hex_digit(s[i]);
         if (v < 0)
             return i + 1;
         if (i % 2 == 0)

@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_hex.h"
+
 static const char *const button_names[SW_PAD_BUTTON_COUNT] = {
     "a", "b", "x", "y", "back", "guide", "start", "leftstick", "rightstick",
     "leftshoulder", "rightshoulder", "dpup", "dpdown", "dpleft", "dpright"};
@@ -159,23 +161,12 @@ sw_status sw_pad_mapping_parse_bindings(const char *text, size_t size, const cha
     return SW_OK;
 }
 
-static int hex_digit(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    return -1;
-}
-
 static int parse_guid(span s, uint8_t guid[16])
 {
     if (s.n != 32)
         return 0;
     for (int i = 0; i < 16; i++) {
-        int hi = hex_digit(s.p[2 * i]), lo = hex_digit(s.p[2 * i + 1]);
+        int hi = sw_hex_digit(s.p[2 * i]), lo = sw_hex_digit(s.p[2 * i + 1]);
         if (hi < 0 || lo < 0)
             return 0;
         guid[i] = (uint8_t)(hi << 4 | lo);

@@ -3,11 +3,12 @@
  * of any length is read without a buffer. */
 #include "sw_input_timeline.h"
 
-#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "sw_hex.h"
 
 enum { WORDS_MAX = 300 };
 
@@ -73,14 +74,6 @@ static int to_int(word w, long lo, long hi, long *out)
     return 1;
 }
 
-static int hex_value(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    c = (char)tolower((unsigned char)c);
-    return c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
-}
-
 /* 1..4 hex digits. */
 static int to_hex16(word w, uint16_t *out)
 {
@@ -88,7 +81,7 @@ static int to_hex16(word w, uint16_t *out)
         return 0;
     unsigned v = 0;
     for (size_t i = 0; i < w.n; i++) {
-        int d = hex_value(w.p[i]);
+        int d = sw_hex_digit(w.p[i]);
         if (d < 0)
             return 0;
         v = v << 4 | (unsigned)d;
@@ -99,7 +92,7 @@ static int to_hex16(word w, uint16_t *out)
 
 static int to_byte(word w, uint8_t *out)
 {
-    int hi = w.n == 2 ? hex_value(w.p[0]) : -1, lo = w.n == 2 ? hex_value(w.p[1]) : -1;
+    int hi = w.n == 2 ? sw_hex_digit(w.p[0]) : -1, lo = w.n == 2 ? sw_hex_digit(w.p[1]) : -1;
     if (hi < 0 || lo < 0)
         return 0;
     *out = (uint8_t)(hi << 4 | lo);

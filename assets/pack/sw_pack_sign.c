@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include <xxhash.h>
 
+#include "sw_hex.h"
 #include "sw_pack.h"
 #include "sw_walk_memory.h"
 
@@ -71,15 +72,6 @@ sw_status sw_keygen_files(const char *prefix, sw_error *err)
     return st;
 }
 
-static int hex_digit(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    return c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
-}
-
 static sw_status check_secret_line(const char *text, size_t len, const char *name, sw_error *err)
 {
     size_t tag = sizeof secret_tag - 1, hex = 2 * SW_SECRET_KEY_BYTES;
@@ -108,7 +100,7 @@ sw_status sw_secret_key_parse(const char *text, size_t size, const char *name,
         return st;
     const char *hex = text + sizeof secret_tag;
     for (size_t i = 0; i < 2 * SW_SECRET_KEY_BYTES; i++) {
-        int v = hex_digit(hex[i]);
+        int v = sw_hex_digit(hex[i]);
         if (v < 0)
             return sw_error_set(err, SW_ERR_FORMAT, "%s:1: column %zu: expected a hex digit",
                                 name, sizeof secret_tag + i + 1);
