@@ -8,5 +8,7 @@ add_test(NAME test_gen
 add_test(NAME test_gen_parts
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_gen.sh $<TARGET_FILE:seamwalk-pack> parts
           ${SW_SHARED_MODELS})
-set_tests_properties(test_gen test_gen_parts PROPERTIES TIMEOUT 300)
+# A hang guard, not a timing test: under ASan on a loaded 2-core machine
+# they took over 300 s (74 s and 104 s in Release there).
+set_tests_properties(test_gen test_gen_parts PROPERTIES TIMEOUT 900)
 set_tests_properties(test_gen_parts PROPERTIES SKIP_RETURN_CODE 77)
