@@ -181,6 +181,19 @@ void sw_box_add_box(sw_box *box, const sw_box *other)
     sw_box_add_point(box, other->max);
 }
 
+void sw_box_depth_range(const sw_box *b, sw_vec3 eye, sw_vec3 forward, double *lo, double *hi)
+{
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    for (int i = 0; i < 8; i++) {
+        sw_vec3 c = sw_v3(i & 1 ? b->max.x : b->min.x, i & 2 ? b->max.y : b->min.y,
+                          i & 4 ? b->max.z : b->min.z);
+        double d = sw_v3_dot(sw_v3_sub(c, eye), forward);
+        *lo = d < *lo ? d : *lo;
+        *hi = d > *hi ? d : *hi;
+    }
+}
+
 int sw_box_is_empty(const sw_box *box)
 {
     return !(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z);

@@ -79,6 +79,8 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->dirty = take(arena, n, &failed);
     w->sew_offset = take(arena, n * sizeof(float), &failed);
     w->depth = take(arena, n * sizeof(float), &failed);
+    w->cull_near = take(arena, n * sizeof(double), &failed);
+    w->cull_far = take(arena, n * sizeof(double), &failed);
     w->loop_points = take(arena, (m.points + 1) * sizeof(sw_seam_point), &failed);
     w->points = take(arena, (m.points + 1) * sizeof(sw_trim_point), &failed);
     w->loop_first = take(arena, (m.loops + 1) * sizeof(uint32_t), &failed);
@@ -94,6 +96,9 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the seam walk "
                             "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
     sw_arena_init(&w->scratch, scratch, scratch_bytes);
+    st = sw_cull_tree_build(&w->cull_tree, pack->surfaces, (uint32_t)n, pack->patches, arena, err);
+    if (st != SW_OK)
+        return st;
     for (size_t k = 0; k < n; k++)
         w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0;
     memset(w->dirty, 0, n);
@@ -101,6 +106,13 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     st = sw_seam_cache_init(&w->cache, (uint32_t)n, cache, sw_walk_cache_indices(cache), arena,
                             err);
     return st != SW_OK ? st : measure_sewing(w, err);
+}
+
+static double ms_since(const struct timespec *a)
+{
+    struct timespec b;
+    clock_gettime(CLOCK_MONOTONIC, &b);
+    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
 }
 
 /* The level a tessellation is made for: the bound rounded down to a power
@@ -138,7 +150,8 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
     return changed;
 }
 
-/* Visible when any of its patches' boxes is; depth the nearest of those.
+/* Visible when any of its patches' boxes is (the culling tree's answer,
+ * w->cull_near); depth the nearest of those.
  * A visible surface whose whole box fits within its bound is too small to
  * draw: leaving it out is within the bound (the paper's vanishing patch,
  * without waiting for its loops to collapse, which takes the seams' share
@@ -147,27 +160,35 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
  * (its seams stay where they were), else as coarse as the hierarchy goes. */
 static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
 {
-    const sw_pack_surface *ps = &w->pack->surfaces[s];
-    double depth = INFINITY;
-    sw_box all = { sw_v3(INFINITY, INFINITY, INFINITY), sw_v3(-INFINITY, -INFINITY, -INFINITY) };
-    for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
-        const sw_pack_patch *p = &w->pack->patches[i];
-        sw_box box = { sw_v3(p->box_min[0], p->box_min[1], p->box_min[2]),
-                       sw_v3(p->box_max[0], p->box_max[1], p->box_max[2]) };
-        if (sw_frustum_test_box(&view->frustum, &box) != SW_CULL_OUTSIDE)
-            depth = fmin(depth, sw_view_box_min_depth(view, &box));
-        all.min = sw_v3(fmin(all.min.x, box.min.x), fmin(all.min.y, box.min.y),
-                        fmin(all.min.z, box.min.z));
-        all.max = sw_v3(fmax(all.max.x, box.max.x), fmax(all.max.y, box.max.y),
-                        fmax(all.max.z, box.max.z));
-    }
+    double depth = w->cull_near[s];
     w->visible[s] = isfinite(depth);
     w->depth[s] = (float)depth;
     double bound = w->visible[s] ? sw_view_error_world(view, w->error_px, depth) : 0.0;
-    if (w->visible[s] && sw_v3_length(sw_v3_sub(all.max, all.min)) <= bound)
-        w->visible[s] = SW_SEAM_WALK_TINY;
+    if (w->visible[s]) {
+        sw_box all = sw_cull_tree_surface_box(&w->cull_tree, s);
+        if (sw_v3_length(sw_v3_sub(all.max, all.min)) <= bound)
+            w->visible[s] = SW_SEAM_WALK_TINY;
+    }
     w->evictable[s] = w->visible[s] != 1;
     return choose_target(w, s, bound);
+}
+
+/* Every surface's nearest and farthest patch box in view into w->cull_near
+ * and cull_far: the tree's walk, or (w->cull_brute) every box on its own. */
+static void cull_boxes(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame)
+{
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    const sw_cull_view v = { view->frustum, view->eye, view->forward, view->near_z };
+    sw_cull_counts c = { 0, 0 };
+    if (w->cull_brute)
+        sw_cull_brute(w->pack->surfaces, w->pack->seam.surface_count, w->pack->patches, &v,
+                      w->cull_near, w->cull_far, &c);
+    else
+        sw_cull_tree_query(&w->cull_tree, &v, w->cull_near, w->cull_far, &c);
+    frame->cull_box_tests = c.box_tests;
+    frame->cull_depth_tests = c.depth_tests;
+    frame->cull_ms = ms_since(&t0);
 }
 
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
@@ -176,6 +197,7 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     memset(frame, 0, sizeof *frame);
     uint32_t n = w->pack->seam.surface_count;
     int changed = w->frame == 0;
+    cull_boxes(w, view, frame);
     for (uint32_t s = 0; s < n; s++) {
         changed |= cull_surface(w, view, s);
         frame->visible_surfaces += w->visible[s] != 0;
@@ -361,13 +383,6 @@ static void measure_surface(sw_seam_walk *w, uint32_t s, const sw_view *view, sw
     sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
     if (w->drawn)
         sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
-}
-
-static double ms_since(const struct timespec *a)
-{
-    struct timespec b;
-    clock_gettime(CLOCK_MONOTONIC, &b);
-    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
 }
 
 /* Surface s's mesh for this frame: remade when it has none or it no

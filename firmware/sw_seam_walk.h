@@ -33,6 +33,7 @@
 #include <stdint.h>
 
 #include "sw_arena.h"
+#include "sw_cull_tree.h"
 #include "sw_gl_pool.h"
 #include "sw_pack.h"
 #include "sw_renderer.h"
@@ -74,6 +75,11 @@ typedef struct sw_seam_walk {
                                      surface, model units (sewing joins faces across the
                                      file's gaps; no level of detail makes that smaller) */
     float *depth;                 /* surface_count: this frame's nearest depth */
+    sw_cull_tree cull_tree;       /* over the surfaces and their patches, built at init */
+    double *cull_near, *cull_far; /* surface_count: this frame's nearest and farthest depth
+                                     of its patch boxes in view (+inf, -inf: none) */
+    int cull_brute;               /* every patch box tested on its own instead of the tree:
+                                     the benchmarks' "before" (same answers) */
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
     uint32_t frame;               /* frames selected so far */
@@ -107,6 +113,10 @@ typedef struct sw_seam_frame {
     uint64_t crossings;           /* border vertices on a seam segment between its vertices
                                      (T-vertices on a straight edge, not gaps) */
     double tess_ms;               /* of the draw, spent tessellating and uploading */
+    uint64_t cull_box_tests;      /* of the select: patch and tree boxes tested against the
+                                     frustum (sw_cull_tree.h) */
+    uint64_t cull_depth_tests;    /* boxes whose depth range it computed */
+    double cull_ms;               /* of the select, spent on those */
     double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
     double error_beyond_sewing_px;/* measured: the most a sample's error exceeds its surface's
                                      sewing offset, what the level of detail and the
