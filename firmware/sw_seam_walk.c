@@ -54,6 +54,34 @@ static sw_status measure_sewing(sw_seam_walk *w, sw_error *err)
     return SW_OK;
 }
 
+/* Every surface's normal cone, the union of its patches' (scratch from the
+ * arena, given back). */
+static sw_status make_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
+{
+    size_t mark = sw_arena_mark(arena);
+    size_t doubles = sw_normal_cone_scratch_doubles(SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE);
+    double *scratch = sw_arena_alloc(arena, doubles * sizeof(double), 64);
+    if (!scratch)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the normal cones' "
+                            "scratch (%zu bytes)", doubles * sizeof(double));
+    const sw_pack *pack = w->pack;
+    for (uint32_t s = 0; s < pack->seam.surface_count; s++) {
+        const sw_pack_surface *ps = &pack->surfaces[s];
+        sw_normal_cone cone = sw_normal_cone_empty();
+        for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
+            const sw_pack_patch *p = &pack->patches[i];
+            const sw_bezier_patchf patch = { p->degree_u, p->degree_v,
+                                             (p->flags & SW_PATCH_RATIONAL) != 0,
+                                             pack->control + 4 * (size_t)p->first_control };
+            sw_normal_cone c = sw_normal_cone_of_patch(&patch, scratch);
+            cone = sw_normal_cone_union(&cone, &c);
+        }
+        w->cones[s] = cone;
+    }
+    sw_arena_reset_to(arena, mark);
+    return SW_OK;
+}
+
 sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
                             sw_error *err)
 {
@@ -81,6 +109,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->depth = take(arena, n * sizeof(float), &failed);
     w->cull_near = take(arena, n * sizeof(double), &failed);
     w->cull_far = take(arena, n * sizeof(double), &failed);
+    w->cones = take(arena, n * sizeof(sw_normal_cone), &failed);
     w->loop_points = take(arena, (m.points + 1) * sizeof(sw_seam_point), &failed);
     w->points = take(arena, (m.points + 1) * sizeof(sw_trim_point), &failed);
     w->loop_first = take(arena, (m.loops + 1) * sizeof(uint32_t), &failed);
@@ -105,7 +134,9 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     uint32_t cache = sw_walk_cache_vertices(&pack->seam, pack->surfaces);
     st = sw_seam_cache_init(&w->cache, (uint32_t)n, cache, sw_walk_cache_indices(cache), arena,
                             err);
-    return st != SW_OK ? st : measure_sewing(w, err);
+    if (st == SW_OK)
+        st = measure_sewing(w, err);
+    return st != SW_OK ? st : make_cones(w, arena, err);
 }
 
 static double ms_since(const struct timespec *a)
@@ -150,6 +181,22 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
     return changed;
 }
 
+/* How far past facing away a surface's cone must be, so that every
+ * triangle drawn of it, whose vertices lie on the surface or its sewn
+ * border, faces away as well (GL culls by the triangle's winding, not by
+ * the surface's normal): 0.05 rad, about 3 degrees. */
+#define SW_SEAM_CONE_MARGIN_RAD 0.05
+
+/* Surface s, all in box, shows only its back to the eye: its box grown by
+ * its border's sewing offset (the seam vertices it draws). */
+static int facing_away(const sw_seam_walk *w, const sw_view *view, uint32_t s, const sw_box *box)
+{
+    double grow = w->sew_offset[s];
+    sw_box b = { sw_v3_sub(box->min, sw_v3(grow, grow, grow)),
+                 sw_v3_add(box->max, sw_v3(grow, grow, grow)) };
+    return sw_normal_cone_back_facing(&w->cones[s], &b, view->eye, SW_SEAM_CONE_MARGIN_RAD);
+}
+
 /* Visible when any of its patches' boxes is (the culling tree's answer,
  * w->cull_near); depth the nearest of those.
  * A visible surface whose whole box fits within its bound is too small to
@@ -158,19 +205,29 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
  * of the bound: a few times farther). Then the target: kept while valid,
  * else the bound's level; out of view, kept while the cache holds a mesh
  * (its seams stay where they were), else as coarse as the hierarchy goes. */
-static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
+static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32_t *cone_culled)
 {
     double depth = w->cull_near[s];
     w->visible[s] = isfinite(depth);
     w->depth[s] = (float)depth;
     double bound = w->visible[s] ? sw_view_error_world(view, w->error_px, depth) : 0.0;
+    int away = 0;
     if (w->visible[s]) {
         sw_box all = sw_cull_tree_surface_box(&w->cull_tree, s);
         if (sw_v3_length(sw_v3_sub(all.max, all.min)) <= bound)
             w->visible[s] = SW_SEAM_WALK_TINY;
+        else
+            away = w->cone_cull && facing_away(w, view, s, &all);
     }
+    /* A surface facing away keeps the bound it would be drawn at, so the
+     * seams it shares, and so every neighbour's tessellation, stay as they
+     * are without cone culling: only its own mesh is neither made nor
+     * drawn. */
+    int changed = choose_target(w, s, bound);
+    if (away)
+        w->visible[s] = SW_SEAM_WALK_AWAY, *cone_culled += 1;
     w->evictable[s] = w->visible[s] != 1;
-    return choose_target(w, s, bound);
+    return changed;
 }
 
 /* Every surface's nearest and farthest patch box in view into w->cull_near
@@ -199,7 +256,7 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     int changed = w->frame == 0;
     cull_boxes(w, view, frame);
     for (uint32_t s = 0; s < n; s++) {
-        changed |= cull_surface(w, view, s);
+        changed |= cull_surface(w, view, s, &frame->cone_culled);
         frame->visible_surfaces += w->visible[s] != 0;
     }
     /* The update is complete (no operation cap) and depends on the bounds

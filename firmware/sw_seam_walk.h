@@ -35,6 +35,7 @@
 #include "sw_arena.h"
 #include "sw_cull_tree.h"
 #include "sw_gl_pool.h"
+#include "sw_normal_cone.h"
 #include "sw_pack.h"
 #include "sw_renderer.h"
 #include "sw_seam_cache.h"
@@ -51,6 +52,8 @@
 #define SW_SEAM_WALK_VERTICES SW_WALK_VERTICES
 #define SW_SEAM_WALK_INDICES SW_WALK_INDICES
 
+enum { SW_SEAM_WALK_AWAY = 3 }; /* w->visible: in the frustum, its normal cone facing away */
+
 typedef struct sw_seam_walk {
     const sw_pack *pack;
     sw_seam_select select;
@@ -59,7 +62,8 @@ typedef struct sw_seam_walk {
                                      for, model units; huge for surfaces without one */
     float *seam_bound;            /* surface_count: its seams' share of the target */
     uint8_t *visible;             /* surface_count: 0 out of view, 1 drawn, 2 too small to
-                                     draw (its box within its bound) */
+                                     draw (its box within its bound), SW_SEAM_WALK_AWAY in
+                                     view but facing away (cone culling: not drawn) */
     uint8_t *evictable;           /* surface_count: not drawn this frame */
     uint8_t *dirty;               /* surface_count: its loops changed since it was made */
     sw_seam_point *loop_points;   /* the largest surface's slots */
@@ -80,6 +84,11 @@ typedef struct sw_seam_walk {
                                      of its patch boxes in view (+inf, -inf: none) */
     int cull_brute;               /* every patch box tested on its own instead of the tree:
                                      the benchmarks' "before" (same answers) */
+    sw_normal_cone *cones;        /* surface_count: the union of its patches' normal cones
+                                     (sw_normal_cone.h), made at init */
+    int cone_cull;                /* surfaces whose cone faces away over their box are not
+                                     drawn: only when the renderer hides back faces (the
+                                     caller's rule; 0, default: off) */
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
     uint32_t frame;               /* frames selected so far */
@@ -117,6 +126,7 @@ typedef struct sw_seam_frame {
                                      frustum (sw_cull_tree.h) */
     uint64_t cull_depth_tests;    /* boxes whose depth range it computed */
     double cull_ms;               /* of the select, spent on those */
+    uint32_t cone_culled;         /* in the frustum, left out: their cone faces away */
     double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
     double error_beyond_sewing_px;/* measured: the most a sample's error exceeds its surface's
                                      sewing offset, what the level of detail and the

@@ -177,8 +177,14 @@ void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float 
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    /* Patch soups have no consistent orientation; the shader is two-sided. */
-    glDisable(GL_CULL_FACE);
+    /* Patch soups have no consistent orientation; the shader is two-sided
+     * unless back faces were asked hidden. */
+    if (r->back_hidden) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
     glUseProgram(r->program);
     glUniformMatrix4fv(r->u_model_view, 1, GL_FALSE, model_view);
     glUniformMatrix4fv(r->u_projection, 1, GL_FALSE, projection);
@@ -192,8 +198,19 @@ void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3])
     glUniform4fv(r->u_back, 1, rgb ? on : off);
 }
 
+void sw_renderer_set_back_hidden(sw_renderer *r, int hidden)
+{
+    r->back_hidden = hidden;
+}
+
 void sw_renderer_set_fill(sw_renderer *r, int fill)
 {
+    /* A fan winds either way; culled by its winding it would reopen the
+     * pinhole it closes. */
+    if (r->back_hidden && fill)
+        glDisable(GL_CULL_FACE);
+    else if (r->back_hidden)
+        glEnable(GL_CULL_FACE);
     glUseProgram(r->program);
     glUniform1f(r->u_fill, fill ? 1.0f : 0.0f);
 }

@@ -17,6 +17,7 @@ typedef struct sw_renderer {
     unsigned int vertex_buffer, index_buffer;
     uint32_t max_vertices, max_indices;
     uint64_t draw_calls, triangles;   /* since init, for the stats */
+    int back_hidden;                  /* sw_renderer_set_back_hidden */
 } sw_renderer;
 
 /* Compiles the program and creates buffers for batches of up to max_vertices
@@ -36,6 +37,13 @@ void sw_renderer_set_color(sw_renderer *r, const float rgba[4]);
  * through a crack can be told from its outside (tests/test_image_holes.sh).
  * NULL, the default: both sides lit. */
 void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3]);
+
+/* hidden 1: back faces (clockwise on screen) are not drawn at all
+ * (GL_CULL_FACE), for closed solids whose faces all point out; the seam
+ * walk's cone culling leaves out whole surfaces only in this mode (it
+ * removes what this would not draw anyway). Fill fans are still drawn both
+ * ways (they have no facing). 0, the default: both sides drawn. */
+void sw_renderer_set_back_hidden(sw_renderer *r, int hidden);
 
 /* Draws that follow, until set again, are fill fans over seam crossings
  * (firmware/sw_seam_fill.h): lit on the side their normals face, whatever
