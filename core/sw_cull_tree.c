@@ -31,6 +31,8 @@ typedef struct builder {
     sw_cull_node *nodes;
     uint32_t used;
     uint32_t depth;                   /* deepest level reached */
+    uint32_t leaf_max;                /* items a leaf holds at most */
+    const uint32_t *items_base;       /* leaves point into it (leaf_max > 1) */
     /* The items' boxes: patches, or the roots of the surfaces' trees. */
     const sw_pack_patch *patches;     /* non-NULL: items are patch indices */
     const sw_cull_node *roots_nodes;  /* else items are surfaces, */
@@ -102,20 +104,29 @@ static void select_kth(const builder *b, uint32_t *items, uint32_t count, uint32
 static void union_of(sw_cull_node *n, const sw_cull_node *l, const sw_cull_node *r)
 {
     for (int k = 0; k < 3; k++) {
-        n->min[k] = l->min[k] < r->min[k] ? l->min[k] : r->min[k];
-        n->max[k] = l->max[k] > r->max[k] ? l->max[k] : r->max[k];
+        float lo = l->min[k] < r->min[k] ? l->min[k] : r->min[k];
+        float hi = l->max[k] > r->max[k] ? l->max[k] : r->max[k];
+        n->min[k] = lo, n->max[k] = hi;
     }
 }
 
-/* The tree over items[0 .. count), count >= 1, in preorder; its root. */
+/* The tree over items[0 .. count), count >= 1, in preorder; its root. A
+ * leaf of one item names it; a leaf of more names where they start in
+ * items_base. */
 static uint32_t build_node(builder *b, uint32_t *items, uint32_t count, uint32_t level)
 {
     uint32_t self = b->used++;
     sw_cull_node *n = &b->nodes[self];
     b->depth = level > b->depth ? level : b->depth;
-    if (count == 1) {
+    if (count <= b->leaf_max) {
         item_box(b, items[0], n->min, n->max);
-        n->a = items[0], n->b = SW_CULL_LEAF;
+        for (uint32_t i = 1; i < count; i++) {
+            sw_cull_node one;
+            item_box(b, items[i], one.min, one.max);
+            union_of(n, n, &one);
+        }
+        n->a = b->leaf_max == 1 ? items[0] : (uint32_t)(items - b->items_base);
+        n->b = SW_CULL_LEAF | count;
         return self;
     }
     uint32_t half = count / 2;
@@ -137,7 +148,8 @@ uint64_t sw_cull_tree_arena_bytes(uint32_t surface_count, uint64_t patch_count)
     return take_bytes(2 * n * sizeof(sw_cull_node)) +          /* top */
            take_bytes(2 * patch_count * sizeof(sw_cull_node)) + /* patch_nodes */
            take_bytes(n * sizeof(uint32_t)) +                   /* surface_root */
-           take_bytes((patch_count + n) * sizeof(uint32_t));    /* scratch: the items */
+           take_bytes(patch_count * sizeof(uint32_t)) +         /* patch_order */
+           take_bytes(n * sizeof(uint32_t));                    /* scratch: the surfaces */
 }
 
 static void *take(sw_arena *a, uint64_t bytes, int *failed)
@@ -147,26 +159,30 @@ static void *take(sw_arena *a, uint64_t bytes, int *failed)
     return p;
 }
 
-/* Every surface's tree over its patches; the surfaces that have patches
- * into surfaces_out (their count returned). */
+/* Every surface's tree over its patches (their order in t->patch_order);
+ * the surfaces that have patches into surfaces_out (their count returned). */
 static uint32_t build_patch_trees(sw_cull_tree *t, const sw_pack_surface *surfaces,
-                                  uint32_t *items, uint32_t *surfaces_out)
+                                  uint32_t *surfaces_out)
 {
-    builder b = { t->patch_nodes, 0, 0, t->patches, NULL, NULL };
-    uint32_t with_patches = 0, deepest = 0;
+    builder b = { t->patch_nodes, 0, 0, SW_CULL_LEAF_PATCHES, t->patch_order, t->patches, NULL,
+                  NULL };
+    uint32_t with_patches = 0, deepest = 0, at = 0;
     for (uint32_t s = 0; s < t->surface_count; s++) {
         const sw_pack_surface *ps = &surfaces[s];
         t->surface_root[s] = SW_CULL_LEAF;
         if (ps->patch_count == 0)
             continue;
+        uint32_t *items = t->patch_order + at;
         for (uint32_t i = 0; i < ps->patch_count; i++)
             items[i] = ps->first_patch + i;
+        at += ps->patch_count;
         b.depth = 0;
         t->surface_root[s] = build_node(&b, items, ps->patch_count, 1);
         deepest = b.depth > deepest ? b.depth : deepest;
         surfaces_out[with_patches++] = s;
     }
     t->depth = deepest;
+    t->patch_node_count = b.used;
     return with_patches;
 }
 
@@ -182,8 +198,9 @@ sw_status sw_cull_tree_build(sw_cull_tree *t, const sw_pack_surface *surfaces,
     t->top = take(arena, 2 * n * sizeof(sw_cull_node), &failed);
     t->patch_nodes = take(arena, 2 * patch_count * sizeof(sw_cull_node), &failed);
     t->surface_root = take(arena, n * sizeof(uint32_t), &failed);
+    t->patch_order = take(arena, patch_count * sizeof(uint32_t), &failed);
     size_t mark = sw_arena_mark(arena);
-    uint32_t *items = take(arena, (patch_count + n) * sizeof(uint32_t), &failed);
+    uint32_t *with_patches = take(arena, n * sizeof(uint32_t), &failed);
     if (failed)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the culling tree over "
                             "%u surfaces (needs %llu bytes)", surface_count,
@@ -191,10 +208,9 @@ sw_status sw_cull_tree_build(sw_cull_tree *t, const sw_pack_surface *surfaces,
                                                                          patch_count));
     t->patches = patches;
     t->surface_count = surface_count;
-    uint32_t *with_patches = items + patch_count;
-    uint32_t count = build_patch_trees(t, surfaces, items, with_patches);
+    uint32_t count = build_patch_trees(t, surfaces, with_patches);
     if (count > 0) {
-        builder b = { t->top, 0, 0, NULL, t->patch_nodes, t->surface_root };
+        builder b = { t->top, 0, 0, 1, NULL, NULL, t->patch_nodes, t->surface_root };
         build_node(&b, with_patches, count, 1);
         t->top_count = b.used;
         t->depth += b.depth;
@@ -234,6 +250,30 @@ static patch_entry patch_entry_of(const sw_cull_tree *t, uint32_t node, int stat
     return e;
 }
 
+/* A leaf's patches: tested one by one unless the leaf is inside, or holds
+ * one patch and was itself tested (state SW_CULL_INTERSECTS: its box is
+ * that patch's). */
+static void cull_leaf(const sw_cull_tree *t, const sw_cull_view *v, const sw_cull_node *n,
+                      int state, double *best_lo, double *best_hi, sw_cull_counts *c)
+{
+    uint32_t count = n->b & ~SW_CULL_LEAF;
+    int known = state == SW_CULL_INSIDE || (state == SW_CULL_INTERSECTS && count == 1);
+    for (uint32_t k = 0; k < count; k++) {
+        sw_box box = sw_cull_patch_box(&t->patches[t->patch_order[n->a + k]]);
+        if (!known) {
+            c->box_tests++;
+            if (sw_frustum_test_box(&v->frustum, &box) == SW_CULL_OUTSIDE)
+                continue;
+        }
+        double lo, hi;
+        c->depth_tests++;
+        sw_box_depth_range(&box, v->eye, v->forward, &lo, &hi);
+        lo = lo > v->near_z ? lo : v->near_z;
+        *best_lo = lo < *best_lo ? lo : *best_lo;
+        *best_hi = hi > *best_hi ? hi : *best_hi;
+    }
+}
+
 /* One surface's patches below root, whose state the top level found:
  * nearest first, a subtree skipped when it can change neither answer. */
 static void cull_patches(const sw_cull_tree *t, const sw_cull_view *v, uint32_t root, int state,
@@ -252,9 +292,8 @@ static void cull_patches(const sw_cull_tree *t, const sw_cull_view *v, uint32_t 
         int st = e.state == UNTESTED ? (int)test_node(n, v, c) : e.state;
         if (st == SW_CULL_OUTSIDE)
             continue;
-        if (n->b == SW_CULL_LEAF) {
-            best_lo = lo < best_lo ? lo : best_lo;
-            best_hi = e.hi > best_hi ? e.hi : best_hi;
+        if (n->b & SW_CULL_LEAF) {
+            cull_leaf(t, v, n, st, &best_lo, &best_hi, c);
             continue;
         }
         int child = st == SW_CULL_INSIDE ? SW_CULL_INSIDE : UNTESTED;
@@ -292,7 +331,7 @@ void sw_cull_tree_query(const sw_cull_tree *t, const sw_cull_view *v, double *ne
         int st = state == UNTESTED ? (int)test_node(n, v, counts) : state;
         if (st == SW_CULL_OUTSIDE)
             continue;
-        if (n->b == SW_CULL_LEAF) {
+        if (n->b & SW_CULL_LEAF) {
             /* The surface's root has this leaf's box: st holds for it. */
             uint32_t s = n->a;
             cull_patches(t, v, t->surface_root[s], st, &nearest[s], &farthest[s], counts);

@@ -32,12 +32,17 @@
 #include "sw_math.h"
 #include "sw_pack.h"
 
-#define SW_CULL_LEAF 0xFFFFFFFFu /* a node's b: it is a leaf and a is its item */
+#define SW_CULL_LEAF 0x80000000u /* in a node's b: a leaf, of (b & ~SW_CULL_LEAF) items */
+
+/* Patches a leaf holds at most: below that, a subtree's boxes cost more to
+ * walk than its patches' boxes cost to test (most surfaces have a few). */
+#define SW_CULL_LEAF_PATCHES 4u
 
 typedef struct sw_cull_node {    /* 32 bytes */
     float min[3], max[3];        /* the union of its items' boxes, exactly */
-    uint32_t a, b;               /* inner: children a and b; leaf (b == SW_CULL_LEAF): item a,
-                                    a surface in top, a patch in patch_nodes */
+    uint32_t a, b;               /* inner: children a and b; leaf (b & SW_CULL_LEAF): in top,
+                                    surface a; in patch_nodes, its patches are
+                                    patch_order[a .. a + count) */
 } sw_cull_node;
 
 typedef struct sw_cull_tree {
@@ -45,8 +50,10 @@ typedef struct sw_cull_tree {
     sw_cull_node *top;             /* over the surfaces with patches; root top[0] */
     uint32_t top_count;            /* 2 * surfaces with patches - 1, or 0 */
     sw_cull_node *patch_nodes;     /* every surface's tree over its patches */
+    uint32_t patch_node_count;
     uint32_t *surface_root;        /* surface_count: its tree's root in patch_nodes, or
                                       SW_CULL_LEAF when it has no patches */
+    uint32_t *patch_order;         /* every surface's patches, as its leaves hold them */
     uint32_t surface_count;
     uint32_t depth;                /* the deepest path, top and patch levels together */
 } sw_cull_tree;
