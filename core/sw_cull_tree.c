@@ -207,6 +207,7 @@ sw_status sw_cull_tree_build(sw_cull_tree *t, const sw_pack_surface *surfaces,
                             (unsigned long long)sw_cull_tree_arena_bytes(surface_count,
                                                                          patch_count));
     t->patches = patches;
+    t->surfaces = surfaces;
     t->surface_count = surface_count;
     uint32_t count = build_patch_trees(t, surfaces, with_patches);
     if (count > 0) {
@@ -307,6 +308,47 @@ static void cull_patches(const sw_cull_tree *t, const sw_cull_view *v, uint32_t 
     *farthest = best_hi;
 }
 
+/* Surface s wholly in view: every patch's depth range, one after the
+ * other when there are few; the tree's nearest-first walk when there are
+ * many (it skips the subtrees that cannot change the answers). */
+static void inside_surface(const sw_cull_tree *t, const sw_cull_view *v, uint32_t s,
+                           double *nearest, double *farthest, sw_cull_counts *c)
+{
+    const sw_pack_surface *ps = &t->surfaces[s];
+    if (ps->patch_count > SW_CULL_SCAN_PATCHES) {
+        cull_patches(t, v, t->surface_root[s], SW_CULL_INSIDE, nearest, farthest, c);
+        return;
+    }
+    double best_lo = INFINITY, best_hi = -INFINITY;
+    for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
+        sw_box box = sw_cull_patch_box(&t->patches[i]);
+        double lo, hi;
+        c->depth_tests++;
+        sw_box_depth_range(&box, v->eye, v->forward, &lo, &hi);
+        lo = lo > v->near_z ? lo : v->near_z;
+        best_lo = lo < best_lo ? lo : best_lo;
+        best_hi = hi > best_hi ? hi : best_hi;
+    }
+    *nearest = best_lo;
+    *farthest = best_hi;
+}
+
+/* A top-level subtree wholly in view: in preorder it is the run from its
+ * root to its rightmost leaf, and every leaf in that run is a surface in
+ * view. */
+static void inside_subtree(const sw_cull_tree *t, const sw_cull_view *v, uint32_t node,
+                           double *nearest, double *farthest, sw_cull_counts *c)
+{
+    uint32_t last = node;
+    while (!(t->top[last].b & SW_CULL_LEAF))
+        last = t->top[last].b;
+    for (uint32_t k = node; k <= last; k++)
+        if (t->top[k].b & SW_CULL_LEAF) {
+            uint32_t s = t->top[k].a;
+            inside_surface(t, v, s, &nearest[s], &farthest[s], c);
+        }
+}
+
 static double centre_depth(const sw_cull_node *n, const sw_cull_view *v)
 {
     sw_vec3 c = sw_v3(0.5 * ((double)n->min[0] + n->max[0]), 0.5 * ((double)n->min[1] + n->max[1]),
@@ -331,6 +373,10 @@ void sw_cull_tree_query(const sw_cull_tree *t, const sw_cull_view *v, double *ne
         int st = state == UNTESTED ? (int)test_node(n, v, counts) : state;
         if (st == SW_CULL_OUTSIDE)
             continue;
+        if (st == SW_CULL_INSIDE) {
+            inside_subtree(t, v, node, nearest, farthest, counts);
+            continue;
+        }
         if (n->b & SW_CULL_LEAF) {
             /* The surface's root has this leaf's box: st holds for it. */
             uint32_t s = n->a;
@@ -339,10 +385,9 @@ void sw_cull_tree_query(const sw_cull_tree *t, const sw_cull_view *v, double *ne
         }
         /* Front to back by the children's centres (cheap; the answers do
          * not depend on the order at this level). */
-        int child = st == SW_CULL_INSIDE ? SW_CULL_INSIDE : UNTESTED;
         int a_first = centre_depth(&t->top[n->a], v) < centre_depth(&t->top[n->b], v);
-        stack[top].node = a_first ? n->b : n->a, stack[top++].state = child;
-        stack[top].node = a_first ? n->a : n->b, stack[top++].state = child;
+        stack[top].node = a_first ? n->b : n->a, stack[top++].state = UNTESTED;
+        stack[top].node = a_first ? n->a : n->b, stack[top++].state = UNTESTED;
     }
 }
 

@@ -38,6 +38,11 @@
  * walk than its patches' boxes cost to test (most surfaces have a few). */
 #define SW_CULL_LEAF_PATCHES 4u
 
+/* A surface wholly in view with at most this many patches has their depth
+ * ranges taken one by one; with more, its tree's nearest-first walk skips
+ * what cannot change the answers. */
+#define SW_CULL_SCAN_PATCHES 16u
+
 typedef struct sw_cull_node {    /* 32 bytes */
     float min[3], max[3];        /* the union of its items' boxes, exactly */
     uint32_t a, b;               /* inner: children a and b; leaf (b & SW_CULL_LEAF): in top,
@@ -47,6 +52,7 @@ typedef struct sw_cull_node {    /* 32 bytes */
 
 typedef struct sw_cull_tree {
     const sw_pack_patch *patches;  /* the pack's, read for nothing but their boxes */
+    const sw_pack_surface *surfaces; /* the pack's: their patch ranges */
     sw_cull_node *top;             /* over the surfaces with patches; root top[0] */
     uint32_t top_count;            /* 2 * surfaces with patches - 1, or 0 */
     sw_cull_node *patch_nodes;     /* every surface's tree over its patches */
