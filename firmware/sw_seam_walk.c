@@ -219,14 +219,17 @@ static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32
         else
             away = w->cone_cull && facing_away(w, view, s, &all);
     }
-    /* A surface facing away keeps the bound it would be drawn at, so the
-     * seams it shares, and so every neighbour's tessellation, stay as they
-     * are without cone culling: only its own mesh is neither made nor
-     * drawn. */
+    /* A surface facing away is handled as a drawn one in all but the
+     * drawing: its bound, its tessellation and its place in the cache, so
+     * the seams it shares, every neighbour's mesh and so every pixel stay
+     * as they are without cone culling. (Not tessellating it would save
+     * more, but then its target's hysteresis and cache residency, and
+     * through the seams its neighbours' meshes, would differ within the
+     * bound from a walk without cone culling.) */
     int changed = choose_target(w, s, bound);
     if (away)
         w->visible[s] = SW_SEAM_WALK_AWAY, *cone_culled += 1;
-    w->evictable[s] = w->visible[s] != 1;
+    w->evictable[s] = w->visible[s] != 1 && w->visible[s] != SW_SEAM_WALK_AWAY;
     return changed;
 }
 
@@ -504,11 +507,13 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
      * that queued draws read makes the driver flush them first (llvmpipe:
      * 70 uploads between draws took the teaset's frame from 80 to 300 ms). */
     for (uint32_t s = 0; s < n; s++)
-        if (w->visible[s] == 1)
+        if (w->visible[s] == 1 || w->visible[s] == SW_SEAM_WALK_AWAY)
             refresh_surface(w, s, pool, frame);
     for (uint32_t s = 0; s < n; s++) {
         if (w->visible[s] == SW_SEAM_WALK_TINY)
             frame->vanished_surfaces++;
+        if (w->visible[s] == SW_SEAM_WALK_AWAY) /* as if drawn, for the cache's order */
+            w->cache.entries[s].last_frame = w->frame;
         if (w->visible[s] != 1 || s == w->drop_surface)
             continue;
         draw_surface(w, s, r, pool, &part, frame);

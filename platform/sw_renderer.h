@@ -12,7 +12,7 @@
 
 typedef struct sw_renderer {
     unsigned int program;
-    int u_model_view, u_projection, u_color, u_back, u_fill;
+    int u_model_view, u_projection, u_color, u_back, u_fill, u_hide_back;
     int a_position, a_normal;
     unsigned int vertex_buffer, index_buffer;
     uint32_t max_vertices, max_indices;
@@ -41,8 +41,10 @@ void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3]);
 /* hidden 1: back faces (clockwise on screen) are not drawn at all
  * (GL_CULL_FACE), for closed solids whose faces all point out; the seam
  * walk's cone culling leaves out whole surfaces only in this mode (it
- * removes what this would not draw anyway). Fill fans are still drawn both
- * ways (they have no facing). 0, the default: both sides drawn. */
+ * removes what this would not draw anyway). Fill fans wind either way, so
+ * they are not culled by winding but by their normals: a fan fragment
+ * whose normal faces away is discarded, as its surface faces away there.
+ * 0, the default: both sides drawn. */
 void sw_renderer_set_back_hidden(sw_renderer *r, int hidden);
 
 /* Draws that follow, until set again, are fill fans over seam crossings
