@@ -3,10 +3,10 @@
 # every patch box every frame (seamwalk --cull brute), and cone culling on
 # and off with back faces hidden, side by side in one run:
 #   cull_bench.sh BUILD_DIR [--patches N] [--pack FILE] [--frames F]
-#                 [--repeats R] [--json FILE]
+#                 [--repeats R] [--size WxH] [--json FILE]
 # On a generated showroom of N patches (default 40,000; from the hammer,
 # screw and teapot of ../shared/models, as tests/bench/walk_cache_bench.sh
-# builds it; --pack reuses a pack built so) at 1280x720, three camera
+# builds it; --pack reuses a pack built so) at 1280x720 (--size), three camera
 # setups: its orbit (F frames, default 60), a walk at eye height from the
 # entrance through the hall (F frames) and the entrance viewpoint still.
 # Each walk runs R times (default 3), the methods alternating; the figures
@@ -17,7 +17,7 @@
 set -euo pipefail
 build=$1; shift
 src=$(cd "$(dirname "$0")/../.." && pwd)
-patches=40000 pack= frames=60 repeats=3 json=
+patches=40000 pack= frames=60 repeats=3 json= size=1280x720
 while [ $# -gt 0 ]; do
   case $1 in
     --patches) patches=$2; shift ;;
@@ -25,6 +25,7 @@ while [ $# -gt 0 ]; do
     --frames) frames=$2; shift ;;
     --repeats) repeats=$2; shift ;;
     --json) json=$2; shift ;;
+    --size) size=$2; shift ;;
     *) echo "cull_bench: unknown option $1" >&2; exit 2 ;;
   esac
   shift
@@ -53,7 +54,7 @@ EOF
 # run NAME K ARGS...: one walk into $work/NAME.K.json
 run() {
   local name=$1 k=$2; shift 2
-  "$walker" --pack "$pack" --headless 1280x720 --measure-every 100000 --memory-mb 4096 \
+  "$walker" --pack "$pack" --headless "$size" --measure-every 100000 --memory-mb 4096 \
     --stats "$work/$name.$k.json" "$@" > "$work/$name.$k.log" 2>&1 \
     || { echo "cull_bench: walk $name failed: $(tail -n 2 "$work/$name.$k.log")" >&2; exit 1; }
 }
@@ -86,7 +87,7 @@ fields = (("box_tests_p50", lambda j: j["cull"]["box_tests"]["p50"]),
           ("cone_culled_p50", lambda j: j["cull"]["cone_culled"]["p50"]),
           ("frame_ms_p50", lambda j: j["frame_ms"]["p50"]),
           ("tris_p50", lambda j: j["tris_per_frame"]["median"]))
-result = {"pack": pack, "repeats": repeats, "size": [1280, 720], "setups": {}}
+result = {"pack": pack, "repeats": repeats, "setups": {}}
 fmt = lambda v, p: ("%%.%df (%%.%df..%%.%df)" % (p, p, p)) % tuple(v)
 for s in setups:
     rows = {m: {k: spread([f(j) for j in runs("%s.%s" % (s, m))]) for k, f in fields}
