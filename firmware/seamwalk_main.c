@@ -144,6 +144,8 @@ static sw_status init_seams(runtime *rt, sw_error *err)
     rt->seam.cone_cull = rt->opt.back_hidden && rt->opt.cone_cull;
     rt->stats.cull_method = rt->opt.cull_brute ? "brute" : "tree";
     rt->stats.cone_cull = rt->seam.cone_cull;
+    rt->stats.cull_tree_ms = rt->seam.cull_tree_ms;
+    rt->stats.cones_ms = rt->seam.cones_ms;
     if (st == SW_OK)
         st = sw_seam_drawn_init(&rt->drawn, &rt->model_box, rt->pack.seam.tolerance,
                                 SW_DRAWN_EDGES, SW_SEAM_WALK_INDICES, &rt->arena, err);

@@ -54,6 +54,13 @@ static sw_status measure_sewing(sw_seam_walk *w, sw_error *err)
     return SW_OK;
 }
 
+static double ms_since(const struct timespec *a)
+{
+    struct timespec b;
+    clock_gettime(CLOCK_MONOTONIC, &b);
+    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
+}
+
 /* Every surface's normal cone, the union of its patches' (scratch from the
  * arena, given back). */
 static sw_status make_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
@@ -125,9 +132,12 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the seam walk "
                             "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
     sw_arena_init(&w->scratch, scratch, scratch_bytes);
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
     st = sw_cull_tree_build(&w->cull_tree, pack->surfaces, (uint32_t)n, pack->patches, arena, err);
     if (st != SW_OK)
         return st;
+    w->cull_tree_ms = ms_since(&t0);
     for (size_t k = 0; k < n; k++)
         w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0;
     memset(w->dirty, 0, n);
@@ -136,14 +146,11 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
                             err);
     if (st == SW_OK)
         st = measure_sewing(w, err);
-    return st != SW_OK ? st : make_cones(w, arena, err);
-}
-
-static double ms_since(const struct timespec *a)
-{
-    struct timespec b;
-    clock_gettime(CLOCK_MONOTONIC, &b);
-    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    if (st == SW_OK)
+        st = make_cones(w, arena, err);
+    w->cones_ms = ms_since(&t0);
+    return st;
 }
 
 /* The level a tessellation is made for: the bound rounded down to a power

@@ -86,6 +86,7 @@ typedef struct sw_seam_walk {
                                      the benchmarks' "before" (same answers) */
     sw_normal_cone *cones;        /* surface_count: the union of its patches' normal cones
                                      (sw_normal_cone.h), made at init */
+    double cull_tree_ms, cones_ms;/* init's time building the tree and the cones */
     int cone_cull;                /* surfaces whose cone faces away over their box are not
                                      drawn: only when the renderer hides back faces (the
                                      caller's rule; 0, default: off) */

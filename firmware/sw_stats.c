@@ -220,9 +220,10 @@ static sw_status write_cull(FILE *f, const sw_stats *s, sw_arena *scratch)
     fprintf(f, "  \"cull\": {\"method\": \"%s\", \"cone_cull\": %s, "
                "\"box_tests\": {\"p50\": %.0f, \"max\": %.0f}, "
                "\"cone_culled\": {\"p50\": %.0f, \"max\": %.0f}, "
-               "\"ms\": {\"p50\": %.4f, \"p99\": %.4f, \"max\": %.4f}},\n",
+               "\"ms\": {\"p50\": %.4f, \"p99\": %.4f, \"max\": %.4f}, "
+               "\"tree_build_ms\": %.3f, \"cones_build_ms\": %.3f},\n",
             s->cull_method, s->cone_cull ? "true" : "false", t.p50, t.max, c.p50, c.max, m.p50,
-            m.p99, m.max);
+            m.p99, m.max, s->cull_tree_ms, s->cones_ms);
     return SW_OK;
 }
 

@@ -66,6 +66,7 @@ typedef struct sw_stats {
     float *cull_ms;              /* of frame_ms, spent on those tests */
     const char *cull_method;     /* "tree" or "brute" (--cull) */
     int cone_cull;               /* cone culling was on (--back-faces hidden) */
+    double cull_tree_ms, cones_ms; /* start-up: building the tree and the cones */
 
     /* With --store (firmware/sw_boot.h): which slot ran and what the boot did. */
     int store;                   /* the fields below are meaningful */

@@ -27,7 +27,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 # walk NAME PACK ARGS...: a 320x240 walk with a picture a frame into $work/NAME.
 walk() {
   local name=$1 pack=$2; shift 2
-  "$walker" --pack "$pack" --headless 320x240 --frames 12 --measure-every 100000 \
+  "$walker" --pack "$pack" --headless 320x240 --frames 6 --measure-every 100000 \
     --memory-mb 2048 --png-dir "$work/$name" --stats "$work/$name.json" "$@" \
     > "$work/$name.log" 2>&1 || fail "walk $name: $(tail -n 2 "$work/$name.log")"
 }
