@@ -141,7 +141,8 @@ static sw_status init_seams(runtime *rt, sw_error *err)
     rt->seam.cull_brute = rt->opt.cull_brute;
     /* Cone culling removes only what the renderer would not draw: back
      * faces, when they are hidden (sw_renderer_set_back_hidden). */
-    rt->seam.cone_cull = rt->opt.back_hidden && rt->opt.cone_cull;
+    if (st == SW_OK && rt->opt.back_hidden && rt->opt.cone_cull)
+        st = sw_seam_walk_enable_cones(&rt->seam, &rt->arena, err);
     rt->stats.cull_method = rt->opt.cull_brute ? "brute" : "tree";
     rt->stats.cone_cull = rt->seam.cone_cull;
     rt->stats.cull_tree_ms = rt->seam.cull_tree_ms;

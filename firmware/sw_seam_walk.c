@@ -144,12 +144,16 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     uint32_t cache = sw_walk_cache_vertices(&pack->seam, pack->surfaces);
     st = sw_seam_cache_init(&w->cache, (uint32_t)n, cache, sw_walk_cache_indices(cache), arena,
                             err);
-    if (st == SW_OK)
-        st = measure_sewing(w, err);
+    return st != SW_OK ? st : measure_sewing(w, err);
+}
+
+sw_status sw_seam_walk_enable_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
+{
+    struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    if (st == SW_OK)
-        st = make_cones(w, arena, err);
+    sw_status st = make_cones(w, arena, err);
     w->cones_ms = ms_since(&t0);
+    w->cone_cull = st == SW_OK;
     return st;
 }
 
