@@ -18,6 +18,13 @@
  * surface, subtrees are visited nearest first and skipped once they can
  * neither bring the nearest depth closer nor the farthest farther.
  *
+ * What it saves is box tests, not depth ranges: the exact nearest depth of
+ * a surface in view needs the depth range of every patch of it in view, so
+ * with the whole model in view (the 40,000-patch showroom's orbit) a query
+ * makes 1 box test instead of 40,000 but takes about the loop's time
+ * (tests/bench/cull_bench.sh: 1.79 ms against 1.74); from inside the hall
+ * (908 tests a frame) it takes 0.70 ms against 1.15.
+ *
  * Memory: the caller's arena (sw_cull_tree_arena_bytes); the query takes
  * the caller's output arrays and allocates nothing. Not thread-safe to
  * build; a built tree is read-only, so queries may run on any thread. */
