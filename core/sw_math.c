@@ -181,6 +181,20 @@ void sw_box_add_box(sw_box *box, const sw_box *other)
     sw_box_add_point(box, other->max);
 }
 
+void sw_box_depth_range(const sw_box *b, sw_vec3 eye, sw_vec3 forward, double *lo, double *hi)
+{
+    /* Each axis' term (c - eye) * forward is monotone in c and so is their
+     * sum, rounding included: the corner taking each axis' smaller term
+     * gives exactly the smallest of the 8 corners' values, the other
+     * corner the largest (two dot products instead of eight). */
+    sw_vec3 near_c = sw_v3(forward.x >= 0 ? b->min.x : b->max.x, forward.y >= 0 ? b->min.y : b->max.y,
+                           forward.z >= 0 ? b->min.z : b->max.z);
+    sw_vec3 far_c = sw_v3(forward.x >= 0 ? b->max.x : b->min.x, forward.y >= 0 ? b->max.y : b->min.y,
+                          forward.z >= 0 ? b->max.z : b->min.z);
+    *lo = sw_v3_dot(sw_v3_sub(near_c, eye), forward);
+    *hi = sw_v3_dot(sw_v3_sub(far_c, eye), forward);
+}
+
 int sw_box_is_empty(const sw_box *box)
 {
     return !(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z);

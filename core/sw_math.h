@@ -54,6 +54,11 @@ sw_vec3 sw_box_center(const sw_box *box);
 double sw_box_diagonal(const sw_box *box);
 /* Distance from p to the nearest point of the box; 0 when p is inside. */
 double sw_box_distance(const sw_box *box, sw_vec3 p);
+/* The smallest and largest of dot(corner - eye, forward) over the box's 8
+ * corners: its depth range along a view direction. One function for every
+ * caller, so the culling hierarchy and the loops it replaces agree bit for
+ * bit (core/sw_cull_tree.h). */
+void sw_box_depth_range(const sw_box *box, sw_vec3 eye, sw_vec3 forward, double *lo, double *hi);
 
 /* Planes of the clip volume of view_proj (Gribb/Hartmann), normalised. */
 sw_frustum sw_frustum_from_matrix(const sw_mat4 *view_proj);

@@ -1,6 +1,8 @@
 #include "sw_walk_memory.h"
 
 #include "sw_arena.h"
+#include "sw_cull_tree.h"
+#include "sw_normal_cone.h"
 #include "sw_seam_cache.h"
 #include "sw_seam_select.h"
 #include "sw_trim_tess.h"
@@ -48,6 +50,14 @@ uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surf
     uint64_t bytes = sw_seam_select_arena_bytes(g);
     bytes += 4 * take(n * sizeof(float)) + 3 * take(n);  /* target, seam bound, offset, depth;
                                                              visible, evictable, dirty */
+    uint64_t patches = 0;
+    for (uint32_t s = 0; s < g->surface_count; s++)
+        patches += surfaces[s].patch_count;
+    bytes += 2 * take(n * sizeof(double)) +             /* cull_near, cull_far */
+             sw_cull_tree_arena_bytes((uint32_t)n, patches);
+    bytes += take(n * sizeof(sw_normal_cone)) +         /* the cones, and their scratch */
+             sw_arena_worst_case(sizeof(double) * sw_normal_cone_scratch_doubles(
+                                     SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE), 64);
     bytes += take((m.points + 1ull) * sizeof(sw_seam_point)) +
              take((m.points + 1ull) * sizeof(sw_trim_point)) +
              take((m.loops + 1ull) * sizeof(uint32_t)) +

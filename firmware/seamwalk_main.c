@@ -143,6 +143,15 @@ static sw_status init_seams(runtime *rt, sw_error *err)
     sw_status st = sw_seam_walk_init(&rt->seam, &rt->pack, &rt->arena, rt->opt.max_error_px, err);
     rt->walk_bytes = rt->arena.used - before;
     rt->seam.no_cache = rt->opt.no_cache;
+    rt->seam.cull_brute = rt->opt.cull_brute;
+    /* Cone culling removes only what the renderer would not draw: back
+     * faces, when they are hidden (sw_renderer_set_back_hidden). */
+    if (st == SW_OK && rt->opt.back_hidden && rt->opt.cone_cull)
+        st = sw_seam_walk_enable_cones(&rt->seam, &rt->arena, err);
+    rt->stats.cull_method = rt->opt.cull_brute ? "brute" : "tree";
+    rt->stats.cone_cull = rt->seam.cone_cull;
+    rt->stats.cull_tree_ms = rt->seam.cull_tree_ms;
+    rt->stats.cones_ms = rt->seam.cones_ms;
     if (st == SW_OK)
         st = sw_seam_drawn_init(&rt->drawn, &rt->model_box, rt->pack.seam.tolerance,
                                 SW_DRAWN_EDGES, SW_SEAM_WALK_INDICES, &rt->arena, err);
@@ -264,6 +273,7 @@ static sw_status start(runtime *rt, sw_error *err)
     rt->renderer_up = 1;
     if (rt->opt.back_flat)
         sw_renderer_set_back_color(&rt->renderer, rt->opt.back_color);
+    sw_renderer_set_back_hidden(&rt->renderer, rt->opt.back_hidden);
     if ((st = sw_gl_pool_init(&rt->pool, rt->seam.cache.vertices, rt->seam.cache.indices, err)))
         return st;
     rt->pool_up = 1;
@@ -377,6 +387,7 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
         s->seam_crossings_max = f.crossings;
     sw_stats_add_cache_frame(s, f.retessellated, f.retess_triangles, f.upload_bytes, f.evicted,
                              f.tess_ms);
+    sw_stats_add_cull_frame(s, f.cull_box_tests, f.cone_culled, f.cull_ms);
     if (measuring) {
         s->seam_error_beyond_sewing_px = fmax(s->seam_error_beyond_sewing_px,
                                               f.error_beyond_sewing_px);

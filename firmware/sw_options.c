@@ -96,6 +96,7 @@ static void set_defaults(sw_options *o)
     o->depth_bits = 24;
     o->depth_fit = 1;
     o->fill_crossings = 1;
+    o->cone_cull = 1;
     o->drop_surface = -1;
 }
 
@@ -241,9 +242,16 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             o->background_set = 1;
             st = parse_rgb(a, v, o->background, err);
         } else if (!strcmp(a, "--back-faces")) {
-            o->back_flat = strcmp(v, "lit") != 0;
+            o->back_hidden = !strcmp(v, "hidden");
+            o->back_flat = strcmp(v, "lit") != 0 && !o->back_hidden;
             if (o->back_flat)
                 st = parse_rgb(a, v, o->back_color, err);
+        } else if (!strcmp(a, "--cone-cull")) {
+            st = parse_int(a, v, 0, 1, &o->cone_cull, err);
+        } else if (!strcmp(a, "--cull")) {
+            o->cull_brute = !strcmp(v, "brute");
+            if (!o->cull_brute && strcmp(v, "tree"))
+                st = sw_error_set(err, SW_ERR_ARG, "--cull expects tree or brute, got '%s'", v);
         } else if (!strcmp(a, "--depth-bits")) {
             st = parse_int(a, v, 16, 24, &o->depth_bits, err);
             if (st == SW_OK && o->depth_bits != 16 && o->depth_bits != 24)
@@ -277,8 +285,8 @@ void sw_options_print_usage(const char *argv0)
             "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
             "          [--config FILE] [--pose-log FILE] [--no-cache] [--background R,G,B]\n"
-            "          [--back-faces lit|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
-            "          [--fill-crossings 0|1]\n"
+            "          [--back-faces lit|hidden|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
+            "          [--fill-crossings 0|1] [--cone-cull 0|1] [--cull tree|brute]\n"
             "Walks a seamwalk pack and shows it on a display.\n"
             "  --display NAME      where to draw (default auto, or [display] display):\n"
             "                        headless  EGL surfaceless, offscreen; needs a size (CI)\n"
@@ -332,7 +340,15 @@ void sw_options_print_usage(const char *argv0)
             "                      one the model never has shows holes (tests/image_holes.c)\n"
             "  --back-faces M      lit (default: both sides shaded) or R,G,B: back faces flat\n"
             "                      in that colour, so the inside of a solid showing through\n"
-            "                      a crack can be told from its outside\n"
+            "                      a crack can be told from its outside; or hidden: back\n"
+            "                      faces not drawn (for closed solids whose faces point out;\n"
+            "                      an open shell seen from behind shows nothing there)\n"
+            "  --cone-cull 0|1     with --back-faces hidden: surfaces whose normal cone faces\n"
+            "                      away from the eye over their whole box are not drawn at\n"
+            "                      all (1, default); with back faces drawn it is always off\n"
+            "  --cull tree|brute   frustum culling through the hierarchy (tree, default) or\n"
+            "                      every patch box every frame (brute: the same answers, the\n"
+            "                      baseline tests/bench/cull_bench.sh measures against)\n"
             "  --depth-bits B      at most B bits of depth, 16 or 24 (default 24: 24 where\n"
             "                      GL_OES_depth24 is offered, else 16; the stats say which)\n"
             "  --depth-fit 0|1     fit near and far to the surfaces drawn each frame (1,\n"

@@ -35,6 +35,12 @@ typedef struct sw_options {
     float background[3];         /* 0..1, from 0..255 levels */
     int back_flat;               /* --back-faces R,G,B: back faces flat in that colour
                                     (tests/test_image_holes.sh); 0, lit: default */
+    int back_hidden;             /* --back-faces hidden: back faces not drawn (solids whose
+                                    faces all point out); cone culling only then */
+    int cone_cull;               /* --cone-cull 0|1: with back faces hidden, whole surfaces
+                                    facing away are not drawn (1, default) */
+    int cull_brute;              /* --cull brute: every patch box tested every frame instead
+                                    of the culling tree (the benchmarks' "before") */
     float back_color[3];
     int depth_bits;              /* --depth-bits 16|24: at most this many; default 24 */
     int depth_fit;               /* --depth-fit 0|1: near and far fitted to the drawn

@@ -54,6 +54,41 @@ static sw_status measure_sewing(sw_seam_walk *w, sw_error *err)
     return SW_OK;
 }
 
+static double ms_since(const struct timespec *a)
+{
+    struct timespec b;
+    clock_gettime(CLOCK_MONOTONIC, &b);
+    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
+}
+
+/* Every surface's normal cone, the union of its patches' (scratch from the
+ * arena, given back). */
+static sw_status make_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
+{
+    size_t mark = sw_arena_mark(arena);
+    size_t doubles = sw_normal_cone_scratch_doubles(SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE);
+    double *scratch = sw_arena_alloc(arena, doubles * sizeof(double), 64);
+    if (!scratch)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the normal cones' "
+                            "scratch (%zu bytes)", doubles * sizeof(double));
+    const sw_pack *pack = w->pack;
+    for (uint32_t s = 0; s < pack->seam.surface_count; s++) {
+        const sw_pack_surface *ps = &pack->surfaces[s];
+        sw_normal_cone cone = sw_normal_cone_empty();
+        for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
+            const sw_pack_patch *p = &pack->patches[i];
+            const sw_bezier_patchf patch = { p->degree_u, p->degree_v,
+                                             (p->flags & SW_PATCH_RATIONAL) != 0,
+                                             pack->control + 4 * (size_t)p->first_control };
+            sw_normal_cone c = sw_normal_cone_of_patch(&patch, scratch);
+            cone = sw_normal_cone_union(&cone, &c);
+        }
+        w->cones[s] = cone;
+    }
+    sw_arena_reset_to(arena, mark);
+    return SW_OK;
+}
+
 sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
                             sw_error *err)
 {
@@ -79,6 +114,9 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->dirty = take(arena, n, &failed);
     w->sew_offset = take(arena, n * sizeof(float), &failed);
     w->depth = take(arena, n * sizeof(float), &failed);
+    w->cull_near = take(arena, n * sizeof(double), &failed);
+    w->cull_far = take(arena, n * sizeof(double), &failed);
+    w->cones = take(arena, n * sizeof(sw_normal_cone), &failed);
     w->loop_points = take(arena, (m.points + 1) * sizeof(sw_seam_point), &failed);
     w->points = take(arena, (m.points + 1) * sizeof(sw_trim_point), &failed);
     w->loop_first = take(arena, (m.loops + 1) * sizeof(uint32_t), &failed);
@@ -94,6 +132,12 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the seam walk "
                             "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
     sw_arena_init(&w->scratch, scratch, scratch_bytes);
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    st = sw_cull_tree_build(&w->cull_tree, pack->surfaces, (uint32_t)n, pack->patches, arena, err);
+    if (st != SW_OK)
+        return st;
+    w->cull_tree_ms = ms_since(&t0);
     for (size_t k = 0; k < n; k++)
         w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0;
     memset(w->dirty, 0, n);
@@ -101,6 +145,16 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     st = sw_seam_cache_init(&w->cache, (uint32_t)n, cache, sw_walk_cache_indices(cache), arena,
                             err);
     return st != SW_OK ? st : measure_sewing(w, err);
+}
+
+sw_status sw_seam_walk_enable_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
+{
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    sw_status st = make_cones(w, arena, err);
+    w->cones_ms = ms_since(&t0);
+    w->cone_cull = st == SW_OK;
+    return st;
 }
 
 /* The level a tessellation is made for: the bound rounded down to a power
@@ -138,36 +192,74 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
     return changed;
 }
 
-/* Visible when any of its patches' boxes is; depth the nearest of those.
+/* How far past facing away a surface's cone must be, so that every
+ * triangle drawn of it, whose vertices lie on the surface or its sewn
+ * border, faces away as well (GL culls by the triangle's winding, not by
+ * the surface's normal): 0.05 rad, about 3 degrees. */
+#define SW_SEAM_CONE_MARGIN_RAD 0.05
+
+/* Surface s, all in box, shows only its back to the eye: its box grown by
+ * its border's sewing offset (the seam vertices it draws). */
+static int facing_away(const sw_seam_walk *w, const sw_view *view, uint32_t s, const sw_box *box)
+{
+    double grow = w->sew_offset[s];
+    sw_box b = { sw_v3_sub(box->min, sw_v3(grow, grow, grow)),
+                 sw_v3_add(box->max, sw_v3(grow, grow, grow)) };
+    return sw_normal_cone_back_facing(&w->cones[s], &b, view->eye, SW_SEAM_CONE_MARGIN_RAD);
+}
+
+/* Visible when any of its patches' boxes is (the culling tree's answer,
+ * w->cull_near); depth the nearest of those.
  * A visible surface whose whole box fits within its bound is too small to
  * draw: leaving it out is within the bound (the paper's vanishing patch,
  * without waiting for its loops to collapse, which takes the seams' share
  * of the bound: a few times farther). Then the target: kept while valid,
  * else the bound's level; out of view, kept while the cache holds a mesh
  * (its seams stay where they were), else as coarse as the hierarchy goes. */
-static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s)
+static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32_t *cone_culled)
 {
-    const sw_pack_surface *ps = &w->pack->surfaces[s];
-    double depth = INFINITY;
-    sw_box all = { sw_v3(INFINITY, INFINITY, INFINITY), sw_v3(-INFINITY, -INFINITY, -INFINITY) };
-    for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
-        const sw_pack_patch *p = &w->pack->patches[i];
-        sw_box box = { sw_v3(p->box_min[0], p->box_min[1], p->box_min[2]),
-                       sw_v3(p->box_max[0], p->box_max[1], p->box_max[2]) };
-        if (sw_frustum_test_box(&view->frustum, &box) != SW_CULL_OUTSIDE)
-            depth = fmin(depth, sw_view_box_min_depth(view, &box));
-        all.min = sw_v3(fmin(all.min.x, box.min.x), fmin(all.min.y, box.min.y),
-                        fmin(all.min.z, box.min.z));
-        all.max = sw_v3(fmax(all.max.x, box.max.x), fmax(all.max.y, box.max.y),
-                        fmax(all.max.z, box.max.z));
-    }
+    double depth = w->cull_near[s];
     w->visible[s] = isfinite(depth);
     w->depth[s] = (float)depth;
     double bound = w->visible[s] ? sw_view_error_world(view, w->error_px, depth) : 0.0;
-    if (w->visible[s] && sw_v3_length(sw_v3_sub(all.max, all.min)) <= bound)
-        w->visible[s] = SW_SEAM_WALK_TINY;
-    w->evictable[s] = w->visible[s] != 1;
-    return choose_target(w, s, bound);
+    int away = 0;
+    if (w->visible[s]) {
+        sw_box all = sw_cull_tree_surface_box(&w->cull_tree, s);
+        if (sw_v3_length(sw_v3_sub(all.max, all.min)) <= bound)
+            w->visible[s] = SW_SEAM_WALK_TINY;
+        else
+            away = w->cone_cull && facing_away(w, view, s, &all);
+    }
+    /* A surface facing away is handled as a drawn one in all but the
+     * drawing: its bound, its tessellation and its place in the cache, so
+     * the seams it shares, every neighbour's mesh and so every pixel stay
+     * as they are without cone culling. (Not tessellating it would save
+     * more, but then its target's hysteresis and cache residency, and
+     * through the seams its neighbours' meshes, would differ within the
+     * bound from a walk without cone culling.) */
+    int changed = choose_target(w, s, bound);
+    if (away)
+        w->visible[s] = SW_SEAM_WALK_AWAY, *cone_culled += 1;
+    w->evictable[s] = w->visible[s] != 1 && w->visible[s] != SW_SEAM_WALK_AWAY;
+    return changed;
+}
+
+/* Every surface's nearest and farthest patch box in view into w->cull_near
+ * and cull_far: the tree's walk, or (w->cull_brute) every box on its own. */
+static void cull_boxes(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame)
+{
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    const sw_cull_view v = { view->frustum, view->eye, view->forward, view->near_z };
+    sw_cull_counts c = { 0, 0 };
+    if (w->cull_brute)
+        sw_cull_brute(w->pack->surfaces, w->pack->seam.surface_count, w->pack->patches, &v,
+                      w->cull_near, w->cull_far, &c);
+    else
+        sw_cull_tree_query(&w->cull_tree, &v, w->cull_near, w->cull_far, &c);
+    frame->cull_box_tests = c.box_tests;
+    frame->cull_depth_tests = c.depth_tests;
+    frame->cull_ms = ms_since(&t0);
 }
 
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
@@ -176,8 +268,9 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     memset(frame, 0, sizeof *frame);
     uint32_t n = w->pack->seam.surface_count;
     int changed = w->frame == 0;
+    cull_boxes(w, view, frame);
     for (uint32_t s = 0; s < n; s++) {
-        changed |= cull_surface(w, view, s);
+        changed |= cull_surface(w, view, s, &frame->cone_culled);
         frame->visible_surfaces += w->visible[s] != 0;
     }
     /* The update is complete (no operation cap) and depends on the bounds
@@ -363,13 +456,6 @@ static void measure_surface(sw_seam_walk *w, uint32_t s, const sw_view *view, sw
         sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
 }
 
-static double ms_since(const struct timespec *a)
-{
-    struct timespec b;
-    clock_gettime(CLOCK_MONOTONIC, &b);
-    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
-}
-
 /* Surface s's mesh for this frame: remade when it has none or it no
  * longer serves (its target moved or its loops changed). */
 static void refresh_surface(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
@@ -432,11 +518,13 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
      * that queued draws read makes the driver flush them first (llvmpipe:
      * 70 uploads between draws took the teaset's frame from 80 to 300 ms). */
     for (uint32_t s = 0; s < n; s++)
-        if (w->visible[s] == 1)
+        if (w->visible[s] == 1 || w->visible[s] == SW_SEAM_WALK_AWAY)
             refresh_surface(w, s, pool, frame);
     for (uint32_t s = 0; s < n; s++) {
         if (w->visible[s] == SW_SEAM_WALK_TINY)
             frame->vanished_surfaces++;
+        if (w->visible[s] == SW_SEAM_WALK_AWAY) /* as if drawn, for the cache's order */
+            w->cache.entries[s].last_frame = w->frame;
         if (w->visible[s] != 1 || s == w->drop_surface)
             continue;
         draw_surface(w, s, r, pool, &part, frame);

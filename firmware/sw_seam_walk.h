@@ -33,7 +33,9 @@
 #include <stdint.h>
 
 #include "sw_arena.h"
+#include "sw_cull_tree.h"
 #include "sw_gl_pool.h"
+#include "sw_normal_cone.h"
 #include "sw_pack.h"
 #include "sw_renderer.h"
 #include "sw_seam_cache.h"
@@ -50,6 +52,8 @@
 #define SW_SEAM_WALK_VERTICES SW_WALK_VERTICES
 #define SW_SEAM_WALK_INDICES SW_WALK_INDICES
 
+enum { SW_SEAM_WALK_AWAY = 3 }; /* w->visible: in the frustum, its normal cone facing away */
+
 typedef struct sw_seam_walk {
     const sw_pack *pack;
     sw_seam_select select;
@@ -58,7 +62,8 @@ typedef struct sw_seam_walk {
                                      for, model units; huge for surfaces without one */
     float *seam_bound;            /* surface_count: its seams' share of the target */
     uint8_t *visible;             /* surface_count: 0 out of view, 1 drawn, 2 too small to
-                                     draw (its box within its bound) */
+                                     draw (its box within its bound), SW_SEAM_WALK_AWAY in
+                                     view but facing away (cone culling: not drawn) */
     uint8_t *evictable;           /* surface_count: not drawn this frame */
     uint8_t *dirty;               /* surface_count: its loops changed since it was made */
     sw_seam_point *loop_points;   /* the largest surface's slots */
@@ -74,6 +79,16 @@ typedef struct sw_seam_walk {
                                      surface, model units (sewing joins faces across the
                                      file's gaps; no level of detail makes that smaller) */
     float *depth;                 /* surface_count: this frame's nearest depth */
+    sw_cull_tree cull_tree;       /* over the surfaces and their patches, built at init */
+    double *cull_near, *cull_far; /* surface_count: this frame's nearest and farthest depth
+                                     of its patch boxes in view (+inf, -inf: none) */
+    int cull_brute;               /* every patch box tested on its own instead of the tree:
+                                     the benchmarks' "before" (same answers) */
+    sw_normal_cone *cones;        /* surface_count: the union of its patches' normal cones
+                                     (sw_normal_cone.h), made by sw_seam_walk_enable_cones */
+    double cull_tree_ms, cones_ms;/* time building the tree (init) and the cones */
+    int cone_cull;                /* surfaces whose cone faces away over their box are not
+                                     drawn (set by sw_seam_walk_enable_cones; 0: off) */
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
     uint32_t frame;               /* frames selected so far */
@@ -107,6 +122,11 @@ typedef struct sw_seam_frame {
     uint64_t crossings;           /* border vertices on a seam segment between its vertices
                                      (T-vertices on a straight edge, not gaps) */
     double tess_ms;               /* of the draw, spent tessellating and uploading */
+    uint64_t cull_box_tests;      /* of the select: patch and tree boxes tested against the
+                                     frustum (sw_cull_tree.h) */
+    uint64_t cull_depth_tests;    /* boxes whose depth range it computed */
+    double cull_ms;               /* of the select, spent on those */
+    uint32_t cone_culled;         /* in the frustum, left out: their cone faces away */
     double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
     double error_beyond_sewing_px;/* measured: the most a sample's error exceeds its surface's
                                      sewing offset, what the level of detail and the
@@ -124,6 +144,15 @@ typedef struct sw_seam_frame {
 size_t sw_seam_walk_arena_bytes(const sw_pack *pack);
 sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
                             sw_error *err);
+
+/* Makes every surface's normal cone (its scratch from arena, given back:
+ * counted in the walk's bytes) and turns cone culling on: surfaces in view
+ * whose cone faces away from the eye over their whole box are then
+ * tessellated and cached as usual but not drawn. Only for a renderer that
+ * does not draw back faces (sw_renderer_set_back_hidden): it leaves out
+ * only what that would not draw. Not at init: the cones of the 40,000-patch
+ * showroom take about 0.2 s, which a walk drawing back faces never needs. */
+sw_status sw_seam_walk_enable_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err);
 
 /* Culls surfaces, sets their bounds and moves the seam front to meet them. */
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,

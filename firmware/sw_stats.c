@@ -8,7 +8,8 @@ size_t sw_stats_arena_bytes(int frames)
     size_t n = (size_t)frames;
     return 2 * sw_arena_worst_case(n * sizeof(float), 8) + 3 * sw_arena_worst_case(n * 4, 8) +
            sw_arena_worst_case(SW_ERROR_BINS * sizeof(uint64_t), 8) +
-           6 * sw_arena_worst_case(n * sizeof(float) + 1, 8); /* sorting scratch at the end */
+           3 * sw_arena_worst_case(n * 4, 8) +                  /* the culling's */
+           9 * sw_arena_worst_case(n * sizeof(float) + 1, 8); /* sorting scratch at the end */
 }
 
 sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_bound_px,
@@ -22,7 +23,12 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
     s->error_bins = sw_arena_alloc(arena, SW_ERROR_BINS * sizeof(uint64_t), 8);
     s->retess = sw_arena_alloc(arena, (size_t)frames * 4, 8);
     s->tess_ms = sw_arena_alloc(arena, (size_t)frames * sizeof(float), 8);
-    if (!s->frame_ms || !s->tris || !s->visible || !s->error_bins || !s->retess || !s->tess_ms)
+    s->cull_box_tests = sw_arena_alloc(arena, (size_t)frames * 4, 8);
+    s->cone_culled = sw_arena_alloc(arena, (size_t)frames * 4, 8);
+    s->cull_ms = sw_arena_alloc(arena, (size_t)frames * sizeof(float), 8);
+    s->cull_method = "tree";
+    if (!s->frame_ms || !s->tris || !s->visible || !s->error_bins || !s->retess || !s->tess_ms ||
+        !s->cull_box_tests || !s->cone_culled || !s->cull_ms)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the statistics");
     memset(s->error_bins, 0, SW_ERROR_BINS * sizeof(uint64_t));
     s->error_bound_px = error_bound_px;
@@ -58,6 +64,16 @@ void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles
     s->upload_bytes_max = upload_bytes > s->upload_bytes_max ? upload_bytes : s->upload_bytes_max;
     s->evictions += evictions;
     s->frames_without_retess += surfaces == 0;
+}
+
+void sw_stats_add_cull_frame(sw_stats *s, uint64_t box_tests, uint32_t cone_culled,
+                             double cull_ms)
+{
+    if (s->frames >= s->frame_capacity)
+        return;
+    s->cull_box_tests[s->frames] = box_tests > UINT32_MAX ? UINT32_MAX : (uint32_t)box_tests;
+    s->cone_culled[s->frames] = cone_culled;
+    s->cull_ms[s->frames] = (float)cull_ms;
 }
 
 void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z)
@@ -184,6 +200,33 @@ static sw_status write_cache(FILE *f, const sw_stats *s, sw_arena *scratch)
     return SW_OK;
 }
 
+/* The culling's figures, per frame: box tests against the frustum, surfaces
+ * left out facing away, and the time both took. */
+static sw_status write_cull(FILE *f, const sw_stats *s, sw_arena *scratch)
+{
+    int n = s->frames;
+    float *tests = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *cones = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *ms = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    if (!tests || !cones || !ms)
+        return SW_ERR_NO_MEMORY;
+    for (int i = 0; i < n; i++) {
+        tests[i] = (float)s->cull_box_tests[i];
+        cones[i] = (float)s->cone_culled[i];
+        ms[i] = s->cull_ms[i];
+    }
+    sw_percentiles t = sw_percentiles_of(tests, n), c = sw_percentiles_of(cones, n);
+    sw_percentiles m = sw_percentiles_of(ms, n);
+    fprintf(f, "  \"cull\": {\"method\": \"%s\", \"cone_cull\": %s, "
+               "\"box_tests\": {\"p50\": %.0f, \"max\": %.0f}, "
+               "\"cone_culled\": {\"p50\": %.0f, \"max\": %.0f}, "
+               "\"ms\": {\"p50\": %.4f, \"p99\": %.4f, \"max\": %.4f}, "
+               "\"tree_build_ms\": %.3f, \"cones_build_ms\": %.3f},\n",
+            s->cull_method, s->cone_cull ? "true" : "false", t.p50, t.max, c.p50, c.max, m.p50,
+            m.p99, m.max, s->cull_tree_ms, s->cones_ms);
+    return SW_OK;
+}
+
 static float *copy_as_float_u32(const uint32_t *v, int n, sw_arena *a)
 {
     float *out = sw_arena_alloc(a, (size_t)n * sizeof(float) + 1, 8);
@@ -219,7 +262,7 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
             (unsigned long long)s->error_samples, s->measured_frames, s->measure_every);
     fprintf(f, "  \"cracks_max\": %llu,\n", (unsigned long long)s->cracks_max);
     fprintf(f, "  \"capped_patches_max\": %llu,\n", (unsigned long long)s->capped_patches_max);
-    if (s->frames && write_cache(f, s, scratch) != SW_OK) {
+    if (s->frames && (write_cache(f, s, scratch) != SW_OK || write_cull(f, s, scratch) != SW_OK)) {
         sw_arena_reset_to(scratch, mark);
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small to sort the statistics");
     }

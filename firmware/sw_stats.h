@@ -60,6 +60,14 @@ typedef struct sw_stats {
     uint64_t upload_bytes_total, upload_bytes_max, evictions;
     int frames_without_retess;
 
+    /* Culling (core/sw_cull_tree.h, sw_normal_cone.h), per frame. */
+    uint32_t *cull_box_tests;    /* boxes tested against the frustum */
+    uint32_t *cone_culled;       /* surfaces in the frustum left out facing away */
+    float *cull_ms;              /* of frame_ms, spent on those tests */
+    const char *cull_method;     /* "tree" or "brute" (--cull) */
+    int cone_cull;               /* cone culling was on (--back-faces hidden) */
+    double cull_tree_ms, cones_ms; /* start-up: building the tree and the cones */
+
     /* With --store (firmware/sw_boot.h): which slot ran and what the boot did. */
     int store;                   /* the fields below are meaningful */
     char store_slot;             /* 'A', 'B', or '-': no slot started, the message screen ran */
@@ -90,12 +98,16 @@ void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z);
 void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,
                               uint64_t upload_bytes, uint32_t evictions, double tess_ms);
 
+/* The culling's work in the frame sw_stats_add_frame records next. */
+void sw_stats_add_cull_frame(sw_stats *s, uint64_t box_tests, uint32_t cone_culled,
+                             double cull_ms);
+
 typedef struct sw_percentiles { double p50, p90, p99, max; } sw_percentiles;
 /* Nearest-rank percentiles; sorts values in place. */
 sw_percentiles sw_percentiles_of(float *values, int count);
 double sw_stats_error_p99(const sw_stats *s);
 
-/* Writes the JSON object. Uses scratch (3 * frames * 4 bytes) to sort. */
+/* Writes the JSON object. Uses scratch (9 * frames * 4 bytes) to sort. */
 sw_status sw_stats_write_json(const sw_stats *s, FILE *out, sw_arena *scratch, sw_error *err);
 
 #endif

@@ -9,15 +9,7 @@ double sw_view_depth(const sw_view *v, sw_vec3 p)
 
 static void box_depth_range(const sw_view *v, const sw_box *b, double *lo, double *hi)
 {
-    *lo = INFINITY;
-    *hi = -INFINITY;
-    for (int i = 0; i < 8; i++) {
-        sw_vec3 c = sw_v3(i & 1 ? b->max.x : b->min.x, i & 2 ? b->max.y : b->min.y,
-                          i & 4 ? b->max.z : b->min.z);
-        double d = sw_view_depth(v, c);
-        *lo = d < *lo ? d : *lo;
-        *hi = d > *hi ? d : *hi;
-    }
+    sw_box_depth_range(b, v->eye, v->forward, lo, hi);
 }
 
 /* The nearest near plane the depth buffer affords: with far / near = F a

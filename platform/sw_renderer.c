@@ -41,6 +41,7 @@ static const char *const fragment_source =
     "uniform vec4 u_color;\n"
     "uniform vec4 u_back;\n"
     "uniform float u_fill;\n"
+    "uniform float u_hide_back;\n"
     "varying vec3 v_normal;\n"
     "varying vec3 v_eye_pos;\n"
     "const vec3 key_dir = vec3(0.408248, 0.816497, 0.408248);\n" /* normalize(1, 2, 1) */
@@ -56,7 +57,12 @@ static const char *const fragment_source =
      * sides of a seam winds either way once snapped, so it takes the side
      * its normals face, as the surface around it does. */
     "    if (u_fill > 0.5) {\n"
-    "        if (dot(n, view_dir) < 0.0) n = -n;\n"
+    /* With back faces hidden, a fan's back (by its normals, as its surface
+     * faces there) is hidden too. */
+    "        if (dot(n, view_dir) < 0.0) {\n"
+    "            if (u_hide_back > 0.5) discard;\n"
+    "            n = -n;\n"
+    "        }\n"
     "    } else if (!gl_FrontFacing) {\n"
     "        if (u_back.a > 0.5) { gl_FragColor = vec4(u_back.rgb, 1.0); return; }\n"
     /* Two-sided: patch soups mix orientations, so light the side we see. */
@@ -124,6 +130,7 @@ static sw_status link_program(sw_renderer *r, sw_error *err)
     r->u_color = glGetUniformLocation(prog, "u_color");
     r->u_back = glGetUniformLocation(prog, "u_back");
     r->u_fill = glGetUniformLocation(prog, "u_fill");
+    r->u_hide_back = glGetUniformLocation(prog, "u_hide_back");
     return SW_OK;
 }
 
@@ -131,7 +138,7 @@ sw_status sw_renderer_init(sw_renderer *r, uint32_t max_vertices, uint32_t max_i
                            sw_error *err)
 {
     *r = (sw_renderer){ .u_model_view = -1, .u_projection = -1, .u_color = -1, .u_back = -1,
-                        .u_fill = -1 };
+                        .u_fill = -1, .u_hide_back = -1 };
     if (max_vertices < 1 || max_vertices > 65536 || max_indices < 3)
         return sw_error_set(err, SW_ERR_ARG,
                             "renderer: max_vertices %u must be 1..65536 (16-bit indices) and "
@@ -177,8 +184,14 @@ void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float 
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    /* Patch soups have no consistent orientation; the shader is two-sided. */
-    glDisable(GL_CULL_FACE);
+    /* Patch soups have no consistent orientation; the shader is two-sided
+     * unless back faces were asked hidden. */
+    if (r->back_hidden) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
     glUseProgram(r->program);
     glUniformMatrix4fv(r->u_model_view, 1, GL_FALSE, model_view);
     glUniformMatrix4fv(r->u_projection, 1, GL_FALSE, projection);
@@ -192,8 +205,21 @@ void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3])
     glUniform4fv(r->u_back, 1, rgb ? on : off);
 }
 
+void sw_renderer_set_back_hidden(sw_renderer *r, int hidden)
+{
+    r->back_hidden = hidden;
+    glUseProgram(r->program);
+    glUniform1f(r->u_hide_back, hidden ? 1.0f : 0.0f);
+}
+
 void sw_renderer_set_fill(sw_renderer *r, int fill)
 {
+    /* A fan winds either way; culled by its winding it would reopen the
+     * pinhole it closes. */
+    if (r->back_hidden && fill)
+        glDisable(GL_CULL_FACE);
+    else if (r->back_hidden)
+        glEnable(GL_CULL_FACE);
     glUseProgram(r->program);
     glUniform1f(r->u_fill, fill ? 1.0f : 0.0f);
 }

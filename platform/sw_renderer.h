@@ -12,11 +12,12 @@
 
 typedef struct sw_renderer {
     unsigned int program;
-    int u_model_view, u_projection, u_color, u_back, u_fill;
+    int u_model_view, u_projection, u_color, u_back, u_fill, u_hide_back;
     int a_position, a_normal;
     unsigned int vertex_buffer, index_buffer;
     uint32_t max_vertices, max_indices;
     uint64_t draw_calls, triangles;   /* since init, for the stats */
+    int back_hidden;                  /* sw_renderer_set_back_hidden */
 } sw_renderer;
 
 /* Compiles the program and creates buffers for batches of up to max_vertices
@@ -36,6 +37,15 @@ void sw_renderer_set_color(sw_renderer *r, const float rgba[4]);
  * through a crack can be told from its outside (tests/test_image_holes.sh).
  * NULL, the default: both sides lit. */
 void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3]);
+
+/* hidden 1: back faces (clockwise on screen) are not drawn at all
+ * (GL_CULL_FACE), for closed solids whose faces all point out; the seam
+ * walk's cone culling leaves out whole surfaces only in this mode (it
+ * removes what this would not draw anyway). Fill fans wind either way, so
+ * they are not culled by winding but by their normals: a fan fragment
+ * whose normal faces away is discarded, as its surface faces away there.
+ * 0, the default: both sides drawn. */
+void sw_renderer_set_back_hidden(sw_renderer *r, int hidden);
 
 /* Draws that follow, until set again, are fill fans over seam crossings
  * (firmware/sw_seam_fill.h): lit on the side their normals face, whatever

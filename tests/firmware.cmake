@@ -98,3 +98,15 @@ endif()
 # The tessellation cache, and runtime_bytes holding the pack and the walk.
 sw_add_test(test_seam_cache SOURCES test_seam_cache.c LIBS sw_runtime
             ARGS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack/seed-seam-graph)
+
+# Culling end to end (tests/test_cull_walk.sh): the tree against every patch
+# box, walks with --cull tree and brute picture for picture, and cone culling
+# on and off with back faces hidden pixel for pixel, on the teaset, a
+# generated showroom and every shared model. Release only (twelve walks a
+# model; the sanitizer runs cover the code through test_cull_tree,
+# test_normal_cone and the walk tests).
+if(NOT SW_ASAN AND NOT SW_TSAN)
+  add_test(NAME cull_walk
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_cull_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR}
+            ${SW_SHARED_MODEL_FILES})
+endif()
