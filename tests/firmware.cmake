@@ -1,6 +1,8 @@
 # tests of the firmware area: runtime modules, then the whole program.
 sw_add_test(test_arena SOURCES test_arena.c LIBS sw_core)
 sw_add_test(test_buddy SOURCES test_buddy.c LIBS sw_core)
+sw_add_test(test_steal_queue SOURCES test_steal_queue.c LIBS sw_core)
+sw_add_test(test_handoff SOURCES test_handoff.c LIBS sw_core)
 sw_add_test(test_camera_path SOURCES test_camera_path.c LIBS sw_runtime)
 sw_add_test(test_stats SOURCES test_stats.c LIBS sw_runtime)
 sw_add_test(test_view SOURCES test_view.c LIBS sw_runtime)
