@@ -14,5 +14,5 @@ jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSW_TSAN=ON -DSW_WERROR=ON >/dev/null
 cmake --build "$dir" -j"$jobs" --target seamwalk seamwalk-pack image_compare test_steal_queue \
   test_handoff
-export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1"
+export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp"
 ctest --test-dir "$dir" --output-on-failure -R '^(test_steal_queue|test_handoff|walk_threads)$'
