@@ -166,8 +166,11 @@ static sw_status start_workers(runtime *rt, sw_error *err)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the workers", need);
     sw_arena_init(&rt->worker_arena, rt->worker_block, need);
     rt->seam.sync_work = rt->opt.sync_work;
-    return sw_seam_walk_start_workers(&rt->seam, (uint32_t)rt->workers, rt->opt.target_ms,
-                                      &rt->arena, &rt->worker_arena, err);
+    sw_status st = sw_seam_walk_start_workers(&rt->seam, (uint32_t)rt->workers,
+                                              rt->opt.target_ms, &rt->arena, &rt->worker_arena,
+                                              err);
+    sw_seam_walk_slow_workers(&rt->seam, rt->opt.slow_workers_ms);
+    return st;
 }
 
 /* The seam walk, from the same arena: the header's runtime_bytes counted

@@ -260,6 +260,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_real(a, v, 1, 10000, &o->target_ms, err);
         } else if (!strcmp(a, "--sync-work")) {
             st = parse_int(a, v, 0, 1, &o->sync_work, err);
+        } else if (!strcmp(a, "--test-slow-workers")) {
+            st = parse_int(a, v, 0, 10000, &o->slow_workers_ms, err);
         } else if (!strcmp(a, "--test-stall-workers")) {
             st = parse_int(a, v, 0, INT_MAX, &o->stall_workers_at, err);
         } else if (!strcmp(a, "--fov-deg")) {
@@ -334,6 +336,8 @@ void sw_options_print_usage(const char *argv0)
             "                      SEAMWALK_TEST_SYNC_WORK=1)\n"
             "  --test-stall-workers F  from frame F on the workers take no work: frames must\n"
             "                      go on with the meshes they have (tests)\n"
+            "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
+            "                      many frames (tests: no half batch may show)\n"
             "  --no-cache          tessellate every visible surface every frame at its exact\n"
             "                      bound, keeping nothing: the baseline the cache is measured\n"
             "                      against (tests/bench/walk_cache_bench.sh), not for units\n"

@@ -24,8 +24,14 @@
  *
  * Threads (sw_seam_walk_start_workers; paper 000 section 5): without
  * workers the tessellation runs in the frame as above. With them, the
- * walk schedules the work and the workers (sw_seam_workers.h) make the
- * meshes while the GL thread goes on drawing the meshes it has:
+ * walk schedules the work and the workers T (sw_seam_workers.h) make the
+ * meshes while the GL thread P goes on drawing the meshes it has. The
+ * visibility work (paper 000's V: culling, bounds, the seam front, the
+ * schedule) runs on P's thread before it draws, not on a thread of its
+ * own: on this 2-core machine a third busy thread would share a core with
+ * T or with llvmpipe's rasteriser; what P and V share (the visible set, the
+ * cache entries, the batch) would need the per-frame double buffers and the
+ * activity list of paper 000 section 5.2 first.
  * - Crack-free by versioned batches: the seam front moves only when no
  *   work is in flight, and every job started after a move belongs to that
  *   move's batch, made from the one seam state the move left. The GL thread
@@ -209,6 +215,10 @@ void sw_seam_walk_stop_workers(sw_seam_walk *w);
 /* Test hook: while stalled the workers take no job (frames go on drawing
  * the meshes they have). */
 void sw_seam_walk_stall_workers(sw_seam_walk *w, int stalled);
+
+/* Test hook: every job waits ms before it is published (batches then take
+ * many frames: a batch swapped in before it is whole would show). */
+void sw_seam_walk_slow_workers(sw_seam_walk *w, int ms);
 
 /* After the frame (GL thread): the frame ended, meshes it stopped drawing
  * may be reused, and the controller learns its time (swapped: the frame's

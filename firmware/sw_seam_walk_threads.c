@@ -44,6 +44,12 @@ void sw_seam_walk_stall_workers(sw_seam_walk *w, int stalled)
         atomic_store_explicit(&w->workers->stall, stalled, memory_order_release);
 }
 
+void sw_seam_walk_slow_workers(sw_seam_walk *w, int ms)
+{
+    if (w->workers)
+        atomic_store_explicit(&w->workers->slow_ms, ms, memory_order_relaxed);
+}
+
 /* Triangles a job for surface s at bound will make, guessed: a mesh's
  * cells grow as 1 / bound (error ~ h^2, cells ~ 1 / h^2 per area... of
  * two directions: ~ 1 / bound); with no mesh, a few dozen a patch. */

@@ -57,6 +57,9 @@ static void run_job(sw_seam_workers *p, sw_seam_maker *maker, uint32_t s)
     p->no_room[s] = (uint8_t)no_room;
     atomic_fetch_add_explicit(&p->made_triangles, tris, memory_order_relaxed);
     atomic_fetch_add_explicit(&p->busy_ns, now_ns() - t0, memory_order_relaxed);
+    int slow = atomic_load_explicit(&p->slow_ms, memory_order_relaxed);
+    if (slow) /* the test hook: batches that take many frames */
+        nanosleep(&(struct timespec){ slow / 1000, (long)(slow % 1000) * 1000000 }, NULL);
     /* The one atomic swap that hands the mesh over; the producer's rule
      * (one job per surface in flight, taken before the next) leaves the
      * slot empty here. */
@@ -150,6 +153,7 @@ sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack
     atomic_init(&p->outstanding, 0);
     atomic_init(&p->stop, 0);
     atomic_init(&p->stall, 0);
+    atomic_init(&p->slow_ms, 0);
     atomic_init(&p->made_triangles, 0);
     atomic_init(&p->busy_ns, 0);
     atomic_init(&p->steals, 0);

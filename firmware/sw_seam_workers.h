@@ -70,6 +70,7 @@ typedef struct sw_seam_workers {
     uint32_t next_queue;          /* producer's: round robin */
     _Atomic uint32_t outstanding;
     _Atomic int stop, stall;
+    _Atomic int slow_ms;          /* test hook: each job waits this long before publishing */
     _Atomic uint64_t made_triangles, busy_ns, steals; /* since init: for the controller */
     int lock_up, sem_up;
 } sw_seam_workers;
