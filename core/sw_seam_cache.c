@@ -53,8 +53,7 @@ void sw_seam_cache_drop(sw_seam_cache *c, uint32_t s)
     e->vertex_count = e->index_count = 0;
 }
 
-/* The least recently drawn evictable surface holding a mesh, or UINT32_MAX. */
-static uint32_t oldest(const sw_seam_cache *c, const uint8_t *evictable)
+uint32_t sw_seam_cache_oldest(const sw_seam_cache *c, const uint8_t *evictable)
 {
     uint32_t best = UINT32_MAX;
     for (uint32_t s = 0; s < c->surface_count; s++) {
@@ -84,7 +83,7 @@ int sw_seam_cache_place(sw_seam_cache *c, uint32_t s, uint32_t n, uint32_t m,
             }
             sw_buddy_free(&c->vertex_pool, vb);
         }
-        uint32_t victim = oldest(c, evictable);
+        uint32_t victim = sw_seam_cache_oldest(c, evictable);
         if (victim == UINT32_MAX || victim == s)
             return 0;
         sw_seam_cache_drop(c, victim);

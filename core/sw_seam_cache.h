@@ -66,6 +66,10 @@ sw_status sw_seam_cache_init(sw_seam_cache *c, uint32_t surface_count, uint32_t 
 int sw_seam_cache_place(sw_seam_cache *c, uint32_t s, uint32_t n, uint32_t m,
                         const uint8_t *evictable);
 
+/* The least recently drawn surface with evictable[s] != 0 holding a mesh,
+ * or UINT32_MAX (the threaded walk evicts through its retire ring). */
+uint32_t sw_seam_cache_oldest(const sw_seam_cache *c, const uint8_t *evictable);
+
 /* Gives surface s's blocks back (state EMPTY). */
 void sw_seam_cache_drop(sw_seam_cache *c, uint32_t s);
 

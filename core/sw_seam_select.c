@@ -129,8 +129,15 @@ sw_status sw_seam_select_init(sw_seam_select *s, const sw_seam_graph *graph, sw_
     if (!s || !arena)
         return sw_error_set(err, SW_ERR_ARG, "seam select: no state or arena");
     sw_status st = sw_seam_graph_check(graph, err);
-    if (st != SW_OK)
-        return st;
+    return st != SW_OK ? st : sw_seam_select_init_checked(s, graph, arena, err);
+}
+
+sw_status sw_seam_select_init_checked(sw_seam_select *s, const sw_seam_graph *graph,
+                                      sw_arena *arena, sw_error *err)
+{
+    if (!s || !arena)
+        return sw_error_set(err, SW_ERR_ARG, "seam select: no state or arena");
+    sw_status st;
     if (sw_seam_select_arena_bytes(graph) == SIZE_MAX)
         return sw_error_set(err, SW_ERR_RANGE, "seam select: %u vertices, %u slots: too many",
                             graph->vertex_count, graph->slot_count);

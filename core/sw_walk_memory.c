@@ -2,6 +2,7 @@
 
 #include "sw_arena.h"
 #include "sw_cull_tree.h"
+#include "sw_handoff.h"
 #include "sw_normal_cone.h"
 #include "sw_seam_cache.h"
 #include "sw_seam_select.h"
@@ -40,6 +41,19 @@ uint64_t sw_walk_scratch_bytes(const sw_walk_sizes *m)
 /* Each allocation as sw_seam_walk_init makes it: bytes + 1, 64-aligned. */
 static uint64_t take(uint64_t bytes) { return sw_arena_worst_case(bytes + 1, 64); }
 
+uint64_t sw_walk_threads_bytes(uint32_t surface_count)
+{
+    uint64_t n = surface_count + 1ull;
+    /* The walk's: this frame's bound, busy, since when, the batch, the
+     * candidates (a weight and a surface). */
+    uint64_t walk = 3 * take(surface_count * 4ull) + take(surface_count) +
+                    take(surface_count * 8ull);
+    return walk + sw_arena_worst_case(n * 2 * sizeof(float), 64) +
+           sw_arena_worst_case(n * sizeof(sw_seam_entry), 64) + sw_arena_worst_case(n, 64) +
+           sw_arena_worst_case(n * sizeof(sw_publish_slot), 64) +
+           sw_retire_ring_arena_bytes(sw_walk_retire_capacity(surface_count));
+}
+
 uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces)
 {
     if (!g || g->surface_count == 0)
@@ -58,11 +72,12 @@ uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surf
     bytes += take(n * sizeof(sw_normal_cone)) +         /* the cones, and their scratch */
              sw_arena_worst_case(sizeof(double) * sw_normal_cone_scratch_doubles(
                                      SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE), 64);
-    bytes += take((m.points + 1ull) * sizeof(sw_seam_point)) +
+    bytes += take((m.points + 1ull) * sizeof(sw_seam_point)) +  /* the walk's maker */
              take((m.points + 1ull) * sizeof(sw_trim_point)) +
              take((m.loops + 1ull) * sizeof(uint32_t)) +
              take((m.patches + 1ull) * sizeof(sw_trim_patch)) + take(sw_walk_scratch_bytes(&m));
     bytes += 2 * take(v * 3 * sizeof(float)) + take(v * 2 * sizeof(float)) +
              take(v * sizeof(uint32_t)) + take(SW_WALK_INDICES * sizeof(uint16_t));
+    bytes += sw_walk_threads_bytes((uint32_t)n);
     return bytes + sw_seam_cache_arena_bytes((uint32_t)n, cache, sw_walk_cache_indices(cache));
 }

@@ -41,6 +41,21 @@ sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surf
 /* Bytes of the walk, worst case (every alignment included); 0 for no graph. */
 uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces);
 
+/* Of those, the state the tessellation workers share (sw_seam_workers.h),
+ * whatever their number: per surface a job (two floats), the worker's
+ * result entry, its no-room flag and a publish slot (one atomic pointer),
+ * and the ring of retired meshes (two per surface at most: the drawn one
+ * and the one replacing it). Each worker's own buffers depend on the
+ * option --workers and are counted by the runtime on top. */
+uint64_t sw_walk_threads_bytes(uint32_t surface_count);
+static inline uint32_t sw_walk_retire_capacity(uint32_t surface_count)
+{
+    uint32_t c = 1;
+    while (c < 2u * surface_count + 2u)
+        c *= 2;
+    return c;
+}
+
 /* Of those: the tessellator's scratch, for its own sub-arena. */
 uint64_t sw_walk_scratch_bytes(const sw_walk_sizes *m);
 

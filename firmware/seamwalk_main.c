@@ -19,6 +19,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "sw_alloc_count.h"
 #include "sw_boot.h"
@@ -42,6 +43,10 @@ typedef struct runtime {
     sw_pack pack;
     sw_camera_path path;
     sw_seam_walk seam;
+    int workers;              /* tessellation threads (--workers, resolved) */
+    void *worker_block;       /* their buffers: known only once the pack is loaded (its
+                                 largest surface), taken at start like the arena */
+    sw_arena worker_arena;
     size_t walk_bytes;        /* of the arena, what the seam walk took */
     sw_seam_drawn drawn;      /* the seams as drawn, checked in measured frames */
     sw_seam_fill fill;        /* fans over the tessellations' seam crossings */
@@ -129,6 +134,50 @@ static sw_status load_path(runtime *rt, size_t path_bytes, sw_error *err)
     return sw_camera_path_parse(text, path_bytes, rt->opt.path_file, keys, n, &rt->path, err);
 }
 
+/* --workers: the cores less one, at least one, unless given; none for the
+ * --no-cache baseline (it remakes everything in the frame by definition). */
+static int workers_wanted(const sw_options *o)
+{
+    if (o->no_cache)
+        return 0;
+    if (o->workers >= 0)
+        return o->workers;
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    return cores > 2 ? (int)(cores - 1 > SW_OPTIONS_MAX_WORKERS ? SW_OPTIONS_MAX_WORKERS
+                                                                 : cores - 1) : 1;
+}
+
+/* The workers' buffers (a maker each: the pack's largest surface decides
+ * their size, so they cannot be counted from the header as the arena is)
+ * in a second block taken now, before the walk's allocation count starts,
+ * and held to --memory-mb with the arena; then the threads. */
+static sw_status start_workers(runtime *rt, sw_error *err)
+{
+    rt->workers = workers_wanted(&rt->opt);
+    rt->stats.workers = rt->workers;
+    rt->stats.sync_work = rt->opt.sync_work;
+    rt->stats.target_ms = rt->opt.target_ms;
+    if (rt->workers == 0)
+        return SW_OK;
+    size_t need = sw_seam_walk_worker_bytes(&rt->pack, (uint32_t)rt->workers,
+                                            rt->opt.fill_crossings) + 4096;
+    double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
+    if ((double)(rt->arena.size + need) > limit)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "with --workers %d needs %.1f MiB of memory "
+                            "(the arena %.1f and the workers' %.1f), more than --memory-mb %.1f",
+                            rt->workers, (rt->arena.size + need) / 1048576.0,
+                            rt->arena.size / 1048576.0, need / 1048576.0, rt->opt.memory_mb);
+    if (!(rt->worker_block = malloc(need)))
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the workers", need);
+    sw_arena_init(&rt->worker_arena, rt->worker_block, need);
+    rt->seam.sync_work = rt->opt.sync_work;
+    sw_status st = sw_seam_walk_start_workers(&rt->seam, (uint32_t)rt->workers,
+                                              rt->opt.target_ms, &rt->arena, &rt->worker_arena,
+                                              err);
+    sw_seam_walk_slow_workers(&rt->seam, rt->opt.slow_workers_ms);
+    return st;
+}
+
 /* The seam walk, from the same arena: the header's runtime_bytes counted
  * it (the reader checked that against the loaded graph). The drawn-seam
  * check and the crossing fans come from the arena too, counted with the
@@ -160,7 +209,7 @@ static sw_status init_seams(runtime *rt, sw_error *err)
                                &rt->arena, err);
     rt->seam.drawn = &rt->drawn;
     rt->seam.fill = rt->opt.fill_crossings ? &rt->fill : NULL;
-    return st;
+    return st == SW_OK ? start_workers(rt, err) : st;
 }
 
 static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
@@ -351,7 +400,7 @@ static void add_drawn(sw_stats *s, sw_seam_drawn *d)
  * measurement. */
 static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
                             uint64_t *triangles, uint32_t *drawn, uint32_t *capped,
-                            double *measure_ms, sw_error *err)
+                            double *measure_ms, int *swapped, sw_error *err)
 {
     sw_seam_frame f;
     sw_status st = sw_seam_walk_select(&rt->seam, culled, &f, err);
@@ -365,6 +414,7 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
     if (measuring) /* measurement, like the walk's own: not part of the frame's time */
         add_drawn(&rt->stats, &rt->drawn);
     *triangles = f.triangles;
+    *swapped = (int)f.batches_committed;
     *drawn = f.drawn_surfaces;
     *capped = f.capped_surfaces;
     *measure_ms = f.measure_ms + (now_s() - check_s) * 1000.0;
@@ -388,6 +438,10 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
     sw_stats_add_cache_frame(s, f.retessellated, f.retess_triangles, f.upload_bytes, f.evicted,
                              f.tess_ms);
     sw_stats_add_cull_frame(s, f.cull_box_tests, f.cone_culled, f.cull_ms);
+    if (rt->workers)
+        sw_stats_add_threads_frame(s, f.waiting_surfaces, f.behind_surfaces, f.frames_behind,
+                                   f.behind_ratio, f.jobs_scheduled, f.batches_committed,
+                                   f.seam_ops, f.budget_tris, f.budget_used);
     if (measuring) {
         s->seam_error_beyond_sewing_px = fmax(s->seam_error_beyond_sewing_px,
                                               f.error_beyond_sewing_px);
@@ -404,18 +458,22 @@ static sw_status run_frame(runtime *rt, int frame, sw_error *err)
     sw_view view = sw_view_make_depth(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
                                       rt->opt.height, &rt->model_box, rt->depth_bits);
     int measuring = frame % rt->opt.measure_every == 0;
+    if (frame == rt->opt.stall_workers_at)
+        sw_seam_walk_stall_workers(&rt->seam, 1);
     uint64_t triangles = 0;
     uint32_t drawn = 0, capped = 0;
     double measure_ms = 0;
+    int swapped = 0;
     sw_status st = seam_frame(rt, &view, measuring, &triangles, &drawn, &capped, &measure_ms,
-                              err);
+                              &swapped, err);
     if (st != SW_OK)
         return st;
     sw_renderer_finish(&rt->renderer);
     double ms = (now_s() - t0) * 1000.0 - measure_ms;
     sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, drawn);
-    if (frame == 0)
-        rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0;
+    sw_seam_walk_end_frame(&rt->seam, ms, swapped);
+    if (frame == 0) /* less the measurement, as every frame's time */
+        rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0 - measure_ms;
     if (capped > rt->stats.capped_patches_max)
         rt->stats.capped_patches_max = capped;
     if (rt->opt.png_dir && frame % rt->opt.png_every == 0 &&
@@ -570,8 +628,14 @@ static sw_status write_stats(runtime *rt, sw_error *err)
         store_stats(rt);
     s->patches_total = rt->pack.meta ? rt->pack.meta->patch_count : 0;
     s->measure_every = rt->opt.measure_every;
-    s->arena_bytes = rt->arena.size;
-    s->arena_peak_bytes = rt->arena.peak;
+    s->arena_bytes = rt->arena.size + rt->worker_arena.size;
+    s->arena_peak_bytes = rt->arena.peak + rt->worker_arena.peak;
+    if (rt->seam.workers) {
+        sw_seam_workers *p = rt->seam.workers;
+        s->worker_triangles = atomic_load(&p->made_triangles);
+        s->worker_busy_ms = (double)atomic_load(&p->busy_ns) * 1e-6;
+        s->worker_steals = atomic_load(&p->steals);
+    }
     s->seam_arena_bytes = rt->pack.seam_header ? sw_seam_walk_arena_bytes(&rt->pack) : 0;
     s->seam_arena_peak_bytes = rt->walk_bytes;
     s->runtime_bytes = rt->pack.header ? rt->pack.header->runtime_bytes : 0;
@@ -593,6 +657,9 @@ static void stop_walk(runtime *rt)
     if (rt->kiosk_up)
         sw_kiosk_run_stop(&rt->kiosk);
     rt->kiosk_up = 0;
+    sw_seam_walk_stop_workers(&rt->seam);
+    free(rt->worker_block);
+    rt->worker_block = NULL;
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
     if (rt->renderer_up)

@@ -98,6 +98,13 @@ static void set_defaults(sw_options *o)
     o->fill_crossings = 1;
     o->cone_cull = 1;
     o->drop_surface = -1;
+    o->workers = -1;            /* cores - 1, at least 1: decided in main */
+    o->target_ms = 16.7;
+    o->stall_workers_at = -1;
+    /* The test suite's deterministic frames (tests/CMakeLists.txt sets it
+     * for every test); the command line's --sync-work wins. */
+    const char *sync = getenv("SEAMWALK_TEST_SYNC_WORK");
+    o->sync_work = sync && !strcmp(sync, "1");
 }
 
 /* The file's values, before the command line overrides them. Its defaults
@@ -264,6 +271,16 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             int s = 0;
             st = parse_int(a, v, 0, INT_MAX, &s, err);
             o->drop_surface = s;
+        } else if (!strcmp(a, "--workers")) {
+            st = parse_int(a, v, 0, SW_OPTIONS_MAX_WORKERS, &o->workers, err);
+        } else if (!strcmp(a, "--target-ms")) {
+            st = parse_real(a, v, 1, 10000, &o->target_ms, err);
+        } else if (!strcmp(a, "--sync-work")) {
+            st = parse_int(a, v, 0, 1, &o->sync_work, err);
+        } else if (!strcmp(a, "--test-slow-workers")) {
+            st = parse_int(a, v, 0, 10000, &o->slow_workers_ms, err);
+        } else if (!strcmp(a, "--test-stall-workers")) {
+            st = parse_int(a, v, 0, INT_MAX, &o->stall_workers_at, err);
         } else if (!strcmp(a, "--fov-deg")) {
             st = parse_real(a, v, 5, 150, &o->fov_deg, err);
         } else {
@@ -287,6 +304,7 @@ void sw_options_print_usage(const char *argv0)
             "          [--config FILE] [--pose-log FILE] [--no-cache] [--background R,G,B]\n"
             "          [--back-faces lit|hidden|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
             "          [--fill-crossings 0|1] [--cone-cull 0|1] [--cull tree|brute]\n"
+            "          [--workers N] [--target-ms MS]\n"
             "Walks a seamwalk pack and shows it on a display.\n"
             "  --display NAME      where to draw (default auto, or [display] display):\n"
             "                        headless  EGL surfaceless, offscreen; needs a size (CI)\n"
@@ -333,6 +351,21 @@ void sw_options_print_usage(const char *argv0)
             "  --boot-attempts K   boots a pending slot gets before falling back (default 3)\n"
             "  --good-after-s S    walk time of healthy frames before a pending slot is\n"
             "                      marked good (default 30)\n"
+            "  --workers N         tessellation threads beside the drawing one (default: the\n"
+            "                      cores less one, at least 1); 0: tessellate in the frame,\n"
+            "                      single-threaded. With workers the frame draws the meshes\n"
+            "                      it has and swaps new ones in as they are done, never\n"
+            "                      waiting for them (the first frame excepted)\n"
+            "  --target-ms MS      the frame time the work budgets hold with workers (default\n"
+            "                      16.7): the triangles made a frame follow from it\n"
+            "  --sync-work 0|1     1: each frame waits for the work it asked for, no budget:\n"
+            "                      frames as --workers 0 draws them, for the tests' golden\n"
+            "                      images (default 0; the test suite sets\n"
+            "                      SEAMWALK_TEST_SYNC_WORK=1)\n"
+            "  --test-stall-workers F  from frame F on the workers take no work: frames must\n"
+            "                      go on with the meshes they have (tests)\n"
+            "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
+            "                      many frames (tests: no half batch may show)\n"
             "  --no-cache          tessellate every visible surface every frame at its exact\n"
             "                      bound, keeping nothing: the baseline the cache is measured\n"
             "                      against (tests/bench/walk_cache_bench.sh), not for units\n"

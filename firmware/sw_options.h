@@ -9,6 +9,8 @@
 #include "sw_display.h"
 #include "sw_error.h"
 
+#define SW_OPTIONS_MAX_WORKERS 16
+
 typedef struct sw_options {
     const char *pack_path;
     sw_display_kind display;     /* --display NAME (--headless WxH: headless); default auto */
@@ -52,6 +54,12 @@ typedef struct sw_options {
     int navigate;                /* --navigate: the unit's devices drive the camera */
     const char *input_timeline;  /* --input-timeline FILE: a timeline drives it (fake devices) */
     const char *pose_log;        /* --pose-log FILE: each frame's camera pose */
+    int workers;                 /* --workers N: tessellation threads; 0 in the frame; -1,
+                                    default: the cores less one, at least 1 */
+    double target_ms;            /* --target-ms MS: the budgets' frame time; default 16.7 */
+    int sync_work;               /* --sync-work 0|1: each frame waits for its work (tests) */
+    int stall_workers_at;        /* --test-stall-workers F: workers idle from frame F; -1 */
+    int slow_workers_ms;         /* --test-slow-workers MS: each job published MS late; 0 */
     int help;
     const char *config_path;     /* --config FILE, or NULL: no file is read */
     /* The file's values. pack_path, store_dir and keys_path may point into

@@ -7,22 +7,7 @@
 
 #include "sw_seam_measure.h"
 #include "sw_seam_surface.h"
-
-enum { SW_SEAM_WALK_TINY = 2 }; /* w->visible: in view, smaller than its bound */
-
-/* How much finer than the view asks a kept tessellation may be: t <= b <=
- * KEEP t. Measured over 120-frame orbits at 1280x720 (triangles drawn a
- * frame, median; surfaces re-tessellated in all): teaset 37,790 / 197 at
- * 2.0, 34,673 / 330 at 1.6, 33,301 / 392 at sqrt 2; NIST part 4 47,858 /
- * 1,432, 46,942 / 1,559, 44,458 / 2,374. Below sqrt 2 (one level) nothing
- * changes; at sqrt 2 there is no hysteresis, and a surface whose bound
- * wavers across a level boundary would be redone every frame; 1.6 leaves a
- * band of 13% against that. */
-#define SW_SEAM_KEEP 1.6
-
-/* Bounds of invisible surfaces: as coarse as the hierarchy goes (their
- * vertices still meet the bounds of visible neighbours that show them). */
-#define SW_SEAM_INVISIBLE_BOUND 1e30f
+#include "sw_seam_walk_internal.h"
 
 size_t sw_seam_walk_arena_bytes(const sw_pack *pack)
 {
@@ -36,29 +21,37 @@ static void *take(sw_arena *a, size_t bytes, int *failed)
     return p;
 }
 
-static sw_status measure_sewing(sw_seam_walk *w, sw_error *err)
+/* Surface s's sewing offset, measured the first time a frame measures the
+ * surface (it is measurement, not drawing: done for all surfaces at init
+ * it took 40% of the 40,000-patch showroom's start). patches: s's. */
+static float sewing_offset(sw_seam_walk *w, uint32_t s, const sw_trim_patch *patches,
+                           uint32_t patch_count)
 {
+    if (w->sew_offset[s] >= 0)
+        return w->sew_offset[s];
     const sw_seam_graph *g = &w->pack->seam;
-    for (uint32_t s = 0; s < g->surface_count; s++) {
-        uint32_t patch_count = 0;
-        sw_status st = sw_trim_patches_from_pack(w->pack, s, w->patches, w->max_patches,
-                                                 &patch_count, err);
-        if (st != SW_OK)
-            return st;
-        double worst = 0;
-        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
-            worst = fmax(worst, sw_seam_measure_sewing_offset(g, &g->loops[l], w->patches,
-                                                               patch_count));
-        w->sew_offset[s] = (float)worst;
-    }
-    return SW_OK;
+    double worst = 0;
+    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+        worst = fmax(worst, sw_seam_measure_sewing_offset(g, &g->loops[l], patches, patch_count));
+    return w->sew_offset[s] = (float)worst;
 }
 
-static double ms_since(const struct timespec *a)
+/* The per-surface state of the threaded walk (counted with the rest in
+ * sw_walk_threads_bytes, taken whether or not workers start). */
+static int take_thread_state(sw_seam_walk *w, sw_arena *arena, size_t n)
 {
-    struct timespec b;
-    clock_gettime(CLOCK_MONOTONIC, &b);
-    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
+    int failed = 0;
+    w->want = take(arena, n * sizeof(float), &failed);
+    w->busy = take(arena, n, &failed);
+    w->need_since = take(arena, n * sizeof(uint32_t), &failed);
+    w->batch = take(arena, n * sizeof(uint32_t), &failed);
+    w->candidates = take(arena, n * sizeof(sw_seam_candidate), &failed);
+    if (failed)
+        return 0;
+    memset(w->busy, 0, n);
+    for (size_t k = 0; k < n; k++)
+        w->need_since[k] = UINT32_MAX, w->want[k] = 0;
+    return 1;
 }
 
 /* Every surface's normal cone, the union of its patches' (scratch from the
@@ -100,12 +93,11 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->error_px = error_px;
     w->bound_floor = 0.1f * pack->seam.tolerance;
     w->drop_surface = UINT32_MAX;
-    sw_status st = sw_seam_select_init(&w->select, &pack->seam, arena, err);
+    sw_status st = sw_seam_select_init_checked(&w->select, &pack->seam, arena, err);
     if (st != SW_OK)
         return st;
-    sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
-    w->max_points = m.points, w->max_loops = m.loops, w->max_patches = m.patches;
-    size_t n = pack->seam.surface_count, v = SW_SEAM_WALK_VERTICES;
+    w->largest = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    size_t n = pack->seam.surface_count;
     int failed = 0;
     w->target = take(arena, n * sizeof(float), &failed);
     w->seam_bound = take(arena, n * sizeof(float), &failed);
@@ -117,34 +109,22 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->cull_near = take(arena, n * sizeof(double), &failed);
     w->cull_far = take(arena, n * sizeof(double), &failed);
     w->cones = take(arena, n * sizeof(sw_normal_cone), &failed);
-    w->loop_points = take(arena, (m.points + 1) * sizeof(sw_seam_point), &failed);
-    w->points = take(arena, (m.points + 1) * sizeof(sw_trim_point), &failed);
-    w->loop_first = take(arena, (m.loops + 1) * sizeof(uint32_t), &failed);
-    w->patches = take(arena, (m.patches + 1) * sizeof(sw_trim_patch), &failed);
-    size_t scratch_bytes = (size_t)sw_walk_scratch_bytes(&m);
-    void *scratch = take(arena, scratch_bytes, &failed);
-    w->positions = take(arena, v * 3 * sizeof(float), &failed);
-    w->normals = take(arena, v * 3 * sizeof(float), &failed);
-    w->uvs = take(arena, v * 2 * sizeof(float), &failed);
-    w->ids = take(arena, v * sizeof(uint32_t), &failed);
-    w->indices = take(arena, SW_SEAM_WALK_INDICES * sizeof(uint16_t), &failed);
-    if (failed)
+    if (failed || sw_seam_maker_init(&w->maker, pack, &w->select, &w->largest, arena, err) ||
+        !take_thread_state(w, arena, n))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the seam walk "
                             "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
-    sw_arena_init(&w->scratch, scratch, scratch_bytes);
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     st = sw_cull_tree_build(&w->cull_tree, pack->surfaces, (uint32_t)n, pack->patches, arena, err);
     if (st != SW_OK)
         return st;
-    w->cull_tree_ms = ms_since(&t0);
+    w->cull_tree_ms = sw_seam_walk_ms_since(&t0);
     for (size_t k = 0; k < n; k++)
-        w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0;
+        w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0, w->sew_offset[k] = -1;
     memset(w->dirty, 0, n);
     uint32_t cache = sw_walk_cache_vertices(&pack->seam, pack->surfaces);
-    st = sw_seam_cache_init(&w->cache, (uint32_t)n, cache, sw_walk_cache_indices(cache), arena,
-                            err);
-    return st != SW_OK ? st : measure_sewing(w, err);
+    return sw_seam_cache_init(&w->cache, (uint32_t)n, cache, sw_walk_cache_indices(cache), arena,
+                              err);
 }
 
 sw_status sw_seam_walk_enable_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
@@ -152,7 +132,7 @@ sw_status sw_seam_walk_enable_cones(sw_seam_walk *w, sw_arena *arena, sw_error *
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     sw_status st = make_cones(w, arena, err);
-    w->cones_ms = ms_since(&t0);
+    w->cones_ms = sw_seam_walk_ms_since(&t0);
     w->cone_cull = st == SW_OK;
     return st;
 }
@@ -173,19 +153,25 @@ static int still_valid(const sw_seam_entry *e, float t, double b)
 }
 
 /* Surface s's target for this frame's bound (0 out of view) and its seams'
- * share; 1 when that share changed. */
+ * share; 1 when that share changed. The threaded walk's first frame asks
+ * for SW_SEAM_FIRST_COARSER times the bound (the coarsest start). */
 static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
 {
     const sw_seam_entry *e = &w->cache.entries[s];
     if (w->visible[s] == 1) {
         bound = fmax(bound, (double)w->bound_floor);
+        w->want[s] = (float)bound;
+        if (w->workers && !w->sync_work && w->frame == 0)
+            bound *= SW_SEAM_FIRST_COARSER;
         if (w->no_cache)
             w->target[s] = (float)bound;
         else if (!still_valid(e, w->target[s], bound))
             w->target[s] = level_of(bound);
-    } else if (e->state != SW_SEAM_READY) {
+    } else if (e->state != SW_SEAM_READY && !w->busy[s]) {
         w->target[s] = SW_SEAM_INVISIBLE_BOUND;
     }
+    if (sw_seam_walk_async(w))
+        return 0;   /* the schedule moves the seams (sw_seam_walk_threads.c) */
     float seam = w->target[s] * (float)SW_SEAM_SHARE;
     int changed = seam != w->seam_bound[s];
     w->seam_bound[s] = seam;
@@ -259,7 +245,21 @@ static void cull_boxes(sw_seam_walk *w, const sw_view *view, sw_seam_frame *fram
         sw_cull_tree_query(&w->cull_tree, &v, w->cull_near, w->cull_far, &c);
     frame->cull_box_tests = c.box_tests;
     frame->cull_depth_tests = c.depth_tests;
-    frame->cull_ms = ms_since(&t0);
+    frame->cull_ms = sw_seam_walk_ms_since(&t0);
+}
+
+sw_status sw_seam_walk_move_front(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err)
+{
+    sw_seam_update_result r;
+    sw_status st = sw_seam_select_update(&w->select, w->seam_bound, 0, &r, err);
+    if (st != SW_OK)
+        return st;
+    frame->seam_ops = r.splits + r.collapses;
+    uint32_t n = w->pack->seam.surface_count;
+    for (uint32_t s = 0; s < n; s++)
+        w->dirty[s] |= (uint8_t)sw_seam_select_surface_changed(&w->select, s);
+    sw_seam_select_clear_changed(&w->select);
+    return SW_OK;
 }
 
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
@@ -276,164 +276,65 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     /* The update is complete (no operation cap) and depends on the bounds
      * alone, so with no bound changed the front already meets them: a
      * still camera, or one whose surfaces all keep their tessellations,
-     * skips the pass over the whole graph. */
-    if (changed) {
-        sw_seam_update_result r;
-        sw_status st = sw_seam_select_update(&w->select, w->seam_bound, 0, &r, err);
-        if (st != SW_OK)
-            return st;
-    }
-    for (uint32_t s = 0; s < n; s++)
-        w->dirty[s] |= (uint8_t)sw_seam_select_surface_changed(&w->select, s);
-    sw_seam_select_clear_changed(&w->select);
+     * skips the pass over the whole graph. With workers (not sync_work)
+     * the schedule moves the front, when no work is in flight (the batch
+     * rule in the header), for the seams of the surfaces it chose. */
+    sw_status st = SW_OK;
+    if (changed && !sw_seam_walk_async(w))
+        st = sw_seam_walk_move_front(w, frame, err);
+    if (st == SW_OK && w->workers)
+        st = sw_seam_walk_schedule(w, frame, err);
     /* The front's own count: sw_seam_select_count would walk every loop. */
     frame->active_vertices = w->select.active_count;
     w->frame++;
-    return SW_OK;
-}
-
-/* The surface's current loops as the tessellator takes them, the outer ones
- * first (*outer of them); 0 when its outer loop has vanished (then it is not
- * drawn). */
-static int gather_loops(sw_seam_walk *w, uint32_t s, sw_trim_loops *loops, uint32_t *outer)
-{
-    const sw_seam_surface_buffers buf = { w->loop_points, w->points, w->loop_first,
-                                          w->max_points };
-    return sw_seam_surface_loops(&w->select, s, w->seam_bound[s], &buf, loops, outer);
-}
-
-/* Tessellates surface s at bound (its target, or coarser: see remake),
- * coarsening (x4, three times) when it would need more than 65536 vertices
- * (*capped then). */
-static sw_status tessellate(sw_seam_walk *w, uint32_t s, const sw_trim_loops *loops,
-                            double bound, sw_trim_tess_result *result, int *capped)
-{
-    uint32_t patch_count = 0;
-    sw_status st = sw_trim_patches_from_pack(w->pack, s, w->patches, w->max_patches, &patch_count,
-                                             NULL);
-    if (st != SW_OK)
-        return st;
-    sw_trim_tess_buffers out = { w->positions, w->normals, w->uvs, w->ids, w->indices,
-                                 SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES, 0 };
-    const sw_trim_tess_options opt = sw_seam_surface_tess_options();
-    *capped = 0;
-    for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
-        st = sw_trim_tess(w->patches, patch_count, loops, bound, &opt, &w->scratch, &out, result,
-                          NULL);
-        if (st != SW_ERR_RANGE)
-            break;
-        *capped = 1;
-    }
     return st;
 }
 
-static int8_t snorm8(float x)
+/* The cache's place for a mesh made in the frame: evicting the least
+ * recently drawn surfaces out of view when it does not fit. */
+static int place_in_frame(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e)
 {
-    float c = x < -1.0f ? -1.0f : x > 1.0f ? 1.0f : x;
-    return (int8_t)lrintf(c * 127.0f);
-}
-
-/* Border vertices must be their seam vertex's position bit for bit (the
- * neighbour across the seam draws the same float), and every loop point must
- * be in the mesh: each violation is a crack. */
-static uint32_t count_cracks(const sw_seam_walk *w, const sw_trim_tess_result *t,
-                             uint32_t *crossings)
-{
-    uint32_t cracks = t->dropped_points;
-    for (uint32_t i = 0; i < t->vertex_count; i++) {
-        *crossings += w->ids[i] == SW_TRIM_CROSSING;
-        if (w->ids[i] == SW_TRIM_INTERIOR || w->ids[i] == SW_TRIM_CROSSING)
-            continue;
-        const float *p = w->pack->seam.vertices[w->ids[i]].p;
-        cracks += memcmp(p, w->positions + 3 * i, 3 * sizeof(float)) != 0;
-    }
-    return cracks;
-}
-
-/* The tessellator's output into surface s's place in the cache, and into
- * the GL buffers. 0 when the cache cannot hold it. */
-static int keep(sw_seam_walk *w, uint32_t s, const sw_trim_tess_result *t, sw_gl_pool *pool,
-                sw_seam_frame *frame)
-{
-    sw_seam_cache *c = &w->cache;
-    uint32_t evictions = c->evictions;
-    int placed = sw_seam_cache_place(c, s, t->vertex_count, t->index_count, w->evictable);
-    frame->evicted += c->evictions - evictions;
-    if (!placed)
+    sw_seam_walk *w = ctx;
+    if (!sw_seam_cache_place(&w->cache, s, n, m, w->evictable))
         return 0;
-    uint32_t v0 = sw_seam_cache_first_vertex(c, s), i0 = sw_seam_cache_first_index(c, s);
-    for (uint32_t i = 0; i < t->vertex_count; i++) {
-        sw_vertex *v = &c->verts[v0 + i];
-        memcpy(v->pos, w->positions + 3 * i, sizeof v->pos);
-        for (int k = 0; k < 3; k++)
-            v->normal[k] = snorm8(w->normals[3 * i + k]);
-        v->normal[3] = 0;
-    }
-    memcpy(c->uvs + 2 * (size_t)v0, w->uvs, 2 * sizeof(float) * t->vertex_count);
-    memcpy(c->index_data + i0, w->indices, sizeof(uint16_t) * t->index_count);
-    uint64_t before = pool->bytes_uploaded;
-    sw_gl_pool_upload(pool, v0, c->verts + v0, t->vertex_count, i0, c->index_data + i0,
-                      t->index_count);
-    frame->upload_bytes += pool->bytes_uploaded - before;
+    e->vertex_block = w->cache.entries[s].vertex_block;
+    e->index_block = w->cache.entries[s].index_block;
     return 1;
 }
 
-/* Makes surface s's entry for its target from its current loops: a mesh,
- * or the reason there is none (vanished, refused, no room). */
+/* Makes surface s's entry for its target from its current loops, in the
+ * frame: a mesh, uploaded, or the reason there is none. */
 static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
 {
-    sw_seam_entry *e = &w->cache.entries[s];
-    sw_seam_cache_drop(&w->cache, s);
+    sw_seam_cache *c = &w->cache;
+    sw_seam_cache_drop(c, s);
     w->dirty[s] = 0;
-    e->made_bound = w->target[s];
-    e->cracks = e->crossings = 0;
-    e->capped = e->holes_filled = 0;
-    sw_trim_loops loops;
-    uint32_t outer = 0;
-    if (!gather_loops(w, s, &loops, &outer)) {
-        e->state = SW_SEAM_GONE;
+    w->maker.fill = w->fill;
+    uint32_t evictions = c->evictions;
+    sw_seam_entry made;
+    int no_room = 0;
+    uint64_t tris = sw_seam_make(&w->maker, s, w->target[s], w->seam_bound[s], c, place_in_frame,
+                                 w, &made, &no_room);
+    frame->evicted += c->evictions - evictions;
+    made.last_frame = c->entries[s].last_frame;
+    c->entries[s] = made;
+    if (made.state == SW_SEAM_GONE)
         return;
-    }
     frame->retessellated++;
-    /* When the cache cannot hold the mesh (every surface in it is in view),
-     * the surface is drawn coarser (the bound x4, up to three times) rather
-     * than not at all, and counted as capped; its border stays the seams'. */
-    for (int coarser = 0; coarser < 4; coarser++) {
-        sw_trim_tess_result t;
-        int capped = 0;
-        double bound = w->target[s] * (double)(1u << (2 * coarser));
-        sw_status st = tessellate(w, s, &loops, bound, &t, &capped);
-        if (st == SW_ERR_FORMAT && outer < loops.loop_count) {
-            /* A hole's coarse polyline crosses another loop (both are within
-             * the bound of where they belong, and so of each other): drawn
-             * without its holes rather than not at all. */
-            loops.loop_count = outer;
-            st = tessellate(w, s, &loops, bound, &t, &capped);
-            e->holes_filled = st == SW_OK;
-        }
-        if (st != SW_OK)
-            break;
-        e->fill_triangles = 0;
-        if (w->fill) {
-            uint32_t left = 0;
-            e->fill_triangles = sw_seam_fill_crossings(w->fill, w->ids, t.vertex_count,
-                                                       w->indices, &t.index_count,
-                                                       SW_SEAM_WALK_INDICES, &left);
-        }
-        if (keep(w, s, &t, pool, frame)) {
-            e->error_bound = (float)t.error_bound;
-            e->capped = (uint8_t)(capped || coarser > 0);
-            uint32_t crossings = 0;
-            e->cracks = count_cracks(w, &t, &crossings);
-            e->crossings = crossings;
-            frame->retess_triangles += t.index_count / 3 - e->fill_triangles;
-            return;
-        }
-    }
-    /* A visible surface left out is a hole: every point of its border has
-     * nothing on this side, so each counts as a crack. */
-    e->state = SW_SEAM_FAILED;
-    e->cracks = loops.loop_first[loops.loop_count] - loops.loop_first[0];
+    frame->retess_triangles += tris;
+    if (made.state == SW_SEAM_READY)
+        sw_seam_walk_upload(w, s, pool, frame);
+}
+
+void sw_seam_walk_upload(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
+{
+    const sw_seam_cache *c = &w->cache;
+    const sw_seam_entry *e = &c->entries[s];
+    uint32_t v0 = sw_seam_cache_first_vertex(c, s), i0 = sw_seam_cache_first_index(c, s);
+    uint64_t before = pool->bytes_uploaded;
+    sw_gl_pool_upload(pool, v0, c->verts + v0, e->vertex_count, i0, c->index_data + i0,
+                      e->index_count);
+    frame->upload_bytes += pool->bytes_uploaded - before;
 }
 
 /* The drawn mesh (in the cache) against the exact surface. */
@@ -442,18 +343,27 @@ static void measure_surface(sw_seam_walk *w, uint32_t s, const sw_view *view, sw
 {
     const sw_seam_cache *c = &w->cache;
     const sw_seam_entry *e = &c->entries[s];
+    sw_seam_maker *k = &w->maker;
     uint32_t patch_count = 0;
-    if (sw_trim_patches_from_pack(w->pack, s, w->patches, w->max_patches, &patch_count, NULL))
+    if (sw_trim_patches_from_pack(w->pack, s, k->patches, k->max_patches, &patch_count, NULL))
         return;
     uint32_t v0 = sw_seam_cache_first_vertex(c, s);
     const sw_seam_mesh mesh = { c->verts + v0, c->uvs + 2 * (size_t)v0,
                                 c->index_data + sw_seam_cache_first_index(c, s),
                                 e->vertex_count, e->index_count };
-    const sw_seam_exact exact = { w->patches, patch_count, w->sew_offset[s], w->depth[s],
+    const sw_seam_exact exact = { k->patches, patch_count,
+                                  sewing_offset(w, s, k->patches, patch_count), w->depth[s],
                                   w->error_px, w->bound_floor };
     sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
     if (w->drawn)
         sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
+}
+
+double sw_seam_walk_ms_since(const struct timespec *a)
+{
+    struct timespec b;
+    clock_gettime(CLOCK_MONOTONIC, &b);
+    return (double)(b.tv_sec - a->tv_sec) * 1e3 + (double)(b.tv_nsec - a->tv_nsec) * 1e-6;
 }
 
 /* Surface s's mesh for this frame: remade when it has none or it no
@@ -466,8 +376,22 @@ static void refresh_surface(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_se
         struct timespec t0;
         clock_gettime(CLOCK_MONOTONIC, &t0);
         remake(w, s, pool, frame);
-        frame->tess_ms += ms_since(&t0);
+        frame->tess_ms += sw_seam_walk_ms_since(&t0);
     }
+}
+
+/* How far a drawn mesh is behind the view (threaded walk): coarser than
+ * the view asks, and for how many frames. */
+static void count_behind(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e,
+                         sw_seam_frame *frame)
+{
+    double want = w->want[s] > 0 ? w->want[s] : e->made_bound;
+    if (e->made_bound > want) {
+        frame->behind_surfaces++;
+        frame->behind_ratio = fmax(frame->behind_ratio, e->made_bound / want);
+    }
+    if (w->need_since[s] != UINT32_MAX && w->frame - 1 - w->need_since[s] > frame->frames_behind)
+        frame->frames_behind = w->frame - 1 - w->need_since[s];
 }
 
 /* Surface s drawn from the cache, counted. */
@@ -480,6 +404,10 @@ static void draw_surface(sw_seam_walk *w, uint32_t s, sw_renderer *r, sw_gl_pool
         return;
     }
     frame->cracks += e->cracks;
+    if (e->state == SW_SEAM_EMPTY && w->workers) {
+        frame->waiting_surfaces++;   /* its first mesh is not made yet */
+        return;
+    }
     if (e->state != SW_SEAM_READY) {
         frame->failed_surfaces++;
         return;
@@ -504,6 +432,8 @@ static void draw_surface(sw_seam_walk *w, uint32_t s, sw_renderer *r, sw_gl_pool
     frame->crossings += e->crossings;
     frame->capped_surfaces += e->capped;
     frame->holes_filled += e->holes_filled;
+    if (w->workers)
+        count_behind(w, s, e, frame);
 }
 
 void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const sw_view *view,
@@ -517,9 +447,12 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
     /* Every upload before the first draw: a glBufferSubData into a buffer
      * that queued draws read makes the driver flush them first (llvmpipe:
      * 70 uploads between draws took the teaset's frame from 80 to 300 ms). */
-    for (uint32_t s = 0; s < n; s++)
-        if (w->visible[s] == 1 || w->visible[s] == SW_SEAM_WALK_AWAY)
-            refresh_surface(w, s, pool, frame);
+    if (w->workers)
+        sw_seam_walk_commit(w, pool, frame);
+    else
+        for (uint32_t s = 0; s < n; s++)
+            if (sw_seam_walk_needs_mesh(w, s))
+                refresh_surface(w, s, pool, frame);
     for (uint32_t s = 0; s < n; s++) {
         if (w->visible[s] == SW_SEAM_WALK_TINY)
             frame->vanished_surfaces++;
@@ -532,7 +465,7 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
             struct timespec t0;
             clock_gettime(CLOCK_MONOTONIC, &t0);
             measure_surface(w, s, view, stats, &acc);
-            frame->measure_ms += ms_since(&t0);
+            frame->measure_ms += sw_seam_walk_ms_since(&t0);
         }
     }
     frame->error_beyond_sewing_px = acc.beyond_sewing_px;

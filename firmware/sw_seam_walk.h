@@ -22,11 +22,46 @@
  * when they do (sw_seam_select_surface_changed), the surface is tessellated
  * again too. A still camera re-tessellates nothing.
  *
+ * Threads (sw_seam_walk_start_workers; paper 000 section 5): without
+ * workers the tessellation runs in the frame as above. With them, the
+ * walk schedules the work and the workers T (sw_seam_workers.h) make the
+ * meshes while the GL thread P goes on drawing the meshes it has. The
+ * visibility work (paper 000's V: culling, bounds, the seam front, the
+ * schedule) runs on P's thread before it draws, not on a thread of its
+ * own: on this 2-core machine a third busy thread would share a core with
+ * T or with llvmpipe's rasteriser; what P and V share (the visible set, the
+ * cache entries, the batch) would need the per-frame double buffers and the
+ * activity list of paper 000 section 5.2 first.
+ * - Crack-free by versioned batches: the seam front moves only when no
+ *   work is in flight, and every job started after a move belongs to that
+ *   move's batch, made from the one seam state the move left. The GL thread
+ *   swaps a batch in whole, in one frame, once every job of it is
+ *   published; until then it draws the previous batch's meshes, all made
+ *   from the previous state. A surface whose loops the move changed and
+ *   that holds a mesh is always in the batch, visible or not (so no stale
+ *   border is ever drawn), so neighbours drawn together always share their
+ *   border vertices. Why this and not paper 000's border strips: the Seam
+ *   Graph already makes both sides of a seam take the same vertices (its
+ *   point), so what must be kept is only that both sides show the same
+ *   state; strips would add triangles and a second border to keep right.
+ * - Budgets (sw_seam_budget.h): a surface needs work when its view bound
+ *   leaves its mesh's valid range; visible ones are ordered by the weight
+ *   w, culled ones (a mesh that no longer serves, no mesh near the view)
+ *   by w' and only with budget left; per frame at most N new and M updated
+ *   triangles, set by the controller for --target-ms. What the budget does
+ *   not reach is drawn from the older, coarser mesh: the stats say how far
+ *   behind (frames, bound ratio) and how much of the budget was used.
+ * - The first frame comes from the coarsest state: its bounds are
+ *   SW_SEAM_FIRST_COARSER times the view's, and it is the one frame that
+ *   waits for its batch (there is nothing yet to draw instead).
+ * - sync_work (tests only): every frame waits for the work it asked for,
+ *   with no budget: each frame is then what the walk without workers draws
+ *   (the golden images stay deterministic).
+ *
  * Memory: taken once from the runtime's arena before the first frame,
  * sw_seam_walk_arena_bytes, which the pack's header counts in its
- * runtime_bytes (core/sw_walk_memory.h); the frame functions never
- * allocate. Single-threaded: tessellation runs in the frame (threads
- * and budgets are issue 10). */
+ * runtime_bytes (core/sw_walk_memory.h), and per worker
+ * sw_seam_worker_bytes on top; the frame functions never allocate. */
 #ifndef SW_SEAM_WALK_H
 #define SW_SEAM_WALK_H
 
@@ -40,13 +75,19 @@
 #include "sw_renderer.h"
 #include "sw_seam_cache.h"
 #include "sw_seam_drawn.h"
+#include "sw_seam_budget.h"
 #include "sw_seam_fill.h"
+#include "sw_seam_make.h"
 #include "sw_seam_select.h"
 #include "sw_stats.h"
 #include "sw_tess.h"
 #include "sw_trim_tess.h"
+#include "sw_seam_workers.h"
 #include "sw_view.h"
 #include "sw_walk_memory.h"
+
+/* The first frame's bounds over the view's (the threaded walk's start). */
+#define SW_SEAM_FIRST_COARSER 2.0
 
 /* Vertices per tessellated surface: 16-bit indices (core/sw_walk_memory.h). */
 #define SW_SEAM_WALK_VERTICES SW_WALK_VERTICES
@@ -66,15 +107,9 @@ typedef struct sw_seam_walk {
                                      view but facing away (cone culling: not drawn) */
     uint8_t *evictable;           /* surface_count: not drawn this frame */
     uint8_t *dirty;               /* surface_count: its loops changed since it was made */
-    sw_seam_point *loop_points;   /* the largest surface's slots */
-    sw_trim_point *points;        /* the same, as the tessellator takes them */
-    uint32_t *loop_first;         /* the most loops of a surface, + 1 */
-    sw_trim_patch *patches;       /* the most patches of a surface */
-    uint32_t max_points, max_loops, max_patches;
-    sw_arena scratch;             /* the tessellator's */
-    float *positions, *normals, *uvs;
-    uint32_t *ids;
-    uint16_t *indices;            /* one surface's, as the tessellator writes it */
+    sw_seam_maker maker;          /* the frame's own buffers (tessellating in the frame,
+                                     measuring) */
+    sw_walk_sizes largest;        /* the pack's largest surface */
     float *sew_offset;            /* surface_count: its border's largest distance from the
                                      surface, model units (sewing joins faces across the
                                      file's gaps; no level of detail makes that smaller) */
@@ -100,6 +135,19 @@ typedef struct sw_seam_walk {
                                      (no T-junction pinholes); NULL: drawn as made */
     uint32_t drop_surface;        /* a mutation for the image tests: this surface is never
                                      drawn, and nothing counts it (UINT32_MAX: none) */
+    /* Threads (all on the walk's own thread except inside workers). */
+    sw_seam_workers *workers;     /* NULL: tessellate in the frame */
+    int sync_work;                /* tests: each frame waits for its work, no budget */
+    sw_seam_budget budget;
+    float *want;                  /* surface_count: this frame's bound from the view */
+    uint8_t *busy;                /* surface_count: a job in flight */
+    uint32_t *need_since;         /* surface_count: the frame it first needed work
+                                     (UINT32_MAX: it does not) */
+    uint32_t *batch;              /* surface_count: the surfaces with a job in the batch */
+    uint32_t batch_count, batch_pushed;
+    uint32_t room_retries;        /* of the batch: rounds its jobs went again for room */
+    sw_seam_candidate *candidates;/* surface_count */
+    uint64_t batch_tris;          /* of the frame's schedule: triangles estimated */
 } sw_seam_walk;
 
 typedef struct sw_seam_frame {
@@ -137,6 +185,17 @@ typedef struct sw_seam_frame {
                                      pixels at its nearest depth */
     double seam_chord_px;         /* measured: the most a seam chord lies from its surface at
                                      the same (u, v), sw_seam_measure.h */
+    /* With workers: */
+    uint32_t waiting_surfaces;    /* visible with no mesh yet (not drawn: holes until made) */
+    uint32_t behind_surfaces;     /* drawn from a mesh coarser than the view's bound */
+    uint32_t frames_behind;       /* the longest a drawn surface has waited for its work */
+    double behind_ratio;          /* the most a drawn mesh's bound exceeds the view's */
+    uint32_t jobs_scheduled;      /* jobs this frame started */
+    uint32_t batches_committed;   /* batches swapped in this frame (0 or 1) */
+    double budget_tris;           /* N + M this frame */
+    double budget_used;           /* triangles scheduled over N + M */
+    uint32_t seam_ops;            /* the seam update's splits and collapses */
+    double updated_tris;          /* of the jobs, those whose loops moved (M's share) */
 } sw_seam_frame;
 
 /* Bytes sw_seam_walk_init takes from its arena for this validated pack
@@ -166,5 +225,33 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
  * only. */
 void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const sw_view *view,
                        sw_stats *stats, sw_seam_frame *frame);
+
+/* Arena bytes of count workers for this pack (on top of
+ * sw_seam_walk_arena_bytes), fill as the walk will have it. */
+size_t sw_seam_walk_worker_bytes(const sw_pack *pack, uint32_t count, int fill);
+
+/* Starts count tessellation workers (after init, fill and drawn set):
+ * from then on the walk is threaded. target_ms: the controller's frame
+ * time. shared: the walk's arena (the pack's runtime_bytes counts what the
+ * workers share); arena: sw_seam_walk_worker_bytes for their own buffers.
+ * Errors as sw_seam_workers_init. */
+sw_status sw_seam_walk_start_workers(sw_seam_walk *w, uint32_t count, double target_ms,
+                                     sw_arena *shared, sw_arena *arena, sw_error *err);
+
+/* Stops the workers (safe without them). */
+void sw_seam_walk_stop_workers(sw_seam_walk *w);
+
+/* Test hook: while stalled the workers take no job (frames go on drawing
+ * the meshes they have). */
+void sw_seam_walk_stall_workers(sw_seam_walk *w, int stalled);
+
+/* Test hook: every job waits ms before it is published (batches then take
+ * many frames: a batch swapped in before it is whole would show). */
+void sw_seam_walk_slow_workers(sw_seam_walk *w, int ms);
+
+/* After the frame (GL thread): the frame ended, meshes it stopped drawing
+ * may be reused, and the controller learns its time (swapped: the frame's
+ * batches_committed). */
+void sw_seam_walk_end_frame(sw_seam_walk *w, double frame_ms, int swapped);
 
 #endif

@@ -227,6 +227,43 @@ static sw_status write_cull(FILE *f, const sw_stats *s, sw_arena *scratch)
     return SW_OK;
 }
 
+void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
+                                uint32_t frames_behind, double behind_ratio, uint32_t jobs,
+                                uint32_t batches, uint32_t seam_ops, double budget_tris,
+                                double budget_used)
+{
+    s->waiting_max = waiting > s->waiting_max ? waiting : s->waiting_max;
+    s->behind_max = behind > s->behind_max ? behind : s->behind_max;
+    if (frames_behind > s->frames_behind_max)
+        s->frames_behind_max = frames_behind;
+    s->behind_ratio_max = behind_ratio > s->behind_ratio_max ? behind_ratio : s->behind_ratio_max;
+    s->jobs_total += jobs;
+    s->batches_total += batches;
+    s->seam_ops_total += seam_ops;
+    if (budget_tris > 0) {
+        s->budget_used_sum += budget_used;
+        s->budget_used_max = budget_used > s->budget_used_max ? budget_used : s->budget_used_max;
+        s->budget_frames++;
+        s->budget_tris_last = budget_tris;
+    }
+}
+
+static void write_threads(FILE *f, const sw_stats *s)
+{
+    fprintf(f, "  \"threads\": {\"workers\": %d, \"sync_work\": %d, \"target_ms\": %.3f, "
+               "\"waiting_surfaces_max\": %u, \"behind_surfaces_max\": %u, "
+               "\"frames_behind_max\": %u, \"behind_ratio_max\": %.3f, \"jobs\": %llu, "
+               "\"batches\": %llu, \"seam_ops\": %llu, \"budget_used_mean\": %.3f, "
+               "\"budget_used_max\": %.3f, \"budget_tris_last\": %.0f, "
+               "\"worker_triangles\": %llu, \"worker_busy_ms\": %.1f, \"steals\": %llu},\n",
+            s->workers, s->sync_work, s->target_ms, s->waiting_max, s->behind_max,
+            s->frames_behind_max, s->behind_ratio_max, (unsigned long long)s->jobs_total,
+            (unsigned long long)s->batches_total, (unsigned long long)s->seam_ops_total,
+            s->budget_frames ? s->budget_used_sum / s->budget_frames : 0.0, s->budget_used_max,
+            s->budget_tris_last, (unsigned long long)s->worker_triangles, s->worker_busy_ms,
+            (unsigned long long)s->worker_steals);
+}
+
 static float *copy_as_float_u32(const uint32_t *v, int n, sw_arena *a)
 {
     float *out = sw_arena_alloc(a, (size_t)n * sizeof(float) + 1, 8);
@@ -286,6 +323,7 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
             (unsigned long long)s->fill_triangles_max);
     fprintf(f, "  \"depth\": {\"bits\": %d, \"far_over_near_max\": %.1f},\n", s->depth_bits,
             s->depth_far_over_near_max);
+    write_threads(f, s);
     if (s->store)
         write_store(f, s);
     fprintf(f, "  \"arena_bytes\": %llu,\n  \"arena_peak_bytes\": %llu,\n  \"runtime_bytes\": %llu,\n",

@@ -68,6 +68,21 @@ typedef struct sw_stats {
     int cone_cull;               /* cone culling was on (--back-faces hidden) */
     double cull_tree_ms, cones_ms; /* start-up: building the tree and the cones */
 
+    /* With workers (firmware/sw_seam_walk.h, "Threads"): how far the work is
+     * behind the view and what of the budget it used. */
+    int workers, sync_work;
+    double target_ms;
+    uint32_t waiting_max;        /* visible surfaces with no mesh yet, the most of a frame */
+    uint32_t behind_max;         /* drawn from a mesh coarser than the view asks */
+    uint32_t frames_behind_max;  /* the longest a drawn surface waited for its work */
+    double behind_ratio_max;     /* the most a drawn mesh's bound exceeded the view's */
+    uint64_t jobs_total, batches_total, seam_ops_total;
+    double budget_used_sum, budget_used_max; /* scheduled over N + M, frames that scheduled */
+    int budget_frames;
+    double budget_tris_last;     /* N + M at the end */
+    uint64_t worker_triangles, worker_steals;
+    double worker_busy_ms;
+
     /* With --store (firmware/sw_boot.h): which slot ran and what the boot did. */
     int store;                   /* the fields below are meaningful */
     char store_slot;             /* 'A', 'B', or '-': no slot started, the message screen ran */
@@ -94,6 +109,13 @@ void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible)
 void sw_stats_add_error_px(sw_stats *s, double error_px);
 /* The frame's near and far planes. */
 void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z);
+/* The threaded walk's frame: waiting and behind surfaces, frames behind,
+ * the bound ratio, jobs and whether a batch was swapped in, the budget. */
+void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
+                                uint32_t frames_behind, double behind_ratio, uint32_t jobs,
+                                uint32_t batches, uint32_t seam_ops, double budget_tris,
+                                double budget_used);
+
 /* The cache's work in the frame sw_stats_add_frame records next. */
 void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,
                               uint64_t upload_bytes, uint32_t evictions, double tess_ms);

@@ -1,6 +1,8 @@
 # tests of the firmware area: runtime modules, then the whole program.
 sw_add_test(test_arena SOURCES test_arena.c LIBS sw_core)
 sw_add_test(test_buddy SOURCES test_buddy.c LIBS sw_core)
+sw_add_test(test_steal_queue SOURCES test_steal_queue.c LIBS sw_core)
+sw_add_test(test_handoff SOURCES test_handoff.c LIBS sw_core)
 sw_add_test(test_camera_path SOURCES test_camera_path.c LIBS sw_runtime)
 sw_add_test(test_stats SOURCES test_stats.c LIBS sw_runtime)
 sw_add_test(test_view SOURCES test_view.c LIBS sw_runtime)
@@ -27,6 +29,11 @@ endforeach()
 # The seams as drawn on a real walk, with and without the crossing fans.
 add_test(NAME seam_drawn_walk
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_seam_drawn_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+
+# The threaded walk: stalled workers, two workers, --sync-work against --workers 0.
+add_test(NAME walk_threads
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_walk_threads.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+set_tests_properties(walk_threads PROPERTIES TIMEOUT 300)
 
 # The native IGES reader against OpenCASCADE on the shared models.
 sw_add_test(test_iges_crosscheck SOURCES test_iges_crosscheck.c LIBS sw_assets sw_core

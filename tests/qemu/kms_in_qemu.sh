@@ -32,7 +32,7 @@ for _ in \$(seq 50); do [ -e /dev/dri/card0 ] && break; sleep 0.2; done
 ls -l /dev/dri
 cd /run/sw
 $build/firmware/seamwalk --pack teaset.swpack --orbit --frames 3 --display kms --size 640x480 \
-  --png-dir kms --stats kms.json > kms.out 2>&1
+  --png-dir kms --stats kms.json --sync-work 1 > kms.out 2>&1
 echo "SW_KMS_RC=\$?"
 # A service stop mid-walk: SIGTERM ends it after the frame, through the
 # normal exit (restore, master dropped).
@@ -59,7 +59,7 @@ grep -q "SW_AUTO_RC=0" "$work/console.log" || fail "seamwalk auto: $(cat "$work/
 grep -q "^seamwalk: display kms .*(auto: /dev/dri/card\* exists and EGL offers GBM)" \
   "$work/out/auto.out" || fail "auto did not choose kms: $(cat "$work/out/auto.out")"
 "$build/firmware/seamwalk" --pack "$work/out/teaset.swpack" --orbit --frames 3 \
-  --headless 640x480 --png-dir "$work/headless" > /dev/null || fail "walk headless"
+  --headless 640x480 --png-dir "$work/headless" --sync-work 1 > /dev/null || fail "walk headless"
 for f in "$work"/headless/frame_*.png; do
   "$build/tests/image_compare" "$f" "$work/out/kms/$(basename "$f")" || fail "$(basename "$f") differs"
 done

@@ -1,0 +1,195 @@
+#include "sw_seam_make.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "sw_seam_surface.h"
+
+static void *take(sw_arena *a, size_t bytes, int *failed)
+{
+    void *p = sw_arena_alloc(a, bytes + 1, 64);
+    *failed |= p == NULL;
+    return p;
+}
+
+/* As take: bytes + 1, 64-aligned. */
+static uint64_t worst(uint64_t bytes) { return sw_arena_worst_case(bytes + 1, 64); }
+
+uint64_t sw_seam_maker_arena_bytes(const sw_walk_sizes *m)
+{
+    uint64_t v = SW_WALK_VERTICES;
+    return worst((m->points + 1ull) * sizeof(sw_seam_point)) +
+           worst((m->points + 1ull) * sizeof(sw_trim_point)) +
+           worst((m->loops + 1ull) * sizeof(uint32_t)) +
+           worst((m->patches + 1ull) * sizeof(sw_trim_patch)) + worst(sw_walk_scratch_bytes(m)) +
+           2 * worst(v * 3 * sizeof(float)) + worst(v * 2 * sizeof(float)) +
+           worst(v * sizeof(uint32_t)) + worst(SW_WALK_INDICES * sizeof(uint16_t));
+}
+
+sw_status sw_seam_maker_init(sw_seam_maker *k, const sw_pack *pack, const sw_seam_select *select,
+                             const sw_walk_sizes *m, sw_arena *arena, sw_error *err)
+{
+    memset(k, 0, sizeof *k);
+    k->pack = pack;
+    k->select = select;
+    k->max_points = m->points, k->max_patches = m->patches;
+    size_t v = SW_WALK_VERTICES;
+    int failed = 0;
+    k->loop_points = take(arena, (m->points + 1) * sizeof(sw_seam_point), &failed);
+    k->points = take(arena, (m->points + 1) * sizeof(sw_trim_point), &failed);
+    k->loop_first = take(arena, (m->loops + 1) * sizeof(uint32_t), &failed);
+    k->patches = take(arena, (m->patches + 1) * sizeof(sw_trim_patch), &failed);
+    size_t scratch_bytes = (size_t)sw_walk_scratch_bytes(m);
+    void *scratch = take(arena, scratch_bytes, &failed);
+    k->positions = take(arena, v * 3 * sizeof(float), &failed);
+    k->normals = take(arena, v * 3 * sizeof(float), &failed);
+    k->uvs = take(arena, v * 2 * sizeof(float), &failed);
+    k->ids = take(arena, v * sizeof(uint32_t), &failed);
+    k->indices = take(arena, SW_WALK_INDICES * sizeof(uint16_t), &failed);
+    if (failed)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for a tessellation's "
+                            "buffers (%llu bytes)",
+                            (unsigned long long)sw_seam_maker_arena_bytes(m));
+    sw_arena_init(&k->scratch, scratch, scratch_bytes);
+    return SW_OK;
+}
+
+/* Tessellates surface s at bound, coarsening (x4, three times) when it
+ * would need more than 65536 vertices (*capped then). */
+static sw_status tessellate(sw_seam_maker *k, uint32_t s, const sw_trim_loops *loops,
+                            double bound, sw_trim_tess_result *result, int *capped)
+{
+    uint32_t patch_count = 0;
+    sw_status st = sw_trim_patches_from_pack(k->pack, s, k->patches, k->max_patches,
+                                             &patch_count, NULL);
+    if (st != SW_OK)
+        return st;
+    sw_trim_tess_buffers out = { k->positions, k->normals, k->uvs, k->ids, k->indices,
+                                 SW_WALK_VERTICES, SW_WALK_INDICES, 0 };
+    const sw_trim_tess_options opt = sw_seam_surface_tess_options();
+    *capped = 0;
+    for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
+        st = sw_trim_tess(k->patches, patch_count, loops, bound, &opt, &k->scratch, &out, result,
+                          NULL);
+        if (st != SW_ERR_RANGE)
+            break;
+        *capped = 1;
+    }
+    return st;
+}
+
+static int8_t snorm8(float x)
+{
+    float c = x < -1.0f ? -1.0f : x > 1.0f ? 1.0f : x;
+    return (int8_t)lrintf(c * 127.0f);
+}
+
+/* Border vertices must be their seam vertex's position bit for bit (the
+ * neighbour across the seam draws the same float), and every loop point must
+ * be in the mesh: each violation is a crack. */
+static uint32_t count_cracks(const sw_seam_maker *k, const sw_trim_tess_result *t,
+                             uint32_t *crossings)
+{
+    uint32_t cracks = t->dropped_points;
+    for (uint32_t i = 0; i < t->vertex_count; i++) {
+        *crossings += k->ids[i] == SW_TRIM_CROSSING;
+        if (k->ids[i] == SW_TRIM_INTERIOR || k->ids[i] == SW_TRIM_CROSSING)
+            continue;
+        const float *p = k->pack->seam.vertices[k->ids[i]].p;
+        cracks += memcmp(p, k->positions + 3 * i, 3 * sizeof(float)) != 0;
+    }
+    return cracks;
+}
+
+/* The maker's output into the cache's CPU pools at e's blocks. */
+static void copy_out(const sw_seam_maker *k, sw_seam_cache *c, const sw_seam_entry *e)
+{
+    uint32_t v0 = e->vertex_block * SW_SEAM_CACHE_VERTEX_UNIT;
+    uint32_t i0 = e->index_block * SW_SEAM_CACHE_INDEX_UNIT;
+    for (uint32_t i = 0; i < e->vertex_count; i++) {
+        sw_vertex *v = &c->verts[v0 + i];
+        memcpy(v->pos, k->positions + 3 * i, sizeof v->pos);
+        for (int j = 0; j < 3; j++)
+            v->normal[j] = snorm8(k->normals[3 * i + j]);
+        v->normal[3] = 0;
+    }
+    memcpy(c->uvs + 2 * (size_t)v0, k->uvs, 2 * sizeof(float) * e->vertex_count);
+    memcpy(c->index_data + i0, k->indices, sizeof(uint16_t) * e->index_count);
+}
+
+/* One attempt at bound: tessellate (without the holes when a hole's coarse
+ * polyline crosses another loop), fans, a place in the cache. SW_OK with
+ * *placed 0 when there is no room. */
+static sw_status attempt(sw_seam_maker *k, uint32_t s, sw_trim_loops *loops, uint32_t outer,
+                         double bound, sw_seam_cache *c, sw_seam_place_fn place, void *ctx,
+                         sw_seam_entry *e, sw_trim_tess_result *t, int *placed)
+{
+    int capped = 0;
+    sw_status st = tessellate(k, s, loops, bound, t, &capped);
+    if (st == SW_ERR_FORMAT && outer < loops->loop_count) {
+        /* A hole's coarse polyline crosses another loop (both are within
+         * the bound of where they belong, and so of each other): drawn
+         * without its holes rather than not at all. */
+        loops->loop_count = outer;
+        st = tessellate(k, s, loops, bound, t, &capped);
+        e->holes_filled = st == SW_OK;
+    }
+    if (st != SW_OK)
+        return st;
+    e->fill_triangles = 0;
+    if (k->fill) {
+        uint32_t left = 0;
+        e->fill_triangles = sw_seam_fill_crossings(k->fill, k->ids, t->vertex_count, k->indices,
+                                                   &t->index_count, SW_WALK_INDICES, &left);
+    }
+    *placed = place(ctx, s, t->vertex_count, t->index_count, e);
+    if (*placed) {
+        e->vertex_count = t->vertex_count, e->index_count = t->index_count;
+        e->state = SW_SEAM_READY;
+        e->capped = (uint8_t)capped;
+        copy_out(k, c, e);
+    }
+    return SW_OK;
+}
+
+uint64_t sw_seam_make(sw_seam_maker *k, uint32_t s, float bound, float seam_bound,
+                      sw_seam_cache *c, sw_seam_place_fn place, void *place_ctx,
+                      sw_seam_entry *e, int *no_room)
+{
+    memset(e, 0, sizeof *e);
+    e->made_bound = bound;
+    *no_room = 0;
+    const sw_seam_surface_buffers buf = { k->loop_points, k->points, k->loop_first,
+                                          k->max_points };
+    sw_trim_loops loops;
+    uint32_t outer = 0;
+    if (!sw_seam_surface_loops(k->select, s, seam_bound, &buf, &loops, &outer)) {
+        e->state = SW_SEAM_GONE;
+        return 0;
+    }
+    /* When the cache cannot hold the mesh, the surface is drawn coarser
+     * (the bound x4, up to three times) rather than not at all, and counted
+     * as capped; its border stays the seams'. */
+    for (int coarser = 0; coarser < 4; coarser++) {
+        sw_trim_tess_result t;
+        int placed = 0;
+        double b = bound * (double)(1u << (2 * coarser));
+        if (attempt(k, s, &loops, outer, b, c, place, place_ctx, e, &t, &placed) != SW_OK)
+            break;
+        if (placed) {
+            e->error_bound = (float)t.error_bound;
+            e->capped = (uint8_t)(e->capped || coarser > 0);
+            uint32_t crossings = 0;
+            e->cracks = count_cracks(k, &t, &crossings);
+            e->crossings = crossings;
+            *no_room = 0;   /* placed coarser: drawn, not retried */
+            return t.index_count / 3 - e->fill_triangles;
+        }
+        *no_room = 1;
+    }
+    /* A visible surface left out is a hole: every point of its border has
+     * nothing on this side, so each counts as a crack. */
+    e->state = SW_SEAM_FAILED;
+    e->cracks = loops.loop_first[loops.loop_count] - loops.loop_first[0];
+    return 0;
+}

@@ -1,0 +1,61 @@
+/* Shared by the files of the seam walk (sw_seam_walk.c: selection, the
+ * frame's own tessellation, drawing; sw_seam_walk_threads.c: scheduling
+ * for the workers and swapping their batches in); not public. */
+#ifndef SW_SEAM_WALK_INTERNAL_H
+#define SW_SEAM_WALK_INTERNAL_H
+
+#include <time.h>
+
+#include "sw_seam_walk.h"
+
+enum { SW_SEAM_WALK_TINY = 2 }; /* w->visible: in view, smaller than its bound */
+
+/* How much finer than the view asks a kept tessellation may be: t <= b <=
+ * KEEP t. Measured over 120-frame orbits at 1280x720 (triangles drawn a
+ * frame, median; surfaces re-tessellated in all): teaset 37,790 / 197 at
+ * 2.0, 34,673 / 330 at 1.6, 33,301 / 392 at sqrt 2; NIST part 4 47,858 /
+ * 1,432, 46,942 / 1,559, 44,458 / 2,374. Below sqrt 2 (one level) nothing
+ * changes; at sqrt 2 there is no hysteresis, and a surface whose bound
+ * wavers across a level boundary would be redone every frame; 1.6 leaves a
+ * band of 13% against that. */
+#define SW_SEAM_KEEP 1.6
+
+/* Bounds of invisible surfaces: as coarse as the hierarchy goes (their
+ * vertices still meet the bounds of visible neighbours that show them). */
+#define SW_SEAM_INVISIBLE_BOUND 1e30f
+
+/* Surfaces that get a mesh this frame: the drawn ones, and those in view
+ * whose normal cone faces away (not drawn, but kept as if drawn so their
+ * seams, and so their neighbours' meshes, are what they would be without
+ * cone culling; sw_seam_walk.c, cull_surface). */
+static inline int sw_seam_walk_needs_mesh(const sw_seam_walk *w, uint32_t s)
+{
+    return w->visible[s] == 1 || w->visible[s] == SW_SEAM_WALK_AWAY;
+}
+
+/* Workers that run on their own (not sync_work): the schedule, not the
+ * selection, moves the seams. */
+static inline int sw_seam_walk_async(const sw_seam_walk *w)
+{
+    return w->workers && !w->sync_work;
+}
+
+/* The seam update for w->seam_bound (complete), and the surfaces whose
+ * loops it changed marked dirty. */
+sw_status sw_seam_walk_move_front(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err);
+
+/* The walk's thread, after selecting: opens a batch when none is in flight
+ * (async: moving the front first) and pushes its jobs
+ * (sw_seam_walk_threads.c). */
+sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err);
+
+/* The GL thread, before drawing: swaps in the batch when all of it is
+ * published (waits for it only in the first frame and with sync_work). */
+void sw_seam_walk_commit(sw_seam_walk *w, sw_gl_pool *pool, sw_seam_frame *frame);
+
+/* Surface s's cache entry (READY) into the GL buffers. */
+void sw_seam_walk_upload(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame);
+
+double sw_seam_walk_ms_since(const struct timespec *a);
+
+#endif

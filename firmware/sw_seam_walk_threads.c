@@ -1,0 +1,314 @@
+/* The threaded side of the seam walk (sw_seam_walk.h, "Threads"): which
+ * surfaces get work and in what order, the batch that makes them from one
+ * seam state, and the swap that shows the batch whole. Runs on the walk's
+ * (the GL) thread; the workers only see jobs[s] and publish made[s]. */
+#include <math.h>
+#include <sched.h>
+#include <string.h>
+
+#include "sw_seam_surface.h"
+#include "sw_seam_walk_internal.h"
+
+size_t sw_seam_walk_worker_bytes(const sw_pack *pack, uint32_t count, int fill)
+{
+    sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    return sw_arena_worst_case(sizeof(sw_seam_workers), 64) +
+           (size_t)count * (size_t)sw_seam_worker_bytes(&m, fill);
+}
+
+sw_status sw_seam_walk_start_workers(sw_seam_walk *w, uint32_t count, double target_ms,
+                                     sw_arena *shared, sw_arena *arena, sw_error *err)
+{
+    sw_seam_workers *p = sw_arena_alloc(arena, sizeof *p, 64);
+    if (!p)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the workers");
+    sw_status st = sw_seam_workers_init(p, count, w->pack, &w->select, &w->cache, &w->largest,
+                                        w->fill != NULL, shared, arena, err);
+    if (st != SW_OK)
+        return st;
+    w->workers = p;
+    sw_seam_budget_init(&w->budget, target_ms);
+    return SW_OK;
+}
+
+void sw_seam_walk_stop_workers(sw_seam_walk *w)
+{
+    if (w->workers)
+        sw_seam_workers_stop(w->workers);
+    w->workers = NULL;
+}
+
+void sw_seam_walk_stall_workers(sw_seam_walk *w, int stalled)
+{
+    if (w->workers)
+        atomic_store_explicit(&w->workers->stall, stalled, memory_order_release);
+}
+
+void sw_seam_walk_slow_workers(sw_seam_walk *w, int ms)
+{
+    if (w->workers)
+        atomic_store_explicit(&w->workers->slow_ms, ms, memory_order_relaxed);
+}
+
+/* Triangles a job for surface s at bound will make, guessed: a mesh's
+ * cells grow as 1 / bound (error ~ h^2, cells ~ 1 / h^2 per area... of
+ * two directions: ~ 1 / bound); with no mesh, a few dozen a patch. */
+static double estimate_tris(const sw_seam_walk *w, uint32_t s, float bound)
+{
+    const sw_seam_entry *e = &w->cache.entries[s];
+    if (e->state == SW_SEAM_READY && e->index_count > 0)
+        return (e->index_count / 3.0) * fmax(1.0, e->made_bound / bound);
+    return 32.0 * w->pack->surfaces[s].patch_count;
+}
+
+static void add_job(sw_seam_walk *w, uint32_t s)
+{
+    w->workers->jobs[s] = (sw_seam_job){ w->target[s], w->seam_bound[s] };
+    w->busy[s] = 1;
+    w->dirty[s] = 0;
+    w->batch[w->batch_count++] = s;
+}
+
+/* A visible surface whose mesh is missing or no longer serves its target:
+ * 1 and its weight w (paper 004 section 6.4) against its mesh's valid
+ * range [t, KEEP t]. */
+static int wants_work(const sw_seam_walk *w, uint32_t s, double *weight)
+{
+    const sw_seam_entry *e = &w->cache.entries[s];
+    if (!sw_seam_walk_needs_mesh(w, s) ||
+        (e->state != SW_SEAM_EMPTY && e->made_bound == w->target[s]))
+        return 0;
+    int has_mesh = e->state == SW_SEAM_READY;
+    double t = has_mesh ? e->made_bound : w->target[s];
+    *weight = fmax(1.0, sw_seam_weight(has_mesh, t, SW_SEAM_KEEP * t, w->want[s]));
+    return 1;
+}
+
+enum { SW_CHOSEN = 1, SW_PASSED = 2 };   /* w->busy while a batch opens */
+
+/* The candidates heaviest first while N lasts (all of them with sync_work
+ * and in the first frame); the ones passed over are marked. */
+static double choose(sw_seam_walk *w, sw_seam_frame *frame)
+{
+    uint32_t n = w->pack->seam.surface_count, cands = 0;
+    for (uint32_t s = 0; s < n; s++) {
+        double weight = 0;
+        if (!wants_work(w, s, &weight))
+            continue;
+        if (w->need_since[s] == UINT32_MAX)
+            w->need_since[s] = w->frame;
+        w->candidates[cands++] = (sw_seam_candidate){ (float)weight, s };
+    }
+    sw_seam_candidates_sort(w->candidates, cands);
+    int unlimited = w->sync_work || w->frame == 0;   /* (select counts the frame after) */
+    double tris = 0;
+    for (uint32_t i = 0; i < cands; i++) {
+        uint32_t s = w->candidates[i].surface;
+        double est = estimate_tris(w, s, w->target[s]);
+        int take = unlimited || i == 0 || tris + est <= w->budget.new_tris;
+        w->busy[s] = take ? SW_CHOSEN : SW_PASSED;
+        tris += take ? est : 0;
+        frame->jobs_scheduled += (uint32_t)take;
+    }
+    return tris;
+}
+
+/* Async: every surface's seams follow its target except those of the
+ * surfaces passed over (their loops stay as their meshes have them), then
+ * the front moves for them. */
+static sw_status follow_seams(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err)
+{
+    uint32_t n = w->pack->seam.surface_count;
+    int changed = w->frame == 0;
+    for (uint32_t s = 0; s < n; s++) {
+        if (w->busy[s] == SW_PASSED)
+            continue;
+        float seam = w->target[s] * (float)SW_SEAM_SHARE;
+        changed |= seam != w->seam_bound[s];
+        w->seam_bound[s] = seam;
+    }
+    return changed ? sw_seam_walk_move_front(w, frame, err) : SW_OK;
+}
+
+/* A new batch: the surfaces chosen, and every surface whose loops moved
+ * and that has a mesh or is in view (its old border must not be drawn
+ * beside the new ones). */
+static sw_status open_batch(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err)
+{
+    double new_tris = choose(w, frame), must_tris = 0;
+    sw_status st = sw_seam_walk_async(w) ? follow_seams(w, frame, err) : SW_OK;
+    uint32_t n = w->pack->seam.surface_count;
+    for (uint32_t s = 0; s < n && st == SW_OK; s++) {
+        sw_seam_entry *e = &w->cache.entries[s];
+        int chosen = w->busy[s] == SW_CHOSEN;
+        w->busy[s] = 0;
+        if (w->dirty[s] && !chosen && e->state != SW_SEAM_READY &&
+            !sw_seam_walk_needs_mesh(w, s)) {
+            /* Out of view with no mesh: made from the front of the day when
+             * it is needed again. */
+            e->state = SW_SEAM_EMPTY;
+            w->dirty[s] = 0;
+        }
+        if (!chosen && !w->dirty[s])
+            continue;
+        if (!chosen)
+            must_tris += estimate_tris(w, s, w->target[s]);
+        add_job(w, s);
+    }
+    w->budget.updated_used = must_tris;
+    frame->jobs_scheduled = w->batch_count;
+    frame->updated_tris = must_tris;
+    frame->budget_tris = w->budget.new_tris + w->budget.updated_tris;
+    frame->budget_used = (must_tris + new_tris) / frame->budget_tris;
+    return st;
+}
+
+/* As many of the batch's jobs as the queues take; the rest next frame. */
+static void push_more(sw_seam_walk *w)
+{
+    uint32_t before = w->batch_pushed;
+    while (w->batch_pushed < w->batch_count &&
+           sw_seam_workers_push(w->workers, w->batch[w->batch_pushed]))
+        w->batch_pushed++;
+    if (w->batch_pushed != before)
+        sw_seam_workers_wake(w->workers);
+}
+
+sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err)
+{
+    sw_status st = w->batch_count == 0 ? open_batch(w, frame, err) : SW_OK;
+    push_more(w);
+    return st;
+}
+
+/* The least recently drawn meshes out of view, retired: a worker found
+ * no room. A mesh's epoch is the last frame that drew it (and measured it:
+ * the GL thread reads a mesh only in the frames that draw it, and at its
+ * upload, before any of them), so the workers may reuse its blocks as soon
+ * as that frame has finished. */
+static void evict(sw_seam_walk *w)
+{
+    sw_seam_cache *c = &w->cache;
+    for (int k = 0; k < 8; k++) {
+        uint32_t v = sw_seam_cache_oldest(c, w->evictable);
+        if (v == UINT32_MAX)
+            return;
+        sw_seam_entry *e = &c->entries[v];
+        sw_retire_ring_put(&w->workers->retire,
+                           (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
+        e->state = SW_SEAM_EMPTY;
+        e->vertex_count = e->index_count = 0;
+        c->evictions++;
+    }
+}
+
+/* Surface s's published mesh becomes the drawn one; the mesh it replaces
+ * is retired with the epoch of the last frame that drew it. The ring holds
+ * two meshes a surface, so it cannot be full. */
+static void consume(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
+{
+    sw_seam_workers *p = w->workers;
+    sw_seam_entry *made = sw_publish_take(&p->slots[s]);
+    sw_seam_entry *e = &w->cache.entries[s];
+    if (e->state == SW_SEAM_READY)
+        sw_retire_ring_put(&p->retire,
+                           (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
+    uint32_t last = e->last_frame;
+    *e = *made;
+    e->last_frame = last;
+    w->busy[s] = 0;
+    w->need_since[s] = UINT32_MAX;
+    if (e->state != SW_SEAM_GONE)
+        frame->retessellated++;
+    if (e->state == SW_SEAM_READY) {
+        frame->retess_triangles += e->index_count / 3 - e->fill_triangles;
+        sw_seam_walk_upload(w, s, pool, frame);
+    }
+}
+
+static int batch_done(const sw_seam_walk *w)
+{
+    return w->batch_pushed == w->batch_count &&
+           atomic_load_explicit(&w->workers->outstanding, memory_order_acquire) == 0;
+}
+
+/* The first frame and sync_work wait for the batch; the walk's thread makes
+ * jobs itself meanwhile rather than sleep. */
+static void wait_batch(sw_seam_walk *w)
+{
+    w->maker.fill = w->fill;
+    while (!batch_done(w)) {
+        push_more(w);
+        if (!sw_seam_workers_help(w->workers, &w->maker))
+            sched_yield();
+    }
+}
+
+/* Jobs the cache had no room for (the drawn meshes and the batch's new
+ * ones live side by side until the swap): meshes out of view are evicted
+ * (free once this frame has finished) and the jobs go again, at most
+ * SW_SEAM_ROOM_RETRIES times a batch; then the batch is swapped in with
+ * them failed (a hole each, counted as cracks). 1 when jobs went again. */
+#define SW_SEAM_ROOM_RETRIES 4
+static int retry_no_room(sw_seam_walk *w, sw_seam_frame *frame)
+{
+    sw_seam_workers *p = w->workers;
+    if (w->room_retries >= SW_SEAM_ROOM_RETRIES)
+        return 0;
+    uint32_t keep = 0;   /* the batch reordered: the jobs that are done first */
+    for (uint32_t i = 0; i < w->batch_count; i++) {
+        if (p->no_room[w->batch[i]])
+            continue;
+        uint32_t t = w->batch[keep];
+        w->batch[keep++] = w->batch[i];
+        w->batch[i] = t;
+    }
+    if (keep == w->batch_count)
+        return 0;
+    uint32_t before = w->cache.evictions;
+    evict(w);
+    frame->evicted += w->cache.evictions - before;
+    for (uint32_t i = keep; i < w->batch_count; i++) {
+        uint32_t s = w->batch[i];
+        sw_publish_take(&p->slots[s]);   /* failed for room: it holds no blocks */
+        p->no_room[s] = 0;
+    }
+    w->batch_pushed = keep;
+    w->room_retries++;
+    push_more(w);
+    return 1;
+}
+
+void sw_seam_walk_commit(sw_seam_walk *w, sw_gl_pool *pool, sw_seam_frame *frame)
+{
+    if (w->batch_count == 0)
+        return;
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    if (w->sync_work || w->frame == 1)
+        wait_batch(w);
+    else
+        push_more(w);
+    while (batch_done(w) && retry_no_room(w, frame) && (w->sync_work || w->frame == 1))
+        wait_batch(w);
+    if (batch_done(w)) {
+        for (uint32_t i = 0; i < w->batch_count; i++)
+            consume(w, w->batch[i], pool, frame);
+        w->batch_count = w->batch_pushed = 0;
+        w->room_retries = 0;
+        frame->batches_committed = 1;
+    }
+    frame->tess_ms += sw_seam_walk_ms_since(&t0);
+}
+
+void sw_seam_walk_end_frame(sw_seam_walk *w, double frame_ms, int swapped)
+{
+    if (!w->workers)
+        return;
+    sw_retire_ring_finish(&w->workers->retire, w->frame + 1);
+    sw_seam_budget_after_frame(&w->budget, frame_ms, swapped,
+                               atomic_load_explicit(&w->workers->made_triangles,
+                                                    memory_order_relaxed),
+                               atomic_load_explicit(&w->workers->busy_ns, memory_order_relaxed),
+                               w->workers->count);
+}

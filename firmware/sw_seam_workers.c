@@ -1,0 +1,228 @@
+#include "sw_seam_workers.h"
+
+#include <string.h>
+#include <time.h>
+
+_Static_assert(sizeof(sw_seam_job) == 2 * sizeof(float), "sw_walk_threads_bytes counts a job "
+               "as two floats");
+
+uint64_t sw_seam_worker_bytes(const sw_walk_sizes *m, int fill)
+{
+    return sw_seam_maker_arena_bytes(m) +
+           (fill ? sw_seam_fill_arena_bytes(SW_WALK_VERTICES, SW_WALK_INDICES) : 0) +
+           sw_steal_queue_arena_bytes(SW_SEAM_WORKER_QUEUE) +
+           sw_arena_worst_case(SW_SEAM_WORKER_QUEUE * sizeof(uint32_t), 64);
+}
+
+static uint64_t now_ns(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (uint64_t)t.tv_sec * 1000000000ull + (uint64_t)t.tv_nsec;
+}
+
+/* The cache's blocks for a worker's mesh: retired blocks whose frame has
+ * finished go back first. Under alloc_lock, which only workers take. */
+static int place_blocks(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e)
+{
+    (void)s;
+    sw_seam_workers *p = ctx;
+    sw_seam_cache *c = p->cache;
+    uint32_t vu = (n ? n : 1), iu = (m ? m : 1);
+    vu = (vu + SW_SEAM_CACHE_VERTEX_UNIT - 1) / SW_SEAM_CACHE_VERTEX_UNIT;
+    iu = (iu + SW_SEAM_CACHE_INDEX_UNIT - 1) / SW_SEAM_CACHE_INDEX_UNIT;
+    pthread_mutex_lock(&p->alloc_lock);
+    sw_retired r;
+    while (sw_retire_ring_take(&p->retire, &r)) {
+        sw_buddy_free(&c->vertex_pool, r.vertex_block);
+        sw_buddy_free(&c->index_pool, r.index_block);
+    }
+    uint32_t vb, ib;
+    int ok = sw_buddy_alloc(&c->vertex_pool, vu, &vb);
+    if (ok && !(ok = sw_buddy_alloc(&c->index_pool, iu, &ib)))
+        sw_buddy_free(&c->vertex_pool, vb);
+    pthread_mutex_unlock(&p->alloc_lock);
+    if (ok)
+        e->vertex_block = vb, e->index_block = ib;
+    return ok;
+}
+
+static void run_job(sw_seam_workers *p, sw_seam_maker *maker, uint32_t s)
+{
+    uint64_t t0 = now_ns();
+    const sw_seam_job job = p->jobs[s];
+    int no_room = 0;
+    uint64_t tris = sw_seam_make(maker, s, job.bound, job.seam_bound, p->cache, place_blocks,
+                                 p, &p->made[s], &no_room);
+    p->no_room[s] = (uint8_t)no_room;
+    atomic_fetch_add_explicit(&p->made_triangles, tris, memory_order_relaxed);
+    atomic_fetch_add_explicit(&p->busy_ns, now_ns() - t0, memory_order_relaxed);
+    int slow = atomic_load_explicit(&p->slow_ms, memory_order_relaxed);
+    if (slow) /* the test hook: batches that take many frames */
+        nanosleep(&(struct timespec){ slow / 1000, (long)(slow % 1000) * 1000000 }, NULL);
+    /* The one atomic swap that hands the mesh over; the producer's rule
+     * (one job per surface in flight, taken before the next) leaves the
+     * slot empty here. */
+    sw_publish_put(&p->slots[s], &p->made[s]);
+    atomic_fetch_sub_explicit(&p->outstanding, 1, memory_order_release);
+}
+
+/* Half of a busy worker's queue, the next one after this worker first. */
+static uint32_t steal(sw_seam_worker *w)
+{
+    sw_seam_workers *p = w->pool;
+    for (uint32_t k = 1; k < p->count; k++) {
+        uint32_t got = sw_steal_queue_steal(&p->worker[(w->index + k) % p->count].queue,
+                                            w->stolen, SW_SEAM_WORKER_QUEUE);
+        if (got) {
+            atomic_fetch_add_explicit(&p->steals, 1, memory_order_relaxed);
+            return got;
+        }
+    }
+    return 0;
+}
+
+static void *worker_main(void *arg)
+{
+    sw_seam_worker *w = arg;
+    sw_seam_workers *p = w->pool;
+    while (!atomic_load_explicit(&p->stop, memory_order_acquire)) {
+        if (atomic_load_explicit(&p->stall, memory_order_acquire)) {
+            nanosleep(&(struct timespec){ 0, 1000000 }, NULL);   /* the test hook: idle */
+            continue;
+        }
+        uint32_t s;
+        if (sw_steal_queue_pop(&w->queue, &s)) {
+            run_job(p, &w->maker, s);
+            continue;
+        }
+        uint32_t got = steal(w);
+        for (uint32_t i = 0; i < got; i++)
+            run_job(p, &w->maker, w->stolen[i]);
+        if (!got)
+            sem_wait(&p->wake);
+    }
+    return NULL;
+}
+
+static sw_status init_worker(sw_seam_workers *p, uint32_t i, const sw_seam_select *select,
+                             const sw_walk_sizes *m, int fill, sw_arena *arena, sw_error *err)
+{
+    sw_seam_worker *w = &p->worker[i];
+    w->pool = p;
+    w->index = i;
+    sw_status st = sw_seam_maker_init(&w->maker, p->pack, select, m, arena, err);
+    if (st == SW_OK && fill)
+        st = sw_seam_fill_init(&w->fill, SW_WALK_VERTICES, SW_WALK_INDICES, arena, err);
+    if (st == SW_OK)
+        st = sw_steal_queue_init(&w->queue, SW_SEAM_WORKER_QUEUE, arena, err);
+    if (st != SW_OK)
+        return st;
+    w->maker.fill = fill ? &w->fill : NULL;
+    w->stolen = sw_arena_alloc(arena, SW_SEAM_WORKER_QUEUE * sizeof(uint32_t), 64);
+    if (!w->stolen)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for worker %u", i);
+    return SW_OK;
+}
+
+static sw_status init_shared(sw_seam_workers *p, uint32_t n, sw_arena *arena, sw_error *err)
+{
+    p->jobs = sw_arena_alloc(arena, (n + 1ull) * sizeof *p->jobs, 64);
+    p->made = sw_arena_alloc(arena, (n + 1ull) * sizeof *p->made, 64);
+    p->no_room = sw_arena_alloc(arena, n + 1ull, 64);
+    p->slots = sw_arena_alloc(arena, (n + 1ull) * sizeof *p->slots, 64);
+    if (!p->jobs || !p->made || !p->no_room || !p->slots)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the workers' state");
+    memset(p->made, 0, (n + 1ull) * sizeof *p->made);
+    memset(p->no_room, 0, n + 1ull);
+    for (uint32_t s = 0; s <= n; s++)
+        atomic_init(&p->slots[s], NULL);
+    return sw_retire_ring_init(&p->retire, sw_walk_retire_capacity(n), arena, err);
+}
+
+sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack *pack,
+                               const sw_seam_select *select, sw_seam_cache *cache,
+                               const sw_walk_sizes *m, int fill, sw_arena *shared,
+                               sw_arena *arena, sw_error *err)
+{
+    memset(p, 0, sizeof *p);
+    if (count < 1 || count > SW_SEAM_WORKERS_MAX)
+        return sw_error_set(err, SW_ERR_ARG, "workers: %u, expected 1 to %d", (unsigned)count,
+                            SW_SEAM_WORKERS_MAX);
+    p->pack = pack, p->cache = cache, p->count = count;
+    atomic_init(&p->outstanding, 0);
+    atomic_init(&p->stop, 0);
+    atomic_init(&p->stall, 0);
+    atomic_init(&p->slow_ms, 0);
+    atomic_init(&p->made_triangles, 0);
+    atomic_init(&p->busy_ns, 0);
+    atomic_init(&p->steals, 0);
+    sw_status st = init_shared(p, cache->surface_count, shared, err);
+    for (uint32_t i = 0; i < count && st == SW_OK; i++)
+        st = init_worker(p, i, select, m, fill, arena, err);
+    if (st != SW_OK)
+        return st;
+    if (pthread_mutex_init(&p->alloc_lock, NULL) != 0 || sem_init(&p->wake, 0, 0) != 0)
+        return sw_error_set(err, SW_ERR_IO, "workers: cannot make their lock or semaphore");
+    p->lock_up = p->sem_up = 1;
+    for (uint32_t i = 0; i < count; i++) {
+        if (pthread_create(&p->worker[i].thread, NULL, worker_main, &p->worker[i]) != 0) {
+            sw_seam_workers_stop(p);
+            return sw_error_set(err, SW_ERR_IO, "workers: cannot start thread %u", i);
+        }
+        p->worker[i].started = 1;
+    }
+    return SW_OK;
+}
+
+int sw_seam_workers_push(sw_seam_workers *p, uint32_t s)
+{
+    for (uint32_t k = 0; k < p->count; k++) {
+        uint32_t q = (p->next_queue + k) % p->count;
+        /* Counted before a worker can see it, so the count never dips
+         * below what is in flight. */
+        atomic_fetch_add_explicit(&p->outstanding, 1, memory_order_relaxed);
+        if (sw_steal_queue_push(&p->worker[q].queue, s)) {
+            p->next_queue = (q + 1) % p->count;
+            return 1;
+        }
+        atomic_fetch_sub_explicit(&p->outstanding, 1, memory_order_relaxed);
+    }
+    return 0;
+}
+
+int sw_seam_workers_help(sw_seam_workers *p, sw_seam_maker *maker)
+{
+    for (uint32_t k = 0; k < p->count; k++) {
+        uint32_t s;
+        if (sw_steal_queue_steal(&p->worker[k].queue, &s, 1)) {
+            run_job(p, maker, s);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+void sw_seam_workers_wake(sw_seam_workers *p)
+{
+    for (uint32_t k = 0; k < p->count; k++)
+        sem_post(&p->wake);
+}
+
+void sw_seam_workers_stop(sw_seam_workers *p)
+{
+    atomic_store_explicit(&p->stop, 1, memory_order_release);
+    if (p->sem_up)
+        for (uint32_t k = 0; k < p->count; k++)
+            sem_post(&p->wake);
+    for (uint32_t i = 0; i < p->count; i++)
+        if (p->worker[i].started)
+            pthread_join(p->worker[i].thread, NULL);
+    for (uint32_t i = 0; i < p->count; i++)
+        p->worker[i].started = 0;
+    if (p->sem_up)
+        sem_destroy(&p->wake);
+    if (p->lock_up)
+        pthread_mutex_destroy(&p->alloc_lock);
+    p->sem_up = p->lock_up = 0;
+}

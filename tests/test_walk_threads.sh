@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# The threaded walk end to end (firmware/sw_seam_walk.h, "Threads"):
+#   test_walk_threads.sh BUILD_DIR SOURCE_DIR
+# - P never blocks on T: the workers stalled from frame 4 on (a test hook),
+#   every frame still comes, drawn from the meshes it has, crack-free (0
+#   cracks, 0 gaps in the seams as drawn), the work left undone counted as
+#   frames behind; were the GL thread waiting for a worker the walk would
+#   hang and the test time out (ctest TIMEOUT);
+# - the async walk with two workers on its own: crack-free every measured
+#   frame, no allocation after init, batches swapped in, jobs stolen;
+# - slow workers (each job published 15 ms late, a test hook): batches take
+#   many frames, and none may show before it is whole: no T-vertex, gap or
+#   crack. Limit: a walk deliberately broken to swap each mesh in as it
+#   came (not whole batches) passed this too, on the teaset, a 2,000- and
+#   the 40,000-patch showroom: the seams as drawn did not tell the two
+#   apart there, so the batch rule rests on its construction
+#   (firmware/sw_seam_walk.h) more than on this check.
+# - --sync-work 1 (the tests' deterministic frames) draws exactly what
+#   --workers 0 draws;
+# - bad --workers / --target-ms values and too little memory for the
+#   workers are one clear error line.
+# Every walk here passes --sync-work 0 itself: the suite sets
+# SEAMWALK_TEST_SYNC_WORK=1 for everything else.
+set -uo pipefail
+build=$1 src=$2
+work=$build/tests/walk_threads
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+walker=$build/firmware/seamwalk
+"$build/assets/seamwalk-pack" build "$src/assets/samples/teaset.ini" -o "$work/teaset.swpack" \
+  > /dev/null || fail "build"
+walk() { "$walker" --pack "$work/teaset.swpack" --headless 320x240 --orbit "$@"; }
+
+walk --frames 24 --measure-every 1 --workers 1 --sync-work 0 --test-stall-workers 4 \
+  --stats "$work/stalled.json" > /dev/null || fail "walk with the workers stalled"
+walk --frames 24 --measure-every 1 --workers 2 --sync-work 0 --stats "$work/async.json" \
+  > /dev/null || fail "walk with two workers"
+walk --frames 24 --measure-every 1 --workers 1 --sync-work 0 --test-slow-workers 15 \
+  --stats "$work/slow.json" > /dev/null || fail "walk with slow workers"
+python3 - "$work/stalled.json" "$work/async.json" "$work/slow.json" <<'PY' || fail "threaded walks"
+import json, sys
+stalled, run, slow = (json.load(open(p)) for p in sys.argv[1:4])
+for name, j in (("stalled", stalled), ("async", run), ("slow", slow)):
+    t = j["threads"]
+    print("  %s: %d frames, tris median %d, cracks %d, gaps %d, T-vertices %d, batches %d, "
+          "jobs %d, frames behind max %d, bound ratio max %.2f, steals %d, error max %.3f px"
+          % (name, j["frames"], j["tris_per_frame"]["median"], j["cracks_max"],
+             j["seam_drawn"]["gaps_max"], j["seam_drawn"]["t_vertices_max"], t["batches"], t["jobs"], t["frames_behind_max"],
+             t["behind_ratio_max"], t["steals"], j["error_px"]["max"]))
+    assert j["frames"] == 24, name
+    assert j["cracks_max"] == 0 and j["seam_drawn"]["gaps_max"] == 0, name
+    assert j["seam_drawn"]["t_vertices_max"] == 0, name
+    assert j["seam_drawn"]["unchecked_frames"] == 0, name
+    assert j["mallocs_after_init"] == 0, name
+    assert t["sync_work"] == 0 and t["workers"] >= 1, name
+    assert j["tris_per_frame"]["median"] > 0, name
+# Stalled from frame 4: the batches that came before are all it swapped
+# in; what it asked for after waits, and the stats say how long.
+assert stalled["threads"]["batches"] <= 6
+assert stalled["threads"]["frames_behind_max"] >= 10
+assert run["threads"]["batches"] > stalled["threads"]["batches"]
+assert run["threads"]["frames_behind_max"] < stalled["threads"]["frames_behind_max"]
+PY
+
+for mode in "--workers 0" "--workers 1 --sync-work 1"; do
+  dir=$work/png_${mode// /_}
+  walk --frames 6 --png-dir "$dir" $mode > /dev/null || fail "walk $mode"
+done
+for f in "$work"/png_--workers_0/frame_*.png; do
+  "$build/tests/image_compare" "$f" "$work/png_--workers_1_--sync-work_1/$(basename "$f")" \
+    --level 0 --max-fraction 0 > /dev/null || fail "$(basename "$f"): --sync-work 1 differs"
+done
+
+for bad in "--workers -1" "--workers 17" "--workers x" "--target-ms 0" "--sync-work 2"; do
+  out=$(walk --frames 2 $bad 2>&1)
+  [ $? -eq 2 ] || fail "$bad: exit status"
+  echo "$out" | head -1 | grep -q "^seamwalk: ${bad%% *}" || fail "$bad: $(echo "$out" | head -1)"
+done
+need=$(walk --frames 2 --workers 0 --stats "$work/w0.json" > /dev/null &&
+       python3 -c "import json; print(int(json.load(open('$work/w0.json'))['arena_bytes'] / 1048576) + 1)")
+out=$(walk --frames 2 --workers 4 --sync-work 0 --memory-mb "$need" 2>&1)
+[ $? -eq 1 ] || fail "too little memory for the workers: exit status"
+echo "$out" | grep -q "with --workers 4 needs .* more than --memory-mb" || fail "memory: $out"
+echo "ok   stalled workers: frames go on crack-free; two workers: crack-free, no allocation;" \
+     "--sync-work 1 draws as --workers 0; bad options and memory refused"
