@@ -292,6 +292,25 @@ static double extrusion_mixed_bound(const sw_bezier_patch *patch, int along_u)
     return (dn + radius * dw) / w_min;
 }
 
+double sw_bezier_extrusion_mixed_bound(const sw_bezier_patch *patch)
+{
+    if (!patch->rational || check_patch(patch, NULL) != SW_OK)
+        return INFINITY;
+    double bound = fmin(extrusion_mixed_bound(patch, 0), extrusion_mixed_bound(patch, 1));
+    if (!isfinite(bound))
+        return INFINITY;
+    int n = patch->degree_u, m = patch->degree_v;
+    sw_box box = sw_bezier_control_box(patch);
+    sw_vec3 c = sw_box_center(&box);
+    double radius = 0;
+    for (size_t i = 0; i < (size_t)(n + 1) * (size_t)(m + 1); i++) {
+        const double *p = patch->ctrl + i * 4;
+        radius = fmax(radius, sw_v3_length(sw_v3_sub(sw_v3(p[0], p[1], p[2]), c)));
+    }
+    /* the same margins as sw_bezier_second_deriv_bounds's */
+    return bound * (1 + 1e-12) + 64 * DBL_EPSILON * radius * (n + m) * (n + m);
+}
+
 sw_status sw_bezier_second_deriv_bounds(const sw_bezier_patch *patch, sw_deriv_bounds *out,
                                         sw_error *err)
 {
@@ -323,8 +342,7 @@ sw_status sw_bezier_second_deriv_bounds(const sw_bezier_patch *patch, sw_deriv_b
      * bound an upper bound in floating point too. */
     double slack = 64 * DBL_EPSILON * radius * (n + m) * (n + m);
     out->uu = out->uu * (1 + 1e-12) + (n > 1 ? slack : 0);
-    double extruded = fmin(extrusion_mixed_bound(patch, 0), extrusion_mixed_bound(patch, 1));
-    out->uv = fmin(out->uv, extruded) * (1 + 1e-12) + slack;
+    out->uv = out->uv * (1 + 1e-12) + slack;
     out->vv = out->vv * (1 + 1e-12) + (m > 1 ? slack : 0);
     return SW_OK;
 }

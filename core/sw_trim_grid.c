@@ -176,7 +176,9 @@ static sw_status patch_bounds(tt_ctx *c, const sw_bezier_patch *p, double *out)
     }
     sw_deriv_bounds b;
     sw_status s = sw_bezier_second_deriv_bounds(p, &b, c->err);
-    out[0] = b.uu, out[1] = b.uv, out[2] = b.vv;
+    /* an extruded patch's mixed term: 0 on a cylinder, where the general
+     * bound made every cell of the cylinder four times too short */
+    out[0] = b.uu, out[1] = fmin(b.uv, sw_bezier_extrusion_mixed_bound(p)), out[2] = b.vv;
     return s;
 }
 
@@ -236,6 +238,13 @@ static sw_status bound_patch(tt_ctx *c, uint32_t p, double *tmp)
             double *o = g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su);
             if ((st = patch_bounds(c, &sub, o)) != SW_OK)
                 return st;
+            /* The whole patch's bounds hold on every piece of it (in the
+             * piece's units, divided by SUB^2). Tighter where the piece's
+             * own proof is blind: a cylinder's pieces are extrusions too,
+             * but their computed weights differ in the last bit, so only the
+             * whole patch gets the exact mixed bound 0. */
+            for (int k = 0; k < 3; k++)
+                o[k] = fmin(o[k], g->whole[3 * (size_t)p + (size_t)k] / (SUB * SUB));
         }
     }
     g->bounded[p] = 1;
@@ -350,6 +359,63 @@ static sw_status choose_counts(tt_ctx *c, double *cu, double *cv)
     return SW_OK;
 }
 
+/* The fewest intervals along axis (0: u) in sub-patch interval s of knot
+ * interval k that keep every bounded sub-patch there within e with the
+ * other axis's counts as they are: at least 1; 0 when one cannot be met
+ * (a capped count). */
+static double least_count(const tt_ctx *c, const double *cu, const double *cv, int axis,
+                          uint32_t k, int s)
+{
+    const tt_grid *g = &c->grid;
+    uint32_t across = (axis ? g->nku : g->nkv) - 1;
+    double most = 1;
+    for (uint32_t o = 0; o < across; o++) {
+        uint32_t kc = axis ? o : k, kr = axis ? k : o;
+        uint32_t p = sw_tt_knot_patch(c, kc, kr);
+        if (p == SW_TT_NONE || !g->bounded[p])
+            continue;
+        for (int t = 0; t < SUB; t++) {
+            int su = axis ? t : s, sv = axis ? s : t;
+            if (!meets_box(g, kc, kr, su, sv))
+                continue;
+            const double *m = g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su);
+            double need = axis ? second_for(m[0], m[1], m[2], 8 * c->error, cu[kc * SUB + su])
+                               : second_for(m[2], m[1], m[0], 8 * c->error, cv[kr * SUB + sv]);
+            if (!(need > 0))
+                return 0;
+            most = fmax(most, need);
+        }
+    }
+    return most;
+}
+
+/* choose_counts gives each column the largest count any sub-patch in it
+ * wants at that sub-patch's own best shape, and each row likewise, so
+ * where sub-patches want different shapes (one tall cells, its neighbour
+ * wide ones) both axes take the finer count and every cell is finer than
+ * any sub-patch needs. Coordinate descent on the counts: rows as few as
+ * the columns allow, then columns as few as the rows allow, until nothing
+ * drops (each step keeps every sub-patch within e; counts only fall). */
+static void tighten_counts(tt_ctx *c, double *cu, double *cv)
+{
+    const tt_grid *g = &c->grid;
+    for (int round = 0; round < 8; round++) {
+        int dropped = 0;
+        for (int axis = 1; axis >= 0; axis--) {
+            double *cnt = axis ? cv : cu;
+            uint32_t nk = (axis ? g->nkv : g->nku) - 1;
+            for (uint32_t k = 0; k < nk; k++)
+                for (int s = 0; s < SUB; s++) {
+                    double need = least_count(c, cu, cv, axis, k, s);
+                    if (need > 0 && need < cnt[k * SUB + (uint32_t)s])
+                        cnt[k * SUB + (uint32_t)s] = need, dropped = 1;
+                }
+        }
+        if (!dropped)
+            break;
+    }
+}
+
 /* Grid lines of one axis from the counts; SW_ERR_RANGE past the cap. */
 static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const double *count,
                            double **lines, uint32_t **kidx, uint8_t **sidx, uint32_t *n,
@@ -397,10 +463,23 @@ static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const do
  * patch's bounds hold). */
 static double bound_in(const tt_grid *g, uint32_t p, uint32_t su, uint32_t sv, double hu, double hv)
 {
-    if (su == SW_TT_WHOLE || sv == SW_TT_WHOLE)
-        return cell_error(g->whole + 3 * (size_t)p, hu, hv);
-    return cell_error(g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su),
-                      hu * SUB, hv * SUB);
+    if (su != SW_TT_WHOLE && sv != SW_TT_WHOLE)
+        return cell_error(g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su),
+                          hu * SUB, hv * SUB);
+    /* A cell across the sub-patches of a merged interval: each bound over
+     * the union is the largest of the pieces' (in patch units), or the
+     * whole patch's where smaller. Not the whole patch's alone: a merged row
+     * of a cylinder (straight along v) would take the whole arc's M_uu. */
+    double m[3] = {0, 0, 0};
+    for (uint32_t b = sv == SW_TT_WHOLE ? 0 : sv; b < (sv == SW_TT_WHOLE ? g->sub : sv + 1); b++)
+        for (uint32_t a = su == SW_TT_WHOLE ? 0 : su; a < (su == SW_TT_WHOLE ? g->sub : su + 1);
+             a++)
+            for (int k = 0; k < 3; k++)
+                m[k] = fmax(m[k], g->bounds[3 * ((size_t)p * SUB * SUB + b * SUB + a) + k] *
+                                      (SUB * SUB));
+    for (int k = 0; k < 3; k++)
+        m[k] = fmin(m[k], g->whole[3 * (size_t)p + (size_t)k]);
+    return cell_error(m, hu, hv);
 }
 
 /* Interval s of knot interval k with counts cnt: its sub-patch index
@@ -534,6 +613,7 @@ sw_status sw_tt_build_grid(tt_ctx *c)
     s = choose_counts(c, cu, cv);
     if (s != SW_OK)
         return s;
+    tighten_counts(c, cu, cv);
     merge_intervals(c, cu, cv);
     grid_bound(c, cu, cv, 0, 0, -1, 0);
     if ((s = lay_lines(c, g->ku, g->nku, cu, &g->gu, &g->col_k, &g->col_s, &g->ncol,

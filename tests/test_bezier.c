@@ -243,10 +243,19 @@ static void test_second_deriv_bounds_of_extrusions(void)
         }
         sw_deriv_bounds bound, sampled = sampled_second_derivs(&p);
         SW_CHECK(sw_bezier_second_deriv_bounds(&p, &bound, NULL) == SW_OK);
+        bound.uv = sw_bezier_extrusion_mixed_bound(&p);
         SW_CHECK_MSG(bound.uu >= sampled.uu && bound.uv >= sampled.uv && bound.vv >= sampled.vv,
                      "extrusion %d x %d: bound %g %g %g sampled %g %g %g", p.degree_u,
                      p.degree_v, bound.uu, bound.uv, bound.vv, sampled.uu, sampled.uv,
                      sampled.vv);
+    }
+    /* not an extrusion: curved both ways, or weights varying along the line */
+    for (int trial = 0; trial < 10; trial++) {
+        sw_bezier_patch p;
+        random_patch(ctrl, 2, 1 + trial % 3, 1, &p);
+        if (p.degree_v == 1)
+            ctrl[(size_t)(p.degree_u + 1) * 4 + 3] = ctrl[3] * 1.5;
+        SW_CHECK(isinf(sw_bezier_extrusion_mixed_bound(&p)));
     }
     const double h = sqrt(0.5);
     const double arc[3][4] = { { 1, 0, 0, 1 }, { 1, 1, 0, h }, { 0, 1, 0, 1 } };
@@ -261,6 +270,8 @@ static void test_second_deriv_bounds_of_extrusions(void)
         sw_bezier_patch p = { along_u ? 1 : 2, along_u ? 2 : 1, 1, c };
         sw_deriv_bounds bound, sampled = sampled_second_derivs(&p);
         SW_CHECK(sw_bezier_second_deriv_bounds(&p, &bound, NULL) == SW_OK);
+        SW_CHECK(bound.uv > 0.5); /* the general bound: blind to the structure */
+        bound.uv = sw_bezier_extrusion_mixed_bound(&p);
         SW_CHECK_MSG(bound.uv <= 1e-12 && sampled.uv <= 1e-12, "quarter cylinder: uv bound %g",
                      bound.uv);
         SW_CHECK(along_u ? bound.vv >= sampled.vv && bound.uu == 0

@@ -111,13 +111,15 @@ static void test_tjunction_step_merges_a_spike_tip_into_its_neighbour(void)
     for (int k = 0; k < 7; k++)
         wrong += h.slots[k].vertex != want[k] || h.slots[k].uv[0] != (float)k;
     SW_CHECK(wrong == 0);
-    /* a farther from x than the tolerance: left alone (no spike made either) */
+    /* a farther from x than the tolerance is a corner of its own: x goes
+     * into a-b as any T-junction (the spike's edge then runs twice along
+     * the loop, a seam with itself, as the boxed sphere's fillet ends) */
     for (int k = 0; k < 7; k++)
         h.slots[k].vertex = order[k];
     const double far[5][3] = {{2e-3, 1e-4, 0}, {0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
     poly.p = (double *)far;
-    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK && inserted == 0);
-    SW_CHECK(h.slot_count == 7 && h.slots[1].vertex == A);
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK && inserted == 1);
+    SW_CHECK(h.slot_count == 8 && h.slots[1].vertex == A && h.slots[2].vertex == X);
     free(h.slots);
     free(h.loops);
 }

@@ -126,8 +126,8 @@ static int insertion_on_edge(const sw_seam_host *h, const tj_use *u, uint32_t k,
  * would give x, a, x, b, a spike out to a and back, with a on one side of
  * the seam only (the boxed sphere: a fillet's trim tip at a sphere's pole
  * whose points were merged into x, 0.023 mm off; the drawn-seam check
- * found the tip as a gap point). Then a merges into x instead (within the
- * reach): both loops run x, b. Likewise b for a, b, x. */
+ * found the tip as a gap point). Then a merges into x instead when within
+ * the reach: both loops run x, b. Likewise b for a, b, x. */
 static int insertion(const sew_state *s, const sw_seam_host *h, const tj_use *u, uint32_t x,
                      tj_insert *out)
 {
@@ -140,12 +140,12 @@ static int insertion(const sew_state *s, const sw_seam_host *h, const tj_use *u,
         return 0;
     uint32_t spike = h->slots[prev_distinct(h, lp, k)].vertex == x ? a
                    : h->slots[next_distinct(h, lp, j)].vertex == x ? b : SW_SEAM_NONE;
-    if (spike != SW_SEAM_NONE) {
-        if (!(sw_v3_length(sw_v3_sub(at(s, spike), px)) <= reach))
-            return 0;
+    if (spike != SW_SEAM_NONE && sw_v3_length(sw_v3_sub(at(s, spike), px)) <= reach) {
         *out = (tj_insert){u->loop, k, {x, {0, 0}}, spike};
         return 1;
     }
+    /* A tip beyond the reach is a corner of its own: inserted as before, the
+     * spike's edge runs twice along the loop (a seam with itself). */
     return insertion_on_edge(h, u, k, j, pa, ab, px, x, out);
 }
 
