@@ -251,11 +251,6 @@ static sw_status bound_patch(tt_ctx *c, uint32_t p, double *tmp)
     return SW_OK;
 }
 
-static double cell_error(const double *m, double hu, double hv)
-{
-    return (m[0] * hu * hu + 2 * m[1] * hu * hv + m[2] * hv * hv) / 8;
-}
-
 /* Fewest intervals along the second axis with n along the first, for
  * bounds a (first axis), b (mixed), cc (second), or 0 when none is enough. */
 static double second_for(double a, double b, double cc, double r, double n)
@@ -461,25 +456,38 @@ static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const do
 /* The bound of a cell hu x hv (patch units) in sub-patch (su, sv) of patch
  * p; SW_TT_WHOLE for an interval not split into sub-patches (then the whole
  * patch's bounds hold). */
+static void bound_terms(const tt_grid *g, uint32_t p, uint32_t su, uint32_t sv, double hu,
+                        double hv, double t[3])
+{
+    double m[3] = {0, 0, 0};
+    if (su != SW_TT_WHOLE && sv != SW_TT_WHOLE) {
+        const double *b = g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su);
+        hu *= SUB, hv *= SUB;
+        m[0] = b[0], m[1] = b[1], m[2] = b[2];
+    } else {
+        /* A cell across the sub-patches of a merged interval: each bound
+         * over the union is the largest of the pieces' (in patch units), or
+         * the whole patch's where smaller. Not the whole patch's alone: a
+         * merged row of a cylinder (straight along v) would take the whole
+         * arc's M_uu. */
+        uint32_t a0 = su == SW_TT_WHOLE ? 0 : su, a1 = su == SW_TT_WHOLE ? g->sub : su + 1;
+        uint32_t b0 = sv == SW_TT_WHOLE ? 0 : sv, b1 = sv == SW_TT_WHOLE ? g->sub : sv + 1;
+        for (uint32_t b = b0; b < b1; b++)
+            for (uint32_t a = a0; a < a1; a++)
+                for (int k = 0; k < 3; k++)
+                    m[k] = fmax(m[k], g->bounds[3 * ((size_t)p * SUB * SUB + b * SUB + a) + k] *
+                                          (SUB * SUB));
+        for (int k = 0; k < 3; k++)
+            m[k] = fmin(m[k], g->whole[3 * (size_t)p + (size_t)k]);
+    }
+    t[0] = m[0] * hu * hu / 8, t[1] = 2 * m[1] * hu * hv / 8, t[2] = m[2] * hv * hv / 8;
+}
+
 static double bound_in(const tt_grid *g, uint32_t p, uint32_t su, uint32_t sv, double hu, double hv)
 {
-    if (su != SW_TT_WHOLE && sv != SW_TT_WHOLE)
-        return cell_error(g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su),
-                          hu * SUB, hv * SUB);
-    /* A cell across the sub-patches of a merged interval: each bound over
-     * the union is the largest of the pieces' (in patch units), or the
-     * whole patch's where smaller. Not the whole patch's alone: a merged row
-     * of a cylinder (straight along v) would take the whole arc's M_uu. */
-    double m[3] = {0, 0, 0};
-    for (uint32_t b = sv == SW_TT_WHOLE ? 0 : sv; b < (sv == SW_TT_WHOLE ? g->sub : sv + 1); b++)
-        for (uint32_t a = su == SW_TT_WHOLE ? 0 : su; a < (su == SW_TT_WHOLE ? g->sub : su + 1);
-             a++)
-            for (int k = 0; k < 3; k++)
-                m[k] = fmax(m[k], g->bounds[3 * ((size_t)p * SUB * SUB + b * SUB + a) + k] *
-                                      (SUB * SUB));
-    for (int k = 0; k < 3; k++)
-        m[k] = fmin(m[k], g->whole[3 * (size_t)p + (size_t)k]);
-    return cell_error(m, hu, hv);
+    double t[3];
+    bound_terms(g, p, su, sv, hu, hv, t);
+    return t[0] + t[1] + t[2];
 }
 
 /* Interval s of knot interval k with counts cnt: its sub-patch index
@@ -553,16 +561,25 @@ static void merge_intervals(tt_ctx *c, double *cu, double *cv)
     }
 }
 
-double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts_u,
-                        uint32_t parts_v)
+int sw_tt_cell_terms(const tt_ctx *c, uint32_t col, uint32_t row, double t[3])
 {
     const tt_grid *g = &c->grid;
     uint32_t kc = g->col_k[col], kr = g->row_k[row], p = sw_tt_knot_patch(c, kc, kr);
     if (p == SW_TT_NONE || !g->bounded[p])
-        return -1;
+        return 0;
     double hu = (g->gu[col + 1] - g->gu[col]) / (g->ku[kc + 1] - g->ku[kc]);
     double hv = (g->gv[row + 1] - g->gv[row]) / (g->kv[kr + 1] - g->kv[kr]);
-    return bound_in(g, p, g->col_s[col], g->row_s[row], hu / parts_u, hv / parts_v);
+    bound_terms(g, p, g->col_s[col], g->row_s[row], hu, hv, t);
+    return 1;
+}
+
+double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts_u,
+                        uint32_t parts_v)
+{
+    double t[3];
+    if (!sw_tt_cell_terms(c, col, row, t))
+        return -1;
+    return sw_tt_parts_bound(t, parts_u, parts_v);
 }
 
 static void find_box_range(tt_ctx *c)
