@@ -9,7 +9,13 @@
  * M_vv h_v^2) / 8 <= error and any triangle with its corners in one cell is
  * within error of the surface (Taylor with integral remainder; barycentric
  * variance <= h^2 / 4). Whole grid lines, never a local split, so no cell
- * has a T-vertex. Only sub-patches meeting the loops' box are bounded. */
+ * has a T-vertex. Only sub-patches meeting the loops' box are bounded.
+ * Three things keep the counts down: the counts are then lowered by
+ * coordinate descent (rows as few as the columns allow, then columns),
+ * every sub-patch bound is capped by the whole patch's (an exact bound the
+ * piece's own proof may miss), and a knot interval merged into one grid
+ * interval takes the largest of its pieces' bounds, not the whole patch's
+ * (a cylinder's row the full height keeps the pieces' M_uu). */
 #include <float.h>
 #include <math.h>
 #include <string.h>
