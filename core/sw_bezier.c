@@ -248,6 +248,69 @@ static sw_status check_patch(const sw_bezier_patch *patch, sw_error *err)
  * norm is at most R, the largest of their norms; F_u, F_uu, F_uv follow from
  * the quotient rule with w >= w_min (paper 000 section 4.1 needs only an upper
  * bound; the ordering of the terms mirrors the identities in the header). */
+/* The mixed bound of a rational patch linear in one direction with weights
+ * constant along it (an extrusion: cylinders, extruded profiles): there
+ * S = A(s) + t B(s), B the rational curve of the rows' differences b_i with
+ * the weights w_i, so S_st = B'(s) and, with c the centre of the b_i and
+ * N = sum w_i (b_i - c) B_i, |B'| <= (max |N'| + max |b_i - c| max |W'|) /
+ * w_min (B - c lies in the hull of the b_i - c). An exact extrusion has
+ * b_i = c: 0, where the general bound, blind to the structure, gave a
+ * quarter cylinder 4 (and the trimmed benchmark's cylinder 3 times the
+ * triangles). Returns INFINITY when the patch is not of that kind. along_u:
+ * the patch is linear in u (else in v). */
+static double extrusion_mixed_bound(const sw_bezier_patch *patch, int along_u)
+{
+    int n = patch->degree_u, m = patch->degree_v;
+    int k = along_u ? m : n; /* the curved direction's degree */
+    if (!patch->rational || (along_u ? n : m) != 1)
+        return INFINITY;
+    double b[SW_BEZIER_MAX_ORDER][3], w[SW_BEZIER_MAX_ORDER], c[3] = { 0, 0, 0 };
+    for (int i = 0; i <= k; i++) {
+        const double *p0 = patch->ctrl + (along_u ? (size_t)i * 2 : (size_t)i) * 4;
+        const double *p1 = p0 + (along_u ? 1 : (size_t)(n + 1)) * 4;
+        if (p0[3] != p1[3])
+            return INFINITY;
+        w[i] = p0[3];
+        for (int d = 0; d < 3; d++)
+            b[i][d] = p1[d] - p0[d], c[d] += b[i][d] / (k + 1);
+    }
+    double radius = 0, dn = 0, dw = 0, w_min = INFINITY;
+    for (int i = 0; i <= k; i++) {
+        double r2 = 0, e2 = 0;
+        for (int d = 0; d < 3; d++) {
+            r2 += (b[i][d] - c[d]) * (b[i][d] - c[d]);
+            if (i < k) {
+                double e = w[i + 1] * (b[i + 1][d] - c[d]) - w[i] * (b[i][d] - c[d]);
+                e2 += e * e;
+            }
+        }
+        radius = fmax(radius, sqrt(r2));
+        dn = fmax(dn, k * sqrt(e2));
+        dw = i < k ? fmax(dw, k * fabs(w[i + 1] - w[i])) : dw;
+        w_min = fmin(w_min, w[i]);
+    }
+    return (dn + radius * dw) / w_min;
+}
+
+double sw_bezier_extrusion_mixed_bound(const sw_bezier_patch *patch)
+{
+    if (!patch->rational || check_patch(patch, NULL) != SW_OK)
+        return INFINITY;
+    double bound = fmin(extrusion_mixed_bound(patch, 0), extrusion_mixed_bound(patch, 1));
+    if (!isfinite(bound))
+        return INFINITY;
+    int n = patch->degree_u, m = patch->degree_v;
+    sw_box box = sw_bezier_control_box(patch);
+    sw_vec3 c = sw_box_center(&box);
+    double radius = 0;
+    for (size_t i = 0; i < (size_t)(n + 1) * (size_t)(m + 1); i++) {
+        const double *p = patch->ctrl + i * 4;
+        radius = fmax(radius, sw_v3_length(sw_v3_sub(sw_v3(p[0], p[1], p[2]), c)));
+    }
+    /* the same margins as sw_bezier_second_deriv_bounds's */
+    return bound * (1 + 1e-12) + 64 * DBL_EPSILON * radius * (n + m) * (n + m);
+}
+
 sw_status sw_bezier_second_deriv_bounds(const sw_bezier_patch *patch, sw_deriv_bounds *out,
                                         sw_error *err)
 {

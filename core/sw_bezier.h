@@ -63,6 +63,16 @@ typedef struct sw_deriv_bounds { double uu, uv, vv; } sw_deriv_bounds;
 sw_status sw_bezier_second_deriv_bounds(const sw_bezier_patch *patch, sw_deriv_bounds *out,
                                         sw_error *err);
 
+/* A tighter bound of |F_uv| for a rational patch linear in one direction
+ * with its weights constant along it (an extrusion: cylinders, extruded
+ * profiles): 0 up to rounding for an exact cylinder, where
+ * sw_bezier_second_deriv_bounds, blind to the structure, gives a quarter
+ * cylinder 4. INFINITY for any other patch. The trimmed tessellator takes
+ * the smaller of the two; the pack builder (seam flattening, the pack's
+ * patch bounds) does not yet: with it the boxed sphere's trims flatten to
+ * other points and its sewing leaves free edges at a sphere's pole. */
+double sw_bezier_extrusion_mixed_bound(const sw_bezier_patch *patch);
+
 /* Box of the control points (contains the patch: convex hull property). */
 sw_box sw_bezier_control_box(const sw_bezier_patch *patch);
 

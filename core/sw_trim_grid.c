@@ -9,7 +9,13 @@
  * M_vv h_v^2) / 8 <= error and any triangle with its corners in one cell is
  * within error of the surface (Taylor with integral remainder; barycentric
  * variance <= h^2 / 4). Whole grid lines, never a local split, so no cell
- * has a T-vertex. Only sub-patches meeting the loops' box are bounded. */
+ * has a T-vertex. Only sub-patches meeting the loops' box are bounded.
+ * Three things keep the counts down: the counts are then lowered by
+ * coordinate descent (rows as few as the columns allow, then columns),
+ * every sub-patch bound is capped by the whole patch's (an exact bound the
+ * piece's own proof may miss), and a knot interval merged into one grid
+ * interval takes the largest of its pieces' bounds, not the whole patch's
+ * (a cylinder's row the full height keeps the pieces' M_uu). */
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -176,7 +182,9 @@ static sw_status patch_bounds(tt_ctx *c, const sw_bezier_patch *p, double *out)
     }
     sw_deriv_bounds b;
     sw_status s = sw_bezier_second_deriv_bounds(p, &b, c->err);
-    out[0] = b.uu, out[1] = b.uv, out[2] = b.vv;
+    /* an extruded patch's mixed term: 0 on a cylinder, where the general
+     * bound made every cell of the cylinder four times too short */
+    out[0] = b.uu, out[1] = fmin(b.uv, sw_bezier_extrusion_mixed_bound(p)), out[2] = b.vv;
     return s;
 }
 
@@ -236,15 +244,17 @@ static sw_status bound_patch(tt_ctx *c, uint32_t p, double *tmp)
             double *o = g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su);
             if ((st = patch_bounds(c, &sub, o)) != SW_OK)
                 return st;
+            /* The whole patch's bounds hold on every piece of it (in the
+             * piece's units, divided by SUB^2). Tighter where the piece's
+             * own proof is blind: a cylinder's pieces are extrusions too,
+             * but their computed weights differ in the last bit, so only the
+             * whole patch gets the exact mixed bound 0. */
+            for (int k = 0; k < 3; k++)
+                o[k] = fmin(o[k], g->whole[3 * (size_t)p + (size_t)k] / (SUB * SUB));
         }
     }
     g->bounded[p] = 1;
     return SW_OK;
-}
-
-static double cell_error(const double *m, double hu, double hv)
-{
-    return (m[0] * hu * hu + 2 * m[1] * hu * hv + m[2] * hv * hv) / 8;
 }
 
 /* Fewest intervals along the second axis with n along the first, for
@@ -350,6 +360,63 @@ static sw_status choose_counts(tt_ctx *c, double *cu, double *cv)
     return SW_OK;
 }
 
+/* The fewest intervals along axis (0: u) in sub-patch interval s of knot
+ * interval k that keep every bounded sub-patch there within e with the
+ * other axis's counts as they are: at least 1; 0 when one cannot be met
+ * (a capped count). */
+static double least_count(const tt_ctx *c, const double *cu, const double *cv, int axis,
+                          uint32_t k, int s)
+{
+    const tt_grid *g = &c->grid;
+    uint32_t across = (axis ? g->nku : g->nkv) - 1;
+    double most = 1;
+    for (uint32_t o = 0; o < across; o++) {
+        uint32_t kc = axis ? o : k, kr = axis ? k : o;
+        uint32_t p = sw_tt_knot_patch(c, kc, kr);
+        if (p == SW_TT_NONE || !g->bounded[p])
+            continue;
+        for (int t = 0; t < SUB; t++) {
+            int su = axis ? t : s, sv = axis ? s : t;
+            if (!meets_box(g, kc, kr, su, sv))
+                continue;
+            const double *m = g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su);
+            double need = axis ? second_for(m[0], m[1], m[2], 8 * c->error, cu[kc * SUB + su])
+                               : second_for(m[2], m[1], m[0], 8 * c->error, cv[kr * SUB + sv]);
+            if (!(need > 0))
+                return 0;
+            most = fmax(most, need);
+        }
+    }
+    return most;
+}
+
+/* choose_counts gives each column the largest count any sub-patch in it
+ * wants at that sub-patch's own best shape, and each row likewise, so
+ * where sub-patches want different shapes (one tall cells, its neighbour
+ * wide ones) both axes take the finer count and every cell is finer than
+ * any sub-patch needs. Coordinate descent on the counts: rows as few as
+ * the columns allow, then columns as few as the rows allow, until nothing
+ * drops (each step keeps every sub-patch within e; counts only fall). */
+static void tighten_counts(tt_ctx *c, double *cu, double *cv)
+{
+    const tt_grid *g = &c->grid;
+    for (int round = 0; round < 8; round++) {
+        int dropped = 0;
+        for (int axis = 1; axis >= 0; axis--) {
+            double *cnt = axis ? cv : cu;
+            uint32_t nk = (axis ? g->nkv : g->nku) - 1;
+            for (uint32_t k = 0; k < nk; k++)
+                for (int s = 0; s < SUB; s++) {
+                    double need = least_count(c, cu, cv, axis, k, s);
+                    if (need > 0 && need < cnt[k * SUB + (uint32_t)s])
+                        cnt[k * SUB + (uint32_t)s] = need, dropped = 1;
+                }
+        }
+        if (!dropped)
+            break;
+    }
+}
+
 /* Grid lines of one axis from the counts; SW_ERR_RANGE past the cap. */
 static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const double *count,
                            double **lines, uint32_t **kidx, uint8_t **sidx, uint32_t *n,
@@ -395,12 +462,38 @@ static sw_status lay_lines(tt_ctx *c, const double *knots, uint32_t nk, const do
 /* The bound of a cell hu x hv (patch units) in sub-patch (su, sv) of patch
  * p; SW_TT_WHOLE for an interval not split into sub-patches (then the whole
  * patch's bounds hold). */
+static void bound_terms(const tt_grid *g, uint32_t p, uint32_t su, uint32_t sv, double hu,
+                        double hv, double t[3])
+{
+    double m[3] = {0, 0, 0};
+    if (su != SW_TT_WHOLE && sv != SW_TT_WHOLE) {
+        const double *b = g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su);
+        hu *= SUB, hv *= SUB;
+        m[0] = b[0], m[1] = b[1], m[2] = b[2];
+    } else {
+        /* A cell across the sub-patches of a merged interval: each bound
+         * over the union is the largest of the pieces' (in patch units), or
+         * the whole patch's where smaller. Not the whole patch's alone: a
+         * merged row of a cylinder (straight along v) would take the whole
+         * arc's M_uu. */
+        uint32_t a0 = su == SW_TT_WHOLE ? 0 : su, a1 = su == SW_TT_WHOLE ? g->sub : su + 1;
+        uint32_t b0 = sv == SW_TT_WHOLE ? 0 : sv, b1 = sv == SW_TT_WHOLE ? g->sub : sv + 1;
+        for (uint32_t b = b0; b < b1; b++)
+            for (uint32_t a = a0; a < a1; a++)
+                for (int k = 0; k < 3; k++)
+                    m[k] = fmax(m[k], g->bounds[3 * ((size_t)p * SUB * SUB + b * SUB + a) + k] *
+                                          (SUB * SUB));
+        for (int k = 0; k < 3; k++)
+            m[k] = fmin(m[k], g->whole[3 * (size_t)p + (size_t)k]);
+    }
+    t[0] = m[0] * hu * hu / 8, t[1] = 2 * m[1] * hu * hv / 8, t[2] = m[2] * hv * hv / 8;
+}
+
 static double bound_in(const tt_grid *g, uint32_t p, uint32_t su, uint32_t sv, double hu, double hv)
 {
-    if (su == SW_TT_WHOLE || sv == SW_TT_WHOLE)
-        return cell_error(g->whole + 3 * (size_t)p, hu, hv);
-    return cell_error(g->bounds + 3 * ((size_t)p * SUB * SUB + sv * SUB + su),
-                      hu * SUB, hv * SUB);
+    double t[3];
+    bound_terms(g, p, su, sv, hu, hv, t);
+    return t[0] + t[1] + t[2];
 }
 
 /* Interval s of knot interval k with counts cnt: its sub-patch index
@@ -474,16 +567,25 @@ static void merge_intervals(tt_ctx *c, double *cu, double *cv)
     }
 }
 
-double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts_u,
-                        uint32_t parts_v)
+int sw_tt_cell_terms(const tt_ctx *c, uint32_t col, uint32_t row, double t[3])
 {
     const tt_grid *g = &c->grid;
     uint32_t kc = g->col_k[col], kr = g->row_k[row], p = sw_tt_knot_patch(c, kc, kr);
     if (p == SW_TT_NONE || !g->bounded[p])
-        return -1;
+        return 0;
     double hu = (g->gu[col + 1] - g->gu[col]) / (g->ku[kc + 1] - g->ku[kc]);
     double hv = (g->gv[row + 1] - g->gv[row]) / (g->kv[kr + 1] - g->kv[kr]);
-    return bound_in(g, p, g->col_s[col], g->row_s[row], hu / parts_u, hv / parts_v);
+    bound_terms(g, p, g->col_s[col], g->row_s[row], hu, hv, t);
+    return 1;
+}
+
+double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts_u,
+                        uint32_t parts_v)
+{
+    double t[3];
+    if (!sw_tt_cell_terms(c, col, row, t))
+        return -1;
+    return sw_tt_parts_bound(t, parts_u, parts_v);
 }
 
 static void find_box_range(tt_ctx *c)
@@ -534,6 +636,7 @@ sw_status sw_tt_build_grid(tt_ctx *c)
     s = choose_counts(c, cu, cv);
     if (s != SW_OK)
         return s;
+    tighten_counts(c, cu, cv);
     merge_intervals(c, cu, cv);
     grid_bound(c, cu, cv, 0, 0, -1, 0);
     if ((s = lay_lines(c, g->ku, g->nku, cu, &g->gu, &g->col_k, &g->col_s, &g->ncol,

@@ -51,16 +51,17 @@ static uint8_t parts_for(tt_ctx *c, uint32_t col, uint32_t row, uint32_t a, uint
     }
     uint32_t crowd = (inside + SW_TT_MAX_CELL_POINTS - 1) / SW_TT_MAX_CELL_POINTS;
     crowd = crowd < 1 ? 1 : crowd > SW_TT_MAX_SPLIT ? SW_TT_MAX_SPLIT : crowd;
-    if (c->border_error < c->error &&
-        sw_tt_cell_bound(c, col, row, crowd, crowd) > c->border_error) {
+    double t[3];
+    if (c->border_error < c->error && sw_tt_cell_terms(c, col, row, t) &&
+        sw_tt_parts_bound(t, crowd, crowd) > c->border_error) {
         uint32_t best = SW_TT_MAX_SPLIT * SW_TT_MAX_SPLIT + 1;
         ku = kv = SW_TT_MAX_SPLIT;
         for (uint32_t i = crowd; i <= SW_TT_MAX_SPLIT; i++)
             for (uint32_t j = crowd; j <= SW_TT_MAX_SPLIT && i * j < best; j++)
-                if (sw_tt_cell_bound(c, col, row, i, j) <= c->border_error)
+                if (sw_tt_parts_bound(t, i, j) <= c->border_error)
                     best = i * j, ku = i, kv = j;
         if (best > SW_TT_MAX_SPLIT * SW_TT_MAX_SPLIT) /* capped: say so */
-            c->res->error_bound = fmax(c->res->error_bound, sw_tt_cell_bound(c, col, row, ku, kv));
+            c->res->error_bound = fmax(c->res->error_bound, sw_tt_parts_bound(t, ku, kv));
     } else {
         ku = kv = crowd;
     }

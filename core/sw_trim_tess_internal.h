@@ -114,6 +114,16 @@ uint32_t sw_tt_knot_patch(const tt_ctx *c, uint32_t kc, uint32_t kr);
 double sw_tt_cell_bound(const tt_ctx *c, uint32_t col, uint32_t row, uint32_t parts_u,
                         uint32_t parts_v);
 
+/* The three terms of that bound for the whole cell, into t (0 when not
+ * known): a cell cut into i x j parts has t[0] / i^2 + t[1] / (i j) +
+ * t[2] / j^2, so a search over parts costs no bounds lookup. */
+int sw_tt_cell_terms(const tt_ctx *c, uint32_t col, uint32_t row, double t[3]);
+
+static inline double sw_tt_parts_bound(const double t[3], uint32_t i, uint32_t j)
+{
+    return t[0] / ((double)i * i) + t[1] / ((double)i * j) + t[2] / ((double)j * j);
+}
+
 /* Segments into cells (c->pairs, c->row_first), refining the grid where a
  * cell holds a whole hole or too many loop points (core/sw_trim_bucket.c). */
 sw_status sw_tt_bucket(tt_ctx *c);

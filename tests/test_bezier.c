@@ -225,6 +225,60 @@ static void test_second_deriv_bounds_of_bilinear(void)
     SW_CHECK(b.uv <= 1e-12);
 }
 
+/* Rational patches linear in one direction with weights constant along it
+ * (extrusions): random ones keep the bound an upper bound; an exact
+ * extruded quarter circle, either way round, has F_uv = 0 and its bound is
+ * 0 up to rounding (the general bound gave 1.2, so the cylinder got far
+ * more rows than it needs). */
+static void test_second_deriv_bounds_of_extrusions(void)
+{
+    double ctrl[MAXN * MAXN * 4];
+    for (int trial = 0; trial < 40; trial++) {
+        int n = 1 + (int)(sw_test_random() * 6), along_u = trial & 1;
+        sw_bezier_patch p;
+        random_patch(ctrl, along_u ? 1 : n, along_u ? n : 1, 1, &p);
+        for (int i = 0; i <= n; i++) { /* the second row's weights copy the first's */
+            double *a = ctrl + (along_u ? (size_t)i * 2 : (size_t)i) * 4;
+            a[(along_u ? 1 : (size_t)(n + 1)) * 4 + 3] = a[3];
+        }
+        sw_deriv_bounds bound, sampled = sampled_second_derivs(&p);
+        SW_CHECK(sw_bezier_second_deriv_bounds(&p, &bound, NULL) == SW_OK);
+        bound.uv = sw_bezier_extrusion_mixed_bound(&p);
+        SW_CHECK_MSG(bound.uu >= sampled.uu && bound.uv >= sampled.uv && bound.vv >= sampled.vv,
+                     "extrusion %d x %d: bound %g %g %g sampled %g %g %g", p.degree_u,
+                     p.degree_v, bound.uu, bound.uv, bound.vv, sampled.uu, sampled.uv,
+                     sampled.vv);
+    }
+    /* not an extrusion: curved both ways, or weights varying along the line */
+    for (int trial = 0; trial < 10; trial++) {
+        sw_bezier_patch p;
+        random_patch(ctrl, 2, 1 + trial % 3, 1, &p);
+        if (p.degree_v == 1)
+            ctrl[(size_t)(p.degree_u + 1) * 4 + 3] = ctrl[3] * 1.5;
+        SW_CHECK(isinf(sw_bezier_extrusion_mixed_bound(&p)));
+    }
+    const double h = sqrt(0.5);
+    const double arc[3][4] = { { 1, 0, 0, 1 }, { 1, 1, 0, h }, { 0, 1, 0, 1 } };
+    for (int along_u = 0; along_u < 2; along_u++) {
+        double c[6 * 4];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 2; j++) {
+                double *q = c + (along_u ? (size_t)i * 2 + j : (size_t)j * 3 + i) * 4;
+                memcpy(q, arc[i], sizeof arc[i]);
+                q[2] = 2.0 * j;
+            }
+        sw_bezier_patch p = { along_u ? 1 : 2, along_u ? 2 : 1, 1, c };
+        sw_deriv_bounds bound, sampled = sampled_second_derivs(&p);
+        SW_CHECK(sw_bezier_second_deriv_bounds(&p, &bound, NULL) == SW_OK);
+        SW_CHECK(bound.uv > 0.5); /* the general bound: blind to the structure */
+        bound.uv = sw_bezier_extrusion_mixed_bound(&p);
+        SW_CHECK_MSG(bound.uv <= 1e-12 && sampled.uv <= 1e-12, "quarter cylinder: uv bound %g",
+                     bound.uv);
+        SW_CHECK(along_u ? bound.vv >= sampled.vv && bound.uu == 0
+                         : bound.uu >= sampled.uu && bound.vv == 0);
+    }
+}
+
 static void test_second_deriv_bounds_reject_bad_weight(void)
 {
     double ctrl[16 * 4];
@@ -328,6 +382,7 @@ int main(void)
     SW_RUN(test_second_deriv_bounds_hold);
     SW_RUN(test_second_deriv_bounds_tight_for_bicubic);
     SW_RUN(test_second_deriv_bounds_of_bilinear);
+    SW_RUN(test_second_deriv_bounds_of_extrusions);
     SW_RUN(test_second_deriv_bounds_reject_bad_weight);
     SW_RUN(test_control_box_contains_patch);
     SW_RUN(test_patch_from_float_copies);

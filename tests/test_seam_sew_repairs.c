@@ -80,6 +80,50 @@ static void test_tjunction_step_inserts_the_vertex_the_intervals_missed(void)
     free(h.loops);
 }
 
+/* Step 3b where the vertex is already the neighbour (the boxed sphere's
+ * fillet tip at a sphere's pole): one loop runs x, a, b, C, the other b, x,
+ * D, with x 2e-4 from a and on the chord a-b. Inserting x into a-b would
+ * make the first loop x, a, x, b: a spike out to a, which the other loop
+ * lacks (a gap point where the seams are drawn). a merges into x instead:
+ * both loops run x, b; every slot stays, a's with its own (u, v). */
+static void test_tjunction_step_merges_a_spike_tip_into_its_neighbour(void)
+{
+    const double p[5][3] = {{2e-4, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
+    enum { X, A, B, C, D };
+    sw_seam_polylines poly = {.p = (double *)p, .vertex_count = 5, .tolerance = 1e-3};
+    sw_error err = {0};
+    sew_state st = {.poly = &poly, .tol = 1e-3, .err = &err};
+    sw_seam_host h = {0};
+    h.slots = malloc(7 * sizeof *h.slots);
+    h.loops = malloc(2 * sizeof *h.loops);
+    const uint32_t order[7] = {X, A, B, C, B, X, D};
+    for (int k = 0; k < 7; k++)
+        h.slots[k] = (sw_seam_slot){order[k], {(float)k, (float)(k * k)}};
+    h.loops[0] = (sw_seam_loop){0, 0, 4, SW_SEAM_LOOP_OUTER};
+    h.loops[1] = (sw_seam_loop){1, 4, 3, SW_SEAM_LOOP_OUTER};
+    h.slot_count = 7, h.loop_count = 2;
+    size_t inserted = 0;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK);
+    SW_CHECK(inserted == 1 && h.slot_count == 7);
+    SW_CHECK(h.loops[0].slot_count == 4 && h.loops[1].first_slot == 4);
+    const uint32_t want[7] = {X, X, B, C, B, X, D};
+    int wrong = 0;
+    for (int k = 0; k < 7; k++)
+        wrong += h.slots[k].vertex != want[k] || h.slots[k].uv[0] != (float)k;
+    SW_CHECK(wrong == 0);
+    /* a farther from x than the tolerance is a corner of its own: x goes
+     * into a-b as any T-junction (the spike's edge then runs twice along
+     * the loop, a seam with itself, as the boxed sphere's fillet ends) */
+    for (int k = 0; k < 7; k++)
+        h.slots[k].vertex = order[k];
+    const double far[5][3] = {{2e-3, 1e-4, 0}, {0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
+    poly.p = (double *)far;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK && inserted == 1);
+    SW_CHECK(h.slot_count == 8 && h.slots[1].vertex == A && h.slots[2].vertex == X);
+    free(h.slots);
+    free(h.loops);
+}
+
 /* A trim running 2% past its surface's domain (exporters' p-curves do;
  * the runtime's tessellator refuses a loop that far out, leaving a hole):
  * flattened onto the domain's border, every point inside, counted. */
@@ -122,5 +166,6 @@ int main(void)
     SW_RUN(test_trim_gaps_widen_the_tolerance);
     SW_RUN(test_trim_past_the_domain_is_put_on_it);
     SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
+    SW_RUN(test_tjunction_step_merges_a_spike_tip_into_its_neighbour);
     return sw_test_finish();
 }

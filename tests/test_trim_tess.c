@@ -359,6 +359,11 @@ static void test_cylinder_quarter(void)
     SW_CHECK_MSG(border <= 2 * err, "%g", border);
     SW_CHECK(worst_radius < 1e-6);
     SW_CHECK(worst_normal < 1e-5);
+    /* F_uv = F_vv = 0: cells the full height, so the triangles are about a
+     * fan per loop point (590 here; with the general mixed bound, or with
+     * a merged row taking the whole arc's M_uu, 4236). */
+    uint32_t points = l.first[1] - l.first[0];
+    SW_CHECK_MSG(m.ni / 3 <= 2 * points, "%u triangles for %u loop points", m.ni / 3, points);
 }
 
 /* A loop exactly along the knot line between two patches and through patch

@@ -68,7 +68,8 @@ sw_status sew_merge(sew_state *s, sw_seam_host *out, sw_sew_counts *counts);
 
 /* Step 3b (sw_sew_tjunctions.c, called by sew_merge on its loops before the
  * vertices are numbered): T-junctions the intervals left open; *inserted
- * gets how many vertices went into other loops' edges. */
+ * gets how many vertices went into other loops' edges or, where that would
+ * have made a spike, merged into their neighbour. */
 sw_status sew_insert_tjunctions(sew_state *s, sw_seam_host *h, size_t *inserted);
 
 #endif

@@ -4,7 +4,10 @@
  * ends), x is a vertex of the second loop's edge too: it is inserted there
  * (its (u, v) on that chord), and the two loops share the edge x-b. The interval rule misses these where the interval
  * is shorter than the tolerance (it takes it for a point contact) or where
- * x's partner was merged into its neighbour (the boxed sphere). */
+ * x's partner was merged into its neighbour (the boxed sphere). Where x is
+ * already a's other neighbour in the second loop (x, a, b), a merges into x
+ * instead: an insertion would leave a spike x, a, x with a on one side of
+ * the seam only. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +23,7 @@ typedef struct tj_use {
 typedef struct tj_insert {
     uint32_t loop, after; /* insert after this slot of the loop */
     sw_seam_slot slot;
+    uint32_t merge;       /* SW_SEAM_NONE, or the vertex that becomes slot.vertex instead */
 } tj_insert;
 
 static int compare_uses(const void *x, const void *y)
@@ -93,7 +97,37 @@ static sw_vec3 at(const sew_state *s, uint32_t v)
     return sw_v3(p[0], p[1], p[2]);
 }
 
-/* Would x (between a and b in some loop) go into the use u of edge a-b? */
+/* The slot before k in its loop whose vertex differs from slot k's. */
+static uint32_t prev_distinct(const sw_seam_host *h, const sw_seam_loop *lp, uint32_t k)
+{
+    for (uint32_t d = 1; d < lp->slot_count; d++) {
+        uint32_t j = lp->first_slot + (k - lp->first_slot + lp->slot_count - d) % lp->slot_count;
+        if (h->slots[j].vertex != h->slots[k].vertex)
+            return j;
+    }
+    return k;
+}
+
+/* x onto the edge a-b of use u (slots k, j) where its foot lies inside. */
+static int insertion_on_edge(const sw_seam_host *h, const tj_use *u, uint32_t k, uint32_t j,
+                             sw_vec3 pa, sw_vec3 ab, sw_vec3 px, uint32_t x, tj_insert *out)
+{
+    double len2 = sw_v3_dot(ab, ab), t = len2 > 0 ? sw_v3_dot(sw_v3_sub(px, pa), ab) / len2 : 0;
+    if (!(t > 0.0 && t < 1.0))
+        return 0;   /* beyond an end: not on this edge */
+    const float *ua = h->slots[k].uv, *ub = h->slots[j].uv;
+    *out = (tj_insert){u->loop, k, {x, {(float)(ua[0] + t * (ub[0] - ua[0])),
+                                        (float)(ua[1] + t * (ub[1] - ua[1]))}}, SW_SEAM_NONE};
+    return 1;
+}
+
+/* Would x (between a and b in some loop) go into the use u of edge a-b?
+ * Not where x is already a's other neighbour in u's loop (x, a, b): that
+ * would give x, a, x, b, a spike out to a and back, with a on one side of
+ * the seam only (the boxed sphere: a fillet's trim tip at a sphere's pole
+ * whose points were merged into x, 0.023 mm off; the drawn-seam check
+ * found the tip as a gap point). Then a merges into x instead when within
+ * the reach: both loops run x, b. Likewise b for a, b, x. */
 static int insertion(const sew_state *s, const sw_seam_host *h, const tj_use *u, uint32_t x,
                      tj_insert *out)
 {
@@ -104,35 +138,75 @@ static int insertion(const sew_state *s, const sw_seam_host *h, const tj_use *u,
     double reach = fmax(s->tol, sew_gap(s->poly, x) + fmax(sew_gap(s->poly, a), sew_gap(s->poly, b)));
     if (!(sw_v3_segment_distance(px, pa, pb) <= reach))
         return 0;
-    double len2 = sw_v3_dot(ab, ab), t = len2 > 0 ? sw_v3_dot(sw_v3_sub(px, pa), ab) / len2 : 0;
-    if (!(t > 0.0 && t < 1.0))
-        return 0;   /* beyond an end: not on this edge */
-    const float *ua = h->slots[k].uv, *ub = h->slots[j].uv;
-    *out = (tj_insert){u->loop, k, {x, {(float)(ua[0] + t * (ub[0] - ua[0])),
-                                        (float)(ua[1] + t * (ub[1] - ua[1]))}}};
-    return 1;
+    uint32_t spike = h->slots[prev_distinct(h, lp, k)].vertex == x ? a
+                   : h->slots[next_distinct(h, lp, j)].vertex == x ? b : SW_SEAM_NONE;
+    if (spike != SW_SEAM_NONE && sw_v3_length(sw_v3_sub(at(s, spike), px)) <= reach) {
+        *out = (tj_insert){u->loop, k, {x, {0, 0}}, spike};
+        return 1;
+    }
+    /* A tip beyond the reach is a corner of its own: inserted as before, the
+     * spike's edge runs twice along the loop (a seam with itself). */
+    return insertion_on_edge(h, u, k, j, pa, ab, px, x, out);
 }
 
-/* The loops' slots again with the insertions (sorted) in place. */
+static uint32_t merged_into(const uint32_t *to, uint32_t v)
+{
+    while (to[v] != v)
+        v = to[v];
+    return v;
+}
+
+/* Merges (merge != SW_SEAM_NONE) as a map over the slots' vertices: each
+ * merged vertex to the one it joins. NULL when out of memory. */
+static uint32_t *merge_map(const sw_seam_host *h, const tj_insert *ins, size_t n)
+{
+    uint32_t top = 0;
+    for (uint32_t k = 0; k < h->slot_count; k++)
+        top = h->slots[k].vertex > top ? h->slots[k].vertex : top;
+    uint32_t *to = malloc(((size_t)top + 1) * sizeof *to);
+    for (uint32_t v = 0; to && v <= top; v++)
+        to[v] = v;
+    for (size_t i = 0; to && i < n; i++) {
+        if (ins[i].merge == SW_SEAM_NONE)
+            continue;
+        uint32_t from = merged_into(to, ins[i].merge), into = merged_into(to, ins[i].slot.vertex);
+        if (from != into)
+            to[from] = into;
+    }
+    return to;
+}
+
+/* The loops' slots again with the insertions (sorted) in place and the
+ * merged vertices replaced. */
 static sw_status apply(sw_seam_host *h, const tj_insert *ins, size_t n, sw_error *err)
 {
     sw_seam_slot *slots = malloc(((size_t)h->slot_count + n + 1) * sizeof *slots);
-    if (!slots)
+    uint32_t *to = merge_map(h, ins, n);
+    if (!slots || !to) {
+        free(slots), free(to);
         return sw_error_set(err, SW_ERR_NO_MEMORY, "sewing: out of memory for T-junctions");
+    }
     uint32_t at_slot = 0;
     size_t next = 0;
     for (uint32_t l = 0; l < h->loop_count; l++) {
         sw_seam_loop *lp = &h->loops[l];
         uint32_t first = at_slot;
         for (uint32_t k = lp->first_slot; k < lp->first_slot + lp->slot_count; k++) {
-            slots[at_slot++] = h->slots[k];
+            slots[at_slot] = h->slots[k];
+            slots[at_slot].vertex = merged_into(to, slots[at_slot].vertex);
+            at_slot++;
             for (; next < n && ins[next].loop == l && ins[next].after == k; next++)
-                slots[at_slot++] = ins[next].slot;
+                if (ins[next].merge == SW_SEAM_NONE) {
+                    slots[at_slot] = ins[next].slot;
+                    slots[at_slot].vertex = merged_into(to, slots[at_slot].vertex);
+                    at_slot++;
+                }
         }
         lp->first_slot = first;
         lp->slot_count = at_slot - first;
     }
     free(h->slots);
+    free(to);
     h->slots = slots;
     h->slot_count = at_slot;
     return SW_OK;

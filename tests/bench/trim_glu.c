@@ -274,6 +274,10 @@ static const char *measure_at(const void *ctx, double tolerance, uint64_t *trian
     trim_glu_output o = {0, 0, 0, 0, 0};
     const char *problem = trim_glu_run(ctx, tolerance, 1, 1, NULL, &o);
     *triangles = o.triangles, *error = o.error;
+    /* At tiny tolerances GLU can give up and emit nothing: no error
+     * measured is no tessellation, not a perfect one. */
+    if (!problem && o.triangles == 0)
+        *error = INFINITY;
     return problem;
 }
 
