@@ -9,8 +9,8 @@
  *            the first walk's way), re-tessellated every frame;
  *   glu      GLU's NURBS tessellator re-tessellating every visible surface
  *            every frame, trimmed by the Seam Graph's loops at full detail,
- *            sampled to a tolerance in pixels (GLU_PARAMETRIC_ERROR with the
- *            frame's matrices loaded).
+ *            each sampled to the pixel tolerance at its nearest depth, in
+ *            model units, as seamwalk bounds it.
  * Host-side benchmark code: allocates at start, and in GLU's case GLU
  * itself allocates in every frame (that is part of what it costs). */
 #ifndef WALK_BASELINE_H
