@@ -350,6 +350,11 @@ def main():
     a = ap.parse_args()
     a.build = os.path.abspath(a.build)
     a.size, a.frames = ("320x240", 8) if a.quick else ("1280x720", 160)
+    shared = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                           "..", "..", "shared", "models"))
+    if not all(os.path.exists(os.path.join(shared, p)) for p in PARTS):
+        print("walk_bench: skipped: the showroom's parts are not in %s" % shared)
+        return 77
     work = a.work or tempfile.mkdtemp(prefix="swwalkbench.")
     os.makedirs(work, exist_ok=True)
     png = a.plot or os.path.join(work, "walk_bench.png")
@@ -385,8 +390,8 @@ def main():
         print("walk_bench: JSON in %s" % a.json)
     for f in failures:
         print("walk_bench: FAIL: " + f)
-    if not a.work and not failures:
-        shutil.rmtree(work, ignore_errors=True) if a.plot else None
+    if not a.work and a.plot and not failures:  # kept on failure: the logs are there
+        shutil.rmtree(work, ignore_errors=True)
     print("walk_bench: %s" % ("failed" if failures else "done"))
     return 1 if failures else 0
 
