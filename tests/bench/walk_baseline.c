@@ -54,6 +54,7 @@ typedef struct wb_run {
     sw_pack pack;
     sw_box box;
     sw_camera_path path;
+    sw_camera_key *keys;       /* the path's, ours to free */
     sw_camera_frame frame;
     sw_stats stats;
     sw_seam_drawn drawn;
@@ -164,7 +165,7 @@ static int load_path(wb_run *r, sw_error *err)
     size_t n = fread(text, 1, sizeof text, f);
     fclose(f);
     size_t keys = sw_camera_path_count_keys(text, n);
-    sw_camera_key *k = malloc((keys + 1) * sizeof *k);
+    sw_camera_key *k = r->keys = malloc((keys + 1) * sizeof *k);
     return k && sw_camera_path_parse(text, n, r->opt.path_file, k, keys, &r->path, err) == SW_OK;
 }
 
@@ -395,6 +396,9 @@ int main(int argc, char **argv)
                r.opt.glu ? "glu" : "uniform", r.opt.segments, r.opt.tolerance_px, r.frames_run,
                r.opt.every, r.stopped_early, r.glu_skipped, r.failed_max, r.stats.walk_s);
     wb_glu_free(&r.walk);
+    free(r.walk.patches), free(r.walk.surface_first), free(r.sew_offset);
+    free(r.walk.batch.verts), free(r.walk.batch.uvs), free(r.walk.batch.indices);
+    free(r.keys), free(r.block);
     if (r.renderer_up)
         sw_renderer_destroy(&r.renderer);
     if (r.egl_up)
