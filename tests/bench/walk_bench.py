@@ -48,6 +48,12 @@ import tempfile
 AS_BUILT_FLAGS = []
 SINGLE_FLAGS = []
 
+# The baselines draw every 40th frame of the walk, all of them measured
+# (measuring a uniform grid of millions of triangles takes tens of seconds a
+# frame), and stop at the first frame that starts past these many seconds.
+UNIFORM_MAX_S = 75
+GLU_MAX_S = 120
+
 TARGETS = {"frame_p50_ms": 16.7, "frame_p99_ms": 33.0, "error_max_px": 1.0, "cracks": 0,
            "glu_speedup": 100.0, "tris_over_uniform": 0.2}
 PARTS = ["occt_hammer.iges", "occt_screw.step", "newell_teapot.txt", "nist_mbe_pmi_1.stp"]
@@ -120,7 +126,7 @@ class Scene:
         ok = run(cmd, out + ".log")
         return self.add_row(key, label, ok, out, every=1)
 
-    def baseline(self, key, label, mode_args, every, max_s=0):
+    def baseline(self, key, label, mode_args, every, max_s):
         a = self.a
         out = self.stats_file(key)
         cmd = [a.build + "/tests/bench/walk_baseline", "--pack", self.pack, "--path", self.path,
@@ -168,12 +174,14 @@ def figures(s):
 def search_uniform(scene, target, every):
     """The coarsest S whose measured error max is <= target: a bracket
     [lo fails, hi meets] narrowed by the error's 1/S^2 law, at most six
-    runs. Every run is a full row; the one at the answer is kept."""
+    runs. Every run is a full row (a fine grid stops at UNIFORM_MAX_S, so it
+    may measure fewer frames); the one at the answer is kept."""
     a = scene.a
     lo, hi, s, tried, rows = 0, 256, 4 if a.quick else 8, [], {}
-    for _ in range(3 if a.quick else 6):
+    for _ in range(3 if a.quick else 4):
         row = scene.baseline("uniform_%d" % s, "uniform %dx%d" % (s, s),
-                             ["--mode", "uniform", "--segments", str(s)], every)
+                             ["--mode", "uniform", "--segments", str(s)], every,
+                             0 if a.quick else UNIFORM_MAX_S)
         rows[s] = row
         if not row["ok"]:
             return row, tried
@@ -203,7 +211,7 @@ def run_scene(a, name, work):
         sc.notes.append("threads not built yet: rows 1 and 2 run the same walk (seamwalk is "
                         "single-threaded today)")
     target = r1.get("error_max") if r1["ok"] else None
-    uniform_every = 4 if a.quick else 24
+    uniform_every = 4 if a.quick else 40
     if target is not None:
         r3, tried = search_uniform(sc, target, uniform_every)
         sc.uniform_tried = tried
@@ -211,9 +219,9 @@ def run_scene(a, name, work):
         r3 = {"key": "uniform", "label": "uniform", "ok": False, "every": uniform_every}
         sc.failures.append("uniform: no seamwalk error to match")
         sc.uniform_tried = []
-    glu_every = 4 if a.quick else 30
+    glu_every = 4 if a.quick else 40
     r4 = sc.baseline("glu", "GLU, every frame", ["--mode", "glu", "--tolerance-px", "0.5"],
-                     glu_every, max_s=0 if a.quick else 150)
+                     glu_every, 0 if a.quick else GLU_MAX_S)
     sc.rows = [r1, r2, r3, r4]
     return sc
 
@@ -275,8 +283,10 @@ def print_scene(a, sc):
               "loop points, holes); arena %.0f MiB; first frame %.0f ms after start"
               % (r1["seamwalk_cracks"], r1["arena_mib"], r1["first_frame_ms"]))
     if r3["ok"]:
-        print("uniform: every %dth frame of the path; grids tried (S, error max px): %s"
-              % (r3["every"], ", ".join("%d: %.3f" % t for t in sc.uniform_tried)))
+        print("uniform: every %dth frame of the path%s; grids tried (S, error max px): %s"
+              % (r3["every"], " (* stopped at the time limit)"
+                 if r3.get("baseline", {}).get("stopped_early") == "1" else "",
+                 ", ".join("%d: %.3f" % t for t in sc.uniform_tried)))
     if r4["ok"]:
         b = r4.get("baseline", {})
         print("GLU: every %dth frame%s; %s surfaces GLU cannot take as one NURBS left out; "
@@ -350,8 +360,8 @@ def main():
     a = ap.parse_args()
     a.build = os.path.abspath(a.build)
     # Measuring a seamwalk frame costs more than drawing it (tens of millions
-    # of samples on the showroom): every 8th, 15 of the 120.
-    a.size, a.frames, a.measure_every = ("320x240", 8, 2) if a.quick else ("1280x720", 120, 8)
+    # of samples on the showroom): every 12th, 10 of the 120.
+    a.size, a.frames, a.measure_every = ("320x240", 8, 2) if a.quick else ("1280x720", 120, 12)
     shared = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
                                            "..", "..", "shared", "models"))
     if not all(os.path.exists(os.path.join(shared, p)) for p in PARTS):
