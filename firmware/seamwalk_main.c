@@ -439,8 +439,11 @@ static sw_status walk(runtime *rt, sw_error *err)
         sw_status st = run_frame(rt, (int)(f % (uint64_t)rt->opt.frames), err);
         if (st != SW_OK)
             return st;
-        if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops == 1)
-            s->rss_first_loop_kb = rss_now_kb(s);
+        if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops <= SW_STATS_RSS_LOOPS) {
+            s->rss_loop_kb[s->loops - 1] = rss_now_kb(s);
+            if (s->loops == 1)
+                s->rss_first_loop_kb = s->rss_loop_kb[0];
+        }
         if (rt->opt.store_dir)
             sw_boot_poll_good(&rt->boot, now_s() - t0, rt->opt.good_after_s);
         if (rt->display->close_requested)

@@ -212,8 +212,12 @@ static void write_series_and_soak(FILE *f, const sw_stats *s)
                "\"peak\": %lld},\n",
             (long long)s->rss_start_kb, (long long)s->rss_first_loop_kb,
             (long long)s->rss_end_kb, (long long)s->rss_peak_kb);
-    fprintf(f, "  \"soak\": {\"duration_s\": %.3f, \"loops\": %llu, \"frames_per_loop\": %d},\n",
-            s->duration_s, (unsigned long long)s->loops, s->frame_capacity);
+    fprintf(f, "  \"soak\": {\"duration_s\": %.3f, \"loops\": %llu, \"frames_per_loop\": %d, "
+               "\"rss_kb_per_loop\": [", s->duration_s, (unsigned long long)s->loops,
+            s->frame_capacity);
+    for (uint64_t i = 0; i < s->loops && i < SW_STATS_RSS_LOOPS; i++)
+        fprintf(f, "%s%lld", i ? ", " : "", (long long)s->rss_loop_kb[i]);
+    fputs("]},\n", f);
 }
 
 static float *copy_as_float_u32(const uint32_t *v, int n, sw_arena *a)

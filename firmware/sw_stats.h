@@ -16,6 +16,9 @@
  * understates), while max is kept exactly. */
 #define SW_ERROR_BINS 4096
 
+/* Loops of a soak whose resident memory at their end is kept. */
+#define SW_STATS_RSS_LOOPS 64
+
 typedef struct sw_stats {
     int frame_capacity, frames; /* frames: samples kept, at most frame_capacity */
     float *frame_ms;            /* per frame: tessellate + draw + finish */
@@ -80,6 +83,7 @@ typedef struct sw_stats {
      * after the first loop (the GL driver's own buffers are taken by then),
      * at the end, and the process's peak. */
     int64_t rss_start_kb, rss_first_loop_kb, rss_end_kb, rss_peak_kb;
+    int64_t rss_loop_kb[SW_STATS_RSS_LOOPS]; /* at the end of each of the first loops */
 
     double pack_open_ms, first_frame_ms, walk_s;
     uint64_t arena_bytes, arena_peak_bytes;  /* the one arena: every byte the walk uses */

@@ -63,6 +63,7 @@ print("soak: %.0f s, %d frames in %d loops of %d; frame p50 %.1f ms, p99 %.1f ms
          s["worst_frame"]["ms"], s["worst_frame"]["frame"], rss["start"],
          rss["after_first_loop"], rss["end"], rss["end"] - rss["after_first_loop"],
          rss["peak"], s["mallocs_after_init"]))
+print("soak: resident kB at the end of each loop: %s" % s["soak"]["rss_kb_per_loop"])
 for f in fails:
     print("soak: FAIL: " + f)
 sys.exit(1 if fails else 0)
