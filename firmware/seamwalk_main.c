@@ -31,6 +31,7 @@
 #include "sw_pack.h"
 #include "sw_png.h"
 #include "sw_renderer.h"
+#include "sw_rss.h"
 #include "sw_seam_depth.h"
 #include "sw_seam_walk.h"
 #include "sw_stats.h"
@@ -470,9 +471,10 @@ static sw_status run_frame(runtime *rt, int frame, sw_error *err)
         return st;
     sw_renderer_finish(&rt->renderer);
     double ms = (now_s() - t0) * 1000.0 - measure_ms;
+    int first = rt->stats.frames_total == 0;
     sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, drawn);
     sw_seam_walk_end_frame(&rt->seam, ms, swapped);
-    if (frame == 0) /* less the measurement, as every frame's time */
+    if (first) /* less the measurement, as every frame's time */
         rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0 - measure_ms;
     if (capped > rt->stats.capped_patches_max)
         rt->stats.capped_patches_max = capped;
@@ -493,23 +495,50 @@ static process_count_fn process_alloc_counter(void)
     return sym ? fn : NULL;
 }
 
+/* Resident memory now, kB (-1 unknown); the peak into the stats. */
+static int64_t rss_now_kb(sw_stats *s)
+{
+    sw_rss r;
+    sw_rss_read(&r);
+    s->rss_peak_kb = r.peak_kb;
+    return r.rss_kb;
+}
+
+/* --frames frames, or with --duration (the soak) the same frames as a
+ * loop until the time is up. */
+static int walking(const runtime *rt, uint64_t frame, double t0)
+{
+    if (rt->opt.duration_s > 0)
+        return now_s() - t0 < rt->opt.duration_s;
+    return frame < (uint64_t)rt->opt.frames;
+}
+
 static sw_status walk(runtime *rt, sw_error *err)
 {
     process_count_fn process = process_alloc_counter();
     uint64_t allocs_before = sw_alloc_count_allocs();
     uint64_t process_before = process ? process() : 0;
+    sw_stats *s = &rt->stats;
+    s->duration_s = rt->opt.duration_s;
+    s->rss_start_kb = rss_now_kb(s);
     double t0 = now_s();
-    for (int f = 0; f < rt->opt.frames; f++) {
+    for (uint64_t f = 0; walking(rt, f, t0); f++) {
         if (rt->kiosk_up) /* the input step: devices -> actions -> navigation -> pose */
-            rt->kiosk_pose = sw_kiosk_run_frame(&rt->kiosk, f);
-        sw_status st = run_frame(rt, f, err);
+            rt->kiosk_pose = sw_kiosk_run_frame(&rt->kiosk, (int)f);
+        sw_status st = run_frame(rt, (int)(f % (uint64_t)rt->opt.frames), err);
         if (st != SW_OK)
             return st;
+        if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops <= SW_STATS_RSS_LOOPS) {
+            s->rss_loop_kb[s->loops - 1] = rss_now_kb(s);
+            if (s->loops == 1)
+                s->rss_first_loop_kb = s->rss_loop_kb[0];
+        }
         if (rt->opt.store_dir)
             sw_boot_poll_good(&rt->boot, now_s() - t0, rt->opt.good_after_s);
         if (rt->display->close_requested)
             break;   /* the window closed, or SIGTERM/SIGINT: end as if the walk were done */
     }
+    s->rss_end_kb = rss_now_kb(s);
     rt->stats.walk_s = now_s() - t0;
     rt->stats.mallocs_after_init = sw_alloc_count_active()
                                        ? (int64_t)(sw_alloc_count_allocs() - allocs_before)
@@ -686,12 +715,20 @@ static sw_status open_display(runtime *rt, sw_error *err)
 static void print_summary(const runtime *rt)
 {
     const sw_stats *s = &rt->stats;
-    printf("seamwalk: %d frames of %u patches at %dx%d in %.2f s; error max %.3f px (bound %.2f);"
+    printf("seamwalk: %llu frames of %u patches at %dx%d in %.2f s; error max %.3f px (bound %.2f);"
            " cracks max %llu; arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
            " frame stats and pictures the rest); mallocs after init %lld\n",
-           s->frames, s->patches_total, s->width, s->height, s->walk_s, s->error_max_px,
+           (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, s->error_max_px,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
+    if (s->duration_s > 0)
+        printf("seamwalk: soak of %.0f s: %llu frames, %llu loops of %d; worst frame %.1f ms"
+               " (frame %llu); resident %lld kB at start, %lld after the first loop, %lld at"
+               " the end (peak %lld)\n", s->duration_s, (unsigned long long)s->frames_total,
+               (unsigned long long)s->loops, rt->opt.frames, s->worst_frame_ms,
+               (unsigned long long)s->worst_frame, (long long)s->rss_start_kb,
+               (long long)s->rss_first_loop_kb, (long long)s->rss_end_kb,
+               (long long)s->rss_peak_kb);
     printf("seamwalk: display %s %dx%d (%s)\n", sw_display_kind_name(rt->display->kind),
            rt->display->width, rt->display->height, rt->display->chosen_why);
     if (rt->opt.png_dir)

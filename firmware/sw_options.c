@@ -225,6 +225,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             o->pose_log = v;
         } else if (!strcmp(a, "--frames")) {
             st = parse_int(a, v, 1, 10000000, &o->frames, err);
+        } else if (!strcmp(a, "--duration")) {
+            st = parse_real(a, v, 0.001, 1e7, &o->duration_s, err);
         } else if (!strcmp(a, "--png-dir")) {
             o->png_dir = v;
         } else if (!strcmp(a, "--png-every")) {
@@ -299,7 +301,8 @@ void sw_options_print_usage(const char *argv0)
             "usage: %s (--pack FILE | --store DIR)\n"
             "          (--path FILE | --orbit | --view NAME | --navigate | --input-timeline FILE)\n"
             "          [--display auto|headless|kms|x11|wayland] [--size WxH] [--headless WxH]\n"
-            "          [--frames N] [--png-dir DIR] [--png-every K] [--stats FILE.json]\n"
+            "          [--frames N] [--duration S] [--png-dir DIR] [--png-every K]\n"
+            "          [--stats FILE.json]\n"
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
             "          [--config FILE] [--pose-log FILE] [--no-cache] [--background R,G,B]\n"
             "          [--back-faces lit|hidden|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
@@ -339,6 +342,11 @@ void sw_options_print_usage(const char *argv0)
             "  --pose-log FILE     write each frame's camera pose (frame t eye target up)\n"
             "  --frames N          frames to render (default 120); closing the window,\n"
             "                      SIGTERM or Ctrl-C end the walk sooner, stats written\n"
+            "  --duration S        the soak: walk for S seconds, the path (or orbit) taken\n"
+            "                      as a loop of --frames frames, again and again; the stats\n"
+            "                      keep the last loop's frames and add resident memory at\n"
+            "                      start, after the first loop and at the end, and the\n"
+            "                      worst frame of all\n"
             "  --png-dir DIR       write frame_NNNNN.png every --png-every frames\n"
             "  --stats FILE.json   write the walk's statistics\n"
             "  --memory-mb M       refuse to start if the arena needs more (default 256)\n"

@@ -21,7 +21,9 @@ typedef struct sw_options {
     int no_cache;                /* --no-cache: tessellate every visible surface every frame at
                                     its exact bound (the benchmarks' baseline) */
     const char *view_name;       /* --view NAME: a still from the pack's named viewpoint */
-    int frames;                  /* default 120 */
+    int frames;                  /* default 120; with duration_s, the frames of one loop */
+    double duration_s;           /* --duration S: the soak, the path looped for S seconds;
+                                    0 (default): one walk of --frames frames */
     const char *png_dir;         /* NULL: no pictures */
     int png_every;               /* default 1 */
     const char *stats_path;      /* NULL: no stats file */

@@ -36,26 +36,38 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
     s->error_bin_px = 4.0 * error_bound_px / SW_ERROR_BINS;
     s->mallocs_after_init = -1;
     s->process_mallocs_after_init = -1;
+    s->rss_start_kb = s->rss_first_loop_kb = s->rss_end_kb = s->rss_peak_kb = -1;
     return SW_OK;
+}
+
+/* The array slot of the frame being recorded: a ring over the capacity. */
+static int slot_of(const sw_stats *s)
+{
+    return (int)(s->frames_total % (uint64_t)s->frame_capacity);
 }
 
 void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible)
 {
-    if (s->frames >= s->frame_capacity)
+    if (s->frame_capacity <= 0)
         return;
-    s->frame_ms[s->frames] = (float)ms;
-    s->tris[s->frames] = tris;
-    s->visible[s->frames] = visible;
-    s->frames++;
+    int k = slot_of(s);
+    s->frame_ms[k] = (float)ms;
+    s->tris[k] = tris;
+    s->visible[k] = visible;
+    if (s->frames_total == 0 || ms > s->worst_frame_ms)
+        s->worst_frame_ms = ms, s->worst_frame = s->frames_total;
+    s->frames_total++;
+    if (s->frames < s->frame_capacity)
+        s->frames++;
 }
 
 void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,
                               uint64_t upload_bytes, uint32_t evictions, double tess_ms)
 {
-    if (s->frames >= s->frame_capacity)
+    if (s->frame_capacity <= 0)
         return;
-    s->retess[s->frames] = surfaces;
-    s->tess_ms[s->frames] = (float)tess_ms;
+    s->retess[slot_of(s)] = surfaces;
+    s->tess_ms[slot_of(s)] = (float)tess_ms;
     s->retess_total += surfaces;
     s->retess_triangles_total += triangles;
     s->retess_triangles_max = triangles > s->retess_triangles_max ? triangles
@@ -264,6 +276,30 @@ static void write_threads(FILE *f, const sw_stats *s)
             (unsigned long long)s->worker_steals);
 }
 
+/* The kept frame times oldest first (the ring unrolled), for plots along
+ * the path; then the soak's figures. */
+static void write_series_and_soak(FILE *f, const sw_stats *s)
+{
+    int n = s->frames, first = s->frames_total > (uint64_t)n ? slot_of(s) : 0;
+    fputs("  \"frame_ms_series\": [", f);
+    for (int i = 0; i < n; i++)
+        fprintf(f, "%s%.3f", i ? ", " : "", s->frame_ms[(first + i) % n]);
+    fputs("],\n", f);
+    fprintf(f, "  \"frames_total\": %llu,\n  \"worst_frame\": {\"ms\": %.3f, \"frame\": %llu},\n",
+            (unsigned long long)s->frames_total, s->worst_frame_ms,
+            (unsigned long long)s->worst_frame);
+    fprintf(f, "  \"rss_kb\": {\"start\": %lld, \"after_first_loop\": %lld, \"end\": %lld, "
+               "\"peak\": %lld},\n",
+            (long long)s->rss_start_kb, (long long)s->rss_first_loop_kb,
+            (long long)s->rss_end_kb, (long long)s->rss_peak_kb);
+    fprintf(f, "  \"soak\": {\"duration_s\": %.3f, \"loops\": %llu, \"frames_per_loop\": %d, "
+               "\"rss_kb_per_loop\": [", s->duration_s, (unsigned long long)s->loops,
+            s->frame_capacity);
+    for (uint64_t i = 0; i < s->loops && i < SW_STATS_RSS_LOOPS; i++)
+        fprintf(f, "%s%lld", i ? ", " : "", (long long)s->rss_loop_kb[i]);
+    fputs("]},\n", f);
+}
+
 static float *copy_as_float_u32(const uint32_t *v, int n, sw_arena *a)
 {
     float *out = sw_arena_alloc(a, (size_t)n * sizeof(float) + 1, 8);
@@ -326,6 +362,7 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
     write_threads(f, s);
     if (s->store)
         write_store(f, s);
+    write_series_and_soak(f, s);
     fprintf(f, "  \"arena_bytes\": %llu,\n  \"arena_peak_bytes\": %llu,\n  \"runtime_bytes\": %llu,\n",
             (unsigned long long)s->arena_bytes, (unsigned long long)s->arena_peak_bytes,
             (unsigned long long)s->runtime_bytes);

@@ -16,8 +16,11 @@
  * understates), while max is kept exactly. */
 #define SW_ERROR_BINS 4096
 
+/* Loops of a soak whose resident memory at their end is kept. */
+#define SW_STATS_RSS_LOOPS 64
+
 typedef struct sw_stats {
-    int frame_capacity, frames;
+    int frame_capacity, frames; /* frames: samples kept, at most frame_capacity */
     float *frame_ms;            /* per frame: tessellate + draw + finish */
     uint32_t *tris;             /* per frame */
     uint32_t *visible;          /* per frame: patches drawn */
@@ -91,6 +94,20 @@ typedef struct sw_stats {
     const char *store_log;       /* what the boot did, lines; not owned */
     const char *store_message;   /* the message screen's text, or NULL */
 
+    /* A walk longer than the frame arrays (the soak, seamwalk --duration)
+     * keeps its last frame_capacity frames in them, as a ring (the
+     * percentiles are of those); these cover every frame. */
+    uint64_t frames_total;
+    double worst_frame_ms;       /* the slowest frame of all, and its number */
+    uint64_t worst_frame;
+    double duration_s;           /* --duration, or 0: the walk was --frames long */
+    uint64_t loops;              /* times the path was walked to its end */
+    /* Resident memory (sw_rss.h), kB, -1 unknown: before the first frame,
+     * after the first loop (the GL driver's own buffers are taken by then),
+     * at the end, and the process's peak. */
+    int64_t rss_start_kb, rss_first_loop_kb, rss_end_kb, rss_peak_kb;
+    int64_t rss_loop_kb[SW_STATS_RSS_LOOPS]; /* at the end of each of the first loops */
+
     double pack_open_ms, first_frame_ms, walk_s;
     uint64_t arena_bytes, arena_peak_bytes;  /* the one arena: every byte the walk uses */
     uint64_t runtime_bytes;      /* of it, the pack header's (pack, patch state, walk) */
@@ -105,6 +122,7 @@ size_t sw_stats_arena_bytes(int frames);
 sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_bound_px,
                         sw_error *err);
 
+/* One frame; past frame_capacity frames the oldest sample is replaced. */
 void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible);
 void sw_stats_add_error_px(sw_stats *s, double error_px);
 /* The frame's near and far planes. */

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "sw_stats.h"
+#include "sw_rss.h"
 #include "sw_test.h"
 
 static unsigned char block[1 << 20] __attribute__((aligned(64)));
@@ -47,7 +48,6 @@ static void test_json_has_every_contract_field(void)
     SW_CHECK(sw_stats_init(&s, &a, 4, 0.5, NULL) == SW_OK);
     for (int i = 0; i < 4; i++)
         sw_stats_add_frame(&s, 10.0 + i, 1000u * (i + 1), 5);
-    sw_stats_add_frame(&s, 99, 99, 99); /* past capacity: ignored */
     sw_stats_add_error_px(&s, 0.25);
     s.mallocs_after_init = 0;
     char buf[4096] = "";
@@ -64,10 +64,56 @@ static void test_json_has_every_contract_field(void)
         SW_CHECK_MSG(strstr(buf, fields[i]) != NULL, "missing %s in\n%s", fields[i], buf);
 }
 
+/* Past its capacity (the soak) the arrays keep the last frames, oldest
+ * replaced first; the worst frame and the count cover every frame. */
+static void test_frames_past_capacity_keep_the_last_ones(void)
+{
+    sw_arena a;
+    sw_arena_init(&a, block, sizeof block);
+    sw_stats s;
+    SW_CHECK(sw_stats_init(&s, &a, 3, 0.5, NULL) == SW_OK);
+    const double ms[7] = { 5, 50, 6, 7, 8, 9, 10 };
+    for (int i = 0; i < 7; i++) {
+        sw_stats_add_cache_frame(&s, (uint32_t)i, 0, 0, 0, 1.0);
+        sw_stats_add_frame(&s, ms[i], 100u + (uint32_t)i, 1);
+    }
+    SW_CHECK(s.frames == 3);
+    SW_CHECK(s.frames_total == 7);
+    SW_CHECK(s.worst_frame_ms == 50.0 && s.worst_frame == 1);
+    char buf[8192] = "";
+    FILE *f = fmemopen(buf, sizeof buf - 1, "w");
+    SW_CHECK(sw_stats_write_json(&s, f, &a, NULL) == SW_OK);
+    fclose(f);
+    const char *fields[] = { "\"frames\": 3", "\"max\": 10.000", "\"median\": 105",
+                             "\"frame_ms_series\": [8.000, 9.000, 10.000]",
+                             "\"frames_total\": 7", "\"worst_frame\": {\"ms\": 50.000, \"frame\": 1}",
+                             "\"rss_kb\": {\"start\": -1", "\"frames_per_loop\": 3" };
+    for (size_t i = 0; i < sizeof fields / sizeof fields[0]; i++)
+        SW_CHECK_MSG(strstr(buf, fields[i]) != NULL, "missing %s in\n%s", fields[i], buf);
+}
+
+static void test_rss_fields_are_read_from_status_text(void)
+{
+    const char text[] = "Name:\tseamwalk\nVmHWM:\t  123456 kB\nVmRSS:\t   98765 kB\n"
+                        "RssAnon:\t 1 kB\n";
+    int n = (int)sizeof text - 1;
+    SW_CHECK(sw_rss_field_kb(text, n, "VmRSS:") == 98765);
+    SW_CHECK(sw_rss_field_kb(text, n, "VmHWM:") == 123456);
+    SW_CHECK(sw_rss_field_kb(text, n, "VmSwap:") == -1);
+    SW_CHECK(sw_rss_field_kb("VmRSS: kB\n", 10, "VmRSS:") == -1);
+    /* only at a line's start: "RssAnon:" is not "Anon:" */
+    SW_CHECK(sw_rss_field_kb(text, n, "Anon:") == -1);
+    sw_rss r;
+    SW_CHECK(sw_rss_read(&r) == 1);   /* this process, on Linux */
+    SW_CHECK(r.rss_kb > 0 && r.peak_kb >= r.rss_kb);
+}
+
 int main(void)
 {
     SW_RUN(test_percentiles_are_nearest_rank);
     SW_RUN(test_error_p99_never_understates);
     SW_RUN(test_json_has_every_contract_field);
+    SW_RUN(test_frames_past_capacity_keep_the_last_ones);
+    SW_RUN(test_rss_fields_are_read_from_status_text);
     return sw_test_finish();
 }

@@ -18,8 +18,7 @@ uint64_t bench_glu_triangles_in(GLenum type, uint64_t n)
     }
 }
 
-/* Vertex numbers of triangle t of a primitive, in the order GL draws it. */
-static void triangle_of(GLenum type, uint64_t t, uint64_t v[3])
+void bench_glu_triangle_of(GLenum type, uint64_t t, uint64_t v[3])
 {
     switch (type) {
     case GL_TRIANGLES: v[0] = 3 * t, v[1] = 3 * t + 1, v[2] = 3 * t + 2; return;
@@ -50,7 +49,7 @@ static void hand_over(bench_glu *g)
     for (uint64_t t = 0; t < n; t++) {
         uint64_t v[3];
         float p[3][3], uv[3][2];
-        triangle_of(g->type, t, v);
+        bench_glu_triangle_of(g->type, t, v);
         for (int k = 0; k < 3; k++) {
             memcpy(p[k], g->prim[v[k]], sizeof p[k]);
             memcpy(uv[k], g->prim[v[k]] + 3, sizeof uv[k]);

@@ -66,4 +66,8 @@ const char *bench_glu_tune(bench_glu_measure_fn measure, const void *ctx, double
 /* Triangles in a GL primitive of n vertices (0 for points and lines). */
 uint64_t bench_glu_triangles_in(GLenum type, uint64_t n);
 
+/* Vertex numbers (from the primitive's first) of triangle t of a primitive,
+ * in the order GL draws it. */
+void bench_glu_triangle_of(GLenum type, uint64_t t, uint64_t v[3]);
+
 #endif

@@ -212,7 +212,7 @@ void trim_glu_free(trim_glu_surface *g)
 
 /* ---- runs ---------------------------------------------------------------------- */
 
-static void draw(const trim_glu_surface *g, GLUnurbs *nurb, int with_tex)
+void trim_glu_draw(const trim_glu_surface *g, GLUnurbs *nurb, int with_tex)
 {
     GLint ku = g->count_u + g->order_u, kv = g->count_v + g->order_v;
     gluBeginSurface(nurb);
@@ -255,7 +255,7 @@ const char *trim_glu_run(const trim_glu_surface *g, double tolerance, int measur
         if (!bench_glu_open(&glu, tolerance, measure ? probe_triangle : NULL, &pr))
             return "gluNewNurbsRenderer failed";
         double t0 = bench_now_s();
-        draw(g, glu.nurb, measure);
+        trim_glu_draw(g, glu.nurb, measure);
         if (!measure)
             samples[r] = bench_now_s() - t0;
         const char *problem = bench_glu_problem(&glu);

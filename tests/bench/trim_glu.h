@@ -42,6 +42,11 @@ int trim_glu_make(trim_glu_surface *g, const sw_trim_patch *patches, uint32_t co
                   const sw_trim_loops *loops, char *why, size_t why_size);
 void trim_glu_free(trim_glu_surface *g);
 
+/* The surface handed to nurb between gluBeginSurface and gluEndSurface:
+ * the net, with_tex also the identity texture map (the (u, v) for a
+ * capturing run), and the trims. */
+void trim_glu_draw(const trim_glu_surface *g, GLUnurbs *nurb, int with_tex);
+
 /* What one GLU tessellation emitted: vertices as sent (strips and fans
  * repeat shared ones); from capturing runs also the measured max error and
  * the (u, v) area the triangles cover (to check GLU trimmed what it was

@@ -1,0 +1,411 @@
+#!/usr/bin/env python3
+"""The walkthrough benchmark (issue 10, item 7), one command:
+  walk_bench.py BUILD_DIR [--quick] [--work DIR] [--json FILE] [--plot FILE.png]
+                [--scenes showroom,courtyard]
+Two scenes, each on a fixed closed walk at eye height (walk_path.py) at
+1280x720:
+  showroom   `seamwalk-pack gen showroom --patches 40000` from real parts in
+             ../shared/models (the hammer, the screw, the Newell teapot, NIST
+             part 1), walked round the aisles;
+  courtyard  tests/gen_soup.py's patch soup of 130 x 130 cells (about 40,000
+             patches, no shared topology), walked round its middle;
+and on each, side by side:
+  1 seamwalk as built          } the same seamwalk binary; the flags of each
+  2 seamwalk single-threaded   } row are AS_BUILT_FLAGS and SINGLE_FLAGS below
+  3 uniform: every visible patch on one S x S grid each frame
+    (walk_baseline --mode uniform), S searched until its measured error max
+    is at most seamwalk's (row 1);
+  4 GLU's NURBS tessellator re-tessellating every visible surface each frame
+    at seamwalk's pixel tolerance (walk_baseline --mode glu), drawn through
+    the same renderer.
+Every row writes seamwalk's stats file and is measured the same way: frame
+time without the measuring, triangles per frame, error (every drawn
+triangle against the exact surface, on screen), cracks (the drawn borders
+against each other, firmware/sw_seam_drawn.h: gaps), resident memory (peak).
+The baselines are slow, so they draw every K-th frame of the path (said in
+the table) and GLU stops after a time limit. Prints the table and the ratios
+against the issue's targets, writes the JSON (--json) and a PNG of frame
+time along the path (--plot, gnuplot). Never fails on timing: exit 1 only
+when a row fails or a figure is missing.
+--quick: a smoke run (small scenes, 320x240, a few frames), for CTest.
+--work DIR keeps the generated scenes and packs there and reuses them."""
+import argparse
+import json
+import math
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+
+# ---- The two seamwalk rows: the same binary, flags set here and nowhere else.
+# As built: the default workers (the cores less one) with the budgets holding
+# the default --target-ms, never waiting for the work (--sync-work 0: under
+# CTest, SEAMWALK_TEST_SYNC_WORK=1 would make each frame wait). Single:
+# every mesh made in the frame on the GL thread.
+AS_BUILT_FLAGS = ["--sync-work", "0"]
+SINGLE_FLAGS = ["--workers", "0"]
+
+# The baselines draw every 40th frame of the walk, all of them measured
+# (measuring a uniform grid of millions of triangles takes tens of seconds a
+# frame), and stop at the first frame that starts past these many seconds.
+UNIFORM_MAX_S = 75
+GLU_MAX_S = 120
+
+TARGETS = {"frame_p50_ms": 16.7, "frame_p99_ms": 33.0, "error_max_px": 1.0, "cracks": 0,
+           "glu_speedup": 100.0, "tris_over_uniform": 0.2}
+PARTS = ["occt_hammer.iges", "occt_screw.step", "newell_teapot.txt", "nist_mbe_pmi_1.stp"]
+
+
+def run(cmd, log):
+    """Runs cmd, output to log; True when it exits 0."""
+    with open(log, "w") as out:
+        return subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode == 0
+
+
+def pack_info(build, pack):
+    out = subprocess.run([build + "/assets/seamwalk-pack", "info", "--json", pack],
+                         capture_output=True, text=True, check=True).stdout
+    return json.loads(out)
+
+
+def make_scene(a, name, work):
+    """The scene's pack and camera path (made once per --work folder)."""
+    tool = a.build + "/assets/seamwalk-pack"
+    src = os.path.dirname(os.path.abspath(__file__))
+    shared = os.path.normpath(os.path.join(src, "..", "..", "..", "shared", "models"))
+    q = a.quick
+    tag = "%s_%s" % (name, "quick" if q else "full")
+    pack, path = os.path.join(work, tag + ".swpack"), os.path.join(work, tag + ".path")
+    if not os.path.exists(pack):
+        if name == "showroom":
+            ini = os.path.join(work, tag + ".ini")
+            cmd = [tool, "gen", "showroom", "--patches", "1200" if q else "40000", "-o", ini]
+            for p in PARTS:
+                cmd += ["--part", os.path.join(shared, p)]
+            if not run(cmd, ini + ".log"):
+                raise RuntimeError("gen showroom failed (%s.log)" % ini)
+            source = ini
+        else:
+            source = os.path.join(work, tag + ".igs")
+            if not run([sys.executable, os.path.join(src, "..", "gen_soup.py"), source,
+                        "--cells", "6" if q else "130"], source + ".log"):
+                raise RuntimeError("gen_soup.py failed (%s.log)" % source)
+        if not run([tool, "build", source, "-o", pack, "--quiet"], pack + ".log"):
+            raise RuntimeError("building %s failed (%s.log)" % (name, pack))
+    info = pack_info(a.build, pack)
+    box = info["box"]["min"] + info["box"]["max"]
+    up = info["up_axis"].lstrip("+-")
+    cmd = [sys.executable, os.path.join(src, "walk_path.py"), path, "--box"] + \
+          ["%.6f" % v for v in box] + ["--up", up, "--seconds", "40"]
+    if name == "showroom" and not q:
+        # the aisles of gen showroom's 40,000-patch floor: 2000 mm cells in
+        # blocks of 4 x 4, 3000 mm aisles, centred on x = +-5500, z = +-11000
+        cmd += ["--rect", "-5500", "-11000", "5500", "11000"]
+    subprocess.run(cmd, check=True)
+    return pack, path, info
+
+
+class Scene:
+    def __init__(self, a, name, work):
+        self.a, self.name, self.work = a, name, work
+        self.pack, self.path, self.info = make_scene(a, name, work)
+        self.rows, self.failures, self.notes = [], [], []
+
+    def stats_file(self, key):
+        return os.path.join(self.work, "%s_%s.json" % (self.name, key))
+
+    def seamwalk(self, key, label, flags):
+        a = self.a
+        out = self.stats_file(key)
+        cmd = [a.build + "/firmware/seamwalk", "--pack", self.pack, "--path", self.path,
+               "--headless", a.size, "--frames", str(a.frames), "--memory-mb", "16384",
+               "--measure-every", str(a.measure_every), "--stats", out] + flags
+        ok = run(cmd, out + ".log")
+        return self.add_row(key, label, ok, out, every=1)
+
+    def baseline(self, key, label, mode_args, every, max_s):
+        a = self.a
+        out = self.stats_file(key)
+        cmd = [a.build + "/tests/bench/walk_baseline", "--pack", self.pack, "--path", self.path,
+               "--size", a.size, "--frames", str(a.frames), "--every", str(every),
+               "--error-bins-px", "8", "--stats", out] + mode_args
+        if max_s:
+            cmd += ["--max-s", str(max_s)]
+        ok = run(cmd, out + ".log")
+        return self.add_row(key, label, ok, out, every)
+
+    def add_row(self, key, label, ok, out, every):
+        row = {"key": key, "label": label, "every": every, "ok": ok, "stats": out}
+        if ok and os.path.exists(out):
+            s = json.load(open(out))
+            row.update(figures(s))
+            missing = [k for k in ("frames", "p50", "p99", "tris", "error_max", "error_p99")
+                       if row.get(k) is None]
+            if row["frames"] == 0 or missing or row["error_samples"] == 0:
+                row["ok"] = False
+                self.failures.append("%s: figures missing (%s)" % (label, ", ".join(missing) or
+                                                                   "no frame or no error sample"))
+            log = open(out + ".log").read()
+            for line in log.splitlines():
+                if line.startswith("walk_baseline: "):
+                    row["baseline"] = dict(kv.split("=", 1) for kv in line.split()[1:])
+        else:
+            row["ok"] = False
+            self.failures.append("%s: failed (see %s.log)" % (label, out))
+        return row
+
+
+def figures(s):
+    rss = s.get("rss_kb", {})
+    return {"frames": s["frames"], "p50": s["frame_ms"]["p50"], "p99": s["frame_ms"]["p99"],
+            "max": s["frame_ms"]["max"], "tris": s["tris_per_frame"]["median"],
+            "error_max": s["error_px"]["max"], "error_p99": s["error_px"]["p99"],
+            "error_samples": s["error_px"]["samples"],
+            "measured_frames": s["error_px"]["measured_frames"],
+            "gaps": s["seam_drawn"]["gaps_max"], "unchecked": s["seam_drawn"]["unchecked_frames"],
+            "seamwalk_cracks": s["cracks_max"], "rss_peak_mib": rss.get("peak", -1) / 1024.0,
+            "arena_mib": s["arena_bytes"] / 1048576.0, "series": s.get("frame_ms_series", []),
+            "first_frame_ms": s["first_frame_ms"], "mallocs_after_init": s["mallocs_after_init"]}
+
+
+def search_uniform(scene, target, every):
+    """The coarsest S whose measured error max is <= target: a bracket
+    [lo fails, hi meets] narrowed by the error's 1/S^2 law, at most six
+    runs. Every run is a full row (a fine grid stops at UNIFORM_MAX_S, so it
+    may measure fewer frames); the one at the answer is kept."""
+    a = scene.a
+    lo, hi, s, tried, rows = 0, 256, 4 if a.quick else 8, [], {}
+    for _ in range(3 if a.quick else 4):
+        row = scene.baseline("uniform_%d" % s, "uniform %dx%d" % (s, s),
+                             ["--mode", "uniform", "--segments", str(s)], every,
+                             0 if a.quick else UNIFORM_MAX_S)
+        rows[s] = row
+        if not row["ok"]:
+            return row, tried
+        e = row["error_max"]
+        tried.append((s, e))
+        if e <= target:
+            hi = s
+        else:
+            lo = s
+        if hi - lo <= 1 or (lo == 255 and hi == 256):
+            break
+        guess = math.ceil(s * math.sqrt(e / target)) if target > 0 else hi
+        s = min(max(guess, lo + 1), hi - 1, 255)
+    best = rows.get(hi) or rows[max(rows)]
+    if hi == 256:
+        scene.notes.append("no grid up to 255 x 255 reaches seamwalk's error: the finest tried "
+                           "is shown")
+    return best, tried
+
+
+def run_scene(a, name, work):
+    sc = Scene(a, name, work)
+    same = AS_BUILT_FLAGS == SINGLE_FLAGS
+    r1 = sc.seamwalk("seamwalk", "seamwalk as built", AS_BUILT_FLAGS)
+    r2 = sc.seamwalk("seamwalk_single", "seamwalk single-threaded", SINGLE_FLAGS)
+    if same:
+        sc.notes.append("threads not built yet: rows 1 and 2 run the same walk (seamwalk is "
+                        "single-threaded today)")
+    target = r1.get("error_max") if r1["ok"] else None
+    uniform_every = 4 if a.quick else 40
+    if target is not None:
+        r3, tried = search_uniform(sc, target, uniform_every)
+        sc.uniform_tried = tried
+    else:
+        r3 = {"key": "uniform", "label": "uniform", "ok": False, "every": uniform_every}
+        sc.failures.append("uniform: no seamwalk error to match")
+        sc.uniform_tried = []
+    glu_every = 4 if a.quick else 40
+    r4 = sc.baseline("glu", "GLU, every frame", ["--mode", "glu", "--tolerance-px", "0.5"],
+                     glu_every, 0 if a.quick else GLU_MAX_S)
+    sc.rows = [r1, r2, r3, r4]
+    return sc
+
+
+def ratios(sc):
+    r1, _, r3, r4 = sc.rows
+    out = {}
+    if r1["ok"]:
+        out["frame_p50_ms"] = r1["p50"]
+        out["frame_p99_ms"] = r1["p99"]
+        out["error_max_px"] = r1["error_max"]
+        out["cracks"] = r1["gaps"] + r1["seamwalk_cracks"]
+        if r4["ok"] and r1["p50"] > 0:
+            out["glu_speedup"] = r4["p50"] / r1["p50"]
+        if r3["ok"] and r3["tris"] > 0:
+            out["tris_over_uniform"] = r1["tris"] / r3["tris"]
+    return out
+
+
+def frames_text(a, r):
+    if not r["ok"]:
+        return "-"
+    if r["every"] == 1:
+        return "%d" % r["frames"]
+    text = "%d of %d" % (r["frames"], a.frames)
+    if r.get("baseline", {}).get("stopped_early") == "1":
+        text += "*"
+    return text
+
+
+def cracks_text(r):
+    """The drawn gaps; n/a when no measured frame's borders fit the check,
+    >= when some did not."""
+    if r["unchecked"] >= r["measured_frames"]:
+        return "n/a"
+    return ("%d" if r["unchecked"] == 0 else ">=%d") % r["gaps"]
+
+
+def print_scene(a, sc):
+    info = sc.info
+    print("\n%s: %d Bezier patches, %d surfaces; %s, a closed walk of %d frames (%s)"
+          % (sc.name, info["bezier_patches"], info["surfaces"], a.size, a.frames,
+             os.path.basename(sc.path)))
+    head = ("%-26s %10s %9s %9s %11s %9s %9s %7s %9s"
+            % ("row", "frames", "p50 ms", "p99 ms", "tris/frame", "err max", "err p99",
+               "cracks", "RSS MiB"))
+    print(head)
+    print("-" * len(head))
+    for r in sc.rows:
+        if not r["ok"]:
+            print("%-26s FAILED" % r["label"])
+            continue
+        print("%-26s %10s %9.1f %9.1f %11d %9.3f %9.3f %7s %9.0f"
+              % (r["label"], frames_text(a, r), r["p50"], r["p99"], r["tris"], r["error_max"],
+                 r["error_p99"], cracks_text(r), r["rss_peak_mib"]))
+    r1, _, r3, r4 = sc.rows
+    if r1["ok"]:
+        print("seamwalk: its own crack count %d (border vertices off their seam vertex, dropped "
+              "loop points, holes); arena %.0f MiB; first frame %.0f ms after start"
+              % (r1["seamwalk_cracks"], r1["arena_mib"], r1["first_frame_ms"]))
+    if r3["ok"]:
+        print("uniform: every %dth frame of the path%s; grids tried (S, error max px): %s"
+              % (r3["every"], " (* stopped at the time limit)"
+                 if r3.get("baseline", {}).get("stopped_early") == "1" else "",
+                 ", ".join("%d: %.3f" % t for t in sc.uniform_tried)))
+    if r4["ok"]:
+        b = r4.get("baseline", {})
+        print("GLU: every %dth frame%s; %s surfaces GLU cannot take as one NURBS left out; "
+              "surfaces with a GLU error or output dropped, most in a frame: %s"
+              % (r4["every"], " (* stopped at the time limit)" if b.get("stopped_early") == "1"
+                 else "", b.get("glu_skipped_surfaces", "?"), b.get("failed_surfaces_max", "?")))
+    if any(r["ok"] and r["unchecked"] for r in sc.rows):
+        print("cracks: n/a or >=: the drawn borders of some measured frames overflowed the "
+              "drawn-seam check (2^18 edges in seamwalk, 2^20 in the baselines) and were not "
+              "checked")
+    print("RSS: the process's peak resident memory, measuring included (the error samples' "
+          "histogram, the drawn-seam check)")
+    for n in sc.notes:
+        print("note: " + n)
+    sc.ratio = ratios(sc)
+    t = TARGETS
+    q = sc.ratio
+    def line(k, text, ok):
+        if k in q:
+            print("  %-58s %s" % (text % q[k], "meets" if ok(q[k]) else "misses"))
+    print("against the issue's targets (row 1):")
+    line("frame_p50_ms", "frame median %.1f ms (target <= 16.7)", lambda v: v <= t["frame_p50_ms"])
+    line("frame_p99_ms", "frame p99 %.1f ms (target <= 33)", lambda v: v <= t["frame_p99_ms"])
+    line("error_max_px", "error max %.3f px at bound 0.5 (target <= 1)",
+         lambda v: v <= t["error_max_px"])
+    line("cracks", "cracks %d (drawn gaps + seamwalk's own; target 0)", lambda v: v == 0)
+    line("glu_speedup", "%.1fx GLU's frame rate (p50 ratio; target >= 100x)",
+         lambda v: v >= t["glu_speedup"])
+    line("tris_over_uniform", "%.3f of uniform's triangles (target <= 0.2)",
+         lambda v: v <= t["tris_over_uniform"])
+
+
+def plot(a, scenes, png):
+    """Frame time along the path, one panel per scene, log scale."""
+    gp = shutil.which("gnuplot")
+    if not gp:
+        return "gnuplot not found (cmake/install-deps.sh installs gnuplot-nox)"
+    script = ["set terminal png size 1200,%d" % (420 * len(scenes)), "set output '%s'" % png,
+              "set multiplot layout %d,1" % len(scenes), "set logscale y",
+              "set xlabel 'frame along the path'", "set ylabel 'frame ms'", "set grid",
+              "set key outside right"]
+    for sc in scenes:
+        plots = []
+        for r in sc.rows:
+            if not r["ok"] or not r["series"]:
+                continue
+            data = os.path.join(sc.work, "%s_%s.dat" % (sc.name, r["key"]))
+            with open(data, "w") as f:
+                for i, ms in enumerate(r["series"]):
+                    f.write("%d %g\n" % (i * r["every"], max(ms, 0.01)))
+            plots.append("'%s' using 1:2 with linespoints title '%s'" % (data, r["label"]))
+        script.append("set title '%s, %s'" % (sc.name, a.size))
+        script.append("plot " + ", ".join(plots) if plots else "plot 1 title 'no data'")
+    script.append("unset multiplot")
+    gpfile = os.path.join(scenes[0].work, "walk_bench.gp")
+    open(gpfile, "w").write("\n".join(script) + "\n")
+    r = subprocess.run([gp, gpfile], capture_output=True, text=True)
+    if r.returncode != 0 or not os.path.exists(png) or os.path.getsize(png) == 0:
+        return "gnuplot failed: " + r.stderr.strip()[-300:]
+    return None
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("build")
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--work")
+    ap.add_argument("--json")
+    ap.add_argument("--plot")
+    ap.add_argument("--scenes", default="showroom,courtyard")
+    a = ap.parse_args()
+    a.build = os.path.abspath(a.build)
+    # Measuring a seamwalk frame costs more than drawing it (tens of millions
+    # of samples on the showroom): every 12th, 10 of the 120.
+    a.size, a.frames, a.measure_every = ("320x240", 8, 2) if a.quick else ("1280x720", 120, 12)
+    shared = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                           "..", "..", "shared", "models"))
+    if not all(os.path.exists(os.path.join(shared, p)) for p in PARTS):
+        print("walk_bench: skipped: the showroom's parts are not in %s" % shared)
+        return 77
+    work = a.work or tempfile.mkdtemp(prefix="swwalkbench.")
+    os.makedirs(work, exist_ok=True)
+    png = a.plot or os.path.join(work, "walk_bench.png")
+    print("walk_bench: %s, %d frames along each path%s; work in %s"
+          % (a.size, a.frames, " (--quick)" if a.quick else "", work))
+    scenes, failures = [], []
+    for name in a.scenes.split(","):
+        try:
+            sc = run_scene(a, name, work)
+        except (RuntimeError, subprocess.CalledProcessError) as e:
+            failures.append("%s: %s" % (name, e))
+            continue
+        print_scene(a, sc)
+        scenes.append(sc)
+        failures += ["%s: %s" % (name, f) for f in sc.failures]
+    if scenes:
+        problem = plot(a, scenes, png)
+        if problem:
+            failures.append("plot: " + problem)
+        else:
+            print("\nwalk_bench: frame time along the path in %s" % png)
+    result = {"bench": "walk", "viewport": a.size, "frames": a.frames, "quick": a.quick,
+              "as_built_flags": AS_BUILT_FLAGS, "single_flags": SINGLE_FLAGS,
+              "targets": TARGETS, "failures": failures,
+              "scenes": {sc.name: {"patches": sc.info["bezier_patches"],
+                                   "surfaces": sc.info["surfaces"], "notes": sc.notes,
+                                   "uniform_tried": sc.uniform_tried,
+                                   "rows": [{k: v for k, v in r.items() if k != "series"}
+                                            for r in sc.rows],
+                                   "ratios": sc.ratio} for sc in scenes}}
+    if a.json:
+        json.dump(result, open(a.json, "w"), indent=1)
+        print("walk_bench: JSON in %s" % a.json)
+    for f in failures:
+        print("walk_bench: FAIL: " + f)
+    if not a.work and a.plot and not failures:  # kept on failure: the logs are there
+        shutil.rmtree(work, ignore_errors=True)
+    print("walk_bench: %s" % ("failed" if failures else "done"))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
