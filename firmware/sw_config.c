@@ -52,8 +52,7 @@ static const key_desc config_keys[] = {
     {"render", "memory_mb", K_REAL, C(memory_mb), 0, 1, 1 << 20, NULL},
     {"render", "max_error_px", K_REAL, C(max_error_px), 0, 0.01, 100, NULL},
     {"budgets", "frame_ms", K_REAL, C(budget_frame_ms), 0, 1, 1000, NULL},
-    {"budgets", "tris", K_INT, C(budget_tris), 0, 0, INT_MAX, NULL},
-    {"budgets", "tess_ms", K_REAL, C(budget_tess_ms), 0, 0, 1000, NULL},
+    {"budgets", "workers", K_INT, C(budget_workers), 0, -1, 64, NULL},
     {"gamepad", "enabled", K_BOOL, C(gamepad_enabled), 0, 0, 0, NULL},
     {"gamepad", "mapping", K_PATH, C(gamepad_mapping), 0, 0, 0, NULL},
     {"gamepad", "dead_zone", K_REAL, C(gamepad_dead_zone), 0, 0, 0.95, NULL},
@@ -107,9 +106,8 @@ void sw_config_defaults(sw_config *cfg)
     cfg->good_after_s = 30;
     cfg->memory_mb = 256;
     cfg->max_error_px = 0.5;
-    cfg->budget_frame_ms = 33.3;
-    cfg->budget_tris = 2000000;
-    cfg->budget_tess_ms = 8;
+    cfg->budget_frame_ms = 16.7;
+    cfg->budget_workers = -1;
     cfg->gamepad_enabled = 1;
     cfg->gamepad_dead_zone = 0.15;
     static const sw_config_action pad_actions[SW_CONFIG_PAD_BUTTONS] = {

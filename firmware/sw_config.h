@@ -74,9 +74,8 @@ typedef struct sw_config {
     int boot_attempts;
     double good_after_s;
     double memory_mb, max_error_px;
-    double budget_frame_ms;              /* placeholders, see the example file */
-    int budget_tris;
-    double budget_tess_ms;
+    double budget_frame_ms;              /* [budgets] frame_ms: --target-ms */
+    int budget_workers;                  /* [budgets] workers: --workers; -1 the cores less one */
     int gamepad_enabled;
     char gamepad_mapping[SW_CONFIG_PATH_MAX];  /* gamecontrollerdb file, empty: none */
     double gamepad_dead_zone;

@@ -98,8 +98,8 @@ static void set_defaults(sw_options *o)
     o->fill_crossings = 1;
     o->cone_cull = 1;
     o->drop_surface = -1;
-    o->workers = -1;            /* cores - 1, at least 1: decided in main */
-    o->target_ms = 16.7;
+    o->workers = c->budget_workers;   /* -1: cores - 1, at least 1, decided in main */
+    o->target_ms = c->budget_frame_ms;
     o->stall_workers_at = -1;
     /* The test suite's deterministic frames (tests/CMakeLists.txt sets it
      * for every test); the command line's --sync-work wins. */
@@ -123,6 +123,8 @@ static void apply_config(sw_options *o)
     o->good_after_s = c->good_after_s;
     o->memory_mb = c->memory_mb;
     o->max_error_px = c->max_error_px;
+    o->target_ms = c->budget_frame_ms;
+    o->workers = c->budget_workers;
     o->orbit = c->nav_mode == SW_NAV_ORBIT;
 }
 

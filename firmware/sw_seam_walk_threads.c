@@ -61,8 +61,29 @@ static double estimate_tris(const sw_seam_walk *w, uint32_t s, float bound)
     return 32.0 * w->pack->surfaces[s].patch_count;
 }
 
+/* Surface s's mesh handed to the retire ring with the last frame that drew
+ * it (its blocks are free once that frame has finished) and the entry left
+ * empty. The ring holds two meshes a surface, so it cannot be full. */
+static void retire_mesh(sw_seam_walk *w, uint32_t s)
+{
+    sw_seam_entry *e = &w->cache.entries[s];
+    if (e->state == SW_SEAM_READY)
+        sw_retire_ring_put(&w->workers->retire,
+                           (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
+    e->state = SW_SEAM_EMPTY;
+    e->vertex_count = e->index_count = 0;
+}
+
 static void add_job(sw_seam_walk *w, uint32_t s)
 {
+    /* With sync_work the GL thread draws nothing before the batch is in
+     * and the last frame has finished, so the old mesh goes now, as
+     * --workers 0 remakes a surface in place: the batch then has the room
+     * that walk has and makes the same meshes. (Kept beside the new one,
+     * the 0.05 px views of the teacup found no room, were made coarser or
+     * failed, differently from run to run.) */
+    if (w->sync_work)
+        retire_mesh(w, s);
     w->workers->jobs[s] = (sw_seam_job){ w->target[s], w->seam_bound[s] };
     w->busy[s] = 1;
     w->dirty[s] = 0;
@@ -193,27 +214,20 @@ static void evict(sw_seam_walk *w)
         uint32_t v = sw_seam_cache_oldest(c, w->evictable);
         if (v == UINT32_MAX)
             return;
-        sw_seam_entry *e = &c->entries[v];
-        sw_retire_ring_put(&w->workers->retire,
-                           (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
-        e->state = SW_SEAM_EMPTY;
-        e->vertex_count = e->index_count = 0;
+        retire_mesh(w, v);
         c->evictions++;
     }
 }
 
 /* Surface s's published mesh becomes the drawn one; the mesh it replaces
- * is retired with the epoch of the last frame that drew it. The ring holds
- * two meshes a surface, so it cannot be full. */
+ * is retired. */
 static void consume(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
 {
     sw_seam_workers *p = w->workers;
     sw_seam_entry *made = sw_publish_take(&p->slots[s]);
     sw_seam_entry *e = &w->cache.entries[s];
-    if (e->state == SW_SEAM_READY)
-        sw_retire_ring_put(&p->retire,
-                           (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
     uint32_t last = e->last_frame;
+    retire_mesh(w, s);
     *e = *made;
     e->last_frame = last;
     w->busy[s] = 0;

@@ -36,7 +36,7 @@ static void example_loads_and_is_the_defaults(void)
     static const char *const keys[] = {
         "display.display", "display.fov_deg", "pack.pack", "pack.store", "pack.keys",
         "pack.boot_attempts", "pack.good_after_s", "render.memory_mb", "render.max_error_px",
-        "budgets.frame_ms", "budgets.tris", "budgets.tess_ms", "gamepad.enabled",
+        "budgets.frame_ms", "budgets.workers", "gamepad.enabled",
         "gamepad.mapping", "gamepad.dead_zone", "navigation.mode", "navigation.walk_speed_mm_s",
         "navigation.turn_speed_deg_s", "navigation.orbit_speed_deg_s",
         "navigation.attract_timeout_s"};
@@ -354,6 +354,28 @@ static void display_comes_from_the_file_unless_the_command_line_names_one(void)
     SW_CHECK(o.display == SW_DISPLAY_KIND_X11 && o.width == 800 && o.height == 600);
 }
 
+/* [budgets] sets the workers and the frame time the budgets hold; the
+ * command line wins. */
+static void budgets_come_from_the_file(void)
+{
+    write_text("budgets.ini", "[pack]\npack = a.swpack\n[navigation]\nmode = orbit\n"
+                              "[budgets]\nframe_ms = 25\nworkers = 0\n");
+    static sw_options o;
+    sw_error err = {0};
+    char *argv[] = {"seamwalk", "--config", "budgets.ini", "--headless", "64x48", "--workers",
+                    "2"};
+    sw_status st = parse(&o, &err, 5, argv);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    SW_CHECK(o.target_ms == 25 && o.workers == 0);
+    st = parse(&o, &err, 7, argv);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    SW_CHECK(o.target_ms == 25 && o.workers == 2);
+    write_text("budgets.ini", "[budgets]\nworkers = 65\n");
+    SW_CHECK(parse(&o, &err, 5, argv) == SW_ERR_FORMAT);
+    SW_CHECK_MSG(strstr(err.message, "budgets.ini:2: [budgets] workers:") != NULL, "%s",
+                 err.message);
+}
+
 /* --navigate without --config walks with the config's defaults: keyboard and
  * gamepads on, the documented speeds (a zeroed config walked nowhere). */
 static void without_a_file_the_config_has_its_defaults(void)
@@ -467,6 +489,7 @@ int main(int argc, char **argv)
     SW_RUN(command_line_choice_replaces_the_files);
     SW_RUN(display_comes_from_the_file_unless_the_command_line_names_one);
     SW_RUN(without_a_file_the_config_has_its_defaults);
+    SW_RUN(budgets_come_from_the_file);
     SW_RUN(an_unknown_display_word_is_refused);
     SW_RUN(bad_config_stops_option_parsing);
     SW_RUN(without_config_no_file_is_read);
