@@ -446,6 +446,8 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
     if (measuring) {
         s->seam_error_beyond_sewing_px = fmax(s->seam_error_beyond_sewing_px,
                                               f.error_beyond_sewing_px);
+        s->error_behind_beyond_sewing_px = fmax(s->error_behind_beyond_sewing_px,
+                                                f.error_behind_beyond_sewing_px);
         s->seam_sewing_offset_px = fmax(s->seam_sewing_offset_px, f.sewing_offset_px);
         s->seam_chord_px_max = fmax(s->seam_chord_px_max, f.seam_chord_px);
     }
@@ -721,6 +723,10 @@ static void print_summary(const runtime *rt)
            (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, s->error_max_px,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
+    if (s->error_behind_samples)
+        printf("seamwalk: meshes drawn coarser while their new ones were made: error max %.3f"
+               " px (%llu samples, not in the error max above)\n", s->error_behind_max_px,
+               (unsigned long long)s->error_behind_samples);
     if (s->duration_s > 0)
         printf("seamwalk: soak of %.0f s: %llu frames, %llu loops of %d; worst frame %.1f ms"
                " (frame %llu); resident %lld kB at start, %lld after the first loop, %lld at"

@@ -382,11 +382,17 @@ static void refresh_surface(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_se
 
 /* How far a drawn mesh is behind the view (threaded walk): coarser than
  * the view asks, and for how many frames. */
+static double behind_ratio(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e)
+{
+    double want = w->want[s] > 0 ? w->want[s] : e->made_bound;
+    return e->made_bound / want;
+}
+
 static void count_behind(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e,
                          sw_seam_frame *frame)
 {
     double want = w->want[s] > 0 ? w->want[s] : e->made_bound;
-    if (e->made_bound > want) {
+    if (behind_ratio(w, s, e) > 1) {
         frame->behind_surfaces++;
         frame->behind_ratio = fmax(frame->behind_ratio, e->made_bound / want);
     }
@@ -440,7 +446,7 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
                        sw_stats *stats, sw_seam_frame *frame)
 {
     uint32_t part = UINT32_MAX;
-    sw_seam_error acc = { 0, 0, 0 };
+    sw_seam_error acc = { 0, 0, 0 }, behind = { 0, 0, 0 };
     if (stats)
         stats->measured_frames++;
     uint32_t n = w->pack->seam.surface_count;
@@ -464,11 +470,18 @@ void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const 
         if (stats && w->cache.entries[s].state == SW_SEAM_READY) {
             struct timespec t0;
             clock_gettime(CLOCK_MONOTONIC, &t0);
-            measure_surface(w, s, view, stats, &acc);
+            /* A mesh drawn coarser than asked while its new one is made
+             * is measured apart (stats error_px_behind): error_px is then
+             * the error of meshes made for their bounds. */
+            int late = w->workers && behind_ratio(w, s, &w->cache.entries[s]) > 1;
+            stats->route_behind = late;
+            measure_surface(w, s, view, stats, late ? &behind : &acc);
+            stats->route_behind = 0;
             frame->measure_ms += sw_seam_walk_ms_since(&t0);
         }
     }
     frame->error_beyond_sewing_px = acc.beyond_sewing_px;
-    frame->sewing_offset_px = acc.sewing_offset_px;
-    frame->seam_chord_px = acc.chord_px;
+    frame->error_behind_beyond_sewing_px = behind.beyond_sewing_px;
+    frame->sewing_offset_px = fmax(acc.sewing_offset_px, behind.sewing_offset_px);
+    frame->seam_chord_px = fmax(acc.chord_px, behind.chord_px);
 }

@@ -181,6 +181,8 @@ typedef struct sw_seam_frame {
                                      tessellation add: in pixels at the sample, scaled by
                                      half a pixel over the bound where the bound's floor is
                                      coarser than half a pixel (so <= error_px holds) */
+    double error_behind_beyond_sewing_px; /* the same, of meshes drawn coarser than the view
+                                     asks while their new ones are made (not in the one above) */
     double sewing_offset_px;      /* measured: the largest sewing offset of a drawn surface, in
                                      pixels at its nearest depth */
     double seam_chord_px;         /* measured: the most a seam chord lies from its surface at

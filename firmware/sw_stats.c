@@ -97,6 +97,11 @@ void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z)
 
 void sw_stats_add_error_px(sw_stats *s, double e)
 {
+    if (s->route_behind) {
+        s->error_behind_max_px = e > s->error_behind_max_px ? e : s->error_behind_max_px;
+        s->error_behind_samples++;
+        return;
+    }
     if (e > s->error_max_px)
         s->error_max_px = e;
     s->error_samples++;
@@ -333,6 +338,9 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
                "\"measured_frames\": %d, \"measure_every\": %d},\n",
             s->error_max_px, sw_stats_error_p99(s), s->error_bound_px,
             (unsigned long long)s->error_samples, s->measured_frames, s->measure_every);
+    fprintf(f, "  \"error_px_behind\": {\"max\": %.5f, \"beyond_sewing_max\": %.5f, "
+               "\"samples\": %llu},\n", s->error_behind_max_px, s->error_behind_beyond_sewing_px,
+            (unsigned long long)s->error_behind_samples);
     fprintf(f, "  \"cracks_max\": %llu,\n", (unsigned long long)s->cracks_max);
     fprintf(f, "  \"capped_patches_max\": %llu,\n", (unsigned long long)s->capped_patches_max);
     if (s->frames && (write_cache(f, s, scratch) != SW_OK || write_cull(f, s, scratch) != SW_OK)) {

@@ -30,6 +30,14 @@ typedef struct sw_stats {
     double error_bin_px;
     uint64_t error_samples, error_overflow;
     double error_max_px;
+    /* Samples of meshes drawn coarser than the view asks while their new
+     * ones are being made (the threaded walk's first frame and late work,
+     * firmware/sw_seam_walk.h): kept apart from error_px, which is then the
+     * error of meshes made for their bounds; route_behind is set by the
+     * walk around such a mesh's measurement. */
+    int route_behind;
+    uint64_t error_behind_samples;
+    double error_behind_max_px, error_behind_beyond_sewing_px;
     int measured_frames, measure_every;
     double error_bound_px;
 

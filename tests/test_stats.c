@@ -40,6 +40,30 @@ static void test_error_p99_never_understates(void)
     SW_CHECK(s.error_max_px == 9.0 && s.error_overflow == 1);
 }
 
+/* A mesh drawn behind the view (route_behind) is counted apart: its samples
+ * leave error_px alone and make error_px_behind. */
+static void test_behind_samples_are_kept_apart(void)
+{
+    sw_arena a;
+    sw_arena_init(&a, block, sizeof block);
+    sw_stats s;
+    SW_CHECK(sw_stats_init(&s, &a, 4, 0.5, NULL) == SW_OK);
+    sw_stats_add_error_px(&s, 0.2);
+    s.route_behind = 1;
+    sw_stats_add_error_px(&s, 0.9);
+    sw_stats_add_error_px(&s, 0.7);
+    s.route_behind = 0;
+    sw_stats_add_error_px(&s, 0.3);
+    SW_CHECK(s.error_max_px == 0.3 && s.error_samples == 2);
+    SW_CHECK(s.error_behind_max_px == 0.9 && s.error_behind_samples == 2);
+    sw_stats_add_frame(&s, 10.0, 1000u, 5);
+    char buf[8192] = "";
+    FILE *f = fmemopen(buf, sizeof buf - 1, "w");
+    SW_CHECK(sw_stats_write_json(&s, f, &a, NULL) == SW_OK);
+    fclose(f);
+    SW_CHECK_MSG(strstr(buf, "\"error_px_behind\": {\"max\": 0.90000") != NULL, "%s", buf);
+}
+
 static void test_json_has_every_contract_field(void)
 {
     sw_arena a;
@@ -112,6 +136,7 @@ int main(void)
 {
     SW_RUN(test_percentiles_are_nearest_rank);
     SW_RUN(test_error_p99_never_understates);
+    SW_RUN(test_behind_samples_are_kept_apart);
     SW_RUN(test_json_has_every_contract_field);
     SW_RUN(test_frames_past_capacity_keep_the_last_ones);
     SW_RUN(test_rss_fields_are_read_from_status_text);

@@ -58,6 +58,13 @@ for name, j in (("stalled", stalled), ("async", run), ("slow", slow)):
 # in; what it asked for after waits, and the stats say how long.
 assert stalled["threads"]["batches"] <= 6
 assert stalled["threads"]["frames_behind_max"] >= 10
+# Meshes drawn coarser than asked are measured apart: the stalled walk has
+# them (its first frame's meshes, made at twice the bound, are never
+# replaced), and error_px keeps within the bound what was made for it.
+assert stalled["error_px_behind"]["samples"] > 0, stalled["error_px_behind"]
+assert stalled["threads"]["behind_ratio_max"] > 1
+beyond = stalled["seam"]["error_px_beyond_sewing_max"]
+assert beyond <= stalled["error_px"]["bound"], beyond
 assert run["threads"]["batches"] > stalled["threads"]["batches"]
 assert run["threads"]["frames_behind_max"] < stalled["threads"]["frames_behind_max"]
 PY
