@@ -138,15 +138,27 @@ def de_boor(knots, deg, pts, u):
     return d[deg]
 
 
+def num(x, path):
+    """An IGES real: Fortran's D exponent too (1.5D0)."""
+    try:
+        return float(x.replace("D", "E").replace("d", "e"))
+    except ValueError:
+        fail("%s: %r where a number was expected in a surface (128)" % (path, x))
+
+
 def surface_points(v, path):
-    k1, k2, m1, m2 = (int(float(x)) for x in v[0:4])
+    if len(v) < 9:
+        fail("%s: a surface (128) with %d parameters" % (path, len(v)))
+    k1, k2, m1, m2 = (int(num(x, path)) for x in v[0:4])
     n1, n2 = k1 + 1, k2 + 1
     at = 9
-    s = [float(x) for x in v[at:at + k1 + m1 + 2]]; at += len(s)
-    t = [float(x) for x in v[at:at + k2 + m2 + 2]]; at += len(t)
-    w = [float(x) for x in v[at:at + n1 * n2]]; at += len(w)
-    c = [float(x) for x in v[at:at + 3 * n1 * n2]]; at += len(c)
-    u0, u1, v0, v1 = (float(x) for x in v[at:at + 4])
+    s = [num(x, path) for x in v[at:at + k1 + m1 + 2]]; at += len(s)
+    t = [num(x, path) for x in v[at:at + k2 + m2 + 2]]; at += len(t)
+    w = [num(x, path) for x in v[at:at + n1 * n2]]; at += len(w)
+    c = [num(x, path) for x in v[at:at + 3 * n1 * n2]]; at += len(c)
+    if len(v) < at + 4:
+        fail("%s: a surface (128) without its parameter range" % path)
+    u0, u1, v0, v1 = (num(x, path) for x in v[at:at + 4])
     if len(w) != n1 * n2 or len(c) != 3 * n1 * n2 or min(w) <= 0:
         fail("%s: a surface (128) with missing values or non-positive weights" % path)
     ctrl = [c[3 * i:3 * i + 3] for i in range(n1 * n2)]
