@@ -5,7 +5,8 @@
 # clone there, must stay visible through the host root). The initramfs holds
 # only busybox and the 9p modules with their dependencies, in the order
 # modprobe would load them; every other module the guest loads with
-# modprobe from the host root.
+# modprobe from the host root. Nothing is mounted over the host's /tmp (a
+# CI clone there must stay visible): the guest writes under /run/sw.
 #   sw_qemu_kernel                  -> $kernel, $kver (exit 77 without one)
 #   sw_qemu_initrd WORK             -> WORK/initrd.gz
 #   sw_qemu_boot WORK OUT LOG QEMU_ARGS...  runs OUT/guest.sh; LOG: console
@@ -44,7 +45,6 @@ sh /load-modules
 mount -t 9p -o trans=virtio,version=9p2000.L,ro hostroot /host || echo "SW_QEMU: no host root"
 for d in proc sys dev; do mount --bind /$d /host/$d; done
 mount -t tmpfs run /host/run && mkdir -p /host/run/sw
-mount -t tmpfs tmp /host/tmp
 mount -t 9p -o trans=virtio,version=9p2000.L work /host/run/sw || echo "SW_QEMU: no work"
 chroot /host /bin/bash /run/sw/guest.sh
 echo "SW_QEMU_DONE"

@@ -1,14 +1,14 @@
 #!/bin/sh
 # Inside the QEMU guest (tests/qemu/run-uhid.sh), chrooted into the host's
-# root over 9p, read-only, /tmp a tmpfs (tests/qemu/qemu_boot.sh): a UHID
+# root over 9p, read-only, with /run/sw writable (tests/qemu/qemu_boot.sh): a UHID
 # gamepad that hidapi really opens drives seamwalk --navigate; the results
 # go to the serial console.
 #   uhid_guest.sh BUILD_DIR SOURCE_DIR
 build=$1 src=$2
 modprobe uhid || echo "QEMU-UHID: modprobe uhid failed"
 modprobe hid-generic || echo "QEMU-UHID: modprobe hid-generic failed"
-export HOME=/tmp LIBGL_ALWAYS_SOFTWARE=1
-w=/tmp/w; mkdir -p $w
+export HOME=/run/sw LIBGL_ALWAYS_SOFTWARE=1
+w=/run/sw/w; mkdir -p $w
 cat > $w/unit.ini <<INI
 [display]
 size = 64x48
