@@ -24,10 +24,19 @@ INI
 # The pad waits until seamwalk opens it (at its first frame), then 20 s
 # more, because that first frame compiles llvmpipe's shaders, which under
 # TCG takes seconds; then it pushes for 5 s.
+# The walk runs until the pad is gone and 3 s more (its unplug logged),
+# then a service stop (SIGTERM) ends it through the normal exit: not a
+# frame count, whose time depends on the machine.
 $build/tests/qemu/uhid_pad $src/tests/hid/logitech_f310_dinput.hex 20 5 2> $w/pad.log &
+pad=$!
 (sleep 3; echo "QEMU-UHID: hidraw nodes: $(ls /sys/class/hidraw 2>&1 | tr '\n' ' ')") &
-$build/firmware/seamwalk --config $w/unit.ini --navigate --frames 4000 --pose-log $w/poses \
-  --stats $w/stats.json > /dev/null 2> $w/seamwalk.log
+$build/firmware/seamwalk --config $w/unit.ini --navigate --frames 1000 --duration 600 \
+  --pose-log $w/poses --stats $w/stats.json > /dev/null 2> $w/seamwalk.log &
+walker=$!
+wait $pad
+sleep 3
+kill -TERM $walker
+wait $walker
 echo "QEMU-UHID: seamwalk exit $?"
 wait
 sed 's/^/QEMU-UHID: /' $w/pad.log $w/seamwalk.log
