@@ -32,6 +32,10 @@ packages=(
   libtbb-dev                         # OCCT's CMake targets link libtbb.so, which only -dev ships
 )
 
+# Arguments replace the list: a step that needs more than the build (the
+# QEMU tests, tests/qemu/kms_deps.sh) installs its packages the same way.
+[ $# -gt 0 ] && packages=("$@")
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -391,10 +391,10 @@ static double behind_ratio(const sw_seam_walk *w, uint32_t s, const sw_seam_entr
 static void count_behind(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e,
                          sw_seam_frame *frame)
 {
-    double want = w->want[s] > 0 ? w->want[s] : e->made_bound;
-    if (behind_ratio(w, s, e) > 1) {
+    double ratio = behind_ratio(w, s, e);
+    if (ratio > 1) {
         frame->behind_surfaces++;
-        frame->behind_ratio = fmax(frame->behind_ratio, e->made_bound / want);
+        frame->behind_ratio = fmax(frame->behind_ratio, ratio);
     }
     if (w->need_since[s] != UINT32_MAX && w->frame - 1 - w->need_since[s] > frame->frames_behind)
         frame->frames_behind = w->frame - 1 - w->need_since[s];
