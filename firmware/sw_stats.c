@@ -186,15 +186,21 @@ static void write_store(FILE *f, const sw_stats *s)
     fputs("},\n", f);
 }
 
+/* n floats of sorting scratch (one byte more, so n 0 still gets a pointer). */
+static float *scratch_floats(sw_arena *scratch, int n)
+{
+    return sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+}
+
 /* The cache's figures; without_tess is frame_ms less tess_ms, per frame:
  * what the frame costs with the same cached triangles and no tessellating
  * (culling, seam selection, drawing, glFinish). */
 static sw_status write_cache(FILE *f, const sw_stats *s, sw_arena *scratch)
 {
     int n = s->frames;
-    float *tess = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
-    float *rest = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
-    float *count = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *tess = scratch_floats(scratch, n);
+    float *rest = scratch_floats(scratch, n);
+    float *count = scratch_floats(scratch, n);
     if (!tess || !rest || !count)
         return SW_ERR_NO_MEMORY;
     for (int i = 0; i < n; i++) {
@@ -222,9 +228,9 @@ static sw_status write_cache(FILE *f, const sw_stats *s, sw_arena *scratch)
 static sw_status write_cull(FILE *f, const sw_stats *s, sw_arena *scratch)
 {
     int n = s->frames;
-    float *tests = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
-    float *cones = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
-    float *ms = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *tests = scratch_floats(scratch, n);
+    float *cones = scratch_floats(scratch, n);
+    float *ms = scratch_floats(scratch, n);
     if (!tests || !cones || !ms)
         return SW_ERR_NO_MEMORY;
     for (int i = 0; i < n; i++) {
@@ -317,7 +323,7 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
 {
     size_t mark = sw_arena_mark(scratch);
     int n = s->frames;
-    float *ms = sw_arena_alloc(scratch, (size_t)n * sizeof(float) + 1, 8);
+    float *ms = scratch_floats(scratch, n);
     float *tris = copy_as_float_u32(s->tris, n, scratch);
     float *vis = copy_as_float_u32(s->visible, n, scratch);
     if (!ms || !tris || !vis) {
