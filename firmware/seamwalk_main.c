@@ -32,7 +32,7 @@
 #include "sw_png.h"
 #include "sw_renderer.h"
 #include "sw_rss.h"
-#include "sw_seam_depth.h"
+#include "sw_seam_visibility.h"
 #include "sw_seam_walk.h"
 #include "sw_stats.h"
 #include "sw_up_axis.h"
@@ -45,9 +45,12 @@ typedef struct runtime {
     sw_camera_path path;
     sw_seam_walk seam;
     int workers;              /* tessellation threads (--workers, resolved) */
-    void *worker_block;       /* their buffers: known only once the pack is loaded (its
+    void *frame_block;        /* the frames' own buffers (plans, measuring scratch, the
+                                 workers'): known only once the pack is loaded (its
                                  largest surface), taken at start like the arena */
-    sw_arena worker_arena;
+    sw_arena frame_arena;
+    sw_seam_visibility vis;   /* V, the walk's visibility side (sw_seam_visibility.h) */
+    int vis_up;
     size_t walk_bytes;        /* of the arena, what the seam walk took */
     sw_seam_drawn drawn;      /* the seams as drawn, checked in measured frames */
     sw_seam_fill fill;        /* fans over the tessellations' seam crossings */
@@ -148,34 +151,45 @@ static int workers_wanted(const sw_options *o)
                                                                  : cores - 1) : 1;
 }
 
-/* The workers' buffers (a maker each: the pack's largest surface decides
- * their size, so they cannot be counted from the header as the arena is)
- * in a second block taken now, before the walk's allocation count starts,
- * and held to --memory-mb with the arena; then the threads. */
-static sw_status start_workers(runtime *rt, sw_error *err)
+/* The frames' own buffers (the plans, P's measuring scratch and a maker
+ * per worker: the pack's largest surface decides their size, so they
+ * cannot be counted from the header as the arena is) in a second block
+ * taken now, before the walk's allocation count starts, and held to
+ * --memory-mb with the arena; then the threads: the workers, and V when
+ * there are workers (without them the frame's tessellation is V's, and
+ * a thread for it would only move it). */
+static sw_status start_frames(runtime *rt, sw_error *err)
 {
     rt->workers = workers_wanted(&rt->opt);
     rt->stats.workers = rt->workers;
     rt->stats.sync_work = rt->opt.sync_work;
     rt->stats.target_ms = rt->opt.target_ms;
-    if (rt->workers == 0)
-        return SW_OK;
-    size_t need = sw_seam_walk_worker_bytes(&rt->pack, (uint32_t)rt->workers,
-                                            rt->opt.fill_crossings) + 4096;
+    size_t need = sw_seam_walk_frame_bytes(&rt->pack, (uint32_t)rt->workers,
+                                           rt->opt.fill_crossings) + 4096;
     double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
     if ((double)(rt->arena.size + need) > limit)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "with --workers %d needs %.1f MiB of memory "
-                            "(the arena %.1f and the workers' %.1f), more than --memory-mb %.1f",
-                            rt->workers, (rt->arena.size + need) / 1048576.0,
-                            rt->arena.size / 1048576.0, need / 1048576.0, rt->opt.memory_mb);
-    if (!(rt->worker_block = malloc(need)))
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the workers", need);
-    sw_arena_init(&rt->worker_arena, rt->worker_block, need);
+                            "(the arena %.1f and the frames' and workers' %.1f), more than "
+                            "--memory-mb %.1f", rt->workers,
+                            (rt->arena.size + need) / 1048576.0, rt->arena.size / 1048576.0,
+                            need / 1048576.0, rt->opt.memory_mb);
+    if (!(rt->frame_block = malloc(need)))
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the frames", need);
+    sw_arena_init(&rt->frame_arena, rt->frame_block, need);
     rt->seam.sync_work = rt->opt.sync_work;
-    sw_status st = sw_seam_walk_start_workers(&rt->seam, (uint32_t)rt->workers,
-                                              rt->opt.target_ms, &rt->arena, &rt->worker_arena,
-                                              err);
-    sw_seam_walk_slow_workers(&rt->seam, rt->opt.slow_workers_ms);
+    sw_status st = SW_OK;
+    if (rt->workers > 0) {
+        st = sw_seam_walk_start_workers(&rt->seam, (uint32_t)rt->workers, rt->opt.target_ms,
+                                        &rt->arena, &rt->frame_arena, err);
+        sw_seam_walk_slow_workers(&rt->seam, rt->opt.slow_workers_ms);
+    }
+    int threaded = rt->workers > 0 && rt->opt.visibility_thread;
+    rt->stats.visibility_thread = threaded;
+    if (st == SW_OK) {
+        rt->vis_up = 1;
+        st = sw_seam_visibility_start(&rt->vis, &rt->seam, threaded, rt->opt.sync_work,
+                                      &rt->frame_arena, err);
+    }
     return st;
 }
 
@@ -210,7 +224,7 @@ static sw_status init_seams(runtime *rt, sw_error *err)
                                &rt->arena, err);
     rt->seam.drawn = &rt->drawn;
     rt->seam.fill = rt->opt.fill_crossings ? &rt->fill : NULL;
-    return st == SW_OK ? start_workers(rt, err) : st;
+    return st == SW_OK ? start_frames(rt, err) : st;
 }
 
 static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
@@ -363,18 +377,17 @@ static sw_status write_png(runtime *rt, int frame, sw_error *err)
                         (size_t)rt->opt.width * 3, &rt->arena, err);
 }
 
-/* The frame's view with near and far fitted to what the walk selected
- * (sw_seam_depth.h), so the depth buffer's bits go where the model is; its
- * projection starts the frame. */
-static sw_view begin_frame(runtime *rt, const sw_view *culled)
+/* The plan's view with near and far fitted to what the walk selected
+ * (sw_seam_depth.h, in the plan), so the depth buffer's bits go where the
+ * model is; its projection starts the frame. */
+static sw_view begin_frame(runtime *rt, const sw_seam_plan *plan)
 {
     static const float default_background[4] = { 0.93f, 0.94f, 0.96f, 1.0f };
     float background[4] = { rt->opt.background[0], rt->opt.background[1],
                             rt->opt.background[2], 1.0f };
-    double nearest, farthest;
-    sw_view view = *culled;
-    if (rt->opt.depth_fit && sw_seam_depth_range(&rt->seam, culled, &nearest, &farthest))
-        view = sw_view_fit_depth(culled, nearest, farthest, rt->depth_bits);
+    sw_view view = plan->view;
+    if (rt->opt.depth_fit && plan->depth_known)
+        view = sw_view_fit_depth(&plan->view, plan->nearest, plan->farthest, rt->depth_bits);
     sw_stats_add_depth_range(&rt->stats, view.near_z, view.far_z);
     float mv[16], proj[16];
     sw_mat4_to_float(&view.view, mv);
@@ -397,20 +410,20 @@ static void add_drawn(sw_stats *s, sw_seam_drawn *d)
     s->drawn_free_max = r.free_points > s->drawn_free_max ? r.free_points : s->drawn_free_max;
 }
 
-/* Selects, starts the frame and draws through the Seam Graph; its own
- * measurement. */
-static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
-                            uint64_t *triangles, uint32_t *drawn, uint32_t *capped,
-                            double *measure_ms, int *swapped, sw_error *err)
+/* Takes the frame's plan (from V), starts the frame and draws it through
+ * the Seam Graph; its own measurement. */
+static sw_status seam_frame(runtime *rt, int measuring, uint64_t *triangles, uint32_t *drawn,
+                            uint32_t *capped, double *measure_ms, int *swapped, sw_error *err)
 {
     sw_seam_frame f;
-    sw_status st = sw_seam_walk_select(&rt->seam, culled, &f, err);
+    const sw_seam_plan *plan;
+    sw_status st = sw_seam_visibility_take(&rt->vis, &plan, &f, err);
     if (st != SW_OK)
         return st;
-    sw_view view = begin_frame(rt, culled);
+    sw_view view = begin_frame(rt, plan);
     sw_seam_drawn_begin(&rt->drawn);
-    sw_seam_walk_draw(&rt->seam, &rt->renderer, &rt->pool, &view, measuring ? &rt->stats : NULL,
-                      &f);
+    sw_seam_walk_draw_plan(&rt->seam, &rt->renderer, &rt->pool, plan, &view,
+                           measuring ? &rt->stats : NULL, &f);
     double check_s = now_s();
     if (measuring) /* measurement, like the walk's own: not part of the frame's time */
         add_drawn(&rt->stats, &rt->drawn);
@@ -443,6 +456,7 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
         sw_stats_add_threads_frame(s, f.waiting_surfaces, f.behind_surfaces, f.frames_behind,
                                    f.behind_ratio, f.jobs_scheduled, f.batches_committed,
                                    f.seam_ops, f.budget_tris, f.budget_used);
+    sw_stats_add_visibility_frame(s, f.visibility_ms, f.plan_wait_ms);
     if (measuring) {
         s->seam_error_beyond_sewing_px = fmax(s->seam_error_beyond_sewing_px,
                                               f.error_beyond_sewing_px);
@@ -454,28 +468,52 @@ static sw_status seam_frame(runtime *rt, const sw_view *culled, int measuring,
     return SW_OK;
 }
 
-static sw_status run_frame(runtime *rt, int frame, sw_error *err)
+/* The walk's frame f (counting every loop of --duration) is walked. */
+static int walking(const runtime *rt, uint64_t f, double t0)
 {
-    double t0 = now_s();
+    if (rt->opt.duration_s > 0)
+        return now_s() - t0 < rt->opt.duration_s;
+    return f < (uint64_t)rt->opt.frames;
+}
+
+/* Frame f's view (the input step runs here, with --navigate) posted to V.
+ * With --test-stall-workers F the workers stall before V selects frame F. */
+static void post_view(runtime *rt, uint64_t f)
+{
+    int frame = (int)(f % (uint64_t)rt->opt.frames);
+    if (frame == rt->opt.stall_workers_at)
+        sw_seam_walk_stall_workers(&rt->seam, 1);
+    if (rt->kiosk_up) /* the input step: devices -> actions -> navigation -> pose */
+        rt->kiosk_pose = sw_kiosk_run_frame(&rt->kiosk, (int)f);
     sw_camera_pose pose = pose_at(rt, frame);
     sw_view view = sw_view_make_depth(&pose, rt->opt.fov_deg * SW_PI / 180.0, rt->opt.width,
                                       rt->opt.height, &rt->model_box, rt->depth_bits);
+    sw_seam_visibility_post(&rt->vis, &view);
+}
+
+/* Frame f: the next frame's view to V first (so V selects it while this
+ * one is drawn; with --duration it may go unused at the end), then this
+ * frame's plan drawn. */
+static sw_status run_frame(runtime *rt, uint64_t f, sw_error *err)
+{
+    int frame = (int)(f % (uint64_t)rt->opt.frames);
+    if (rt->opt.duration_s > 0 || f + 1 < (uint64_t)rt->opt.frames)
+        post_view(rt, f + 1);
+    double t0 = now_s();
     int measuring = frame % rt->opt.measure_every == 0;
-    if (frame == rt->opt.stall_workers_at)
-        sw_seam_walk_stall_workers(&rt->seam, 1);
     uint64_t triangles = 0;
     uint32_t drawn = 0, capped = 0;
     double measure_ms = 0;
     int swapped = 0;
-    sw_status st = seam_frame(rt, &view, measuring, &triangles, &drawn, &capped, &measure_ms,
-                              &swapped, err);
+    sw_status st = seam_frame(rt, measuring, &triangles, &drawn, &capped, &measure_ms, &swapped,
+                              err);
     if (st != SW_OK)
         return st;
     sw_renderer_finish(&rt->renderer);
     double ms = (now_s() - t0) * 1000.0 - measure_ms;
     int first = rt->stats.frames_total == 0;
     sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, drawn);
-    sw_seam_walk_end_frame(&rt->seam, ms, swapped);
+    sw_seam_visibility_done(&rt->vis, ms, swapped);
     if (first) /* less the measurement, as every frame's time */
         rt->stats.first_frame_ms = (now_s() - rt->start_s) * 1000.0 - measure_ms;
     if (capped > rt->stats.capped_patches_max)
@@ -506,15 +544,6 @@ static int64_t rss_now_kb(sw_stats *s)
     return r.rss_kb;
 }
 
-/* --frames frames, or with --duration (the soak) the same frames as a
- * loop until the time is up. */
-static int walking(const runtime *rt, uint64_t frame, double t0)
-{
-    if (rt->opt.duration_s > 0)
-        return now_s() - t0 < rt->opt.duration_s;
-    return frame < (uint64_t)rt->opt.frames;
-}
-
 static sw_status walk(runtime *rt, sw_error *err)
 {
     process_count_fn process = process_alloc_counter();
@@ -524,10 +553,9 @@ static sw_status walk(runtime *rt, sw_error *err)
     s->duration_s = rt->opt.duration_s;
     s->rss_start_kb = rss_now_kb(s);
     double t0 = now_s();
+    post_view(rt, 0);
     for (uint64_t f = 0; walking(rt, f, t0); f++) {
-        if (rt->kiosk_up) /* the input step: devices -> actions -> navigation -> pose */
-            rt->kiosk_pose = sw_kiosk_run_frame(&rt->kiosk, (int)f);
-        sw_status st = run_frame(rt, (int)(f % (uint64_t)rt->opt.frames), err);
+        sw_status st = run_frame(rt, f, err);
         if (st != SW_OK)
             return st;
         if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops <= SW_STATS_RSS_LOOPS) {
@@ -659,8 +687,8 @@ static sw_status write_stats(runtime *rt, sw_error *err)
         store_stats(rt);
     s->patches_total = rt->pack.meta ? rt->pack.meta->patch_count : 0;
     s->measure_every = rt->opt.measure_every;
-    s->arena_bytes = rt->arena.size + rt->worker_arena.size;
-    s->arena_peak_bytes = rt->arena.peak + rt->worker_arena.peak;
+    s->arena_bytes = rt->arena.size + rt->frame_arena.size;
+    s->arena_peak_bytes = rt->arena.peak + rt->frame_arena.peak;
     if (rt->seam.workers) {
         sw_seam_workers *p = rt->seam.workers;
         s->worker_triangles = atomic_load(&p->made_triangles);
@@ -688,9 +716,12 @@ static void stop_walk(runtime *rt)
     if (rt->kiosk_up)
         sw_kiosk_run_stop(&rt->kiosk);
     rt->kiosk_up = 0;
+    if (rt->vis_up)   /* V first: it may be waiting for the workers' first batch */
+        sw_seam_visibility_stop(&rt->vis);
+    rt->vis_up = 0;
     sw_seam_walk_stop_workers(&rt->seam);
-    free(rt->worker_block);
-    rt->worker_block = NULL;
+    free(rt->frame_block);
+    rt->frame_block = NULL;
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
     if (rt->renderer_up)

@@ -101,6 +101,7 @@ static void set_defaults(sw_options *o)
     o->workers = c->budget_workers;   /* -1: cores - 1, at least 1, decided in main */
     o->target_ms = c->budget_frame_ms;
     o->stall_workers_at = -1;
+    o->visibility_thread = 1;
     /* The test suite's deterministic frames (tests/CMakeLists.txt sets it
      * for every test); the command line's --sync-work wins. */
     const char *sync = getenv("SEAMWALK_TEST_SYNC_WORK");
@@ -279,6 +280,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_int(a, v, 0, SW_OPTIONS_MAX_WORKERS, &o->workers, err);
         } else if (!strcmp(a, "--target-ms")) {
             st = parse_real(a, v, 1, 10000, &o->target_ms, err);
+        } else if (!strcmp(a, "--visibility-thread")) {
+            st = parse_int(a, v, 0, 1, &o->visibility_thread, err);
         } else if (!strcmp(a, "--sync-work")) {
             st = parse_int(a, v, 0, 1, &o->sync_work, err);
         } else if (!strcmp(a, "--test-slow-workers")) {
@@ -309,7 +312,7 @@ void sw_options_print_usage(const char *argv0)
             "          [--config FILE] [--pose-log FILE] [--no-cache] [--background R,G,B]\n"
             "          [--back-faces lit|hidden|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
             "          [--fill-crossings 0|1] [--cone-cull 0|1] [--cull tree|brute]\n"
-            "          [--workers N] [--target-ms MS]\n"
+            "          [--workers N] [--target-ms MS] [--visibility-thread 0|1]\n"
             "Walks a seamwalk pack and shows it on a display.\n"
             "  --display NAME      where to draw (default auto, or [display] display):\n"
             "                        headless  EGL surfaceless, offscreen; needs a size (CI)\n"
@@ -368,6 +371,10 @@ void sw_options_print_usage(const char *argv0)
             "                      waiting for them (the first frame excepted)\n"
             "  --target-ms MS      the frame time the work budgets hold with workers (default\n"
             "                      16.7): the triangles made a frame follow from it\n"
+            "  --visibility-thread 0|1  with workers, 1 (default): culling, bounds, seams\n"
+            "                      and scheduling for the next frame run on their own\n"
+            "                      thread while this one is drawn (the input then shows\n"
+            "                      a frame later); 0: on the drawing thread, in turn\n"
             "  --sync-work 0|1     1: each frame waits for the work it asked for, no budget:\n"
             "                      frames as --workers 0 draws them, for the tests' golden\n"
             "                      images (default 0; the test suite sets\n"

@@ -21,19 +21,25 @@ static void *take(sw_arena *a, size_t bytes, int *failed)
     return p;
 }
 
-/* Surface s's sewing offset, measured the first time a frame measures the
- * surface (it is measurement, not drawing: done for all surfaces at init
- * it took 40% of the 40,000-patch showroom's start). patches: s's. */
-static float sewing_offset(sw_seam_walk *w, uint32_t s, const sw_trim_patch *patches,
-                           uint32_t patch_count)
+/* Surface s's sewing offset, worked out the first time a thread asks for
+ * it and kept in its own array (known: V's for cone culling, P's for
+ * measuring; neither thread writes the other's). Done for all surfaces at
+ * init it took 40% of the 40,000-patch showroom's start. patches: the
+ * asking thread's scratch for capacity patches; 0 when s's patches do not
+ * fit it (they always do: it is sized for the largest surface). */
+float sw_seam_walk_sewing_offset(const sw_seam_walk *w, uint32_t s, float *known,
+                                 sw_trim_patch *patches, uint32_t capacity)
 {
-    if (w->sew_offset[s] >= 0)
-        return w->sew_offset[s];
+    if (known[s] >= 0)
+        return known[s];
+    uint32_t count = 0;
+    if (sw_trim_patches_from_pack(w->pack, s, patches, capacity, &count, NULL))
+        return 0;
     const sw_seam_graph *g = &w->pack->seam;
     double worst = 0;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
-        worst = fmax(worst, sw_seam_measure_sewing_offset(g, &g->loops[l], patches, patch_count));
-    return w->sew_offset[s] = (float)worst;
+        worst = fmax(worst, sw_seam_measure_sewing_offset(g, &g->loops[l], patches, count));
+    return known[s] = (float)worst;
 }
 
 /* The per-surface state of the threaded walk (counted with the rest in
@@ -185,10 +191,13 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
 #define SW_SEAM_CONE_MARGIN_RAD 0.05
 
 /* Surface s, all in box, shows only its back to the eye: its box grown by
- * its border's sewing offset (the seam vertices it draws). */
-static int facing_away(const sw_seam_walk *w, const sw_view *view, uint32_t s, const sw_box *box)
+ * its border's sewing offset (the seam vertices it draws). (The offset was
+ * once read from the measurement's array, -1 for a surface not measured
+ * yet: such boxes shrank by one model unit.) */
+static int facing_away(sw_seam_walk *w, const sw_view *view, uint32_t s, const sw_box *box)
 {
-    double grow = w->sew_offset[s];
+    double grow = sw_seam_walk_sewing_offset(w, s, w->sew_offset, w->maker.patches,
+                                             w->maker.max_patches);
     sw_box b = { sw_v3_sub(box->min, sw_v3(grow, grow, grow)),
                  sw_v3_add(box->max, sw_v3(grow, grow, grow)) };
     return sw_normal_cone_back_facing(&w->cones[s], &b, view->eye, SW_SEAM_CONE_MARGIN_RAD);
@@ -303,8 +312,8 @@ static int place_in_frame(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam
 }
 
 /* Makes surface s's entry for its target from its current loops, in the
- * frame: a mesh, uploaded, or the reason there is none. */
-static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
+ * frame: a mesh, planned for upload, or the reason there is none. */
+static void remake(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     sw_seam_cache *c = &w->cache;
     sw_seam_cache_drop(c, s);
@@ -323,40 +332,7 @@ static void remake(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame 
     frame->retessellated++;
     frame->retess_triangles += tris;
     if (made.state == SW_SEAM_READY)
-        sw_seam_walk_upload(w, s, pool, frame);
-}
-
-void sw_seam_walk_upload(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
-{
-    const sw_seam_cache *c = &w->cache;
-    const sw_seam_entry *e = &c->entries[s];
-    uint32_t v0 = sw_seam_cache_first_vertex(c, s), i0 = sw_seam_cache_first_index(c, s);
-    uint64_t before = pool->bytes_uploaded;
-    sw_gl_pool_upload(pool, v0, c->verts + v0, e->vertex_count, i0, c->index_data + i0,
-                      e->index_count);
-    frame->upload_bytes += pool->bytes_uploaded - before;
-}
-
-/* The drawn mesh (in the cache) against the exact surface. */
-static void measure_surface(sw_seam_walk *w, uint32_t s, const sw_view *view, sw_stats *stats,
-                            sw_seam_error *acc)
-{
-    const sw_seam_cache *c = &w->cache;
-    const sw_seam_entry *e = &c->entries[s];
-    sw_seam_maker *k = &w->maker;
-    uint32_t patch_count = 0;
-    if (sw_trim_patches_from_pack(w->pack, s, k->patches, k->max_patches, &patch_count, NULL))
-        return;
-    uint32_t v0 = sw_seam_cache_first_vertex(c, s);
-    const sw_seam_mesh mesh = { c->verts + v0, c->uvs + 2 * (size_t)v0,
-                                c->index_data + sw_seam_cache_first_index(c, s),
-                                e->vertex_count, e->index_count };
-    const sw_seam_exact exact = { k->patches, patch_count,
-                                  sewing_offset(w, s, k->patches, patch_count), w->depth[s],
-                                  w->error_px, w->bound_floor };
-    sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
-    if (w->drawn)
-        sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
+        sw_seam_walk_plan_upload(w, s, plan);
 }
 
 double sw_seam_walk_ms_since(const struct timespec *a)
@@ -368,120 +344,15 @@ double sw_seam_walk_ms_since(const struct timespec *a)
 
 /* Surface s's mesh for this frame: remade when it has none or it no
  * longer serves (its target moved or its loops changed). */
-static void refresh_surface(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
+void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     const sw_seam_entry *e = &w->cache.entries[s];
     if (e->state == SW_SEAM_EMPTY || e->made_bound != w->target[s] || w->dirty[s] ||
         w->no_cache) {
         struct timespec t0;
         clock_gettime(CLOCK_MONOTONIC, &t0);
-        remake(w, s, pool, frame);
+        remake(w, s, plan, frame);
         frame->tess_ms += sw_seam_walk_ms_since(&t0);
     }
 }
 
-/* How far a drawn mesh is behind the view (threaded walk): coarser than
- * the view asks, and for how many frames. */
-static double behind_ratio(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e)
-{
-    double want = w->want[s] > 0 ? w->want[s] : e->made_bound;
-    return e->made_bound / want;
-}
-
-static void count_behind(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e,
-                         sw_seam_frame *frame)
-{
-    double ratio = behind_ratio(w, s, e);
-    if (ratio > 1) {
-        frame->behind_surfaces++;
-        frame->behind_ratio = fmax(frame->behind_ratio, ratio);
-    }
-    if (w->need_since[s] != UINT32_MAX && w->frame - 1 - w->need_since[s] > frame->frames_behind)
-        frame->frames_behind = w->frame - 1 - w->need_since[s];
-}
-
-/* Surface s drawn from the cache, counted. */
-static void draw_surface(sw_seam_walk *w, uint32_t s, sw_renderer *r, sw_gl_pool *pool,
-                         uint32_t *part, sw_seam_frame *frame)
-{
-    sw_seam_entry *e = &w->cache.entries[s];
-    if (e->state == SW_SEAM_GONE) {
-        frame->vanished_surfaces++;
-        return;
-    }
-    frame->cracks += e->cracks;
-    if (e->state == SW_SEAM_EMPTY && w->workers) {
-        frame->waiting_surfaces++;   /* its first mesh is not made yet */
-        return;
-    }
-    if (e->state != SW_SEAM_READY) {
-        frame->failed_surfaces++;
-        return;
-    }
-    const sw_pack *pack = w->pack;
-    if (pack->surfaces[s].part != *part) {
-        *part = pack->surfaces[s].part;
-        sw_renderer_set_color(r, pack->parts[*part].color);
-    }
-    uint32_t v0 = sw_seam_cache_first_vertex(&w->cache, s);
-    uint32_t i0 = sw_seam_cache_first_index(&w->cache, s), fill = 3 * e->fill_triangles;
-    sw_gl_pool_draw(pool, r, v0, i0, e->index_count - fill);
-    if (fill) { /* the fans after the mesh, lit as the surface (sw_renderer_set_fill) */
-        sw_renderer_set_fill(r, 1);
-        sw_gl_pool_draw(pool, r, v0, i0 + e->index_count - fill, fill);
-        sw_renderer_set_fill(r, 0);
-    }
-    e->last_frame = w->frame;
-    frame->drawn_surfaces++;
-    frame->triangles += e->index_count / 3 - e->fill_triangles;
-    frame->fill_triangles += e->fill_triangles;
-    frame->crossings += e->crossings;
-    frame->capped_surfaces += e->capped;
-    frame->holes_filled += e->holes_filled;
-    if (w->workers)
-        count_behind(w, s, e, frame);
-}
-
-void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const sw_view *view,
-                       sw_stats *stats, sw_seam_frame *frame)
-{
-    uint32_t part = UINT32_MAX;
-    sw_seam_error acc = { 0, 0, 0 }, behind = { 0, 0, 0 };
-    if (stats)
-        stats->measured_frames++;
-    uint32_t n = w->pack->seam.surface_count;
-    /* Every upload before the first draw: a glBufferSubData into a buffer
-     * that queued draws read makes the driver flush them first (llvmpipe:
-     * 70 uploads between draws took the teaset's frame from 80 to 300 ms). */
-    if (w->workers)
-        sw_seam_walk_commit(w, pool, frame);
-    else
-        for (uint32_t s = 0; s < n; s++)
-            if (sw_seam_walk_needs_mesh(w, s))
-                refresh_surface(w, s, pool, frame);
-    for (uint32_t s = 0; s < n; s++) {
-        if (w->visible[s] == SW_SEAM_WALK_TINY)
-            frame->vanished_surfaces++;
-        if (w->visible[s] == SW_SEAM_WALK_AWAY) /* as if drawn, for the cache's order */
-            w->cache.entries[s].last_frame = w->frame;
-        if (w->visible[s] != 1 || s == w->drop_surface)
-            continue;
-        draw_surface(w, s, r, pool, &part, frame);
-        if (stats && w->cache.entries[s].state == SW_SEAM_READY) {
-            struct timespec t0;
-            clock_gettime(CLOCK_MONOTONIC, &t0);
-            /* A mesh drawn coarser than asked while its new one is made
-             * is measured apart (stats error_px_behind): error_px is then
-             * the error of meshes made for their bounds. */
-            int late = w->workers && behind_ratio(w, s, &w->cache.entries[s]) > 1;
-            stats->route_behind = late;
-            measure_surface(w, s, view, stats, late ? &behind : &acc);
-            stats->route_behind = 0;
-            frame->measure_ms += sw_seam_walk_ms_since(&t0);
-        }
-    }
-    frame->error_beyond_sewing_px = acc.beyond_sewing_px;
-    frame->error_behind_beyond_sewing_px = behind.beyond_sewing_px;
-    frame->sewing_offset_px = fmax(acc.sewing_offset_px, behind.sewing_offset_px);
-    frame->seam_chord_px = fmax(acc.chord_px, behind.chord_px);
-}

@@ -22,16 +22,17 @@
  * when they do (sw_seam_select_surface_changed), the surface is tessellated
  * again too. A still camera re-tessellates nothing.
  *
- * Threads (sw_seam_walk_start_workers; paper 000 section 5): without
- * workers the tessellation runs in the frame as above. With them, the
- * walk schedules the work and the workers T (sw_seam_workers.h) make the
- * meshes while the GL thread P goes on drawing the meshes it has. The
- * visibility work (paper 000's V: culling, bounds, the seam front, the
- * schedule) runs on P's thread before it draws, not on a thread of its
- * own: on this 2-core machine a third busy thread would share a core with
- * T or with llvmpipe's rasteriser; what P and V share (the visible set, the
- * cache entries, the batch) would need the per-frame double buffers and the
- * activity list of paper 000 section 5.2 first.
+ * Threads (paper 000 section 5): the frame is split into the visibility
+ * side V, which selects (culling, bounds, the seam front), schedules the
+ * work, swaps finished batches in and writes the frame's plan
+ * (sw_seam_walk_select, then sw_seam_walk_plan: sw_seam_plan.h, what to
+ * upload and draw), and the GL thread P, which draws a plan
+ * (sw_seam_walk_draw_plan) reading nothing else of the walk. With a
+ * visibility thread (sw_seam_visibility.h) V plans frame i+1 while P draws
+ * frame i; without one P runs both halves in turn. Without workers the
+ * tessellation runs in V's half of the frame. With them (sw_seam_walk_start_workers),
+ * the walk schedules the work and the workers T (sw_seam_workers.h) make the
+ * meshes while P goes on drawing the meshes it has.
  * - Crack-free by versioned batches: the seam front moves only when no
  *   work is in flight, and every job started after a move belongs to that
  *   move's batch, made from the one seam state the move left. The GL thread
@@ -60,8 +61,10 @@
  *
  * Memory: taken once from the runtime's arena before the first frame,
  * sw_seam_walk_arena_bytes, which the pack's header counts in its
- * runtime_bytes (core/sw_walk_memory.h), and per worker
- * sw_seam_worker_bytes on top; the frame functions never allocate. */
+ * runtime_bytes (core/sw_walk_memory.h), and the frames' own
+ * (sw_seam_walk_frame_bytes: the two plans, P's measuring scratch, the
+ * workers' buffers) from a second arena sized once the pack is loaded; the
+ * frame functions never allocate. */
 #ifndef SW_SEAM_WALK_H
 #define SW_SEAM_WALK_H
 
@@ -78,6 +81,7 @@
 #include "sw_seam_budget.h"
 #include "sw_seam_fill.h"
 #include "sw_seam_make.h"
+#include "sw_seam_plan.h"
 #include "sw_seam_select.h"
 #include "sw_stats.h"
 #include "sw_tess.h"
@@ -107,12 +111,17 @@ typedef struct sw_seam_walk {
                                      view but facing away (cone culling: not drawn) */
     uint8_t *evictable;           /* surface_count: not drawn this frame */
     uint8_t *dirty;               /* surface_count: its loops changed since it was made */
-    sw_seam_maker maker;          /* the frame's own buffers (tessellating in the frame,
-                                     measuring) */
+    sw_seam_maker maker;          /* V's buffers (tessellating in the frame, helping the
+                                     workers, cone culling's sewing offsets) */
     sw_walk_sizes largest;        /* the pack's largest surface */
     float *sew_offset;            /* surface_count: its border's largest distance from the
                                      surface, model units (sewing joins faces across the
-                                     file's gaps; no level of detail makes that smaller) */
+                                     file's gaps; no level of detail makes that smaller);
+                                     -1 until V first needs it (cone culling) */
+    /* P's own, for measuring what it draws (sw_seam_walk_init_frames): */
+    sw_trim_patch *measure_patches;
+    uint32_t measure_max_patches;
+    float *measure_sew_offset;    /* surface_count: as sew_offset, P's copy */
     float *depth;                 /* surface_count: this frame's nearest depth */
     sw_cull_tree cull_tree;       /* over the surfaces and their patches, built at init */
     double *cull_near, *cull_far; /* surface_count: this frame's nearest and farthest depth
@@ -198,6 +207,9 @@ typedef struct sw_seam_frame {
     double budget_used;           /* triangles scheduled over N + M */
     uint32_t seam_ops;            /* the seam update's splits and collapses */
     double updated_tris;          /* of the jobs, those whose loops moved (M's share) */
+    /* The hand-over (sw_seam_visibility.h): */
+    double visibility_ms;         /* V's half of the frame: select, schedule, swap, plan */
+    double plan_wait_ms;          /* P waiting for the plan (0 without a visibility thread) */
 } sw_seam_frame;
 
 /* Bytes sw_seam_walk_init takes from its arena for this validated pack
@@ -219,14 +231,29 @@ sw_status sw_seam_walk_enable_cones(sw_seam_walk *w, sw_arena *arena, sw_error *
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
                               sw_error *err);
 
-/* Tessellates the visible surfaces whose tessellation is missing or no
- * longer valid, uploads them into pool (same layout as w->cache: created
- * with w->cache.vertices and w->cache.indices), and draws every visible
- * surface from it, one colour per part. With stats, also measures every
- * drawn triangle against the exact surface (sw_seam_measure.h). GL thread
- * only. */
-void sw_seam_walk_draw(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool, const sw_view *view,
-                       sw_stats *stats, sw_seam_frame *frame);
+/* V, after the select: the batch swapped in when whole (with workers) or
+ * the meshes the frame needs made (without), then the plan: the meshes to
+ * upload, every visible surface to draw from the cache (one colour per
+ * part), the depth range of what is drawn, and the frame's counts. */
+void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
+                       sw_seam_frame *frame);
+
+/* P (GL thread only): uploads and draws the plan; with stats, also
+ * measures every drawn triangle against the exact surface
+ * (sw_seam_measure.h) and hands the meshes to w->drawn. view: the plan's
+ * with near and far as drawn. Reads of the walk: the plan, the mesh bytes
+ * it names, P's scratch, the pack. */
+void sw_seam_walk_draw_plan(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool,
+                            const sw_seam_plan *plan, const sw_view *view, sw_stats *stats,
+                            sw_seam_frame *frame);
+
+/* Bytes of the frames' own arena (sw_seam_walk_init_frames, then
+ * sw_seam_walk_start_workers with workers > 0), fill as the walk has it. */
+size_t sw_seam_walk_frame_bytes(const sw_pack *pack, uint32_t workers, int fill);
+
+/* The two plans and P's measuring scratch, from arena (after init). */
+sw_status sw_seam_walk_init_frames(sw_seam_walk *w, sw_seam_plan plans[2], sw_arena *arena,
+                                   sw_error *err);
 
 /* Arena bytes of count workers for this pack (on top of
  * sw_seam_walk_arena_bytes), fill as the walk will have it. */
@@ -251,9 +278,12 @@ void sw_seam_walk_stall_workers(sw_seam_walk *w, int stalled);
  * many frames: a batch swapped in before it is whole would show). */
 void sw_seam_walk_slow_workers(sw_seam_walk *w, int ms);
 
-/* After the frame (GL thread): the frame ended, meshes it stopped drawing
- * may be reused, and the controller learns its time (swapped: the frame's
- * batches_committed). */
-void sw_seam_walk_end_frame(sw_seam_walk *w, double frame_ms, int swapped);
+/* P, after it has drawn plan number: meshes that plan drew may be reused
+ * (the retire ring's epoch; safe from any thread, an atomic store). */
+void sw_seam_walk_finished(sw_seam_walk *w, uint32_t number);
+
+/* V: the controller learns a drawn frame's time (swapped: its plan swapped
+ * a batch in). */
+void sw_seam_walk_learn(sw_seam_walk *w, double frame_ms, int swapped);
 
 #endif

@@ -49,12 +49,21 @@ sw_status sw_seam_walk_move_front(sw_seam_walk *w, sw_seam_frame *frame, sw_erro
  * (sw_seam_walk_threads.c). */
 sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err);
 
-/* The GL thread, before drawing: swaps in the batch when all of it is
- * published (waits for it only in the first frame and with sync_work). */
-void sw_seam_walk_commit(sw_seam_walk *w, sw_gl_pool *pool, sw_seam_frame *frame);
+/* V, planning a frame: swaps in the batch when all of it is published
+ * (waits for it only in the first frame and with sync_work); the meshes
+ * swapped in go into the plan's uploads. */
+void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame);
 
-/* Surface s's cache entry (READY) into the GL buffers. */
-void sw_seam_walk_upload(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame);
+/* Without workers, V planning a frame: surface s's mesh remade in the
+ * frame when it has none or it no longer serves. */
+void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
+
+/* Surface s's cache entry (READY) into the plan's uploads. */
+void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan);
+
+/* Surface s's sewing offset into known[s] the first time (sw_seam_walk.c). */
+float sw_seam_walk_sewing_offset(const sw_seam_walk *w, uint32_t s, float *known,
+                                 sw_trim_patch *patches, uint32_t capacity);
 
 double sw_seam_walk_ms_since(const struct timespec *a);
 

@@ -1,7 +1,9 @@
 /* The threaded side of the seam walk (sw_seam_walk.h, "Threads"): which
  * surfaces get work and in what order, the batch that makes them from one
  * seam state, and the swap that shows the batch whole. Runs on the walk's
- * (the GL) thread; the workers only see jobs[s] and publish made[s]. */
+ * visibility side V (its own thread, or the GL thread's when there is
+ * none); the workers only see jobs[s] and publish made[s], the GL thread
+ * only the plans (sw_seam_plan.h) and sw_seam_walk_finished. */
 #include <math.h>
 #include <sched.h>
 #include <string.h>
@@ -221,7 +223,7 @@ static void evict(sw_seam_walk *w)
 
 /* Surface s's published mesh becomes the drawn one; the mesh it replaces
  * is retired. */
-static void consume(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame *frame)
+static void consume(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     sw_seam_workers *p = w->workers;
     sw_seam_entry *made = sw_publish_take(&p->slots[s]);
@@ -236,7 +238,7 @@ static void consume(sw_seam_walk *w, uint32_t s, sw_gl_pool *pool, sw_seam_frame
         frame->retessellated++;
     if (e->state == SW_SEAM_READY) {
         frame->retess_triangles += e->index_count / 3 - e->fill_triangles;
-        sw_seam_walk_upload(w, s, pool, frame);
+        sw_seam_walk_plan_upload(w, s, plan);
     }
 }
 
@@ -293,7 +295,7 @@ static int retry_no_room(sw_seam_walk *w, sw_seam_frame *frame)
     return 1;
 }
 
-void sw_seam_walk_commit(sw_seam_walk *w, sw_gl_pool *pool, sw_seam_frame *frame)
+void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     if (w->batch_count == 0)
         return;
@@ -307,7 +309,7 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_gl_pool *pool, sw_seam_frame *frame
         wait_batch(w);
     if (batch_done(w)) {
         for (uint32_t i = 0; i < w->batch_count; i++)
-            consume(w, w->batch[i], pool, frame);
+            consume(w, w->batch[i], plan, frame);
         w->batch_count = w->batch_pushed = 0;
         w->room_retries = 0;
         frame->batches_committed = 1;
@@ -315,11 +317,18 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_gl_pool *pool, sw_seam_frame *frame
     frame->tess_ms += sw_seam_walk_ms_since(&t0);
 }
 
-void sw_seam_walk_end_frame(sw_seam_walk *w, double frame_ms, int swapped)
+void sw_seam_walk_finished(sw_seam_walk *w, uint32_t number)
+{
+    /* Plan number was made with w->frame == number + 1 and stamped its
+     * meshes' last_frame so: every epoch up to that one is finished. */
+    if (w->workers)
+        sw_retire_ring_finish(&w->workers->retire, number + 2);
+}
+
+void sw_seam_walk_learn(sw_seam_walk *w, double frame_ms, int swapped)
 {
     if (!w->workers)
         return;
-    sw_retire_ring_finish(&w->workers->retire, w->frame + 1);
     sw_seam_budget_after_frame(&w->budget, frame_ms, swapped,
                                atomic_load_explicit(&w->workers->made_triangles,
                                                     memory_order_relaxed),

@@ -9,7 +9,8 @@ size_t sw_stats_arena_bytes(int frames)
     return 2 * sw_arena_worst_case(n * sizeof(float), 8) + 3 * sw_arena_worst_case(n * 4, 8) +
            sw_arena_worst_case(SW_ERROR_BINS * sizeof(uint64_t), 8) +
            3 * sw_arena_worst_case(n * 4, 8) +                  /* the culling's */
-           9 * sw_arena_worst_case(n * sizeof(float) + 1, 8); /* sorting scratch at the end */
+           2 * sw_arena_worst_case(n * sizeof(float), 8) +    /* the hand-over's */
+           11 * sw_arena_worst_case(n * sizeof(float) + 1, 8); /* sorting scratch at the end */
 }
 
 sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_bound_px,
@@ -26,9 +27,12 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
     s->cull_box_tests = sw_arena_alloc(arena, (size_t)frames * 4, 8);
     s->cone_culled = sw_arena_alloc(arena, (size_t)frames * 4, 8);
     s->cull_ms = sw_arena_alloc(arena, (size_t)frames * sizeof(float), 8);
+    s->visibility_ms = sw_arena_alloc(arena, (size_t)frames * sizeof(float), 8);
+    s->plan_wait_ms = sw_arena_alloc(arena, (size_t)frames * sizeof(float), 8);
     s->cull_method = "tree";
     if (!s->frame_ms || !s->tris || !s->visible || !s->error_bins || !s->retess || !s->tess_ms ||
-        !s->cull_box_tests || !s->cone_culled || !s->cull_ms)
+        !s->cull_box_tests || !s->cone_culled || !s->cull_ms || !s->visibility_ms ||
+        !s->plan_wait_ms)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the statistics");
     memset(s->error_bins, 0, SW_ERROR_BINS * sizeof(uint64_t));
     s->error_bound_px = error_bound_px;
@@ -86,6 +90,13 @@ void sw_stats_add_cull_frame(sw_stats *s, uint64_t box_tests, uint32_t cone_cull
     s->cull_box_tests[s->frames] = box_tests > UINT32_MAX ? UINT32_MAX : (uint32_t)box_tests;
     s->cone_culled[s->frames] = cone_culled;
     s->cull_ms[s->frames] = (float)cull_ms;
+}
+
+void sw_stats_add_visibility_frame(sw_stats *s, double visibility_ms, double plan_wait_ms)
+{
+    int k = slot_of(s);
+    s->visibility_ms[k] = (float)visibility_ms;
+    s->plan_wait_ms[k] = (float)plan_wait_ms;
 }
 
 void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z)
@@ -271,6 +282,24 @@ void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
     }
 }
 
+/* The hand-over between V and P (sw_seam_visibility.h), per kept frame. */
+static sw_status write_visibility(FILE *f, const sw_stats *s, sw_arena *scratch)
+{
+    int n = s->frames;
+    float *vis = scratch_floats(scratch, n);
+    float *wait = scratch_floats(scratch, n);
+    if (!vis || !wait)
+        return SW_ERR_NO_MEMORY;
+    memcpy(vis, s->visibility_ms, (size_t)n * sizeof(float));
+    memcpy(wait, s->plan_wait_ms, (size_t)n * sizeof(float));
+    sw_percentiles v = sw_percentiles_of(vis, n), w = sw_percentiles_of(wait, n);
+    fprintf(f, "  \"visibility\": {\"thread\": %s, "
+               "\"ms\": {\"p50\": %.3f, \"p99\": %.3f, \"max\": %.3f}, "
+               "\"plan_wait_ms\": {\"p50\": %.3f, \"p99\": %.3f, \"max\": %.3f}},\n",
+            s->visibility_thread ? "true" : "false", v.p50, v.p99, v.max, w.p50, w.p99, w.max);
+    return SW_OK;
+}
+
 static void write_threads(FILE *f, const sw_stats *s)
 {
     fprintf(f, "  \"threads\": {\"workers\": %d, \"sync_work\": %d, \"target_ms\": %.3f, "
@@ -349,7 +378,8 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
             (unsigned long long)s->error_behind_samples);
     fprintf(f, "  \"cracks_max\": %llu,\n", (unsigned long long)s->cracks_max);
     fprintf(f, "  \"capped_patches_max\": %llu,\n", (unsigned long long)s->capped_patches_max);
-    if (s->frames && (write_cache(f, s, scratch) != SW_OK || write_cull(f, s, scratch) != SW_OK)) {
+    if (s->frames && (write_cache(f, s, scratch) != SW_OK || write_cull(f, s, scratch) != SW_OK ||
+                      write_visibility(f, s, scratch) != SW_OK)) {
         sw_arena_reset_to(scratch, mark);
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small to sort the statistics");
     }

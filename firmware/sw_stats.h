@@ -82,6 +82,9 @@ typedef struct sw_stats {
     /* With workers (firmware/sw_seam_walk.h, "Threads"): how far the work is
      * behind the view and what of the budget it used. */
     int workers, sync_work;
+    int visibility_thread;       /* V on its own thread (sw_seam_visibility.h) */
+    float *visibility_ms;        /* per frame (ring, as frame_ms): V's half of the frame */
+    float *plan_wait_ms;         /* per frame (ring): P waiting for V's plan */
     double target_ms;
     uint32_t waiting_max;        /* visible surfaces with no mesh yet, the most of a frame */
     uint32_t behind_max;         /* drawn from a mesh coarser than the view asks */
@@ -141,6 +144,10 @@ void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
                                 uint32_t frames_behind, double behind_ratio, uint32_t jobs,
                                 uint32_t batches, uint32_t seam_ops, double budget_tris,
                                 double budget_used);
+
+/* The hand-over in the frame sw_stats_add_frame records next: V's time
+ * on the frame's plan and P's wait for it. */
+void sw_stats_add_visibility_frame(sw_stats *s, double visibility_ms, double plan_wait_ms);
 
 /* The cache's work in the frame sw_stats_add_frame records next. */
 void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,

@@ -1,0 +1,211 @@
+/* The seam walk's frame split in two (sw_seam_walk.h, "Threads"): the plan,
+ * made on the visibility side V after the select (the meshes the frame
+ * needs made or swapped in, and every surface to draw, counted), and the
+ * drawing of a plan on the GL thread P (uploads, draws, measurement), which
+ * reads only the plan, the mesh bytes it points at and P's own scratch. */
+#include <math.h>
+#include <string.h>
+
+#include "sw_seam_depth.h"
+#include "sw_seam_measure.h"
+#include "sw_seam_surface.h"
+#include "sw_seam_walk_internal.h"
+
+size_t sw_seam_walk_frame_bytes(const sw_pack *pack, uint32_t workers, int fill)
+{
+    uint32_t n = pack->seam.surface_count;
+    sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    size_t bytes = 2 * sw_seam_plan_bytes(n) +
+                   sw_arena_worst_case(((size_t)m.patches + 1) * sizeof(sw_trim_patch), 64) +
+                   sw_arena_worst_case(((size_t)n + 1) * sizeof(float), 64);
+    return workers ? bytes + sw_seam_walk_worker_bytes(pack, workers, fill) : bytes;
+}
+
+sw_status sw_seam_walk_init_frames(sw_seam_walk *w, sw_seam_plan plans[2], sw_arena *arena,
+                                   sw_error *err)
+{
+    uint32_t n = w->pack->seam.surface_count;
+    for (int k = 0; k < 2; k++) {
+        sw_status st = sw_seam_plan_init(&plans[k], n, arena, err);
+        if (st != SW_OK)
+            return st;
+    }
+    w->measure_max_patches = w->largest.patches;
+    w->measure_patches = sw_arena_alloc(arena, ((size_t)w->largest.patches + 1) *
+                                        sizeof(sw_trim_patch), 64);
+    w->measure_sew_offset = sw_arena_alloc(arena, ((size_t)n + 1) * sizeof(float), 64);
+    if (!w->measure_patches || !w->measure_sew_offset)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the measurement's "
+                            "scratch");
+    for (uint32_t s = 0; s < n; s++)
+        w->measure_sew_offset[s] = -1;
+    return SW_OK;
+}
+
+void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan)
+{
+    const sw_seam_cache *c = &w->cache;
+    const sw_seam_entry *e = &c->entries[s];
+    sw_seam_plan_upload(plan, sw_seam_cache_first_vertex(c, s), e->vertex_count,
+                        sw_seam_cache_first_index(c, s), e->index_count);
+}
+
+/* How far a drawn mesh is behind the view (threaded walk): coarser than
+ * the view asks, and for how many frames. */
+static double behind_ratio(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e)
+{
+    double want = w->want[s] > 0 ? w->want[s] : e->made_bound;
+    return e->made_bound / want;
+}
+
+static void count_behind(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e,
+                         sw_seam_frame *frame)
+{
+    double ratio = behind_ratio(w, s, e);
+    if (ratio > 1) {
+        frame->behind_surfaces++;
+        frame->behind_ratio = fmax(frame->behind_ratio, ratio);
+    }
+    if (w->need_since[s] != UINT32_MAX && w->frame - 1 - w->need_since[s] > frame->frames_behind)
+        frame->frames_behind = w->frame - 1 - w->need_since[s];
+}
+
+/* Surface s (visible) into the plan from its cache entry, counted: drawn,
+ * or why not. */
+static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
+{
+    sw_seam_entry *e = &w->cache.entries[s];
+    if (e->state == SW_SEAM_GONE) {
+        frame->vanished_surfaces++;
+        return;
+    }
+    frame->cracks += e->cracks;
+    if (e->state == SW_SEAM_EMPTY && w->workers) {
+        frame->waiting_surfaces++;   /* its first mesh is not made yet */
+        return;
+    }
+    if (e->state != SW_SEAM_READY) {
+        frame->failed_surfaces++;
+        return;
+    }
+    const sw_seam_draw_item item = {
+        .surface = s, .part = w->pack->surfaces[s].part,
+        .first_vertex = sw_seam_cache_first_vertex(&w->cache, s),
+        .first_index = sw_seam_cache_first_index(&w->cache, s),
+        .vertex_count = e->vertex_count, .index_count = e->index_count,
+        .fill_indices = 3 * e->fill_triangles, .depth = w->depth[s],
+        /* A mesh drawn coarser than asked while its new one is made is
+         * measured apart (stats error_px_behind): error_px is then the
+         * error of meshes made for their bounds. */
+        .late = w->workers && behind_ratio(w, s, e) > 1,
+    };
+    sw_seam_plan_draw(plan, &item);
+    e->last_frame = w->frame;   /* the epoch its blocks stay in use until (sw_handoff.h) */
+    frame->drawn_surfaces++;
+    frame->triangles += e->index_count / 3 - e->fill_triangles;
+    frame->fill_triangles += e->fill_triangles;
+    frame->crossings += e->crossings;
+    frame->capped_surfaces += e->capped;
+    frame->holes_filled += e->holes_filled;
+    if (w->workers)
+        count_behind(w, s, e, frame);
+}
+
+void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
+                       sw_seam_frame *frame)
+{
+    uint32_t n = w->pack->seam.surface_count;
+    plan->view = *view;
+    if (w->workers)
+        sw_seam_walk_commit(w, plan, frame);
+    else
+        for (uint32_t s = 0; s < n; s++)
+            if (sw_seam_walk_needs_mesh(w, s))
+                sw_seam_walk_refresh(w, s, plan, frame);
+    for (uint32_t s = 0; s < n; s++) {
+        if (w->visible[s] == SW_SEAM_WALK_TINY)
+            frame->vanished_surfaces++;
+        if (w->visible[s] == SW_SEAM_WALK_AWAY) /* as if drawn, for the cache's order */
+            w->cache.entries[s].last_frame = w->frame;
+        if (w->visible[s] == 1 && s != w->drop_surface)
+            plan_surface(w, s, plan, frame);
+    }
+    plan->depth_known = sw_seam_depth_range(w, view, &plan->nearest, &plan->farthest);
+}
+
+/* A drawn mesh (its bytes in the cache) against the exact surface, with
+ * P's own scratch. */
+static void measure_item(sw_seam_walk *w, const sw_seam_draw_item *it, const sw_view *view,
+                         sw_stats *stats, sw_seam_error *acc)
+{
+    const sw_seam_cache *c = &w->cache;
+    uint32_t s = it->surface, patch_count = 0;
+    if (sw_trim_patches_from_pack(w->pack, s, w->measure_patches, w->measure_max_patches,
+                                  &patch_count, NULL))
+        return;
+    const sw_seam_mesh mesh = { c->verts + it->first_vertex,
+                                c->uvs + 2 * (size_t)it->first_vertex,
+                                c->index_data + it->first_index, it->vertex_count,
+                                it->index_count };
+    float offset = sw_seam_walk_sewing_offset(w, s, w->measure_sew_offset, w->measure_patches,
+                                              w->measure_max_patches);
+    const sw_seam_exact exact = { w->measure_patches, patch_count, offset, it->depth,
+                                  w->error_px, w->bound_floor };
+    sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
+    if (w->drawn)
+        sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
+}
+
+static void draw_item(const sw_seam_walk *w, const sw_seam_draw_item *it, sw_renderer *r,
+                      sw_gl_pool *pool, uint32_t *part)
+{
+    if (it->part != *part) {
+        *part = it->part;
+        sw_renderer_set_color(r, w->pack->parts[*part].color);
+    }
+    uint32_t v0 = it->first_vertex, i0 = it->first_index, fill = it->fill_indices;
+    sw_gl_pool_draw(pool, r, v0, i0, it->index_count - fill);
+    if (fill) { /* the fans after the mesh, lit as the surface (sw_renderer_set_fill) */
+        sw_renderer_set_fill(r, 1);
+        sw_gl_pool_draw(pool, r, v0, i0 + it->index_count - fill, fill);
+        sw_renderer_set_fill(r, 0);
+    }
+}
+
+void sw_seam_walk_draw_plan(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool,
+                            const sw_seam_plan *plan, const sw_view *view, sw_stats *stats,
+                            sw_seam_frame *frame)
+{
+    const sw_seam_cache *c = &w->cache;
+    /* Every upload before the first draw: a glBufferSubData into a buffer
+     * that queued draws read makes the driver flush them first (llvmpipe:
+     * 70 uploads between draws took the teaset's frame from 80 to 300 ms). */
+    uint64_t before = pool->bytes_uploaded;
+    for (uint32_t k = 0; k < plan->upload_count; k++) {
+        const sw_seam_upload_item *u = &plan->uploads[k];
+        sw_gl_pool_upload(pool, u->first_vertex, c->verts + u->first_vertex, u->vertex_count,
+                          u->first_index, c->index_data + u->first_index, u->index_count);
+    }
+    frame->upload_bytes += pool->bytes_uploaded - before;
+    frame->failed_surfaces += plan->overflow;
+    uint32_t part = UINT32_MAX;
+    sw_seam_error acc = { 0, 0, 0 }, behind = { 0, 0, 0 };
+    if (stats)
+        stats->measured_frames++;
+    for (uint32_t k = 0; k < plan->draw_count; k++) {
+        const sw_seam_draw_item *it = &plan->draws[k];
+        draw_item(w, it, r, pool, &part);
+        if (!stats)
+            continue;
+        struct timespec t0;
+        clock_gettime(CLOCK_MONOTONIC, &t0);
+        stats->route_behind = it->late;
+        measure_item(w, it, view, stats, it->late ? &behind : &acc);
+        stats->route_behind = 0;
+        frame->measure_ms += sw_seam_walk_ms_since(&t0);
+    }
+    frame->error_beyond_sewing_px = acc.beyond_sewing_px;
+    frame->error_behind_beyond_sewing_px = behind.beyond_sewing_px;
+    frame->sewing_offset_px = fmax(acc.sewing_offset_px, behind.sewing_offset_px);
+    frame->seam_chord_px = fmax(acc.chord_px, behind.chord_px);
+}
