@@ -30,6 +30,7 @@ void sw_seam_plan_begin(sw_seam_plan *p, uint32_t number)
     p->depth_known = 0;
     p->overflow = 0;
     p->visibility_ms = p->drawn_ms = 0;
+    p->on_gl_thread = p->overlapped = 0;
     p->swapped = 0;
 }
 

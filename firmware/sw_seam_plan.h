@@ -54,6 +54,9 @@ typedef struct sw_seam_plan {
                                          surface is planned and made at most once a frame),
                                          counted as failed surfaces, never silent */
     double visibility_ms;             /* V's time on it: select, schedule, swap, plan */
+    uint8_t on_gl_thread;             /* planned on P's thread (no visibility thread) */
+    uint8_t overlapped;               /* V began it before P had finished the frame before:
+                                         the two halves ran at the same time */
     /* Written by P after drawing it, read by V before it plans the frame
      * two later (the controller's input): */
     double drawn_ms;                  /* P's frame time, measurement excluded */

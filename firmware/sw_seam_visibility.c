@@ -29,10 +29,13 @@ static void plan_frame(sw_seam_visibility *v, uint32_t k)
 {
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
+    uint32_t done = atomic_load_explicit(&v->done, memory_order_acquire);
     learn(v);
     sw_seam_plan *plan = &v->plans[k & 1];
     sw_seam_frame *f = &v->frames[k & 1];
     sw_seam_plan_begin(plan, k);
+    plan->on_gl_thread = (uint8_t)(pthread_equal(pthread_self(), v->gl_thread) != 0);
+    plan->overlapped = k > 0 && done < k;
     sw_status st = v->status == SW_OK
                        ? sw_seam_walk_select(v->walk, &v->views[k & 1], f, &v->error)
                        : v->status;
@@ -66,6 +69,7 @@ sw_status sw_seam_visibility_start(sw_seam_visibility *v, sw_seam_walk *walk, in
     v->walk = walk;
     v->threaded = threaded;
     v->sync = sync;
+    v->gl_thread = pthread_self();
     sw_status st = sw_seam_walk_init_frames(walk, v->plans, arena, err);
     if (st != SW_OK || !threaded)
         return st;
@@ -107,6 +111,8 @@ sw_status sw_seam_visibility_take(sw_seam_visibility *v, const sw_seam_plan **pl
     *frame = v->frames[k & 1];
     frame->plan_wait_ms = waited;
     frame->visibility_ms = v->plans[k & 1].visibility_ms;
+    frame->planned_on_gl_thread = v->plans[k & 1].on_gl_thread;
+    frame->plan_overlapped = v->plans[k & 1].overlapped;
     *plan = &v->plans[k & 1];
     return SW_OK;
 }

@@ -46,7 +46,7 @@ typedef struct sw_seam_visibility {
     uint32_t learned;             /* V's: drawn frames the controller has learned */
     _Atomic uint32_t done;        /* frames P has finished (release after drawn_ms) */
     int threaded, sync;
-    pthread_t thread;
+    pthread_t thread, gl_thread;  /* V's, and P's (the one that started it) */
     sem_t view_ready, plan_ready, frame_done;
     int sems_up, thread_up;
     _Atomic int stop;

@@ -210,6 +210,8 @@ typedef struct sw_seam_frame {
     /* The hand-over (sw_seam_visibility.h): */
     double visibility_ms;         /* V's half of the frame: select, schedule, swap, plan */
     double plan_wait_ms;          /* P waiting for the plan (0 without a visibility thread) */
+    uint8_t planned_on_gl_thread; /* V's half ran on P's thread */
+    uint8_t plan_overlapped;      /* V began it while P was still drawing the frame before */
 } sw_seam_frame;
 
 /* Bytes sw_seam_walk_init takes from its arena for this validated pack

@@ -92,8 +92,11 @@ void sw_stats_add_cull_frame(sw_stats *s, uint64_t box_tests, uint32_t cone_cull
     s->cull_ms[s->frames] = (float)cull_ms;
 }
 
-void sw_stats_add_visibility_frame(sw_stats *s, double visibility_ms, double plan_wait_ms)
+void sw_stats_add_visibility_frame(sw_stats *s, double visibility_ms, double plan_wait_ms,
+                                   int on_gl_thread, int overlapped)
 {
+    s->planned_on_gl_thread += on_gl_thread != 0;
+    s->plans_overlapped += overlapped != 0;
     int k = slot_of(s);
     s->visibility_ms[k] = (float)visibility_ms;
     s->plan_wait_ms[k] = (float)plan_wait_ms;
@@ -295,8 +298,11 @@ static sw_status write_visibility(FILE *f, const sw_stats *s, sw_arena *scratch)
     sw_percentiles v = sw_percentiles_of(vis, n), w = sw_percentiles_of(wait, n);
     fprintf(f, "  \"visibility\": {\"thread\": %s, "
                "\"ms\": {\"p50\": %.3f, \"p99\": %.3f, \"max\": %.3f}, "
-               "\"plan_wait_ms\": {\"p50\": %.3f, \"p99\": %.3f, \"max\": %.3f}},\n",
-            s->visibility_thread ? "true" : "false", v.p50, v.p99, v.max, w.p50, w.p99, w.max);
+               "\"plan_wait_ms\": {\"p50\": %.3f, \"p99\": %.3f, \"max\": %.3f}, "
+               "\"planned_on_gl_thread\": %llu, \"overlapped_frames\": %llu},\n",
+            s->visibility_thread ? "true" : "false", v.p50, v.p99, v.max, w.p50, w.p99, w.max,
+            (unsigned long long)s->planned_on_gl_thread,
+            (unsigned long long)s->plans_overlapped);
     return SW_OK;
 }
 

@@ -85,6 +85,8 @@ typedef struct sw_stats {
     int visibility_thread;       /* V on its own thread (sw_seam_visibility.h) */
     float *visibility_ms;        /* per frame (ring, as frame_ms): V's half of the frame */
     float *plan_wait_ms;         /* per frame (ring): P waiting for V's plan */
+    uint64_t planned_on_gl_thread;  /* frames whose V half ran on P's thread */
+    uint64_t plans_overlapped;   /* frames V began while P still drew the one before */
     double target_ms;
     uint32_t waiting_max;        /* visible surfaces with no mesh yet, the most of a frame */
     uint32_t behind_max;         /* drawn from a mesh coarser than the view asks */
@@ -147,7 +149,8 @@ void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
 
 /* The hand-over in the frame sw_stats_add_frame records next: V's time
  * on the frame's plan and P's wait for it. */
-void sw_stats_add_visibility_frame(sw_stats *s, double visibility_ms, double plan_wait_ms);
+void sw_stats_add_visibility_frame(sw_stats *s, double visibility_ms, double plan_wait_ms,
+                                   int on_gl_thread, int overlapped);
 
 /* The cache's work in the frame sw_stats_add_frame records next. */
 void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,

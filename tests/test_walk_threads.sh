@@ -15,8 +15,13 @@
 #   the 40,000-patch showroom: the seams as drawn did not tell the two
 #   apart there, so the batch rule rests on its construction
 #   (firmware/sw_seam_walk.h) more than on this check.
+# - the visibility thread V (firmware/sw_seam_visibility.h): with workers
+#   every frame's plan is made off the GL thread, and V plans frame i+1
+#   while P draws frame i (overlapped frames > 0: V began planning before
+#   P had finished the frame before); --visibility-thread 0 plans on the GL
+#   thread, and --sync-work 1 runs the two in lockstep (no overlap);
 # - --sync-work 1 (the tests' deterministic frames) draws exactly what
-#   --workers 0 draws;
+#   --workers 0 draws, with V on its thread and without;
 # - bad --workers / --target-ms values and too little memory for the
 #   workers are one clear error line.
 # Every walk here passes --sync-work 0 itself: the suite sets
@@ -65,17 +70,38 @@ assert stalled["error_px_behind"]["samples"] > 0, stalled["error_px_behind"]
 assert stalled["threads"]["behind_ratio_max"] > 1
 beyond = stalled["seam"]["error_px_beyond_sewing_max"]
 assert beyond <= stalled["error_px"]["bound"], beyond
+# V on its own thread, overlapping P's frames (frame 0 has nothing before it).
+for name, j in (("stalled", stalled), ("async", run), ("slow", slow)):
+    v = j["visibility"]
+    assert v["thread"] and v["planned_on_gl_thread"] == 0, (name, v)
+    assert 0 < v["overlapped_frames"] <= 23, (name, v)
 assert run["threads"]["batches"] > stalled["threads"]["batches"]
 assert run["threads"]["frames_behind_max"] < stalled["threads"]["frames_behind_max"]
 PY
 
-for mode in "--workers 0" "--workers 1 --sync-work 1"; do
+walk --frames 6 --workers 1 --sync-work 0 --visibility-thread 0 --stats "$work/on_gl.json" \
+  > /dev/null || fail "walk with --visibility-thread 0"
+python3 - "$work/on_gl.json" <<'PY' || fail "--visibility-thread 0"
+import json, sys
+v = json.load(open(sys.argv[1]))["visibility"]
+assert not v["thread"] and v["planned_on_gl_thread"] == 6 and v["overlapped_frames"] == 0, v
+PY
+
+modes=("--workers 0" "--workers 1 --sync-work 1" "--workers 1 --sync-work 1 --visibility-thread 0")
+for mode in "${modes[@]}"; do
   dir=$work/png_${mode// /_}
-  walk --frames 6 --png-dir "$dir" $mode > /dev/null || fail "walk $mode"
+  walk --frames 6 --png-dir "$dir" $mode --stats "$dir.json" > /dev/null || fail "walk $mode"
 done
-for f in "$work"/png_--workers_0/frame_*.png; do
-  "$build/tests/image_compare" "$f" "$work/png_--workers_1_--sync-work_1/$(basename "$f")" \
-    --level 0 --max-fraction 0 > /dev/null || fail "$(basename "$f"): --sync-work 1 differs"
+python3 - "$work/png_--workers_1_--sync-work_1.json" <<'PY' || fail "--sync-work 1 with V"
+import json, sys
+v = json.load(open(sys.argv[1]))["visibility"]
+assert v["thread"] and v["planned_on_gl_thread"] == 0 and v["overlapped_frames"] == 0, v
+PY
+for mode in "${modes[@]:1}"; do
+  for f in "$work"/png_--workers_0/frame_*.png; do
+    "$build/tests/image_compare" "$f" "$work/png_${mode// /_}/$(basename "$f")" \
+      --level 0 --max-fraction 0 > /dev/null || fail "$(basename "$f"): $mode differs"
+  done
 done
 
 for bad in "--workers -1" "--workers 17" "--workers x" "--target-ms 0" "--sync-work 2"; do
