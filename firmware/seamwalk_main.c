@@ -454,7 +454,8 @@ static sw_status seam_frame(runtime *rt, int measuring, uint64_t *triangles, uin
     sw_stats_add_cull_frame(s, f.cull_box_tests, f.cone_culled, f.cull_ms);
     if (rt->workers)
         sw_stats_add_threads_frame(s, f.waiting_surfaces, f.behind_surfaces, f.frames_behind,
-                                   f.behind_ratio, f.jobs_scheduled, f.batches_committed,
+                                   f.behind_ratio, f.jobs_scheduled, f.jobs_prefetch,
+                                   f.batches_committed,
                                    f.seam_ops, f.budget_tris, f.budget_used);
     sw_stats_add_visibility_frame(s, f.visibility_ms, f.plan_wait_ms, f.planned_on_gl_thread,
                                   f.plan_overlapped);

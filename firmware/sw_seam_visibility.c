@@ -42,6 +42,7 @@ static void plan_frame(sw_seam_visibility *v, uint32_t k)
     if (st == SW_OK)
         sw_seam_walk_plan(v->walk, &v->views[k & 1], plan, f);
     v->status = st;
+    v->plan_status[k & 1] = st;
     plan->visibility_ms = sw_seam_walk_ms_since(&t0);
 }
 
@@ -103,9 +104,10 @@ sw_status sw_seam_visibility_take(sw_seam_visibility *v, const sw_seam_plan **pl
         plan_frame(v, k);
     double waited = v->threaded ? sw_seam_walk_ms_since(&t0) : 0;
     *plan = NULL;
-    if (v->status != SW_OK) {
+    sw_status st = v->plan_status[k & 1];
+    if (st != SW_OK) {   /* V sets error once and selects nothing after it */
         *err = v->error;
-        return v->status;
+        return st;
     }
     v->taken++;
     *frame = v->frames[k & 1];

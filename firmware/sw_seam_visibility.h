@@ -50,8 +50,9 @@ typedef struct sw_seam_visibility {
     sem_t view_ready, plan_ready, frame_done;
     int sems_up, thread_up;
     _Atomic int stop;
-    sw_status status;             /* V's first error (the walk stops at it) */
-    sw_error error;
+    sw_status status;             /* V's: its first error (the walk stops at it) */
+    sw_status plan_status[2];     /* each plan's, for P (status changes under P's reads) */
+    sw_error error;               /* written once, with the first error */
 } sw_seam_visibility;
 
 /* Sets up the plans from arena (sw_seam_walk_init_frames: counted in

@@ -145,7 +145,7 @@ sw_status sw_seam_walk_enable_cones(sw_seam_walk *w, sw_arena *arena, sw_error *
 
 /* The level a tessellation is made for: the bound rounded down to a power
  * of sqrt 2, so it meets the bound and neighbours share levels. */
-static float level_of(double bound)
+float sw_seam_walk_level_of(double bound)
 {
     double k = floor(2.0 * log2(bound));
     return (float)exp2(0.5 * k);
@@ -172,7 +172,7 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
         if (w->no_cache)
             w->target[s] = (float)bound;
         else if (!still_valid(e, w->target[s], bound))
-            w->target[s] = level_of(bound);
+            w->target[s] = sw_seam_walk_level_of(bound);
     } else if (e->state != SW_SEAM_READY && !w->busy[s]) {
         w->target[s] = SW_SEAM_INVISIBLE_BOUND;
     }
@@ -201,6 +201,23 @@ static int facing_away(sw_seam_walk *w, const sw_view *view, uint32_t s, const s
     sw_box b = { sw_v3_sub(box->min, sw_v3(grow, grow, grow)),
                  sw_v3_add(box->max, sw_v3(grow, grow, grow)) };
     return sw_normal_cone_back_facing(&w->cones[s], &b, view->eye, SW_SEAM_CONE_MARGIN_RAD);
+}
+
+/* Out of view, with workers on their own: the bound its kept mesh would
+ * need were the eye to turn to it (half a pixel at its box's distance), so
+ * the schedule can bring it up to date with time left over (w', paper 004
+ * section 6.4); 0 when it has no mesh or nothing would be scheduled. */
+static float culled_want(const sw_seam_walk *w, const sw_view *view, uint32_t s)
+{
+    if (!sw_seam_walk_async(w) || w->cache.entries[s].state != SW_SEAM_READY)
+        return 0;
+    sw_box b = sw_cull_tree_surface_box(&w->cull_tree, s);
+    sw_vec3 e = view->eye, d;
+    d.x = fmax(fmax(b.min.x - e.x, 0.0), e.x - b.max.x);
+    d.y = fmax(fmax(b.min.y - e.y, 0.0), e.y - b.max.y);
+    d.z = fmax(fmax(b.min.z - e.z, 0.0), e.z - b.max.z);
+    double bound = sw_view_error_world(view, w->error_px, fmax(sw_v3_length(d), view->near_z));
+    return (float)fmax(bound, (double)w->bound_floor);
 }
 
 /* Visible when any of its patches' boxes is (the culling tree's answer,
@@ -233,6 +250,8 @@ static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32
      * through the seams its neighbours' meshes, would differ within the
      * bound from a walk without cone culling.) */
     int changed = choose_target(w, s, bound);
+    if (!w->visible[s])
+        w->want[s] = culled_want(w, view, s);
     if (away)
         w->visible[s] = SW_SEAM_WALK_AWAY, *cone_culled += 1;
     w->evictable[s] = w->visible[s] != 1 && w->visible[s] != SW_SEAM_WALK_AWAY;

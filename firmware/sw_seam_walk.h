@@ -148,7 +148,9 @@ typedef struct sw_seam_walk {
     sw_seam_workers *workers;     /* NULL: tessellate in the frame */
     int sync_work;                /* tests: each frame waits for its work, no budget */
     sw_seam_budget budget;
-    float *want;                  /* surface_count: this frame's bound from the view */
+    float *want;                  /* surface_count: this frame's bound from the view; out of
+                                     view (async), the bound at its box's distance for a
+                                     kept mesh (the prefetch by w'), else 0 */
     uint8_t *busy;                /* surface_count: a job in flight */
     uint32_t *need_since;         /* surface_count: the frame it first needed work
                                      (UINT32_MAX: it does not) */
@@ -202,6 +204,7 @@ typedef struct sw_seam_frame {
     uint32_t frames_behind;       /* the longest a drawn surface has waited for its work */
     double behind_ratio;          /* the most a drawn mesh's bound exceeds the view's */
     uint32_t jobs_scheduled;      /* jobs this frame started */
+    uint32_t jobs_prefetch;       /* of them, out of view by w' (with budget left) */
     uint32_t batches_committed;   /* batches swapped in this frame (0 or 1) */
     double budget_tris;           /* N + M this frame */
     double budget_used;           /* triangles scheduled over N + M */

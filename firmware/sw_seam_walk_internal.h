@@ -67,4 +67,8 @@ float sw_seam_walk_sewing_offset(const sw_seam_walk *w, uint32_t s, float *known
 
 double sw_seam_walk_ms_since(const struct timespec *a);
 
+/* The level a mesh is made for bound (model units): rounded down to a power
+ * of sqrt 2. */
+float sw_seam_walk_level_of(double bound);
+
 #endif

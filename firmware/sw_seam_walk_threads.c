@@ -107,15 +107,38 @@ static int wants_work(const sw_seam_walk *w, uint32_t s, double *weight)
     return 1;
 }
 
+/* Out of view, its kept mesh no longer serving the bound it would need in
+ * view (w->want, culled_want in sw_seam_walk.c): 1 and its weight w' =
+ * 1 - 1/w, below every visible surface's (those are >= 1). Only when the
+ * workers run on their own: with sync_work the frames must be what the
+ * walk without workers draws, which fetches nothing ahead. */
+static int wants_prefetch(const sw_seam_walk *w, uint32_t s, double *weight)
+{
+    const sw_seam_entry *e = &w->cache.entries[s];
+    if (w->visible[s] != 0 || w->want[s] <= 0 || e->state != SW_SEAM_READY ||
+        !sw_seam_walk_async(w))
+        return 0;
+    double t = e->made_bound;
+    double v = sw_seam_weight(1, t, SW_SEAM_KEEP * t, w->want[s]);
+    *weight = sw_seam_weight_culled(v);
+    return v > 0;
+}
+
 enum { SW_CHOSEN = 1, SW_PASSED = 2 };   /* w->busy while a batch opens */
 
-/* The candidates heaviest first while N lasts (all of them with sync_work
- * and in the first frame); the ones passed over are marked. */
+/* The candidates heaviest first while N lasts (all the visible ones with
+ * sync_work and in the first frame); out of view ones (weights below 1)
+ * only while N lasts, their targets then set to the level of their want.
+ * The ones passed over are marked. */
 static double choose(sw_seam_walk *w, sw_seam_frame *frame)
 {
     uint32_t n = w->pack->seam.surface_count, cands = 0;
     for (uint32_t s = 0; s < n; s++) {
         double weight = 0;
+        if (wants_prefetch(w, s, &weight)) {
+            w->candidates[cands++] = (sw_seam_candidate){ (float)weight, s };
+            continue;
+        }
         if (!wants_work(w, s, &weight))
             continue;
         if (w->need_since[s] == UINT32_MAX)
@@ -127,11 +150,18 @@ static double choose(sw_seam_walk *w, sw_seam_frame *frame)
     double tris = 0;
     for (uint32_t i = 0; i < cands; i++) {
         uint32_t s = w->candidates[i].surface;
-        double est = estimate_tris(w, s, w->target[s]);
-        int take = unlimited || i == 0 || tris + est <= w->budget.new_tris;
+        int culled = w->candidates[i].weight < 1.0f;
+        float target = culled ? sw_seam_walk_level_of(w->want[s]) : w->target[s];
+        double est = estimate_tris(w, s, target);
+        int take = culled ? tris + est <= w->budget.new_tris
+                          : unlimited || i == 0 || tris + est <= w->budget.new_tris;
         w->busy[s] = take ? SW_CHOSEN : SW_PASSED;
         tris += take ? est : 0;
         frame->jobs_scheduled += (uint32_t)take;
+        if (take && culled) {
+            w->target[s] = target;
+            frame->jobs_prefetch++;
+        }
     }
     return tris;
 }

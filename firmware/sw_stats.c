@@ -266,9 +266,10 @@ static sw_status write_cull(FILE *f, const sw_stats *s, sw_arena *scratch)
 
 void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
                                 uint32_t frames_behind, double behind_ratio, uint32_t jobs,
-                                uint32_t batches, uint32_t seam_ops, double budget_tris,
-                                double budget_used)
+                                uint32_t prefetch, uint32_t batches, uint32_t seam_ops,
+                                double budget_tris, double budget_used)
 {
+    s->prefetch_total += prefetch;
     s->waiting_max = waiting > s->waiting_max ? waiting : s->waiting_max;
     s->behind_max = behind > s->behind_max ? behind : s->behind_max;
     if (frames_behind > s->frames_behind_max)
@@ -311,12 +312,12 @@ static void write_threads(FILE *f, const sw_stats *s)
     fprintf(f, "  \"threads\": {\"workers\": %d, \"sync_work\": %d, \"target_ms\": %.3f, "
                "\"waiting_surfaces_max\": %u, \"behind_surfaces_max\": %u, "
                "\"frames_behind_max\": %u, \"behind_ratio_max\": %.3f, \"jobs\": %llu, "
-               "\"batches\": %llu, \"seam_ops\": %llu, \"budget_used_mean\": %.3f, "
+               "\"prefetch_jobs\": %llu, \"batches\": %llu, \"seam_ops\": %llu, \"budget_used_mean\": %.3f, "
                "\"budget_used_max\": %.3f, \"budget_tris_last\": %.0f, "
                "\"worker_triangles\": %llu, \"worker_busy_ms\": %.1f, \"steals\": %llu},\n",
             s->workers, s->sync_work, s->target_ms, s->waiting_max, s->behind_max,
             s->frames_behind_max, s->behind_ratio_max, (unsigned long long)s->jobs_total,
-            (unsigned long long)s->batches_total, (unsigned long long)s->seam_ops_total,
+            (unsigned long long)s->prefetch_total, (unsigned long long)s->batches_total, (unsigned long long)s->seam_ops_total,
             s->budget_frames ? s->budget_used_sum / s->budget_frames : 0.0, s->budget_used_max,
             s->budget_tris_last, (unsigned long long)s->worker_triangles, s->worker_busy_ms,
             (unsigned long long)s->worker_steals);

@@ -82,6 +82,7 @@ typedef struct sw_stats {
     /* With workers (firmware/sw_seam_walk.h, "Threads"): how far the work is
      * behind the view and what of the budget it used. */
     int workers, sync_work;
+    uint64_t prefetch_total;     /* jobs for surfaces out of view (w', budget left) */
     int visibility_thread;       /* V on its own thread (sw_seam_visibility.h) */
     float *visibility_ms;        /* per frame (ring, as frame_ms): V's half of the frame */
     float *plan_wait_ms;         /* per frame (ring): P waiting for V's plan */
@@ -144,8 +145,8 @@ void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z);
  * the bound ratio, jobs and whether a batch was swapped in, the budget. */
 void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
                                 uint32_t frames_behind, double behind_ratio, uint32_t jobs,
-                                uint32_t batches, uint32_t seam_ops, double budget_tris,
-                                double budget_used);
+                                uint32_t prefetch, uint32_t batches, uint32_t seam_ops,
+                                double budget_tris, double budget_used);
 
 /* The hand-over in the frame sw_stats_add_frame records next: V's time
  * on the frame's plan and P's wait for it. */
