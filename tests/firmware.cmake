@@ -33,7 +33,7 @@ add_test(NAME seam_drawn_walk
 # The threaded walk: stalled workers, two workers, --sync-work against --workers 0.
 add_test(NAME walk_threads
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_walk_threads.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
-set_tests_properties(walk_threads PROPERTIES TIMEOUT 300)
+set_tests_properties(walk_threads PROPERTIES TIMEOUT 600)
 
 # The native IGES reader against OpenCASCADE on the shared models.
 sw_add_test(test_iges_crosscheck SOURCES test_iges_crosscheck.c LIBS sw_assets sw_core
