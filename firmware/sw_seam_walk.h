@@ -47,11 +47,20 @@
  *   state; strips would add triangles and a second border to keep right.
  * - Budgets (sw_seam_budget.h): a surface needs work when its view bound
  *   leaves its mesh's valid range; visible ones are ordered by the weight
- *   w, culled ones (a mesh that no longer serves, no mesh near the view)
- *   by w' and only with budget left; per frame at most N new and M updated
- *   triangles, set by the controller for --target-ms. What the budget does
- *   not reach is drawn from the older, coarser mesh: the stats say how far
- *   behind (frames, bound ratio) and how much of the budget was used.
+ *   w, culled ones (out of view with a kept mesh that would not serve the
+ *   bound at its box's distance: fetched ahead for when the eye turns to
+ *   it) by w' = 1 - 1/w, below every visible one, and only while N lasts;
+ *   per frame N new and M updated triangles, set by the controller for
+ *   --target-ms. N is a cap (the heaviest surface excepted, so work always
+ *   moves); M is spent by the seam update, which cannot stop half-way
+ *   without loops that cross, so it is held over two frames: what an
+ *   update spends over M comes out of the next frame's N
+ *   (sw_seam_budget.h). What the budget does not reach is drawn from the
+ *   older, coarser mesh, and a surface passed over keeps its loops: a
+ *   mesh remade inside them (its neighbour moved) is made and labelled
+ *   for the bound they meet, so the stats say how far behind each drawn
+ *   mesh is (frames, bound ratio, its error measured apart) and how much
+ *   of the budget was used.
  * - The first frame comes from the coarsest state: its bounds are
  *   SW_SEAM_FIRST_COARSER times the view's, and it is the one frame that
  *   waits for its batch (there is nothing yet to draw instead).
