@@ -8,7 +8,10 @@
  * It draws into the display --display chose (platform/sw_display.h:
  * headless, KMS, an X11 or Wayland window). With --navigate or
  * --input-timeline the camera comes from the input step (sw_kiosk_run.h),
- * one call per frame. The main thread is the GL thread. */
+ * one call per frame, for the frame after the one being drawn. The main
+ * thread is the GL thread P; with workers, the walk's visibility side V
+ * runs on its own thread one frame ahead (sw_seam_visibility.h), and P
+ * draws the plans V hands it. */
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
