@@ -166,6 +166,7 @@ typedef struct sw_seam_walk {
     uint32_t *batch;              /* surface_count: the surfaces with a job in the batch */
     uint32_t batch_count, batch_pushed;
     uint32_t room_retries;        /* of the batch: rounds its jobs went again for room */
+    int room_tight;               /* the last batch went again for room: no prefetch */
     sw_seam_candidate *candidates;/* surface_count */
     uint64_t batch_tris;          /* of the frame's schedule: triangles estimated */
 } sw_seam_walk;

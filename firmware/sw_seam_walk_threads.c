@@ -116,13 +116,16 @@ static int wants_work(const sw_seam_walk *w, uint32_t s, double *weight)
 /* Out of view, its kept mesh no longer serving the bound it would need in
  * view (w->want, culled_want in sw_seam_walk.c): 1 and its weight w' =
  * 1 - 1/w, below every visible surface's (those are >= 1). Only when the
- * workers run on their own: with sync_work the frames must be what the
- * walk without workers draws, which fetches nothing ahead. */
+ * workers run on their own (with sync_work the frames must be what the
+ * walk without workers draws, which fetches nothing ahead) and the cache
+ * has room (after a batch that ran out, what is fetched ahead out of view
+ * is the first thing evicted: on the courtyard a third of all jobs were
+ * such churn). */
 static int wants_prefetch(const sw_seam_walk *w, uint32_t s, double *weight)
 {
     const sw_seam_entry *e = &w->cache.entries[s];
     if (w->visible[s] != 0 || w->want[s] <= 0 || e->state != SW_SEAM_READY ||
-        !sw_seam_walk_async(w))
+        !sw_seam_walk_async(w) || w->room_tight)
         return 0;
     double t = e->made_bound;
     double v = sw_seam_weight(1, t, SW_SEAM_KEEP * t, w->want[s]);
@@ -153,10 +156,17 @@ static double choose(sw_seam_walk *w, sw_seam_frame *frame)
     }
     sw_seam_candidates_sort(w->candidates, cands);
     int unlimited = w->sync_work || w->frame == 0;   /* (select counts the frame after) */
+    /* Time left (paper 004): the culled go only when nothing in view waits;
+     * taken after visible work in the same batch they delayed its swap. */
+    int time_left = cands == 0 || w->candidates[0].weight < 1.0f;
     double tris = 0;
     for (uint32_t i = 0; i < cands; i++) {
         uint32_t s = w->candidates[i].surface;
         int culled = w->candidates[i].weight < 1.0f;
+        if (culled && !time_left) {
+            w->busy[s] = SW_PASSED;
+            continue;
+        }
         float target = culled ? sw_seam_walk_level_of(w->want[s]) : w->target[s];
         double est = estimate_tris(w, s, target);
         int take = culled ? tris + est <= w->budget.new_tris
@@ -244,19 +254,26 @@ sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error 
     return st;
 }
 
-/* The least recently drawn meshes out of view, retired: a worker found
- * no room. A mesh's epoch is the last frame that drew it (and measured it:
- * the GL thread reads a mesh only in the frames that draw it, and at its
- * upload, before any of them), so the workers may reuse its blocks as soon
- * as that frame has finished. */
-static void evict(sw_seam_walk *w)
+/* The count least recently drawn meshes out of view, retired: workers
+ * found no room. A mesh's epoch is the last frame that drew it (and
+ * measured it: the GL thread reads a mesh only in the frames that draw it,
+ * and at its upload, before any of them), so the workers may reuse its
+ * blocks as soon as that frame has finished. */
+static void evict(sw_seam_walk *w, uint32_t count)
 {
+    /* Oldest first by one sort of the candidates (the scratch choose()
+     * used; free again by now): a search of the whole cache per mesh made
+     * thousands of evictions cost seconds. Ages, not frame numbers, so the
+     * float weights stay exact on a kiosk that runs for weeks. */
     sw_seam_cache *c = &w->cache;
-    for (int k = 0; k < 8; k++) {
-        uint32_t v = sw_seam_cache_oldest(c, w->evictable);
-        if (v == UINT32_MAX)
-            return;
-        retire_mesh(w, v);
+    uint32_t n = c->surface_count, m = 0;
+    for (uint32_t s = 0; s < n; s++)
+        if (c->entries[s].state == SW_SEAM_READY && w->evictable[s])
+            w->candidates[m++] =
+                (sw_seam_candidate){ (float)(w->frame - c->entries[s].last_frame), s };
+    sw_seam_candidates_sort(w->candidates, m);
+    for (uint32_t k = 0; k < count && k < m; k++) {
+        retire_mesh(w, w->candidates[k].surface);
         c->evictions++;
     }
 }
@@ -321,8 +338,14 @@ static int retry_no_room(sw_seam_walk *w, sw_seam_frame *frame)
     }
     if (keep == w->batch_count)
         return 0;
+    /* Two meshes out of view for each job that found no room (meshes are
+     * alike in size, and blocks come in powers of two), at least 8: a
+     * fixed 8 left batches of thousands of small surfaces (the courtyard)
+     * with thousands of holes after the last retry, where the walk
+     * without workers, which evicts until a mesh fits, had none. */
+    uint32_t failed = w->batch_count - keep;
     uint32_t before = w->cache.evictions;
-    evict(w);
+    evict(w, failed > 4 ? 2 * failed : 8);
     frame->evicted += w->cache.evictions - before;
     for (uint32_t i = keep; i < w->batch_count; i++) {
         uint32_t s = w->batch[i];
@@ -351,6 +374,7 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *fra
         for (uint32_t i = 0; i < w->batch_count; i++)
             consume(w, w->batch[i], plan, frame);
         w->batch_count = w->batch_pushed = 0;
+        w->room_tight = w->room_retries > 0;
         w->room_retries = 0;
         frame->batches_committed = 1;
     }
