@@ -167,7 +167,24 @@ def figures(s):
             "gaps": s["seam_drawn"]["gaps_max"], "unchecked": s["seam_drawn"]["unchecked_frames"],
             "seamwalk_cracks": s["cracks_max"], "rss_peak_mib": rss.get("peak", -1) / 1024.0,
             "arena_mib": s["arena_bytes"] / 1048576.0, "series": s.get("frame_ms_series", []),
-            "first_frame_ms": s["first_frame_ms"], "mallocs_after_init": s["mallocs_after_init"]}
+            "first_frame_ms": s["first_frame_ms"], "mallocs_after_init": s["mallocs_after_init"],
+            "lag": lag_figures(s)}
+
+
+def lag_figures(s):
+    """What a threaded walk shows while its work catches up (None without
+    workers): surfaces in view not drawn yet, drawn coarser, how far."""
+    t, v = s.get("threads"), s.get("visibility")
+    if not t or not t.get("workers"):
+        return None
+    behind = s.get("error_px_behind", {})
+    return {"waiting_max": t["waiting_surfaces_max"], "behind_max": t["behind_surfaces_max"],
+            "behind_ratio_max": t["behind_ratio_max"], "frames_behind_max": t["frames_behind_max"],
+            "error_behind_max": behind.get("max", 0.0), "prefetch_jobs": t.get("prefetch_jobs", 0),
+            "visibility_ms_p50": v["ms"]["p50"] if v else None,
+            "plan_wait_ms_p50": v["plan_wait_ms"]["p50"] if v else None,
+            "plan_wait_ms_p99": v["plan_wait_ms"]["p99"] if v else None,
+            "visibility_thread": v["thread"] if v else False}
 
 
 def search_uniform(scene, target, every):
@@ -280,6 +297,17 @@ def print_scene(a, sc):
         print("seamwalk: its own crack count %d (border vertices off their seam vertex, dropped "
               "loop points, holes); arena %.0f MiB; first frame %.0f ms after start"
               % (r1["seamwalk_cracks"], r1["arena_mib"], r1["first_frame_ms"]))
+    lag = r1.get("lag") if r1["ok"] else None
+    if lag:
+        print("seamwalk as built, while its work catches up: up to %d surfaces in view not drawn "
+              "yet (no mesh), %d drawn coarser (up to %.1fx the bound, %d frames behind; their "
+              "error max %.3f px, apart from the column); %d meshes fetched ahead out of view; "
+              "visibility thread %s: its plan p50 %.1f ms, the GL thread waited for it p50 %.1f, "
+              "p99 %.1f ms" % (lag["waiting_max"], lag["behind_max"], lag["behind_ratio_max"],
+                               lag["frames_behind_max"], lag["error_behind_max"],
+                               lag["prefetch_jobs"], "on" if lag["visibility_thread"] else "off",
+                               lag["visibility_ms_p50"], lag["plan_wait_ms_p50"],
+                               lag["plan_wait_ms_p99"]))
     if r3["ok"]:
         print("uniform: every %dth frame of the path%s; grids tried (S, error max px): %s"
               % (r3["every"], " (* stopped at the time limit)"
