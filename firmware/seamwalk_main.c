@@ -12,6 +12,7 @@
 #define _DEFAULT_SOURCE /* madvise, MADV_HUGEPAGE */
 #include <dlfcn.h>
 #include <errno.h>
+#include <limits.h>
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -78,23 +79,6 @@ typedef struct runtime {
     sw_camera_pose kiosk_pose;   /* this frame's, from the input step */
 } runtime;
 
-/* The GL driver (llvmpipe) allocates and frees its per-draw and per-scene
- * memory every frame. By default glibc gives it back to the kernel (heap
- * trimming, mmap for large blocks) and every frame pays the page faults
- * again: on the 40,000-patch showroom they were most of the first frame's
- * drawing and of the second frame. Kept in the heap, later frames reuse the
- * same pages (first frame -14%, second -27%, medians of 6 runs each). Our
- * own code does not allocate after start; this only changes where libc
- * keeps what the libraries free. */
-static void keep_heap_pages(void)
-{
-#ifdef __GLIBC__
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);   /* glibc's largest: below it, from the heap */
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
-    mallopt(M_TOP_PAD, 64 << 20);
-#endif
-}
-
 static double now_s(void)
 {
     struct timespec ts;
@@ -119,20 +103,54 @@ static sw_status file_size(const char *path, size_t *size, sw_error *err)
     return SW_OK;
 }
 
-/* The arena's block, on 2 MiB boundaries and marked for transparent huge
- * pages: the start writes a few hundred MiB into it once (the pack, the
- * walk's per-vertex state), and in 4 KiB pages each first touch was a page
- * fault, a quarter of the showroom's start. Where the kernel offers no huge
- * pages the advice is ignored and the block is an ordinary one. */
+/* The arena's block (and the workers'), a mapping of its own marked for
+ * transparent huge pages: the start writes a few hundred MiB into it once
+ * (the pack, the walk's per-vertex state), and in 4 KiB pages each first
+ * touch was a page fault, a quarter of the showroom's start. Where the
+ * kernel offers no huge pages the advice is ignored. Not from malloc, so
+ * it leaves the heap's huge pages (keep_heap_pages) to the GL driver. */
 #define SW_HUGE_PAGE (2u << 20)
 static void *take_block(size_t bytes)
 {
-    void *p = NULL;
-    size_t rounded = (bytes + SW_HUGE_PAGE - 1) / SW_HUGE_PAGE * SW_HUGE_PAGE;
-    if (rounded < bytes || posix_memalign(&p, SW_HUGE_PAGE, rounded) != 0)
+    void *p = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED)
         return NULL;
-    madvise(p, rounded, MADV_HUGEPAGE);
+    madvise(p, bytes, MADV_HUGEPAGE);
     return p;
+}
+
+static void give_block(void *block, size_t bytes)
+{
+    if (block)
+        munmap(block, bytes);
+}
+
+/* The GL driver (llvmpipe) takes its memory from malloc: buffers zeroed
+ * when made (the tessellation pool's two, 57 MiB on the 40,000-patch
+ * showroom) and per-draw and per-scene blocks every frame. By default
+ * glibc maps each large block on its own in 4 KiB pages and gives freed
+ * memory back, so every frame paid its page faults again. Here every block
+ * comes from the heap, the heap keeps what is freed, and its first
+ * SW_HEAP_HUGE bytes are marked for transparent huge pages (as the arena
+ * is, take_block): the GL's start went from about 280 to 100 ms and the
+ * first two frames got faster (README, "Start-up"). Our own code does not
+ * allocate after start; this changes only where libc puts what the
+ * libraries ask for. */
+#define SW_HEAP_HUGE (256u << 20)
+static void keep_heap_pages(void)
+{
+#ifdef __GLIBC__
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, INT_MAX);
+    void *reserve = malloc(SW_HEAP_HUGE);
+    if (!reserve)
+        return;
+    uintptr_t lo = ((uintptr_t)reserve + SW_HUGE_PAGE - 1) & ~(uintptr_t)(SW_HUGE_PAGE - 1);
+    uintptr_t hi = ((uintptr_t)reserve + SW_HEAP_HUGE) & ~(uintptr_t)(SW_HUGE_PAGE - 1);
+    if (hi > lo)
+        madvise((void *)lo, hi - lo, MADV_HUGEPAGE);
+    free(reserve);   /* back to the heap's top, kept: later blocks are carved from it */
+#endif
 }
 
 /* Border edges the drawn-seam check holds in a frame. */
@@ -637,7 +655,7 @@ static sw_status start_message(runtime *rt, sw_error *err)
     rt->png_scratch = rt->opt.png_dir ? sw_png_scratch_bytes(rt->opt.width, rt->opt.height, 3) : 0;
     size_t need = sw_stats_arena_bytes(rt->opt.frames) + sw_arena_worst_case(pixels, 64) +
                   rt->png_scratch + 4096;
-    if (!(rt->block = malloc(need)))
+    if (!(rt->block = take_block(need)))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes", need);
     sw_arena_init(&rt->arena, rt->block, need);
     sw_status st = sw_stats_init(&rt->stats, &rt->arena, rt->opt.frames, rt->opt.max_error_px, err);
@@ -748,14 +766,14 @@ static void stop_walk(runtime *rt)
         sw_kiosk_run_stop(&rt->kiosk);
     rt->kiosk_up = 0;
     sw_seam_walk_stop_workers(&rt->seam);
-    free(rt->worker_block);
+    give_block(rt->worker_block, rt->worker_arena.size);
     rt->worker_block = NULL;
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
     if (rt->renderer_up)
         sw_renderer_destroy(&rt->renderer);
     rt->pool_up = rt->renderer_up = 0;
-    free(rt->block);
+    give_block(rt->block, rt->arena.size);
     rt->block = NULL;
 }
 
