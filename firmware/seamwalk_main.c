@@ -132,10 +132,11 @@ static void give_block(void *block, size_t bytes)
  * memory back, so every frame paid its page faults again. Here every block
  * comes from the heap, the heap keeps what is freed, and its first
  * SW_HEAP_HUGE bytes are marked for transparent huge pages (as the arena
- * is, take_block): the GL's start went from about 280 to 100 ms and the
- * first two frames got faster (README, "Start-up"). Our own code does not
- * allocate after start; this changes only where libc puts what the
- * libraries ask for. */
+ * is, take_block): on the showroom the GL's start went from 316 to 15 ms
+ * (medians) and the first two frames got faster, for 50-80 MiB more
+ * resident memory (README, "Start-up"). Our own code does not allocate
+ * after start; this changes only where libc puts what the libraries ask
+ * for. */
 #define SW_HEAP_HUGE (256u << 20)
 static void keep_heap_pages(void)
 {
