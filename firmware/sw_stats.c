@@ -41,6 +41,8 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
     s->mallocs_after_init = -1;
     s->process_mallocs_after_init = -1;
     s->rss_start_kb = s->rss_first_loop_kb = s->rss_end_kb = s->rss_peak_kb = -1;
+    s->start_display_ms = s->start_prepare_ms = s->start_walk_init_ms = -1;
+    s->start_workers_ms = s->start_gl_ms = s->start_frame_ms = -1;
     return SW_OK;
 }
 
@@ -422,6 +424,10 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
             (long long)s->process_mallocs_after_init);
     fprintf(f, "  \"pack_open_ms\": %.3f,\n  \"first_frame_ms\": %.3f,\n", s->pack_open_ms,
             s->first_frame_ms);
+    fprintf(f, "  \"start_ms\": {\"display\": %.3f, \"pack_open\": %.3f, \"prepare\": %.3f, "
+               "\"walk_init\": %.3f, \"workers\": %.3f, \"gl\": %.3f, \"first_frame\": %.3f},\n",
+            s->start_display_ms, s->pack_open_ms, s->start_prepare_ms, s->start_walk_init_ms,
+            s->start_workers_ms, s->start_gl_ms, s->start_frame_ms);
     fprintf(f, "  \"walk_s\": %.3f,\n  \"viewport\": [%d, %d]\n}\n", s->walk_s, s->width,
             s->height);
     sw_arena_reset_to(scratch, mark);

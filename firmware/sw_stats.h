@@ -123,6 +123,14 @@ typedef struct sw_stats {
     int64_t rss_loop_kb[SW_STATS_RSS_LOOPS]; /* at the end of each of the first loops */
 
     double pack_open_ms, first_frame_ms, walk_s;
+    /* first_frame_ms in its steps, each from the end of the one before:
+     * the display, the pack (read, checksums, validation: pack_open_ms), the
+     * rest of the start before the walk (camera path, statistics), the
+     * walk's init (selection, culling tree, cache), the workers' start, the
+     * GL's (renderer, buffer pool), and the first frame itself, less its
+     * measurement; -1 a step that did not run. */
+    double start_display_ms, start_prepare_ms, start_walk_init_ms, start_workers_ms,
+        start_gl_ms, start_frame_ms;
     uint64_t arena_bytes, arena_peak_bytes;  /* the one arena: every byte the walk uses */
     uint64_t runtime_bytes;      /* of it, the pack header's (pack, patch state, walk) */
     int64_t mallocs_after_init;  /* -1 when the binary could not count */

@@ -64,8 +64,8 @@ for name, j in (("stalled", stalled), ("async", run), ("slow", slow)):
 assert stalled["threads"]["batches"] <= 6
 assert stalled["threads"]["frames_behind_max"] >= 10
 # Meshes drawn coarser than asked are measured apart: the stalled walk has
-# them (its first frame's meshes, made at twice the bound, are never
-# replaced), and error_px keeps within the bound what was made for it.
+# them (its first frame's meshes, made at SW_SEAM_FIRST_COARSER times the
+# bound, are never replaced), and error_px keeps within the bound what was made for it.
 assert stalled["error_px_behind"]["samples"] > 0, stalled["error_px_behind"]
 assert stalled["threads"]["behind_ratio_max"] > 1
 beyond = stalled["seam"]["error_px_beyond_sewing_max"]
