@@ -34,6 +34,7 @@
 #include "sw_rss.h"
 #include "sw_seam_depth.h"
 #include "sw_seam_walk.h"
+#include "sw_grow_hook.h"
 #include "sw_stats.h"
 #include "sw_up_axis.h"
 
@@ -57,6 +58,7 @@ typedef struct runtime {
     sw_renderer renderer;
     sw_gl_pool pool;          /* the cached tessellations, as rt->seam.cache lays them out */
     int renderer_up, pool_up;
+    sw_grow_hook grow;        /* --test-grow-kb */
     uint8_t *pixels;          /* read-back, width * height * 4, only with --png-dir */
     size_t png_scratch;       /* bytes kept free in the arena for sw_png_write */
     sw_box model_box;
@@ -171,6 +173,7 @@ static sw_status start_workers(runtime *rt, sw_error *err)
     if (!(rt->worker_block = malloc(need)))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the workers", need);
     sw_arena_init(&rt->worker_arena, rt->worker_block, need);
+    sw_arena_touch(&rt->worker_arena);   /* resident from the start, as the arena */
     rt->seam.sync_work = rt->opt.sync_work;
     sw_status st = sw_seam_walk_start_workers(&rt->seam, (uint32_t)rt->workers,
                                               rt->opt.target_ms, &rt->arena, &rt->worker_arena,
@@ -244,6 +247,9 @@ static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
     if (!rt->block)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the arena", need);
     sw_arena_init(&rt->arena, rt->block, need);
+    /* The memory the walk holds is resident before its first frame; it
+     * does not grow pages as caches fill, loops into a soak (sw_arena.h). */
+    sw_arena_touch(&rt->arena);
     return SW_OK;
 }
 
@@ -324,10 +330,12 @@ static sw_status start(runtime *rt, sw_error *err)
     if (rt->opt.back_flat)
         sw_renderer_set_back_color(&rt->renderer, rt->opt.back_color);
     sw_renderer_set_back_hidden(&rt->renderer, rt->opt.back_hidden);
-    if ((st = sw_gl_pool_init(&rt->pool, rt->seam.cache.vertices, rt->seam.cache.indices, err)))
+    if ((st = sw_gl_pool_init(&rt->pool, rt->seam.cache.vertices, rt->seam.cache.indices,
+                              (uint32_t)rt->opt.batch_tris, err)))
         return st;
     rt->pool_up = 1;
-    return SW_OK;
+    return sw_grow_hook_init(&rt->grow, (size_t)rt->opt.test_grow_kb * 1024, SW_STATS_RSS_LOOPS,
+                             err);
 }
 
 static sw_vec3 vec3_of(const float v[3]) { return sw_v3(v[0], v[1], v[2]); }
@@ -471,7 +479,7 @@ static sw_status run_frame(runtime *rt, int frame, sw_error *err)
                               &swapped, err);
     if (st != SW_OK)
         return st;
-    sw_renderer_finish(&rt->renderer);
+    sw_gl_pool_finish(&rt->pool);
     double ms = (now_s() - t0) * 1000.0 - measure_ms;
     int first = rt->stats.frames_total == 0;
     sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, drawn);
@@ -531,6 +539,7 @@ static sw_status walk(runtime *rt, sw_error *err)
         if (st != SW_OK)
             return st;
         if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops <= SW_STATS_RSS_LOOPS) {
+            sw_grow_hook_step(&rt->grow);
             s->rss_loop_kb[s->loops - 1] = rss_now_kb(s);
             if (s->loops == 1)
                 s->rss_first_loop_kb = s->rss_loop_kb[0];
@@ -696,6 +705,7 @@ static void stop_walk(runtime *rt)
     if (rt->renderer_up)
         sw_renderer_destroy(&rt->renderer);
     rt->pool_up = rt->renderer_up = 0;
+    sw_grow_hook_destroy(&rt->grow);
     free(rt->block);
     rt->block = NULL;
 }

@@ -15,15 +15,32 @@
 #include "sw_renderer.h"
 #include "sw_tess.h"
 
+/* The draws the driver may hold unfinished, in triangles (sw_gl_pool_draw
+ * waits for it with glFinish past them). llvmpipe bins draws into scenes of
+ * at most 36 MiB of 64 kiB heap blocks and, while its rasteriser threads
+ * are behind, opens another scene (up to 64) rather than wait: the 40,000-
+ * patch showroom at 1280x720 ran 4, then 5, 6 and 7 such scenes at once as
+ * the machine's load came and went (147 to 258 MiB live, and the heap kept
+ * the most it had reached). At about 600 bytes of scene a triangle there,
+ * 32768 triangles keep it to about one scene (README, "The soak"). */
+#define SW_GL_POOL_BATCH_TRIANGLES 32768
+
 typedef struct sw_gl_pool {
     unsigned int vertex_buffer, index_buffer;
     uint32_t vertices, indices;      /* capacities */
+    uint32_t batch_triangles;        /* waits for the driver past these; 0 never */
+    uint32_t unfinished_triangles;   /* drawn since the last wait */
     uint64_t bytes_uploaded;         /* since init */
     uint64_t draw_calls, triangles;  /* since init */
+    uint64_t waits;                  /* glFinish calls in sw_gl_pool_draw, since init */
 } sw_gl_pool;
 
-/* Creates both buffers (GL_DYNAMIC_DRAW). SW_ERR_GL when the GL refuses. */
-sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices, sw_error *err);
+/* Creates both buffers (GL_DYNAMIC_DRAW) and writes them once, so the
+ * driver's pages for them are taken now rather than as meshes first reach
+ * them. batch_triangles: see SW_GL_POOL_BATCH_TRIANGLES (0: never wait).
+ * SW_ERR_GL when the GL refuses. */
+sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices,
+                          uint32_t batch_triangles, sw_error *err);
 void sw_gl_pool_destroy(sw_gl_pool *p);
 
 /* Writes a mesh: n vertices at first_vertex, m indices at first_index
@@ -32,8 +49,14 @@ int sw_gl_pool_upload(sw_gl_pool *p, uint32_t first_vertex, const sw_vertex *ver
                       uint32_t first_index, const uint16_t *indices, uint32_t m);
 
 /* Draws index_count indices from first_index, their vertices counted from
- * first_vertex, with r's program (its camera and colour as set). */
+ * first_vertex, with r's program (its camera and colour as set); then waits
+ * for the driver (glFinish) when batch_triangles or more were drawn since
+ * the last wait. */
 void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
                      uint32_t first_index, uint32_t index_count);
+
+/* The frame's end: waits for the driver (glFinish) and starts the next
+ * batch from zero. */
+void sw_gl_pool_finish(sw_gl_pool *p);
 
 #endif
