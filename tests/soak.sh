@@ -10,9 +10,9 @@
 #   bash tests/soak.sh build --duration 600 --pack showroom.swpack --size 1280x720
 # Fails (exit 1) when the walk fails, when mallocs_after_init is not 0, when
 # it walked fewer than two loops, or when resident memory at the end exceeds
-# what it was after the first loop (by then the GL driver has taken its
-# buffers and the arena's pages are touched) by more than --max-growth-kb
-# (default 2048). Never fails on timing; prints the figures either way.
+# what it was after the first loop (the arena and the GL buffers are touched
+# at start; by then the driver's heap has held a loop's work too) by more
+# than --max-growth-kb (default 2048). Never fails on timing; prints the figures either way.
 # --test-grow-kb K makes seamwalk grow K kB resident at each loop's end (no
 # allocation): the check must then fail (CTest soak_catches_growth).
 set -euo pipefail
