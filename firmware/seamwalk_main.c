@@ -11,8 +11,6 @@
  * one call per frame. The main thread is the GL thread. */
 #include <dlfcn.h>
 #include <errno.h>
-#include <limits.h>
-#include <malloc.h>
 #include <math.h>
 #include <signal.h>
 #include <stdint.h>
@@ -37,6 +35,7 @@
 #include "sw_seam_depth.h"
 #include "sw_seam_walk.h"
 #include "sw_grow_hook.h"
+#include "sw_heap.h"
 #include "sw_stats.h"
 #include "sw_up_axis.h"
 
@@ -542,6 +541,11 @@ static sw_status walk(runtime *rt, sw_error *err)
             return st;
         if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops <= SW_STATS_RSS_LOOPS) {
             sw_grow_hook_step(&rt->grow);
+            /* The driver's heap is sized by now: resident from here on (no
+             * allocation; without it, a kernel before 5.14, the soak shows
+             * the creep it prevents). */
+            if (s->loops == 1)
+                s->heap_resident = sw_heap_populate();
             s->rss_loop_kb[s->loops - 1] = rss_now_kb(s);
             if (s->loops == 1)
                 s->rss_first_loop_kb = s->rss_loop_kb[0];
@@ -552,6 +556,7 @@ static sw_status walk(runtime *rt, sw_error *err)
             break;   /* the window closed, or SIGTERM/SIGINT: end as if the walk were done */
     }
     s->rss_end_kb = rss_now_kb(s);
+    s->batch_waits = rt->pool.waits;
     rt->stats.walk_s = now_s() - t0;
     rt->stats.mallocs_after_init = sw_alloc_count_active()
                                        ? (int64_t)(sw_alloc_count_allocs() - allocs_before)
@@ -755,19 +760,6 @@ static void print_summary(const runtime *rt)
         printf("seamwalk: stats in %s\n", rt->opt.stats_path);
 }
 
-/* glibc hands the top of its heap back once 128 kB of it are free and
- * takes it again for the next frame's driver work (llvmpipe's scenes), so
- * resident memory at a loop's end went up and down with the last frames'
- * work (585 to 594 MB on the showroom). A kiosk wants the memory taken and
- * kept: nothing is trimmed, so resident memory is the most the heap has
- * held, which is what the soak compares. Set before the GL starts. */
-static void keep_heap(void)
-{
-#ifdef __GLIBC__
-    mallopt(M_TRIM_THRESHOLD, INT_MAX);
-#endif
-}
-
 int main(int argc, char **argv)
 {
     static runtime rt;
@@ -787,7 +779,8 @@ int main(int argc, char **argv)
     struct sigaction stop_walk_on = {.sa_handler = sw_display_close_on_signal};
     sigaction(SIGTERM, &stop_walk_on, NULL);
     sigaction(SIGINT, &stop_walk_on, NULL);
-    keep_heap();
+    /* A batch's worth of scene (sw_gl_pool.h) as the heap's steps. */
+    sw_heap_keep((size_t)rt.opt.batch_tris * SW_GL_POOL_SCENE_BYTES_PER_TRIANGLE);
     st = open_display(&rt, &err);
     if (st == SW_OK)
         st = rt.opt.store_dir ? start_from_store(&rt, &err) : start(&rt, &err);
