@@ -29,6 +29,10 @@
  * more after the first loop, and one run grew 5.6 MB after it). */
 #define SW_GL_POOL_BATCH_TRIANGLES 32768
 
+/* llvmpipe's scene a triangle, bytes: the live scene blocks at the most
+ * over the triangles of that frame (258 MiB, about 430,000 triangles). */
+#define SW_GL_POOL_SCENE_BYTES_PER_TRIANGLE 600
+
 typedef struct sw_gl_pool {
     unsigned int vertex_buffer, index_buffer;
     uint32_t vertices, indices;      /* capacities */
