@@ -25,6 +25,8 @@
 #include "sw_boot.h"
 #include "sw_camera_path.h"
 #include "sw_display.h"
+#include "sw_grow_hook.h"
+#include "sw_heap.h"
 #include "sw_kiosk_run.h"
 #include "sw_message_screen.h"
 #include "sw_options.h"
@@ -34,8 +36,6 @@
 #include "sw_rss.h"
 #include "sw_seam_depth.h"
 #include "sw_seam_walk.h"
-#include "sw_grow_hook.h"
-#include "sw_heap.h"
 #include "sw_stats.h"
 #include "sw_up_axis.h"
 
@@ -248,8 +248,8 @@ static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
     if (!rt->block)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the arena", need);
     sw_arena_init(&rt->arena, rt->block, need);
-    /* The memory the walk holds is resident before its first frame; it
-     * does not grow pages as caches fill, loops into a soak (sw_arena.h). */
+    /* Resident before the first frame: no page of it arrives as caches
+     * fill, loops into a soak (sw_arena.h). */
     sw_arena_touch(&rt->arena);
     return SW_OK;
 }

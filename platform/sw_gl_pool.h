@@ -18,10 +18,10 @@
 /* The draws the driver may hold unfinished, in triangles (sw_gl_pool_draw
  * waits for it with glFinish past them). llvmpipe bins draws into scenes of
  * at most 36 MiB of 64 kiB heap blocks and, while its rasteriser threads
- * are behind, opens another scene (up to 64) rather than wait: the 40,000-
- * patch showroom at 1280x720 ran 4, then 5, 6 and 7 such scenes at once as
- * the machine's load came and went (147 to 258 MiB live, and the heap kept
- * the most it had reached). At about 600 bytes of scene a triangle there,
+ * are behind, opens another scene (up to 64) rather than wait: on the
+ * 40,000-patch showroom at 1280x720 the blocks live at once rose in steps
+ * of one scene, 4 to 7 scenes' worth (147 to 258 MB), as the machine's load
+ * came and went, and the heap kept the most it had reached. At about 600 bytes of scene a triangle there,
  * 32768 triangles keep it to about one scene, at no frame time we could
  * measure (README, "The soak"). Fencing each batch (EGL_KHR_fence_sync) and
  * waiting for the one before, so the rasteriser works while the next batch
