@@ -66,9 +66,8 @@ static int heap_range(uintptr_t *lo, uintptr_t *hi)
  * put after the first loop, yet its resident part crept up for tens of
  * loops (the 8,000-patch showroom at 640x360: 67.2 to 70.6 MB of a 75.1 MB
  * heap in 40 s) as blocks came to parts of it never written before: the
- * first frames' shader compiles took the heap to its size and gave most of
- * it back; scene blocks are written from their start, free space not at
- * all. madvise makes every page resident without changing a byte, free
+ * first loop takes the heap to its size, scene blocks are written from
+ * their start and free space not at all. madvise makes every page resident without changing a byte, free
  * chunks included. */
 int sw_heap_populate(void)
 {
