@@ -12,6 +12,12 @@ void sw_arena_init(sw_arena *arena, void *block, size_t size)
     arena->last = SIZE_MAX;
 }
 
+void sw_arena_touch(sw_arena *arena)
+{
+    if (arena->base)
+        memset(arena->base, 0, arena->size);
+}
+
 static size_t align_up(size_t offset, uintptr_t base, size_t align)
 {
     uintptr_t p = base + offset;

@@ -18,6 +18,14 @@ typedef struct sw_arena {
 
 void sw_arena_init(sw_arena *arena, void *block, size_t size);
 
+/* Writes zeros over the whole block, so that every page of it is resident
+ * from now on: a large malloc only reserves addresses and the pages come as
+ * they are first written, which in a walk is whenever a cache or queue
+ * first reaches them (loops into a soak). Touched at start, resident memory
+ * is what the walk will hold, and a device short of memory fails at start
+ * instead of hours into the walk. */
+void sw_arena_touch(sw_arena *arena);
+
 /* size bytes aligned to align (a power of two, at most 4096); NULL when the
  * arena cannot hold them. size 0 returns a valid unique-enough pointer. */
 void *sw_arena_alloc(sw_arena *arena, size_t size, size_t align);

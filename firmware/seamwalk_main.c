@@ -15,10 +15,6 @@
 #define _DEFAULT_SOURCE /* madvise, MADV_HUGEPAGE */
 #include <dlfcn.h>
 #include <errno.h>
-#include <limits.h>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 #include <math.h>
 #include <signal.h>
 #include <stdint.h>
@@ -34,6 +30,8 @@
 #include "sw_boot.h"
 #include "sw_camera_path.h"
 #include "sw_display.h"
+#include "sw_grow_hook.h"
+#include "sw_heap.h"
 #include "sw_kiosk_run.h"
 #include "sw_message_screen.h"
 #include "sw_options.h"
@@ -69,6 +67,7 @@ typedef struct runtime {
     sw_renderer renderer;
     sw_gl_pool pool;          /* the cached tessellations, as rt->seam.cache lays them out */
     int renderer_up, pool_up;
+    sw_grow_hook grow;        /* --test-grow-kb */
     uint8_t *pixels;          /* read-back, width * height * 4, only with --png-dir */
     size_t png_scratch;       /* bytes kept free in the arena for sw_png_write */
     sw_box model_box;
@@ -113,8 +112,10 @@ static sw_status file_size(const char *path, size_t *size, sw_error *err)
  * transparent huge pages: the start writes a few hundred MiB into it once
  * (the pack, the walk's per-vertex state), and in 4 KiB pages each first
  * touch was a page fault, a quarter of the showroom's start. Where the
- * kernel offers no huge pages the advice is ignored. Not from malloc, so
- * it leaves the heap's huge pages (keep_heap_pages) to the GL driver. */
+ * kernel offers no huge pages the advice is ignored. Not from malloc: the
+ * heap is the GL driver's (sw_heap.h). (A 256 MiB huge-page reserve at
+ * the heap's start made the GL's start 316 -> 15 ms, but the soak's
+ * sw_heap_populate would make all of it resident: left out.) */
 #define SW_HUGE_PAGE (2u << 20)
 static void *take_block(size_t bytes)
 {
@@ -129,35 +130,6 @@ static void give_block(void *block, size_t bytes)
 {
     if (block)
         munmap(block, bytes);
-}
-
-/* The GL driver (llvmpipe) takes its memory from malloc: buffers zeroed
- * when made (the tessellation pool's two, 57 MiB on the 40,000-patch
- * showroom) and per-draw and per-scene blocks every frame. By default
- * glibc maps each large block on its own in 4 KiB pages and gives freed
- * memory back, so every frame paid its page faults again. Here every block
- * comes from the heap, the heap keeps what is freed, and its first
- * SW_HEAP_HUGE bytes are marked for transparent huge pages (as the arena
- * is, take_block): on the showroom the GL's start went from 316 to 15 ms
- * (medians) and the first two frames got faster, for 50-80 MiB more
- * resident memory (README, "Start-up"). Our own code does not allocate
- * after start; this changes only where libc puts what the libraries ask
- * for. */
-#define SW_HEAP_HUGE (256u << 20)
-static void keep_heap_pages(void)
-{
-#ifdef __GLIBC__
-    mallopt(M_MMAP_MAX, 0);
-    mallopt(M_TRIM_THRESHOLD, INT_MAX);
-    void *reserve = malloc(SW_HEAP_HUGE);
-    if (!reserve)
-        return;
-    uintptr_t lo = ((uintptr_t)reserve + SW_HUGE_PAGE - 1) & ~(uintptr_t)(SW_HUGE_PAGE - 1);
-    uintptr_t hi = ((uintptr_t)reserve + SW_HEAP_HUGE) & ~(uintptr_t)(SW_HUGE_PAGE - 1);
-    if (hi > lo)
-        madvise((void *)lo, hi - lo, MADV_HUGEPAGE);
-    free(reserve);   /* back to the heap's top, kept: later blocks are carved from it */
-#endif
 }
 
 /* Border edges the drawn-seam check holds in a frame. */
@@ -246,6 +218,7 @@ static sw_status start_frames(runtime *rt, sw_error *err)
     if (!(rt->frame_block = take_block(need)))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the frames", need);
     sw_arena_init(&rt->frame_arena, rt->frame_block, need);
+    sw_arena_touch(&rt->frame_arena);   /* resident from the start, as the arena */
     rt->seam.sync_work = rt->opt.sync_work;
     sw_status st = SW_OK;
     if (rt->workers > 0) {
@@ -332,6 +305,9 @@ static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
     if (!rt->block)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the arena", need);
     sw_arena_init(&rt->arena, rt->block, need);
+    /* Resident before the first frame: no page of it arrives as caches
+     * fill, loops into a soak (sw_arena.h). */
+    sw_arena_touch(&rt->arena);
     return SW_OK;
 }
 
@@ -414,11 +390,13 @@ static sw_status start(runtime *rt, sw_error *err)
     if (rt->opt.back_flat)
         sw_renderer_set_back_color(&rt->renderer, rt->opt.back_color);
     sw_renderer_set_back_hidden(&rt->renderer, rt->opt.back_hidden);
-    if ((st = sw_gl_pool_init(&rt->pool, rt->seam.cache.vertices, rt->seam.cache.indices, err)))
+    if ((st = sw_gl_pool_init(&rt->pool, rt->seam.cache.vertices, rt->seam.cache.indices,
+                              (uint32_t)rt->opt.batch_tris, err)))
         return st;
     rt->pool_up = 1;
     rt->stats.start_gl_ms = lap_ms(&rt->mark_s);
-    return SW_OK;
+    return sw_grow_hook_init(&rt->grow, (size_t)rt->opt.test_grow_kb * 1024, SW_STATS_RSS_LOOPS,
+                             err);
 }
 
 static sw_vec3 vec3_of(const float v[3]) { return sw_v3(v[0], v[1], v[2]); }
@@ -588,7 +566,7 @@ static sw_status run_frame(runtime *rt, uint64_t f, sw_error *err)
                               err);
     if (st != SW_OK)
         return st;
-    sw_renderer_finish(&rt->renderer);
+    sw_gl_pool_finish(&rt->pool);
     double ms = (now_s() - t0) * 1000.0 - measure_ms;
     int first = rt->stats.frames_total == 0;
     sw_stats_add_frame(&rt->stats, ms, (uint32_t)triangles, drawn);
@@ -640,6 +618,12 @@ static sw_status walk(runtime *rt, sw_error *err)
         if (st != SW_OK)
             return st;
         if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops <= SW_STATS_RSS_LOOPS) {
+            sw_grow_hook_step(&rt->grow);
+            /* The driver's heap is sized by now: resident from here on (no
+             * allocation; without it, a kernel before 5.14, the soak shows
+             * the creep it prevents). */
+            if (s->loops == 1)
+                s->heap_resident = sw_heap_populate();
             s->rss_loop_kb[s->loops - 1] = rss_now_kb(s);
             if (s->loops == 1)
                 s->rss_first_loop_kb = s->rss_loop_kb[0];
@@ -650,6 +634,7 @@ static sw_status walk(runtime *rt, sw_error *err)
             break;   /* the window closed, or SIGTERM/SIGINT: end as if the walk were done */
     }
     s->rss_end_kb = rss_now_kb(s);
+    s->batch_waits = rt->pool.waits;
     rt->stats.walk_s = now_s() - t0;
     rt->stats.mallocs_after_init = sw_alloc_count_active()
                                        ? (int64_t)(sw_alloc_count_allocs() - allocs_before)
@@ -810,6 +795,7 @@ static void stop_walk(runtime *rt)
     if (rt->renderer_up)
         sw_renderer_destroy(&rt->renderer);
     rt->pool_up = rt->renderer_up = 0;
+    sw_grow_hook_destroy(&rt->grow);
     give_block(rt->block, rt->arena.size);
     rt->block = NULL;
 }
@@ -864,7 +850,6 @@ int main(int argc, char **argv)
     sw_error err = { SW_OK, "" };
     rt.display = &display;
     rt.start_s = now_s();
-    keep_heap_pages();
     sw_status st = sw_options_parse(argc, argv, &rt.opt, &err);
     if (st != SW_OK || rt.opt.help) {
         if (st != SW_OK)
@@ -878,6 +863,8 @@ int main(int argc, char **argv)
     sigaction(SIGTERM, &stop_walk_on, NULL);
     sigaction(SIGINT, &stop_walk_on, NULL);
     rt.mark_s = rt.start_s;
+    /* A batch's worth of scene (sw_gl_pool.h) as the heap's steps. */
+    sw_heap_keep((size_t)rt.opt.batch_tris * SW_GL_POOL_SCENE_BYTES_PER_TRIANGLE);
     st = open_display(&rt, &err);
     rt.display_ms = lap_ms(&rt.mark_s);
     if (st == SW_OK)

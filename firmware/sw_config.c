@@ -6,6 +6,8 @@
  * example file firmware/seamwalk.ini mirrors. */
 #include "sw_config.h"
 
+#include "sw_gl_pool.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <ini.h>
@@ -51,6 +53,7 @@ static const key_desc config_keys[] = {
     {"pack", "good_after_s", K_REAL, C(good_after_s), 0, 0, 1e9, NULL},
     {"render", "memory_mb", K_REAL, C(memory_mb), 0, 1, 1 << 20, NULL},
     {"render", "max_error_px", K_REAL, C(max_error_px), 0, 0.01, 100, NULL},
+    {"render", "batch_tris", K_INT, C(render_batch_tris), 0, 0, 1 << 24, NULL},
     {"budgets", "frame_ms", K_REAL, C(budget_frame_ms), 0, 1, 1000, NULL},
     {"budgets", "workers", K_INT, C(budget_workers), 0, -1, 64, NULL},
     {"gamepad", "enabled", K_BOOL, C(gamepad_enabled), 0, 0, 0, NULL},
@@ -106,6 +109,7 @@ void sw_config_defaults(sw_config *cfg)
     cfg->good_after_s = 30;
     cfg->memory_mb = 256;
     cfg->max_error_px = 0.5;
+    cfg->render_batch_tris = SW_GL_POOL_BATCH_TRIANGLES;
     cfg->budget_frame_ms = 16.7;
     cfg->budget_workers = -1;
     cfg->gamepad_enabled = 1;

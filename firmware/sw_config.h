@@ -74,6 +74,7 @@ typedef struct sw_config {
     int boot_attempts;
     double good_after_s;
     double memory_mb, max_error_px;
+    int render_batch_tris;               /* [render] batch_tris: --batch-tris */
     double budget_frame_ms;              /* [budgets] frame_ms: --target-ms */
     int budget_workers;                  /* [budgets] workers: --workers; -1 the cores less one */
     int gamepad_enabled;

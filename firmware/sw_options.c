@@ -90,6 +90,7 @@ static void set_defaults(sw_options *o)
     o->measure_every = 4;
     o->memory_mb = c->memory_mb;
     o->max_error_px = c->max_error_px;
+    o->batch_tris = c->render_batch_tris;
     o->fov_deg = c->fov_deg;
     o->boot_attempts = c->boot_attempts;
     o->good_after_s = c->good_after_s;
@@ -124,6 +125,7 @@ static void apply_config(sw_options *o)
     o->good_after_s = c->good_after_s;
     o->memory_mb = c->memory_mb;
     o->max_error_px = c->max_error_px;
+    o->batch_tris = c->render_batch_tris;
     o->target_ms = c->budget_frame_ms;
     o->workers = c->budget_workers;
     o->orbit = c->nav_mode == SW_NAV_ORBIT;
@@ -284,6 +286,10 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_int(a, v, 0, 1, &o->visibility_thread, err);
         } else if (!strcmp(a, "--sync-work")) {
             st = parse_int(a, v, 0, 1, &o->sync_work, err);
+        } else if (!strcmp(a, "--batch-tris")) {
+            st = parse_int(a, v, 0, 1 << 24, &o->batch_tris, err);
+        } else if (!strcmp(a, "--test-grow-kb")) {
+            st = parse_int(a, v, 0, 1 << 20, &o->test_grow_kb, err);
         } else if (!strcmp(a, "--test-slow-workers")) {
             st = parse_int(a, v, 0, 10000, &o->slow_workers_ms, err);
         } else if (!strcmp(a, "--test-stall-workers")) {
@@ -313,6 +319,7 @@ void sw_options_print_usage(const char *argv0)
             "          [--back-faces lit|hidden|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
             "          [--fill-crossings 0|1] [--cone-cull 0|1] [--cull tree|brute]\n"
             "          [--workers N] [--target-ms MS] [--visibility-thread 0|1]\n"
+            "          [--batch-tris N]\n"
             "Walks a seamwalk pack and shows it on a display.\n"
             "  --display NAME      where to draw (default auto, or [display] display):\n"
             "                        headless  EGL surfaceless, offscreen; needs a size (CI)\n"
@@ -383,6 +390,12 @@ void sw_options_print_usage(const char *argv0)
             "                      go on with the meshes they have (tests)\n"
             "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
             "                      many frames (tests: no half batch may show)\n"
+            "  --batch-tris N      wait for the GL driver after every N triangles drawn\n"
+            "                      (default 32768, or [render] batch_tris; 0: only at the\n"
+            "                      frame's end): what llvmpipe holds in flight, so resident\n"
+            "                      memory, stays bounded\n"
+            "  --test-grow-kb K    K kB more resident memory at each loop's end of a soak,\n"
+            "                      no allocation (tests: the soak must fail on it)\n"
             "  --no-cache          tessellate every visible surface every frame at its exact\n"
             "                      bound, keeping nothing: the baseline the cache is measured\n"
             "                      against (tests/bench/walk_cache_bench.sh), not for units\n"

@@ -64,6 +64,10 @@ typedef struct sw_options {
     int visibility_thread;       /* --visibility-thread 0|1: V on its own thread (with
                                     workers); 1 */
     int slow_workers_ms;         /* --test-slow-workers MS: each job published MS late; 0 */
+    int batch_tris;              /* --batch-tris N: triangles drawn before waiting for the GL
+                                    driver; default SW_GL_POOL_BATCH_TRIANGLES; 0 frame's end */
+    int test_grow_kb;            /* --test-grow-kb K: K kB more resident at each loop's end
+                                    (tests: the soak must fail on it); 0 */
     int help;
     const char *config_path;     /* --config FILE, or NULL: no file is read */
     /* The file's values. pack_path, store_dir and keys_path may point into

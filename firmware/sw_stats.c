@@ -342,8 +342,9 @@ static void write_series_and_soak(FILE *f, const sw_stats *s)
             (long long)s->rss_start_kb, (long long)s->rss_first_loop_kb,
             (long long)s->rss_end_kb, (long long)s->rss_peak_kb);
     fprintf(f, "  \"soak\": {\"duration_s\": %.3f, \"loops\": %llu, \"frames_per_loop\": %d, "
-               "\"rss_kb_per_loop\": [", s->duration_s, (unsigned long long)s->loops,
-            s->frame_capacity);
+               "\"heap_resident\": %d, \"batch_waits\": %llu, \"rss_kb_per_loop\": [",
+            s->duration_s, (unsigned long long)s->loops, s->frame_capacity, s->heap_resident,
+            (unsigned long long)s->batch_waits);
     for (uint64_t i = 0; i < s->loops && i < SW_STATS_RSS_LOOPS; i++)
         fprintf(f, "%s%lld", i ? ", " : "", (long long)s->rss_loop_kb[i]);
     fputs("]},\n", f);

@@ -3,9 +3,20 @@
 #include <GLES2/gl2.h>
 #include <stddef.h>
 
-sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices, sw_error *err)
+/* Zeros written over a buffer's whole store, a block at a time. */
+static void write_zeros(GLenum target, size_t bytes)
 {
-    *p = (sw_gl_pool){ 0 };
+    static const unsigned char zeros[1 << 16];
+    for (size_t at = 0; at < bytes; at += sizeof zeros) {
+        size_t n = bytes - at < sizeof zeros ? bytes - at : sizeof zeros;
+        glBufferSubData(target, (GLintptr)at, (GLsizeiptr)n, zeros);
+    }
+}
+
+sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices,
+                          uint32_t batch_triangles, sw_error *err)
+{
+    *p = (sw_gl_pool){ .batch_triangles = batch_triangles };
     if (vertices == 0 || indices == 0)
         return sw_error_set(err, SW_ERR_ARG, "GL pool: %u vertices, %u indices, expected > 0",
                             (unsigned)vertices, (unsigned)indices);
@@ -17,6 +28,14 @@ sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices, sw
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p->index_buffer);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)indices * 2, NULL, GL_DYNAMIC_DRAW);
     GLenum code = glGetError();
+    /* Written once now: a driver that keeps the store in host memory
+     * (llvmpipe) takes its pages as they are first written, which would
+     * otherwise be whenever the cache first reaches them, loops into a soak. */
+    if (code == GL_NO_ERROR) {
+        write_zeros(GL_ARRAY_BUFFER, (size_t)vertices * sizeof(sw_vertex));
+        write_zeros(GL_ELEMENT_ARRAY_BUFFER, (size_t)indices * 2);
+        code = glGetError();
+    }
     if (code != GL_NO_ERROR) {
         sw_gl_pool_destroy(p);
         return sw_error_set(err, SW_ERR_GL, "GL pool: buffers for %u vertices and %u indices "
@@ -69,4 +88,16 @@ void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
                    (const void *)((size_t)first_index * 2));
     p->draw_calls++;
     p->triangles += index_count / 3;
+    p->unfinished_triangles += index_count / 3;
+    if (p->batch_triangles && p->unfinished_triangles >= p->batch_triangles) {
+        glFinish();
+        p->unfinished_triangles = 0;
+        p->waits++;
+    }
+}
+
+void sw_gl_pool_finish(sw_gl_pool *p)
+{
+    glFinish();
+    p->unfinished_triangles = 0;
 }

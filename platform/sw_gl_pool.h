@@ -15,15 +15,40 @@
 #include "sw_renderer.h"
 #include "sw_tess.h"
 
+/* The draws the driver may hold unfinished, in triangles (sw_gl_pool_draw
+ * waits for it with glFinish past them). llvmpipe bins draws into scenes of
+ * at most 36 MiB of 64 kiB heap blocks and, while its rasteriser threads
+ * are behind, opens another scene (up to 64) rather than wait: on the
+ * 40,000-patch showroom at 1280x720 the blocks live at once rose in steps
+ * of one scene, 4 to 7 scenes' worth (147 to 258 MB), as the machine's load
+ * came and went, and the heap kept the most it had reached. At about 600 bytes of scene a triangle there,
+ * 32768 triangles keep it to about one scene, at no frame time we could
+ * measure (README, "The soak"). Fencing each batch (EGL_KHR_fence_sync) and
+ * waiting for the one before, so the rasteriser works while the next batch
+ * is drawn, was not faster there and held more (16384 a batch: 17 to 35 MB
+ * more after the first loop, and one run grew 5.6 MB after it). */
+#define SW_GL_POOL_BATCH_TRIANGLES 32768
+
+/* llvmpipe's scene a triangle, bytes: the live scene blocks at the most
+ * over the triangles of that frame (258 MiB, about 430,000 triangles). */
+#define SW_GL_POOL_SCENE_BYTES_PER_TRIANGLE 600
+
 typedef struct sw_gl_pool {
     unsigned int vertex_buffer, index_buffer;
     uint32_t vertices, indices;      /* capacities */
+    uint32_t batch_triangles;        /* waits for the driver past these; 0 never */
+    uint32_t unfinished_triangles;   /* drawn since the last wait */
     uint64_t bytes_uploaded;         /* since init */
     uint64_t draw_calls, triangles;  /* since init */
+    uint64_t waits;                  /* glFinish calls in sw_gl_pool_draw, since init */
 } sw_gl_pool;
 
-/* Creates both buffers (GL_DYNAMIC_DRAW). SW_ERR_GL when the GL refuses. */
-sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices, sw_error *err);
+/* Creates both buffers (GL_DYNAMIC_DRAW) and writes them once, so the
+ * driver's pages for them are taken now rather than as meshes first reach
+ * them. batch_triangles: see SW_GL_POOL_BATCH_TRIANGLES (0: never wait).
+ * SW_ERR_GL when the GL refuses. */
+sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices,
+                          uint32_t batch_triangles, sw_error *err);
 void sw_gl_pool_destroy(sw_gl_pool *p);
 
 /* Writes a mesh: n vertices at first_vertex, m indices at first_index
@@ -32,8 +57,14 @@ int sw_gl_pool_upload(sw_gl_pool *p, uint32_t first_vertex, const sw_vertex *ver
                       uint32_t first_index, const uint16_t *indices, uint32_t m);
 
 /* Draws index_count indices from first_index, their vertices counted from
- * first_vertex, with r's program (its camera and colour as set). */
+ * first_vertex, with r's program (its camera and colour as set); then waits
+ * for the driver (glFinish) when batch_triangles or more were drawn since
+ * the last wait. */
 void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
                      uint32_t first_index, uint32_t index_count);
+
+/* The frame's end: waits for the driver (glFinish) and starts the next
+ * batch from zero. */
+void sw_gl_pool_finish(sw_gl_pool *p);
 
 #endif

@@ -133,3 +133,14 @@ add_test(NAME soak_short COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/soak.sh ${PROJ
   --duration 20 --frames 30 --max-growth-kb ${SW_SOAK_GROWTH_KB})
 set_tests_properties(soak_short PROPERTIES PASS_REGULAR_EXPRESSION "soak: 20 s, .*mallocs_after_init 0\n"
   FAIL_REGULAR_EXPRESSION "soak: FAIL")
+# The same check must fail on growth: 4 MB more resident at each loop's end
+# (seamwalk --test-grow-kb, no allocation), so at least 4 MB past the first
+# loop once two loops ran; nothing else may fail. Not under the sanitizers
+# (their allowance above is 1 GB).
+if(NOT SW_ASAN AND NOT SW_TSAN)
+  add_test(NAME soak_catches_growth COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/soak.sh
+    ${PROJECT_BINARY_DIR} --duration 8 --frames 10 --test-grow-kb 4096)
+  set_tests_properties(soak_catches_growth PROPERTIES
+    PASS_REGULAR_EXPRESSION "mallocs_after_init 0\n.*soak: FAIL: resident memory grew by"
+    FAIL_REGULAR_EXPRESSION "soak: FAIL: (mallocs|only)|the walk failed")
+endif()

@@ -1,7 +1,10 @@
 /* The arena: bump allocation, alignment, exhaustion, marks, in-place growth,
- * and slabs. */
+ * slabs, and touching the block at start. */
+#define _DEFAULT_SOURCE /* mincore, MAP_ANONYMOUS */
 #include <stdint.h>
 #include <string.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
 #include "sw_arena.h"
 #include "sw_test.h"
@@ -92,6 +95,32 @@ static void test_slab_init_refuses_small_arena(void)
     SW_CHECK(sw_slab_init(&s, &a, 0, 10) == -1);
 }
 
+/* Pages resident in [p, p + pages pages), by mincore. */
+static size_t resident_pages(unsigned char *p, size_t pages, size_t page)
+{
+    unsigned char vec[64];
+    SW_CHECK(pages <= sizeof vec && mincore(p, pages * page, vec) == 0);
+    size_t n = 0;
+    for (size_t i = 0; i < pages; i++)
+        n += vec[i] & 1;
+    return n;
+}
+
+static void test_touch_makes_every_page_resident(void)
+{
+    size_t page = (size_t)sysconf(_SC_PAGESIZE), pages = 64;
+    unsigned char *pages_block = mmap(NULL, pages * page, PROT_READ | PROT_WRITE,
+                                      MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    SW_CHECK(pages_block != MAP_FAILED);
+    sw_arena a;
+    sw_arena_init(&a, pages_block, pages * page);
+    SW_CHECK(resident_pages(pages_block, pages, page) == 0);
+    sw_arena_touch(&a);
+    SW_CHECK(resident_pages(pages_block, pages, page) == pages);
+    SW_CHECK(a.used == 0 && pages_block[pages * page - 1] == 0);
+    munmap(pages_block, pages * page);
+}
+
 int main(void)
 {
     SW_RUN(test_alloc_respects_alignment_and_size);
@@ -100,5 +129,6 @@ int main(void)
     SW_RUN(test_realloc_grows_last_block_in_place);
     SW_RUN(test_slab_takes_and_gives_every_slot);
     SW_RUN(test_slab_init_refuses_small_arena);
+    SW_RUN(test_touch_makes_every_page_resident);
     return sw_test_finish();
 }

@@ -36,7 +36,7 @@ static void example_loads_and_is_the_defaults(void)
     static const char *const keys[] = {
         "display.display", "display.fov_deg", "pack.pack", "pack.store", "pack.keys",
         "pack.boot_attempts", "pack.good_after_s", "render.memory_mb", "render.max_error_px",
-        "budgets.frame_ms", "budgets.workers", "gamepad.enabled",
+        "render.batch_tris", "budgets.frame_ms", "budgets.workers", "gamepad.enabled",
         "gamepad.mapping", "gamepad.dead_zone", "navigation.mode", "navigation.walk_speed_mm_s",
         "navigation.turn_speed_deg_s", "navigation.orbit_speed_deg_s",
         "navigation.attract_timeout_s"};
@@ -170,7 +170,7 @@ typedef struct bad_case {
 
 static const bad_case bad_cases[] = {
     {"[render]\nmemory_mb = 10\nfoo = 1\n",
-     "bad.ini:3: [render] unknown key 'foo' (expected memory_mb, max_error_px)"},
+     "bad.ini:3: [render] unknown key 'foo' (expected memory_mb, max_error_px, batch_tris)"},
     {"[render]\nmemory_mb = 10\n\n[rendr]\n", "bad.ini:4: unknown section [rendr]"},
     {"[render]\n[gamepads]\n", "bad.ini:2: unknown section [gamepads]"},
     {"[render]\nmemory_mb = 12x\n", "bad.ini:2: [render] memory_mb: expected a number, got '12x'"},

@@ -1,0 +1,21 @@
+/* The process heap, held for the GL driver so that resident memory is
+ * taken at start and does not move in a walk (README, "The soak"). Our own
+ * memory is the arena; after start only the driver and libc use the heap
+ * (Mesa's llvmpipe: its binned scenes, 64 kiB blocks, every frame). glibc
+ * only (elsewhere these do nothing). Called by seamwalk's main thread. */
+#ifndef SW_HEAP_H
+#define SW_HEAP_H
+
+#include <stddef.h>
+
+/* Nothing freed is given back to the system from now on, and the heap
+ * grows by at least pad_bytes at a time. Before the GL starts. */
+void sw_heap_keep(size_t pad_bytes);
+
+/* Makes every page of the heap resident now (madvise MADV_POPULATE_WRITE,
+ * Linux 5.14 or later; no allocation). Returns 1 when it did, 0 when it
+ * could not (no [heap] mapping found, or an older kernel). Once the driver
+ * has done a loop's work: its compiles and scenes have sized the heap. */
+int sw_heap_populate(void);
+
+#endif
