@@ -2,6 +2,7 @@
 
 #include <stdatomic.h>
 #include <stddef.h>
+#include <stdlib.h>
 
 static atomic_uint_fast64_t alloc_calls;
 static atomic_uint_fast64_t free_calls;
@@ -9,7 +10,16 @@ static atomic_int wrapped;
 
 uint64_t sw_alloc_count_allocs(void) { return atomic_load(&alloc_calls); }
 uint64_t sw_alloc_count_frees(void) { return atomic_load(&free_calls); }
-int sw_alloc_count_active(void) { return atomic_load(&wrapped); }
+/* free(NULL) does nothing, but in a wrapped binary it passes through
+ * __wrap_free, which marks the wrappers present: the count is active
+ * whether or not our code has allocated anything by then (since the arena
+ * became a mapping of its own, it may not have). */
+int sw_alloc_count_active(void)
+{
+    void *volatile none = NULL;   /* volatile: the compiler drops a plain free(NULL) */
+    free(none);
+    return atomic_load(&wrapped);
+}
 
 /* Declarations for the linker's --wrap: __real_X is the original X. These are
  * defined only in binaries linked with the wrap options (see
