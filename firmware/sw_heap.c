@@ -74,5 +74,10 @@ int sw_heap_populate(void)
     uintptr_t lo, hi;
     if (!heap_range(&lo, &hi))
         return 0;
-    return madvise((void *)lo, hi - lo, MADV_POPULATE_WRITE) == 0;
+    return sw_heap_populate_block((void *)lo, hi - lo);
+}
+
+int sw_heap_populate_block(void *block, size_t bytes)
+{
+    return block && madvise(block, bytes, MADV_POPULATE_WRITE) == 0;
 }

@@ -18,4 +18,8 @@ void sw_heap_keep(size_t pad_bytes);
  * has done a loop's work: its compiles and scenes have sized the heap. */
 int sw_heap_populate(void);
 
+/* The same for a block of ours (the arena's mapping): every page resident,
+ * contents unchanged, safe while other threads use it. 1 when done. */
+int sw_heap_populate_block(void *block, size_t bytes);
+
 #endif

@@ -121,7 +121,8 @@ typedef struct sw_stats {
      * at the end, and the process's peak. */
     int64_t rss_start_kb, rss_first_loop_kb, rss_end_kb, rss_peak_kb;
     int64_t rss_loop_kb[SW_STATS_RSS_LOOPS]; /* at the end of each of the first loops */
-    int heap_resident;           /* the heap made resident after the first loop (sw_heap.h) */
+    int heap_resident;           /* the heap and the arena made resident after the first loop
+                                    (sw_heap.h) */
     uint64_t batch_waits;        /* mid-frame waits for the GL driver (--batch-tris) */
 
     double pack_open_ms, first_frame_ms, walk_s;
