@@ -12,7 +12,6 @@
  * thread is the GL thread P; with workers, the walk's visibility side V
  * runs on its own thread one frame ahead (sw_seam_visibility.h), and P
  * draws the plans V hands it. */
-#define _DEFAULT_SOURCE /* madvise, MADV_HUGEPAGE */
 #include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
@@ -21,7 +20,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -108,30 +106,6 @@ static sw_status file_size(const char *path, size_t *size, sw_error *err)
     return SW_OK;
 }
 
-/* The arena's block (and the workers'), a mapping of its own marked for
- * transparent huge pages: the start writes a few hundred MiB into it once
- * (the pack, the walk's per-vertex state), and in 4 KiB pages each first
- * touch was a page fault, a quarter of the showroom's start. Where the
- * kernel offers no huge pages the advice is ignored. Not from malloc: the
- * heap is the GL driver's (sw_heap.h). (A 256 MiB huge-page reserve at
- * the heap's start made the GL's start 316 -> 15 ms, but the soak's
- * sw_heap_populate would make all of it resident: left out.) */
-#define SW_HUGE_PAGE (2u << 20)
-static void *take_block(size_t bytes)
-{
-    void *p = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (p == MAP_FAILED)
-        return NULL;
-    madvise(p, bytes, MADV_HUGEPAGE);
-    return p;
-}
-
-static void give_block(void *block, size_t bytes)
-{
-    if (block)
-        munmap(block, bytes);
-}
-
 /* Border edges the drawn-seam check holds in a frame. */
 #define SW_DRAWN_EDGES (1u << 18)
 
@@ -215,7 +189,7 @@ static sw_status start_frames(runtime *rt, sw_error *err)
                             "--memory-mb %.1f", rt->workers,
                             (rt->arena.size + need) / 1048576.0, rt->arena.size / 1048576.0,
                             need / 1048576.0, rt->opt.memory_mb);
-    if (!(rt->frame_block = take_block(need)))
+    if (!(rt->frame_block = sw_heap_take_block(need)))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the frames", need);
     sw_arena_init(&rt->frame_arena, rt->frame_block, need);
     sw_arena_touch(&rt->frame_arena);   /* resident from the start, as the arena */
@@ -301,7 +275,7 @@ static sw_status size_arena(runtime *rt, size_t *path_bytes, sw_error *err)
         return sw_error_set(err, SW_ERR_NO_MEMORY,
                             "needs %.1f MiB of memory (%zu bytes), more than --memory-mb %.1f",
                             need / (1024.0 * 1024.0), need, rt->opt.memory_mb);
-    rt->block = take_block(need);
+    rt->block = sw_heap_take_block(need);
     if (!rt->block)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the arena", need);
     sw_arena_init(&rt->arena, rt->block, need);
@@ -676,7 +650,7 @@ static sw_status start_message(runtime *rt, sw_error *err)
     rt->png_scratch = rt->opt.png_dir ? sw_png_scratch_bytes(rt->opt.width, rt->opt.height, 3) : 0;
     size_t need = sw_stats_arena_bytes(rt->opt.frames) + sw_arena_worst_case(pixels, 64) +
                   rt->png_scratch + 4096;
-    if (!(rt->block = take_block(need)))
+    if (!(rt->block = sw_heap_take_block(need)))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes", need);
     sw_arena_init(&rt->arena, rt->block, need);
     sw_status st = sw_stats_init(&rt->stats, &rt->arena, rt->opt.frames, rt->opt.max_error_px, err);
@@ -790,7 +764,7 @@ static void stop_walk(runtime *rt)
         sw_seam_visibility_stop(&rt->vis);
     rt->vis_up = 0;
     sw_seam_walk_stop_workers(&rt->seam);
-    give_block(rt->frame_block, rt->frame_arena.size);
+    sw_heap_give_block(rt->frame_block, rt->frame_arena.size);
     rt->frame_block = NULL;
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
@@ -798,7 +772,7 @@ static void stop_walk(runtime *rt)
         sw_renderer_destroy(&rt->renderer);
     rt->pool_up = rt->renderer_up = 0;
     sw_grow_hook_destroy(&rt->grow);
-    give_block(rt->block, rt->arena.size);
+    sw_heap_give_block(rt->block, rt->arena.size);
     rt->block = NULL;
 }
 

@@ -81,3 +81,18 @@ int sw_heap_populate_block(void *block, size_t bytes)
 {
     return block && madvise(block, bytes, MADV_POPULATE_WRITE) == 0;
 }
+
+void *sw_heap_take_block(size_t bytes)
+{
+    void *p = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED)
+        return NULL;
+    madvise(p, bytes, MADV_HUGEPAGE);   /* ignored where the kernel offers none */
+    return p;
+}
+
+void sw_heap_give_block(void *block, size_t bytes)
+{
+    if (block)
+        munmap(block, bytes);
+}

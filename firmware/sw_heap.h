@@ -22,4 +22,12 @@ int sw_heap_populate(void);
  * contents unchanged, safe while other threads use it. 1 when done. */
 int sw_heap_populate_block(void *block, size_t bytes);
 
+/* A block of bytes for an arena, a mapping of its own marked for
+ * transparent huge pages: the start writes a few hundred MiB into the
+ * arena once, and in 4 KiB pages each first touch was a page fault, a
+ * quarter of the showroom's start. Not from malloc: the heap is the GL
+ * driver's. NULL when it cannot be had; give it back with its size. */
+void *sw_heap_take_block(size_t bytes);
+void sw_heap_give_block(void *block, size_t bytes);
+
 #endif
