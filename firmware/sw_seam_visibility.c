@@ -64,13 +64,14 @@ static void *visibility_main(void *arg)
 }
 
 sw_status sw_seam_visibility_start(sw_seam_visibility *v, sw_seam_walk *walk, int threaded,
-                                   int sync, sw_arena *arena, sw_error *err)
+                                   int sync, pthread_t gl_thread, sw_arena *arena,
+                                   sw_error *err)
 {
     memset(v, 0, sizeof *v);
     v->walk = walk;
     v->threaded = threaded;
     v->sync = sync;
-    v->gl_thread = pthread_self();
+    v->gl_thread = gl_thread;
     sw_status st = sw_seam_walk_init_frames(walk, v->plans, arena, err);
     if (st != SW_OK || !threaded)
         return st;

@@ -46,7 +46,7 @@ typedef struct sw_seam_visibility {
     uint32_t learned;             /* V's: drawn frames the controller has learned */
     _Atomic uint32_t done;        /* frames P has finished (release after drawn_ms) */
     int threaded, sync;
-    pthread_t thread, gl_thread;  /* V's, and P's (the one that started it) */
+    pthread_t thread, gl_thread;  /* V's, and P's (given at start) */
     sem_t view_ready, plan_ready, frame_done;
     int sems_up, thread_up;
     _Atomic int stop;
@@ -57,10 +57,12 @@ typedef struct sw_seam_visibility {
 
 /* Sets up the plans from arena (sw_seam_walk_init_frames: counted in
  * sw_seam_walk_frame_bytes) and, with
- * threaded, starts V. sync: the walk's sync_work. SW_ERR_IO when the
- * thread or its semaphores cannot be made. */
+ * threaded, starts V. sync: the walk's sync_work. gl_thread: P, which
+ * need not be the caller (seamwalk starts the walk on a loader thread).
+ * SW_ERR_IO when the thread or its semaphores cannot be made. */
 sw_status sw_seam_visibility_start(sw_seam_visibility *v, sw_seam_walk *walk, int threaded,
-                                   int sync, sw_arena *arena, sw_error *err);
+                                   int sync, pthread_t gl_thread, sw_arena *arena,
+                                   sw_error *err);
 
 /* P: the view of the next frame to plan (views are planned in order). */
 void sw_seam_visibility_post(sw_seam_visibility *v, const sw_view *view);

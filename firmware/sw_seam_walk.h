@@ -226,6 +226,7 @@ typedef struct sw_seam_frame {
     double budget_used;           /* triangles scheduled over N + M */
     uint32_t seam_ops;            /* the seam update's splits and collapses */
     double updated_tris;          /* of the jobs, those whose loops moved (M's share) */
+    double updated_cap;           /* M, when the batch opened under it (0: no budget) */
     /* The hand-over (sw_seam_visibility.h): */
     double visibility_ms;         /* V's half of the frame: select, schedule, swap, plan */
     double plan_wait_ms;          /* P waiting for the plan (0 without a visibility thread) */

@@ -231,6 +231,7 @@ static sw_status open_batch(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err
     w->budget.updated_used = must_tris;
     frame->jobs_scheduled = w->batch_count;
     frame->updated_tris = must_tris;
+    frame->updated_cap = w->sync_work || w->frame == 0 ? 0 : w->budget.updated_tris;
     frame->budget_tris = w->budget.new_tris + w->budget.updated_tris;
     frame->budget_used = (must_tris + new_tris) / frame->budget_tris;
     return st;

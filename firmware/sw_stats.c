@@ -1,5 +1,6 @@
 #include "sw_stats.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -42,7 +43,7 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
     s->process_mallocs_after_init = -1;
     s->rss_start_kb = s->rss_first_loop_kb = s->rss_end_kb = s->rss_peak_kb = -1;
     s->start_display_ms = s->start_prepare_ms = s->start_walk_init_ms = -1;
-    s->start_workers_ms = s->start_gl_ms = s->start_frame_ms = -1;
+    s->start_workers_ms = s->start_gl_ms = s->start_frame_ms = s->start_load_wait_ms = -1;
     return SW_OK;
 }
 
@@ -288,6 +289,17 @@ void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
     }
 }
 
+void sw_stats_add_update_cap(sw_stats *s, double used, double cap)
+{
+    if (cap <= 0)
+        return;
+    s->updated_capped_frames++;
+    if (used > cap) {
+        s->updated_over_frames++;
+        s->updated_over_max = fmax(s->updated_over_max, used / cap);
+    }
+}
+
 /* The hand-over between V and P (sw_seam_visibility.h), per kept frame. */
 static sw_status write_visibility(FILE *f, const sw_stats *s, sw_arena *scratch)
 {
@@ -316,13 +328,16 @@ static void write_threads(FILE *f, const sw_stats *s)
                "\"frames_behind_max\": %u, \"behind_ratio_max\": %.3f, \"jobs\": %llu, "
                "\"prefetch_jobs\": %llu, \"batches\": %llu, \"seam_ops\": %llu, \"budget_used_mean\": %.3f, "
                "\"budget_used_max\": %.3f, \"budget_tris_last\": %.0f, "
-               "\"worker_triangles\": %llu, \"worker_busy_ms\": %.1f, \"steals\": %llu},\n",
+               "\"worker_triangles\": %llu, \"worker_busy_ms\": %.1f, \"steals\": %llu, "
+               "\"updated\": {\"capped_batches\": %llu, \"over_cap_batches\": %llu, "
+               "\"over_cap_ratio_max\": %.3f}},\n",
             s->workers, s->sync_work, s->target_ms, s->waiting_max, s->behind_max,
             s->frames_behind_max, s->behind_ratio_max, (unsigned long long)s->jobs_total,
             (unsigned long long)s->prefetch_total, (unsigned long long)s->batches_total, (unsigned long long)s->seam_ops_total,
             s->budget_frames ? s->budget_used_sum / s->budget_frames : 0.0, s->budget_used_max,
             s->budget_tris_last, (unsigned long long)s->worker_triangles, s->worker_busy_ms,
-            (unsigned long long)s->worker_steals);
+            (unsigned long long)s->worker_steals, (unsigned long long)s->updated_capped_frames,
+            (unsigned long long)s->updated_over_frames, s->updated_over_max);
 }
 
 /* The kept frame times oldest first (the ring unrolled), for plots along
@@ -426,9 +441,10 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
     fprintf(f, "  \"pack_open_ms\": %.3f,\n  \"first_frame_ms\": %.3f,\n", s->pack_open_ms,
             s->first_frame_ms);
     fprintf(f, "  \"start_ms\": {\"display\": %.3f, \"pack_open\": %.3f, \"prepare\": %.3f, "
-               "\"walk_init\": %.3f, \"workers\": %.3f, \"gl\": %.3f, \"first_frame\": %.3f},\n",
+               "\"walk_init\": %.3f, \"workers\": %.3f, \"gl\": %.3f, \"first_frame\": %.3f, "
+               "\"load_wait\": %.3f},\n",
             s->start_display_ms, s->pack_open_ms, s->start_prepare_ms, s->start_walk_init_ms,
-            s->start_workers_ms, s->start_gl_ms, s->start_frame_ms);
+            s->start_workers_ms, s->start_gl_ms, s->start_frame_ms, s->start_load_wait_ms);
     fprintf(f, "  \"walk_s\": %.3f,\n  \"viewport\": [%d, %d]\n}\n", s->walk_s, s->width,
             s->height);
     sw_arena_reset_to(scratch, mark);

@@ -95,6 +95,9 @@ typedef struct sw_stats {
     double behind_ratio_max;     /* the most a drawn mesh's bound exceeded the view's */
     uint64_t jobs_total, batches_total, seam_ops_total;
     double budget_used_sum, budget_used_max; /* scheduled over N + M, frames that scheduled */
+    uint64_t updated_capped_frames;  /* batches opened under M (sw_stats_add_update_cap) */
+    uint64_t updated_over_frames;    /* of them, the ones whose update spent more than M */
+    double updated_over_max;         /* the most spent over M, as a multiple of M */
     int budget_frames;
     double budget_tris_last;     /* N + M at the end */
     uint64_t worker_triangles, worker_steals;
@@ -130,10 +133,14 @@ typedef struct sw_stats {
      * the display, the pack (read, checksums, validation: pack_open_ms), the
      * rest of the start before the walk (camera path, statistics), the
      * walk's init (selection, culling tree, cache), the workers' start, the
-     * GL's (renderer, buffer pool), and the first frame itself, less its
-     * measurement; -1 a step that did not run. */
+     * GL's (renderer and its shaders' first draw, buffer pool), and the
+     * first frame itself, less its measurement; -1 a step that did not run.
+     * The pack's steps (pack_open to workers) run on a loader thread while
+     * the GL thread opens the display and starts the renderer, so the
+     * steps overlap: load_wait is how long the GL thread then waited for
+     * the loader (seamwalk_start.c). */
     double start_display_ms, start_prepare_ms, start_walk_init_ms, start_workers_ms,
-        start_gl_ms, start_frame_ms;
+        start_gl_ms, start_frame_ms, start_load_wait_ms;
     uint64_t arena_bytes, arena_peak_bytes;  /* the one arena: every byte the walk uses */
     uint64_t runtime_bytes;      /* of it, the pack header's (pack, patch state, walk) */
     int64_t mallocs_after_init;  /* -1 when the binary could not count */
@@ -154,6 +161,9 @@ void sw_stats_add_error_px(sw_stats *s, double error_px);
 void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z);
 /* The threaded walk's frame: waiting and behind surfaces, frames behind,
  * the bound ratio, jobs and whether a batch was swapped in, the budget. */
+/* A batch opened under M (cap > 0) that spent used updated triangles. */
+void sw_stats_add_update_cap(sw_stats *s, double used, double cap);
+
 void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
                                 uint32_t frames_behind, double behind_ratio, uint32_t jobs,
                                 uint32_t prefetch, uint32_t batches, uint32_t seam_ops,

@@ -57,6 +57,14 @@ void sw_renderer_set_fill(sw_renderer *r, int fill);
 void sw_renderer_draw(sw_renderer *r, const sw_vertex *verts, uint32_t vertex_count,
                       const uint16_t *indices, uint32_t index_count);
 
+/* Draws one small triangle the way frames draw (the state begin_frame
+ * sets, the same vertex layout) into a cleared width x height frame and
+ * waits for it: llvmpipe compiles a shader's machine code at its first
+ * draw (LLVM, tens of ms), which would otherwise fall into the first frame.
+ * The start calls it while the pack is still loading. The next
+ * begin_frame clears what it drew. */
+void sw_renderer_warm_up(sw_renderer *r, int width, int height);
+
 /* Waits for the GL to finish (glFinish), so frame times include the rendering. */
 void sw_renderer_finish(sw_renderer *r);
 
