@@ -4,7 +4,10 @@ if(SW_ASAN AND SW_TSAN)
   message(FATAL_ERROR "SW_ASAN and SW_TSAN cannot be combined")
 endif()
 if(SW_ASAN)
-  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  # -O1, as the sanitizers' own documentation advises: the suite under
+  # ASan+UBSan ran about twice as long at -O0, for the same reports (the
+  # build type stays Debug, so asserts stay on).
+  add_compile_options(-O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   add_link_options(-fsanitize=address,undefined)
 endif()
 if(SW_TSAN)
