@@ -251,11 +251,13 @@ static sw_status walk(sw_program *rt, sw_error *err)
         if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops <= SW_STATS_RSS_LOOPS) {
             sw_grow_hook_step(&rt->grow);
             /* The driver's heap is sized by now: resident from here on, and
-             * the arena with it (no allocation; without it, a kernel before
-             * 5.14, the soak shows the creep it prevents). */
+             * the arena and the frames' block with it (no allocation;
+             * without it, a kernel before 5.14, the soak shows the creep it
+             * prevents). */
             if (s->loops == 1)
-                s->heap_resident = sw_heap_populate() &&
-                                   sw_heap_populate_block(rt->block, rt->arena.size);
+                s->heap_resident =
+                    sw_heap_populate() && sw_heap_populate_block(rt->block, rt->arena.size) &&
+                    sw_heap_populate_block(rt->frame_block, rt->frame_arena.size);
             s->rss_loop_kb[s->loops - 1] = rss_now_kb(s);
             if (s->loops == 1)
                 s->rss_first_loop_kb = s->rss_loop_kb[0];

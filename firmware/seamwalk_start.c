@@ -140,8 +140,10 @@ static sw_status start_frames(sw_program *rt, sw_error *err)
                             need / 1048576.0, rt->opt.memory_mb);
     if (!(rt->frame_block = sw_heap_take_block(need)))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the frames", need);
+    /* Not written at start (the kernel zeroes each page as it is first
+     * touched: tens of MB on the showroom); made resident with the arena
+     * after the first loop (seamwalk_main.c). */
     sw_arena_init(&rt->frame_arena, rt->frame_block, need);
-    sw_arena_touch(&rt->frame_arena);   /* resident from the start, as the arena */
     rt->seam.sync_work = rt->opt.sync_work;
     sw_status st = SW_OK;
     if (rt->workers > 0) {
