@@ -321,7 +321,8 @@ static sw_status write_stats(sw_program *rt, sw_error *err)
         store_stats(rt);
     s->patches_total = rt->pack.meta ? rt->pack.meta->patch_count : 0;
     s->measure_every = rt->opt.measure_every;
-    s->arena_bytes = rt->arena.size + rt->frame_arena.size + rt->readback_arena.size;
+    s->arena_bytes = rt->arena.size + rt->frame_arena.size + rt->readback_arena.size +
+                     (rt->staging_block ? sw_gl_pool_merge_bytes() : 0);
     s->arena_peak_bytes = rt->arena.peak + rt->frame_arena.peak + rt->readback_arena.peak;
     if (rt->seam.workers) {
         sw_seam_workers *p = rt->seam.workers;

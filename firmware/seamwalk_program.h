@@ -42,6 +42,7 @@ typedef struct sw_program {
     void *readback_block;     /* with --png-dir: the read-back and the PNG writer's
                                  scratch, sized once the display has its size */
     sw_arena readback_arena;
+    void *staging_block;      /* the GL pool's merged draws' staging (sw_gl_pool_merge_bytes) */
     sw_seam_visibility vis;   /* V, the walk's visibility side (sw_seam_visibility.h) */
     int vis_up;
     size_t walk_bytes;        /* of the arena, what the seam walk took */

@@ -347,6 +347,8 @@ static sw_status start_gl(sw_program *rt, sw_error *err)
         st = sw_gl_pool_init(&rt->pool, rt->pool_vertices, rt->pool_indices,
                              (uint32_t)rt->opt.batch_tris, err);
         rt->pool_up = st == SW_OK;
+        if (rt->pool_up && (rt->staging_block = sw_heap_take_block(sw_gl_pool_merge_bytes())))
+            sw_gl_pool_merge_start(&rt->pool, rt->staging_block);   /* else a draw a mesh */
     }
     rt->gl_ms += lap_ms(&rt->mark_s);
     return st;
@@ -363,7 +365,8 @@ static sw_status take_readback(sw_program *rt, int always, sw_error *err)
     size_t scratch = rt->opt.png_dir ? sw_png_scratch_bytes(rt->opt.width, rt->opt.height, 3)
                                      : 0;
     size_t need = sw_arena_worst_case(pixels, 64) + scratch + 4096;
-    size_t total = rt->arena.size + rt->frame_arena.size + need;
+    size_t total = rt->arena.size + rt->frame_arena.size + need +
+                   (rt->staging_block ? sw_gl_pool_merge_bytes() : 0);
     if ((double)total > rt->opt.memory_mb * 1024.0 * 1024.0)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "with the %dx%d read-back needs %.1f MiB of "
                             "memory, more than --memory-mb %.1f", rt->opt.width,
@@ -522,6 +525,8 @@ void sw_program_stop(sw_program *rt)
     rt->readback_block = NULL;
     if (rt->pool_up)
         sw_gl_pool_destroy(&rt->pool);
+    sw_heap_give_block(rt->staging_block, sw_gl_pool_merge_bytes());
+    rt->staging_block = NULL;
     if (rt->renderer_up)
         sw_renderer_destroy(&rt->renderer);
     rt->pool_up = rt->renderer_up = 0;

@@ -156,20 +156,19 @@ static void measure_item(sw_seam_walk *w, const sw_seam_draw_item *it, const sw_
         sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
 }
 
+/* Queued, not drawn: the pool merges consecutive meshes of one colour
+ * into one draw call where the GL allows (sw_gl_pool_queue), their fans
+ * after all the meshes. */
 static void draw_item(const sw_seam_walk *w, const sw_seam_draw_item *it, sw_renderer *r,
-                      sw_gl_pool *pool, uint32_t *part)
+                      sw_gl_pool *pool)
 {
-    if (it->part != *part) {
-        *part = it->part;
-        sw_renderer_set_color(r, w->pack->parts[*part].color);
-    }
+    const float *rgba = w->pack->parts[it->part].color;
+    const uint16_t *idx = w->cache.index_data + it->first_index;
     uint32_t v0 = it->first_vertex, i0 = it->first_index, fill = it->fill_indices;
-    sw_gl_pool_draw(pool, r, v0, i0, it->index_count - fill);
-    if (fill) { /* the fans after the mesh, lit as the surface (sw_renderer_set_fill) */
-        sw_renderer_set_fill(r, 1);
-        sw_gl_pool_draw(pool, r, v0, i0 + it->index_count - fill, fill);
-        sw_renderer_set_fill(r, 0);
-    }
+    uint32_t mesh = it->index_count - fill;
+    sw_gl_pool_queue(pool, r, SW_GL_POOL_MESHES, rgba, v0, i0, idx, mesh);
+    if (fill) /* the fans, lit as the surface (sw_renderer_set_fill) */
+        sw_gl_pool_queue(pool, r, SW_GL_POOL_FANS, rgba, v0, i0 + mesh, idx + mesh, fill);
 }
 
 void sw_seam_walk_draw_plan(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool,
@@ -188,13 +187,12 @@ void sw_seam_walk_draw_plan(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool,
     }
     frame->upload_bytes += pool->bytes_uploaded - before;
     frame->failed_surfaces += plan->overflow;
-    uint32_t part = UINT32_MAX;
     sw_seam_error acc = { 0, 0, 0 }, behind = { 0, 0, 0 };
     if (stats)
         stats->measured_frames++;
     for (uint32_t k = 0; k < plan->draw_count; k++) {
         const sw_seam_draw_item *it = &plan->draws[k];
-        draw_item(w, it, r, pool, &part);
+        draw_item(w, it, r, pool);
         if (!stats)
             continue;
         struct timespec t0;
@@ -204,6 +202,7 @@ void sw_seam_walk_draw_plan(sw_seam_walk *w, sw_renderer *r, sw_gl_pool *pool,
         stats->route_behind = 0;
         frame->measure_ms += sw_seam_walk_ms_since(&t0);
     }
+    sw_gl_pool_flush(pool, r);
     frame->error_beyond_sewing_px = acc.beyond_sewing_px;
     frame->error_behind_beyond_sewing_px = behind.beyond_sewing_px;
     frame->sewing_offset_px = fmax(acc.sewing_offset_px, behind.sewing_offset_px);

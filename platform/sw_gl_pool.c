@@ -2,6 +2,17 @@
 
 #include <GLES2/gl2.h>
 #include <stddef.h>
+#include <string.h>
+
+/* Zeros written over a buffer's whole store, a block at a time. */
+static void write_zeros(GLenum target, size_t bytes)
+{
+    static const unsigned char zeros[1 << 16];
+    for (size_t at = 0; at < bytes; at += sizeof zeros) {
+        size_t n = bytes - at < sizeof zeros ? bytes - at : sizeof zeros;
+        glBufferSubData(target, (GLintptr)at, (GLsizeiptr)n, zeros);
+    }
+}
 
 sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices,
                           uint32_t batch_triangles, sw_error *err)
@@ -17,13 +28,15 @@ sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices,
                  GL_DYNAMIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p->index_buffer);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)indices * 2, NULL, GL_DYNAMIC_DRAW);
-    /* Not written over here: llvmpipe zeroes a buffer's store when it is
-     * made, so its pages are resident from now on (the 40,000-patch
-     * showroom's resident memory at the walk's start was 398.9 MB with
-     * zeros written over the 112 MB and without; writing them cost the
-     * start a copy of it). A driver that takes its pages lazily would
-     * show it in the soak's check (tests/soak.sh). */
     GLenum code = glGetError();
+    /* Written once now: a driver that keeps the store in host memory
+     * (llvmpipe) takes its pages as they are first written, which would
+     * otherwise be whenever the cache first reaches them, loops into a soak. */
+    if (code == GL_NO_ERROR) {
+        write_zeros(GL_ARRAY_BUFFER, (size_t)vertices * sizeof(sw_vertex));
+        write_zeros(GL_ELEMENT_ARRAY_BUFFER, (size_t)indices * 2);
+        code = glGetError();
+    }
     if (code != GL_NO_ERROR) {
         sw_gl_pool_destroy(p);
         return sw_error_set(err, SW_ERR_GL, "GL pool: buffers for %u vertices and %u indices "
@@ -37,6 +50,10 @@ sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices,
 
 void sw_gl_pool_destroy(sw_gl_pool *p)
 {
+    if (p->stream_buffer)
+        glDeleteBuffers(1, &p->stream_buffer);
+    p->stream_buffer = 0;
+    p->merge = 0;
     glDeleteBuffers(1, &p->vertex_buffer);
     glDeleteBuffers(1, &p->index_buffer);
     p->vertex_buffer = p->index_buffer = 0;
@@ -82,6 +99,117 @@ void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
         p->unfinished_triangles = 0;
         p->waits++;
     }
+}
+
+size_t sw_gl_pool_merge_bytes(void)
+{
+    return 2u * ((size_t)SW_GL_POOL_MERGE_INDICES * sizeof(uint32_t) +
+                 (size_t)SW_GL_POOL_MERGE_RUNS * sizeof(sw_gl_run));
+}
+
+int sw_gl_pool_merge_start(sw_gl_pool *p, void *staging)
+{
+    const char *ext = (const char *)glGetString(GL_EXTENSIONS);
+    if (!staging || !ext || !strstr(ext, "GL_OES_element_index_uint"))
+        return 0;
+    glGenBuffers(1, &p->stream_buffer);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p->stream_buffer);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(2u * SW_GL_POOL_MERGE_INDICES * 4), NULL,
+                 GL_STREAM_DRAW);
+    write_zeros(GL_ELEMENT_ARRAY_BUFFER, 2u * SW_GL_POOL_MERGE_INDICES * 4);  /* as the pool */
+    if (glGetError() != GL_NO_ERROR) {
+        glDeleteBuffers(1, &p->stream_buffer);
+        p->stream_buffer = 0;
+        return 0;
+    }
+    sw_gl_run *runs = staging;
+    uint32_t *indices = (uint32_t *)(runs + 2u * SW_GL_POOL_MERGE_RUNS);
+    for (int q = 0; q < 2; q++)
+        p->queues[q] = (sw_gl_queue){ indices + (size_t)q * SW_GL_POOL_MERGE_INDICES,
+                                      runs + (size_t)q * SW_GL_POOL_MERGE_RUNS, 0, 0 };
+    p->merge = 1;
+    return 1;
+}
+
+/* A region's runs, one draw call each, from where its indices lie in the
+ * stream buffer. */
+static void draw_runs(sw_gl_pool *p, sw_renderer *r, sw_gl_queue *q, size_t at)
+{
+    for (uint32_t k = 0; k < q->run_count; k++) {
+        const sw_gl_run *run = &q->runs[k];
+        sw_renderer_set_color(r, run->rgba);
+        glDrawElements(GL_TRIANGLES, (GLsizei)run->count, GL_UNSIGNED_INT,
+                       (const void *)(at + (size_t)run->first * 4));
+        p->draw_calls++;
+        p->triangles += run->count / 3;
+        p->unfinished_triangles += run->count / 3;
+        if (p->batch_triangles && p->unfinished_triangles >= p->batch_triangles) {
+            glFinish();
+            p->unfinished_triangles = 0;
+            p->waits++;
+        }
+    }
+    q->count = q->run_count = 0;
+}
+
+void sw_gl_pool_flush(sw_gl_pool *p, sw_renderer *r)
+{
+    sw_gl_queue *meshes = &p->queues[SW_GL_POOL_MESHES], *fans = &p->queues[SW_GL_POOL_FANS];
+    if (!p->merge || (meshes->run_count == 0 && fans->run_count == 0))
+        return;
+    /* Both regions in one buffer (the fans' after the meshes'), written
+     * before any draw reads it: no draw of this flush is in flight. */
+    size_t fans_at = (size_t)meshes->count * 4;
+    glBindBuffer(GL_ARRAY_BUFFER, p->vertex_buffer);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p->stream_buffer);
+    glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, (GLsizeiptr)fans_at, meshes->indices);
+    glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, (GLintptr)fans_at, (GLsizeiptr)fans->count * 4,
+                    fans->indices);
+    glVertexAttribPointer((GLuint)r->a_position, 3, GL_FLOAT, GL_FALSE, sizeof(sw_vertex),
+                          (const void *)offsetof(sw_vertex, pos));
+    glVertexAttribPointer((GLuint)r->a_normal, 3, GL_BYTE, GL_TRUE, sizeof(sw_vertex),
+                          (const void *)offsetof(sw_vertex, normal));
+    glEnableVertexAttribArray((GLuint)r->a_position);
+    glEnableVertexAttribArray((GLuint)r->a_normal);
+    draw_runs(p, r, meshes, 0);
+    if (fans->run_count) {
+        sw_renderer_set_fill(r, 1);
+        draw_runs(p, r, fans, fans_at);
+        sw_renderer_set_fill(r, 0);
+    }
+}
+
+void sw_gl_pool_queue(sw_gl_pool *p, sw_renderer *r, int queue, const float rgba[4],
+                      uint32_t first_vertex, uint32_t first_index, const uint16_t *indices,
+                      uint32_t index_count)
+{
+    index_count -= index_count % 3;
+    if (index_count == 0)
+        return;
+    if (!p->merge || index_count > SW_GL_POOL_MERGE_INDICES) {  /* one draw, at once */
+        sw_gl_pool_flush(p, r);
+        sw_renderer_set_color(r, rgba);
+        if (queue == SW_GL_POOL_FANS)
+            sw_renderer_set_fill(r, 1);
+        sw_gl_pool_draw(p, r, first_vertex, first_index, index_count);
+        if (queue == SW_GL_POOL_FANS)
+            sw_renderer_set_fill(r, 0);
+        return;
+    }
+    sw_gl_queue *q = &p->queues[queue];
+    int same = q->run_count > 0 && q->runs[q->run_count - 1].rgba == rgba;
+    if (q->count + index_count > SW_GL_POOL_MERGE_INDICES ||
+        (!same && q->run_count == SW_GL_POOL_MERGE_RUNS)) {
+        sw_gl_pool_flush(p, r);
+        same = 0;
+    }
+    if (!same)
+        q->runs[q->run_count++] = (sw_gl_run){ rgba, q->count, 0 };
+    uint32_t *out = q->indices + q->count;
+    for (uint32_t i = 0; i < index_count; i++)
+        out[i] = first_vertex + indices[i];
+    q->count += index_count;
+    q->runs[q->run_count - 1].count += index_count;
 }
 
 void sw_gl_pool_finish(sw_gl_pool *p)

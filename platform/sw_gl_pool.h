@@ -9,6 +9,7 @@
 #ifndef SW_GL_POOL_H
 #define SW_GL_POOL_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "sw_error.h"
@@ -33,8 +34,31 @@
  * over the triangles of that frame (258 MiB, about 430,000 triangles). */
 #define SW_GL_POOL_SCENE_BYTES_PER_TRIANGLE 600
 
+/* Merged draws (sw_gl_pool_queue): indices and runs a region holds
+ * before what is queued is drawn; two regions, the meshes' and the fans'. */
+#define SW_GL_POOL_MERGE_INDICES (1u << 20)
+#define SW_GL_POOL_MERGE_RUNS (1u << 15)
+
+enum { SW_GL_POOL_MESHES = 0, SW_GL_POOL_FANS = 1 };
+
+/* A run of queued indices drawn with one call, in one colour. */
+typedef struct sw_gl_run {
+    const float *rgba;
+    uint32_t first, count;
+} sw_gl_run;
+
+/* One region of merged draws: absolute 32-bit indices, staged, and runs. */
+typedef struct sw_gl_queue {
+    uint32_t *indices;
+    sw_gl_run *runs;
+    uint32_t count, run_count;
+} sw_gl_queue;
+
 typedef struct sw_gl_pool {
     unsigned int vertex_buffer, index_buffer;
+    unsigned int stream_buffer;      /* merged draws' indices: both regions, once a flush */
+    int merge;                       /* 32-bit indices offered (GL_OES_element_index_uint) */
+    sw_gl_queue queues[2];           /* SW_GL_POOL_MESHES, SW_GL_POOL_FANS */
     uint32_t vertices, indices;      /* capacities */
     uint32_t batch_triangles;        /* waits for the driver past these; 0 never */
     uint32_t unfinished_triangles;   /* drawn since the last wait */
@@ -62,6 +86,39 @@ int sw_gl_pool_upload(sw_gl_pool *p, uint32_t first_vertex, const sw_vertex *ver
  * the last wait. */
 void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
                      uint32_t first_index, uint32_t index_count);
+
+/* Merged draws. In GLES2 a mesh's draw has to point the attributes at
+ * its first vertex (16-bit indices local to the mesh, no base-vertex
+ * draw), so a frame was one draw call a surface: 13,000 a frame on the
+ * 40,000-patch showroom. Where the GL offers 32-bit indices the meshes are
+ * queued instead, their indices copied with their first vertex added;
+ * sw_gl_pool_flush then writes the queued indices to one stream buffer
+ * with one call and draws each run (consecutive meshes of one colour) with
+ * one call from the pool's vertex buffer at offset 0. The stream buffer is
+ * made once, its size fixed: orphaning a buffer a draw made the driver
+ * take (and the kernel zero) fresh memory for each. Bytes of staging the
+ * caller gives sw_gl_pool_merge_start: */
+size_t sw_gl_pool_merge_bytes(void);
+
+/* Turns merging on when the GL offers GL_OES_element_index_uint: staging
+ * (sw_gl_pool_merge_bytes, 8-aligned) is the caller's and must outlive
+ * the pool. Returns 1 when merging is on, 0 when draws stay one a mesh. */
+int sw_gl_pool_merge_start(sw_gl_pool *p, void *staging);
+
+/* Queues index_count of a mesh's indices (local to the mesh, as the cache
+ * keeps them) into queue (SW_GL_POOL_MESHES or SW_GL_POOL_FANS), to be
+ * drawn in rgba (kept by pointer until the flush), flushing first when a
+ * region is full. Without merging, draws them at once (sw_gl_pool_draw;
+ * the fans with r's fill state). */
+void sw_gl_pool_queue(sw_gl_pool *p, sw_renderer *r, int queue, const float rgba[4],
+                      uint32_t first_vertex, uint32_t first_index, const uint16_t *indices,
+                      uint32_t index_count);
+
+/* Draws what is queued: the meshes' runs, then the fans' (lit as their
+ * surfaces, sw_renderer_set_fill), each run in its colour; waits for the
+ * driver past batch_triangles as sw_gl_pool_draw does. The frame's end
+ * calls it. */
+void sw_gl_pool_flush(sw_gl_pool *p, sw_renderer *r);
 
 /* The frame's end: waits for the driver (glFinish) and starts the next
  * batch from zero. */
