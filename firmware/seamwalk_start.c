@@ -365,12 +365,6 @@ static sw_status take_readback(sw_program *rt, int always, sw_error *err)
     size_t scratch = rt->opt.png_dir ? sw_png_scratch_bytes(rt->opt.width, rt->opt.height, 3)
                                      : 0;
     size_t need = sw_arena_worst_case(pixels, 64) + scratch + 4096;
-    size_t total = rt->arena.size + rt->frame_arena.size + need +
-                   (rt->staging_block ? sw_gl_pool_merge_bytes() : 0);
-    if ((double)total > rt->opt.memory_mb * 1024.0 * 1024.0)
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "with the %dx%d read-back needs %.1f MiB of "
-                            "memory, more than --memory-mb %.1f", rt->opt.width,
-                            rt->opt.height, total / 1048576.0, rt->opt.memory_mb);
     if (!(rt->readback_block = sw_heap_take_block(need)))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the read-back",
                             need);
@@ -403,6 +397,14 @@ static sw_status finish_start(sw_program *rt, sw_error *err)
         return st;
     if ((st = take_readback(rt, 0, err)) != SW_OK)
         return st;
+    /* The blocks taken after the arena's own check, held to it together. */
+    size_t total = rt->arena.size + rt->frame_arena.size + rt->readback_arena.size +
+                   (rt->staging_block ? sw_gl_pool_merge_bytes() : 0);
+    if ((double)total > rt->opt.memory_mb * 1024.0 * 1024.0)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "with the %dx%d read-back and the merged "
+                            "draws' staging needs %.1f MiB of memory, more than --memory-mb "
+                            "%.1f", rt->opt.width, rt->opt.height, total / 1048576.0,
+                            rt->opt.memory_mb);
     if (!rt->pool_up || rt->pool_vertices != rt->seam.cache.vertices ||
         rt->pool_indices != rt->seam.cache.indices)   /* the walk sized its cache itself */
         return sw_error_set(err, SW_ERR_GL, "the GL buffers (%u vertices, %u indices) do not "
