@@ -197,7 +197,10 @@ void sw_gl_pool_queue(sw_gl_pool *p, sw_renderer *r, int queue, const float rgba
         return;
     }
     sw_gl_queue *q = &p->queues[queue];
-    int same = q->run_count > 0 && q->runs[q->run_count - 1].rgba == rgba;
+    /* One run while the colour stays the same: the parts of a model
+     * placed many times share it (the showroom's 625 parts, 4 models). */
+    const float *last = q->run_count ? q->runs[q->run_count - 1].rgba : NULL;
+    int same = last && (last == rgba || !memcmp(last, rgba, 4 * sizeof *rgba));
     if (q->count + index_count > SW_GL_POOL_MERGE_INDICES ||
         (!same && q->run_count == SW_GL_POOL_MERGE_RUNS)) {
         sw_gl_pool_flush(p, r);
