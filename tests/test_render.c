@@ -7,6 +7,7 @@
 #include <GLES2/gl2.h>
 
 #include "sw_egl_headless.h"
+#include "sw_gl_pool.h"
 #include "sw_renderer.h"
 #include "sw_test.h"
 
@@ -239,6 +240,73 @@ static void test_counters_count_draws_and_triangles(void)
     SW_CHECK(renderer.triangles - tris == 6);
 }
 
+/* Four squares as a cache lays meshes out (each at its own first vertex
+ * and first index, indices local to the mesh), in red, red, green, red:
+ * drawn one call a mesh, then queued and merged (32-bit indices). */
+enum { POOL_MESHES = 4 };
+static const float *pool_colour[POOL_MESHES] = { red, red, green, red };
+
+static void upload_squares(sw_gl_pool *p)
+{
+    for (uint32_t m = 0; m < POOL_MESHES; m++) {
+        float x = -0.9f + 0.6f * (float)m, s = 0.25f;
+        sw_vertex v[4] = {
+            { { x - s, -s, -3 }, { 0, 0, 127, 0 } }, { { x + s, -s, -3 }, { 0, 0, 127, 0 } },
+            { { x + s, s, -3 }, { 0, 0, 127, 0 } }, { { x - s, s, -3 }, { 0, 0, 127, 0 } },
+        };
+        static const uint16_t idx[6] = { 0, 1, 2, 0, 2, 3 };
+        SW_CHECK(sw_gl_pool_upload(p, 100 + 10 * m, v, 4, 30 + 12 * m, idx, 6));
+    }
+}
+
+static void draw_squares(sw_gl_pool *p)
+{
+    static const uint16_t idx[6] = { 0, 1, 2, 0, 2, 3 };
+    begin();
+    for (uint32_t m = 0; m < POOL_MESHES; m++)
+        sw_gl_pool_queue(p, &renderer, SW_GL_POOL_MESHES, pool_colour[m], 100 + 10 * m,
+                         30 + 12 * m, idx, 6);
+    sw_gl_pool_flush(p, &renderer);
+    read_back();
+}
+
+static void test_merged_draws_draw_what_one_draw_a_mesh_draws(void)
+{
+    static uint8_t alone[W * H * 4];
+    static uint64_t staging[(2u * SW_GL_POOL_MERGE_INDICES * 4 +
+                             2u * SW_GL_POOL_MERGE_RUNS * sizeof(sw_gl_run)) / 8 + 1];
+    SW_CHECK(sizeof staging >= sw_gl_pool_merge_bytes());
+    sw_gl_pool p;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_gl_pool_init(&p, 256, 128, 0, &err) == SW_OK, "%s", err.message);
+    upload_squares(&p);
+    draw_squares(&p);   /* merging off: a call a mesh */
+    SW_CHECK_MSG(p.draw_calls == POOL_MESHES, "%llu calls", (unsigned long long)p.draw_calls);
+    memcpy(alone, pixels, sizeof alone);
+    int reds = 0;
+    for (int x = 0; x < W; x++)
+        reds += pixel(x, H / 2)[0] > 100 && pixel(x, H / 2)[1] < 50;
+    SW_CHECK_MSG(reds > 8, "%d red pixels on the middle row", reds);
+    SW_CHECK(sw_gl_pool_merge_start(&p, staging) == 1);
+    uint64_t calls = p.draw_calls, tris = p.triangles;
+    draw_squares(&p);
+    /* red red | green | red: three runs, one call each */
+    SW_CHECK_MSG(p.draw_calls - calls == 3, "%llu calls",
+                 (unsigned long long)(p.draw_calls - calls));
+    SW_CHECK(p.triangles - tris == 2 * POOL_MESHES);
+    SW_CHECK_MSG(memcmp(alone, pixels, sizeof alone) == 0, "merged draws differ");
+    /* One mesh left out changes the picture: the comparison can fail. */
+    static const uint16_t idx[6] = { 0, 1, 2, 0, 2, 3 };
+    begin();
+    for (uint32_t m = 0; m + 1 < POOL_MESHES; m++)
+        sw_gl_pool_queue(&p, &renderer, SW_GL_POOL_MESHES, pool_colour[m], 100 + 10 * m,
+                         30 + 12 * m, idx, 6);
+    sw_gl_pool_flush(&p, &renderer);
+    read_back();
+    SW_CHECK(memcmp(alone, pixels, sizeof alone) != 0);
+    sw_gl_pool_destroy(&p);
+}
+
 static void test_renderer_rejects_more_than_16_bit_vertices(void)
 {
     sw_renderer r;
@@ -291,6 +359,7 @@ int main(void)
         SW_RUN(test_nearer_quad_hides_farther);
         SW_RUN(test_read_back_is_top_row_first);
         SW_RUN(test_counters_count_draws_and_triangles);
+        SW_RUN(test_merged_draws_draw_what_one_draw_a_mesh_draws);
         SW_RUN(test_renderer_rejects_more_than_16_bit_vertices);
         SW_RUN(test_depth_has_24_bits_where_offered);
         sw_renderer_destroy(&renderer);
