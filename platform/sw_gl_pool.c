@@ -197,8 +197,9 @@ void sw_gl_pool_queue(sw_gl_pool *p, sw_renderer *r, int queue, const float rgba
         return;
     }
     sw_gl_queue *q = &p->queues[queue];
-    /* One run while the colour stays the same: the parts of a model
-     * placed many times share it (the showroom's 625 parts, 4 models). */
+    /* One run while the colour stays the same, whichever part it is
+     * (the showroom gives each of its 625 parts a colour of its own: its
+     * first frame's 2,676 meshes made 302 runs, one a visible part). */
     const float *last = q->run_count ? q->runs[q->run_count - 1].rgba : NULL;
     int same = last && (last == rgba || !memcmp(last, rgba, 4 * sizeof *rgba));
     if (q->count + index_count > SW_GL_POOL_MERGE_INDICES ||
