@@ -236,6 +236,11 @@ static int64_t rss_now_kb(sw_stats *s)
 
 static sw_status walk(sw_program *rt, sw_error *err)
 {
+    post_view(rt, 0);
+    sw_status pool_st = sw_program_start_pool(rt, err);   /* while V plans frame 0 */
+    if (pool_st != SW_OK)
+        return pool_st;
+    rt->mark_s = sw_program_now_s();
     process_count_fn process = process_alloc_counter();
     uint64_t allocs_before = sw_alloc_count_allocs();
     uint64_t process_before = process ? process() : 0;
@@ -243,7 +248,6 @@ static sw_status walk(sw_program *rt, sw_error *err)
     s->duration_s = rt->opt.duration_s;
     s->rss_start_kb = rss_now_kb(s);
     double t0 = sw_program_now_s();
-    post_view(rt, 0);
     for (uint64_t f = 0; walking(rt, f, t0); f++) {
         sw_status st = run_frame(rt, f, err);
         if (st != SW_OK)

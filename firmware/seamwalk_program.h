@@ -6,7 +6,6 @@
 #define SEAMWALK_PROGRAM_H
 
 #include <pthread.h>
-#include <semaphore.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -71,8 +70,6 @@ typedef struct sw_program {
     /* The loader thread (seamwalk_start.c): the pack and everything made
      * from it without the GL, while the GL thread opens the display. */
     pthread_t loader, gl_thread;
-    sem_t pool_sizes;         /* posted once the loader knows them (0: it failed first) */
-    uint32_t pool_vertices, pool_indices;   /* the cache's, for the GL buffers */
     sw_status load_status;
     sw_error load_err;
 } sw_program;
@@ -84,6 +81,11 @@ double sw_program_now_s(void);
  * --store, the first slot that starts, else the message screen) loaded on
  * a thread of its own meanwhile. main opens nothing itself. */
 sw_status sw_program_start(sw_program *rt, sw_error *err);
+
+/* The GL buffers for the cache (and the merged draws' staging): the walk
+ * calls it once, after posting the first frame's view to V, so writing
+ * them overlaps V's planning of that frame. */
+sw_status sw_program_start_pool(sw_program *rt, sw_error *err);
 
 /* Ends the threads and gives back every block and GL object start took
  * (the display stays: main closes it). Safe after a failed start. */

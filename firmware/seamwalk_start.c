@@ -19,7 +19,6 @@
  * all three count against --memory-mb. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
-#include <semaphore.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,7 +31,6 @@
 #include "sw_heap.h"
 #include "sw_png.h"
 #include "sw_up_axis.h"
-#include "sw_walk_memory.h"
 
 double sw_program_now_s(void)
 {
@@ -273,12 +271,6 @@ static sw_status load(sw_program *rt, sw_error *err)
         (st = sw_boot_check_loaded(&rt->boot, rt->loading_slot, &rt->pack, err)) != SW_OK)
         return st;
     double pack_ms = (sw_program_now_s() - t0) * 1000.0;
-    /* The GL buffers the cache will need, to the GL thread now: making
-     * them (llvmpipe zeroes a buffer's store, 112 MB on the showroom)
-     * then overlaps the walk's init here. */
-    rt->pool_vertices = sw_walk_cache_vertices(&rt->pack.seam, rt->pack.surfaces);
-    rt->pool_indices = sw_walk_cache_indices(rt->pool_vertices);
-    sem_post(&rt->pool_sizes);
     if (rt->pack.meta->patch_count == 0)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: the pack has no patches to show",
                             rt->opt.pack_path);
@@ -295,14 +287,10 @@ static sw_status load(sw_program *rt, sw_error *err)
     return init_seams(rt, &mark_s, err);
 }
 
-/* The pool sizes are posted once whatever happens, so the GL thread
- * never waits for a loader that failed before it had them (sizes 0). */
 static void *loader_main(void *arg)
 {
     sw_program *rt = arg;
     rt->load_status = load(rt, &rt->load_err);
-    if (!rt->pool_vertices)
-        sem_post(&rt->pool_sizes);
     return NULL;
 }
 
@@ -340,18 +328,34 @@ static sw_status start_gl(sw_program *rt, sw_error *err)
     sw_renderer_set_back_hidden(&rt->renderer, rt->opt.back_hidden);
     sw_renderer_warm_up(&rt->renderer, rt->opt.width, rt->opt.height);
     rt->gl_ms = lap_ms(&rt->mark_s);
-    while (sem_wait(&rt->pool_sizes) != 0 && errno == EINTR) {
-    }
-    rt->load_wait_ms = lap_ms(&rt->mark_s);
-    if (rt->pool_vertices) {
-        st = sw_gl_pool_init(&rt->pool, rt->pool_vertices, rt->pool_indices,
-                             (uint32_t)rt->opt.batch_tris, err);
-        rt->pool_up = st == SW_OK;
-        if (rt->pool_up && (rt->staging_block = sw_heap_take_block(sw_gl_pool_merge_bytes())))
-            sw_gl_pool_merge_start(&rt->pool, rt->staging_block);   /* else a draw a mesh */
-    }
-    rt->gl_ms += lap_ms(&rt->mark_s);
     return st;
+}
+
+/* The GL buffers the cache lays its meshes out in, and the merged draws'
+ * staging (sw_gl_pool.h), held to --memory-mb with the other blocks. The
+ * walk makes them once V is planning the first frame (seamwalk_main.c):
+ * writing the buffers once (their pages taken now, not in a soak) is the
+ * GL thread's longest start step, 112 MB on the showroom. */
+sw_status sw_program_start_pool(sw_program *rt, sw_error *err)
+{
+    double mark_s = sw_program_now_s();
+    uint32_t vertices = rt->seam.cache.vertices, indices = rt->seam.cache.indices;
+    sw_status st = sw_gl_pool_init(&rt->pool, vertices, indices, (uint32_t)rt->opt.batch_tris,
+                                   err);
+    if (st != SW_OK)
+        return st;
+    rt->pool_up = 1;
+    if ((rt->staging_block = sw_heap_take_block(sw_gl_pool_merge_bytes())))
+        sw_gl_pool_merge_start(&rt->pool, rt->staging_block);   /* else a draw a mesh */
+    size_t total = rt->arena.size + rt->frame_arena.size + rt->readback_arena.size +
+                   (rt->staging_block ? sw_gl_pool_merge_bytes() : 0);
+    if ((double)total > rt->opt.memory_mb * 1024.0 * 1024.0)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "with the %dx%d read-back and the merged "
+                            "draws' staging needs %.1f MiB of memory, more than --memory-mb "
+                            "%.1f", rt->opt.width, rt->opt.height, total / 1048576.0,
+                            rt->opt.memory_mb);
+    rt->stats.start_gl_ms += (sw_program_now_s() - mark_s) * 1000.0;
+    return SW_OK;
 }
 
 /* With --png-dir (or for the message screen, always): the read-back and
@@ -397,19 +401,6 @@ static sw_status finish_start(sw_program *rt, sw_error *err)
         return st;
     if ((st = take_readback(rt, 0, err)) != SW_OK)
         return st;
-    /* The blocks taken after the arena's own check, held to it together. */
-    size_t total = rt->arena.size + rt->frame_arena.size + rt->readback_arena.size +
-                   (rt->staging_block ? sw_gl_pool_merge_bytes() : 0);
-    if ((double)total > rt->opt.memory_mb * 1024.0 * 1024.0)
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "with the %dx%d read-back and the merged "
-                            "draws' staging needs %.1f MiB of memory, more than --memory-mb "
-                            "%.1f", rt->opt.width, rt->opt.height, total / 1048576.0,
-                            rt->opt.memory_mb);
-    if (!rt->pool_up || rt->pool_vertices != rt->seam.cache.vertices ||
-        rt->pool_indices != rt->seam.cache.indices)   /* the walk sized its cache itself */
-        return sw_error_set(err, SW_ERR_GL, "the GL buffers (%u vertices, %u indices) do not "
-                            "match the cache (%u, %u)", rt->pool_vertices, rt->pool_indices,
-                            rt->seam.cache.vertices, rt->seam.cache.indices);
     rt->stats.start_gl_ms = rt->gl_ms;
     return sw_grow_hook_init(&rt->grow, (size_t)rt->opt.test_grow_kb * 1024, SW_STATS_RSS_LOOPS,
                              err);
@@ -421,16 +412,13 @@ static sw_status finish_start(sw_program *rt, sw_error *err)
 static sw_status start_pack(sw_program *rt, sw_error *err)
 {
     rt->gl_thread = pthread_self();
-    if (sem_init(&rt->pool_sizes, 0, 0) != 0)
-        return sw_error_set(err, SW_ERR_IO, "cannot make a semaphore: %s", strerror(errno));
     int threaded = pthread_create(&rt->loader, NULL, loader_main, rt) == 0;
     if (!threaded)   /* no thread to be had: the same steps, one after the other */
         loader_main(rt);
     sw_status st = start_gl(rt, err);
     if (threaded)
         pthread_join(rt->loader, NULL);
-    rt->load_wait_ms += lap_ms(&rt->mark_s);
-    sem_destroy(&rt->pool_sizes);
+    rt->load_wait_ms = lap_ms(&rt->mark_s);
     if (st != SW_OK)
         return st;
     if (rt->load_status != SW_OK) {
