@@ -4,8 +4,9 @@
  * buffer growth without reallocating and re-uploading everything); the
  * caller decides where each mesh lives (sw_buddy.h) and uploads a mesh's
  * ranges with glBufferSubData when it changes. Indices are local to their
- * mesh: a draw points the attributes at the mesh's first vertex, since
- * GLES2 has no base-vertex draw. Only the GL thread calls it. */
+ * mesh: a draw of one mesh points the attributes at its first vertex,
+ * since GLES2 has no base-vertex draw; merged draws (below) copy them
+ * with the first vertex added. Only the GL thread calls it. */
 #ifndef SW_GL_POOL_H
 #define SW_GL_POOL_H
 
