@@ -6,17 +6,19 @@
  * validated, and the seam walk's state built from it, then the workers and
  * V started). The pack is loaded on a loader thread while the GL thread
  * opens the display and warms the renderer; the GL thread then waits for
- * the loader (stats: start_ms.load_wait) and makes the GL buffers the
- * loaded cache needs. Nothing the loader touches calls GL, and nothing the
- * GL thread touches before the join is the loader's (the display's size
- * decides only the read-back, taken after it). With --store the display
- * is opened first (start_from_store says why) and the loader overlaps the
- * renderer's start only.
+ * the loader (stats: start_ms.load_wait). The GL buffers the loaded cache
+ * needs are made once the walk has posted its first view, while V plans
+ * that frame (sw_program_start_pool). Nothing the loader touches calls GL,
+ * and nothing the GL thread touches before the join is the loader's (the
+ * display's size decides only the read-back, taken after it). With
+ * --store the display is opened first (start_from_store says why) and the
+ * loader overlaps the renderer's start only.
  *
  * Memory: the arena is sized from the pack header and the options alone,
  * so the decision to run is made before any allocation; the frames' block
- * once the pack is loaded, the read-back once the display has its size;
- * all three count against --memory-mb. */
+ * once the pack is loaded, the read-back once the display has its size,
+ * the merged draws' staging with the GL buffers; all of them count
+ * against --memory-mb. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <math.h>

@@ -81,14 +81,8 @@ void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
         return;
     glBindBuffer(GL_ARRAY_BUFFER, p->vertex_buffer);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p->index_buffer);
-    size_t base = (size_t)first_vertex * sizeof(sw_vertex);
-    /* No VAOs and no base vertex in GLES2: the layout points at the mesh. */
-    glVertexAttribPointer((GLuint)r->a_position, 3, GL_FLOAT, GL_FALSE, sizeof(sw_vertex),
-                          (const void *)(base + offsetof(sw_vertex, pos)));
-    glVertexAttribPointer((GLuint)r->a_normal, 3, GL_BYTE, GL_TRUE, sizeof(sw_vertex),
-                          (const void *)(base + offsetof(sw_vertex, normal)));
-    glEnableVertexAttribArray((GLuint)r->a_position);
-    glEnableVertexAttribArray((GLuint)r->a_normal);
+    /* No base vertex in GLES2: the layout points at the mesh. */
+    sw_renderer_set_layout(r, (size_t)first_vertex * sizeof(sw_vertex));
     glDrawElements(GL_TRIANGLES, (GLsizei)(index_count - index_count % 3), GL_UNSIGNED_SHORT,
                    (const void *)((size_t)first_index * 2));
     p->draw_calls++;
@@ -165,12 +159,7 @@ void sw_gl_pool_flush(sw_gl_pool *p, sw_renderer *r)
     glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, (GLsizeiptr)fans_at, meshes->indices);
     glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, (GLintptr)fans_at, (GLsizeiptr)fans->count * 4,
                     fans->indices);
-    glVertexAttribPointer((GLuint)r->a_position, 3, GL_FLOAT, GL_FALSE, sizeof(sw_vertex),
-                          (const void *)offsetof(sw_vertex, pos));
-    glVertexAttribPointer((GLuint)r->a_normal, 3, GL_BYTE, GL_TRUE, sizeof(sw_vertex),
-                          (const void *)offsetof(sw_vertex, normal));
-    glEnableVertexAttribArray((GLuint)r->a_position);
-    glEnableVertexAttribArray((GLuint)r->a_normal);
+    sw_renderer_set_layout(r, 0);
     draw_runs(p, r, meshes, 0);
     if (fans->run_count) {
         sw_renderer_set_fill(r, 1);

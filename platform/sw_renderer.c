@@ -247,16 +247,20 @@ void sw_renderer_draw(sw_renderer *r, const sw_vertex *verts, uint32_t vertex_co
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)r->max_indices * 2, NULL, GL_STREAM_DRAW);
     glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, (GLsizeiptr)index_count * 2, indices);
 
-    /* No VAOs in GLES2: the layout is set on every draw. */
-    glVertexAttribPointer((GLuint)r->a_position, 3, GL_FLOAT, GL_FALSE, sizeof(sw_vertex),
-                          (const void *)offsetof(sw_vertex, pos));
-    glVertexAttribPointer((GLuint)r->a_normal, 3, GL_BYTE, GL_TRUE, sizeof(sw_vertex),
-                          (const void *)offsetof(sw_vertex, normal));
-    glEnableVertexAttribArray((GLuint)r->a_position);
-    glEnableVertexAttribArray((GLuint)r->a_normal);
+    sw_renderer_set_layout(r, 0);
     glDrawElements(GL_TRIANGLES, (GLsizei)(index_count - index_count % 3), GL_UNSIGNED_SHORT, 0);
     r->draw_calls++;
     r->triangles += index_count / 3;
+}
+
+void sw_renderer_set_layout(const sw_renderer *r, size_t base)
+{
+    glVertexAttribPointer((GLuint)r->a_position, 3, GL_FLOAT, GL_FALSE, sizeof(sw_vertex),
+                          (const void *)(base + offsetof(sw_vertex, pos)));
+    glVertexAttribPointer((GLuint)r->a_normal, 3, GL_BYTE, GL_TRUE, sizeof(sw_vertex),
+                          (const void *)(base + offsetof(sw_vertex, normal)));
+    glEnableVertexAttribArray((GLuint)r->a_position);
+    glEnableVertexAttribArray((GLuint)r->a_normal);
 }
 
 void sw_renderer_warm_up(sw_renderer *r, int width, int height)

@@ -5,6 +5,7 @@
 #ifndef SW_RENDERER_H
 #define SW_RENDERER_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "sw_error.h"
@@ -56,6 +57,11 @@ void sw_renderer_set_fill(sw_renderer *r, int fill);
  * GL_TRIANGLES. vertex_count <= max_vertices, index_count <= max_indices. */
 void sw_renderer_draw(sw_renderer *r, const sw_vertex *verts, uint32_t vertex_count,
                       const uint16_t *indices, uint32_t index_count);
+
+/* Points the position and normal attributes at the bound vertex buffer's
+ * sw_vertex array starting base bytes in, and enables them (no VAOs in
+ * GLES2: every draw sets its layout). */
+void sw_renderer_set_layout(const sw_renderer *r, size_t base);
 
 /* Draws one small triangle the way frames draw (the state begin_frame
  * sets, the same vertex layout) into a cleared width x height frame and
