@@ -133,6 +133,10 @@ static int wants_prefetch(const sw_seam_walk *w, uint32_t s, double *weight)
     return v > 0;
 }
 
+/* The batch takes all the work it finds, N and M aside: with sync_work,
+ * and in the first frame (select counts the frame after the schedule). */
+static int no_budget(const sw_seam_walk *w) { return w->sync_work || w->frame == 0; }
+
 enum { SW_CHOSEN = 1, SW_PASSED = 2 };   /* w->busy while a batch opens */
 
 /* The candidates heaviest first while N lasts (all the visible ones with
@@ -155,7 +159,7 @@ static double choose(sw_seam_walk *w, sw_seam_frame *frame)
         w->candidates[cands++] = (sw_seam_candidate){ (float)weight, s };
     }
     sw_seam_candidates_sort(w->candidates, cands);
-    int unlimited = w->sync_work || w->frame == 0;   /* (select counts the frame after) */
+    int unlimited = no_budget(w);
     /* Time left (paper 004): the culled go only when nothing in view waits;
      * taken after visible work in the same batch they delayed its swap. */
     int time_left = cands == 0 || w->candidates[0].weight < 1.0f;
@@ -231,7 +235,7 @@ static sw_status open_batch(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err
     w->budget.updated_used = must_tris;
     frame->jobs_scheduled = w->batch_count;
     frame->updated_tris = must_tris;
-    frame->updated_cap = w->sync_work || w->frame == 0 ? 0 : w->budget.updated_tris;
+    frame->updated_cap = no_budget(w) ? 0 : w->budget.updated_tris;
     frame->budget_tris = w->budget.new_tris + w->budget.updated_tris;
     frame->budget_used = (must_tris + new_tris) / frame->budget_tris;
     return st;

@@ -293,9 +293,9 @@ void sw_stats_add_update_cap(sw_stats *s, double used, double cap)
 {
     if (cap <= 0)
         return;
-    s->updated_capped_frames++;
+    s->updated_capped_batches++;
     if (used > cap) {
-        s->updated_over_frames++;
+        s->updated_over_batches++;
         s->updated_over_max = fmax(s->updated_over_max, used / cap);
     }
 }
@@ -336,8 +336,8 @@ static void write_threads(FILE *f, const sw_stats *s)
             (unsigned long long)s->prefetch_total, (unsigned long long)s->batches_total, (unsigned long long)s->seam_ops_total,
             s->budget_frames ? s->budget_used_sum / s->budget_frames : 0.0, s->budget_used_max,
             s->budget_tris_last, (unsigned long long)s->worker_triangles, s->worker_busy_ms,
-            (unsigned long long)s->worker_steals, (unsigned long long)s->updated_capped_frames,
-            (unsigned long long)s->updated_over_frames, s->updated_over_max);
+            (unsigned long long)s->worker_steals, (unsigned long long)s->updated_capped_batches,
+            (unsigned long long)s->updated_over_batches, s->updated_over_max);
 }
 
 /* The kept frame times oldest first (the ring unrolled), for plots along

@@ -95,8 +95,8 @@ typedef struct sw_stats {
     double behind_ratio_max;     /* the most a drawn mesh's bound exceeded the view's */
     uint64_t jobs_total, batches_total, seam_ops_total;
     double budget_used_sum, budget_used_max; /* scheduled over N + M, frames that scheduled */
-    uint64_t updated_capped_frames;  /* batches opened under M (sw_stats_add_update_cap) */
-    uint64_t updated_over_frames;    /* of them, the ones whose update spent more than M */
+    uint64_t updated_capped_batches; /* batches opened under M (sw_stats_add_update_cap) */
+    uint64_t updated_over_batches;   /* of them, the ones whose update spent more than M */
     double updated_over_max;         /* the most spent over M, as a multiple of M */
     int budget_frames;
     double budget_tris_last;     /* N + M at the end */
@@ -159,11 +159,11 @@ void sw_stats_add_frame(sw_stats *s, double ms, uint32_t tris, uint32_t visible)
 void sw_stats_add_error_px(sw_stats *s, double error_px);
 /* The frame's near and far planes. */
 void sw_stats_add_depth_range(sw_stats *s, double near_z, double far_z);
-/* The threaded walk's frame: waiting and behind surfaces, frames behind,
- * the bound ratio, jobs and whether a batch was swapped in, the budget. */
 /* A batch opened under M (cap > 0) that spent used updated triangles. */
 void sw_stats_add_update_cap(sw_stats *s, double used, double cap);
 
+/* The threaded walk's frame: waiting and behind surfaces, frames behind,
+ * the bound ratio, jobs and whether a batch was swapped in, the budget. */
 void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
                                 uint32_t frames_behind, double behind_ratio, uint32_t jobs,
                                 uint32_t prefetch, uint32_t batches, uint32_t seam_ops,

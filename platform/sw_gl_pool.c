@@ -59,6 +59,20 @@ void sw_gl_pool_destroy(sw_gl_pool *p)
     p->vertex_buffer = p->index_buffer = 0;
 }
 
+/* A draw call of triangles counted; past batch_triangles since the last
+ * wait, the driver is waited for (SW_GL_POOL_BATCH_TRIANGLES says why). */
+static void drawn(sw_gl_pool *p, uint32_t triangles)
+{
+    p->draw_calls++;
+    p->triangles += triangles;
+    p->unfinished_triangles += triangles;
+    if (p->batch_triangles && p->unfinished_triangles >= p->batch_triangles) {
+        glFinish();
+        p->unfinished_triangles = 0;
+        p->waits++;
+    }
+}
+
 int sw_gl_pool_upload(sw_gl_pool *p, uint32_t first_vertex, const sw_vertex *verts, uint32_t n,
                       uint32_t first_index, const uint16_t *indices, uint32_t m)
 {
@@ -85,14 +99,7 @@ void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
     sw_renderer_set_layout(r, (size_t)first_vertex * sizeof(sw_vertex));
     glDrawElements(GL_TRIANGLES, (GLsizei)(index_count - index_count % 3), GL_UNSIGNED_SHORT,
                    (const void *)((size_t)first_index * 2));
-    p->draw_calls++;
-    p->triangles += index_count / 3;
-    p->unfinished_triangles += index_count / 3;
-    if (p->batch_triangles && p->unfinished_triangles >= p->batch_triangles) {
-        glFinish();
-        p->unfinished_triangles = 0;
-        p->waits++;
-    }
+    drawn(p, index_count / 3);
 }
 
 size_t sw_gl_pool_merge_bytes(void)
@@ -134,14 +141,7 @@ static void draw_runs(sw_gl_pool *p, sw_renderer *r, sw_gl_queue *q, size_t at)
         sw_renderer_set_color(r, run->rgba);
         glDrawElements(GL_TRIANGLES, (GLsizei)run->count, GL_UNSIGNED_INT,
                        (const void *)(at + (size_t)run->first * 4));
-        p->draw_calls++;
-        p->triangles += run->count / 3;
-        p->unfinished_triangles += run->count / 3;
-        if (p->batch_triangles && p->unfinished_triangles >= p->batch_triangles) {
-            glFinish();
-            p->unfinished_triangles = 0;
-            p->waits++;
-        }
+        drawn(p, run->count / 3);
     }
     q->count = q->run_count = 0;
 }
