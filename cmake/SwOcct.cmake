@@ -1,8 +1,9 @@
 # OpenCASCADE (Debian libocct-*-dev) for the STEP reader and the OCCT IGES
 # cross-check: assets/import/sw_import_occt.cpp when found, the C fallback
 # assets/import/sw_import_occt_none.c (a clear "built without STEP support") when not.
-# Sets SW_OCCT_FOUND and defines sw_occt_apply(target), which adds the right
-# sources, libraries and the SW_HAVE_OCCT definition to sw_assets.
+# Sets SW_OCCT_FOUND and defines sw_occt_apply(target core), which adds the
+# right sources, libraries and the SW_HAVE_OCCT definition to target, an
+# assets library built on the core library core.
 option(SW_WITH_OCCT "Read STEP (and IGES as a cross-check) through OpenCASCADE when it is installed" ON)
 
 set(SW_OCCT_FOUND OFF)
@@ -37,7 +38,7 @@ set(SW_OCCT_LIBRARIES
   TKXDESTEP TKXDEIGES TKSTEP TKIGES TKXCAF TKLCAF TKXSBase
   TKShHealing TKTopAlgo TKGeomAlgo TKBRep TKGeomBase TKG3d TKG2d TKMath TKernel)
 
-function(sw_occt_apply target)
+function(sw_occt_apply target core)
   if(NOT SW_OCCT_FOUND)
     target_sources(${target} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_import_occt_none.c)
     return()
@@ -45,20 +46,20 @@ function(sw_occt_apply target)
   # The C++ file is an object library of its own: sw_apply_warnings' C-only
   # flags (-Wstrict-prototypes, -Wmissing-prototypes) are errors for g++ under
   # -Werror, so C++ gets the equivalent set here.
-  add_library(sw_import_occt OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_import_occt.cpp)
-  target_include_directories(sw_import_occt PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/import
+  add_library(${target}_occt OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_import_occt.cpp)
+  target_include_directories(${target}_occt PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/import
     ${CMAKE_CURRENT_SOURCE_DIR}/model)
   # SYSTEM: OCCT's headers are not ours to keep free of -Wextra warnings.
-  target_include_directories(sw_import_occt SYSTEM PRIVATE ${OpenCASCADE_INCLUDE_DIR})
-  target_link_libraries(sw_import_occt PRIVATE sw_core)
-  target_compile_options(sw_import_occt PRIVATE -Wall -Wextra -Wshadow -Wpointer-arith
+  target_include_directories(${target}_occt SYSTEM PRIVATE ${OpenCASCADE_INCLUDE_DIR})
+  target_link_libraries(${target}_occt PRIVATE ${core})
+  target_compile_options(${target}_occt PRIVATE -Wall -Wextra -Wshadow -Wpointer-arith
     -Wmissing-declarations)
   if(SW_WERROR)
-    target_compile_options(sw_import_occt PRIVATE -Werror)
+    target_compile_options(${target}_occt PRIVATE -Werror)
   endif()
-  set_target_properties(sw_import_occt PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  set_target_properties(${target}_occt PROPERTIES POSITION_INDEPENDENT_CODE ON)
   # Linking the object library puts its objects into the target and tells
   # CMake that programs using the target need the C++ linker and runtime.
-  target_link_libraries(${target} PRIVATE sw_import_occt ${SW_OCCT_LIBRARIES})
+  target_link_libraries(${target} PRIVATE ${target}_occt ${SW_OCCT_LIBRARIES})
   target_compile_definitions(${target} PUBLIC SW_HAVE_OCCT=1)
 endfunction()

@@ -16,6 +16,18 @@ if(SW_TSAN)
   add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
   add_link_options(-fsanitize=thread)
 endif()
+# sw_without_tsan(target): the target compiled and linked without TSan.
+# Only for the host tool (assets/CMakeLists.txt), which starts no thread:
+# TSan reports races between threads and has nothing to check there.
+function(sw_without_tsan target)
+  foreach(property COMPILE_OPTIONS LINK_OPTIONS)
+    get_target_property(options ${target} ${property})
+    if(options)
+      list(REMOVE_ITEM options -fsanitize=thread)
+      set_property(TARGET ${target} PROPERTY ${property} ${options})
+    endif()
+  endforeach()
+endfunction()
 if(SW_FUZZ)
   # The whole tree carries coverage instrumentation, so libFuzzer sees the
   # parsers' branches, not only the target's entry point.

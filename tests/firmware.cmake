@@ -118,6 +118,16 @@ if(NOT SW_ASAN AND NOT SW_TSAN)
             ${SW_SHARED_MODEL_FILES})
 endif()
 
+# Under TSan, the step's own check (tests/tsan_check.sh): a planted race
+# fails, the runtime is instrumented and the host tool is not.
+if(SW_TSAN)
+  add_executable(tsan_race tsan_race.c)
+  target_link_libraries(tsan_race PRIVATE Threads::Threads)
+  sw_apply_warnings(tsan_race)
+  add_test(NAME tsan_check COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/tsan_check.sh
+    ${PROJECT_BINARY_DIR})
+endif()
+
 # The short soak (issue 10, item 6): the teaset looped for 20 s; resident
 # memory flat after the first loop and no allocation (tests/soak.sh; the
 # 10-minute soak is the same script with --duration 600, README). Under the

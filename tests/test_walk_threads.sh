@@ -75,8 +75,12 @@ for name, j in (("stalled", stalled), ("async", run), ("slow", slow)):
     v = j["visibility"]
     assert v["thread"] and v["planned_on_gl_thread"] == 0, (name, v)
     assert 0 < v["overlapped_frames"] <= 23, (name, v)
+# The async walk keeps swapping work in. Not "fewer frames behind than the
+# stalled walk": that is one surface's worst, and under TSan on a loaded
+# machine (frames of 100 ms and more, so small budgets) a surface the async
+# walk kept passing over was 20 frames behind against the stalled walk's 19.
 assert run["threads"]["batches"] > stalled["threads"]["batches"]
-assert run["threads"]["frames_behind_max"] < stalled["threads"]["frames_behind_max"]
+assert run["threads"]["worker_triangles"] > stalled["threads"]["worker_triangles"]
 PY
 
 walk --frames 6 --workers 1 --sync-work 0 --visibility-thread 0 --stats "$work/on_gl.json" \
