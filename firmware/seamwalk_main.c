@@ -385,7 +385,8 @@ int main(int argc, char **argv)
     static sw_display display;   /* stays put: window listeners point into it */
     sw_error err = { SW_OK, "" };
     rt.display = &display;
-    rt.start_s = sw_program_now_s();
+    sw_heap_huge_pages(argv, sw_program_now_s());   /* returns when it did not run again */
+    rt.start_s = sw_heap_started_s(sw_program_now_s());
     sw_status st = sw_options_parse(argc, argv, &rt.opt, &err);
     if (st != SW_OK || rt.opt.help) {
         if (st != SW_OK)

@@ -1,7 +1,10 @@
 #define _DEFAULT_SOURCE /* madvise */
 #include "sw_heap.h"
 
+#include <errno.h>
 #include <fcntl.h>
+#include <inttypes.h>
+#include <stdio.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -11,6 +14,58 @@
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
+
+#define HUGE_TUNABLE "glibc.malloc.hugetlb"
+#define START_ENV "SEAMWALK_START_NS"
+
+/* 1 when the kernel gives huge pages only where advised. */
+static int thp_on_advice(void)
+{
+    char mode[128] = "";
+    int fd = open("/sys/kernel/mm/transparent_hugepage/enabled", O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return 0;
+    ssize_t n = read(fd, mode, sizeof mode - 1);
+    close(fd);
+    mode[n > 0 ? n : 0] = '\0';
+    return strstr(mode, "[madvise]") != NULL;
+}
+
+void sw_heap_huge_pages(char **argv, double start_s)
+{
+#ifdef __GLIBC__
+    const char *tunables = getenv("GLIBC_TUNABLES");
+    if ((tunables && strstr(tunables, HUGE_TUNABLE)) || !thp_on_advice())
+        return;
+    char value[1024], started[32];
+    int n = snprintf(value, sizeof value, "%s%s" HUGE_TUNABLE "=1", tunables ? tunables : "",
+                     tunables && *tunables ? ":" : "");
+    if (n < 0 || (size_t)n >= sizeof value)
+        return;   /* a tunables string this long is the user's business */
+    snprintf(started, sizeof started, "%" PRId64, (int64_t)(start_s * 1e9));
+    if (setenv("GLIBC_TUNABLES", value, 1) != 0 || setenv(START_ENV, started, 1) != 0)
+        return;
+    execv("/proc/self/exe", argv);
+    unsetenv(START_ENV);   /* no exec: this run is the start, 4 KiB pages and all */
+#else
+    (void)argv;
+    (void)start_s;
+#endif
+}
+
+double sw_heap_started_s(double now_s)
+{
+    const char *started = getenv(START_ENV);
+    if (!started)
+        return now_s;
+    char *end;
+    errno = 0;
+    long long ns = strtoll(started, &end, 10);
+    unsetenv(START_ENV);   /* not for the programs this one starts */
+    double s = (double)ns * 1e-9;
+    /* Earlier than now and by less than a minute, or it is not ours. */
+    return errno == 0 && *end == '\0' && end != started && s <= now_s && now_s - s < 60.0 ? s : now_s;
+}
 
 /* glibc hands the top of its heap back once 128 kB of it are free and
  * takes it again for the next frame's driver work, so resident memory at a

@@ -8,6 +8,23 @@
 
 #include <stddef.h>
 
+/* Runs this program again, once, with glibc's heap on transparent huge
+ * pages (the tunable glibc.malloc.hugetlb=1, which glibc reads only as a
+ * process starts). Why: llvmpipe zeroes a GL buffer's store as it makes
+ * it, and on 4 KiB pages the GL pool's 112 MB on the 40,000-patch
+ * showroom was a page fault every 4 KiB, about 200 ms of the start. Does
+ * nothing, and returns, when GLIBC_TUNABLES already names the setting
+ * (set by us before, or by the user: glibc.malloc.hugetlb=0 keeps 4 KiB
+ * pages), when the kernel's THP mode is not "madvise" ("always" needs no
+ * advice, "never" takes none), or when the exec fails. start_s is passed
+ * on (SEAMWALK_START_NS), so the start's figures count the run again;
+ * sw_heap_started_s reads it back. First thing in main, before a thread. */
+void sw_heap_huge_pages(char **argv, double start_s);
+
+/* The start_s an earlier sw_heap_huge_pages passed on, or now_s when none
+ * (or a malformed one: the start is then this process's). */
+double sw_heap_started_s(double now_s);
+
 /* Nothing freed is given back to the system from now on, and the heap
  * grows by at least pad_bytes at a time. Before the GL starts. */
 void sw_heap_keep(size_t pad_bytes);
