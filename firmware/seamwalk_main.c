@@ -257,8 +257,10 @@ static sw_status walk(sw_program *rt, sw_error *err)
             /* The driver's heap is sized by now: resident from here on, and
              * the arena and the frames' block with it (no allocation;
              * without it, a kernel before 5.14, the soak shows the creep it
-             * prevents). */
-            if (s->loops == 1)
+             * prevents). Only when another loop follows (--duration): a
+             * walk of one loop ends here, and writing its hundred-odd MB
+             * then was kernel time spent on nothing. */
+            if (s->loops == 1 && rt->opt.duration_s > 0)
                 s->heap_resident =
                     sw_heap_populate() && sw_heap_populate_block(rt->block, rt->arena.size) &&
                     sw_heap_populate_block(rt->frame_block, rt->frame_arena.size);

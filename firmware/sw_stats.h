@@ -125,7 +125,7 @@ typedef struct sw_stats {
     int64_t rss_start_kb, rss_first_loop_kb, rss_end_kb, rss_peak_kb;
     int64_t rss_loop_kb[SW_STATS_RSS_LOOPS]; /* at the end of each of the first loops */
     int heap_resident;           /* the heap and the arena made resident after the first loop
-                                    (sw_heap.h) */
+                                    (sw_heap.h); 0 when no loop follows it */
     uint64_t batch_waits;        /* mid-frame waits for the GL driver (--batch-tris) */
 
     double pack_open_ms, first_frame_ms, walk_s;
