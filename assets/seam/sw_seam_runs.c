@@ -103,8 +103,10 @@ static double chord_stray(const sw_seam_runs *r, uint32_t surface, const float a
     return worst;
 }
 
-/* The cost at one run of v1 (see the header). */
-static double run_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t n, uint32_t v2)
+/* The cost at one run of v1 (see the header); with bound set, 0 where the
+ * surface would be sampled (a lower bound: the stray is a distance). */
+static double run_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t n, uint32_t v2,
+                       int bound)
 {
     const sw_seam_run *run = &r->runs[n], *p = &r->runs[run->prev], *q = &r->runs[run->next];
     const sw_seam_vertex *vx = g->vertices;
@@ -117,18 +119,32 @@ static double run_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t n,
     const sw_seam_run *o = p->vertex == v2 ? (q->vertex == v2 ? &r->runs[q->next] : q) : p;
     const float *uv_m = g->slots[m->slot].uv, *uv_o = g->slots[o->slot].uv;
     double len, t, off = uv_seg_dist(g->slots[run->slot].uv, uv_m, uv_o, &len, &t);
+    if (r->eval && bound)
+        return 0.0;
     if (r->eval)
         return chord_stray(r, g->loops[r->loop_of[n]].surface, uv_m, uv_o, vx[v2].p,
                            vx[o->vertex].p, t);
     return len > 0 ? off * dist3(vx[v2].p, vx[o->vertex].p) / len : 0.0;
 }
 
-double sw_seam_runs_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t v1, uint32_t v2)
+static double runs_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t v1, uint32_t v2,
+                        int bound)
 {
     double cost = 0.0;
     for (uint32_t n = r->first[v1]; n != SW_SEAM_NONE; n = r->link[n])
-        cost = fmax(cost, run_cost(r, g, n, v2));
+        cost = fmax(cost, run_cost(r, g, n, v2, bound));
     return cost;
+}
+
+double sw_seam_runs_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t v1, uint32_t v2)
+{
+    return runs_cost(r, g, v1, v2, 0);
+}
+
+double sw_seam_runs_cost_bound(const sw_seam_runs *r, const sw_seam_host *g, uint32_t v1,
+                               uint32_t v2)
+{
+    return runs_cost(r, g, v1, v2, 1);
 }
 
 static void unlink_run(sw_seam_runs *r, uint32_t n)

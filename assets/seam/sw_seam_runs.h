@@ -53,6 +53,12 @@ sw_status sw_seam_runs_init(sw_seam_runs *r, const sw_seam_host *graph, uint32_t
 double sw_seam_runs_cost(const sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1,
                          uint32_t v2);
 
+/* A lower bound of sw_seam_runs_cost without evaluating the surface: the
+ * same where v2 is not next to v1's run or r->eval is unset, 0 for a run
+ * whose cost would be sampled on the surface. */
+double sw_seam_runs_cost_bound(const sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1,
+                               uint32_t v2);
+
 /* Applies collapse v1 -> v2 into vn (vn's position is v2's). */
 void sw_seam_runs_collapse(sw_seam_runs *r, uint32_t v1, uint32_t v2, uint32_t vn);
 
