@@ -84,7 +84,9 @@ static sw_status open_pose_log(sw_kiosk_run *r, const char *path, sw_error *err)
     r->pose_log = fopen(path, "w");
     if (!r->pose_log)
         return sw_error_set(err, SW_ERR_IO, "%s: %s", path, strerror(errno));
-    setvbuf(r->pose_log, r->pose_buffer, _IOFBF, sizeof r->pose_buffer);
+    /* A line a frame, written as it is made: a watcher (the X11 test's key
+     * sender) can tell when the walk's frames have begun. */
+    setvbuf(r->pose_log, r->pose_buffer, _IOLBF, sizeof r->pose_buffer);
     fprintf(r->pose_log, "# frame t_s eye_x eye_y eye_z target_x target_y target_z up_x up_y "
             "up_z mode\n");
     return SW_OK;

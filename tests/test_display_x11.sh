@@ -50,10 +50,18 @@ grep -q "^seamwalk: display x11 160x120 (auto: DISPLAY is set and EGL offers X11
 # --navigate in the window: another client holds Up for 1.5 s, as a
 # developer at the keyboard would; the window's keys drive the input step
 # (firmware/sw_window_keys.c), so the eye walks forward. SIGTERM ends the
-# walk after the key, through the normal exit.
+# walk after the key, through the normal exit. The key waits for the first
+# frame's pose: the window opens while the pack still loads, and a press
+# and release both queued before the first frame walk nowhere (seen under
+# TSan on a loaded machine: 3 frames, 0 mm).
 "$walker" --pack "$work/teaset.swpack" --navigate --display x11 --size 160x120 --frames 100000 \
   --pose-log "$work/nav.poses" --stats "$work/nav.json" > "$work/nav.out" 2>&1 &
 nav=$!
+for _ in $(seq 600); do
+  grep -q '^[0-9]' "$work/nav.poses" 2>/dev/null && break
+  kill -0 "$nav" 2>/dev/null || break
+  sleep 0.1
+done
 "$build/tests/x11_send_key" seamwalk Up 1.5 20 || { kill "$nav"; fail "no seamwalk window to press a key in"; }
 sleep 0.5
 kill -TERM "$nav"
