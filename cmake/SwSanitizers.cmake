@@ -21,8 +21,10 @@ if(SW_TSAN)
   add_link_options(-fsanitize=thread)
 endif()
 # sw_without_tsan(target): the target compiled and linked without TSan.
-# Only for the host tool (assets/CMakeLists.txt), which starts no thread:
-# TSan reports races between threads and has nothing to check there.
+# Only for programs that start no thread, and what they link: the host tool
+# (assets/CMakeLists.txt) and the test programs built on it alone
+# (tests/CMakeLists.txt). TSan reports races between threads and has
+# nothing to check there.
 function(sw_without_tsan target)
   foreach(property COMPILE_OPTIONS LINK_OPTIONS)
     get_target_property(options ${target} ${property})

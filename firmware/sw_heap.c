@@ -4,9 +4,9 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <inttypes.h>
-#include <stdio.h>
 #include <limits.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -63,8 +63,9 @@ double sw_heap_started_s(double now_s)
     long long ns = strtoll(started, &end, 10);
     unsetenv(START_ENV);   /* not for the programs this one starts */
     double s = (double)ns * 1e-9;
-    /* Earlier than now and by less than a minute, or it is not ours. */
-    return errno == 0 && *end == '\0' && end != started && s <= now_s && now_s - s < 60.0 ? s : now_s;
+    /* A number, earlier than now and by less than a minute, or not ours. */
+    int ours = errno == 0 && *end == '\0' && end != started && s <= now_s && now_s - s < 60.0;
+    return ours ? s : now_s;
 }
 
 /* glibc hands the top of its heap back once 128 kB of it are free and

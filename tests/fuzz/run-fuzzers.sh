@@ -17,8 +17,9 @@ targets=("$@")
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSW_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build build-fuzz -j"$(nproc 2>/dev/null || echo 2)" --target "${targets[@]}"
 
-# One fuzzer a core at a time (libFuzzer runs one process on one core):
-# each writes its own log, printed when it ends; a crash fails the script.
+# As many fuzzers at once as there are cores (a libFuzzer run is one process
+# on one core); each writes its own log, printed when it ends; a crash fails
+# the script.
 mkdir -p build-fuzz/crashes build-fuzz/logs
 fuzz_one() {  # fuzz_one TARGET
   local t=$1 seeds=tests/fuzz/corpus/${1#fuzz_} work=build-fuzz/corpus/$1
