@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # CI's thread step: builds the tree with ThreadSanitizer (cmake -DSW_TSAN=ON)
-# and runs the whole suite under it. Every program that can start a thread
-# is instrumented: the runtime (seamwalk: the loader, V and the workers),
-# the lock-free primitives' tests and every test program linking the
-# runtime. The host tool seamwalk-pack and the test programs that link only
+# and runs the suite under it: every test the sanitizer builds define (the
+# Release-only sweeps are named in tests/firmware.cmake, with why). Every
+# program that can start a thread is instrumented: the runtime (seamwalk:
+# the loader, V and the workers), the lock-free primitives' tests and every
+# test program linking the runtime. The host tool seamwalk-pack and the test programs that link only
 # sw_core/sw_assets and start no thread are built without TSan
 # (cmake/SwSanitizers.cmake, sw_without_tsan): TSan reports races between
 # threads and has nothing to check in them, and instrumented they were most
