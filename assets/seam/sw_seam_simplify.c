@@ -123,7 +123,8 @@ static void heap_remove(simp *S, uint32_t v)
     heap_down(S, S->pos[last]);
 }
 
-/* Recomputes v's cheapest collapse (5.3) and its place in the heap.
+/* Recomputes v's cheapest collapse (5.3) and its place in the heap; with
+ * exact 0, a lower bound of it (marked bounded: made exact at the top).
  *
  * Beyond the paper, whose epsilon is model space only, epsilon is at least
  * the collapse's parameter-space cost (sw_seam_runs.h): a collapse free in
