@@ -117,10 +117,10 @@ static double run_cost(const sw_seam_runs *r, const sw_seam_host *g, uint32_t n,
     /* merged: the run it joins and the other side's run span the new chord */
     const sw_seam_run *m = p->vertex == v2 ? p : q;
     const sw_seam_run *o = p->vertex == v2 ? (q->vertex == v2 ? &r->runs[q->next] : q) : p;
-    const float *uv_m = g->slots[m->slot].uv, *uv_o = g->slots[o->slot].uv;
-    double len, t, off = uv_seg_dist(g->slots[run->slot].uv, uv_m, uv_o, &len, &t);
     if (r->eval && bound)
         return 0.0;
+    const float *uv_m = g->slots[m->slot].uv, *uv_o = g->slots[o->slot].uv;
+    double len, t, off = uv_seg_dist(g->slots[run->slot].uv, uv_m, uv_o, &len, &t);
     if (r->eval)
         return chord_stray(r, g->loops[r->loop_of[n]].surface, uv_m, uv_o, vx[v2].p,
                            vx[o->vertex].p, t);
