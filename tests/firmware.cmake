@@ -128,6 +128,15 @@ if(SW_TSAN)
     ${PROJECT_BINARY_DIR})
 endif()
 
+# The start on huge pages (tests/test_huge_heap.sh): the walk runs with
+# its heap advised for huge pages where THP is "madvise", with other
+# tunables too, and not with the opt-out. Not under the sanitizers, whose
+# allocators replace glibc's heap.
+if(NOT SW_ASAN AND NOT SW_TSAN)
+  add_test(NAME huge_heap COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_huge_heap.sh
+    ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+endif()
+
 # The short soak (issue 10, item 6): the teaset looped for 20 s; resident
 # memory flat after the first loop and no allocation (tests/soak.sh; the
 # 10-minute soak is the same script with --duration 600, README). Under the
