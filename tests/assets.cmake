@@ -17,3 +17,4 @@ endif()
 add_test(NAME test_pack_cli
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_pack_cli.sh $<TARGET_FILE:seamwalk-pack>
           ${SW_SAMPLES} ${SW_SHARED_MODELS})
+sw_host_only_test(test_pack_cli PROGRAMS seamwalk-pack)

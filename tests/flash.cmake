@@ -13,6 +13,9 @@ set_tests_properties(flash_fixture PROPERTIES FIXTURES_SETUP flash_packs)
 add_library(flash_fault_shim SHARED flash_fault_shim.c)
 target_link_libraries(flash_fault_shim PRIVATE ${CMAKE_DL_LIBS})
 set_target_properties(flash_fault_shim PROPERTIES PREFIX "")
+if(SW_TSAN)  # preloaded into seamwalk-flash, which is built without TSan
+  sw_without_tsan(flash_fault_shim)
+endif()
 
 # Power loss: SIGKILL at random calls and random times during install.
 # Fewer trials under the sanitizers, where every run is several times slower.
@@ -24,16 +27,21 @@ endif()
 add_executable(test_flash_power test_flash_power.c)
 target_include_directories(test_flash_power PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 sw_apply_warnings(test_flash_power)
+if(SW_TSAN)  # one thread: it only starts and kills installs
+  sw_without_tsan(test_flash_power)
+endif()
 add_test(NAME test_flash_power COMMAND test_flash_power $<TARGET_FILE:seamwalk-flash>
          $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
          ${CMAKE_CURRENT_BINARY_DIR}/flash_power ${SW_FLASH_TRIALS} 12)
 set_tests_properties(test_flash_power PROPERTIES FIXTURES_REQUIRED flash_packs)
+sw_host_only_test(test_flash_power PROGRAMS test_flash_power seamwalk-flash flash_fault_shim)
 
 # Refusals, I/O faults and the install / status / mark-good / rollback flow.
 add_test(NAME test_flash_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_cli.sh
          $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
          ${CMAKE_CURRENT_BINARY_DIR}/flash_cli)
 set_tests_properties(test_flash_cli PROPERTIES FIXTURES_REQUIRED flash_packs)
+sw_host_only_test(test_flash_cli PROGRAMS seamwalk-flash flash_fault_shim)
 
 # The screen a unit with no valid pack shows, read back from the framebuffer.
 sw_add_test(test_message_screen SOURCES test_message_screen.c LIBS sw_platform sw_core)

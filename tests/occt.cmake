@@ -14,4 +14,5 @@ if(SW_OCCT_FOUND)
   set_tests_properties(test_import_occt test_import_occt_truncations PROPERTIES
     SKIP_RETURN_CODE 77
     ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/occt-lsan.supp:print_suppressions=0")
+  sw_host_only_test(test_import_occt_truncations PROGRAMS test_import_occt)
 endif()

@@ -18,5 +18,7 @@ foreach(mode cli orbit)
             ${PROJECT_SOURCE_DIR} ${SW_SHARED_MODELS})
   set_tests_properties(up_axis_${mode} PROPERTIES SKIP_RETURN_CODE 77)
 endforeach()
+# The cli mode runs the pack tool alone; the orbit walks with seamwalk.
+sw_host_only_test(up_axis_cli PROGRAMS seamwalk-pack)
 # The IMPORT_NOTES section: round trip, refusals, reports into records.
 sw_add_test(test_pack_notes SOURCES test_pack_notes.c LIBS sw_assets sw_core)

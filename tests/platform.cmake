@@ -1,7 +1,7 @@
 # tests of the platform area: headless GLES2 rendering and PNG output
 sw_add_test(test_render SOURCES test_render.c LIBS sw_platform sw_core)
 # test_png decodes what it wrote with stb_image, compiled in the test itself.
-sw_add_test(test_png SOURCES test_png.c LIBS sw_platform sw_core sw_stb)
+sw_add_test(test_png SOURCES test_png.c LIBS sw_png sw_core sw_stb)
 # The display interface (issue 11 item 1): auto's choice, the errors of the
 # displays this machine lacks, headless through the interface; the KMS
 # path's pure parts; the window key queue.

@@ -12,3 +12,4 @@ add_test(NAME test_gen_parts
 # they took over 300 s (74 s and 104 s in Release there).
 set_tests_properties(test_gen test_gen_parts PROPERTIES TIMEOUT 900)
 set_tests_properties(test_gen_parts PROPERTIES SKIP_RETURN_CODE 77)
+sw_host_only_test(test_gen_parts PROGRAMS seamwalk-pack)

@@ -2,7 +2,8 @@
 # The TSan step checks what it claims (tests/run-tsan.sh): a planted race
 # (tsan_race) is reported and fails with TSan's exit code 66; the runtime
 # and a test program of the threaded walk carry TSan's instrumentation; the
-# host tool, which starts no thread, is built without it (sw_without_tsan).
+# host tool and the installer, which start no thread, are built without it
+# (sw_without_tsan), and so are the programs of the tests the step leaves out.
 #   tsan_check.sh BUILD_DIR
 set -uo pipefail
 build=$1
@@ -20,5 +21,18 @@ for program in firmware/seamwalk tests/test_handoff tests/test_steal_queue; do
   instrumented "$build/$program" || fail "$program is not built with TSan"
 done
 echo "ok   seamwalk, test_handoff and test_steal_queue are instrumented"
-instrumented "$build/assets/seamwalk-pack" && fail "seamwalk-pack is built with TSan"
-echo "ok   seamwalk-pack is built without TSan (it starts no thread)"
+for program in assets/seamwalk-pack firmware/seamwalk-flash; do
+  instrumented "$build/$program" && fail "$program is built with TSan"
+done
+echo "ok   seamwalk-pack and seamwalk-flash are built without TSan (they start no thread)"
+# The step leaves out the tests labelled host_only (sw_host_only_test,
+# tests/CMakeLists.txt); their test programs must be uninstrumented too.
+for program in tests/test_pack_write tests/test_import_occt tests/test_flash_power; do
+  [ -x "$build/$program" ] || continue
+  instrumented "$build/$program" && fail "$program is built with TSan but labelled host_only"
+done
+host_only=$(ctest --test-dir "$build" -N -L host_only)
+grep -q " test_pack_cli$" <<< "$host_only" || fail "test_pack_cli is not labelled host_only"
+grep -q " walk_threads$" <<< "$host_only" &&
+  fail "walk_threads, which runs the threaded walk, is labelled host_only"
+echo "ok   the host_only tests run uninstrumented programs, the threaded walk is not one of them"
