@@ -394,3 +394,47 @@ void sw_bezier_subpatch(const sw_bezier_patch *patch, double u0, double u1, doub
         }
     }
 }
+
+/* Both halves of a curve at t = 1/2: left[r] and right[n - r] are the ends
+ * of the r-th row of the de Casteljau triangle. */
+static void curve_halves(double pts[][4], int n, double left[][4], double right[][4])
+{
+    for (int r = 0; r <= n; r++) {
+        memcpy(left[r], pts[0], sizeof left[r]);
+        memcpy(right[n - r], pts[n - r], sizeof right[n - r]);
+        for (int i = 0; i < n - r; i++)
+            for (int k = 0; k < 4; k++)
+                pts[i][k] = 0.5 * (pts[i][k] + pts[i + 1][k]);
+    }
+}
+
+void sw_bezier_quarters(const sw_bezier_patch *patch, double *const ctrl_out[4])
+{
+    assert(patch && ctrl_out);
+    int n = patch->degree_u, m = patch->degree_v;
+    double half[2][SW_BEZIER_MAX_ORDER][SW_BEZIER_MAX_ORDER][4]; /* [u half][j][i] */
+    for (int j = 0; j <= m; j++) {
+        double row[SW_BEZIER_MAX_ORDER][4];
+        for (int i = 0; i <= n; i++)
+            homogeneous_ctrl(patch, i, j, row[i]);
+        curve_halves(row, n, half[0][j], half[1][j]);
+    }
+    for (int a = 0; a < 2; a++) {   /* the u half; its v halves are quarters a and a + 2 */
+        for (int i = 0; i <= n; i++) {
+            double col[SW_BEZIER_MAX_ORDER][4], low[SW_BEZIER_MAX_ORDER][4];
+            double high[SW_BEZIER_MAX_ORDER][4];
+            for (int j = 0; j <= m; j++)
+                memcpy(col[j], half[a][j][i], sizeof col[j]);
+            curve_halves(col, m, low, high);
+            for (int j = 0; j <= m; j++) {
+                for (int b = 0; b < 2; b++) {
+                    const double *h = b ? high[j] : low[j];
+                    double *c = ctrl_out[a + 2 * b] +
+                                ((size_t)j * (size_t)(n + 1) + (size_t)i) * 4;
+                    c[0] = h[0] / h[3], c[1] = h[1] / h[3], c[2] = h[2] / h[3];
+                    c[3] = patch->rational ? h[3] : 1.0;
+                }
+            }
+        }
+    }
+}

@@ -84,4 +84,11 @@ sw_box sw_bezier_control_box(const sw_bezier_patch *patch);
 void sw_bezier_subpatch(const sw_bezier_patch *patch, double u0, double u1, double v0, double v1,
                         double *ctrl_out);
 
+/* The four quarters of the patch, split at u = 1/2 and v = 1/2, each as
+ * sw_bezier_subpatch writes one: quarter k (0..3) is the upper half in u
+ * when k & 1 and in v when k & 2. The same as sw_bezier_subpatch on each
+ * quarter, but one de Casteljau pass per row and column of the patch
+ * instead of two per row and column of each quarter. */
+void sw_bezier_quarters(const sw_bezier_patch *patch, double *const ctrl_out[4]);
+
 #endif

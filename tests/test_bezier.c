@@ -373,6 +373,34 @@ static void test_subpatch_matches_original_on_subrect(void)
     }
 }
 
+/* Each quarter (u upper half when k & 1, v when k & 2) against the
+ * sub-patch of the same quarter: the same control points up to rounding,
+ * and (a check that can fail) not those of another quarter. */
+static void test_quarters_match_subpatches(void)
+{
+    double ctrl[MAXN * MAXN * 4], sub[MAXN * MAXN * 4], quarter[4][MAXN * MAXN * 4];
+    double *const out[4] = {quarter[0], quarter[1], quarter[2], quarter[3]};
+    for (int trial = 0; trial < 100; trial++) {
+        int n = 1 + (int)(sw_test_random() * 15), m = 1 + (int)(sw_test_random() * 15);
+        sw_bezier_patch p;
+        random_patch(ctrl, n, m, trial & 1, &p);
+        sw_bezier_quarters(&p, out);
+        size_t doubles = 4 * (size_t)(n + 1) * (size_t)(m + 1);
+        for (int k = 0; k < 4; k++) {
+            double u0 = (k & 1) ? 0.5 : 0, v0 = (k & 2) ? 0.5 : 0;
+            sw_bezier_subpatch(&p, u0, u0 + 0.5, v0, v0 + 0.5, sub);
+            double same = 0, other = 0;
+            for (size_t i = 0; i < doubles; i++) {
+                same = fmax(same, fabs(sub[i] - quarter[k][i]) / fmax(1, fabs(sub[i])));
+                other = fmax(other, fabs(sub[i] - quarter[k ^ 3][i]));
+            }
+            SW_CHECK_MSG(same < 1e-12, "degree %d x %d rational %d quarter %d: off by %g", n, m,
+                         p.rational, k, same);
+            SW_CHECK_MSG(other > 1e-9, "degree %d x %d: quarters %d and %d alike", n, m, k, k ^ 3);
+        }
+    }
+}
+
 int main(void)
 {
     SW_RUN(test_eval_matches_long_double_reference);
@@ -388,5 +416,6 @@ int main(void)
     SW_RUN(test_patch_from_float_copies);
     SW_RUN(test_eval_order_leaves_unrequested_zero);
     SW_RUN(test_subpatch_matches_original_on_subrect);
+    SW_RUN(test_quarters_match_subpatches);
     return sw_test_finish();
 }

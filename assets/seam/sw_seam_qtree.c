@@ -25,6 +25,7 @@ struct sw_seam_qnode {
     sw_seam_bounds b;       /* in the surface's (u, v) units; straddles unused */
     size_t child;           /* first of four, or NO_CHILD */
     int patch, depth, flat;
+    int measured;           /* b and flat hold; else measured when a query first reaches it */
 };
 
 static size_t patch_doubles(const sw_seam_qtree *qt)
@@ -44,12 +45,11 @@ static const double *row_range(const sw_seam_qtree *qt, int b)
     return qt->params + 2 * qt->pieces_u + 2 * b;
 }
 
-/* The cell's bounds: sub-patch, hodograph bounds, centre derivatives. */
-static sw_status node_measure(const sw_seam_qtree *qt, sw_seam_qnode *n, sw_error *err)
+/* The cell's bounds from its sub-patch's control points (sub, the patch's
+ * layout): hodograph bounds, centre derivatives. */
+static sw_status node_measure(const sw_seam_qtree *qt, sw_seam_qnode *n, const double *sub,
+                              sw_error *err)
 {
-    double sub[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
-    sw_bezier_patch whole = patch_view(qt, n->patch);
-    sw_bezier_subpatch(&whole, n->s0, n->s1, n->t0, n->t1, sub);
     sw_bezier_patch view = {qt->degree_u, qt->degree_v, 1, sub};
     sw_deriv_bounds m;
     sw_status st = sw_bezier_second_deriv_bounds(&view, &m, err);
@@ -67,10 +67,31 @@ static sw_status node_measure(const sw_seam_qtree *qt, sw_seam_qnode *n, sw_erro
      * chord term of sw_seam_flatten.c with |du| <= w, |dv| <= h). */
     n->flat = (m.uu + 2 * m.uv + m.vv) / 8 <= qt->flat_tol;
     n->child = NO_CHILD;
+    n->measured = 1;
     return SW_OK;
 }
 
-static sw_status node_split(sw_seam_qtree *qt, size_t index, sw_error *err)
+/* A child its split left unmeasured, from its own sub-patch. */
+static sw_status node_measure_alone(const sw_seam_qtree *qt, sw_seam_qnode *n, sw_error *err)
+{
+    double sub[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
+    sw_bezier_patch whole = patch_view(qt, n->patch);
+    sw_bezier_subpatch(&whole, n->s0, n->s1, n->t0, n->t1, sub);
+    return node_measure(qt, n, sub, err);
+}
+
+static int outside(const sw_seam_qnode *n, const double lb[4])
+{
+    return n->s0 > lb[1] || n->s1 < lb[0] || n->t0 > lb[3] || n->t1 < lb[2];
+}
+
+/* The four children of a leaf; those the query's box lb reaches measured
+ * now, from the quarters of the leaf's sub-patch (sw_bezier_quarters: one
+ * sub-patch from the whole patch a split, where each child's own took four
+ * times the de Casteljau passes), the others when a query first reaches
+ * them (a trim curve crosses few of them). Measuring was most of a pack
+ * build: the parts showroom, the OCCT link rods. */
+static sw_status node_split(sw_seam_qtree *qt, size_t index, const double lb[4], sw_error *err)
 {
     sw_seam_qnode *nodes = sw_grow(qt->nodes, &qt->node_capacity, qt->node_count + 4,
                                    sizeof *nodes);
@@ -79,14 +100,23 @@ static sw_status node_split(sw_seam_qtree *qt, size_t index, sw_error *err)
                             qt->node_count);
     qt->nodes = nodes;
     sw_seam_qnode p = qt->nodes[index];
+    enum { NET = 4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER };
+    double parent[NET], quarter[4][NET];
+    double *const quarters[4] = {quarter[0], quarter[1], quarter[2], quarter[3]};
+    sw_bezier_patch cell = patch_view(qt, p.patch);
+    if (p.depth > 0) {
+        sw_bezier_subpatch(&cell, p.s0, p.s1, p.t0, p.t1, parent);
+        cell.ctrl = parent;
+    }
+    sw_bezier_quarters(&cell, quarters);
     double sm = 0.5 * (p.s0 + p.s1), tm = 0.5 * (p.t0 + p.t1);
     size_t first = qt->node_count;
     for (int k = 0; k < 4; k++) {
         sw_seam_qnode *c = &qt->nodes[first + (size_t)k];
         *c = (sw_seam_qnode){.s0 = (k & 1) ? sm : p.s0, .s1 = (k & 1) ? p.s1 : sm,
                              .t0 = (k & 2) ? tm : p.t0, .t1 = (k & 2) ? p.t1 : tm,
-                             .patch = p.patch, .depth = p.depth + 1};
-        sw_status st = node_measure(qt, c, err);
+                             .patch = p.patch, .depth = p.depth + 1, .child = NO_CHILD};
+        sw_status st = outside(c, lb) ? SW_OK : node_measure(qt, c, quarter[k], err);
         if (st != SW_OK)
             return st;
     }
@@ -131,7 +161,7 @@ sw_status sw_seam_qtree_init(sw_seam_qtree *qt, const sw_nurbs_surface *surface,
     st = sw_nurbs_surface_to_bezier(surface, qt->ctrl, qt->params, err);
     for (size_t p = 0; st == SW_OK && p < patches; p++) {
         qt->nodes[p] = (sw_seam_qnode){.s0 = 0, .s1 = 1, .t0 = 0, .t1 = 1, .patch = (int)p};
-        st = node_measure(qt, &qt->nodes[p], err);
+        st = node_measure(qt, &qt->nodes[p], patch_view(qt, (int)p).ctrl, err);
         qt->node_count++;
     }
     if (st != SW_OK) {
@@ -153,11 +183,14 @@ static void bounds_max(sw_seam_bounds *acc, const sw_seam_bounds *b)
 static sw_status visit(sw_seam_qtree *qt, size_t index, const double lb[4], sw_seam_bounds *acc,
                        sw_error *err)
 {
-    const sw_seam_qnode *n = &qt->nodes[index];
-    if (n->s0 > lb[1] || n->s1 < lb[0] || n->t0 > lb[3] || n->t1 < lb[2])
+    sw_seam_qnode *n = &qt->nodes[index];
+    if (outside(n, lb))
         return SW_OK;
+    sw_status st = n->measured ? SW_OK : node_measure_alone(qt, n, err);
+    if (st != SW_OK)
+        return st;
     if (n->child == NO_CHILD && !n->flat && n->depth < MAX_DEPTH) {
-        sw_status st = node_split(qt, index, err);
+        st = node_split(qt, index, lb, err);   /* may move the nodes */
         if (st != SW_OK)
             return st;
     }
@@ -167,7 +200,7 @@ static sw_status visit(sw_seam_qtree *qt, size_t index, const double lb[4], sw_s
         return SW_OK;
     }
     for (size_t k = 0; k < 4; k++) {
-        sw_status st = visit(qt, child + k, lb, acc, err);
+        st = visit(qt, child + k, lb, acc, err);
         if (st != SW_OK)
             return st;
     }
