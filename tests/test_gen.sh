@@ -94,24 +94,27 @@ procedural() {
 
 parts() {
   [ -d "$models" ] || { echo "skip: no models folder '$models'"; exit 77; }
+  # SW_GEN_PARTS_DIVISOR (the sanitizer builds: 4) divides the showrooms'
+  # sizes: the same copies and checks, a quarter of the patches to build.
+  local d=${SW_GEN_PARTS_DIVISOR:-1}
   local teapot=$models/newell_teapot.txt
   # The folder is there: a model missing from it is a failure, not a skip.
   check "the models folder has the teapot, the bearing and the screw" \
     test -f "$teapot" -a -f "$models/occt_bearing.iges" -a -f "$models/occt_screw.step"
   [ -f "$teapot" ] || { echo "$checks checks, $failures failed"; exit 1; }
-  check "copies of the Newell teapot and objects: 2000 patches" \
-    builds_to 2000 teapots --part "$teapot" --seed 3
+  check "copies of the Newell teapot and objects: $((2000 / d)) patches" \
+    builds_to $((2000 / d)) teapots --part "$teapot" --seed 3
   check "the teapot is copied" grep -q "^file = .*newell_teapot.txt$" "$work/teapots.ini"
   local iges=$models/occt_bearing.iges
-  check "copies of an IGES part (trimmed) and the teapot: 3000 patches" \
-    builds_to 3000 bearings --part "$teapot" --part "$iges" --seed 5
+  check "copies of an IGES part (trimmed) and the teapot: $((3000 / d)) patches" \
+    builds_to $((3000 / d)) bearings --part "$teapot" --part "$iges" --seed 5
   local step=$models/occt_screw.step
   "$pack" build "$step" -o "$work/screw.swpack" > "$work/screw.out" 2>&1
   if grep -q "built without STEP support" "$work/screw.out"; then
     echo "skip STEP parts: this seamwalk-pack is built without STEP support"
   else
-    check "copies of a STEP part, an IGES part and the teapot: 4000 patches" \
-      builds_to 4000 mixed --part "$teapot" --part "$iges" --part "$step" --seed 4
+    check "copies of a STEP part, an IGES part and the teapot: $((4000 / d)) patches" \
+      builds_to $((4000 / d)) mixed --part "$teapot" --part "$iges" --part "$step" --seed 4
     check "a STEP part is named scene part/product, and no part is empty" \
       python3 - "$work/mixed.swpack" "$pack" <<'PY'
 import json, subprocess, sys
