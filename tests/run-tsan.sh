@@ -11,7 +11,7 @@
 # threads and has nothing to check in them. The tests that run nothing
 # else (label host_only, sw_host_only_test in tests/CMakeLists.txt) are
 # left out: they would run the same uninstrumented code as the Release
-# step, for about 80 s of CI's time. A report fails the test (TSan exits 66).
+# step. A report fails the test (TSan exits 66).
 #   run-tsan.sh [--threaded] [BUILD_DIR]   (default build-tsan)
 # --threaded runs only the threaded tests, a few minutes: the lock-free
 # primitives (test_steal_queue, test_handoff), the threaded walk end to end
