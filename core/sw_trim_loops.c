@@ -103,16 +103,51 @@ static uint32_t lost(const sw_trim_point *in, uint32_t dropped, uint32_t kept_a,
     return in[dropped].id != in[kept_a].id && in[dropped].id != in[kept_b].id;
 }
 
+/* Is the triangle a lost point d cuts off with its kept neighbours a and b
+ * flat in space, to float rounding of their coordinates? The border then
+ * runs a -> b where it ran a -> d -> b, and the meshes across a-d and d-b
+ * cover that line too: no gap opens, only a T-vertex (as where a sliver
+ * surface collapses to a line at a coarse seam state). With a == b (a near
+ * repeat, whose next neighbour is not known yet) only d on a is flat. */
+static int flat(const sw_trim_point *in, uint32_t d, uint32_t a, uint32_t b)
+{
+    const float *p[3] = {in[a].p, in[d].p, in[b].p};
+    double big = 0, e[3][3], longest = 0;
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 3; k++) {
+            big = fmax(big, fabs((double)p[i][k]));
+            e[i][k] = (double)p[(i + 1) % 3][k] - p[i][k];
+        }
+    for (int i = 0; i < 3; i++)
+        longest = fmax(longest, sqrt(e[i][0] * e[i][0] + e[i][1] * e[i][1] + e[i][2] * e[i][2]));
+    double tol = 8.0 * FLT_EPSILON * big; /* as the drawn-seam check's */
+    if (longest <= tol || a == b)
+        return longest <= tol;
+    double x = e[0][1] * e[1][2] - e[0][2] * e[1][1], y = e[0][2] * e[1][0] - e[0][0] * e[1][2],
+           z = e[0][0] * e[1][1] - e[0][1] * e[1][0];
+    return sqrt(x * x + y * y + z * z) / longest <= tol; /* the height over the longest side */
+}
+
+/* Counts dropped point d (between kept a and b) into result. */
+static void count_drop(sw_trim_tess_result *res, const sw_trim_point *in, uint32_t d, uint32_t a,
+                       uint32_t b)
+{
+    if (!lost(in, d, a, b))
+        return;
+    res->dropped_points++;
+    res->dropped_flat += (uint32_t)flat(in, d, a, b);
+}
+
 /* Drops spike tips until none is left; returns the new count. */
 static uint32_t remove_spikes(const sw_trim_point *in, sw_tt_point *p, uint32_t count,
-                              uint32_t *dropped)
+                              sw_trim_tess_result *res)
 {
     for (uint32_t i = 0; count >= 3 && i < count;) {
         if (!spike(&p[(i + count - 1) % count], &p[i], &p[(i + 1) % count])) {
             i++;
             continue;
         }
-        *dropped += lost(in, p[i].src, p[(i + count - 1) % count].src, p[(i + 1) % count].src);
+        count_drop(res, in, p[i].src, p[(i + count - 1) % count].src, p[(i + 1) % count].src);
         memmove(&p[i], &p[i + 1], sizeof *p * (count - i - 1));
         count--;
         i = i > 0 ? i - 1 : 0; /* the point before may have become a tip */
@@ -133,6 +168,7 @@ static void copy_loops(tt_ctx *c, const double dom[4])
         uint32_t count = distinct_points(l, k), first = n;
         if (count < 3)
             continue;
+        const uint32_t dropped = c->res->dropped_points, flat = c->res->dropped_flat;
         uint32_t end = l->loop_first[k + 1];
         while (end > l->loop_first[k] + 1 &&
                same_uv(&l->points[end - 1], &l->points[l->loop_first[k]]))
@@ -142,8 +178,8 @@ static void copy_loops(tt_ctx *c, const double dom[4])
             u = u < dom[0] ? dom[0] : u > dom[1] ? dom[1] : u;
             v = v < dom[2] ? dom[2] : v > dom[3] ? dom[3] : v;
             if (n > first && fabs(u - c->pts[n - 1].u) + fabs(v - c->pts[n - 1].v) < eps) {
-                c->res->dropped_points += !same_uv(&l->points[i], &l->points[i - 1]) &&
-                                          lost(l->points, i, c->pts[n - 1].src, c->pts[n - 1].src);
+                if (!same_uv(&l->points[i], &l->points[i - 1]))
+                    count_drop(c->res, l->points, i, c->pts[n - 1].src, c->pts[n - 1].src);
                 continue;
             }
             sw_tt_point *p = &c->pts[n++];
@@ -152,14 +188,17 @@ static void copy_loops(tt_ctx *c, const double dom[4])
         while (n - first > 1 && fabs(c->pts[n - 1].u - c->pts[first].u) +
                                         fabs(c->pts[n - 1].v - c->pts[first].v) < eps) {
             n--;
-            c->res->dropped_points += lost(l->points, c->pts[n].src, c->pts[n - 1].src,
-                                           c->pts[first].src);
+            count_drop(c->res, l->points, c->pts[n].src, c->pts[n - 1].src, c->pts[first].src);
         }
-        count = remove_spikes(l->points, c->pts + first, n - first, &c->res->dropped_points);
+        count = remove_spikes(l->points, c->pts + first, n - first, c->res);
         n = first + count;
         if (count < 3 || loop_area(c->pts, first, count) == 0) {
             n = first;
             c->res->skipped_loops++;
+            if (sw_tt_loop_spans_space(l, k)) { /* drawn as a fan: its points are all in */
+                c->collapsed[c->collapsed_count++] = k;
+                c->res->dropped_points = dropped, c->res->dropped_flat = flat;
+            }
             continue;
         }
         c->loops[m].first = first, c->loops[m].count = count;
@@ -268,7 +307,9 @@ sw_status sw_tt_prepare_loops(tt_ctx *c, const double dom[4])
     c->loops = sw_arena_alloc(c->arena, sizeof *c->loops * (valid + 1), 8);
     c->stamp = sw_arena_alloc(c->arena, sizeof(uint32_t) * (total + 1), 4);
     c->seam_out = sw_arena_alloc(c->arena, sizeof(uint32_t) * (total + 1), 4);
-    if (!c->pts || !c->loops || !c->stamp || !c->seam_out)
+    c->collapsed = sw_arena_alloc(c->arena, sizeof(uint32_t) * (valid + 1), 4);
+    c->collapsed_count = 0;
+    if (!c->pts || !c->loops || !c->stamp || !c->seam_out || !c->collapsed)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for %u loop "
                             "points", (unsigned)total);
     copy_loops(c, dom);

@@ -175,8 +175,10 @@ static uint32_t hash_key(double u, double v, uint32_t kind)
 uint32_t sw_tt_patch_at(const tt_ctx *c, double u, double v)
 {
     const tt_grid *g = &c->grid;
-    uint32_t p = sw_tt_knot_patch(c, sw_tt_interval(g->ku, g->nku, u),
-                                  sw_tt_interval(g->kv, g->nkv, v));
+    uint32_t p = SW_TT_NONE;
+    if (g->nku >= 2 && g->nkv >= 2) /* else no grid yet: every loop collapsed */
+        p = sw_tt_knot_patch(c, sw_tt_interval(g->ku, g->nku, u),
+                             sw_tt_interval(g->kv, g->nkv, v));
     if (p != SW_TT_NONE)
         return p;
     uint32_t best = 0;
@@ -229,6 +231,18 @@ static void put_border(tt_ctx *c, uint32_t i, uint32_t src, double u, double v)
         c->src_has_normal[src] = 1;
     }
     put_vertex(c, i, tp->p, *normal, u, v, tp->id);
+}
+
+sw_status sw_tt_new_loop_vertex(tt_ctx *c, uint32_t src, sw_vec3 *normal, uint32_t *out)
+{
+    sw_status s = new_vertex(c, out);
+    if (s != SW_OK)
+        return s;
+    const sw_trim_point *tp = &c->in_loops->points[src];
+    sw_vec3 pos;
+    sw_tt_eval_at(c, sw_tt_patch_at(c, tp->uv[0], tp->uv[1]), tp->uv[0], tp->uv[1], &pos, normal);
+    put_vertex(c, *out, tp->p, *normal, tp->uv[0], tp->uv[1], tp->id);
+    return SW_OK;
 }
 
 /* A crossing on its seam segment (crossing_on_segment): the chord point
@@ -381,6 +395,8 @@ static sw_status run(tt_ctx *c)
     if (c->trims.loop_count > 0 &&
         ((s = sw_tt_build_grid(c)) != SW_OK || (s = sw_tt_bucket(c)) != SW_OK ||
          (s = sw_tt_sweep(c)) != SW_OK))
+        return s;
+    if ((s = sw_tt_fan_collapsed(c)) != SW_OK)
         return s;
     c->res->vertex_count = c->vertex_count;
     c->res->index_count = c->index_count;

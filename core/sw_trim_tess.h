@@ -119,7 +119,10 @@ typedef struct sw_trim_point {
  * is dropped, as is a point within 1e-6 of the domain's size of the previous
  * one (float zig-zags of tiny trim curves; result->dropped_points). A loop
  * with fewer than three distinct points or no area encloses nothing and is
- * skipped. */
+ * skipped; one with no area in (u, v) whose positions span area in space (a
+ * face smaller than a coarse bound, its corners collinear in (u, v)) is
+ * drawn as a fan over its positions instead (result->fanned_loops), so the
+ * borders across its seams still meet (core/sw_trim_fan.c). */
 typedef struct sw_trim_loops {
     const sw_trim_point *points;
     const uint32_t *loop_first;  /* loop_count + 1 entries, non-decreasing */
@@ -172,9 +175,14 @@ typedef struct sw_trim_tess_result {
     uint32_t capped_count;               /* sub-patches whose count max_depth or the vertex
                                             limit capped (their bound exceeds error) */
     uint32_t skipped_loops;              /* loops with no area, or holes left inside a cell */
+    uint32_t fanned_loops;               /* of them, loops with no area in (u, v) but some in
+                                            space, drawn as fans of their points */
     uint32_t dropped_points;             /* loop points dropped (spike tips, near repeats)
                                             whose id no kept neighbour carries: not in
                                             the output */
+    uint32_t dropped_flat;               /* of them, those whose triangle with their kept
+                                            neighbours is flat in space (to float
+                                            rounding): no gap, the borders across meet */
     uint32_t fallback_ears;              /* clipping steps taken without a valid ear: 0 for
                                             valid loops */
     double error_bound;                  /* the largest cell bound: <= error unless capped */

@@ -84,6 +84,8 @@ typedef struct tt_ctx {
     uint32_t *line_ids[2];   /* vertex of grid point (col, line), slot line & 1 */
     uint32_t vertex_count, index_count;
     sw_trim_tess_result *res;
+    uint32_t *collapsed;     /* caller's loops with no area in (u, v) but some in space */
+    uint32_t collapsed_count;
 } tt_ctx;
 
 static inline size_t sw_tt_ctrl_doubles(int n, int m)
@@ -165,6 +167,19 @@ static inline void sw_tt_put_triangle(tt_ctx *c, uint32_t a, uint32_t b, uint32_
             o->indices[c->index_count + k] = (uint16_t)(o->base_vertex + v[k]);
     c->index_count += 3;
 }
+/* A new output vertex at the caller's loop point src: its position, the
+ * surface's normal at its (u, v) (also into *normal), its id. Needs no grid
+ * (core/sw_trim_tess.c). */
+sw_status sw_tt_new_loop_vertex(tt_ctx *c, uint32_t src, sw_vec3 *normal, uint32_t *out);
+
+/* Collapsed loops (core/sw_trim_fan.c): does caller's loop k span area in
+ * space (its points off one line by more than float rounding)? */
+int sw_tt_loop_spans_space(const sw_trim_loops *l, uint32_t k);
+
+/* Each collapsed loop as a fan over its points' positions, turned with the
+ * surface's normal. */
+sw_status sw_tt_fan_collapsed(tt_ctx *c);
+
 /* The vertex table for at most `hashed` crossings and part corners. */
 sw_status sw_tt_init_vertices(tt_ctx *c, uint32_t hashed);
 uint32_t sw_tt_patch_at(const tt_ctx *c, double u, double v);

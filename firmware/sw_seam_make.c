@@ -86,11 +86,14 @@ static int8_t snorm8(float x)
 
 /* Border vertices must be their seam vertex's position bit for bit (the
  * neighbour across the seam draws the same float), and every loop point must
- * be in the mesh: each violation is a crack. */
+ * be in the mesh: each violation is a crack. A dropped point whose triangle
+ * with its kept neighbours is flat in space leaves no gap, only a T-vertex
+ * (sw_trim_tess_result.dropped_flat): counted with the crossings. */
 static uint32_t count_cracks(const sw_seam_maker *k, const sw_trim_tess_result *t,
                              uint32_t *crossings)
 {
-    uint32_t cracks = t->dropped_points;
+    uint32_t cracks = t->dropped_points - t->dropped_flat;
+    *crossings += t->dropped_flat;
     for (uint32_t i = 0; i < t->vertex_count; i++) {
         *crossings += k->ids[i] == SW_TRIM_CROSSING;
         if (k->ids[i] == SW_TRIM_INTERIOR || k->ids[i] == SW_TRIM_CROSSING)

@@ -192,10 +192,12 @@ typedef struct sw_seam_frame {
     uint64_t triangles;           /* the tessellations', the fill fans not counted: */
     uint64_t fill_triangles;      /* zero-area fans over seam crossings (sw_seam_fill.h) */
     uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
-                                     plus loop points the tessellator dropped, plus every
+                                     plus loop points the tessellator dropped off the
+                                     border's line (a gap; on it, a crossing), plus every
                                      border point of a visible surface not drawn (a hole) */
-    uint64_t crossings;           /* border vertices on a seam segment between its vertices
-                                     (T-vertices on a straight edge, not gaps) */
+    uint64_t crossings;           /* border vertices on a seam segment between its vertices,
+                                     and loop points dropped where the border stays on
+                                     their line (T-vertices on a straight edge, not gaps) */
     double tess_ms;               /* of the draw, spent tessellating and uploading */
     uint64_t cull_box_tests;      /* of the select: patch and tree boxes tested against the
                                      frustum (sw_cull_tree.h) */

@@ -42,13 +42,16 @@ static void test_bad_inputs(void)
     add_point(&l, &s, 0.6, 0.7);
     end_loop(&l);
     SW_CHECK(call(&s, &l, 1e-3, &a, &tris) == SW_OK && tris == 0);
-    /* Collinear (no area) and repeated points. */
+    /* Collinear (no area) and repeated points, positions on one line too
+     * (on the surface they would span a triangle: test_trim_tess_collapse.c). */
     begin_loops(&l);
     add_point(&l, &s, 0.1, 0.1);
     add_point(&l, &s, 0.5, 0.5);
     add_point(&l, &s, 0.9, 0.9);
     add_point(&l, &s, 0.9, 0.9);
     end_loop(&l);
+    for (uint32_t i = 0; i < l.n; i++)
+        l.pts[i].p[0] = l.pts[i].p[1] = l.pts[i].p[2] = l.pts[i].uv[0];
     SW_CHECK(call(&s, &l, 1e-3, &a, &tris) == SW_OK && tris == 0);
     /* Outside the domain. */
     begin_loops(&l);

@@ -2,6 +2,7 @@
 sw_add_test(test_trim_tess SOURCES test_trim_tess.c LIBS sw_core)
 sw_add_test(test_trim_tess_errors SOURCES test_trim_tess_errors.c LIBS sw_core)
 sw_add_test(test_trim_tess_seams SOURCES test_trim_tess_seams.c LIBS sw_core)
+sw_add_test(test_trim_tess_collapse SOURCES test_trim_tess_collapse.c LIBS sw_core)
 # The same on every trimmed surface of the shared IGES models (skipped, exit
 # 77, when none is present).
 sw_add_test(test_trim_tess_models SOURCES test_trim_tess_models.c LIBS sw_assets sw_core
