@@ -43,8 +43,9 @@ size_t sw_seam_select_arena_bytes(const sw_seam_graph *g)
     if (largest > (uint64_t)(SIZE_MAX / 64))
         return SIZE_MAX;   /* 32-bit size_t: more than the address space */
     size_t v = g->vertex_count, o = g->original_count;
-    return worst(v, 1) * 2 + worst(v, 4) * 4 + worst(o, 4) * 2 + worst(g->slot_count, 4) +
-           worst((size_t)g->collapse_count + 1, 4) + worst(g->surface_count, 1);
+    return worst(v, 1) * 2 + worst(v, 4) * 4 + worst(o, 4) * 2 + worst(o + 1, 4) +
+           worst(g->slot_count, 4) * 3 + worst((size_t)g->collapse_count + 1, 4) +
+           worst(g->surface_count, 1);
 }
 
 static void *take(sw_arena *arena, size_t count, size_t size, int *failed)
@@ -68,7 +69,10 @@ static sw_status take_arrays(sw_seam_select *s, sw_arena *arena, sw_error *err)
     s->queue = take(arena, v, 4, &failed);
     s->leaf_order = take(arena, o, 4, &failed);
     s->shown = take(arena, o, 4, &failed);
-    s->slot_loop = take(arena, g->slot_count, 4, &failed);
+    s->leaf_slots = take(arena, o + 1, 4, &failed);
+    s->slot_surface = take(arena, g->slot_count, 4, &failed);
+    s->slot_prev = take(arena, g->slot_count, 4, &failed);
+    s->slot_next = take(arena, g->slot_count, 4, &failed);
     s->stack = take(arena, (size_t)g->collapse_count + 1, 4, &failed);
     s->surface_changed = take(arena, g->surface_count, 1, &failed);
     if (failed)
@@ -106,21 +110,39 @@ static void build_leaf_ranges(sw_seam_select *s)
         s->leaf_order[s->leaf_lo[o]] = o;
 }
 
+/* The slots in leaf order (leaf_slots, slot_surface, slot_prev, slot_next),
+ * filled loop by loop: each original's entries in the order of its slots.
+ * The queue (unused until an update) holds each original's next entry. */
+static void build_leaf_slots(sw_seam_select *s)
+{
+    const sw_seam_graph *g = &s->graph;
+    s->leaf_slots[0] = 0;
+    for (uint32_t p = 0; p < g->original_count; p++)
+        s->leaf_slots[p + 1] = s->leaf_slots[p] + g->vertices[s->leaf_order[p]].slot_ref_count;
+    uint32_t *next_entry = s->queue;
+    for (uint32_t o = 0; o < g->original_count; o++)
+        next_entry[o] = s->leaf_slots[s->leaf_lo[o]];
+    for (uint32_t l = 0; l < g->loop_count; l++) {
+        const sw_seam_loop *loop = &g->loops[l];
+        const sw_seam_slot *slots = g->slots + loop->first_slot;
+        uint32_t n = loop->slot_count;
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t e = next_entry[slots[i].vertex]++;
+            s->slot_surface[e] = loop->surface;
+            s->slot_prev[e] = s->leaf_lo[slots[i ? i - 1 : n - 1].vertex];
+            s->slot_next[e] = s->leaf_lo[slots[i + 1 < n ? i + 1 : 0].vertex];
+        }
+    }
+}
+
 /* Marks the surfaces of the slots under v as changed and shows x in them. */
 static void show(sw_seam_select *s, uint32_t v, uint32_t x)
 {
-    const sw_seam_graph *g = &s->graph;
     uint32_t lo = s->leaf_lo[v], hi = lo + s->leaf_count[v];
-    for (uint32_t p = lo; p < hi; p++) {
-        uint32_t o = s->leaf_order[p];
-        s->shown[o] = x;
-        const sw_seam_vertex *ov = &g->vertices[o];
-        for (uint32_t r = 0; r < ov->slot_ref_count; r++) {
-            uint32_t loop = s->slot_loop[g->slot_refs[ov->first_slot_ref + r]];
-            if (loop != SW_SEAM_NONE)
-                s->surface_changed[g->loops[loop].surface] = 1;
-        }
-    }
+    for (uint32_t p = lo; p < hi; p++)
+        s->shown[p] = x;
+    for (uint32_t e = s->leaf_slots[lo]; e < s->leaf_slots[hi]; e++)
+        s->surface_changed[s->slot_surface[e]] = 1;
 }
 
 sw_status sw_seam_select_init(sw_seam_select *s, const sw_seam_graph *graph, sw_arena *arena,
@@ -146,12 +168,8 @@ sw_status sw_seam_select_init_checked(sw_seam_select *s, const sw_seam_graph *gr
     if (st != SW_OK)
         return st;
     const sw_seam_graph *g = &s->graph;
-    for (uint32_t i = 0; i < g->slot_count; i++)
-        s->slot_loop[i] = SW_SEAM_NONE;
-    for (uint32_t l = 0; l < g->loop_count; l++)
-        for (uint32_t i = 0; i < g->loops[l].slot_count; i++)
-            s->slot_loop[g->loops[l].first_slot + i] = l;
     build_leaf_ranges(s);
+    build_leaf_slots(s);
     for (uint32_t v = 0; v < g->vertex_count; v++) {
         s->queued[v] = 0;
         s->active[v] = g->vertices[v].child == SW_SEAM_NONE;
@@ -164,40 +182,23 @@ sw_status sw_seam_select_init_checked(sw_seam_select *s, const sw_seam_graph *gr
     return SW_OK;
 }
 
-/* The vertex slot i shows, and slot i's neighbours in its loop (cyclic). */
-static uint32_t shown_at(const sw_seam_select *s, uint32_t slot)
-{
-    return s->shown[s->graph.slots[slot].vertex];
-}
-
-static uint32_t cyclic_step(const sw_seam_select *s, uint32_t slot, int forward)
-{
-    const sw_seam_loop *loop = &s->graph.loops[s->slot_loop[slot]];
-    uint32_t i = slot - loop->first_slot;
-    i = forward ? (i + 1 == loop->slot_count ? 0 : i + 1) : (i ? i - 1 : loop->slot_count - 1);
-    return loop->first_slot + i;
-}
-
 /* Every run of x in a polyline is bounded by slots next to slots of x's
  * originals, so looking one slot each way from each of them finds all
- * neighbours in O(slots under x). */
+ * neighbours in O(slots under x). A neighbour slot whose original is a
+ * leaf of x (its leaf position in x's range) shows x itself: skipped
+ * without a lookup. */
 uint32_t sw_seam_select_scan_neighbours(const sw_seam_select *s, uint32_t x,
                                         uint32_t (*visit)(void *ctx, uint32_t w), void *ctx)
 {
-    const sw_seam_graph *g = &s->graph;
-    uint32_t lo = s->leaf_lo[x], hi = lo + s->leaf_count[x];
-    for (uint32_t p = lo; p < hi; p++) {
-        const sw_seam_vertex *ov = &g->vertices[s->leaf_order[p]];
-        for (uint32_t r = 0; r < ov->slot_ref_count; r++) {
-            uint32_t slot = g->slot_refs[ov->first_slot_ref + r];
-            if (s->slot_loop[slot] == SW_SEAM_NONE)
+    uint32_t lo = s->leaf_lo[x], n = s->leaf_count[x];
+    for (uint32_t e = s->leaf_slots[lo]; e < s->leaf_slots[lo + n]; e++) {
+        uint32_t q[2] = {s->slot_prev[e], s->slot_next[e]};
+        for (int k = 0; k < 2; k++) {
+            if (q[k] - lo < n)   /* unsigned: lo <= q < lo + n */
                 continue;
-            for (int forward = 0; forward < 2; forward++) {
-                uint32_t w = shown_at(s, cyclic_step(s, slot, forward));
-                uint32_t stop = w != x ? visit(ctx, w) : 0;
-                if (stop)
-                    return stop;
-            }
+            uint32_t stop = visit(ctx, s->shown[q[k]]);
+            if (stop)
+                return stop;
         }
     }
     return 0;

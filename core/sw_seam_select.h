@@ -12,7 +12,10 @@
  * thread-safe: one owner.
  *
  * Cost: a split or collapse of v touches every slot of the original vertices
- * under v (their shown vertex changes), so it is O(slots under v); an update
+ * under v (their shown vertex changes), so it is O(slots under v), read as
+ * contiguous ranges in leaf order (the hierarchy's chains make v's leaves
+ * many: read scattered by vertex number, as the first version did, a split
+ * near a root cost a cache miss per slot); an update
  * also makes one pass over all vertices and slots to fold the surface bounds
  * into per-vertex bounds (O(vertex_count + slot_count)). */
 #ifndef SW_SEAM_SELECT_H
@@ -33,8 +36,16 @@ typedef struct sw_seam_select {
     uint32_t *leaf_lo;         /* vertex_count: v's originals are leaf_order[leaf_lo[v] .. +leaf_count[v]) */
     uint32_t *leaf_count;      /* vertex_count */
     uint32_t *leaf_order;      /* original_count: originals in depth-first order, v2's side first */
-    uint32_t *shown;           /* original_count: the active ancestor of each original */
-    uint32_t *slot_loop;       /* slot_count: the loop holding the slot, SW_SEAM_NONE for none */
+    uint32_t *shown;           /* original_count: the active ancestor of the original at each
+                                  leaf position (a split fills a contiguous range) */
+    /* The slots of the originals in leaf order, so that everything a split
+     * or collapse of v reads is the contiguous range of v's leaves: */
+    uint32_t *leaf_slots;      /* original_count + 1: leaf position p's slots are entries
+                                  leaf_slots[p] .. leaf_slots[p + 1] */
+    uint32_t *slot_surface;    /* slot_count entries: the surface of the slot's loop */
+    uint32_t *slot_prev;       /* slot_count entries: the leaf position of the original at the
+                                  slot before it in its loop, and after it (cyclic) */
+    uint32_t *slot_next;
     float *bound;              /* vertex_count: the smallest surface bound over v's slots (per update) */
     uint32_t *stack;           /* collapse_count + 1: forced-split chain */
     uint32_t *queue;           /* vertex_count: update's work list (a heap) */
@@ -46,8 +57,8 @@ typedef struct sw_seam_select {
 } sw_seam_select;
 
 /* Arena bytes sw_seam_select_init takes for graph, worst case (alignment
- * included): 18 bytes per vertex, 4 more per created vertex, 8 more per
- * original, 4 per slot and 1 per surface (about 56 bytes per original
+ * included): 18 bytes per vertex, 4 more per created vertex, 12 more per
+ * original, 12 per slot and 1 per surface (about 76 bytes per original
  * vertex of a sewn graph: 2 slots each, as many created vertices). */
 size_t sw_seam_select_arena_bytes(const sw_seam_graph *graph);
 

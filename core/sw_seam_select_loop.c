@@ -5,7 +5,7 @@
 
 static uint32_t shown_at(const sw_seam_select *s, uint32_t slot)
 {
-    return s->shown[s->graph.slots[slot].vertex];
+    return s->shown[s->leaf_lo[s->graph.slots[slot].vertex]];
 }
 
 /* The first slot (in slot order) whose predecessor shows another vertex:
