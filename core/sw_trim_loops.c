@@ -168,7 +168,8 @@ static void copy_loops(tt_ctx *c, const double dom[4])
         uint32_t count = distinct_points(l, k), first = n;
         if (count < 3)
             continue;
-        const uint32_t dropped = c->res->dropped_points, flat = c->res->dropped_flat;
+        const uint32_t dropped_before = c->res->dropped_points;
+        const uint32_t flat_before = c->res->dropped_flat;
         uint32_t end = l->loop_first[k + 1];
         while (end > l->loop_first[k] + 1 &&
                same_uv(&l->points[end - 1], &l->points[l->loop_first[k]]))
@@ -197,7 +198,8 @@ static void copy_loops(tt_ctx *c, const double dom[4])
             c->res->skipped_loops++;
             if (sw_tt_loop_spans_space(l, k)) { /* drawn as a fan: its points are all in */
                 c->collapsed[c->collapsed_count++] = k;
-                c->res->dropped_points = dropped, c->res->dropped_flat = flat;
+                c->res->dropped_points = dropped_before;
+                c->res->dropped_flat = flat_before;
             }
             continue;
         }

@@ -55,7 +55,7 @@ size_t sw_trim_tess_scratch_bytes(uint32_t patch_count, uint32_t point_count, in
     /* patches, loops (sw_trim_loops.c) */
     size_t bytes = np * (ctrl + sizeof(sw_bezier_patch) + 8) + 3 * ctrl;
     bytes += n * (sizeof(sw_tt_point) + 2 * sizeof(uint32_t) + 2 * sizeof(double)) +
-             (n / 3 + 1) * sizeof(sw_tt_loop) + 64;
+             (n / 3 + 1) * (sizeof(sw_tt_loop) + sizeof(uint32_t)) + 64; /* + collapsed */
     /* knots, patch table, sub-patch bounds and counts (sw_trim_grid.c) */
     size_t bounds = 3 * (SW_TT_MAX_SUB * SW_TT_MAX_SUB + 1) * sizeof(double); /* subs, whole */
     bytes += np * (4 * sizeof(double) + 1 + bounds + 4 * SW_TT_MAX_SUB * sizeof(double)) +
