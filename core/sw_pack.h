@@ -15,6 +15,7 @@
 
 #include "sw_arena.h"
 #include "sw_error.h"
+#include "sw_parts.h"
 #include "sw_seam_graph.h"
 
 #define SW_PACK_MAGIC "SWPACK\r\n"        /* 8 bytes, no terminator in the file */
@@ -261,6 +262,12 @@ uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count, uint64
  * range. */
 sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_error *err);
 
+/* The same, with the section checksums and the Seam Graph's rules in parts
+ * run by runner (sw_parts.h: the runtime's loader passes one that uses its
+ * spare cores); the same result and message whatever the runner. */
+sw_status sw_pack_open_memory_with(const void *data, size_t size, const sw_parts_runner *runner,
+                                   sw_pack *out, sw_error *err);
+
 /* Reads and checks only the 64-byte header of the file at path (magic,
  * version, byte order, total size against the file's size), for sizing the
  * arena before sw_pack_load. */
@@ -270,6 +277,10 @@ sw_status sw_pack_read_header(const char *path, sw_pack_header *out, sw_error *e
  * Errors are prefixed with the path; SW_ERR_NO_MEMORY when the arena cannot
  * hold the file. On failure the arena is reset to where it was. */
 sw_status sw_pack_load(const char *path, sw_arena *arena, sw_pack *out, sw_error *err);
+
+/* sw_pack_load validating with runner (sw_pack_open_memory_with). */
+sw_status sw_pack_load_with(const char *path, sw_arena *arena, const sw_parts_runner *runner,
+                            sw_pack *out, sw_error *err);
 
 const char *sw_section_type_name(uint32_t type); /* "META", ... or "unknown" */
 

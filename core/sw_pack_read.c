@@ -266,8 +266,8 @@ static const char *section_label(char *buf, size_t cap, uint32_t index, uint32_t
     return buf;
 }
 
-static sw_status check_section(const uint8_t *data, size_t size, uint64_t table_end,
-                               uint32_t index, const sw_pack_section *s, sw_error *err)
+static sw_status check_section(size_t size, uint64_t table_end, uint32_t index,
+                               const sw_pack_section *s, sw_error *err)
 {
     char label[48];
     section_label(label, sizeof label, index, s->type);
@@ -285,12 +285,67 @@ static sw_status check_section(const uint8_t *data, size_t size, uint64_t table_
     if (s->flags != 0)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: flags 0x%x, expected 0 in version %u", label,
                             (unsigned)s->flags, SW_PACK_VERSION);
-    uint64_t computed = XXH3_64bits(data + s->offset, (size_t)s->size);
-    if (computed != s->checksum)
-        return sw_error_set(err, SW_ERR_CHECKSUM,
-                            "%s: checksum mismatch (stored 0x%016llx, computed 0x%016llx)", label,
-                            (unsigned long long)s->checksum, (unsigned long long)computed);
     return SW_OK;
+}
+
+/* The checksums of the sections before the first whose bounds fail, as
+ * parts (sw_parts.h), largest section first so that parts run at once end
+ * together: on the showroom SEAM_VERTICES alone is half the bytes. */
+typedef struct checksum_job {
+    const uint8_t *data;
+    const sw_pack_section *sections;
+    uint32_t order[SW_PACK_MAX_SECTIONS];
+    uint64_t computed[SW_PACK_MAX_SECTIONS];
+} checksum_job;
+
+static void checksum_part(void *arg, uint32_t p)
+{
+    checksum_job *job = arg;
+    const sw_pack_section *s = &job->sections[job->order[p]];
+    job->computed[job->order[p]] = XXH3_64bits(job->data + s->offset, (size_t)s->size);
+}
+
+/* Sections [0, count) by size, largest first (at most 256: insertion). */
+static void order_by_size(checksum_job *job, uint32_t count)
+{
+    for (uint32_t i = 0; i < count; i++) {
+        uint32_t j = i;
+        for (; j > 0 && job->sections[job->order[j - 1]].size < job->sections[i].size; j--)
+            job->order[j] = job->order[j - 1];
+        job->order[j] = i;
+    }
+}
+
+/* Every section's bounds, then the checksums of those before the first
+ * that fails them; the first problem in table order is named, as one pass
+ * checking each section whole would. */
+static sw_status check_sections(const uint8_t *data, size_t size, const sw_parts_runner *runner,
+                                sw_error *err)
+{
+    const sw_pack_header *h = (const sw_pack_header *)data;
+    const sw_pack_section *sections = (const sw_pack_section *)(data + HEADER_BYTES);
+    uint64_t table_end = HEADER_BYTES + (uint64_t)h->section_count * SECTION_BYTES;
+    sw_error bounds_err = { SW_OK, "" };
+    sw_status bounds = SW_OK;
+    uint32_t good = 0;
+    while (good < h->section_count &&
+           (bounds = check_section(size, table_end, good, &sections[good], &bounds_err)) == SW_OK)
+        good++;
+    checksum_job job = {.data = data, .sections = sections};
+    order_by_size(&job, good);
+    sw_parts_run(runner, checksum_part, &job, good);
+    for (uint32_t i = 0; i < good; i++)
+        if (job.computed[i] != sections[i].checksum) {
+            char label[48];
+            return sw_error_set(err, SW_ERR_CHECKSUM, "%s: checksum mismatch (stored 0x%016llx, "
+                                "computed 0x%016llx)",
+                                section_label(label, sizeof label, i, sections[i].type),
+                                (unsigned long long)sections[i].checksum,
+                                (unsigned long long)job.computed[i]);
+        }
+    if (bounds != SW_OK && err)
+        *err = bounds_err;
+    return bounds;
 }
 
 /* At most 256 sections, so comparing every pair costs nothing worth sorting
@@ -586,6 +641,12 @@ static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
 
 sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_error *err)
 {
+    return sw_pack_open_memory_with(data, size, NULL, out, err);
+}
+
+sw_status sw_pack_open_memory_with(const void *data, size_t size, const sw_parts_runner *runner,
+                                   sw_pack *out, sw_error *err)
+{
     if (!out)
         return sw_error_set(err, SW_ERR_ARG, "sw_pack_open_memory: out is NULL");
     memset(out, 0, sizeof *out);
@@ -601,10 +662,8 @@ sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_er
         return s;
     const sw_pack_header *h = data;
     const sw_pack_section *sections = (const sw_pack_section *)(bytes + HEADER_BYTES);
-    uint64_t table_end = HEADER_BYTES + (uint64_t)h->section_count * SECTION_BYTES;
-    for (uint32_t i = 0; i < h->section_count; i++)
-        if ((s = check_section(bytes, size, table_end, i, &sections[i], err)) != SW_OK)
-            return s;
+    if ((s = check_sections(bytes, size, runner, err)) != SW_OK)
+        return s;
     if ((s = check_overlaps(sections, h->section_count, err)) != SW_OK)
         return s;
     int32_t index[LAST_KNOWN + 1];
@@ -616,7 +675,7 @@ sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_er
         (s = map_seam(bytes, index, &pack, err)) != SW_OK ||
         (s = sw_pack_validate_records(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_trim(&pack, err)) != SW_OK ||
-        (s = sw_pack_validate_seam(&pack, err)) != SW_OK ||
+        (s = sw_pack_validate_seam(&pack, runner, err)) != SW_OK ||
         (s = check_runtime_bytes(&pack, err)) != SW_OK ||
         (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK ||
         (s = sw_pack_map_import_notes(bytes, &pack, err)) != SW_OK)
@@ -687,8 +746,8 @@ sw_status sw_pack_read_header(const char *path, sw_pack_header *out, sw_error *e
     return s;
 }
 
-static sw_status load_fd(int fd, uint64_t file_size, sw_arena *arena, sw_pack *out,
-                         sw_error *err)
+static sw_status load_fd(int fd, uint64_t file_size, sw_arena *arena,
+                         const sw_parts_runner *runner, sw_pack *out, sw_error *err)
 {
     uint8_t *buf = file_size <= SIZE_MAX ? sw_arena_alloc(arena, (size_t)file_size, 64) : NULL;
     if (!buf)
@@ -699,10 +758,16 @@ static sw_status load_fd(int fd, uint64_t file_size, sw_arena *arena, sw_pack *o
     sw_status s = read_exactly(fd, buf, (size_t)file_size, err);
     if (s != SW_OK)
         return s;
-    return sw_pack_open_memory(buf, (size_t)file_size, out, err);
+    return sw_pack_open_memory_with(buf, (size_t)file_size, runner, out, err);
 }
 
 sw_status sw_pack_load(const char *path, sw_arena *arena, sw_pack *out, sw_error *err)
+{
+    return sw_pack_load_with(path, arena, NULL, out, err);
+}
+
+sw_status sw_pack_load_with(const char *path, sw_arena *arena, const sw_parts_runner *runner,
+                            sw_pack *out, sw_error *err)
 {
     uint64_t file_size = 0;
     int fd = -1;
@@ -713,7 +778,7 @@ sw_status sw_pack_load(const char *path, sw_arena *arena, sw_pack *out, sw_error
     }
     /* A failed load gives its bytes back, so the caller can try another pack. */
     size_t mark = sw_arena_mark(arena);
-    s = load_fd(fd, file_size, arena, out, err);
+    s = load_fd(fd, file_size, arena, runner, out, err);
     close(fd);
     if (s != SW_OK) {
         sw_arena_reset_to(arena, mark);

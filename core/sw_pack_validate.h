@@ -9,6 +9,7 @@
 #define SW_PACK_VALIDATE_H
 
 #include "sw_pack.h"
+#include "sw_parts.h"
 
 /* pack's views and counts are in bounds; checks every record of META, PARTS,
  * PATCHES, CONTROL, ADJACENCY, VIEWPOINTS and PART_TRANSFORMS for values the
@@ -23,8 +24,10 @@ sw_status sw_pack_validate_trim(const sw_pack *pack, sw_error *err);
 
 /* The Seam Graph (SEAM and SEAM_*), in sw_pack_validate_seam.c; runs after
  * sw_pack_validate_trim, so SURFACES is known good. Nothing to check when
- * the pack has no SEAM section. */
-sw_status sw_pack_validate_seam(const sw_pack *pack, sw_error *err);
+ * the pack has no SEAM section. The graph's rules in parts run by runner
+ * (sw_parts.h, NULL: in order here). */
+sw_status sw_pack_validate_seam(const sw_pack *pack, const sw_parts_runner *runner,
+                                sw_error *err);
 
 /* Number of control points along edge (enum sw_patch_edge) of patch. */
 static inline uint32_t sw_pack_edge_points(const sw_pack_patch *patch, uint32_t edge)

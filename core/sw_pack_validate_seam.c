@@ -35,10 +35,11 @@ static sw_status validate_seam_header(const sw_pack *pack, sw_error *err)
     return SW_OK;
 }
 
-sw_status sw_pack_validate_seam(const sw_pack *pack, sw_error *err)
+sw_status sw_pack_validate_seam(const sw_pack *pack, const sw_parts_runner *runner,
+                                sw_error *err)
 {
     if (!pack->seam_header)
         return SW_OK;
     sw_status s = validate_seam_header(pack, err);
-    return s == SW_OK ? sw_seam_graph_check(&pack->seam, err) : s;
+    return s == SW_OK ? sw_seam_graph_check_with(&pack->seam, runner, err) : s;
 }

@@ -2,7 +2,8 @@
  * indexes into it: the pack reader calls it for a pack's graph (after the
  * SEAM header record, sw_pack_validate_seam), the runtime selection for the
  * graph it is given, the host simplifier for the sewing's output. One pass
- * over the arrays, no memory, so it runs in the runtime too. The rules are
+ * over the arrays (in parts that may run at once: sw_seam_graph_check_with),
+ * no memory, so it runs in the runtime too. The rules are
  * listed in assets/PACK_FORMAT.md; in short:
  * - counts agree (vertex_count == original_count + collapse_count,
  *   slot_ref_count == slot_count), arrays present where their counts are not
@@ -26,9 +27,15 @@
 #define SW_SEAM_CHECK_H
 
 #include "sw_error.h"
+#include "sw_parts.h"
 #include "sw_seam_graph.h"
 
 /* SW_OK, or SW_ERR_FORMAT / SW_ERR_RANGE with the first problem in err. */
 sw_status sw_seam_graph_check(const sw_seam_graph *graph, sw_error *err);
+
+/* The same check in parts, run by runner (sw_parts.h; NULL: in order on
+ * this thread); the same result and message whatever the runner. */
+sw_status sw_seam_graph_check_with(const sw_seam_graph *graph, const sw_parts_runner *runner,
+                                   sw_error *err);
 
 #endif

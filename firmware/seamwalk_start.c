@@ -5,12 +5,15 @@
  * llvmpipe compiles at the first draw) and the pack (read into the arena,
  * validated, and the seam walk's state built from it, then the workers and
  * V started). The pack is loaded on a loader thread while the GL thread
- * opens the display and warms the renderer; the GL thread then waits for
- * the loader (stats: start_ms.load_wait). The GL buffers the loaded cache
- * needs are made once the walk has posted its first view, while V plans
- * that frame (sw_program_start_pool). Nothing the loader touches calls GL,
- * and nothing the GL thread touches before the join is the loader's (the
- * display's size decides only the read-back, taken after it). With
+ * opens the display and warms the renderer (the pack's checksums and Seam
+ * Graph rules in parts, with a helper thread: sw_parts_threads.h, since
+ * the GL thread's core is idle long before the loader ends); the GL
+ * thread then waits for the loader (stats: start_ms.load_wait). The GL
+ * buffers the loaded cache needs are made once the walk has posted its
+ * first view, while V plans that frame (sw_program_start_pool). Nothing
+ * the loader touches calls GL, and nothing the GL thread touches before
+ * the join is the loader's (the display's size decides only the
+ * read-back, taken after it). With
  * --store the display is opened first (start_from_store says why) and the
  * loader overlaps the renderer's start only.
  *
@@ -31,6 +34,7 @@
 
 #include "seamwalk_program.h"
 #include "sw_heap.h"
+#include "sw_parts_threads.h"
 #include "sw_png.h"
 #include "sw_up_axis.h"
 
@@ -257,6 +261,15 @@ static sw_status find_view(sw_program *rt, sw_error *err)
                         rt->pack.viewpoint_count ? ": see seamwalk-pack info" : "");
 }
 
+/* Threads beside the loader for the pack's checks (sw_parts_threads.h): a
+ * core each, less the GL thread's, at least one; the GL thread is idle once
+ * its shaders are warm, before the Seam Graph's checks begin. */
+static long load_helpers(void)
+{
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    return cores > 2 ? cores - 2 : 1;
+}
+
 /* The loader's whole job, on its own thread: nothing here calls GL or
  * reads what the GL thread writes before the join (the display's size). */
 static sw_status load(sw_program *rt, sw_error *err)
@@ -267,7 +280,9 @@ static sw_status load(sw_program *rt, sw_error *err)
     if (st != SW_OK)
         return st;
     double t0 = sw_program_now_s();
-    if ((st = sw_pack_load(rt->opt.pack_path, &rt->arena, &rt->pack, err)) != SW_OK)
+    sw_parts_threads threads;
+    sw_parts_runner runner = sw_parts_threads_runner(&threads, (uint32_t)load_helpers());
+    if ((st = sw_pack_load_with(rt->opt.pack_path, &rt->arena, &runner, &rt->pack, err)) != SW_OK)
         return st;
     if (rt->opt.store_dir &&
         (st = sw_boot_check_loaded(&rt->boot, rt->loading_slot, &rt->pack, err)) != SW_OK)

@@ -7,11 +7,30 @@
 #include "sw_test.h"
 #include "pack_sample.h"
 
+/* A runner (sw_parts.h) that runs the parts last first: the checksums and
+ * the graph's checks must not depend on the order their parts run in (the
+ * loader's threads run them in any). */
+static void run_backwards(void *ctx, sw_part_fn fn, void *arg, uint32_t count)
+{
+    (void)ctx;
+    for (uint32_t p = count; p-- > 0;)
+        fn(arg, p);
+}
+
+/* Opens bytes in order and with the parts run backwards: the same result
+ * and message both ways, returned. */
 static sw_status open_bytes(const uint8_t *bytes, size_t size, sw_error *err)
 {
     sw_pack pack;
     memset(err, 0, sizeof *err);
-    return sw_pack_open_memory(bytes, size, &pack, err);
+    sw_status st = sw_pack_open_memory(bytes, size, &pack, err);
+    const sw_parts_runner backwards = {.run = run_backwards};
+    sw_error again = { 0 };
+    sw_status st_again = sw_pack_open_memory_with(bytes, size, &backwards, &pack, &again);
+    SW_CHECK_MSG(st_again == st && strcmp(again.message, err->message) == 0,
+                 "parts run backwards: %s \"%s\", in order: %s \"%s\"",
+                 sw_status_name(st_again), again.message, sw_status_name(st), err->message);
+    return st;
 }
 
 /* Serialises s (checksums valid) and expects the reader to refuse it with
@@ -249,6 +268,33 @@ static void test_misaligned_data_is_an_argument_error(void)
     SW_CHECK(open_bytes(shifted + 4, size, &err) == SW_ERR_ARG);
     SW_CHECK_MSG(strstr(err.message, "8-byte aligned"), "%s", err.message);
     free(shifted);
+    free(bytes);
+}
+
+/* Two problems: the first section in table order is named, whichever
+ * kind each is (its bounds are checked before any checksum is computed,
+ * and the checksums may be computed in any order). */
+static void test_first_problem_in_table_order_is_named(void)
+{
+    sample s;
+    make_sample(&s);
+    size_t size = 0;
+    uint8_t *bytes = serialize_sample(&s, &size);
+    sw_pack_section *t = table_of(bytes);
+    sw_error err;
+    bytes[t[5].offset] ^= 1;
+    bytes[t[2].offset] ^= 1;
+    SW_CHECK(open_bytes(bytes, size, &err) == SW_ERR_CHECKSUM);
+    SW_CHECK_MSG(strstr(err.message, "section 2 (PATCHES): checksum mismatch"), "%s",
+                 err.message);
+    bytes[t[2].offset] ^= 1;   /* 5's checksum still fails, after 4's flags */
+    t[4].flags = 1;
+    reseal(bytes);
+    SW_CHECK(open_bytes(bytes, size, &err) == SW_ERR_FORMAT);
+    SW_CHECK_MSG(strstr(err.message, "section 4 (ADJACENCY): flags 0x1"), "%s", err.message);
+    bytes[t[1].offset] ^= 1;   /* 1's checksum now fails before 4's flags */
+    SW_CHECK(open_bytes(bytes, size, &err) == SW_ERR_CHECKSUM);
+    SW_CHECK_MSG(strstr(err.message, "section 1 (PARTS): checksum mismatch"), "%s", err.message);
     free(bytes);
 }
 
@@ -569,6 +615,7 @@ int main(void)
     SW_RUN(test_non_finite_control_is_rejected);
     SW_RUN(test_zero_weight_of_rational_patch_is_rejected);
     SW_RUN(test_unknown_section_is_skipped);
+    SW_RUN(test_first_problem_in_table_order_is_named);
     SW_RUN(test_pack_without_adjacency_section_opens);
     SW_RUN(test_load_into_small_arena_fails_cleanly);
     SW_RUN(test_read_header_detects_short_file);

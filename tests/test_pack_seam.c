@@ -26,15 +26,30 @@ static uint8_t *serialize_with_seam(const sample *s, const sample_seam *g, size_
     return bytes;
 }
 
+/* A runner (sw_parts.h) that runs the parts last first: the checks' parts
+ * must not depend on the order they run in (the loader's threads run them
+ * in any), so each refusal below must read the same this way. */
+static void run_backwards(void *ctx, sw_part_fn fn, void *arg, uint32_t count)
+{
+    (void)ctx;
+    for (uint32_t p = count; p-- > 0;)
+        fn(arg, p);
+}
+
 static void expect_open(const uint8_t *bytes, size_t size, sw_status status, const char *needle)
 {
     sw_pack pack;
-    sw_error err = { 0 };
+    sw_error err = { 0 }, backwards_err = { 0 };
     sw_status got = sw_pack_open_memory(bytes, size, &pack, &err);
     SW_CHECK_MSG(got == status, "expected %s, got %s: %s", sw_status_name(status),
                  sw_status_name(got), err.message);
     SW_CHECK_MSG(status == SW_OK || strstr(err.message, needle) != NULL, "\"%s\" not in \"%s\"",
                  needle, err.message);
+    const sw_parts_runner backwards = {.run = run_backwards};
+    sw_status again = sw_pack_open_memory_with(bytes, size, &backwards, &pack, &backwards_err);
+    SW_CHECK_MSG(again == got && strcmp(backwards_err.message, err.message) == 0,
+                 "parts run backwards: %s \"%s\", in order: %s \"%s\"", sw_status_name(again),
+                 backwards_err.message, sw_status_name(got), err.message);
 }
 
 /* The sample with the (edited) graph g must be refused with status and needle. */
@@ -441,6 +456,32 @@ static void test_edge_rules(void)
     expect_rejected(&g, SW_ERR_FORMAT, "SEAM_EDGES[0].a: 1, expected less than b 0");
 }
 
+/* ---- two problems ---- */
+
+/* The check runs in parts (the vertices and the collapses in halves, the
+ * slots, their references, the loops with the edges) that may run in any
+ * order; with problems in two parts, the earlier part's is named, as one
+ * pass in rule order would (expect_open also runs them backwards). */
+static void test_first_problem_in_rule_order_is_named(void)
+{
+    sample_seam g;
+    fresh(&g)->vertices[13].error = NAN;   /* the second half of the vertices */
+    g.edges[3].b = 10;
+    expect_rejected(&g, SW_ERR_FORMAT, "SEAM_VERTICES[13].error: nan");
+    fresh(&g)->vertices[12].error = 0.25f; /* collapse 3, the second half */
+    g.slots[4].vertex = 10;
+    expect_rejected(&g, SW_ERR_FORMAT, "SEAM_VERTICES[12].error: 0.25, below its parent 11's");
+    fresh(&g)->collapses[1].error = -1;    /* the first half, before the second's */
+    g.vertices[13].error = 0.5f;
+    expect_rejected(&g, SW_ERR_FORMAT, "SEAM_COLLAPSES[1].error: -1");
+    fresh(&g)->vertices[0].child = 10;     /* the parent count, before the slots */
+    g.slots[7].uv[1] = NAN;
+    expect_rejected(&g, SW_ERR_FORMAT, "SEAM_VERTICES[0].child: 10, but SEAM_COLLAPSES[0]");
+    fresh(&g)->slot_refs[0] = 13;          /* the references, before the loops */
+    g.loops[1].flags = 2;
+    expect_rejected(&g, SW_ERR_RANGE, "SEAM_SLOT_REFS[0]: 13");
+}
+
 /* ---- seamwalk-pack info ---- */
 
 /* The info report of the sample with graph g (NULL: none), as a string. */
@@ -520,6 +561,7 @@ int main(void)
     SW_RUN(test_surface_loop_rules);
     SW_RUN(test_loop_rules);
     SW_RUN(test_edge_rules);
+    SW_RUN(test_first_problem_in_rule_order_is_named);
     SW_RUN(test_info_reports_seam_graph);
     return sw_test_finish();
 }
