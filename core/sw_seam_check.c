@@ -315,9 +315,6 @@ static sw_status check_collapses(const sw_seam_graph *g, uint32_t p, sw_error *e
     return s;
 }
 
-/* Slots, then their inverse: with slot_ref_count == slot_count, refs that
- * cover the array, name their run's vertex and increase within it are a
- * bijection. */
 static sw_status check_slots(const sw_seam_graph *g, sw_error *err)
 {
     sw_status s = SW_OK;
@@ -326,6 +323,9 @@ static sw_status check_slots(const sw_seam_graph *g, sw_error *err)
     return s;
 }
 
+/* The slots' inverse: with slot_ref_count == slot_count, refs that cover
+ * the array, name their run's vertex and increase within it are a
+ * bijection. */
 static sw_status check_inverse(const sw_seam_graph *g, sw_error *err)
 {
     sw_status s = SW_OK;
