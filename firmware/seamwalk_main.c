@@ -255,15 +255,20 @@ static sw_status walk(sw_program *rt, sw_error *err)
         if ((f + 1) % (uint64_t)rt->opt.frames == 0 && ++s->loops <= SW_STATS_RSS_LOOPS) {
             sw_grow_hook_step(&rt->grow);
             /* The driver's heap is sized by now: resident from here on, and
-             * the arena and the frames' block with it (no allocation;
-             * without it, a kernel before 5.14, the soak shows the creep it
-             * prevents). Only when another loop follows (--duration): a
-             * walk of one loop ends here, and writing its hundred-odd MB
-             * then was kernel time spent on nothing. */
+             * the arena, the frames' block and the merged draws' staging
+             * with it (no allocation; without it, a kernel before 5.14, the
+             * soak shows the creep it prevents: a page of the staging is
+             * first touched by the first frame that merges that many
+             * indices, which may come loops later). Only when another
+             * loop follows (--duration): a walk of one loop ends here, and
+             * writing its hundred-odd MB then was kernel time spent on
+             * nothing. */
             if (s->loops == 1 && rt->opt.duration_s > 0)
                 s->heap_resident =
                     sw_heap_populate() && sw_heap_populate_block(rt->block, rt->arena.size) &&
-                    sw_heap_populate_block(rt->frame_block, rt->frame_arena.size);
+                    sw_heap_populate_block(rt->frame_block, rt->frame_arena.size) &&
+                    (!rt->staging_block ||
+                     sw_heap_populate_block(rt->staging_block, sw_gl_pool_merge_bytes()));
             s->rss_loop_kb[s->loops - 1] = rss_now_kb(s);
             if (s->loops == 1)
                 s->rss_first_loop_kb = s->rss_loop_kb[0];
