@@ -188,7 +188,7 @@ static sw_status run_frame(sw_program *rt, uint64_t f, sw_error *err)
     if (rt->opt.duration_s > 0 || f + 1 < (uint64_t)rt->opt.frames)
         post_view(rt, f + 1);
     double t0 = sw_program_now_s();
-    int measuring = frame % rt->opt.measure_every == 0;
+    int measuring = rt->opt.measure_every > 0 && frame % rt->opt.measure_every == 0;
     uint64_t triangles = 0;
     uint32_t drawn = 0, capped = 0;
     double measure_ms = 0;
@@ -360,10 +360,13 @@ static sw_status write_stats(sw_program *rt, sw_error *err)
 static void print_summary(const sw_program *rt)
 {
     const sw_stats *s = &rt->stats;
-    printf("seamwalk: %llu frames of %u patches at %dx%d in %.2f s; error max %.3f px (bound %.2f);"
+    char error[64] = "error not measured (--measure-every 0)";
+    if (s->measure_every > 0)
+        snprintf(error, sizeof error, "error max %.3f px", s->error_max_px);
+    printf("seamwalk: %llu frames of %u patches at %dx%d in %.2f s; %s (bound %.2f);"
            " cracks max %llu; arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
            " frame stats and pictures the rest); mallocs after init %lld\n",
-           (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, s->error_max_px,
+           (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, error,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
     if (s->error_behind_samples)

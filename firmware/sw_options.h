@@ -29,7 +29,7 @@ typedef struct sw_options {
     const char *stats_path;      /* NULL: no stats file */
     double memory_mb;            /* arena limit; default 256 */
     double max_error_px;         /* default 0.5 */
-    int measure_every;           /* error and crack measurement every K-th frame; default 4 */
+    int measure_every;           /* error and crack measurement every K-th frame (0: none); default 4 */
     double fov_deg;              /* vertical field of view; default 45 */
     const char *store_dir;       /* --store DIR: start a slot of the unit's pack store instead of --pack */
     const char *keys_path;       /* --keys FILE: trusted keys; default DIR/keys */

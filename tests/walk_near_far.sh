@@ -33,3 +33,18 @@ print("  seams, at the far end: %d triangles for %d patches, %d surfaces vanishe
       % (tris, patches, seam["surfaces_vanished_max"], far["cracks_max"]))
 assert tris < patches and far["cracks_max"] == 0
 PY
+# --measure-every 0 (a kiosk's setting): the same walk, no frame measured.
+"$walker" --pack "$pack" --headless 320x240 --path "$work/near_far.path" --frames 6 \
+  --measure-every 0 --stats "$work/unmeasured.json" "$@" > "$work/unmeasured.log" \
+  || fail "walk, --measure-every 0: $(tail -n 3 "$work/unmeasured.log")"
+grep -q "error not measured (--measure-every 0)" "$work/unmeasured.log" \
+  || fail "--measure-every 0: the summary does not say the error was not measured"
+python3 - "$work/unmeasured.json" <<'PY' || fail "--measure-every 0 measured"
+import json, sys
+s = json.load(open(sys.argv[1]))
+e = s["error_px"]
+print("  --measure-every 0: %d frames, %d measured, %d error samples"
+      % (s["frames_total"], e["measured_frames"], e["samples"]))
+assert s["frames_total"] == 6 and e["measured_frames"] == 0 and e["samples"] == 0
+assert e["measure_every"] == 0
+PY
