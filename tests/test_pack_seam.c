@@ -12,6 +12,7 @@
 
 #include "sw_test.h"
 #include "pack_sample.h"
+#include "parts_backwards.h"
 #include "sw_pack_info.h"
 
 /* The sample with graph g (NULL: none), serialised; malloc'd. */
@@ -26,30 +27,19 @@ static uint8_t *serialize_with_seam(const sample *s, const sample_seam *g, size_
     return bytes;
 }
 
-/* A runner (sw_parts.h) that runs the parts last first: the checks' parts
- * must not depend on the order they run in (the loader's threads run them
- * in any), so each refusal below must read the same this way. */
-static void run_backwards(void *ctx, sw_part_fn fn, void *arg, uint32_t count)
-{
-    (void)ctx;
-    for (uint32_t p = count; p-- > 0;)
-        fn(arg, p);
-}
-
 static void expect_open(const uint8_t *bytes, size_t size, sw_status status, const char *needle)
 {
     sw_pack pack;
-    sw_error err = { 0 }, backwards_err = { 0 };
+    sw_error err = { 0 }, backwards_err;
     sw_status got = sw_pack_open_memory(bytes, size, &pack, &err);
     SW_CHECK_MSG(got == status, "expected %s, got %s: %s", sw_status_name(status),
                  sw_status_name(got), err.message);
     SW_CHECK_MSG(status == SW_OK || strstr(err.message, needle) != NULL, "\"%s\" not in \"%s\"",
                  needle, err.message);
-    const sw_parts_runner backwards = {.run = run_backwards};
-    sw_status again = sw_pack_open_memory_with(bytes, size, &backwards, &pack, &backwards_err);
-    SW_CHECK_MSG(again == got && strcmp(backwards_err.message, err.message) == 0,
-                 "parts run backwards: %s \"%s\", in order: %s \"%s\"", sw_status_name(again),
-                 backwards_err.message, sw_status_name(got), err.message);
+    /* The loader's threads run the checks' parts in any order. */
+    SW_CHECK_MSG(sw_opens_the_same_backwards(bytes, size, got, err.message, &backwards_err),
+                 "parts run backwards: \"%s\", in order: %s \"%s\"", backwards_err.message,
+                 sw_status_name(got), err.message);
 }
 
 /* The sample with the (edited) graph g must be refused with status and needle. */

@@ -27,10 +27,10 @@ the table) and GLU stops after a time limit. Before the rows, seamwalk is
 started 9 more times for one frame each (start to first frame: median and
 spread), and row 1's walk is run once more measuring nothing (the frame
 times a kiosk sees: measuring a frame lets the workers get ahead, so the
-measured walk's later frames draw finer meshes). Prints the table and the ratios against the issue's targets,
-writes the JSON (--json) and a PNG of frame time along the path (--plot,
-gnuplot). Never fails on timing: exit 1 only
-when a row fails or a figure is missing.
+measured walk's later frames draw finer meshes). Prints the table and the
+ratios against the issue's targets, writes the JSON (--json) and a PNG of
+frame time along the path (--plot, gnuplot). Never fails on timing: exit 1
+only when a row fails or a figure is missing.
 --quick: a smoke run (small scenes, 320x240, a few frames), for CTest.
 --work DIR keeps the generated scenes and packs there and reuses them."""
 import argparse
@@ -57,8 +57,8 @@ SINGLE_FLAGS = ["--workers", "0"]
 UNIFORM_MAX_S = 75
 GLU_MAX_S = 120
 
-TARGETS = {"first_frame_ms_median": 300.0, "frame_p50_ms": 16.7, "frame_p99_ms": 33.0, "error_max_px": 1.0, "cracks": 0,
-           "glu_speedup": 100.0, "tris_over_uniform": 0.2}
+TARGETS = {"first_frame_ms_median": 300.0, "frame_p50_ms": 16.7, "frame_p99_ms": 33.0,
+           "error_max_px": 1.0, "cracks": 0, "glu_speedup": 100.0, "tris_over_uniform": 0.2}
 PARTS = ["occt_hammer.iges", "occt_screw.step", "newell_teapot.txt", "nist_mbe_pmi_1.stp"]
 
 
@@ -120,14 +120,19 @@ class Scene:
     def stats_file(self, key):
         return os.path.join(self.work, "%s_%s.json" % (self.name, key))
 
-    def seamwalk(self, key, label, flags):
+    def run_seamwalk(self, key, frames, measure_every, flags):
+        """seamwalk on the scene's pack and path; its stats file, or None
+        when it failed (the log beside it)."""
         a = self.a
         out = self.stats_file(key)
         cmd = [a.build + "/firmware/seamwalk", "--pack", self.pack, "--path", self.path,
-               "--headless", a.size, "--frames", str(a.frames), "--memory-mb", "16384",
-               "--measure-every", str(a.measure_every), "--stats", out] + flags
-        ok = run(cmd, out + ".log")
-        return self.add_row(key, label, ok, out, every=1)
+               "--headless", a.size, "--frames", str(frames), "--memory-mb", "16384",
+               "--measure-every", str(measure_every), "--stats", out] + flags
+        return out if run(cmd, out + ".log") else None
+
+    def seamwalk(self, key, label, flags):
+        out = self.run_seamwalk(key, self.a.frames, self.a.measure_every, flags)
+        return self.add_row(key, label, out is not None, out or self.stats_file(key), every=1)
 
     def baseline(self, key, label, mode_args, every, max_s):
         a = self.a
@@ -238,15 +243,11 @@ def start_times(sc, runs):
     back: one start is one sample of a noisy figure (a start that comes
     after a pause pays for memory the machine had handed back), so the
     median and the spread are reported. The walk's own start is one more."""
-    a = sc.a
     times = []
     for k in range(runs):
-        out = sc.stats_file("start%d" % k)
-        cmd = [a.build + "/firmware/seamwalk", "--pack", sc.pack, "--path", sc.path,
-               "--headless", a.size, "--frames", "1", "--memory-mb", "16384",
-               "--stats", out] + AS_BUILT_FLAGS
-        if not run(cmd, out + ".log"):
-            sc.failures.append("start %d failed (%s.log)" % (k, out))
+        out = sc.run_seamwalk("start%d" % k, 1, sc.a.measure_every, AS_BUILT_FLAGS)
+        if not out:
+            sc.failures.append("start %d failed (%s.log)" % (k, sc.stats_file("start%d" % k)))
             return None
         with open(out) as f:
             times.append(json.load(f)["first_frame_ms"])
@@ -259,19 +260,19 @@ def unmeasured_walk(sc):
     service runs): while the GL thread measures a frame the workers get
     ahead, and the frames after it draw finer meshes, so the measured walk's
     frame times are not the kiosk's. Frame times and triangles only."""
-    a = sc.a
-    out = sc.stats_file("unmeasured")
-    cmd = [a.build + "/firmware/seamwalk", "--pack", sc.pack, "--path", sc.path,
-           "--headless", a.size, "--frames", str(a.frames), "--memory-mb", "16384",
-           "--measure-every", "0", "--stats", out] + AS_BUILT_FLAGS
-    if not run(cmd, out + ".log"):
-        sc.failures.append("the walk measuring nothing failed (%s.log)" % out)
+    out = sc.run_seamwalk("unmeasured", sc.a.frames, 0, AS_BUILT_FLAGS)
+    if not out:
+        sc.failures.append("the walk measuring nothing failed (%s.log)"
+                           % sc.stats_file("unmeasured"))
         return None
     with open(out) as f:
         s = json.load(f)
+    if s["error_px"]["measured_frames"] != 0:
+        sc.failures.append("the walk measuring nothing measured %d frames"
+                           % s["error_px"]["measured_frames"])
+        return None
     return {"p50": s["frame_ms"]["p50"], "p99": s["frame_ms"]["p99"],
-            "tris": s["tris_per_frame"]["median"], "frames": s["frames"],
-            "measured_frames": s["error_px"]["measured_frames"]}
+            "tris": s["tris_per_frame"]["median"], "frames": s["frames"]}
 
 
 def run_scene(a, name, work):

@@ -12,6 +12,7 @@
 #include <xxhash.h>
 
 #include "sw_pack.h"
+#include "../parts_backwards.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -108,27 +109,6 @@ static void walk(const sw_pack *pack)
     sink = sum + walk_trims(pack) + walk_scene(pack) + walk_seam(pack);
 }
 
-/* The checks' parts (core/sw_parts.h) run last first: the loader's threads
- * run them in any order, so the result and the message must not depend on
- * it. A difference aborts, which the fuzzer reports as a crash. */
-static void run_backwards(void *ctx, sw_part_fn fn, void *arg, uint32_t count)
-{
-    (void)ctx;
-    for (uint32_t p = count; p-- > 0;)
-        fn(arg, p);
-}
-
-static void expect_order_free(const uint8_t *buf, size_t size, sw_status in_order,
-                              const sw_error *err)
-{
-    const sw_parts_runner backwards = {.run = run_backwards};
-    sw_pack pack;
-    sw_error again = {SW_OK, ""};
-    sw_status st = sw_pack_open_memory_with(buf, size, &backwards, &pack, &again);
-    if (st != in_order || (st != SW_OK && strcmp(again.message, err->message) != 0))
-        abort();
-}
-
 /* Recomputes what it can: section checksums whose ranges lie in the buffer,
  * then the header checksum if the table fits. Touches nothing else. */
 static void reseal(uint8_t *buf, size_t size)
@@ -167,7 +147,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         sw_status st = sw_pack_open_memory(buf, size, &pack, &err);
         if (st == SW_OK)
             walk(&pack);
-        expect_order_free(buf, size, st, &err);
+        sw_error again;   /* order-free: the loader's threads run the checks in any order */
+        if (!sw_opens_the_same_backwards(buf, size, st, err.message, &again))
+            abort();   /* reported by the fuzzer as a crash */
     }
     free(buf);
     return 0;
