@@ -15,6 +15,7 @@
 
 #include "sw_arena.h"
 #include "sw_error.h"
+#include "sw_levels.h"
 #include "sw_parts.h"
 #include "sw_seam_graph.h"
 
@@ -64,6 +65,16 @@ enum sw_section_type {
     /* What the import of each input skipped or read past, for `seamwalk-pack
      * info`; optional, absent means nothing to say (core/sw_pack_notes.h). */
     SW_SECTION_IMPORT_NOTES = 24,       /* sw_pack_import_note[] */
+    /* Static levels of detail (core/sw_levels.h); optional, all seven or
+     * none, and only beside a Seam Graph: absent, every surface is
+     * tessellated on the fly. */
+    SW_SECTION_LEVELS = 25,             /* one sw_pack_levels */
+    SW_SECTION_LEVEL_RECORDS = 26,      /* sw_level[level_count] */
+    SW_SECTION_LEVEL_SURFACES = 27,     /* uint32_t[surface_count + 1] */
+    SW_SECTION_LEVEL_VERTICES = 28,     /* sw_level_vertex[vertex_count] */
+    SW_SECTION_LEVEL_INDICES = 29,      /* uint16_t[index_count] */
+    SW_SECTION_LEVEL_CHAINS = 30,       /* sw_level_chain[chain_count] */
+    SW_SECTION_LEVEL_CHAIN_POINTS = 31, /* sw_strip_point[chain_point_count] */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
@@ -245,6 +256,10 @@ typedef struct sw_pack {
     const sw_pack_orientation *orientation;      /* NULL when absent: +y up */
     const sw_pack_import_note *import_notes;     /* NULL with count 0 when absent */
     uint32_t import_note_count;
+    /* The static levels: views into the LEVEL_* sections, every pointer
+     * NULL and every count 0 when the pack has none. */
+    const sw_pack_levels *levels_header;         /* NULL when absent */
+    sw_levels levels;
 } sw_pack;
 
 /* runtime_bytes for a pack of total_size bytes and patch_count patches whose
