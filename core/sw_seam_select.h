@@ -151,6 +151,13 @@ sw_status sw_seam_select_loop(const sw_seam_select *state, uint32_t loop, float 
                               sw_seam_point *points, uint32_t capacity, uint32_t *count,
                               int *vanished, sw_error *err);
 
+/* The same, and each point's slot in the loop (0 .. slot_count - 1 from
+ * the loop's first) into slots (capacity entries, may be NULL): where the
+ * point stands along the loop, whatever the front (sw_border_strip.h's t). */
+sw_status sw_seam_select_loop_slots(const sw_seam_select *state, uint32_t loop, float pin,
+                                    sw_seam_point *points, uint32_t *slots, uint32_t capacity,
+                                    uint32_t *count, int *vanished, sw_error *err);
+
 typedef struct sw_seam_select_stats {
     uint32_t active_vertices;
     uint32_t loops_vanished;

@@ -24,8 +24,10 @@ static uint32_t run_start(const sw_seam_select *s, const sw_seam_loop *loop)
 
 typedef struct walk {
     sw_seam_point *points;
+    uint32_t *slots;                    /* NULL, or the loop slot of each point */
     uint32_t capacity, count;
     uint32_t first, second, distinct;   /* the first two distinct vertices, and how many (max 3) */
+    uint32_t first_slot;                /* the loop's */
 } walk;
 
 static void emit(walk *w, const sw_seam_select *s, uint32_t x, uint32_t slot)
@@ -33,6 +35,8 @@ static void emit(walk *w, const sw_seam_select *s, uint32_t x, uint32_t slot)
     if (w->points && w->count < w->capacity)
         w->points[w->count] = (sw_seam_point){x, {s->graph.slots[slot].uv[0],
                                                   s->graph.slots[slot].uv[1]}};
+    if (w->slots && w->count < w->capacity)
+        w->slots[w->count] = slot - w->first_slot;
     w->count++;
     if (w->distinct == 0)
         w->first = x, w->distinct = 1;
@@ -168,12 +172,20 @@ sw_status sw_seam_select_loop(const sw_seam_select *s, uint32_t loop, float pin,
                               sw_seam_point *points, uint32_t capacity, uint32_t *count,
                               int *vanished, sw_error *err)
 {
+    return sw_seam_select_loop_slots(s, loop, pin, points, NULL, capacity, count, vanished, err);
+}
+
+sw_status sw_seam_select_loop_slots(const sw_seam_select *s, uint32_t loop, float pin,
+                                    sw_seam_point *points, uint32_t *slots, uint32_t capacity,
+                                    uint32_t *count, int *vanished, sw_error *err)
+{
     if (count)
         *count = 0;
     if (!s || loop >= s->graph.loop_count)
         return sw_error_set(err, SW_ERR_RANGE, "seam select: loop %u of %u", loop,
                             s ? s->graph.loop_count : 0);
-    walk w = {.points = points, .capacity = points ? capacity : 0};
+    walk w = {.points = points, .slots = points ? slots : NULL,
+              .capacity = points ? capacity : 0, .first_slot = s->graph.loops[loop].first_slot};
     walk_loop(s, &s->graph.loops[loop], pin, &w);
     if (count)
         *count = w.count;

@@ -9,6 +9,7 @@
 
 #include "seam_graph_gen.h"
 #include "sw_alloc_count.h"
+#include "sw_border_strip.h"
 #include "sw_seam_select.h"
 #include "sw_seam_simplify.h"
 #include "sw_test.h"
@@ -779,6 +780,64 @@ static void test_pin_keeps_a_poles_corners(void)
     fixture_close(&f);
 }
 
+/* Each loop's points with their slots: the same points as
+ * sw_seam_select_loop, each point's (u, v) its slot's, its vertex the
+ * active ancestor of its slot's original, and the slots once round the
+ * loop in order (a chain sw_border_strip takes, t = slot). */
+static uint32_t slots_wrong(const fixture *f, float pin)
+{
+    uint32_t wrong = 0, n = f->g.slot_count;
+    sw_seam_point *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
+    uint32_t *slots = malloc(n * sizeof *slots);
+    sw_strip_point *chain = malloc(n * sizeof *chain);
+    for (uint32_t l = 0; l < f->g.loop_count; l++) {
+        const sw_seam_loop *lp = &f->g.loops[l];
+        uint32_t na = 0, nb = 0;
+        sw_seam_select_loop(&f->sel, l, pin, a, n, &na, NULL, NULL);
+        sw_seam_select_loop_slots(&f->sel, l, pin, b, slots, n, &nb, NULL, NULL);
+        wrong += na != nb || memcmp(a, b, na * sizeof *a) != 0;
+        for (uint32_t i = 0; i < nb; i++) {
+            if (slots[i] >= lp->slot_count) {
+                wrong++;
+                continue;
+            }
+            const sw_seam_slot *sl = &f->g.slots[lp->first_slot + slots[i]];
+            uint32_t x = sl->vertex;
+            while (!sw_seam_select_is_active(&f->sel, x))
+                x = f->g.vertices[x].child;
+            wrong += memcmp(sl->uv, b[i].uv, sizeof sl->uv) != 0 || x != b[i].vertex;
+            chain[i] = (sw_strip_point){ i, (float)slots[i] };
+        }
+        wrong += nb > 0 && !sw_border_chain_valid(chain, nb, (float)lp->slot_count);
+    }
+    free(a);
+    free(b);
+    free(slots);
+    free(chain);
+    return wrong;
+}
+
+static void test_points_name_their_slots(void)
+{
+    const seam_gen *cases[] = {&grid, &finned};
+    for (int c = 0; c < 2; c++) {
+        fixture f;
+        fixture_open(&f, cases[c]);
+        uint32_t wrong = slots_wrong(&f, 0.0f);
+        for (int t = 0; t < 200; t++)
+            wrong += random_walk(&f, 3, slots_wrong, 0.0f);
+        SW_CHECK_MSG(wrong == 0, "case %d: %u loops wrong", c, wrong);
+        fixture_close(&f);
+    }
+    fixture f;
+    build_pole(&f);
+    uint32_t wrong = 0;
+    for (int t = 0; t < 200; t++)
+        wrong += random_walk(&f, 1, slots_wrong, 0.3f);
+    SW_CHECK_MSG(wrong == 0, "pole: %u loops wrong", wrong);
+    fixture_close(&f);
+}
+
 int main(void)
 {
     SW_RUN(test_starts_at_the_roots);
@@ -794,5 +853,6 @@ int main(void)
     SW_RUN(test_consecutive_repeats_are_dropped);
     SW_RUN(test_pin_leaves_regular_borders_alone);
     SW_RUN(test_pin_keeps_a_poles_corners);
+    SW_RUN(test_points_name_their_slots);
     return sw_test_finish();
 }
