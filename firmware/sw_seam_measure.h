@@ -27,7 +27,7 @@ typedef struct sw_seam_mesh {
 typedef struct sw_seam_exact {
     const sw_trim_patch *patches;
     uint32_t patch_count;
-    double sew_offset;    /* model units, sw_seam_measure_sewing_offset */
+    double sew_offset;    /* model units, sw_seam_sewing_offset (sw_surface_at.h) */
     double depth;         /* the surface's nearest depth this frame */
     double error_px;      /* the walk's bound in pixels */
     double bound_floor;   /* the walk's smallest bound in model units */
@@ -53,9 +53,5 @@ typedef struct sw_seam_error {
 void sw_seam_measure_mesh(const sw_seam_mesh *mesh, const sw_seam_exact *exact,
                           const sw_view *view, sw_stats *stats, sw_seam_error *acc);
 
-/* The largest distance of loop's sewn polyline (its slots at full detail and
- * the middle of each segment) from the surface at the same (u, v). */
-double sw_seam_measure_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
-                                     const sw_trim_patch *patches, uint32_t patch_count);
 
 #endif

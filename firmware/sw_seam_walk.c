@@ -8,6 +8,7 @@
 #include "sw_seam_measure.h"
 #include "sw_seam_surface.h"
 #include "sw_seam_walk_internal.h"
+#include "sw_surface_at.h"
 
 size_t sw_seam_walk_arena_bytes(const sw_pack *pack)
 {
@@ -38,7 +39,7 @@ float sw_seam_walk_sewing_offset(const sw_seam_walk *w, uint32_t s, float *known
     const sw_seam_graph *g = &w->pack->seam;
     double worst = 0;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
-        worst = fmax(worst, sw_seam_measure_sewing_offset(g, &g->loops[l], patches, count));
+        worst = fmax(worst, sw_seam_sewing_offset(g, &g->loops[l], patches, count));
     return known[s] = (float)worst;
 }
 

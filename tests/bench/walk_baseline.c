@@ -23,6 +23,7 @@
 #include "sw_camera_path.h"
 #include "sw_egl_headless.h"
 #include "sw_rss.h"
+#include "sw_surface_at.h"
 #include "sw_up_axis.h"
 #include "walk_baseline.h"
 
@@ -213,7 +214,7 @@ static int load_patches(wb_run *r, sw_error *err)
             return 0;
         double worst = 0;
         for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
-            worst = fmax(worst, sw_seam_measure_sewing_offset(g, &g->loops[l],
+            worst = fmax(worst, sw_seam_sewing_offset(g, &g->loops[l],
                                                                w->patches + ps->first_patch,
                                                                count));
         r->sew_offset[s] = (float)worst;

@@ -1,0 +1,55 @@
+/* The exact surface and the sewing offset (sw_surface_at.h). */
+#include "sw_surface_at.h"
+
+#include <math.h>
+
+#include "sw_bezier.h"
+
+/* The patch whose domain holds (u, v) (the nearest one for points an ulp
+ * outside), and the point's local parameters in it. */
+static const sw_trim_patch *patch_at(const sw_trim_patch *patches, uint32_t n, double u,
+                                     double v, double *s, double *t)
+{
+    const sw_trim_patch *best = &patches[0];
+    double best_out = INFINITY;
+    for (uint32_t i = 0; i < n; i++) {
+        const float *d = patches[i].domain;
+        double out = fmax(fmax(d[0] - u, u - d[1]), fmax(d[2] - v, v - d[3]));
+        if (out < best_out)
+            best_out = out, best = &patches[i];
+    }
+    const float *d = best->domain;
+    *s = fmin(fmax((u - d[0]) / (d[1] - d[0]), 0.0), 1.0);
+    *t = fmin(fmax((v - d[2]) / (d[3] - d[2]), 0.0), 1.0);
+    return best;
+}
+
+/* The exact surface at (u, v). */
+sw_vec3 sw_surface_at(const sw_trim_patch *patches, uint32_t n, double u, double v)
+{
+    double s, t, ctrl[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
+    const sw_trim_patch *tp = patch_at(patches, n, u, v, &s, &t);
+    sw_bezier_patch exact = sw_bezier_patch_from_float(&tp->patch, ctrl);
+    sw_surface_point sp;
+    sw_bezier_eval(&exact, s, t, SW_EVAL_POINT, &sp);
+    return sp.p;
+}
+
+double sw_seam_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
+                             const sw_trim_patch *patches, uint32_t patch_count)
+{
+    double worst = 0;
+    for (uint32_t k = 0; k < loop->slot_count; k++) {
+        const sw_seam_slot *a = &g->slots[loop->first_slot + k];
+        const sw_seam_slot *b = &g->slots[loop->first_slot + (k + 1) % loop->slot_count];
+        const float *p = g->vertices[a->vertex].p, *q = g->vertices[b->vertex].p;
+        sw_vec3 at = sw_surface_at(patches, patch_count, a->uv[0], a->uv[1]);
+        sw_vec3 mid = sw_surface_at(patches, patch_count, 0.5 * ((double)a->uv[0] + b->uv[0]),
+                                    0.5 * ((double)a->uv[1] + b->uv[1]));
+        sw_vec3 chord = sw_v3(0.5 * ((double)p[0] + q[0]), 0.5 * ((double)p[1] + q[1]),
+                              0.5 * ((double)p[2] + q[2]));
+        worst = fmax(worst, sw_v3_length(sw_v3_sub(at, sw_v3(p[0], p[1], p[2]))));
+        worst = fmax(worst, sw_v3_length(sw_v3_sub(mid, chord)));
+    }
+    return worst;
+}

@@ -1,0 +1,25 @@
+/* The exact surface of a trimmed surface's patches at a (u, v), and how far
+ * its sewn border lies from it: what every measurement of drawn or stored
+ * triangles against the surface uses (the walk's error, the static levels'
+ * stored error, the benchmarks). No allocation; GL-free. */
+#ifndef SW_SURFACE_AT_H
+#define SW_SURFACE_AT_H
+
+#include <stdint.h>
+
+#include "sw_math.h"
+#include "sw_seam_graph.h"
+#include "sw_trim_tess.h"
+
+/* The point at (u, v) of the patch whose domain holds it (the nearest one
+ * for points an ulp outside). */
+sw_vec3 sw_surface_at(const sw_trim_patch *patches, uint32_t patch_count, double u, double v);
+
+/* The largest distance of loop's sewn polyline (its slots at full detail and
+ * the middle of each segment) from the surface at the same (u, v): the
+ * file's own gaps, which sewing joins across and no level of detail makes
+ * smaller. */
+double sw_seam_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
+                             const sw_trim_patch *patches, uint32_t patch_count);
+
+#endif
