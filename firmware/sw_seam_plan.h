@@ -35,6 +35,8 @@ typedef struct sw_seam_draw_item {
     float depth;                         /* its nearest depth this frame */
     uint8_t late;                        /* drawn coarser than the view asks (its new mesh
                                             is being made): measured apart */
+    uint8_t standin;                     /* a static level standing in (no (u, v) to measure
+                                            against the surface: its error is the level's) */
 } sw_seam_draw_item;
 
 /* One mesh to upload before the frame's first draw. */

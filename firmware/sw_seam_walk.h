@@ -92,6 +92,7 @@
 #include "sw_seam_make.h"
 #include "sw_seam_plan.h"
 #include "sw_seam_select.h"
+#include "sw_seam_standin.h"
 #include "sw_stats.h"
 #include "sw_tess.h"
 #include "sw_trim_tess.h"
@@ -174,6 +175,14 @@ typedef struct sw_seam_walk {
     uint32_t room_retries;        /* of the batch: rounds its jobs went again for room */
     int room_tight;               /* the last batch went again for room: no prefetch */
     sw_seam_candidate *candidates;/* surface_count */
+    /* Stand-ins (sw_seam_standin.h), with workers and a pack with static
+     * levels; NULL otherwise (a surface in view waits for its mesh). */
+    sw_seam_standin *standins;
+    uint8_t *standin;             /* surface_count: its cache entry is a stand-in */
+    uint8_t *moved;               /* surface_count: its loops changed when the batch in flight
+                                     moved the front */
+    uint32_t *drawn_shown;        /* original_count: the front's shown vertices as the drawn
+                                     meshes have them, kept while a batch is in flight */
     uint64_t batch_tris;          /* of the frame's schedule: triangles estimated */
 } sw_seam_walk;
 
@@ -218,6 +227,8 @@ typedef struct sw_seam_frame {
                                      the same (u, v), sw_seam_measure.h */
     /* With workers: */
     uint32_t waiting_surfaces;    /* visible with no mesh yet (not drawn: holes until made) */
+    uint32_t standins;            /* drawn from a static level while their mesh is made */
+    uint32_t standins_made;       /* stand-ins made this frame */
     uint32_t behind_surfaces;     /* drawn from a mesh coarser than the view's bound */
     uint32_t frames_behind;       /* the longest a drawn surface has waited for its work */
     double behind_ratio;          /* the most a drawn mesh's bound exceeds the view's */

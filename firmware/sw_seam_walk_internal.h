@@ -58,6 +58,11 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *fra
  * frame when it has none or it no longer serves. */
 void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
 
+/* V: surface s (with no mesh) stood in for by a static level, joined to
+ * its loops as drawn, uploaded in the plan (sw_seam_standin.h); 1 when it
+ * is drawn so. */
+int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
+
 /* Surface s's cache entry (READY) into the plan's uploads. */
 void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan);
 

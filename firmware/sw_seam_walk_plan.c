@@ -79,6 +79,12 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
         frame->vanished_surfaces++;
         return;
     }
+    if (e->state == SW_SEAM_EMPTY && w->standins)
+        sw_seam_walk_stand_in(w, s, plan, frame);
+    if (e->state == SW_SEAM_GONE) {   /* gone in the loops the stand-in was made in */
+        frame->vanished_surfaces++;
+        return;
+    }
     frame->cracks += e->cracks;
     if (e->state == SW_SEAM_EMPTY && w->workers) {
         frame->waiting_surfaces++;   /* its first mesh is not made yet */
@@ -98,7 +104,9 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
          * measured apart (stats error_px_behind): error_px is then the
          * error of meshes made for their bounds. */
         .late = w->workers && behind_ratio(w, s, e) > 1,
+        .standin = w->standins && w->standin[s],
     };
+    frame->standins += item.standin;
     sw_seam_plan_draw(plan, &item);
     e->last_frame = w->frame;   /* the epoch its blocks stay in use until (sw_handoff.h) */
     frame->drawn_surfaces++;
@@ -109,6 +117,30 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
     frame->holes_filled += e->holes_filled;
     if (w->workers)
         count_behind(w, s, e, frame);
+}
+
+int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
+{
+    uint32_t level = sw_seam_standin_level(&w->pack->levels, s, w->target[s]);
+    if (level == UINT32_MAX)
+        return 0;
+    sw_seam_select front = w->select;
+    if (w->batch_count > 0)   /* the front moved for it: draw what the others show */
+        front.shown = w->drawn_shown;
+    sw_seam_entry *e = &w->cache.entries[s];
+    uint32_t last = e->last_frame;
+    if (!sw_seam_standin_make(w->standins, &front, s, level, w->seam_bound[s], &w->cache,
+                              sw_seam_workers_place, w->workers, e))
+        return 0;
+    e->last_frame = last;
+    if (e->state != SW_SEAM_READY)
+        return 0;
+    w->standin[s] = 1;
+    frame->standins_made++;
+    if (w->need_since[s] == UINT32_MAX)
+        w->need_since[s] = w->frame - 1;
+    sw_seam_walk_plan_upload(w, s, plan);
+    return 1;
 }
 
 void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
@@ -140,13 +172,18 @@ static void measure_item(sw_seam_walk *w, const sw_seam_draw_item *it, const sw_
 {
     const sw_seam_cache *c = &w->cache;
     uint32_t s = it->surface, patch_count = 0;
-    if (sw_trim_patches_from_pack(w->pack, s, w->measure_patches, w->measure_max_patches,
-                                  &patch_count, NULL))
-        return;
     const sw_seam_mesh mesh = { c->verts + it->first_vertex,
                                 c->uvs + 2 * (size_t)it->first_vertex,
                                 c->index_data + it->first_index, it->vertex_count,
                                 it->index_count };
+    if (it->standin) {   /* seams as drawn, yes; its error is its level's */
+        if (w->drawn)
+            sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
+        return;
+    }
+    if (sw_trim_patches_from_pack(w->pack, s, w->measure_patches, w->measure_max_patches,
+                                  &patch_count, NULL))
+        return;
     float offset = sw_seam_walk_sewing_offset(w, s, w->measure_sew_offset, w->measure_patches,
                                               w->measure_max_patches);
     const sw_seam_exact exact = { w->measure_patches, patch_count, offset, it->depth,

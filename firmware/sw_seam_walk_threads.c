@@ -11,11 +11,43 @@
 #include "sw_seam_surface.h"
 #include "sw_seam_walk_internal.h"
 
+/* The stand-ins' state (with a pack that has static levels). */
+static size_t standin_bytes(const sw_pack *pack)
+{
+    if (pack->levels.level_count == 0)
+        return 0;
+    size_t n = (size_t)pack->seam.surface_count + 1;
+    return sw_arena_worst_case(sizeof(sw_seam_standin), 64) + sw_seam_standin_bytes(pack) +
+           2 * sw_arena_worst_case(n, 64) +
+           sw_arena_worst_case(((size_t)pack->seam.original_count + 1) * sizeof(uint32_t), 64);
+}
+
 size_t sw_seam_walk_worker_bytes(const sw_pack *pack, uint32_t count, int fill)
 {
     sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
     return sw_arena_worst_case(sizeof(sw_seam_workers), 64) +
-           (size_t)count * (size_t)sw_seam_worker_bytes(&m, fill);
+           (size_t)count * (size_t)sw_seam_worker_bytes(&m, fill) + standin_bytes(pack);
+}
+
+static sw_status start_standins(sw_seam_walk *w, sw_arena *arena, sw_error *err)
+{
+    const sw_pack *pack = w->pack;
+    if (pack->levels.level_count == 0)
+        return SW_OK;
+    size_t n = (size_t)pack->seam.surface_count + 1;
+    sw_seam_standin *m = sw_arena_alloc(arena, sizeof *m, 64);
+    w->standin = sw_arena_alloc(arena, n, 64);
+    w->moved = sw_arena_alloc(arena, n, 64);
+    w->drawn_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
+                                           sizeof(uint32_t), 64);
+    if (!m || !w->standin || !w->moved || !w->drawn_shown)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the stand-ins");
+    memset(w->standin, 0, n);
+    memset(w->moved, 0, n);
+    sw_status st = sw_seam_standin_init(m, pack, arena, err);
+    if (st == SW_OK)
+        w->standins = m;
+    return st;
 }
 
 sw_status sw_seam_walk_start_workers(sw_seam_walk *w, uint32_t count, double target_ms,
@@ -26,8 +58,12 @@ sw_status sw_seam_walk_start_workers(sw_seam_walk *w, uint32_t count, double tar
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the workers");
     sw_status st = sw_seam_workers_init(p, count, w->pack, &w->select, &w->cache, &w->largest,
                                         w->fill != NULL, shared, arena, err);
-    if (st != SW_OK)
+    if (st == SW_OK)
+        st = start_standins(w, arena, err);
+    if (st != SW_OK) {
+        sw_seam_workers_stop(p);
         return st;
+    }
     w->workers = p;
     sw_seam_budget_init(&w->budget, target_ms);
     return SW_OK;
@@ -72,6 +108,8 @@ static void retire_mesh(sw_seam_walk *w, uint32_t s)
     if (e->state == SW_SEAM_READY)
         sw_retire_ring_put(&w->workers->retire,
                            (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
+    if (w->standin)
+        w->standin[s] = 0;
     e->state = SW_SEAM_EMPTY;
     e->vertex_count = e->index_count = 0;
 }
@@ -106,6 +144,10 @@ static int wants_work(const sw_seam_walk *w, uint32_t s, double *weight)
     const sw_seam_entry *e = &w->cache.entries[s];
     if (!sw_seam_walk_needs_mesh(w, s) ||
         (e->state != SW_SEAM_EMPTY && e->made_bound == w->target[s]))
+        return 0;
+    /* A static level within the bound is as good as a mesh made for it. */
+    if (w->standins && w->standin[s] && e->state == SW_SEAM_READY &&
+        e->made_bound <= w->target[s])
         return 0;
     int has_mesh = e->state == SW_SEAM_READY;
     double t = has_mesh ? e->made_bound : w->target[s];
@@ -212,6 +254,11 @@ static sw_status follow_seams(sw_seam_walk *w, sw_seam_frame *frame, sw_error *e
  * beside the new ones). */
 static sw_status open_batch(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err)
 {
+    /* What the drawn meshes show until the batch is swapped in: stand-ins
+     * made meanwhile are made in it. */
+    if (w->standins && sw_seam_walk_async(w))
+        memcpy(w->drawn_shown, w->select.shown,
+               w->pack->seam.original_count * sizeof *w->drawn_shown);
     double new_tris = choose(w, frame), must_tris = 0;
     sw_status st = sw_seam_walk_async(w) ? follow_seams(w, frame, err) : SW_OK;
     uint32_t n = w->pack->seam.surface_count;
@@ -304,6 +351,25 @@ static void consume(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_fra
     }
 }
 
+/* After a swap: stand-ins made while the batch was in flight whose loops
+ * its move changed show the old loops beside neighbours that now show the
+ * new ones; they are made again from the front (now what is drawn), and
+ * the ones out of view given up. */
+static void remake_moved_standins(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame)
+{
+    if (!w->standins)
+        return;
+    uint32_t n = w->pack->seam.surface_count;
+    for (uint32_t s = 0; s < n; s++) {
+        if (!w->standin[s] || !w->moved[s])
+            continue;
+        retire_mesh(w, s);
+        if (sw_seam_walk_needs_mesh(w, s))
+            sw_seam_walk_stand_in(w, s, plan, frame);
+    }
+    memset(w->moved, 0, n);
+}
+
 static int batch_done(const sw_seam_walk *w)
 {
     return w->batch_pushed == w->batch_count &&
@@ -379,6 +445,7 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *fra
         for (uint32_t i = 0; i < w->batch_count; i++)
             consume(w, w->batch[i], plan, frame);
         w->batch_count = w->batch_pushed = 0;
+        remake_moved_standins(w, plan, frame);
         w->room_tight = w->room_retries > 0;
         w->room_retries = 0;
         frame->batches_committed = 1;

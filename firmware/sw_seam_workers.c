@@ -22,8 +22,9 @@ static uint64_t now_ns(void)
 }
 
 /* The cache's blocks for a worker's mesh: retired blocks whose frame has
- * finished go back first. Under alloc_lock, which only workers take. */
-static int place_blocks(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e)
+ * finished go back first. Under alloc_lock, which the workers and V (for
+ * stand-ins) take, never P. */
+int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e)
 {
     (void)s;
     sw_seam_workers *p = ctx;
@@ -52,7 +53,7 @@ static void run_job(sw_seam_workers *p, sw_seam_maker *maker, uint32_t s)
     uint64_t t0 = now_ns();
     const sw_seam_job job = p->jobs[s];
     int no_room = 0;
-    uint64_t tris = sw_seam_make(maker, s, job.bound, job.seam_bound, p->cache, place_blocks,
+    uint64_t tris = sw_seam_make(maker, s, job.bound, job.seam_bound, p->cache, sw_seam_workers_place,
                                  p, &p->made[s], &no_room);
     p->no_room[s] = (uint8_t)no_room;
     atomic_fetch_add_explicit(&p->made_triangles, tris, memory_order_relaxed);

@@ -97,6 +97,10 @@ sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack
  * workers' queues, in the order pushed); 0 when every queue is full. */
 int sw_seam_workers_push(sw_seam_workers *p, uint32_t s);
 
+/* A sw_seam_place_fn (ctx: the pool) for meshes the workers share the
+ * cache with: V's stand-ins. */
+int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e);
+
 /* Producer: wakes the workers after a round of pushes. */
 void sw_seam_workers_wake(sw_seam_workers *p);
 

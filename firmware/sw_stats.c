@@ -289,6 +289,12 @@ void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
     }
 }
 
+void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made)
+{
+    s->standins_max = drawn > s->standins_max ? drawn : s->standins_max;
+    s->standins_made += made;
+}
+
 void sw_stats_add_update_cap(sw_stats *s, double used, double cap)
 {
     if (cap <= 0)
@@ -324,14 +330,16 @@ static sw_status write_visibility(FILE *f, const sw_stats *s, sw_arena *scratch)
 static void write_threads(FILE *f, const sw_stats *s)
 {
     fprintf(f, "  \"threads\": {\"workers\": %d, \"sync_work\": %d, \"target_ms\": %.3f, "
-               "\"waiting_surfaces_max\": %u, \"behind_surfaces_max\": %u, "
+               "\"waiting_surfaces_max\": %u, \"standins_max\": %u, \"standins_made\": %llu, "
+               "\"behind_surfaces_max\": %u, "
                "\"frames_behind_max\": %u, \"behind_ratio_max\": %.3f, \"jobs\": %llu, "
                "\"prefetch_jobs\": %llu, \"batches\": %llu, \"seam_ops\": %llu, \"budget_used_mean\": %.3f, "
                "\"budget_used_max\": %.3f, \"budget_tris_last\": %.0f, "
                "\"worker_triangles\": %llu, \"worker_busy_ms\": %.1f, \"steals\": %llu, "
                "\"updated\": {\"capped_batches\": %llu, \"over_cap_batches\": %llu, "
                "\"over_cap_ratio_max\": %.3f}},\n",
-            s->workers, s->sync_work, s->target_ms, s->waiting_max, s->behind_max,
+            s->workers, s->sync_work, s->target_ms, s->waiting_max, s->standins_max,
+            (unsigned long long)s->standins_made, s->behind_max,
             s->frames_behind_max, s->behind_ratio_max, (unsigned long long)s->jobs_total,
             (unsigned long long)s->prefetch_total, (unsigned long long)s->batches_total, (unsigned long long)s->seam_ops_total,
             s->budget_frames ? s->budget_used_sum / s->budget_frames : 0.0, s->budget_used_max,

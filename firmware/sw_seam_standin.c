@@ -1,0 +1,204 @@
+/* Stand-ins from static levels (sw_seam_standin.h). V's thread. */
+#include "sw_seam_standin.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "sw_walk_memory.h"
+
+static uint32_t longest_chain(const sw_levels *lv)
+{
+    uint32_t most = 0;
+    for (uint32_t i = 0; i < lv->chain_count; i++)
+        most = lv->chains[i].point_count > most ? lv->chains[i].point_count : most;
+    return most;
+}
+
+size_t sw_seam_standin_bytes(const sw_pack *pack)
+{
+    sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    size_t p = (size_t)m.points + 1, l = (size_t)m.loops + 1;
+    size_t t = p + longest_chain(&pack->levels) + 1;
+    return sw_arena_worst_case(p * sizeof(sw_seam_point), 64) +
+           sw_arena_worst_case(p * sizeof(uint32_t), 64) +
+           2 * sw_arena_worst_case(l * sizeof(uint32_t), 64) + sw_arena_worst_case(l, 64) +
+           sw_arena_worst_case(p * sizeof(sw_strip_point), 64) +
+           sw_arena_worst_case(3 * t * sizeof(uint32_t), 64);
+}
+
+sw_status sw_seam_standin_init(sw_seam_standin *m, const sw_pack *pack, sw_arena *arena,
+                               sw_error *err)
+{
+    sw_walk_sizes s = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    memset(m, 0, sizeof *m);
+    m->pack = pack;
+    m->capacity = s.points + 1, m->max_loops = s.loops + 1;
+    m->max_chain = longest_chain(&pack->levels);
+    size_t t = (size_t)m->capacity + m->max_chain + 1;
+    m->points = sw_arena_alloc(arena, m->capacity * sizeof *m->points, 64);
+    m->slots = sw_arena_alloc(arena, m->capacity * sizeof *m->slots, 64);
+    m->loop_at = sw_arena_alloc(arena, m->max_loops * sizeof *m->loop_at, 64);
+    m->loop_count = sw_arena_alloc(arena, m->max_loops * sizeof *m->loop_count, 64);
+    m->vanished = sw_arena_alloc(arena, m->max_loops, 64);
+    m->outer = sw_arena_alloc(arena, m->capacity * sizeof *m->outer, 64);
+    m->tris = sw_arena_alloc(arena, 3 * t * sizeof *m->tris, 64);
+    if (!m->points || !m->slots || !m->loop_at || !m->loop_count || !m->vanished ||
+        !m->outer || !m->tris)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the stand-ins' "
+                            "buffers (%zu bytes)", sw_seam_standin_bytes(pack));
+    return SW_OK;
+}
+
+uint32_t sw_seam_standin_level(const sw_levels *lv, uint32_t s, float bound)
+{
+    if (!lv->surface_levels || s >= lv->surface_count)
+        return UINT32_MAX;
+    uint32_t first = lv->surface_levels[s], end = lv->surface_levels[s + 1];
+    if (first == end)
+        return UINT32_MAX;
+    uint32_t k = first;
+    while (k + 1 < end && lv->levels[k + 1].error <= bound)
+        k++;
+    return k;
+}
+
+/* Surface s's loops at front into m; 0 when an outer loop vanished. *points
+ * gets their points in all. */
+static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s, float pin,
+                  uint32_t *points)
+{
+    const sw_seam_graph *g = &m->pack->seam;
+    uint32_t at = 0, first = g->surface_loops[s];
+    for (uint32_t l = first; l < g->surface_loops[s + 1]; l++) {
+        uint32_t count = 0;
+        int vanished = 0;
+        /* Cannot fail: l is in range and the buffers hold the surface's slots. */
+        sw_seam_select_loop_slots(front, l, pin, m->points + at, m->slots + at,
+                                  m->capacity - at, &count, &vanished, NULL);
+        if (vanished && (g->loops[l].flags & SW_SEAM_LOOP_OUTER))
+            return 0;
+        m->loop_at[l - first] = at, m->loop_count[l - first] = count;
+        m->vanished[l - first] = (uint8_t)vanished;
+        at += count;
+    }
+    *points = at;
+    return 1;
+}
+
+_Static_assert(sizeof(sw_level_vertex) == sizeof(sw_vertex), "a level's vertices are drawn as "
+               "they are stored");
+
+/* Triangle t turned to face where its vertices' normals point. */
+static void face_out(const sw_vertex *v, uint16_t *t)
+{
+    const float *a = v[t[0]].pos, *b = v[t[1]].pos, *c = v[t[2]].pos;
+    double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                    e1[0] * e2[1] - e1[1] * e2[0] };
+    double dot = 0;
+    for (int k = 0; k < 3; k++)
+        dot += n[k] * ((double)v[t[0]].normal[k] + v[t[1]].normal[k] + v[t[2]].normal[k]);
+    if (dot < 0) {
+        uint16_t x = t[1];
+        t[1] = t[2], t[2] = x;
+    }
+}
+
+/* Loop i's strip between its points (mesh vertices from `base`) and the
+ * level's chain, appended at idx; returns the indices written (0: the
+ * chains did not make a strip). The points take their normals from the
+ * level's chain vertices they are joined to. */
+static uint32_t strip(sw_seam_standin *m, uint32_t i, uint32_t base, const sw_level_chain *ch,
+                      float period, sw_vertex *v, uint16_t *idx)
+{
+    const sw_strip_point *inner = m->pack->levels.chain_points + ch->first_point;
+    uint32_t count = m->loop_count[i], at = m->loop_at[i];
+    for (uint32_t j = 0; j < count; j++)
+        m->outer[j] = (sw_strip_point){ base + j, (float)m->slots[at + j] };
+    uint32_t tris = sw_border_strip(m->outer, count, inner, ch->point_count, period, m->tris);
+    for (uint32_t t = 0; t < tris; t++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t x = m->tris[3 * t + k], from = m->tris[3 * t + (k + 1) % 3];
+            if (x >= base && from < base)
+                memcpy(v[x].normal, v[from].normal, sizeof v[x].normal);
+            from = m->tris[3 * t + (k + 2) % 3];
+            if (x >= base && from < base)
+                memcpy(v[x].normal, v[from].normal, sizeof v[x].normal);
+        }
+    for (uint32_t t = 0; t < tris; t++) {
+        for (int k = 0; k < 3; k++)
+            idx[3 * t + k] = (uint16_t)m->tris[3 * t + k];
+        face_out(v, idx + 3 * t);
+    }
+    return 3 * tris;
+}
+
+/* Vertices and indices the stand-in needs; cracks for loops it leaves as
+ * the level has them. */
+static void sizes(const sw_seam_standin *m, uint32_t s, const sw_level *lv_rec, uint32_t *n,
+                  uint32_t *idx, uint32_t *cracks)
+{
+    const sw_seam_graph *g = &m->pack->seam;
+    *n = lv_rec->vertex_count, *idx = lv_rec->index_count, *cracks = 0;
+    for (uint32_t i = 0; i < g->surface_loops[s + 1] - g->surface_loops[s]; i++) {
+        const sw_level_chain *ch = &m->pack->levels.chains[lv_rec->first_chain + i];
+        if (ch->point_count == 0) {
+            *cracks += m->vanished[i] ? 0 : m->loop_count[i];
+            continue;
+        }
+        *n += m->loop_count[i];
+        *idx += 3 * (m->loop_count[i] + ch->point_count);
+    }
+}
+
+int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
+                         uint32_t level, float pin, sw_seam_cache *c, sw_seam_place_fn place,
+                         void *place_ctx, sw_seam_entry *e)
+{
+    const sw_levels *lv = &m->pack->levels;
+    const sw_level *rec = &lv->levels[level];
+    const sw_seam_graph *g = &m->pack->seam;
+    memset(e, 0, sizeof *e);
+    e->made_bound = e->error_bound = rec->error;
+    uint32_t points = 0, n = 0, idx = 0, cracks = 0;
+    if (!gather(m, front, s, pin, &points)) {
+        e->state = SW_SEAM_GONE;
+        return 1;
+    }
+    sizes(m, s, rec, &n, &idx, &cracks);
+    if (n > SW_WALK_VERTICES || idx > SW_WALK_INDICES) {
+        e->state = SW_SEAM_FAILED;
+        e->cracks = points;
+        return 1;
+    }
+    if (!place(place_ctx, s, n, idx, e)) {
+        memset(e, 0, sizeof *e);
+        return 0;
+    }
+    sw_vertex *v = c->verts + (size_t)e->vertex_block * SW_SEAM_CACHE_VERTEX_UNIT;
+    float *uv = c->uvs + 2 * (size_t)e->vertex_block * SW_SEAM_CACHE_VERTEX_UNIT;
+    uint16_t *out = c->index_data + (size_t)e->index_block * SW_SEAM_CACHE_INDEX_UNIT;
+    memcpy(v, lv->vertices + rec->first_vertex, rec->vertex_count * sizeof *v);
+    memcpy(out, lv->indices + rec->first_index, rec->index_count * sizeof *out);
+    uint32_t base = rec->vertex_count, written = rec->index_count;
+    for (uint32_t i = 0; i < g->surface_loops[s + 1] - g->surface_loops[s]; i++) {
+        const sw_level_chain *ch = &lv->chains[rec->first_chain + i];
+        if (ch->point_count == 0)
+            continue;
+        for (uint32_t j = 0; j < m->loop_count[i]; j++) {
+            sw_vertex *p = &v[base + j];
+            memcpy(p->pos, g->vertices[m->points[m->loop_at[i] + j].vertex].p, sizeof p->pos);
+            memset(p->normal, 0, sizeof p->normal);
+        }
+        float period = (float)g->loops[g->surface_loops[s] + i].slot_count;
+        written += strip(m, i, base, ch, period, v, out + written);
+        base += m->loop_count[i];
+    }
+    for (uint32_t i = 0; i < 2 * n; i++)
+        uv[i] = NAN;
+    e->vertex_count = n, e->index_count = written;
+    e->cracks = cracks;
+    e->state = SW_SEAM_READY;
+    return 1;
+}

@@ -1,0 +1,63 @@
+/* Stand-ins: a surface in view whose own mesh is not made yet is drawn at
+ * once from one of its static levels (core/sw_levels.h), joined by border
+ * strips (core/sw_border_strip.h) to its loops as the drawn meshes have
+ * them, so it is neither left out nor cracked open beside its neighbours.
+ * The walk's visibility side V makes them (sw_seam_walk_plan.c) into the
+ * cache like any mesh; the walk's own mesh replaces a stand-in when it is
+ * swapped in. A stand-in is counted as behind, with its level's measured
+ * error.
+ *
+ * The loops: the drawn meshes were all made from one state of the front
+ * (the walk's batches, sw_seam_walk.h), which is the front itself unless a
+ * batch is in flight; then it is the front as it was before the batch
+ * moved it, kept by the walk (its shown vertices, the one part of the
+ * front a loop's polyline reads).
+ *
+ * Memory: one block from the arena at init (the largest surface's slots,
+ * its strips); no allocation after. Not thread-safe: V's. */
+#ifndef SW_SEAM_STANDIN_H
+#define SW_SEAM_STANDIN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sw_arena.h"
+#include "sw_border_strip.h"
+#include "sw_pack.h"
+#include "sw_seam_cache.h"
+#include "sw_seam_make.h"
+#include "sw_seam_select.h"
+
+typedef struct sw_seam_standin {
+    const sw_pack *pack;
+    sw_seam_point *points;        /* the surface's loops as drawn */
+    uint32_t *slots;
+    uint32_t *loop_at, *loop_count;
+    uint8_t *vanished;
+    sw_strip_point *outer;        /* one loop's points as a chain */
+    uint32_t *tris;               /* one loop's strip */
+    uint32_t capacity, max_loops, max_chain;
+} sw_seam_standin;
+
+/* Arena bytes for the pack's largest surface and longest level chain. */
+size_t sw_seam_standin_bytes(const sw_pack *pack);
+sw_status sw_seam_standin_init(sw_seam_standin *m, const sw_pack *pack, sw_arena *arena,
+                               sw_error *err);
+
+/* The level of surface s to stand in for a mesh made for bound (model
+ * units): the coarsest whose error is within it, else the finest.
+ * UINT32_MAX when s has none. */
+uint32_t sw_seam_standin_level(const sw_levels *levels, uint32_t s, float bound);
+
+/* Surface s's stand-in from level `level` and the loops front shows
+ * (pinned as sw_seam_select_loop pins them), into *e with blocks from
+ * place: READY (made_bound the level's error; its (u, v) NaN: it is not
+ * measured as a tessellation is), GONE when its outer loop vanished there,
+ * FAILED when it needs more than one draw's 65536 vertices. 0 when place
+ * found no room (*e EMPTY), else 1. A loop the level covers (a hole it has
+ * no chain for) but the front still shows counts its points as cracks. */
+int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
+                         uint32_t level, float pin, sw_seam_cache *c, sw_seam_place_fn place,
+                         void *place_ctx, sw_seam_entry *e);
+
+#endif
