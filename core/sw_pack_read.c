@@ -1,8 +1,9 @@
 /* The pack container: header, section table, section bounds and checksums,
  * which sections must or may appear, and loading a file into the arena. The
  * records inside the sections are checked by sw_pack_validate.c and, for the
- * trimmed-surface group and the Seam Graph, sw_pack_validate_trim.c and
- * sw_pack_validate_seam.c. Format: assets/PACK_FORMAT.md. */
+ * trimmed-surface group, the Seam Graph and the static levels,
+ * sw_pack_validate_trim.c, sw_pack_validate_seam.c and
+ * sw_pack_validate_levels.c. Format: assets/PACK_FORMAT.md. */
 #include "sw_pack.h"
 
 #include <errno.h>
@@ -141,7 +142,16 @@ _Static_assert(sizeof(float) == 4, "CONTROL holds IEEE binary32");
 _Static_assert(sizeof(SW_PACK_MAGIC) - 1 == 8, "magic is 8 bytes");
 
 enum { HEADER_BYTES = 64, SECTION_BYTES = 32, CONTROL_POINT_BYTES = 16,
-       TRANSFORM_BYTES = 16 * 4, LAST_KNOWN = SW_SECTION_SEAM_SURFACE_LOOPS };
+       TRANSFORM_BYTES = 16 * 4, LAST_KNOWN = SW_SECTION_LEVEL_CHAIN_POINTS };
+
+/* Types this file does not index: SIGNATURE is checked by the unit
+ * (sw_pack_signature.h), ORIENTATION and IMPORT_NOTES by their own modules,
+ * each with its own "a second ..." rule. */
+static int indexed_here(uint32_t t)
+{
+    return t >= SW_SECTION_META && t <= LAST_KNOWN &&
+           (t <= SW_SECTION_SEAM_SURFACE_LOOPS || t >= SW_SECTION_LEVELS);
+}
 
 const char *sw_section_type_name(uint32_t type)
 {
@@ -169,6 +179,13 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_SEAM_SURFACE_LOOPS: return "SEAM_SURFACE_LOOPS";
     case SW_SECTION_ORIENTATION: return "ORIENTATION";
     case SW_SECTION_IMPORT_NOTES: return "IMPORT_NOTES";
+    case SW_SECTION_LEVELS: return "LEVELS";
+    case SW_SECTION_LEVEL_RECORDS: return "LEVEL_RECORDS";
+    case SW_SECTION_LEVEL_SURFACES: return "LEVEL_SURFACES";
+    case SW_SECTION_LEVEL_VERTICES: return "LEVEL_VERTICES";
+    case SW_SECTION_LEVEL_INDICES: return "LEVEL_INDICES";
+    case SW_SECTION_LEVEL_CHAINS: return "LEVEL_CHAINS";
+    case SW_SECTION_LEVEL_CHAIN_POINTS: return "LEVEL_CHAIN_POINTS";
     }
     return "unknown";
 }
@@ -381,7 +398,7 @@ static sw_status find_sections(const sw_pack_section *sections, uint32_t count,
         index[t] = -1;
     for (uint32_t i = 0; i < count; i++) {
         uint32_t t = sections[i].type;
-        if (t < SW_SECTION_META || t > LAST_KNOWN)
+        if (!indexed_here(t))
             continue;
         if (index[t] >= 0)
             return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): a second %s section "
@@ -401,13 +418,14 @@ static sw_status find_sections(const sw_pack_section *sections, uint32_t count,
 static sw_status check_seam_group(const int32_t index[LAST_KNOWN + 1], sw_error *err)
 {
     int32_t seam = index[SW_SECTION_SEAM];
-    for (uint32_t t = SW_SECTION_SEAM_VERTICES; seam < 0 && t <= LAST_KNOWN; t++)
+    for (uint32_t t = SW_SECTION_SEAM_VERTICES; seam < 0 && t <= SW_SECTION_SEAM_SURFACE_LOOPS;
+         t++)
         if (index[t] >= 0)
             return sw_error_set(err, SW_ERR_FORMAT, "section %d (%s): present without a SEAM "
                                 "section", (int)index[t], sw_section_type_name(t));
     if (seam < 0)
         return SW_OK;
-    for (uint32_t t = SW_SECTION_SEAM_VERTICES; t <= LAST_KNOWN; t++)
+    for (uint32_t t = SW_SECTION_SEAM_VERTICES; t <= SW_SECTION_SEAM_SURFACE_LOOPS; t++)
         if (index[t] < 0)
             return sw_error_set(err, SW_ERR_FORMAT, "section %d (SEAM): no %s section (the "
                                 "Seam Graph's sections appear together)", (int)seam,
@@ -415,6 +433,28 @@ static sw_status check_seam_group(const int32_t index[LAST_KNOWN + 1], sw_error 
     if (index[SW_SECTION_SURFACES] < 0)
         return sw_error_set(err, SW_ERR_FORMAT, "section %d (SEAM): present without a SURFACES "
                             "section (its loops index SURFACES)", (int)seam);
+    return SW_OK;
+}
+
+/* The static levels: all seven sections or none (LEVELS' counts size the
+ * others), and only beside a Seam Graph (a level's chains follow its loops). */
+static sw_status check_levels_group(const int32_t index[LAST_KNOWN + 1], sw_error *err)
+{
+    int32_t levels = index[SW_SECTION_LEVELS];
+    for (uint32_t t = SW_SECTION_LEVEL_RECORDS; levels < 0 && t <= LAST_KNOWN; t++)
+        if (index[t] >= 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "section %d (%s): present without a LEVELS "
+                                "section", (int)index[t], sw_section_type_name(t));
+    if (levels < 0)
+        return SW_OK;
+    for (uint32_t t = SW_SECTION_LEVEL_RECORDS; t <= LAST_KNOWN; t++)
+        if (index[t] < 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "section %d (LEVELS): no %s section (the "
+                                "levels' sections appear together)", (int)levels,
+                                sw_section_type_name(t));
+    if (index[SW_SECTION_SEAM] < 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "section %d (LEVELS): present without a Seam "
+                            "Graph (a level's chains follow its loops)", (int)levels);
     return SW_OK;
 }
 
@@ -436,7 +476,8 @@ static sw_status check_groups(const int32_t index[LAST_KNOWN + 1], sw_error *err
     if (surfaces >= 0 && index[SW_SECTION_PATCH_DOMAINS] < 0)
         return sw_error_set(err, SW_ERR_FORMAT, "section %d (SURFACES): no PATCH_DOMAINS "
                             "section (required with SURFACES)", (int)surfaces);
-    return check_seam_group(index, err);
+    sw_status s = check_seam_group(index, err);
+    return s == SW_OK ? check_levels_group(index, err) : s;
 }
 
 /* Each known section's size must be its count (in META or SEAM, named by
@@ -570,6 +611,30 @@ static sw_status map_optional(const uint8_t *data, const int32_t index[], sw_pac
     return SW_OK;
 }
 
+/* One section of a group whose header record holds the counts. */
+typedef struct counted_section {
+    uint32_t type;
+    uint64_t count, record;
+    const char *name;   /* the count, for messages: "SEAM.vertex_count" */
+} counted_section;
+
+/* v[k] = the bytes of group[k], each exactly its count times its record
+ * size (check_groups made sure every one is present). */
+static sw_status map_counted(const uint8_t *data, const int32_t index[],
+                             const sw_pack_section *sec, const counted_section *group, size_t n,
+                             const void **v, sw_error *err)
+{
+    for (size_t k = 0; k < n; k++) {
+        int32_t i = index[group[k].type];
+        sw_status s = check_section_size(sec, i, group[k].type, group[k].count, group[k].record,
+                                         group[k].name, err);
+        if (s != SW_OK)
+            return s;
+        v[k] = data + sec[i].offset;
+    }
+    return SW_OK;
+}
+
 /* The Seam Graph's views, each section sized by its SEAM count (check_groups
  * made sure all eight are present or none). */
 static sw_status map_seam(const uint8_t *data, const int32_t index[], sw_pack *out, sw_error *err)
@@ -582,11 +647,7 @@ static sw_status map_seam(const uint8_t *data, const int32_t index[], sw_pack *o
         return sw_error_set(err, SW_ERR_FORMAT, "section %d (SEAM): %llu bytes, expected %zu",
                             (int)at, (unsigned long long)sec[at].size, sizeof(sw_pack_seam));
     const sw_pack_seam *h = (const sw_pack_seam *)(data + sec[at].offset);
-    const struct {
-        uint32_t type;
-        uint64_t count, record;
-        const char *name;
-    } parts[] = {
+    const counted_section parts[] = {
         { SW_SECTION_SEAM_VERTICES, h->vertex_count, sizeof(sw_seam_vertex), "SEAM.vertex_count" },
         { SW_SECTION_SEAM_SLOTS, h->slot_count, sizeof(sw_seam_slot), "SEAM.slot_count" },
         { SW_SECTION_SEAM_LOOPS, h->loop_count, sizeof(sw_seam_loop), "SEAM.loop_count" },
@@ -598,14 +659,9 @@ static sw_status map_seam(const uint8_t *data, const int32_t index[], sw_pack *o
           "(SEAM.surface_count + 1)" },
     };
     const void *v[sizeof parts / sizeof *parts];
-    for (size_t k = 0; k < sizeof parts / sizeof *parts; k++) {
-        int32_t i = index[parts[k].type];
-        sw_status s = check_section_size(sec, i, parts[k].type, parts[k].count, parts[k].record,
-                                         parts[k].name, err);
-        if (s != SW_OK)
-            return s;
-        v[k] = data + sec[i].offset;
-    }
+    sw_status s = map_counted(data, index, sec, parts, sizeof parts / sizeof *parts, v, err);
+    if (s != SW_OK)
+        return s;
     out->seam_header = h;
     out->seam = (sw_seam_graph){
         .vertices = v[0], .slots = v[1], .loops = v[2], .edges = v[3], .collapses = v[4],
@@ -614,6 +670,46 @@ static sw_status map_seam(const uint8_t *data, const int32_t index[], sw_pack *o
         .loop_count = h->loop_count, .edge_count = h->edge_count,
         .collapse_count = h->collapse_count, .slot_ref_count = h->slot_ref_count,
         .surface_count = h->surface_count, .tolerance = h->tolerance };
+    return SW_OK;
+}
+
+/* The levels' views, each section sized by its LEVELS count (check_groups
+ * made sure all seven are present or none). LEVEL_INDICES is exactly
+ * index_count x 2 bytes, even when that is no multiple of 4: sizes are
+ * exact and only offsets are aligned. */
+static sw_status map_levels(const uint8_t *data, const int32_t index[], sw_pack *out,
+                            sw_error *err)
+{
+    const sw_pack_section *sec = out->sections;
+    int32_t at = index[SW_SECTION_LEVELS];
+    if (at < 0)
+        return SW_OK;
+    if (sec[at].size != sizeof(sw_pack_levels))
+        return sw_error_set(err, SW_ERR_FORMAT, "section %d (LEVELS): %llu bytes, expected %zu",
+                            (int)at, (unsigned long long)sec[at].size, sizeof(sw_pack_levels));
+    const sw_pack_levels *h = (const sw_pack_levels *)(data + sec[at].offset);
+    const counted_section parts[] = {
+        { SW_SECTION_LEVEL_RECORDS, h->level_count, sizeof(sw_level), "LEVELS.level_count" },
+        { SW_SECTION_LEVEL_SURFACES, (uint64_t)h->surface_count + 1, sizeof(uint32_t),
+          "(LEVELS.surface_count + 1)" },
+        { SW_SECTION_LEVEL_VERTICES, h->vertex_count, sizeof(sw_level_vertex),
+          "LEVELS.vertex_count" },
+        { SW_SECTION_LEVEL_INDICES, h->index_count, sizeof(uint16_t), "LEVELS.index_count" },
+        { SW_SECTION_LEVEL_CHAINS, h->chain_count, sizeof(sw_level_chain), "LEVELS.chain_count" },
+        { SW_SECTION_LEVEL_CHAIN_POINTS, h->chain_point_count, sizeof(sw_strip_point),
+          "LEVELS.chain_point_count" },
+    };
+    const void *v[sizeof parts / sizeof *parts];
+    sw_status s = map_counted(data, index, sec, parts, sizeof parts / sizeof *parts, v, err);
+    if (s != SW_OK)
+        return s;
+    out->levels_header = h;
+    out->levels = (sw_levels){
+        .levels = v[0], .surface_levels = v[1], .vertices = v[2], .indices = v[3],
+        .chains = v[4], .chain_points = v[5], .level_count = h->level_count,
+        .vertex_count = h->vertex_count, .index_count = h->index_count,
+        .chain_count = h->chain_count, .chain_point_count = h->chain_point_count,
+        .surface_count = h->surface_count };
     return SW_OK;
 }
 
@@ -673,9 +769,11 @@ sw_status sw_pack_open_memory_with(const void *data, size_t size, const sw_parts
     if ((s = map_sections(bytes, index, &pack, err)) != SW_OK ||
         (s = map_optional(bytes, index, &pack, err)) != SW_OK ||
         (s = map_seam(bytes, index, &pack, err)) != SW_OK ||
+        (s = map_levels(bytes, index, &pack, err)) != SW_OK ||
         (s = sw_pack_validate_records(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_trim(&pack, err)) != SW_OK ||
         (s = sw_pack_validate_seam(&pack, runner, err)) != SW_OK ||
+        (s = sw_pack_validate_levels(&pack, runner, err)) != SW_OK ||
         (s = check_runtime_bytes(&pack, err)) != SW_OK ||
         (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK ||
         (s = sw_pack_map_import_notes(bytes, &pack, err)) != SW_OK)

@@ -3,8 +3,8 @@
  * checksum have been verified and each view's byte size matches its META
  * count, and two small rules the writer (assets/pack/sw_pack_write.c) shares.
  * Split out so each file keeps one job: sw_pack_read.c the container,
- * sw_pack_validate.c, sw_pack_validate_trim.c and sw_pack_validate_seam.c the
- * records. */
+ * sw_pack_validate.c, sw_pack_validate_trim.c, sw_pack_validate_seam.c and
+ * sw_pack_validate_levels.c the records. */
 #ifndef SW_PACK_VALIDATE_H
 #define SW_PACK_VALIDATE_H
 
@@ -28,6 +28,14 @@ sw_status sw_pack_validate_trim(const sw_pack *pack, sw_error *err);
  * (sw_parts.h, NULL: in order here). */
 sw_status sw_pack_validate_seam(const sw_pack *pack, const sw_parts_runner *runner,
                                 sw_error *err);
+
+/* The static levels (LEVELS and LEVEL_*), in sw_pack_validate_levels.c;
+ * runs after sw_pack_validate_seam, so the Seam Graph's loops the chains
+ * follow are known good. Nothing to check when the pack has no LEVELS
+ * section. The per-level checks in parts run by runner (sw_parts.h, NULL:
+ * in order here). */
+sw_status sw_pack_validate_levels(const sw_pack *pack, const sw_parts_runner *runner,
+                                  sw_error *err);
 
 /* Number of control points along edge (enum sw_patch_edge) of patch. */
 static inline uint32_t sw_pack_edge_points(const sw_pack_patch *patch, uint32_t edge)

@@ -240,6 +240,81 @@ static inline void make_sample_seam(sample_seam *g)
     view_sample_seam(g);
 }
 
+/* ---- static levels over that graph, built by hand ----
+ * Surface 0 (loop 0, outer, 5 slots; loop 1, the hole, 3) has one level:
+ * its square in 2 triangles, the hole vanished (an empty chain). Surface 1
+ * (loop 2, outer, 5 slots) has two: its square in 2 triangles, then one
+ * triangle. Chain points stand at their slot: t is the slot's place in
+ * its loop. 15 indices: LEVEL_INDICES is 30 bytes, no multiple of 4. */
+
+enum { LEVELS_LEVELS = 3, LEVELS_VERTICES = 11, LEVELS_INDICES = 15, LEVELS_CHAINS = 4,
+       LEVELS_POINTS = 11 };
+
+typedef struct sample_levels {
+    sw_level levels[LEVELS_LEVELS];
+    uint32_t surface_levels[2 + 1 + 1]; /* one spare, for tests that claim 3 surfaces */
+    sw_level_vertex vertices[LEVELS_VERTICES];
+    uint16_t indices[LEVELS_INDICES];
+    sw_level_chain chains[LEVELS_CHAINS];
+    sw_strip_point points[LEVELS_POINTS];
+    sw_levels view;                     /* views of the arrays above */
+} sample_levels;
+
+static inline void set_level_meshes(sample_levels *l)
+{
+    static const float p[LEVELS_VERTICES][2] = {
+        { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 },   /* surface 0, the square */
+        { 1, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 },   /* surface 1, the square */
+        { 1, 0 }, { 2, 0 }, { 2, 1 } };           /* surface 1, one triangle */
+    for (int i = 0; i < LEVELS_VERTICES; i++)
+        l->vertices[i] = (sw_level_vertex){ .p = { p[i][0], p[i][1], 0 }, .normal = { 0, 0, 127 } };
+    static const uint16_t indices[LEVELS_INDICES] = { 0, 1, 2, 0, 2, 3, 0, 1, 2, 0, 2, 3, 0, 1, 2 };
+    memcpy(l->indices, indices, sizeof indices);
+    l->levels[0] = (sw_level){ .surface = 0, .error = 0.01f, .first_vertex = 0, .vertex_count = 4,
+                               .first_index = 0, .index_count = 6, .first_chain = 0 };
+    l->levels[1] = (sw_level){ .surface = 1, .error = 0.005f, .first_vertex = 4, .vertex_count = 4,
+                               .first_index = 6, .index_count = 6, .first_chain = 2 };
+    l->levels[2] = (sw_level){ .surface = 1, .error = 0.02f, .first_vertex = 8, .vertex_count = 3,
+                               .first_index = 12, .index_count = 3, .first_chain = 3 };
+    l->surface_levels[0] = 0;
+    l->surface_levels[1] = 1;
+    l->surface_levels[2] = 3;
+}
+
+static inline void set_level_chains(sample_levels *l)
+{
+    /* Level 0's square stands at loop 0's slots 0, 1, 3, 4 ((0,0) (1,0)
+     * (1,1) (0,1)); surface 1's at loop 2's slots 0..3. */
+    static const sw_strip_point points[LEVELS_POINTS] = {
+        { 0, 0 }, { 1, 1 }, { 2, 3 }, { 3, 4 },
+        { 0, 0 }, { 1, 1 }, { 2, 2 }, { 3, 3 },
+        { 0, 0 }, { 1, 1 }, { 2, 2 } };
+    memcpy(l->points, points, sizeof points);
+    l->chains[0] = (sw_level_chain){ .first_point = 0, .point_count = 4 };
+    l->chains[1] = (sw_level_chain){ .first_point = 4, .point_count = 0 }; /* the hole, gone */
+    l->chains[2] = (sw_level_chain){ .first_point = 4, .point_count = 4 };
+    l->chains[3] = (sw_level_chain){ .first_point = 8, .point_count = 3 };
+}
+
+/* The levels' views and counts; call again after moving the struct. */
+static inline void view_sample_levels(sample_levels *l)
+{
+    l->view = (sw_levels){ .levels = l->levels, .surface_levels = l->surface_levels,
+                           .vertices = l->vertices, .indices = l->indices, .chains = l->chains,
+                           .chain_points = l->points, .level_count = LEVELS_LEVELS,
+                           .vertex_count = LEVELS_VERTICES, .index_count = LEVELS_INDICES,
+                           .chain_count = LEVELS_CHAINS, .chain_point_count = LEVELS_POINTS,
+                           .surface_count = 2 };
+}
+
+static inline void make_sample_levels(sample_levels *l)
+{
+    memset(l, 0, sizeof *l);
+    set_level_meshes(l);
+    set_level_chains(l);
+    view_sample_levels(l);
+}
+
 static inline sw_pack_contents sample_contents(const sample *s)
 {
     sw_pack_contents c = { .meta = s->meta, .parts = s->parts, .patches = s->patches,

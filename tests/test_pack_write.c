@@ -468,6 +468,28 @@ static void write_seam_seed(const char *dir)
     free(bytes);
 }
 
+/* The sample with its Seam Graph and its static levels (pack_sample.h). */
+static void write_levels_seed(const char *dir)
+{
+    sample s;
+    sample_seam g;
+    sample_levels l;
+    make_sample(&s);
+    make_sample_seam(&g);
+    make_sample_levels(&l);
+    sw_pack_contents c = sample_contents(&s);
+    c.seam = &g.graph;
+    c.levels = &l.view;
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK, "%s", err.message);
+    char path[512];
+    snprintf(path, sizeof path, "%s/seed-levels", dir);
+    write_plain(path, bytes, size);
+    free(bytes);
+}
+
 /* The Bezier-only sample, z-up: an ORIENTATION section for the fuzzer. */
 static void write_orientation_seed(const char *dir)
 {
@@ -488,7 +510,7 @@ static void write_orientation_seed(const char *dir)
 }
 
 /* The hand-made sample with every optional section, without them, with an
- * unknown section, with a Seam Graph; packs the writer makes of Bezier
+ * unknown section, with a Seam Graph, with the graph and static levels; packs the writer makes of Bezier
  * patches and of a trimmed surface with a viewpoint. */
 static int write_corpus(const char *dir)
 {
@@ -510,6 +532,7 @@ static int write_corpus(const char *dir)
     write_plain(path, bytes, size);
     free(bytes);
     write_seam_seed(dir);
+    write_levels_seed(dir);
     write_orientation_seed(dir);
     sw_model model;
     start_model(&model);

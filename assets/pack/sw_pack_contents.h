@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "sw_levels.h"
 #include "sw_pack.h"
 #include "sw_seam_graph.h"
 
@@ -45,6 +46,12 @@ typedef struct sw_pack_contents {
      * say). Not owned, like seam. */
     const sw_pack_import_note *import_notes;
     uint32_t import_note_count;
+    /* The static levels of detail (core/sw_levels.h), or NULL for none:
+     * written as the LEVELS record (the view's counts) and the six LEVEL_*
+     * sections. Not owned, like seam; the pack validates only with a Seam
+     * Graph whose loops the chains follow, and levels->surface_count equal
+     * to surface_count above. */
+    const sw_levels *levels;
 } sw_pack_contents;
 
 #endif

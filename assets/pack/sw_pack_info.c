@@ -167,6 +167,64 @@ int sw_pack_gather_seam_stats(const sw_pack *pack, sw_pack_seam_stats *out)
     return 1;
 }
 
+static int compare_floats(const void *a, const void *b)
+{
+    float x = *(const float *)a, y = *(const float *)b;
+    return (x > y) - (x < y);
+}
+
+/* Rank r's figures; errors is scratch for one error per surface. */
+static void gather_rank(const sw_levels *l, uint32_t r, float *errors,
+                        sw_pack_level_rank_stats *out)
+{
+    uint32_t n = 0;
+    for (uint32_t s = 0; s < l->surface_count; s++) {
+        uint32_t k = l->surface_levels[s] + r;
+        if (k >= l->surface_levels[s + 1])
+            continue;
+        out->triangles += l->levels[k].index_count / 3;
+        errors[n++] = l->levels[k].error;
+    }
+    qsort(errors, n, sizeof *errors, compare_floats);
+    out->levels = n;
+    out->error_max = n ? errors[n - 1] : 0.0f;
+    out->error_median = n ? errors[(n - 1) / 2] : 0.0f;
+}
+
+sw_status sw_pack_gather_levels_stats(const sw_pack *pack, sw_pack_levels_stats *out,
+                                      sw_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (!pack->levels_header)
+        return SW_OK;
+    const sw_levels *l = &pack->levels;
+    for (uint32_t i = 0; i < pack->header->section_count; i++) {
+        uint32_t t = pack->sections[i].type;
+        if (t >= SW_SECTION_LEVELS && t <= SW_SECTION_LEVEL_CHAIN_POINTS)
+            out->bytes += pack->sections[i].size;
+    }
+    out->levels = l->level_count;
+    out->per_surface_min = l->surface_count ? UINT32_MAX : 0;
+    for (uint32_t s = 0; s < l->surface_count; s++) {
+        uint32_t n = l->surface_levels[s + 1] - l->surface_levels[s];
+        out->per_surface_min = n < out->per_surface_min ? n : out->per_surface_min;
+        out->per_surface_max = n > out->per_surface_max ? n : out->per_surface_max;
+    }
+    out->vertices = l->vertex_count;
+    out->indices = l->index_count;
+    out->triangles = l->index_count / 3;
+    out->chain_points = l->chain_point_count;
+    out->rank_count = out->per_surface_max; /* validated: at most SW_LEVELS_MAX */
+    float *errors = malloc(((size_t)l->surface_count + 1) * sizeof *errors);
+    if (!errors)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot allocate the errors of %u surfaces' "
+                            "levels", (unsigned)l->surface_count);
+    for (uint32_t r = 0; r < out->rank_count; r++)
+        gather_rank(l, r, errors, &out->ranks[r]);
+    free(errors);
+    return SW_OK;
+}
+
 /* ---- text ---------------------------------------------------------------- */
 
 static void print_degrees(FILE *out, const sw_pack_part_stats *s)
@@ -232,8 +290,28 @@ static void print_seam_text(FILE *out, const sw_pack *pack)
                 b.free_edges, b.edge_uses);
 }
 
+/* Only for packs with levels, so other packs' reports are unchanged. */
+static void print_levels_text(FILE *out, const sw_pack *pack, const sw_pack_levels_stats *s)
+{
+    if (!pack->levels_header)
+        return;
+    fprintf(out, "  %-16s %" PRIu32 " (%" PRIu32 "..%" PRIu32 " per surface), %" PRIu32
+            " vertices, %" PRIu32 " indices (%" PRIu32 " triangles), %" PRIu32 " chain points, %"
+            PRIu64 " bytes\n", "levels", s->levels, s->per_surface_min, s->per_surface_max,
+            s->vertices, s->indices, s->triangles, s->chain_points, s->bytes);
+    for (uint32_t r = 0; r < s->rank_count; r++) {
+        const sw_pack_level_rank_stats *k = &s->ranks[r];
+        char rank[16];
+        snprintf(rank, sizeof rank, "rank %" PRIu32, r);
+        fprintf(out, "    %-14s %" PRIu32 " surfaces, %" PRIu64 " triangles, error max %g, "
+                "median %g\n", rank, k->levels, k->triangles, (double)k->error_max,
+                (double)k->error_median);
+    }
+}
+
 static void print_text(FILE *out, const char *path, const sw_pack *pack,
-                       const sw_pack_part_stats *parts, const sw_pack_part_stats *t)
+                       const sw_pack_part_stats *parts, const sw_pack_part_stats *t,
+                       const sw_pack_levels_stats *levels)
 {
     const sw_pack_meta *m = pack->meta;
     fprintf(out, "%s: seamwalk pack version %" PRIu32 ", %" PRIu64 " bytes\n", path,
@@ -255,6 +333,7 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
             " masks\n", "trimming", t->loops, t->curves, t->computed_curves, pack->trim_mask_count);
     fprintf(out, "  %-16s %" PRIu32 "\n", "adjacency", m->adjacency_count);
     print_seam_text(out, pack);
+    print_levels_text(out, pack, levels);
     fprintf(out, "  %-16s %" PRIu32, "viewpoints", pack->viewpoint_count);
     for (uint32_t i = 0; i < pack->viewpoint_count; i++)
         fprintf(out, "%s%s", i ? ", " : ": ", pack->viewpoints[i].name);
@@ -389,8 +468,31 @@ static void json_seam(FILE *out, const sw_pack *pack)
                 border_fraction(&b), b.edge_uses, b.free_edges);
 }
 
+/* "levels": {...}, or null for a pack without them (the key is always
+ * there, so scripts can test it). */
+static void json_levels(FILE *out, const sw_pack *pack, const sw_pack_levels_stats *s)
+{
+    if (!pack->levels_header) {
+        fprintf(out, "  \"levels\": null,\n");
+        return;
+    }
+    fprintf(out, "  \"levels\": {\"levels\": %" PRIu32 ", \"per_surface\": [%" PRIu32 ", %" PRIu32
+            "], \"vertices\": %" PRIu32 ", \"indices\": %" PRIu32 ", \"triangles\": %" PRIu32
+            ", \"chain_points\": %" PRIu32 ", \"bytes\": %" PRIu64 ",\n             \"ranks\": [",
+            s->levels, s->per_surface_min, s->per_surface_max, s->vertices, s->indices,
+            s->triangles, s->chain_points, s->bytes);
+    for (uint32_t r = 0; r < s->rank_count; r++) {
+        const sw_pack_level_rank_stats *k = &s->ranks[r];
+        fprintf(out, "%s{\"rank\": %" PRIu32 ", \"surfaces\": %" PRIu32 ", \"triangles\": %"
+                PRIu64 ", \"error_max\": %.9g, \"error_median\": %.9g}", r ? ", " : "", r,
+                k->levels, k->triangles, (double)k->error_max, (double)k->error_median);
+    }
+    fprintf(out, "]},\n");
+}
+
 static void print_json(FILE *out, const char *path, const sw_pack *pack,
-                       const sw_pack_part_stats *parts, const sw_pack_part_stats *t)
+                       const sw_pack_part_stats *parts, const sw_pack_part_stats *t,
+                       const sw_pack_levels_stats *levels)
 {
     const sw_pack_meta *m = pack->meta;
     fprintf(out, "{\n  \"file\": ");
@@ -412,6 +514,7 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack,
     fprintf(out, ",\n  \"trim_masks\": %" PRIu32 ",\n", pack->trim_mask_count);
     fprintf(out, "  \"adjacency\": %" PRIu32 ",\n", m->adjacency_count);
     json_seam(out, pack);
+    json_levels(out, pack, levels);
     json_viewpoints(out, pack);
     json_sections(out, pack);
     fprintf(out, "  \"units\": \"%s\",\n  \"model_tolerance\": %.9g,\n",
@@ -437,10 +540,14 @@ sw_status sw_pack_print_info(FILE *out, const char *path, const sw_pack *pack, i
         return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: cannot allocate stats for %u parts",
                             path, (unsigned)pack->meta->part_count);
     sw_pack_gather_stats(pack, parts, &total);
-    if (json)
-        print_json(out, path, pack, parts, &total);
-    else
-        print_text(out, path, pack, parts, &total);
+    sw_pack_levels_stats levels;
+    sw_status s = sw_pack_gather_levels_stats(pack, &levels, err);
+    if (s == SW_OK && json)
+        print_json(out, path, pack, parts, &total, &levels);
+    else if (s == SW_OK)
+        print_text(out, path, pack, parts, &total, &levels);
     free(parts);
-    return SW_OK;
+    if (s != SW_OK)
+        sw_error_prefix(err, "%s", path);
+    return s;
 }

@@ -1,8 +1,9 @@
 /* What `seamwalk-pack info` reports about a validated pack: counts for the
  * whole pack and per part (surfaces, Bezier patches, trimming loops and
  * curves, degrees, rational counts, parameter curves computed by point
- * inversion, bounding box) and the Seam Graph's counts and bytes when the
- * pack has one, printed as aligned text or as JSON with stable
+ * inversion, bounding box), the Seam Graph's counts and bytes when the
+ * pack has one and the static levels' counts, bytes and errors per rank
+ * when it has them, printed as aligned text or as JSON with stable
  * snake_case keys. Split from seamwalk_pack_main.c so the numbers can be
  * tested without parsing output. Host only. */
 #ifndef SW_PACK_INFO_H
@@ -46,6 +47,29 @@ typedef struct sw_pack_seam_stats {
 
 /* Fills *out and returns 1 when the pack has a Seam Graph; 0 otherwise. */
 int sw_pack_gather_seam_stats(const sw_pack *pack, sw_pack_seam_stats *out);
+
+/* The static levels (core/sw_levels.h), per rank: rank 0 is each surface's
+ * finest level, rank 1 the next, and so on. */
+typedef struct sw_pack_level_rank_stats {
+    uint32_t levels;                /* surfaces with a level of this rank */
+    uint64_t triangles;             /* their triangles together */
+    float error_max;                /* the largest of their errors */
+    float error_median;             /* the middle one (the lower for an even count) */
+} sw_pack_level_rank_stats;
+
+typedef struct sw_pack_levels_stats {
+    uint32_t levels;
+    uint32_t per_surface_min, per_surface_max; /* levels of a surface, over every surface */
+    uint32_t vertices, indices, triangles, chain_points;
+    uint64_t bytes;                 /* the seven level sections' sizes, padding not counted */
+    uint32_t rank_count;            /* per_surface_max */
+    sw_pack_level_rank_stats ranks[SW_LEVELS_MAX];
+} sw_pack_levels_stats;
+
+/* Fills *out when the pack has levels (all zero otherwise). SW_ERR_NO_MEMORY
+ * when the errors cannot be gathered for the medians. */
+sw_status sw_pack_gather_levels_stats(const sw_pack *pack, sw_pack_levels_stats *out,
+                                      sw_error *err);
 
 /* "mm", "m" or "unspecified" for META.units. */
 const char *sw_pack_units_name(uint32_t units);

@@ -21,9 +21,10 @@
 #include "sw_walk_memory.h"
 
 /* Types 1..13 (the first five always written), then the seam group's eight,
- * then ORIENTATION and IMPORT_NOTES. */
-enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8,
-       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2, HEADER_BYTES = 64, SECTION_BYTES = 32 };
+ * then ORIENTATION and IMPORT_NOTES, then the levels' seven. */
+enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8, LEVEL_SECTIONS = 7,
+       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2 + LEVEL_SECTIONS, HEADER_BYTES = 64,
+       SECTION_BYTES = 32 };
 
 static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
 
@@ -63,11 +64,42 @@ static void list_seam_sections(const sw_seam_graph *g, const sw_pack_seam *recor
     memcpy(src, all, sizeof all);
 }
 
+/* LEVELS' record of l, for the writer to store. */
+static sw_pack_levels levels_record(const sw_levels *l)
+{
+    return (sw_pack_levels){ .level_count = l->level_count, .vertex_count = l->vertex_count,
+                             .index_count = l->index_count, .chain_count = l->chain_count,
+                             .chain_point_count = l->chain_point_count,
+                             .surface_count = l->surface_count };
+}
+
+/* The seven level sections of l (whose record is *record) into src[0..7).
+ * LEVEL_INDICES may be any even size: the next section starts at the next
+ * multiple of 64 as always. */
+static void list_level_sections(const sw_levels *l, const sw_pack_levels *record,
+                                section_source src[LEVEL_SECTIONS])
+{
+    const section_source all[LEVEL_SECTIONS] = {
+        { SW_SECTION_LEVELS, record, sizeof *record },
+        { SW_SECTION_LEVEL_RECORDS, l->levels, (uint64_t)l->level_count * sizeof(sw_level) },
+        { SW_SECTION_LEVEL_SURFACES, l->surface_levels,
+          ((uint64_t)l->surface_count + 1) * sizeof(uint32_t) },
+        { SW_SECTION_LEVEL_VERTICES, l->vertices,
+          (uint64_t)l->vertex_count * sizeof(sw_level_vertex) },
+        { SW_SECTION_LEVEL_INDICES, l->indices, (uint64_t)l->index_count * sizeof(uint16_t) },
+        { SW_SECTION_LEVEL_CHAINS, l->chains, (uint64_t)l->chain_count * sizeof(sw_level_chain) },
+        { SW_SECTION_LEVEL_CHAIN_POINTS, l->chain_points,
+          (uint64_t)l->chain_point_count * sizeof(sw_strip_point) },
+    };
+    memcpy(src, all, sizeof all);
+}
+
 /* The sections contents asks for, in the order they are written: the five
  * of the walking skeleton always, each optional one when its array is set,
- * the seam group when there is a graph (seam_rec holds its SEAM record). */
+ * the seam group when there is a graph (seam_rec holds its SEAM record), the
+ * level group when there are levels (levels_rec holds their LEVELS record). */
 static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
-                         section_source src[MAX_SECTIONS])
+                         sw_pack_levels *levels_rec, section_source src[MAX_SECTIONS])
 {
     const sw_pack_meta *m = &c->meta;
     const section_source all[PLAIN_SECTIONS] = {
@@ -107,6 +139,11 @@ static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
     if (c->import_notes)
         src[n++] = (section_source){ SW_SECTION_IMPORT_NOTES, c->import_notes,
                                      (size_t)c->import_note_count * sizeof *c->import_notes };
+    if (c->levels) {
+        *levels_rec = levels_record(c->levels);
+        list_level_sections(c->levels, levels_rec, &src[n]);
+        n += LEVEL_SECTIONS;
+    }
     return n;
 }
 
@@ -152,7 +189,8 @@ sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *ou
     section_source src[MAX_SECTIONS];
     sw_pack_section table[MAX_SECTIONS];
     sw_pack_seam seam_rec;
-    int n = list_sections(c, &seam_rec, src);
+    sw_pack_levels levels_rec;
+    int n = list_sections(c, &seam_rec, &levels_rec, src);
     uint64_t total = 0;
     sw_status s = lay_out(src, n, table, &total, err);
     if (s != SW_OK)

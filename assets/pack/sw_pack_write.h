@@ -16,7 +16,8 @@
  * broken packs): header, section table (META, PARTS, PATCHES, CONTROL,
  * ADJACENCY, then the optional sections present in sw_section_type order,
  * the seam sections when contents->seam is set, ORIENTATION when
- * contents->orientation is, IMPORT_NOTES last when contents->import_notes is),
+ * contents->orientation is, IMPORT_NOTES when contents->import_notes is, the
+ * seven level sections last when contents->levels is),
  * sections 64-byte aligned, checksums. *out is malloc'd; the caller frees it. */
 sw_status sw_pack_serialize(const sw_pack_contents *contents, uint8_t **out, size_t *out_size,
                             sw_error *err);

@@ -11,6 +11,7 @@
 #include <string.h>
 #include <xxhash.h>
 
+#include "sw_border_strip.h"
 #include "sw_pack.h"
 #include "../parts_backwards.h"
 
@@ -90,6 +91,36 @@ static float walk_seam(const sw_pack *pack)
     return sum;
 }
 
+/* The static levels the way the walk draws them: each surface's levels,
+ * each level's triangles through its vertices, each of its chains' points
+ * (one per loop of the surface) and the border strip of its first chain
+ * against itself. */
+static float walk_levels(const sw_pack *pack)
+{
+    const sw_levels *l = &pack->levels;
+    float sum = 0;
+    static uint32_t tris[3 * 2 * 64];
+    for (uint32_t s = 0; l->surface_levels && s < l->surface_count; s++)
+        for (uint32_t k = l->surface_levels[s]; k < l->surface_levels[s + 1]; k++) {
+            const sw_level *lv = &l->levels[k];
+            const sw_level_vertex *v = &l->vertices[lv->first_vertex];
+            for (uint32_t i = 0; i < lv->index_count; i++)
+                sum += v[l->indices[lv->first_index + i]].p[0];
+            uint32_t first_loop = pack->seam.surface_loops[s];
+            for (uint32_t i = 0; first_loop + i < pack->seam.surface_loops[s + 1]; i++) {
+                const sw_level_chain *c = &l->chains[lv->first_chain + i];
+                const sw_strip_point *pts = &l->chain_points[c->first_point];
+                for (uint32_t p = 0; p < c->point_count; p++)
+                    sum += v[pts[p].vertex].p[1] + pts[p].t;
+                float period = (float)pack->seam.loops[first_loop + i].slot_count;
+                if (c->point_count > 0 && c->point_count <= 64)
+                    sum += (float)sw_border_strip(pts, c->point_count, pts, c->point_count,
+                                                  period, tris);
+            }
+        }
+    return sum;
+}
+
 static void walk(const sw_pack *pack)
 {
     float sum = 0;
@@ -106,7 +137,7 @@ static void walk(const sw_pack *pack)
     for (uint32_t i = 0; i < pack->meta->adjacency_count; i++)
         sum += pack->patches[pack->adjacency[i].patch_a].box_min[0] +
                pack->patches[pack->adjacency[i].patch_b].box_max[0];
-    sink = sum + walk_trims(pack) + walk_scene(pack) + walk_seam(pack);
+    sink = sum + walk_trims(pack) + walk_scene(pack) + walk_seam(pack) + walk_levels(pack);
 }
 
 /* Recomputes what it can: section checksums whose ranges lie in the buffer,
