@@ -18,6 +18,7 @@
 #include "sw_import.h"
 #include "sw_import_iges.h"
 #include "sw_import_occt.h"
+#include "sw_levels_build.h"
 #include "sw_model.h"
 #include "sw_pack.h"
 #include "sw_pack_import_notes.h"
@@ -240,6 +241,7 @@ typedef struct seam_summary {
     sw_seam_report sewing;
     uint32_t collapses;
     double simplify_s;
+    sw_levels_report levels;
 } seam_summary;
 
 /* The simplifier's view of the exact surfaces (sw_seam_runs.h). */
@@ -282,6 +284,34 @@ static const char **input_names(const build_options *o)
     return names;
 }
 
+/* The pack in *bytes again, with the static levels of its surfaces
+ * (sw_levels_build.h), made from the pack as the runtime reads it. */
+static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t *size,
+                            sw_levels_report *report, sw_error *err)
+{
+    sw_pack pack;
+    sw_status st = sw_pack_open_memory(*bytes, *size, &pack, err);
+    if (st != SW_OK) {
+        sw_error_prefix(err, "the pack as written");
+        return st;
+    }
+    sw_levels_built levels;
+    st = sw_levels_build(&pack, NULL, &levels, report, err);
+    if (st != SW_OK)
+        return st;
+    uint8_t *with = NULL;
+    size_t with_size = 0;
+    contents->levels = &levels.view;
+    st = sw_pack_serialize(contents, &with, &with_size, err);
+    contents->levels = NULL;
+    sw_levels_built_free(&levels);
+    if (st != SW_OK)
+        return st;
+    free(*bytes);
+    *bytes = with, *size = with_size;
+    return SW_OK;
+}
+
 static sw_status pack_model(const build_options *o, progress_context *pc, sw_model *model,
                             const sw_import_report *reports, seam_summary *seam_summary_out,
                             size_t *bytes_out, sw_error *err)
@@ -312,6 +342,10 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
         contents.orientation = sw_up_axis_valid(model->up_axis) ? &orientation : NULL;
         on_progress(pc, "serialising", 0.0);
         st = sw_pack_serialize(&contents, &bytes, bytes_out, err);
+        if (st == SW_OK) {
+            on_progress(pc, "static levels", 0.0);
+            st = add_levels(&contents, &bytes, bytes_out, &seam_summary_out->levels, err);
+        }
         sw_pack_contents_free(&contents);
     }
     sw_seam_host_free(&seams);
@@ -388,6 +422,13 @@ static void print_summary(const build_options *o, const sw_model *model,
     if (r->clamped > 0)
         printf("seamwalk-pack: seams: %zu trim points outside their surface's domain put on its "
                "border\n", r->clamped);
+    const sw_levels_report *l = &seams->levels;
+    printf("seamwalk-pack: static levels: %" PRIu32 " of %" PRIu32 " surfaces, %" PRIu32
+           " levels, triangles by rank %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64
+           "; left out: %" PRIu32 " refused, %" PRIu32 " over 65536 vertices, %" PRIu32
+           " with a border not one chain per loop; %.2f s\n", l->with_levels, l->surfaces,
+           l->levels, l->triangles[0], l->triangles[1], l->triangles[2], l->triangles[3],
+           l->refused, l->too_large, l->bad_border, l->seconds);
     printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
            model->patch_count, bytes, o->out_path, seconds);
 }

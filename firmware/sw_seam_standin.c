@@ -49,17 +49,30 @@ sw_status sw_seam_standin_init(sw_seam_standin *m, const sw_pack *pack, sw_arena
     return SW_OK;
 }
 
-uint32_t sw_seam_standin_level(const sw_levels *lv, uint32_t s, float bound)
+/* 1 when level k has a chain for every loop of its surface. */
+static int whole(const sw_levels *lv, uint32_t k, uint32_t loops)
 {
+    for (uint32_t i = 0; i < loops; i++)
+        if (lv->chains[lv->levels[k].first_chain + i].point_count == 0)
+            return 0;
+    return 1;
+}
+
+uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound)
+{
+    const sw_levels *lv = &pack->levels;
     if (!lv->surface_levels || s >= lv->surface_count)
         return UINT32_MAX;
     uint32_t first = lv->surface_levels[s], end = lv->surface_levels[s + 1];
-    if (first == end)
-        return UINT32_MAX;
-    uint32_t k = first;
-    while (k + 1 < end && lv->levels[k + 1].error <= bound)
-        k++;
-    return k;
+    uint32_t loops = pack->seam.surface_loops[s + 1] - pack->seam.surface_loops[s];
+    uint32_t best = UINT32_MAX;
+    for (uint32_t k = first; k < end; k++) {
+        if (!whole(lv, k, loops))
+            continue;
+        if (best == UINT32_MAX || lv->levels[k].error <= bound)
+            best = k;
+    }
+    return best != UINT32_MAX ? best : first < end ? first : UINT32_MAX;
 }
 
 /* Surface s's loops at front into m; 0 when an outer loop vanished. *points

@@ -45,9 +45,10 @@ sw_status sw_seam_standin_init(sw_seam_standin *m, const sw_pack *pack, sw_arena
                                sw_error *err);
 
 /* The level of surface s to stand in for a mesh made for bound (model
- * units): the coarsest whose error is within it, else the finest.
- * UINT32_MAX when s has none. */
-uint32_t sw_seam_standin_level(const sw_levels *levels, uint32_t s, float bound);
+ * units): of its levels with a chain for every loop (a level made without
+ * a hole would cover it), the coarsest whose error is within bound, else
+ * the finest; with no such level, its finest. UINT32_MAX when s has none. */
+uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound);
 
 /* Surface s's stand-in from level `level` and the loops front shows
  * (pinned as sw_seam_select_loop pins them), into *e with blocks from

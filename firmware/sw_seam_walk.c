@@ -285,12 +285,8 @@ sw_status sw_seam_walk_move_front(sw_seam_walk *w, sw_seam_frame *frame, sw_erro
         return st;
     frame->seam_ops = r.splits + r.collapses;
     uint32_t n = w->pack->seam.surface_count;
-    for (uint32_t s = 0; s < n; s++) {
-        uint8_t changed = (uint8_t)sw_seam_select_surface_changed(&w->select, s);
-        w->dirty[s] |= changed;
-        if (w->moved)
-            w->moved[s] |= changed;
-    }
+    for (uint32_t s = 0; s < n; s++)
+        w->dirty[s] |= (uint8_t)sw_seam_select_surface_changed(&w->select, s);
     sw_seam_select_clear_changed(&w->select);
     return SW_OK;
 }

@@ -179,10 +179,9 @@ typedef struct sw_seam_walk {
      * levels; NULL otherwise (a surface in view waits for its mesh). */
     sw_seam_standin *standins;
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */
-    uint8_t *moved;               /* surface_count: its loops changed when the batch in flight
-                                     moved the front */
     uint32_t *drawn_shown;        /* original_count: the front's shown vertices as the drawn
                                      meshes have them, kept while a batch is in flight */
+    uint32_t *mixed_shown;        /* original_count: a stand-in's front (sw_seam_walk_plan.c) */
     uint64_t batch_tris;          /* of the frame's schedule: triangles estimated */
 } sw_seam_walk;
 

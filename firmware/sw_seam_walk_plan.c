@@ -119,14 +119,47 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
         count_behind(w, s, e, frame);
 }
 
+/* Is original o sewn into a loop of a surface other than s drawn from a
+ * mesh of the walk's own (not a stand-in)? */
+static int pinned(const sw_seam_walk *w, uint32_t o, uint32_t s)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    const sw_seam_vertex *v = &g->vertices[o];
+    for (uint32_t r = v->first_slot_ref; r < v->first_slot_ref + v->slot_ref_count; r++) {
+        uint32_t t = w->select.slot_surface[g->slot_refs[r]];
+        if (t != s && w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t])
+            return 1;
+    }
+    return 0;
+}
+
+/* The front a stand-in for s is joined to, as the shown vertex of each of
+ * its loops' originals (in w->mixed_shown, by leaf position): where an
+ * original is shared with a surface drawn from the walk's own mesh, the
+ * vertex that mesh shows (the front as it was before a batch in flight
+ * moved it); elsewhere the original itself, which every stand-in takes
+ * there, so two stand-ins side by side meet on the sewn polyline whatever
+ * levels they show. Read only at s's slots. */
+static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    const uint32_t *drawn = w->batch_count > 0 ? w->drawn_shown : w->select.shown;
+    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+        for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
+            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
+            uint32_t p = w->select.leaf_lo[o];
+            w->mixed_shown[p] = pinned(w, o, s) ? drawn[p] : o;
+        }
+    return w->mixed_shown;
+}
+
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
 {
-    uint32_t level = sw_seam_standin_level(&w->pack->levels, s, w->target[s]);
+    uint32_t level = sw_seam_standin_level(w->pack, s, w->target[s]);
     if (level == UINT32_MAX)
         return 0;
     sw_seam_select front = w->select;
-    if (w->batch_count > 0)   /* the front moved for it: draw what the others show */
-        front.shown = w->drawn_shown;
+    front.shown = standin_front(w, s);
     sw_seam_entry *e = &w->cache.entries[s];
     uint32_t last = e->last_frame;
     if (!sw_seam_standin_make(w->standins, &front, s, level, w->seam_bound[s], &w->cache,

@@ -18,8 +18,8 @@ static size_t standin_bytes(const sw_pack *pack)
         return 0;
     size_t n = (size_t)pack->seam.surface_count + 1;
     return sw_arena_worst_case(sizeof(sw_seam_standin), 64) + sw_seam_standin_bytes(pack) +
-           2 * sw_arena_worst_case(n, 64) +
-           sw_arena_worst_case(((size_t)pack->seam.original_count + 1) * sizeof(uint32_t), 64);
+           sw_arena_worst_case(n, 64) +
+           2 * sw_arena_worst_case(((size_t)pack->seam.original_count + 1) * sizeof(uint32_t), 64);
 }
 
 size_t sw_seam_walk_worker_bytes(const sw_pack *pack, uint32_t count, int fill)
@@ -37,13 +37,13 @@ static sw_status start_standins(sw_seam_walk *w, sw_arena *arena, sw_error *err)
     size_t n = (size_t)pack->seam.surface_count + 1;
     sw_seam_standin *m = sw_arena_alloc(arena, sizeof *m, 64);
     w->standin = sw_arena_alloc(arena, n, 64);
-    w->moved = sw_arena_alloc(arena, n, 64);
     w->drawn_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
                                            sizeof(uint32_t), 64);
-    if (!m || !w->standin || !w->moved || !w->drawn_shown)
+    w->mixed_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
+                                           sizeof(uint32_t), 64);
+    if (!m || !w->standin || !w->drawn_shown || !w->mixed_shown)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the stand-ins");
     memset(w->standin, 0, n);
-    memset(w->moved, 0, n);
     sw_status st = sw_seam_standin_init(m, pack, arena, err);
     if (st == SW_OK)
         w->standins = m;
@@ -351,23 +351,21 @@ static void consume(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_fra
     }
 }
 
-/* After a swap: stand-ins made while the batch was in flight whose loops
- * its move changed show the old loops beside neighbours that now show the
- * new ones; they are made again from the front (now what is drawn), and
- * the ones out of view given up. */
-static void remake_moved_standins(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame)
+/* After a swap: every stand-in is joined to the meshes its neighbours
+ * draw now (their front, and which of them are stand-ins, changed), so
+ * each is made again; the ones out of view are given up. */
+static void remake_standins(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     if (!w->standins)
         return;
     uint32_t n = w->pack->seam.surface_count;
     for (uint32_t s = 0; s < n; s++) {
-        if (!w->standin[s] || !w->moved[s])
+        if (!w->standin[s])
             continue;
         retire_mesh(w, s);
         if (sw_seam_walk_needs_mesh(w, s))
             sw_seam_walk_stand_in(w, s, plan, frame);
     }
-    memset(w->moved, 0, n);
 }
 
 static int batch_done(const sw_seam_walk *w)
@@ -439,13 +437,17 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *fra
         wait_batch(w);
     else
         push_more(w);
+    uint32_t evictions = w->cache.evictions;
     while (batch_done(w) && retry_no_room(w, frame) && (w->sync_work || w->frame == 1))
         wait_batch(w);
+    /* A mesh given up may be what a stand-in was joined to. */
+    if (w->cache.evictions != evictions && !batch_done(w))
+        remake_standins(w, plan, frame);
     if (batch_done(w)) {
         for (uint32_t i = 0; i < w->batch_count; i++)
             consume(w, w->batch[i], plan, frame);
         w->batch_count = w->batch_pushed = 0;
-        remake_moved_standins(w, plan, frame);
+        remake_standins(w, plan, frame);
         w->room_tight = w->room_retries > 0;
         w->room_retries = 0;
         frame->batches_committed = 1;

@@ -53,6 +53,8 @@ typedef struct builder {
     sw_levels_options opt;
     sw_levels_report *report;
     sw_seam_select sel;
+    sw_seam_select finest;            /* sel with every original shown: the sewn polylines */
+    uint32_t *finest_shown;
     void *select_block, *scratch_block;
     sw_arena scratch;
     uint32_t max_points, max_patches, max_loops;
@@ -156,6 +158,7 @@ static sw_status builder_open(builder *b, const sw_pack *pack, sw_error *err)
     b->sew_offset = take(n, sizeof *b->sew_offset, &failed);
     b->noise = take(n, sizeof *b->noise, &failed);
     b->alive = take(n, 1, &failed);
+    b->finest_shown = take(g->original_count, sizeof *b->finest_shown, &failed);
     b->bounds = take(n, sizeof *b->bounds, &failed);
     if (failed)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "levels: out of memory for %u surfaces",
@@ -167,7 +170,14 @@ static sw_status builder_open(builder *b, const sw_pack *pack, sw_error *err)
     b->vertex_uvs.size = 2 * sizeof(float);
     b->index_data.size = sizeof(uint16_t), b->chains.size = sizeof(sw_level_chain);
     b->points_out.size = sizeof(sw_strip_point);
-    return sw_seam_select_init_checked(&b->sel, g, &select_arena, err);
+    sw_status st = sw_seam_select_init_checked(&b->sel, g, &select_arena, err);
+    if (st == SW_OK) {
+        b->finest = b->sel;
+        for (uint32_t o = 0; o < g->original_count; o++)
+            b->finest_shown[b->sel.leaf_lo[o]] = o;
+        b->finest.shown = b->finest_shown;
+    }
+    return st;
 }
 
 static void builder_close(builder *b)
@@ -176,7 +186,7 @@ static void builder_close(builder *b)
                        b->loop_uvs, b->loop_at, b->loop_len, b->loop_vanished, b->points,
                        b->loop_first, b->tess_loop, b->patches, b->positions, b->normals,
                        b->uvs, b->out_ids, b->indices, b->chain_points, b->chain_first,
-                       b->size, b->sew_offset, b->noise, b->alive, b->bounds, b->made.data,
+                       b->size, b->sew_offset, b->noise, b->alive, b->finest_shown, b->bounds, b->made.data,
                        b->vertices.data, b->vertex_uvs.data, b->index_data.data, b->chains.data,
                        b->points_out.data };
     for (size_t i = 0; i < sizeof blocks / sizeof *blocks; i++)
@@ -218,6 +228,12 @@ static int gather(builder *b, uint32_t s, float pin)
                                   b->max_points - at, &count, &vanished, NULL);
         if (vanished && (g->loops[l].flags & SW_SEAM_LOOP_OUTER))
             return 0;
+        /* A hole the front has closed is kept as sewn: the walk shows it
+         * wherever its neighbours are drawn finer, and a level without it
+         * would cover it there. */
+        if (vanished)
+            sw_seam_select_loop_slots(&b->finest, l, pin, b->seam_points + at, b->slots + at,
+                                      b->max_points - at, &count, &vanished, NULL);
         b->loop_at[l - first] = at, b->loop_len[l - first] = count;
         b->loop_vanished[l - first] = (uint8_t)vanished;
         for (uint32_t i = at; i < at + count; i++) {
