@@ -305,8 +305,14 @@ static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t 
     st = sw_pack_serialize(contents, &with, &with_size, err);
     contents->levels = NULL;
     sw_levels_built_free(&levels);
-    if (st != SW_OK)
+    /* Read back as the runtime will: a pack the reader refuses is not
+     * written. */
+    if (st == SW_OK && (st = sw_pack_open_memory(with, with_size, &pack, err)) != SW_OK)
+        sw_error_prefix(err, "the pack with its static levels");
+    if (st != SW_OK) {
+        free(with);
         return st;
+    }
     free(*bytes);
     *bytes = with, *size = with_size;
     return SW_OK;

@@ -51,7 +51,8 @@ builds_to() { # builds_to N NAME [GEN ARGS...]
 
 has_views() { # the three viewpoints, in the scene and in the pack
   for v in entrance overview closeup; do grep -q "^\[view $v\]$" "$work/$1.ini" || return 1; done
-  "$pack" info --json "$work/$1.swpack" | grep -q '"name": "VIEWPOINTS", .*"size": [1-9]'
+  "$pack" info --json "$work/$1.swpack" > "$work/$1.info" &&
+    grep -q '"name": "VIEWPOINTS", .*"size": [1-9]' "$work/$1.info"
 }
 
 fails_with() { # fails_with CODE FRAGMENT GEN ARGS...: exit CODE, FRAGMENT on stderr, no output

@@ -168,7 +168,9 @@ assert j["units"] == "mm" and j["trim_loops"] == 0 and j["viewpoints"] == []
 assert [s["name"] for s in j["sections"]][4:] == ["ADJACENCY", "SURFACES", "TRIM_LOOPS",
   "TRIM_CURVES", "TRIM_DATA", "PATCH_DOMAINS", "TRIM_MASKS", "VIEWPOINTS", "PART_TRANSFORMS",
   "SEAM", "SEAM_VERTICES", "SEAM_SLOTS", "SEAM_LOOPS", "SEAM_EDGES", "SEAM_COLLAPSES",
-  "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS", "ORIENTATION"]
+  "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS", "ORIENTATION", "LEVELS", "LEVEL_RECORDS",
+  "LEVEL_SURFACES", "LEVEL_VERTICES", "LEVEL_INDICES", "LEVEL_CHAINS", "LEVEL_CHAIN_POINTS"]
+assert j["levels"]["levels"] > 0, j["levels"]
 EOF
 
 # A trimmed pack without any CAD reader: a generated plate with holes.

@@ -412,17 +412,16 @@ static int by_surface_then_rank(const void *pa, const void *pb)
     return a->rank < b->rank ? -1 : a->rank > b->rank;
 }
 
-/* Surface s's made levels [i, end) reduced to those whose error rises:
- * a level no worse than the one before it takes that one's place. Returns
- * how many are left, at the front of the range. */
+/* A surface's made levels m[0 .. count), coarsest last, reduced to those
+ * whose error rises: a level no worse than the ones before it takes their
+ * place. Returns how many are left, at the front. */
 static uint32_t rising(made_level *m, uint32_t count, sw_levels_report *report)
 {
     uint32_t kept = 0;
     for (uint32_t i = 0; i < count; i++) {
-        if (kept > 0 && m[i].error <= m[kept - 1].error) {
-            m[kept - 1] = m[i];
+        while (kept > 0 && m[i].error <= m[kept - 1].error) {
+            kept--;
             report->not_finer++;
-            continue;
         }
         if (kept < SW_LEVELS_MAX)
             m[kept++] = m[i];
