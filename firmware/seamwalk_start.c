@@ -198,6 +198,7 @@ static sw_status init_seams(sw_program *rt, double *mark_s, sw_error *err)
     rt->seam.fill = rt->opt.fill_crossings ? &rt->fill : NULL;
     if (st == SW_OK && rt->opt.drop_surface >= 0)
         rt->seam.drop_surface = (uint32_t)rt->opt.drop_surface;
+    rt->seam.no_standins = !rt->opt.static_levels;
     rt->stats.start_walk_init_ms = lap_ms(mark_s);
     if (st == SW_OK)
         st = start_frames(rt, err);

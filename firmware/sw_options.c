@@ -97,6 +97,7 @@ static void set_defaults(sw_options *o)
     o->depth_bits = 24;
     o->depth_fit = 1;
     o->fill_crossings = 1;
+    o->static_levels = 1;
     o->cone_cull = 1;
     o->drop_surface = -1;
     o->workers = c->budget_workers;   /* -1: cores - 1, at least 1, decided in main */
@@ -272,6 +273,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
                 st = sw_error_set(err, SW_ERR_ARG, "--depth-bits expects 16 or 24, got '%s'", v);
         } else if (!strcmp(a, "--depth-fit")) {
             st = parse_int(a, v, 0, 1, &o->depth_fit, err);
+        } else if (!strcmp(a, "--static-levels")) {
+            st = parse_int(a, v, 0, 1, &o->static_levels, err);
         } else if (!strcmp(a, "--fill-crossings")) {
             st = parse_int(a, v, 0, 1, &o->fill_crossings, err);
         } else if (!strcmp(a, "--test-drop-surface")) {
@@ -317,7 +320,8 @@ void sw_options_print_usage(const char *argv0)
             "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
             "          [--config FILE] [--pose-log FILE] [--no-cache] [--background R,G,B]\n"
             "          [--back-faces lit|hidden|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
-            "          [--fill-crossings 0|1] [--cone-cull 0|1] [--cull tree|brute]\n"
+            "          [--fill-crossings 0|1] [--static-levels 0|1] [--cone-cull 0|1]\n"
+            "          [--cull tree|brute]\n"
             "          [--workers N] [--target-ms MS] [--visibility-thread 0|1]\n"
             "          [--batch-tris N]\n"
             "Walks a seamwalk pack and shows it on a display.\n"
@@ -418,6 +422,9 @@ void sw_options_print_usage(const char *argv0)
             "                      GL_OES_depth24 is offered, else 16; the stats say which)\n"
             "  --depth-fit 0|1     fit near and far to the surfaces drawn each frame (1,\n"
             "                      default) or to the model's box (0)\n"
+            "  --static-levels 0|1  with workers, a surface in view whose mesh is not made\n"
+            "                      yet is drawn from the pack's static levels (1, default)\n"
+            "                      or waits, undrawn (0)\n"
             "  --fill-crossings 0|1  close each seam crossing (a T-junction with the surface\n"
             "                      across) with a zero-area fan (1, default), or not (0:\n"
             "                      single-pixel pinholes open along such seams)\n"

@@ -49,6 +49,8 @@ typedef struct sw_options {
     int depth_bits;              /* --depth-bits 16|24: at most this many; default 24 */
     int depth_fit;               /* --depth-fit 0|1: near and far fitted to the drawn
                                     surfaces each frame (1, default) or to the model box */
+    int static_levels;           /* --static-levels 0|1: the pack's static levels stand in for
+                                    meshes not made yet (1, default) */
     int fill_crossings;          /* --fill-crossings 0|1: fans over seam crossings (1, default;
                                     0 shows the T-junction pinholes they close) */
     long drop_surface;           /* --test-drop-surface S: surface S is never drawn (a

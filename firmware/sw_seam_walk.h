@@ -178,6 +178,7 @@ typedef struct sw_seam_walk {
     /* Stand-ins (sw_seam_standin.h), with workers and a pack with static
      * levels; NULL otherwise (a surface in view waits for its mesh). */
     sw_seam_standin *standins;
+    int no_standins;              /* set before the workers start: none even with levels */
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */
     uint32_t *drawn_shown;        /* original_count: the front's shown vertices as the drawn
                                      meshes have them, kept while a batch is in flight */

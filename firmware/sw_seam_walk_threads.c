@@ -32,7 +32,7 @@ size_t sw_seam_walk_worker_bytes(const sw_pack *pack, uint32_t count, int fill)
 static sw_status start_standins(sw_seam_walk *w, sw_arena *arena, sw_error *err)
 {
     const sw_pack *pack = w->pack;
-    if (pack->levels.level_count == 0)
+    if (pack->levels.level_count == 0 || w->no_standins)
         return SW_OK;
     size_t n = (size_t)pack->seam.surface_count + 1;
     sw_seam_standin *m = sw_arena_alloc(arena, sizeof *m, 64);

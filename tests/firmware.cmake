@@ -164,3 +164,12 @@ if(NOT SW_ASAN AND NOT SW_TSAN)
     PASS_REGULAR_EXPRESSION "mallocs_after_init 0\n.*soak: FAIL: resident memory grew by"
     FAIL_REGULAR_EXPRESSION "soak: FAIL: (mallocs|only)|the walk failed")
 endif()
+# Stand-ins seen in the pictures (tests/test_standins.sh): with the workers
+# stalled, surfaces coming into view are drawn from their static levels,
+# with no hole against the walk without workers; the mutant without them
+# must show one.
+# Registered where the shared models are (as in CI), and then never skipped.
+if(EXISTS ${SW_SHARED_MODELS}/occt_hammer.iges)
+  add_test(NAME standins COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_standins.sh
+           ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR} ${SW_SHARED_MODELS})
+endif()

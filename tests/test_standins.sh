@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# Stand-ins seen in the pictures:
+#   test_standins.sh BUILD_DIR SOURCE_DIR MODELS_DIR
+# A generated 2,000-patch showroom of the shared parts (as walk_bench makes
+# its showroom), walked at eye height along walk_path.py's path, 120 frames
+# at 640x360, with the workers stalled from frame 1: every surface that
+# comes into view after the first frame gets no mesh of its own all walk
+# long, so all that is drawn of it is its stand-in (a static level joined
+# to its neighbours by border strips, firmware/sw_seam_standin.h). Against
+# the same path walked with --workers 0 (every mesh made in its frame):
+#   - every 10th frame: no pixel inside the reference's model shows the
+#     background (tests/image_holes.c), so no surface in view is left out
+#     and no strip leaves a crack;
+#   - the walk made stand-ins and left no surface in view undrawn (stats);
+#   - measured every 3rd frame: the drawn borders meet (seam_drawn gaps 0,
+#     firmware/sw_seam_drawn.h, which knows nothing of strips) and the
+#     walk's own crack count is 0;
+#   - the mutant --static-levels 0 (no stand-ins) must show holes in some
+#     frame, or the comparison could not see a surface left out.
+# Exit 77 when the models are absent (CTest registers it only where they are).
+set -uo pipefail
+build=$1 src=$2 models=$3
+tool=$build/assets/seamwalk-pack walker=$build/firmware/seamwalk holes=$build/tests/image_holes
+work=$build/tests/standins
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+parts=()
+for p in occt_hammer.iges occt_screw.step newell_teapot.txt nist_mbe_pmi_1.stp; do
+  [ -f "$models/$p" ] || { echo "skipped: $models/$p is absent"; exit 77; }
+  parts+=(--part "$models/$p")
+done
+export LSAN_OPTIONS="suppressions=$src/tests/occt-lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+
+"$tool" gen showroom --patches 2000 -o "$work/room.ini" "${parts[@]}" > "$work/gen.log" 2>&1 \
+  || fail "gen showroom: $(tail -3 "$work/gen.log")"
+"$tool" build "$work/room.ini" -o "$work/room.swpack" --quiet 2> "$work/build.err" \
+  || fail "build: $(cat "$work/build.err")"
+"$tool" info --json "$work/room.swpack" > "$work/info.json" || fail "info"
+box=$(python3 -c 'import json,sys; i=json.load(open(sys.argv[1])); b=i["box"];
+print(" ".join("%.6f" % v for v in b["min"] + b["max"]), i["up_axis"].lstrip("+-"))' \
+  "$work/info.json") || fail "box"
+read -r x0 y0 z0 x1 y1 z1 up <<< "$box"
+python3 "$src/tests/bench/walk_path.py" "$work/room.path" --box $x0 $y0 $z0 $x1 $y1 $z1 \
+  --up "$up" --seconds 40 || fail "walk_path"
+
+frames=120 every=10
+# walk NAME ARGS...: the path into NAME/ (every 10th frame), NAME.json.
+walk() {
+  local name=$1
+  shift
+  "$walker" --pack "$work/room.swpack" --path "$work/room.path" --headless 640x360 \
+    --frames $frames --memory-mb 2048 --background 255,0,255 --back-faces 0,255,255 \
+    --stats "$work/$name.json" "$@" > "$work/$name.log" 2>&1 \
+    || fail "$name walk: $(tail -3 "$work/$name.log")"
+}
+walk reference --workers 0 --measure-every 0 --png-dir "$work/reference" --png-every $every
+walk standins --workers 1 --sync-work 0 --test-stall-workers 1 --measure-every 0 \
+  --png-dir "$work/standins" --png-every $every
+walk mutant --workers 1 --sync-work 0 --test-stall-workers 1 --measure-every 0 \
+  --static-levels 0 --png-dir "$work/mutant" --png-every $every
+walk measured --workers 1 --sync-work 0 --test-stall-workers 1 --measure-every 3
+
+# holes DIR: the most interior background pixels of a frame of DIR.
+holes() {
+  local worst=0 f n
+  for f in "$work/reference"/frame_*.png; do
+    n=$("$holes" "$work/$1/$(basename "$f")" "$f" 255,0,255 --inside 0,255,255 --max 1000000000 \
+        --empty-ok 2>/dev/null | sed -n 's/.*: \([0-9]*\) holes, .*/\1/p' | head -1)
+    [ -n "$n" ] || { echo "image_holes gave no count for $1/$(basename "$f")" >&2; echo -1; return; }
+    [ "$n" -gt "$worst" ] && worst=$n
+  done
+  echo "$worst"
+}
+with=$(holes standins) without=$(holes mutant)
+echo "interior background pixels, the most in a frame: $with with stand-ins, $without without"
+[ "$with" = 0 ] || fail "with stand-ins, $with interior pixels show the background"
+[ "$without" -gt 0 ] || fail "the mutant without stand-ins shows no hole: the test sees none"
+
+python3 - "$work/standins.json" "$work/measured.json" <<'EOF' || fail "stats"
+import json, sys
+s, m = (json.load(open(p)) for p in sys.argv[1:3])
+t = s["threads"]
+print("stand-ins: %d made, up to %d drawn a frame; undrawn max %d; measured: gaps %d, cracks %d"
+      % (t["standins_made"], t["standins_max"], t["waiting_surfaces_max"],
+         m["seam_drawn"]["gaps_max"], m["cracks_max"]))
+assert t["standins_made"] > 0, "no stand-in was made: nothing was tested"
+assert t["waiting_surfaces_max"] == 0, t
+assert m["threads"]["standins_made"] > 0, m["threads"]
+assert m["seam_drawn"]["gaps_max"] == 0 and m["seam_drawn"]["unchecked_frames"] == 0, m["seam_drawn"]
+assert m["cracks_max"] == 0, m["cracks_max"]
+EOF
+echo "ok: stand-ins"
