@@ -153,6 +153,8 @@ def parse_args(argv):
 
 def main(argv):
     a = parse_args(argv)
+    if a.json and os.path.exists(a.json):
+        os.remove(a.json)   # a failed run leaves none, not the last run's
     os.makedirs(a.out, exist_ok=True)
     shutil.rmtree(os.path.join(a.out, "holes"), ignore_errors=True)
     os.makedirs(os.path.join(a.out, "holes"))
