@@ -366,10 +366,12 @@ static void print_summary(const sw_program *rt)
     if (s->measure_every > 0)
         snprintf(error, sizeof error, "error max %.3f px", s->error_max_px);
     printf("seamwalk: %llu frames of %u patches at %dx%d in %.2f s; %s (bound %.2f);"
-           " cracks max %llu; arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
+           " cracks max %llu; undrawn max %u (surfaces in view with no mesh yet, the most in a"
+           " frame); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
            " frame stats and pictures the rest); mallocs after init %lld\n",
            (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, error,
-           s->error_bound_px, (unsigned long long)s->cracks_max, s->arena_bytes / 1048576.0,
+           s->error_bound_px, (unsigned long long)s->cracks_max, s->waiting_max,
+           s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
     if (s->error_behind_samples)
         printf("seamwalk: meshes drawn coarser while their new ones were made: error max %.3f"

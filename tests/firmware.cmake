@@ -69,6 +69,16 @@ if(NOT SW_ASAN AND NOT SW_TSAN)
   endforeach()
 endif()
 
+# A walk judged by its pictures against the reference walk (--workers 0),
+# tests/walk_pictures.py: on a 2,000-patch showroom the same walk matches
+# pixel for pixel and a walk without a plate in view must show its hole
+# (tests/test_walk_pictures.sh). Release only, as the holes tests above.
+if(NOT SW_ASAN AND NOT SW_TSAN)
+  add_test(NAME walk_pictures
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_walk_pictures.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+  set_tests_properties(walk_pictures PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
+endif()
+
 # The corpus command on the shared models (tests/corpus.sh): every file built,
 # verified and walked close to far with no crack and no refused surface, and
 # (IGES, STEP) its free border at most 1.05 times OpenCASCADE's sewing at the

@@ -1,5 +1,5 @@
 /* image_holes TEST.png REFERENCE.png R,G,B [--inside R,G,B] [--margin PX] [--reach PX]
- *             [--max N] [--max-inside N] [--out HOLES.png]
+ *             [--max N] [--max-inside N] [--out HOLES.png] [--empty-ok]
  * Cracks and holes in a picture, told by pixels alone (no bookkeeping of the
  * program that drew it): both pictures are the same view drawn over the
  * background R,G,B, a colour the model never has, REFERENCE densely (the
@@ -18,11 +18,13 @@
  * colour inside are the solid's inside showing through (a crack into it, or
  * a contour the coarser tessellation moved: counted apart, at most
  * --max-inside, default no limit). A pixel is of a colour when within 2
- * levels of it per channel. Prints the
- * count, the model's interior pixels and the first holes; --out writes the
- * holes in red over the test picture dimmed. Exit 0 when at most N (default
+ * levels of it per channel. Prints the count, the model's interior pixels,
+ * its pixels in both pictures and the first holes; --out writes the holes
+ * in red over the test picture dimmed. Exit 0 when at most N (default
  * 0) holes, 1 when more, 2 on error (unreadable files, sizes that differ, a
- * reference without any model pixel, which compares nothing). */
+ * reference without any model pixel, which compares nothing; with
+ * --empty-ok such a reference is no error but a view with nothing to miss,
+ * 0 holes: a walk's frame that looks past the model, tests/walk_pictures.py). */
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
 #include <stb_image.h>
@@ -61,6 +63,7 @@ typedef struct options {
     int bg[3], inside[3], margin, reach;
     long max_holes, max_inside;
     const char *out;
+    int empty_ok;
 } options;
 
 /* Not the model's outside: the background or, with --inside, a back face. */
@@ -100,10 +103,15 @@ static int parse_rgb(const char *text, int bg[3])
 static int parse_options(int argc, char **argv, options *o)
 {
     o->margin = 2, o->reach = 3, o->max_holes = 0, o->max_inside = -1, o->out = NULL;
+    o->empty_ok = 0;
     o->inside[0] = o->inside[1] = o->inside[2] = -1;
     if (argc < 4 || !parse_rgb(argv[3], o->bg))
         return 0;
     for (int i = 4; i < argc; i++) {
+        if (!strcmp(argv[i], "--empty-ok")) {
+            o->empty_ok = 1;
+            continue;
+        }
         if (i + 1 >= argc)
             return 0;
         if (!strcmp(argv[i], "--margin"))
@@ -165,11 +173,12 @@ static int compare(const char *test_path, const char *ref_path, const picture *t
     unsigned char *mark = calloc(n, 1);
     if (!mark)
         return 2;
-    long holes = 0, insides = 0, notches = 0, inside = 0, model = 0;
+    long holes = 0, insides = 0, notches = 0, inside = 0, model = 0, test_model = 0;
     for (int y = 0; y < ref->h; y++)
         for (int x = 0; x < ref->w; x++) {
             size_t i = (size_t)y * ref->w + x;
             model += !is_open(ref->rgb + 3 * i, o);
+            test_model += !is_open(test->rgb + 3 * i, o);
             int in = interior(ref, o, x, y, o->margin);
             inside += in;
             if (is_open(test->rgb + 3 * i, o))
@@ -188,13 +197,15 @@ static int compare(const char *test_path, const char *ref_path, const picture *t
     }
     for (size_t i = 0; i < n; i++)
         mark[i] = mark[i] == 2;
-    int rc = model == 0 ? 2 : holes > o->max_holes || (o->max_inside >= 0 && insides > o->max_inside);
-    if (model == 0)
+    int empty = model == 0 && !o->empty_ok;
+    int rc = empty ? 2 : holes > o->max_holes || (o->max_inside >= 0 && insides > o->max_inside);
+    if (empty)
         fprintf(stderr, "image_holes: %s shows no model over %d,%d,%d: nothing to compare\n",
                 ref_path, o->bg[0], o->bg[1], o->bg[2]);
-    printf("%s vs %s: %ld holes, %ld inside in %ld interior pixels of the model (%ld pixels; "
-           "margin %d px; %ld notch pixels at crossing silhouettes, reach %d)\n", test_path,
-           ref_path, holes, insides, inside, model, o->margin, notches, o->reach);
+    printf("%s vs %s: %ld holes, %ld inside in %ld interior pixels of the model (%ld pixels, "
+           "%ld in TEST; margin %d px; %ld notch pixels at crossing silhouettes, reach %d)\n",
+           test_path, ref_path, holes, insides, inside, model, test_model, o->margin, notches,
+           o->reach);
     if (o->out && holes && !write_holes(o->out, test, mark))
         fprintf(stderr, "image_holes: cannot write %s\n", o->out), rc = 2;
     free(mark);
@@ -207,7 +218,7 @@ int main(int argc, char **argv)
     if (!parse_options(argc, argv, &o)) {
         fprintf(stderr, "usage: image_holes TEST.png REFERENCE.png R,G,B [--inside R,G,B] "
                         "[--margin PX] [--reach PX] [--max N] [--max-inside N] "
-                        "[--out HOLES.png]\n");
+                        "[--out HOLES.png] [--empty-ok]\n");
         return 2;
     }
     picture test = { 0 }, ref = { 0 };

@@ -6,7 +6,7 @@
 # wrong figure costs time, never a result. Used by tests/ and tests/bench/
 # (set_tests_properties sees only its own directory's tests).
 set(SW_TEST_COSTS_RELEASE
-    soak_short 23 cull_walk 143 corpus_shared_models 114 test_pack_cli 67 walk_bench_smoke 48
+    soak_short 23 walk_pictures 26 cull_walk 143 corpus_shared_models 114 test_pack_cli 67 walk_bench_smoke 48
     test_gen_parts 46 up_axis_cli 39 test_gen 38 holes_nist_mbe_pmi_4.stp 33 test_import_occt 32
     test_flash_power 30 model_nist_mbe_pmi_4.stp 25 model_occt_linkrods.step 20
     cull_bench_smoke 17 holes_occt_linkrods.step 17 test_flash_cli 15 walk_threads 15

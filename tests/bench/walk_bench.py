@@ -27,11 +27,18 @@ the table) and GLU stops after a time limit. Before the rows, seamwalk is
 started 9 more times for one frame each (start to first frame: median and
 spread), and row 1's walk is run once more measuring nothing (the frame
 times a kiosk sees: measuring a frame lets the workers get ahead, so the
-measured walk's later frames draw finer meshes). Prints the table and the
+measured walk's later frames draw finer meshes), and then judged by its
+pictures (tests/walk_pictures.py): the same walk writing every 10th frame
+against the reference walk of the same path with --workers 0 (every mesh
+made in its frame), each pair's interior background pixels (surfaces in
+view the walk left undrawn) and pixels differing, against 0 and 0.5%; the
+surfaces left undrawn (threads.waiting_surfaces_max) of both walks are
+printed. Prints the table and the
 ratios against the issue's targets, writes the JSON (--json) and a PNG of
-frame time along the path (--plot, gnuplot). Never fails on timing: exit 1
-only when a row fails or a figure is missing.
---quick: a smoke run (small scenes, 320x240, a few frames), for CTest.
+frame time along the path (--plot, gnuplot). Never fails on timing or on
+the pictures' figures: exit 1 only when a run fails or a figure is missing.
+--quick: a smoke run (small scenes, 320x240, a few frames, every 2nd
+pictured), for CTest.
 --work DIR keeps the generated scenes and packs there and reuses them."""
 import argparse
 import json
@@ -58,7 +65,8 @@ UNIFORM_MAX_S = 75
 GLU_MAX_S = 120
 
 TARGETS = {"first_frame_ms_median": 300.0, "frame_p50_ms": 16.7, "frame_p99_ms": 33.0,
-           "error_max_px": 1.0, "cracks": 0, "glu_speedup": 100.0, "tris_over_uniform": 0.2}
+           "error_max_px": 1.0, "cracks": 0, "glu_speedup": 100.0, "tris_over_uniform": 0.2,
+           "interior_background_px": 0, "differing_fraction": 0.005}
 PARTS = ["occt_hammer.iges", "occt_screw.step", "newell_teapot.txt", "nist_mbe_pmi_1.stp"]
 
 
@@ -259,7 +267,9 @@ def unmeasured_walk(sc):
     """Row 1's walk measuring nothing (--measure-every 0, as the kiosk
     service runs): while the GL thread measures a frame the workers get
     ahead, and the frames after it draw finer meshes, so the measured walk's
-    frame times are not the kiosk's. Frame times and triangles only."""
+    frame times are not the kiosk's. Frame times, triangles, the surfaces
+    in view left undrawn, and its pictures against the reference
+    (walk_pictures)."""
     out = sc.run_seamwalk("unmeasured", sc.a.frames, 0, AS_BUILT_FLAGS)
     if not out:
         sc.failures.append("the walk measuring nothing failed (%s.log)"
@@ -272,7 +282,45 @@ def unmeasured_walk(sc):
                            % s["error_px"]["measured_frames"])
         return None
     return {"p50": s["frame_ms"]["p50"], "p99": s["frame_ms"]["p99"],
-            "tris": s["tris_per_frame"]["median"], "frames": s["frames"]}
+            "tris": s["tris_per_frame"]["median"], "frames": s["frames"],
+            "waiting_surfaces_max": s["threads"]["waiting_surfaces_max"],
+            "pictures": walk_pictures(sc)}
+
+
+PICTURE_KEYS = ("frames_compared", "interior_background_px_max", "interior_background_frame",
+                "differing_fraction_max", "differing_frame", "inside_px_max")
+
+
+def walk_pictures(sc):
+    """The walk measuring nothing once more, writing every 10th frame (2nd
+    with --quick), against the same path with --workers 0 at the same bound
+    (tests/walk_pictures.py, its exit 1 a figure, not a failure): the
+    largest interior background and differing fraction over the frames, and
+    the undrawn surfaces of this walk (a picture stops the GL thread while
+    the workers go on, so this walk is not the one timed above)."""
+    a = sc.a
+    key = "pictures"
+    out, js = os.path.join(sc.work, "%s_%s" % (sc.name, key)), sc.stats_file(key)
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "walk_pictures.py")
+    cmd = [sys.executable, script, sc.pack, sc.path, a.build, out, a.size, str(a.frames),
+           "--every", "2" if a.quick else "10", "--memory-mb", "16384", "--json", js]
+    with open(js + ".log", "w") as log:
+        rc = subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT).returncode
+    if rc not in (0, 1) or not os.path.exists(js):
+        sc.failures.append("the pictures of the walk measuring nothing failed (%s.log)" % js)
+        return None
+    with open(js) as f:
+        p = json.load(f)
+    missing = [k for k in PICTURE_KEYS if p.get(k) is None]
+    if missing or p["test_walk"].get("waiting_surfaces_max") is None:
+        sc.failures.append("pictures: figures missing (%s)" % ", ".join(missing or
+                                                                    ["waiting_surfaces_max"]))
+        return None
+    figures = {k: p[k] for k in PICTURE_KEYS}
+    figures.update({"every": p["every"], "frames_with_model": p["frames_with_model"],
+                    "waiting_surfaces_max": p["test_walk"]["waiting_surfaces_max"],
+                    "dir": out})
+    return figures
 
 
 def run_scene(a, name, work):
@@ -314,6 +362,10 @@ def ratios(sc):
     if sc.unmeasured:
         out["unmeasured_frame_p50_ms"] = sc.unmeasured["p50"]
         out["unmeasured_frame_p99_ms"] = sc.unmeasured["p99"]
+        p = sc.unmeasured["pictures"]
+        if p:
+            out["interior_background_px"] = p["interior_background_px_max"]
+            out["differing_pct"] = 100 * p["differing_fraction_max"]
     if r1["ok"]:
         out["frame_p50_ms"] = r1["p50"]
         out["frame_p99_ms"] = r1["p99"]
@@ -371,8 +423,20 @@ def print_scene(a, sc):
     if sc.unmeasured:
         u = sc.unmeasured
         print("seamwalk as built, measuring nothing (--measure-every 0, as the kiosk service "
-              "runs): frame p50 %.1f ms, p99 %.1f ms, %d triangles a frame (median); its "
-              "error is not measured" % (u["p50"], u["p99"], u["tris"]))
+              "runs): frame p50 %.1f ms, p99 %.1f ms, %d triangles a frame (median); up to %d "
+              "surfaces in view left undrawn (no mesh yet); its error is not measured"
+              % (u["p50"], u["p99"], u["tris"], u["waiting_surfaces_max"]))
+        p = u["pictures"]
+        if p:
+            print("  its pictures, one frame in %d (%d compared, %d with the model), against "
+                  "--workers 0 on the same path: interior background px max %d (frame %d), "
+                  "differing max %.3f%% of pixels (frame %d), inside shown px max %d; that walk "
+                  "left up to %d surfaces undrawn (a picture stops the GL thread while the "
+                  "workers go on); pictures in %s"
+                  % (p["every"], p["frames_compared"], p["frames_with_model"],
+                     p["interior_background_px_max"], p["interior_background_frame"],
+                     100 * p["differing_fraction_max"], p["differing_frame"], p["inside_px_max"],
+                     p["waiting_surfaces_max"], p["dir"]))
     if sc.start:
         t = sc.start
         print("seamwalk: start to first frame over %d more starts, back to back: median %.0f ms "
@@ -423,6 +487,10 @@ def print_scene(a, sc):
          lambda v: v <= t["frame_p50_ms"])
     line("unmeasured_frame_p99_ms", "measuring nothing: frame p99 %.1f ms (<= 33)",
          lambda v: v <= t["frame_p99_ms"])
+    line("interior_background_px", "measuring nothing: %d interior background px (target 0)",
+         lambda v: v == t["interior_background_px"])
+    line("differing_pct", "measuring nothing: %.3f%% of pixels differ (<= 0.5%%)",
+         lambda v: v <= 100 * t["differing_fraction"])
     line("error_max_px", "error max %.3f px at bound 0.5 (target <= 1)",
          lambda v: v <= t["error_max_px"])
     line("cracks", "cracks %d (drawn gaps + seamwalk's own; target 0)", lambda v: v == 0)
