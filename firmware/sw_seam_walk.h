@@ -180,6 +180,7 @@ typedef struct sw_seam_walk {
     sw_seam_standin *standins;
     int no_standins;              /* set before the workers start: none even with levels */
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */
+    uint8_t *restitch;            /* surface_count: a stand-in to make again after the swap */
     uint32_t *drawn_shown;        /* original_count: the front's shown vertices as the drawn
                                      meshes have them, kept while a batch is in flight */
     uint32_t *mixed_shown;        /* original_count: a stand-in's front (sw_seam_walk_plan.c) */

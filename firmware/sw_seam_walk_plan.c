@@ -119,36 +119,36 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
         count_behind(w, s, e, frame);
 }
 
-/* Is original o sewn into a loop of a surface other than s drawn from a
- * mesh of the walk's own (not a stand-in)? */
-static int pinned(const sw_seam_walk *w, uint32_t o, uint32_t s)
+/* Is original o sewn into a loop of another surface drawn this frame? */
+static int shared_with_drawn(const sw_seam_walk *w, uint32_t o, uint32_t s)
 {
     const sw_seam_graph *g = &w->pack->seam;
     const sw_seam_vertex *v = &g->vertices[o];
     for (uint32_t r = v->first_slot_ref; r < v->first_slot_ref + v->slot_ref_count; r++) {
         uint32_t t = w->select.slot_surface[g->slot_refs[r]];
-        if (t != s && w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t])
+        if (t != s && w->cache.entries[t].state == SW_SEAM_READY && w->visible[t] == 1)
             return 1;
     }
     return 0;
 }
 
 /* The front a stand-in for s is joined to, as the shown vertex of each of
- * its loops' originals (in w->mixed_shown, by leaf position): where an
- * original is shared with a surface drawn from the walk's own mesh, the
- * vertex that mesh shows (the front as it was before a batch in flight
- * moved it); elsewhere the original itself, which every stand-in takes
- * there, so two stand-ins side by side meet on the sewn polyline whatever
- * levels they show. Read only at s's slots. */
-static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
+ * its loops' originals (by leaf position, read only at s's slots): the
+ * front every drawn mesh was made from (as it was before a batch in
+ * flight moved it), so it meets every neighbour; or, sewn (every original
+ * itself: *cracks gets the originals it shares with a surface drawn this
+ * frame, which then meets it only within the seams' error). */
+static uint32_t *standin_front(sw_seam_walk *w, uint32_t s, int sewn, uint32_t *cracks)
 {
+    uint32_t *drawn = w->batch_count > 0 ? w->drawn_shown : w->select.shown;
+    if (!sewn)
+        return drawn;
     const sw_seam_graph *g = &w->pack->seam;
-    const uint32_t *drawn = w->batch_count > 0 ? w->drawn_shown : w->select.shown;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
-            uint32_t p = w->select.leaf_lo[o];
-            w->mixed_shown[p] = pinned(w, o, s) ? drawn[p] : o;
+            w->mixed_shown[w->select.leaf_lo[o]] = o;
+            *cracks += (uint32_t)shared_with_drawn(w, o, s);
         }
     return w->mixed_shown;
 }
@@ -159,12 +159,21 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     if (level == UINT32_MAX)
         return 0;
     sw_seam_select front = w->select;
-    front.shown = standin_front(w, s);
     sw_seam_entry *e = &w->cache.entries[s];
     uint32_t last = e->last_frame;
-    if (!sw_seam_standin_make(w->standins, &front, s, level, w->seam_bound[s], &w->cache,
-                              sw_seam_workers_place, w->workers, e))
-        return 0;
+    /* Until a batch has moved the front for s, its seams may be as coarse
+     * as they go (it was out of view): its outer loop may have vanished
+     * there, and then it is joined to the sewn polylines instead. */
+    for (int sewn = 0; sewn < 2; sewn++) {
+        uint32_t cracks = 0;
+        front.shown = standin_front(w, s, sewn, &cracks);
+        if (!sw_seam_standin_make(w->standins, &front, s, level, w->seam_bound[s], &w->cache,
+                                  sw_seam_workers_place, w->workers, e))
+            return 0;
+        e->cracks += cracks;
+        if (e->state != SW_SEAM_GONE)
+            break;
+    }
     e->last_frame = last;
     if (e->state != SW_SEAM_READY)
         return 0;

@@ -18,7 +18,7 @@ static size_t standin_bytes(const sw_pack *pack)
         return 0;
     size_t n = (size_t)pack->seam.surface_count + 1;
     return sw_arena_worst_case(sizeof(sw_seam_standin), 64) + sw_seam_standin_bytes(pack) +
-           sw_arena_worst_case(n, 64) +
+           2 * sw_arena_worst_case(n, 64) +
            2 * sw_arena_worst_case(((size_t)pack->seam.original_count + 1) * sizeof(uint32_t), 64);
 }
 
@@ -37,13 +37,15 @@ static sw_status start_standins(sw_seam_walk *w, sw_arena *arena, sw_error *err)
     size_t n = (size_t)pack->seam.surface_count + 1;
     sw_seam_standin *m = sw_arena_alloc(arena, sizeof *m, 64);
     w->standin = sw_arena_alloc(arena, n, 64);
+    w->restitch = sw_arena_alloc(arena, n, 64);
     w->drawn_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
                                            sizeof(uint32_t), 64);
     w->mixed_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
                                            sizeof(uint32_t), 64);
-    if (!m || !w->standin || !w->drawn_shown || !w->mixed_shown)
+    if (!m || !w->standin || !w->restitch || !w->drawn_shown || !w->mixed_shown)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the stand-ins");
     memset(w->standin, 0, n);
+    memset(w->restitch, 0, n);
     sw_status st = sw_seam_standin_init(m, pack, arena, err);
     if (st == SW_OK)
         w->standins = m;
@@ -236,11 +238,13 @@ static sw_status follow_seams(sw_seam_walk *w, sw_seam_frame *frame, sw_error *e
     uint32_t n = w->pack->seam.surface_count;
     int changed = w->frame == 0;
     for (uint32_t s = 0; s < n; s++) {
-        /* Passed over with a mesh: its loops stay as its mesh has them.
+        /* Passed over with a mesh: its loops stay as its mesh has them
+         * (a stand-in follows any front: it is made again after the swap).
          * Without one there is nothing to keep, and loops left at an old
          * bound (as coarse as the hierarchy goes, from when it was out of
          * view) would be what its first mesh is made in. */
-        if (w->busy[s] == SW_PASSED && w->cache.entries[s].state == SW_SEAM_READY)
+        if (w->busy[s] == SW_PASSED && w->cache.entries[s].state == SW_SEAM_READY &&
+            !(w->standin && w->standin[s]))
             continue;
         float seam = w->target[s] * (float)SW_SEAM_SHARE;
         changed |= seam != w->seam_bound[s];
@@ -272,6 +276,10 @@ static sw_status open_batch(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err
              * it is needed again. */
             e->state = SW_SEAM_EMPTY;
             w->dirty[s] = 0;
+        }
+        if (!chosen && w->dirty[s] && w->standin && w->standin[s]) {
+            w->dirty[s] = 0;   /* a stand-in is made again after the swap, not in the batch */
+            w->restitch[s] = 1;
         }
         if (!chosen && !w->dirty[s])
             continue;
@@ -311,6 +319,23 @@ sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error 
  * measured it: the GL thread reads a mesh only in the frames that draw it,
  * and at its upload, before any of them), so the workers may reuse its
  * blocks as soon as that frame has finished. */
+/* The stand-ins beside surface s (sharing an original with it) are joined
+ * to what s draws: made again after the swap once s's mesh changed. */
+static void restitch_around(sw_seam_walk *w, uint32_t s)
+{
+    if (!w->standins)
+        return;
+    const sw_seam_graph *g = &w->pack->seam;
+    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+        for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
+            const sw_seam_vertex *v = &g->vertices[g->slots[g->loops[l].first_slot + k].vertex];
+            for (uint32_t r = v->first_slot_ref; r < v->first_slot_ref + v->slot_ref_count; r++) {
+                uint32_t t = w->select.slot_surface[g->slot_refs[r]];
+                w->restitch[t] |= w->standin[t];
+            }
+        }
+}
+
 static void evict(sw_seam_walk *w, uint32_t count)
 {
     /* Oldest first by one sort of the candidates (the scratch choose()
@@ -326,6 +351,7 @@ static void evict(sw_seam_walk *w, uint32_t count)
     sw_seam_candidates_sort(w->candidates, m);
     for (uint32_t k = 0; k < count && k < m; k++) {
         retire_mesh(w, w->candidates[k].surface);
+        restitch_around(w, w->candidates[k].surface);
         c->evictions++;
     }
 }
@@ -351,17 +377,18 @@ static void consume(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_fra
     }
 }
 
-/* After a swap: every stand-in is joined to the meshes its neighbours
- * draw now (their front, and which of them are stand-ins, changed), so
- * each is made again; the ones out of view are given up. */
+/* After a swap: the stand-ins whose loops the batch's move changed, or
+ * whose neighbours' meshes changed, are joined to what is drawn now: made
+ * again (the ones out of view given up). */
 static void remake_standins(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     if (!w->standins)
         return;
     uint32_t n = w->pack->seam.surface_count;
     for (uint32_t s = 0; s < n; s++) {
-        if (!w->standin[s])
+        if (!w->standin[s] || !w->restitch[s])
             continue;
+        w->restitch[s] = 0;
         retire_mesh(w, s);
         if (sw_seam_walk_needs_mesh(w, s))
             sw_seam_walk_stand_in(w, s, plan, frame);
@@ -444,8 +471,10 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *fra
     if (w->cache.evictions != evictions && !batch_done(w))
         remake_standins(w, plan, frame);
     if (batch_done(w)) {
-        for (uint32_t i = 0; i < w->batch_count; i++)
+        for (uint32_t i = 0; i < w->batch_count; i++) {
             consume(w, w->batch[i], plan, frame);
+            restitch_around(w, w->batch[i]);
+        }
         w->batch_count = w->batch_pushed = 0;
         remake_standins(w, plan, frame);
         w->room_tight = w->room_retries > 0;
