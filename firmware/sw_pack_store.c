@@ -109,10 +109,13 @@ static void dir_of(const char *path, char *out, size_t cap)
 static sw_status write_temp(const char *tmp, const char *bytes, size_t size, sw_error *err)
 {
     int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0 && errno == EACCES && unlink(tmp) == 0)
+    int e = errno;
+    if (fd < 0 && e == EACCES && unlink(tmp) == 0) {
         fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        e = errno;
+    }
     if (fd < 0)
-        return sw_error_set(err, SW_ERR_IO, "%s: %s", tmp, strerror(errno));
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", tmp, strerror(e));
     sw_status st = write_all(fd, tmp, bytes, size, err);
     if (st == SW_OK && fsync(fd) != 0)
         st = sw_error_set(err, SW_ERR_IO, "fsync %s: %s", tmp, strerror(errno));

@@ -58,3 +58,13 @@ sw_add_fuzz_target(fuzz_store SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_store
   LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store)
 sw_add_fuzz_target(fuzz_keys SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_keys.c
   LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys)
+
+# No store fault stops a boot, and boot-check agrees with it: each fault
+# the unit's user can meet (a root lock, a read-only store or mount, an
+# unwritable or unreadable state, a busy lock), the boot and boot-check run
+# as that user (nobody; the test needs root and is skipped without it).
+add_test(NAME test_flash_store_faults COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_store_faults.sh
+         $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_store_faults)
+set_tests_properties(test_flash_store_faults PROPERTIES FIXTURES_REQUIRED flash_packs
+                     SKIP_RETURN_CODE 77)
