@@ -322,11 +322,11 @@ static int cmd_status(const args *a)
         return failed(&err, EXIT_FAILED);
     int have_keys = load_keys(a, &keys, &key_err) == SW_OK;
     if (sw_store_read_state_copies(&store, &st, &copies, &err) != SW_OK) {
-        printf("store %s: %s\n", store.dir, err.message);
+        printf("%s\n", err.message);
         print_slot_files(&store, have_keys ? &keys : NULL);
         if (!have_keys)
             printf("slots not verified: %s\n", key_err.message);
-        return failed(&err, EXIT_FAILED);
+        return EXIT_FAILED;
     }
     printf("store %s (state generation %" PRIu64 ")\n", store.dir, st.generation);
     for (int i = 0; i < SW_STATE_COPIES; i++)

@@ -193,6 +193,24 @@ static int read_copy(const sw_store *s, int i, sw_store_state *out, sw_state_cop
     return 1;
 }
 
+/* A slot file that no state names and no install is writing: the state
+ * was lost, so this is not an empty store. */
+static int orphan_slot_file(const sw_store *s)
+{
+    sw_store_journal j;
+    int journal = 0;
+    sw_error ignored = { 0 };
+    if (sw_store_read_journal(s, &j, &journal, &ignored) != SW_OK)
+        journal = 0;
+    char path[3200];
+    for (int i = 0; i < 2; i++) {
+        sw_store_slot_path(s, i, path, sizeof path);
+        if (!(journal && j.slot == i) && access(path, F_OK) == 0)
+            return 1;
+    }
+    return 0;
+}
+
 sw_status sw_store_read_state_copies(const sw_store *s, sw_store_state *out,
                                      sw_state_copies *copies, sw_error *err)
 {
@@ -208,10 +226,13 @@ sw_status sw_store_read_state_copies(const sw_store *s, sw_store_state *out,
         *out = st[c->used];
         return SW_OK;
     }
-    if (c->missing[0] && c->missing[1]) {
+    if (c->missing[0] && c->missing[1] && !orphan_slot_file(s)) {
         *out = (sw_store_state){ .active = SW_SLOT_NONE, .pending = SW_SLOT_NONE };
         return SW_OK;
     }
+    if (c->missing[0] && c->missing[1])
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: no state file beside the slot files "
+                            "(seamwalk-flash repair rebuilds it from the slots)", s->dir);
     return sw_error_set(err, SW_ERR_CHECKSUM, "no valid store state (seamwalk-flash repair "
                         "rebuilds it from the slots): %s; %s", c->why[0],
                         c->why[1]);

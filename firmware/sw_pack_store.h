@@ -110,9 +110,11 @@ typedef struct sw_state_copies {
 extern const char *const sw_state_copy_names[SW_STATE_COPIES]; /* "state", "state.copy" */
 
 /* Reads both copies and takes the valid one with the higher generation.
- * Both missing: an empty store (generation 0), SW_OK. No valid copy but
- * one present: the copies' errors, each naming its file (SW_ERR_CHECKSUM
- * when one is damaged). copies may be NULL. */
+ * Both missing: an empty store (generation 0), SW_OK, unless a slot file
+ * is there that no install is writing (by the journal): then the state was
+ * lost, SW_ERR_FORMAT. No valid copy but one present: the copies' errors,
+ * each naming its file. Either error says that seamwalk-flash repair
+ * rebuilds the state. copies may be NULL. */
 sw_status sw_store_read_state_copies(const sw_store *s, sw_store_state *out,
                                      sw_state_copies *copies, sw_error *err);
 sw_status sw_store_read_state(const sw_store *s, sw_store_state *out, sw_error *err);

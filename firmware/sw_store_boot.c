@@ -4,7 +4,6 @@
 #include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "sw_pack_store.h"
 
@@ -103,19 +102,7 @@ static void recover(sw_store *s, sw_store_state *st, sw_boot_choice *c, const ch
                  : st->slot[1 - first].state == SW_SLOT_GOOD ? 1 - first : SW_SLOT_NONE;
     st->active = first;
     *c = (sw_boot_choice){ .slot = first, .fallback = second, .recovered = 1 };
-    say(c, "%s: starting the newest slot that verifies, unrecorded%s", why, "");
-}
-
-/* Whether a store with no state file at all still has slot files. */
-static int has_slot_files(const sw_store *s)
-{
-    char path[3200];
-    for (int i = 0; i < 2; i++) {
-        sw_store_slot_path(s, i, path, sizeof path);
-        if (access(path, F_OK) == 0)
-            return 1;
-    }
-    return 0;
+    say(c, "%.900s: starting the newest slot that verifies, unrecorded%s", why, "");
 }
 
 /* The state read, noted in the choice when a copy was not usable. 0: no
@@ -128,11 +115,6 @@ static int read_for_boot(sw_store *s, sw_store_state *st, sw_boot_choice *c)
     if (sw_store_read_state_copies(s, st, &copies, &err) != SW_OK) {
         snprintf(why, sizeof why, "%s", err.message);
         recover(s, st, c, why);
-        return 0;
-    }
-    if (copies.used < 0 && has_slot_files(s)) {
-        recover(s, st, c, "no state file beside the slot files (seamwalk-flash repair "
-                "rebuilds it from the slots)");
         return 0;
     }
     for (int i = 0; i < SW_STATE_COPIES && copies.used >= 0; i++)

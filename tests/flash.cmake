@@ -68,3 +68,10 @@ add_test(NAME test_flash_store_faults COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/t
          ${CMAKE_CURRENT_BINARY_DIR}/flash_store_faults)
 set_tests_properties(test_flash_store_faults PROPERTIES FIXTURES_REQUIRED flash_packs
                      SKIP_RETURN_CODE 77)
+
+# The state's two copies: each damaged, emptied or removed, then both, then
+# seamwalk-flash repair (tests/test_flash_state.sh).
+add_test(NAME test_flash_state COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_state.sh
+         $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_state)
+set_tests_properties(test_flash_state PROPERTIES FIXTURES_REQUIRED flash_packs)
