@@ -372,16 +372,18 @@ static sw_status root_only(const char *path, const struct stat *st, const char *
                         (unsigned)(st->st_mode & 07777));
 }
 
-sw_status sw_store_read_trusted_keys(const char *path, sw_trusted_keys *keys, sw_error *err)
+/* path (absolute) and every directory above it: root's alone. The last
+ * component is not followed when it is a link (lstat), so a link to the
+ * keys must be root's too; the directories are followed. */
+static sw_status root_only_chain(const char *path, sw_error *err)
 {
-    char real[4096], dir[4096];
+    char dir[4096];
     struct stat st;
-    *keys = (sw_trusted_keys){ 0 };
-    if (!realpath(path, real) || stat(real, &st) != 0)
+    if (lstat(path, &st) != 0)
         return sw_error_set(err, SW_ERR_IO, "%s: %s: the unit's trusted keys", path,
                             strerror(errno));
-    sw_status rc = root_only(real, &st, "the trusted keys file", err);
-    snprintf(dir, sizeof dir, "%s", real);
+    sw_status rc = root_only(path, &st, "the trusted keys file", err);
+    snprintf(dir, sizeof dir, "%s", path);
     for (char *slash = strrchr(dir, '/'); rc == SW_OK && slash; slash = strrchr(dir, '/')) {
         slash[slash == dir] = '\0'; /* keep "/" itself */
         if (stat(dir, &st) != 0)
@@ -390,7 +392,26 @@ sw_status sw_store_read_trusted_keys(const char *path, sw_trusted_keys *keys, sw
         if (slash == dir)
             break;
     }
-    if (rc != SW_OK)
-        return rc;
-    return sw_store_read_keys(real, keys, err);
+    return rc;
+}
+
+sw_status sw_store_read_trusted_keys(const char *path, sw_trusted_keys *keys, sw_error *err)
+{
+    char given[4096], real[4096], cwd[4096];
+    *keys = (sw_trusted_keys){ 0 };
+    if (path[0] == '/')
+        snprintf(given, sizeof given, "%s", path);
+    else if (getcwd(cwd, sizeof cwd))
+        snprintf(given, sizeof given, "%.2000s/%.2000s", cwd, path);
+    else
+        return sw_error_set(err, SW_ERR_IO, "getcwd: %s", strerror(errno));
+    /* The path as named (whoever can change a link on it can change the
+     * keys), then the file it resolves to. */
+    sw_status rc = root_only_chain(given, err);
+    if (rc == SW_OK && !realpath(given, real))
+        rc = sw_error_set(err, SW_ERR_IO, "%s: %s: the unit's trusted keys", path,
+                          strerror(errno));
+    if (rc == SW_OK)
+        rc = root_only_chain(real, err);
+    return rc == SW_OK ? sw_store_read_keys(real, keys, err) : rc;
 }
