@@ -363,7 +363,9 @@ sw_status sw_store_peek_slot(const sw_store *s, int slot, sw_store_slot *out, sw
 static sw_status root_only(const char *path, const struct stat *st, const char *what,
                            sw_error *err)
 {
-    if (st->st_uid == 0 && !(st->st_mode & (S_IWGRP | S_IWOTH)))
+    /* A link's own mode means nothing (always 0777); its owner and its
+     * directory decide who can change it. */
+    if (st->st_uid == 0 && (S_ISLNK(st->st_mode) || !(st->st_mode & (S_IWGRP | S_IWOTH))))
         return SW_OK;
     return sw_error_set(err, SW_ERR_ARG, "%s: %s is owned by uid %u with mode %04o; trusted "
                         "keys must be owned by root and writable by no one else, in "
@@ -382,7 +384,8 @@ static sw_status root_only_chain(const char *path, sw_error *err)
     if (lstat(path, &st) != 0)
         return sw_error_set(err, SW_ERR_IO, "%s: %s: the unit's trusted keys", path,
                             strerror(errno));
-    sw_status rc = root_only(path, &st, "the trusted keys file", err);
+    sw_status rc = root_only(path, &st, S_ISLNK(st.st_mode) ? "a link to the trusted keys"
+                                                            : "the trusted keys file", err);
     snprintf(dir, sizeof dir, "%s", path);
     for (char *slash = strrchr(dir, '/'); rc == SW_OK && slash; slash = strrchr(dir, '/')) {
         slash[slash == dir] = '\0'; /* keep "/" itself */

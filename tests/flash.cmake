@@ -75,3 +75,11 @@ add_test(NAME test_flash_state COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_fla
          $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> ${SW_FLASH_FIXTURE}
          ${CMAKE_CURRENT_BINARY_DIR}/flash_state)
 set_tests_properties(test_flash_state PROPERTIES FIXTURES_REQUIRED flash_packs)
+
+# The unit's trust anchor: keys files the unit's user could change refused
+# everywhere, --keys only narrowing, the signature checked before any
+# section is parsed (tests/test_flash_keys.sh; needs root, else skipped).
+add_test(NAME test_flash_keys COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_keys.sh
+         $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_keys)
+set_tests_properties(test_flash_keys PROPERTIES FIXTURES_REQUIRED flash_packs SKIP_RETURN_CODE 77)
