@@ -364,8 +364,12 @@ static sw_status root_only(const char *path, const struct stat *st, const char *
                            sw_error *err)
 {
     /* A link's own mode means nothing (always 0777); its owner and its
-     * directory decide who can change it. */
-    if (st->st_uid == 0 && (S_ISLNK(st->st_mode) || !(st->st_mode & (S_IWGRP | S_IWOTH))))
+     * directory decide who can change it. In a sticky directory of root's
+     * (/tmp) no one else can rename or remove root's entries, and each
+     * entry on the way is checked in turn. */
+    int sticky_dir = S_ISDIR(st->st_mode) && (st->st_mode & S_ISVTX);
+    if (st->st_uid == 0 && (S_ISLNK(st->st_mode) || sticky_dir ||
+                            !(st->st_mode & (S_IWGRP | S_IWOTH))))
         return SW_OK;
     return sw_error_set(err, SW_ERR_ARG, "%s: %s is owned by uid %u with mode %04o; trusted "
                         "keys must be owned by root and writable by no one else, in "

@@ -142,9 +142,11 @@ sw_status sw_store_remove_journal(const sw_store *s, sw_error *err);
 sw_status sw_store_read_keys(const char *path, sw_trusted_keys *keys, sw_error *err);
 
 /* The unit's trust anchor: sw_store_read_keys, but only from a file that
- * no one but root can change. The file and every directory above it (the
- * path resolved) must be owned by root and writable by neither group nor
- * others; else SW_ERR_ARG naming the file or directory, its owner and mode.
+ * no one but root can change. The file and every directory above it, on
+ * the path as named and as resolved, must be owned by root and writable by
+ * neither group nor others (a link: owned by root; a directory with the
+ * sticky bit, like /tmp, may be writable by all); else SW_ERR_ARG naming
+ * the file or directory, its owner and mode.
  * A file the unit's own user could rewrite would let whoever runs as that
  * user sign the packs it starts. */
 sw_status sw_store_read_trusted_keys(const char *path, sw_trusted_keys *keys, sw_error *err);
