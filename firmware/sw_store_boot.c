@@ -2,6 +2,7 @@
  * the pending slot's attempts, giving up on it, mark-good and rollback
  * (sw_pack_store.h). */
 #include <inttypes.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -52,8 +53,9 @@ void sw_boot_kind(const sw_boot_choice *c, const sw_store_state *st, int slot, c
         snprintf(out, cap, "good");
 }
 
-/* Appends "; " and a formatted note to the message. */
-static void say(sw_boot_choice *c, const char *fmt, const char *a, const char *b)
+/* Appends "; " (unless the message is empty) and a formatted note. */
+static void say(sw_boot_choice *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void say(sw_boot_choice *c, const char *fmt, ...)
 {
     size_t n = strlen(c->message);
     if (n + 3 >= sizeof c->message)
@@ -62,7 +64,10 @@ static void say(sw_boot_choice *c, const char *fmt, const char *a, const char *b
         memcpy(c->message + n, "; ", 2);
         n += 2;
     }
-    snprintf(c->message + n, sizeof c->message - n, fmt, a, b);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->message + n, sizeof c->message - n, fmt, ap);
+    va_end(ap);
 }
 
 /* The decision cannot be recorded (why): no trial starts. The good slot
@@ -77,13 +82,14 @@ static void start_unrecorded(sw_boot_choice *c, const sw_store_state *st, uint32
     int slot = st->active != SW_SLOT_NONE ? st->active
                : p != SW_SLOT_NONE && st->attempts < max_attempts ? p : SW_SLOT_NONE;
     *c = (sw_boot_choice){ .slot = slot, .fallback = SW_SLOT_NONE };
-    say(c, "%s%s", said, "");
+    if (said[0])
+        say(c, "%s", said);
     if (slot == SW_SLOT_NONE)
-        say(c, "%s: no slot can start without recording it%s", why, "");
+        say(c, "%s: no slot can start without recording it", why);
     else if (slot == st->active)
-        say(c, "%s: starting the good slot, no trial%s", why, "");
+        say(c, "%s: starting the good slot, no trial", why);
     else
-        say(c, "%s: no good slot, so the pending slot starts unrecorded%s", why, "");
+        say(c, "%s: no good slot, so the pending slot starts unrecorded", why);
 }
 
 /* No valid state: every slot file that carries a signature record, newest
@@ -102,7 +108,7 @@ static void recover(sw_store *s, sw_store_state *st, sw_boot_choice *c, const ch
                  : st->slot[1 - first].state == SW_SLOT_GOOD ? 1 - first : SW_SLOT_NONE;
     st->active = first;
     *c = (sw_boot_choice){ .slot = first, .fallback = second, .recovered = 1 };
-    say(c, "%.900s: starting the newest slot that verifies, unrecorded%s", why, "");
+    say(c, "%.900s: starting the newest slot that verifies, unrecorded", why);
 }
 
 /* The state read, noted in the choice when a copy was not usable. 0: no
@@ -141,7 +147,8 @@ void sw_store_boot_begin(sw_store *s, uint32_t max_attempts, int record,
     }
     sw_store_state after = st;
     int changed = sw_store_boot_decide(&after, max_attempts, out);
-    say(out, "%s%s", notes.message, "");
+    if (notes.message[0])
+        say(out, "%s", notes.message);
     sw_status wrote = SW_OK;
     if (changed && locked == SW_OK)
         wrote = record ? sw_store_write_state(s, &after, &werr)
@@ -156,9 +163,9 @@ void sw_store_boot_begin(sw_store *s, uint32_t max_attempts, int record,
         /* Unrecorded trials could crash-loop for ever. */
         snprintf(why, sizeof why, "cannot record the boot (%.500s)", werr.message);
         start_unrecorded(out, &st, max_attempts, why);
+    } else if (locked != SW_OK && locked != SW_ERR_UNSUPPORTED) {
+        say(out, "%s: nothing recorded", lock_err.message);
     }
-    else if (locked != SW_OK && locked != SW_ERR_UNSUPPORTED)
-        say(out, "%s: nothing recorded%s", lock_err.message, "");
     *state = changed && locked == SW_OK && wrote == SW_OK ? after : st;
 }
 
