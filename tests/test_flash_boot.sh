@@ -7,6 +7,10 @@
 # screen (its PNG read back here) instead of a black display.
 #   test_flash_boot.sh SEAMWALK SEAMWALK_FLASH FAULT_SHIM FIXTURE WORK
 set -uo pipefail
+if [ "$(id -u)" != 0 ]; then  # the unit's trusted keys must be root's (firmware/STORE.md)
+  echo "skipped: needs root, for trusted keys owned by root"
+  exit 77
+fi
 walker=$1 flash=$2 shim=$3 fixture=$4 work=$5
 rm -rf "$work" && mkdir -p "$work"
 unit=$work/unit
