@@ -1,6 +1,7 @@
 #define _DEFAULT_SOURCE /* realpath */
 /* The pack store's files and its state changes (sw_pack_store.h). Nothing
- * here allocates: the runtime calls sw_store_mark_good between frames. */
+ * here allocates: the runtime calls sw_store_mark_good between frames (only
+ * the trusted keys' realpath, at start, may allocate inside libc). */
 #include "sw_pack_store.h"
 
 #include <errno.h>
