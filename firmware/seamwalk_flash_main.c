@@ -131,11 +131,13 @@ static int read_unit_config(args *a)
 }
 
 /* The unit's trusted keys; with --keys, only those of them it names: a
- * key the unit does not trust is refused, so --keys cannot widen trust. */
-static sw_status load_keys(const args *a, sw_trusted_keys *keys, sw_error *err)
+ * key the unit does not trust is refused (*widens 1), so --keys cannot
+ * widen trust. */
+static sw_status load_keys(const args *a, sw_trusted_keys *keys, int *widens, sw_error *err)
 {
     const char *path = unit.keys[0] ? unit.keys : SW_STORE_DEFAULT_KEYS;
     sw_trusted_keys narrow;
+    *widens = 0;
     sw_status st = sw_store_read_trusted_keys(path, keys, err);
     if (st != SW_OK || !a->keys)
         return st;
@@ -145,8 +147,9 @@ static sw_status load_keys(const args *a, sw_trusted_keys *keys, sw_error *err)
         uint32_t k = 0;
         while (k < keys->count && memcmp(keys->keys[k], narrow.keys[i], SW_KEY_BYTES) != 0)
             k++;
-        if (k == keys->count)
-            return sw_error_set(err, SW_ERR_RANGE, "%s: key %02x%02x%02x%02x... is not among the "
+        *widens = k == keys->count;
+        if (*widens)
+            return sw_error_set(err, SW_ERR_ARG, "%s: key %02x%02x%02x%02x... is not among the "
                                 "unit's trusted keys (%s): --keys can only narrow them",
                                 a->keys, narrow.keys[i][0], narrow.keys[i][1],
                                 narrow.keys[i][2], narrow.keys[i][3], path);
@@ -156,9 +159,9 @@ static sw_status load_keys(const args *a, sw_trusted_keys *keys, sw_error *err)
 }
 
 /* A keys failure's exit: a --keys key the unit does not trust is refused. */
-static int keys_exit(sw_status st)
+static int keys_exit(int widens)
 {
-    return st == SW_ERR_RANGE ? EXIT_REFUSED : EXIT_FAILED;
+    return widens ? EXIT_REFUSED : EXIT_FAILED;
 }
 
 /* All of a file or standard input, malloc'd (16-byte aligned). */
@@ -233,14 +236,14 @@ static int cmd_install(const args *a)
     sw_error err = { 0 };
     uint8_t *bytes = NULL;
     size_t size = 0;
-    sw_status kst;
     if (sw_store_open(&store, a->store, &err) != SW_OK)
         return failed(&err, EXIT_FAILED);
-    if ((kst = load_keys(a, &keys, &err)) != SW_OK) {
-        if (kst == SW_ERR_RANGE)
+    int widens;
+    if (load_keys(a, &keys, &widens, &err) != SW_OK) {
+        if (widens)
             fprintf(stderr, "seamwalk-flash: refused (untrusted key): nothing on the unit "
                     "changed\n");
-        return failed(&err, keys_exit(kst));
+        return failed(&err, keys_exit(widens));
     }
     if (read_input(a->pack, &bytes, &size, &err) != SW_OK)
         return failed(&err, EXIT_FAILED);
@@ -320,7 +323,8 @@ static int cmd_status(const args *a)
     int journal = 0;
     if (sw_store_open(&store, a->store, &err) != SW_OK)
         return failed(&err, EXIT_FAILED);
-    int have_keys = load_keys(a, &keys, &key_err) == SW_OK;
+    int widens;
+    int have_keys = load_keys(a, &keys, &widens, &key_err) == SW_OK;
     if (sw_store_read_state_copies(&store, &st, &copies, &err) != SW_OK) {
         printf("%s\n", err.message);
         print_slot_files(&store, have_keys ? &keys : NULL);
@@ -440,8 +444,9 @@ static int cmd_repair(const args *a)
     sw_status st;
     if (sw_store_open(&store, a->store, &err) != SW_OK)
         return failed(&err, EXIT_FAILED);
-    if ((st = load_keys(a, &keys, &err)) != SW_OK)
-        return failed(&err, keys_exit(st));
+    int widens;
+    if (load_keys(a, &keys, &widens, &err) != SW_OK)
+        return failed(&err, keys_exit(widens));
     if ((st = sw_store_lock(&store, 0, &err)) != SW_OK)
         return failed(&err, st == SW_ERR_UNSUPPORTED ? EXIT_BUSY : EXIT_FAILED);
     int rc = repair_locked(&store, &keys);
@@ -466,7 +471,8 @@ static int cmd_boot_check(const args *a)
     int slots[2];
     if (sw_store_open(&store, a->store, &err) != SW_OK)
         return failed(&err, EXIT_FAILED);
-    if (load_keys(a, &keys, &err) != SW_OK) { /* the boot starts nothing either */
+    int widens;
+    if (load_keys(a, &keys, &widens, &err) != SW_OK) { /* the boot starts nothing either */
         printf("boot: %s\nboot: no valid slot\n", err.message);
         return EXIT_NO_SLOT;
     }
