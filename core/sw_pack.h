@@ -297,6 +297,15 @@ sw_status sw_pack_load(const char *path, sw_arena *arena, sw_pack *out, sw_error
 sw_status sw_pack_load_with(const char *path, sw_arena *arena, const sw_parts_runner *runner,
                             sw_pack *out, sw_error *err);
 
+/* sw_pack_load_with, running check (may be NULL) on the file's raw bytes
+ * before any of them is parsed: a unit checks the pack's signature there,
+ * so bytes from anyone but its owner reach no section parser. */
+typedef sw_status (*sw_pack_raw_check)(void *user, const uint8_t *bytes, size_t size,
+                                       sw_error *err);
+sw_status sw_pack_load_checked(const char *path, sw_arena *arena, const sw_parts_runner *runner,
+                               sw_pack_raw_check check, void *user, sw_pack *out,
+                               sw_error *err);
+
 const char *sw_section_type_name(uint32_t type); /* "META", ... or "unknown" */
 
 #endif

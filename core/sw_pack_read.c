@@ -844,8 +844,14 @@ sw_status sw_pack_read_header(const char *path, sw_pack_header *out, sw_error *e
     return s;
 }
 
+typedef struct raw_check {
+    sw_pack_raw_check fn;
+    void *user;
+} raw_check;
+
 static sw_status load_fd(int fd, uint64_t file_size, sw_arena *arena,
-                         const sw_parts_runner *runner, sw_pack *out, sw_error *err)
+                         const sw_parts_runner *runner, const raw_check *check, sw_pack *out,
+                         sw_error *err)
 {
     uint8_t *buf = file_size <= SIZE_MAX ? sw_arena_alloc(arena, (size_t)file_size, 64) : NULL;
     if (!buf)
@@ -854,6 +860,8 @@ static sw_status load_fd(int fd, uint64_t file_size, sw_arena *arena,
                             (unsigned long long)file_size, arena->size - arena->used,
                             arena->size);
     sw_status s = read_exactly(fd, buf, (size_t)file_size, err);
+    if (s == SW_OK && check->fn)
+        s = check->fn(check->user, buf, (size_t)file_size, err);
     if (s != SW_OK)
         return s;
     return sw_pack_open_memory_with(buf, (size_t)file_size, runner, out, err);
@@ -867,6 +875,14 @@ sw_status sw_pack_load(const char *path, sw_arena *arena, sw_pack *out, sw_error
 sw_status sw_pack_load_with(const char *path, sw_arena *arena, const sw_parts_runner *runner,
                             sw_pack *out, sw_error *err)
 {
+    return sw_pack_load_checked(path, arena, runner, NULL, NULL, out, err);
+}
+
+sw_status sw_pack_load_checked(const char *path, sw_arena *arena, const sw_parts_runner *runner,
+                               sw_pack_raw_check check_fn, void *user, sw_pack *out,
+                               sw_error *err)
+{
+    const raw_check check = { check_fn, user };
     uint64_t file_size = 0;
     int fd = -1;
     sw_status s = open_regular(path, &fd, &file_size, err);
@@ -876,7 +892,7 @@ sw_status sw_pack_load_with(const char *path, sw_arena *arena, const sw_parts_ru
     }
     /* A failed load gives its bytes back, so the caller can try another pack. */
     size_t mark = sw_arena_mark(arena);
-    s = load_fd(fd, file_size, arena, runner, out, err);
+    s = load_fd(fd, file_size, arena, runner, &check, out, err);
     close(fd);
     if (s != SW_OK) {
         sw_arena_reset_to(arena, mark);

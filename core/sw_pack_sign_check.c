@@ -89,6 +89,69 @@ void sw_public_key_line(const uint8_t key[SW_KEY_BYTES], char *line)
     line[n] = '\0';
 }
 
+sw_status sw_pack_signature_record_check(const sw_pack_signature *sig, sw_error *err)
+{
+    if (sig->format != SW_SIGNATURE_FORMAT || sig->flags != 0)
+        return sw_error_set(err, SW_ERR_VERSION, "SIGNATURE.format %u flags %u: expected "
+                            "format %u, flags 0", (unsigned)sig->format, (unsigned)sig->flags,
+                            SW_SIGNATURE_FORMAT);
+    if (!memchr(sig->name, '\0', sizeof sig->name))
+        return sw_error_set(err, SW_ERR_FORMAT, "SIGNATURE.name: not NUL-terminated within "
+                            "%d bytes", SW_PACK_NAME_BYTES);
+    return SW_OK;
+}
+
+sw_status sw_pack_signature_locate(const uint8_t *head, size_t head_size, uint64_t file_size,
+                                   uint32_t *index, uint64_t *offset, uint64_t *table_bytes,
+                                   sw_error *err)
+{
+    sw_pack_header h;
+    if (head_size < sizeof h || file_size < sizeof h)
+        return sw_error_set(err, SW_ERR_FORMAT, "header: %llu bytes, a pack is at least %zu",
+                            (unsigned long long)file_size, sizeof h);
+    memcpy(&h, head, sizeof h);
+    if (memcmp(h.magic, SW_PACK_MAGIC, 8) != 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "header: not a seamwalk pack (bad magic)");
+    if (h.total_size != file_size)
+        return sw_error_set(err, SW_ERR_FORMAT, "header: total_size %llu, but the file is %llu "
+                            "bytes", (unsigned long long)h.total_size,
+                            (unsigned long long)file_size);
+    uint64_t table = 64u + 32u * (uint64_t)h.section_count;
+    if (table_bytes)
+        *table_bytes = table;
+    if (h.section_table_offset != 64 || h.section_count == 0 ||
+        h.section_count > SW_PACK_MAX_SECTIONS || table > file_size)
+        return sw_error_set(err, SW_ERR_FORMAT, "header: a section table of %u entries at %u "
+                            "does not fit the file", (unsigned)h.section_count,
+                            (unsigned)h.section_table_offset);
+    if (head_size < table)
+        return sw_error_set(err, SW_ERR_RANGE, "header: %llu bytes of table needed",
+                            (unsigned long long)table);
+    int found = -1;
+    sw_pack_section e;
+    for (uint32_t i = 0; i < h.section_count; i++) {
+        memcpy(&e, head + 64 + 32u * i, sizeof e);
+        if (e.type != SW_SECTION_SIGNATURE)
+            continue;
+        if (found >= 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "sections %d and %u: two SIGNATURE "
+                                "sections, expected one", found, (unsigned)i);
+        found = (int)i;
+        *offset = e.offset;
+        if (e.size != sizeof(sw_pack_signature) || e.offset < table ||
+            e.offset > file_size - sizeof(sw_pack_signature))
+            return sw_error_set(err, SW_ERR_FORMAT, "section %u (SIGNATURE): %llu bytes at %llu, "
+                                "expected %zu inside the file after the table", (unsigned)i,
+                                (unsigned long long)e.size, (unsigned long long)e.offset,
+                                sizeof(sw_pack_signature));
+    }
+    if (found < 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "not signed: no SIGNATURE section (sign it "
+                            "with seamwalk-pack sign)");
+    *index = (uint32_t)found;
+    return SW_OK;
+}
+
 sw_status sw_pack_signature_find(const sw_pack *pack, const sw_pack_signature **out,
                                  uint32_t *index_out, sw_error *err)
 {
@@ -109,13 +172,9 @@ sw_status sw_pack_signature_find(const sw_pack *pack, const sw_pack_signature **
         return sw_error_set(err, SW_ERR_FORMAT, "section %d (SIGNATURE): %llu bytes, expected "
                             "%zu", found, (unsigned long long)s->size, sizeof(sw_pack_signature));
     const sw_pack_signature *sig = (const sw_pack_signature *)(pack->data + s->offset);
-    if (sig->format != SW_SIGNATURE_FORMAT || sig->flags != 0)
-        return sw_error_set(err, SW_ERR_VERSION, "SIGNATURE.format %u flags %u: expected "
-                            "format %u, flags 0", (unsigned)sig->format, (unsigned)sig->flags,
-                            SW_SIGNATURE_FORMAT);
-    if (!memchr(sig->name, '\0', sizeof sig->name))
-        return sw_error_set(err, SW_ERR_FORMAT, "SIGNATURE.name: not NUL-terminated within "
-                            "%d bytes", SW_PACK_NAME_BYTES);
+    sw_status st = sw_pack_signature_record_check(sig, err);
+    if (st != SW_OK)
+        return st;
     *out = sig;
     if (index_out)
         *index_out = (uint32_t)found;
@@ -175,27 +234,52 @@ static int key_trusted(const sw_trusted_keys *keys, const uint8_t key[SW_KEY_BYT
     return 0;
 }
 
-sw_status sw_pack_check_signature(const sw_pack *pack, const sw_trusted_keys *keys,
-                                  const sw_pack_signature **out, sw_error *err)
+/* The record's key is trusted and its signature matches data's digest. */
+static sw_status check_record(const uint8_t *data, size_t size, uint32_t index,
+                              const sw_pack_signature *sig, const sw_trusted_keys *keys,
+                              sw_error *err)
 {
-    const sw_pack_signature *sig;
-    uint32_t index;
-    sw_status st = sw_pack_signature_find(pack, &sig, &index, err);
-    if (st != SW_OK)
-        return st;
     if (keys && !key_trusted(keys, sig->public_key))
         return sw_error_set(err, SW_ERR_ARG, "signed by key %02x%02x%02x%02x..., which is not "
                             "among the %u trusted keys", sig->public_key[0],
                             sig->public_key[1], sig->public_key[2], sig->public_key[3],
                             (unsigned)keys->count);
     uint8_t digest[SW_DIGEST_BYTES];
-    if ((st = sw_pack_signed_digest(pack->data, pack->size, index, digest, err)) != SW_OK)
+    sw_status st = sw_pack_signed_digest(data, size, index, digest, err);
+    if (st != SW_OK)
         return st;
     if (crypto_sign_verify_detached(sig->signature, digest, sizeof digest, sig->public_key) != 0)
         return sw_error_set(err, SW_ERR_CHECKSUM, "SIGNATURE: does not match the pack's bytes "
                             "(changed after it was signed, or not signed by key %02x%02x%02x"
                             "%02x...)", sig->public_key[0], sig->public_key[1],
                             sig->public_key[2], sig->public_key[3]);
-    *out = sig;
     return SW_OK;
+}
+
+sw_status sw_pack_check_signature_raw(const uint8_t *data, size_t size,
+                                      const sw_trusted_keys *keys, sw_pack_signature *out,
+                                      sw_error *err)
+{
+    uint32_t index = 0;
+    uint64_t offset = 0;
+    sw_status st = sw_pack_signature_locate(data, size, size, &index, &offset, NULL, err);
+    if (st != SW_OK)
+        return st;
+    memcpy(out, data + offset, sizeof *out);
+    if ((st = sw_pack_signature_record_check(out, err)) != SW_OK)
+        return st;
+    return check_record(data, size, index, out, keys, err);
+}
+
+sw_status sw_pack_check_signature(const sw_pack *pack, const sw_trusted_keys *keys,
+                                  const sw_pack_signature **out, sw_error *err)
+{
+    const sw_pack_signature *sig = NULL;
+    uint32_t index = 0;
+    sw_status st = sw_pack_signature_find(pack, &sig, &index, err);
+    if (st == SW_OK)
+        st = check_record(pack->data, pack->size, index, sig, keys, err);
+    if (st == SW_OK)
+        *out = sig;
+    return st;
 }

@@ -60,9 +60,33 @@ void sw_public_key_line(const uint8_t key[SW_KEY_BYTES], char *line);
 sw_status sw_pack_signature_find(const sw_pack *pack, const sw_pack_signature **out,
                                  uint32_t *index_out, sw_error *err);
 
+/* The SIGNATURE entry, found from the file's header and section table alone
+ * (head: the file's first head_size bytes, at least 64 and the whole table;
+ * file_size: the file's size), so a unit can check a pack's signature
+ * before it parses any section of it: magic, total_size, the table in the
+ * file, exactly one SIGNATURE entry of 160 bytes after its table entry and
+ * inside the file. *table_bytes (may be NULL) gets 64 + the table's size,
+ * so a caller with fewer head bytes can read that many and call again. */
+sw_status sw_pack_signature_locate(const uint8_t *head, size_t head_size, uint64_t file_size,
+                                   uint32_t *index, uint64_t *offset, uint64_t *table_bytes,
+                                   sw_error *err);
+
+/* A SIGNATURE record's own fields: format 1, flags 0, a NUL in the name. */
+sw_status sw_pack_signature_record_check(const sw_pack_signature *sig, sw_error *err);
+
+/* The signature of raw, unvalidated bytes: located from the header and the
+ * table (sw_pack_signature_locate), by one of keys, valid over the bytes.
+ * Nothing else of the pack is read, so untrusted bytes reach no section
+ * parser before their owner is known. *out gets a copy of the record.
+ * Errors as sw_pack_check_signature. */
+sw_status sw_pack_check_signature_raw(const uint8_t *data, size_t size,
+                                      const sw_trusted_keys *keys, sw_pack_signature *out,
+                                      sw_error *err);
+
 /* BLAKE2b-512 of the file's size bytes with the three signature-dependent
  * fields read as zero; signature_index is the SIGNATURE section's table
- * index. The bytes must have passed sw_pack_open_memory. */
+ * index. Every offset it uses is checked against size, so it is safe on
+ * raw bytes once sw_pack_signature_locate found the index. */
 sw_status sw_pack_signed_digest(const uint8_t *data, size_t size, uint32_t signature_index,
                                 uint8_t digest[SW_DIGEST_BYTES], sw_error *err);
 

@@ -271,6 +271,13 @@ static long load_helpers(void)
     return cores > 2 ? cores - 2 : 1;
 }
 
+/* --store: a slot's signature, on its raw bytes, before any is parsed. */
+static sw_status check_slot(void *user, const uint8_t *bytes, size_t size, sw_error *err)
+{
+    const sw_program *rt = user;
+    return sw_boot_check_raw(&rt->boot, rt->loading_slot, bytes, size, err);
+}
+
 /* The loader's whole job, on its own thread: nothing here calls GL or
  * reads what the GL thread writes before the join (the display's size). */
 static sw_status load(sw_program *rt, sw_error *err)
@@ -283,10 +290,9 @@ static sw_status load(sw_program *rt, sw_error *err)
     double t0 = sw_program_now_s();
     sw_parts_threads threads;
     sw_parts_runner runner = sw_parts_threads_runner(&threads, (uint32_t)load_helpers());
-    if ((st = sw_pack_load_with(rt->opt.pack_path, &rt->arena, &runner, &rt->pack, err)) != SW_OK)
-        return st;
-    if (rt->opt.store_dir &&
-        (st = sw_boot_check_loaded(&rt->boot, rt->loading_slot, &rt->pack, err)) != SW_OK)
+    st = sw_pack_load_checked(rt->opt.pack_path, &rt->arena, &runner,
+                              rt->opt.store_dir ? check_slot : NULL, rt, &rt->pack, err);
+    if (st != SW_OK)
         return st;
     double pack_ms = (sw_program_now_s() - t0) * 1000.0;
     if (rt->pack.meta->patch_count == 0)

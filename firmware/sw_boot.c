@@ -25,36 +25,22 @@ void sw_boot_begin(sw_boot *b, const char *dir, const char *keys_path, uint32_t 
     memset(b, 0, sizeof *b);
     b->slot = b->choice.slot = b->choice.fallback = SW_SLOT_NONE;
     sw_error err = { 0 };
-    char path[3200];
     sw_status st = sw_store_open(&b->store, dir, &err);
-    if (st == SW_OK) {
-        if (keys_path)
-            snprintf(path, sizeof path, "%s", keys_path);
-        else
-            sw_store_path(&b->store, "keys", path, sizeof path);
-        st = sw_store_read_keys(path, &b->keys, &err);
-    }
     if (st == SW_OK)
-        st = sw_store_boot_begin(&b->store, max_attempts, &b->choice, &err);
-    if (st == SW_OK)
-        st = sw_store_read_state(&b->store, &b->state, &err);
+        st = sw_store_read_trusted_keys(keys_path ? keys_path : SW_STORE_DEFAULT_KEYS, &b->keys,
+                                        &err);
     if (st != SW_OK) {
-        b->choice = (sw_boot_choice){ .slot = SW_SLOT_NONE, .fallback = SW_SLOT_NONE };
         sw_boot_note(b, "%s", err.message);
         return;
     }
+    sw_store_boot_begin(&b->store, max_attempts, 1, &b->state, &b->choice);
     if (b->choice.message[0])
         sw_boot_note(b, "%s", b->choice.message);
 }
 
 int sw_boot_candidates(const sw_boot *b, int slots[2])
 {
-    int n = 0;
-    if (b->choice.slot != SW_SLOT_NONE)
-        slots[n++] = b->choice.slot;
-    if (b->choice.trial && b->choice.fallback != SW_SLOT_NONE)
-        slots[n++] = b->choice.fallback;
-    return n;
+    return sw_boot_choice_slots(&b->choice, slots);
 }
 
 const char *sw_boot_prepare(sw_boot *b, int slot)
@@ -63,15 +49,16 @@ const char *sw_boot_prepare(sw_boot *b, int slot)
     return b->pack_path;
 }
 
-sw_status sw_boot_check_loaded(const sw_boot *b, int slot, const sw_pack *pack, sw_error *err)
+sw_status sw_boot_check_raw(const sw_boot *b, int slot, const uint8_t *bytes, size_t size,
+                            sw_error *err)
 {
-    const sw_pack_signature *sig;
-    sw_status st = sw_pack_check_signature(pack, &b->keys, &sig, err);
+    sw_pack_signature sig;
+    sw_status st = sw_pack_check_signature_raw(bytes, size, &b->keys, &sig, err);
     if (st != SW_OK)
         return st;
-    if (sig->pack_version != b->state.slot[slot].version)
+    if (sig.pack_version != b->state.slot[slot].version)
         return sw_error_set(err, SW_ERR_FORMAT, "slot %c holds version %" PRIu64 ", the state "
-                            "says %" PRIu64, sw_slot_letter(slot), sig->pack_version,
+                            "says %" PRIu64, sw_slot_letter(slot), sig.pack_version,
                             b->state.slot[slot].version);
     return SW_OK;
 }
@@ -79,14 +66,12 @@ sw_status sw_boot_check_loaded(const sw_boot *b, int slot, const sw_pack *pack, 
 void sw_boot_started(sw_boot *b, int slot)
 {
     const sw_store_slot *s = &b->state.slot[slot];
+    char kind[128];
     b->slot = slot;
     b->trial = slot == b->choice.slot && b->choice.trial;
-    if (b->trial)
-        sw_boot_note(b, "starting slot %c ('%s' version %" PRIu64 "), pending: boot attempt %"
-                     PRIu32, sw_slot_letter(slot), s->name, s->version, b->choice.attempt);
-    else
-        sw_boot_note(b, "starting slot %c ('%s' version %" PRIu64 "), good",
-                     sw_slot_letter(slot), s->name, s->version);
+    sw_boot_kind(&b->choice, &b->state, slot, kind, sizeof kind);
+    sw_boot_note(b, "starting slot %c ('%s' version %" PRIu64 "), %s", sw_slot_letter(slot),
+                 s->name, s->version, kind);
 }
 
 void sw_boot_poll_good(sw_boot *b, double healthy_s, double good_after_s)

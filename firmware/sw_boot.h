@@ -4,7 +4,7 @@
  * against the unit's trusted keys, falls back to the good slot when the
  * trial does not start, and after --good-after-s seconds of healthy frames
  * marks the trial good. Called by seamwalk_main.c: sw_boot_begin before
- * start, sw_boot_check_loaded right after the pack is loaded, and
+ * start, sw_boot_check_raw on the slot's bytes before they are parsed, and
  * sw_boot_poll_good after every frame (no allocation there). */
 #ifndef SW_BOOT_H
 #define SW_BOOT_H
@@ -23,12 +23,13 @@ typedef struct sw_boot {
     int trial;                         /* the running slot is the pending one on trial */
     int marked_good;                   /* 1 marked, -1 marking failed (logged) */
     char pack_path[3200];              /* the slot file being started */
-    char log[1024];                    /* what the boot did, for the log and the stats */
+    char log[2560];                    /* what the boot did, for the log and the stats */
 } sw_boot;
 
-/* Opens the store, reads the trusted keys (keys_path, or DIR/keys when
- * NULL), records the boot (sw_store_boot_begin). An unreadable store or
- * keys file is not fatal: nothing will start and the log says why. */
+/* Opens the store, reads the trusted keys (keys_path, or
+ * SW_STORE_DEFAULT_KEYS when NULL), records the boot (sw_store_boot_begin:
+ * no store problem stops it). A keys file that cannot be read or trusted
+ * is not fatal: nothing will start and the log says why. */
 void sw_boot_begin(sw_boot *b, const char *dir, const char *keys_path, uint32_t max_attempts);
 
 /* The slots to try, in order (the choice, then its fallback); count 0..2. */
@@ -37,9 +38,10 @@ int sw_boot_candidates(const sw_boot *b, int slots[2]);
 /* Sets pack_path to slot's file. */
 const char *sw_boot_prepare(sw_boot *b, int slot);
 
-/* The pack just loaded from slot: signed by a trusted key, and the version
- * the state recorded for the slot. */
-sw_status sw_boot_check_loaded(const sw_boot *b, int slot, const sw_pack *pack, sw_error *err);
+/* A slot's raw bytes, before any section is parsed (sw_pack_load_checked):
+ * signed by a trusted key, and the version the state has for the slot. */
+sw_status sw_boot_check_raw(const sw_boot *b, int slot, const uint8_t *bytes, size_t size,
+                            sw_error *err);
 
 /* The slot started: remembers it and adds a line to the log. */
 void sw_boot_started(sw_boot *b, int slot);

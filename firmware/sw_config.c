@@ -7,6 +7,7 @@
 #include "sw_config.h"
 
 #include "sw_gl_pool.h"
+#include "sw_pack_store.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -105,6 +106,7 @@ void sw_config_defaults(sw_config *cfg)
     memset(cfg, 0, sizeof *cfg);
     cfg->display = SW_DISPLAY_AUTO;
     cfg->fov_deg = 45;
+    memcpy(cfg->keys, SW_STORE_DEFAULT_KEYS, sizeof SW_STORE_DEFAULT_KEYS);
     cfg->boot_attempts = 3;
     cfg->good_after_s = 30;
     cfg->memory_mb = 256;

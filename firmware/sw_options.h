@@ -32,7 +32,7 @@ typedef struct sw_options {
     int measure_every;           /* error and crack measurement every K-th frame (0: none); default 4 */
     double fov_deg;              /* vertical field of view; default 45 */
     const char *store_dir;       /* --store DIR: start a slot of the unit's pack store instead of --pack */
-    const char *keys_path;       /* --keys FILE: trusted keys; default DIR/keys */
+    const char *keys_path;       /* --keys FILE: trusted keys; default /etc/seamwalk/keys */
     int boot_attempts;           /* --boot-attempts K: boots a pending slot gets; default 3 */
     double good_after_s;         /* --good-after-s S: healthy walk time before mark-good; default 30 */
     int background_set;          /* --background R,G,B: clear to it instead of the default */

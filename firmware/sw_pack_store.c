@@ -1,10 +1,13 @@
+#define _DEFAULT_SOURCE /* realpath */
 /* The pack store's files and its state changes (sw_pack_store.h). Nothing
- * here allocates: the runtime calls sw_store_mark_good between frames. */
+ * here allocates: the runtime calls sw_store_mark_good between frames (only
+ * the trusted keys' realpath, at start, may allocate inside libc). */
 #include "sw_pack_store.h"
 
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -40,8 +43,11 @@ sw_status sw_store_lock(sw_store *s, int wait, sw_error *err)
     char path[3200];
     sw_store_path(s, "lock", path, sizeof path);
     int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0 && (errno == EACCES || errno == EROFS || errno == EPERM))
+        fd = open(path, O_RDONLY | O_CLOEXEC); /* a lock left by root, a read-only store */
     if (fd < 0)
-        return sw_error_set(err, SW_ERR_IO, "%s: %s", path, strerror(errno));
+        return sw_error_set(err, SW_ERR_IO, "%s: cannot open the lock: %s", path,
+                            strerror(errno));
     if (flock(fd, LOCK_EX | (wait ? 0 : LOCK_NB)) != 0) {
         int e = errno;
         close(fd);
@@ -99,18 +105,31 @@ static void dir_of(const char *path, char *out, size_t cap)
         snprintf(out, cap, "%.*s", (int)n, path);
 }
 
-sw_status sw_store_write_atomic(const char *path, const char *bytes, size_t size, sw_error *err)
+/* bytes into tmp, fsynced. A temp file left by another user (root's
+ * install cut off) is removed first when it cannot be opened. */
+static sw_status write_temp(const char *tmp, const char *bytes, size_t size, sw_error *err)
 {
-    char tmp[3300], dir[3200];
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
     int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    int e = errno;
+    if (fd < 0 && e == EACCES && unlink(tmp) == 0) {
+        fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        e = errno;
+    }
     if (fd < 0)
-        return sw_error_set(err, SW_ERR_IO, "%s: %s", tmp, strerror(errno));
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", tmp, strerror(e));
     sw_status st = write_all(fd, tmp, bytes, size, err);
     if (st == SW_OK && fsync(fd) != 0)
         st = sw_error_set(err, SW_ERR_IO, "fsync %s: %s", tmp, strerror(errno));
     if (close(fd) != 0 && st == SW_OK)
         st = sw_error_set(err, SW_ERR_IO, "close %s: %s", tmp, strerror(errno));
+    return st;
+}
+
+sw_status sw_store_write_atomic(const char *path, const char *bytes, size_t size, sw_error *err)
+{
+    char tmp[3300], dir[3200];
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    sw_status st = write_temp(tmp, bytes, size, err);
     if (st == SW_OK && rename(tmp, path) != 0)
         st = sw_error_set(err, SW_ERR_IO, "rename %s to %s: %s", tmp, path, strerror(errno));
     if (st != SW_OK) {
@@ -145,20 +164,84 @@ static sw_status read_small(const char *path, char *buf, size_t cap, size_t *siz
     return SW_OK;
 }
 
-sw_status sw_store_read_state(const sw_store *s, sw_store_state *out, sw_error *err)
+const char *const sw_state_copy_names[SW_STATE_COPIES] = { "state", "state.copy" };
+
+/* One copy: 1 valid, 0 damaged or unreadable (why in copies), -1 missing. */
+static int read_copy(const sw_store *s, int i, sw_store_state *out, sw_state_copies *c)
 {
     char path[3200], text[SW_STORE_TEXT_MAX];
     size_t size;
     int present;
-    sw_store_path(s, "state", path, sizeof path);
-    sw_status st = read_small(path, text, sizeof text, &size, &present, err);
-    if (st != SW_OK)
-        return st;
-    if (!present) {
+    sw_error e = { 0 };
+    sw_store_path(s, sw_state_copy_names[i], path, sizeof path);
+    sw_status st = read_small(path, text, sizeof text, &size, &present, &e);
+    if (st == SW_OK && !present) {
+        c->missing[i] = 1;
+        snprintf(c->why[i], sizeof c->why[i], "%.380s: missing", path);
+        return -1;
+    }
+    if (st == SW_OK && size == 0)
+        st = sw_error_set(&e, SW_ERR_FORMAT, "%s: empty (0 bytes), expected the store state",
+                          path);
+    if (st == SW_OK)
+        st = sw_store_state_parse(text, size, path, out, &e);
+    if (st != SW_OK) {
+        snprintf(c->why[i], sizeof c->why[i], "%.399s", e.message);
+        return 0;
+    }
+    c->valid[i] = 1;
+    c->generation[i] = out->generation;
+    return 1;
+}
+
+/* A slot file that no state names and no install is writing: the state
+ * was lost, so this is not an empty store. */
+static int orphan_slot_file(const sw_store *s)
+{
+    sw_store_journal j;
+    int journal = 0;
+    sw_error ignored = { 0 };
+    if (sw_store_read_journal(s, &j, &journal, &ignored) != SW_OK)
+        journal = 0;
+    char path[3200];
+    for (int i = 0; i < 2; i++) {
+        sw_store_slot_path(s, i, path, sizeof path);
+        if (!(journal && j.slot == i) && access(path, F_OK) == 0)
+            return 1;
+    }
+    return 0;
+}
+
+sw_status sw_store_read_state_copies(const sw_store *s, sw_store_state *out,
+                                     sw_state_copies *copies, sw_error *err)
+{
+    sw_state_copies local;
+    sw_state_copies *c = copies ? copies : &local;
+    sw_store_state st[SW_STATE_COPIES];
+    *c = (sw_state_copies){ .used = -1 };
+    for (int i = 0; i < SW_STATE_COPIES; i++)
+        if (read_copy(s, i, &st[i], c) == 1 &&
+            (c->used < 0 || st[i].generation > st[c->used].generation))
+            c->used = i;
+    if (c->used >= 0) {
+        *out = st[c->used];
+        return SW_OK;
+    }
+    if (c->missing[0] && c->missing[1] && !orphan_slot_file(s)) {
         *out = (sw_store_state){ .active = SW_SLOT_NONE, .pending = SW_SLOT_NONE };
         return SW_OK;
     }
-    return sw_store_state_parse(text, size, path, out, err);
+    if (c->missing[0] && c->missing[1])
+        return sw_error_set(err, SW_ERR_FORMAT, "%s: no state file beside the slot files "
+                            "(seamwalk-flash repair rebuilds it from the slots)", s->dir);
+    return sw_error_set(err, SW_ERR_CHECKSUM, "no valid store state (seamwalk-flash repair "
+                        "rebuilds it from the slots): %s; %s", c->why[0],
+                        c->why[1]);
+}
+
+sw_status sw_store_read_state(const sw_store *s, sw_store_state *out, sw_error *err)
+{
+    return sw_store_read_state_copies(s, out, NULL, err);
 }
 
 sw_status sw_store_write_state(const sw_store *s, sw_store_state *state, sw_error *err)
@@ -169,8 +252,31 @@ sw_status sw_store_write_state(const sw_store *s, sw_store_state *state, sw_erro
     if (n == 0)
         return sw_error_set(err, SW_ERR_RANGE, "the store state does not fit %d bytes",
                             SW_STORE_TEXT_MAX);
-    sw_store_path(s, "state", path, sizeof path);
-    return sw_store_write_atomic(path, text, n, err);
+    /* One copy after the other: a power cut leaves at most one of them
+     * old, never both changed half-way. */
+    for (int i = 0; i < SW_STATE_COPIES; i++) {
+        sw_store_path(s, sw_state_copy_names[i], path, sizeof path);
+        sw_status st = sw_store_write_atomic(path, text, n, err);
+        if (st != SW_OK)
+            return st;
+    }
+    return SW_OK;
+}
+
+sw_status sw_store_probe_state_write(const sw_store *s, const sw_store_state *state,
+                                     sw_error *err)
+{
+    char tmp[3200], text[SW_STORE_TEXT_MAX];
+    sw_store_state next = *state;
+    next.generation++;
+    size_t n = sw_store_state_format(&next, text, sizeof text);
+    if (n == 0)
+        return sw_error_set(err, SW_ERR_RANGE, "the store state does not fit %d bytes",
+                            SW_STORE_TEXT_MAX);
+    sw_store_path(s, "state.tmp", tmp, sizeof tmp);
+    sw_status st = write_temp(tmp, text, n, err);
+    unlink(tmp);
+    return st;
 }
 
 sw_status sw_store_read_journal(const sw_store *s, sw_store_journal *out, int *present,
@@ -216,4 +322,104 @@ sw_status sw_store_read_keys(const char *path, sw_trusted_keys *keys, sw_error *
     if (st == SW_OK && keys->count == 0)
         st = sw_error_set(err, SW_ERR_FORMAT, "%s: no trusted keys in the file", path);
     return st;
+}
+
+sw_status sw_store_peek_slot(const sw_store *s, int slot, sw_store_slot *out, sw_error *err)
+{
+    char path[3200];
+    static const size_t head_cap = 64 + 32 * SW_PACK_MAX_SECTIONS;
+    uint8_t head[64 + 32 * SW_PACK_MAX_SECTIONS];
+    *out = (sw_store_slot){ .state = SW_SLOT_EMPTY };
+    sw_store_slot_path(s, slot, path, sizeof path);
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    struct stat fs;
+    if (fd < 0 || fstat(fd, &fs) != 0) {
+        sw_status rc = sw_error_set(err, SW_ERR_IO, "%s: %s", path, strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        return rc;
+    }
+    uint64_t size = (uint64_t)fs.st_size, offset = 0;
+    ssize_t got = pread(fd, head, size < head_cap ? (size_t)size : head_cap, 0);
+    uint32_t index;
+    sw_pack_signature sig;
+    sw_status st = got < 0 ? sw_error_set(err, SW_ERR_IO, "read: %s", strerror(errno))
+                           : sw_pack_signature_locate(head, (size_t)got, size, &index, &offset,
+                                                      NULL, err);
+    if (st == SW_OK && pread(fd, &sig, sizeof sig, (off_t)offset) != (ssize_t)sizeof sig)
+        st = sw_error_set(err, SW_ERR_IO, "cannot read the SIGNATURE record");
+    if (st == SW_OK)
+        st = sw_pack_signature_record_check(&sig, err);
+    close(fd);
+    if (st != SW_OK) {
+        sw_error_prefix(err, "%s", path);
+        return st;
+    }
+    *out = (sw_store_slot){ SW_SLOT_GOOD, sig.pack_version, size, "" };
+    memcpy(out->name, sig.name, sizeof out->name);
+    return SW_OK;
+}
+
+/* One path component of the trust anchor: root's, and no one else may write. */
+static sw_status root_only(const char *path, const struct stat *st, const char *what,
+                           sw_error *err)
+{
+    /* A link's own mode means nothing (always 0777); its owner and its
+     * directory decide who can change it. In a sticky directory of root's
+     * (/tmp) no one else can rename or remove root's entries, and each
+     * entry on the way is checked in turn. */
+    int sticky_dir = S_ISDIR(st->st_mode) && (st->st_mode & S_ISVTX);
+    if (st->st_uid == 0 && (S_ISLNK(st->st_mode) || sticky_dir ||
+                            !(st->st_mode & (S_IWGRP | S_IWOTH))))
+        return SW_OK;
+    return sw_error_set(err, SW_ERR_ARG, "%s: %s is owned by uid %u with mode %04o; trusted "
+                        "keys must be owned by root and writable by no one else, in "
+                        "directories the same (chown root:root, chmod go-w; firmware/STORE.md "
+                        "\"Trusted keys\")", path, what, (unsigned)st->st_uid,
+                        (unsigned)(st->st_mode & 07777));
+}
+
+/* path (absolute) and every directory above it: root's alone. The last
+ * component is not followed when it is a link (lstat), so a link to the
+ * keys must be root's too; the directories are followed. */
+static sw_status root_only_chain(const char *path, sw_error *err)
+{
+    char dir[4096];
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return sw_error_set(err, SW_ERR_IO, "%s: %s: the unit's trusted keys", path,
+                            strerror(errno));
+    sw_status rc = root_only(path, &st, S_ISLNK(st.st_mode) ? "a link to the trusted keys"
+                                                            : "the trusted keys file", err);
+    snprintf(dir, sizeof dir, "%s", path);
+    for (char *slash = strrchr(dir, '/'); rc == SW_OK && slash; slash = strrchr(dir, '/')) {
+        slash[slash == dir] = '\0'; /* keep "/" itself */
+        if (stat(dir, &st) != 0)
+            return sw_error_set(err, SW_ERR_IO, "%s: %s", dir, strerror(errno));
+        rc = root_only(dir, &st, "a directory above the trusted keys", err);
+        if (slash == dir)
+            break;
+    }
+    return rc;
+}
+
+sw_status sw_store_read_trusted_keys(const char *path, sw_trusted_keys *keys, sw_error *err)
+{
+    char given[4096], real[4096], cwd[4096];
+    *keys = (sw_trusted_keys){ 0 };
+    if (path[0] == '/')
+        snprintf(given, sizeof given, "%s", path);
+    else if (getcwd(cwd, sizeof cwd))
+        snprintf(given, sizeof given, "%.2000s/%.2000s", cwd, path);
+    else
+        return sw_error_set(err, SW_ERR_IO, "getcwd: %s", strerror(errno));
+    /* The path as named (whoever can change a link on it can change the
+     * keys), then the file it resolves to. */
+    sw_status rc = root_only_chain(given, err);
+    if (rc == SW_OK && !realpath(given, real))
+        rc = sw_error_set(err, SW_ERR_IO, "%s: %s: the unit's trusted keys", path,
+                          strerror(errno));
+    if (rc == SW_OK)
+        rc = root_only_chain(real, err);
+    return rc == SW_OK ? sw_store_read_keys(real, keys, err) : rc;
 }

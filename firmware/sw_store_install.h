@@ -44,8 +44,9 @@ sw_status sw_store_install(sw_store *s, const uint8_t *pack, size_t size,
                            const sw_install_options *o, sw_install_report *report,
                            sw_error *err);
 
-/* Validates bytes as a pack signed by one of keys; *refusal says how it
- * failed. The bytes must be 8-byte aligned. */
+/* Checks bytes as a pack signed by one of keys: the signature over the raw
+ * bytes first (nothing parsed before), then the whole pack validated;
+ * *refusal says how it failed. The bytes must be 8-byte aligned. */
 sw_status sw_store_check_pack(const uint8_t *bytes, size_t size, const sw_trusted_keys *keys,
                               const sw_pack_signature **sig, enum sw_install_refusal *refusal,
                               sw_error *err);

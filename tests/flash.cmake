@@ -33,14 +33,14 @@ endif()
 add_test(NAME test_flash_power COMMAND test_flash_power $<TARGET_FILE:seamwalk-flash>
          $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
          ${CMAKE_CURRENT_BINARY_DIR}/flash_power ${SW_FLASH_TRIALS} 12)
-set_tests_properties(test_flash_power PROPERTIES FIXTURES_REQUIRED flash_packs)
+set_tests_properties(test_flash_power PROPERTIES FIXTURES_REQUIRED flash_packs SKIP_RETURN_CODE 77)
 sw_host_only_test(test_flash_power PROGRAMS test_flash_power seamwalk-flash flash_fault_shim)
 
 # Refusals, I/O faults and the install / status / mark-good / rollback flow.
 add_test(NAME test_flash_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_cli.sh
          $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim> ${SW_FLASH_FIXTURE}
          ${CMAKE_CURRENT_BINARY_DIR}/flash_cli)
-set_tests_properties(test_flash_cli PROPERTIES FIXTURES_REQUIRED flash_packs)
+set_tests_properties(test_flash_cli PROPERTIES FIXTURES_REQUIRED flash_packs SKIP_RETURN_CODE 77)
 sw_host_only_test(test_flash_cli PROGRAMS seamwalk-flash flash_fault_shim)
 
 # The screen a unit with no valid pack shows, read back from the framebuffer.
@@ -51,10 +51,35 @@ sw_add_test(test_message_screen SOURCES test_message_screen.c LIBS sw_platform s
 add_test(NAME test_flash_boot COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_boot.sh
          $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> $<TARGET_FILE:flash_fault_shim>
          ${SW_FLASH_FIXTURE} ${CMAKE_CURRENT_BINARY_DIR}/flash_boot)
-set_tests_properties(test_flash_boot PROPERTIES FIXTURES_REQUIRED flash_packs)
+set_tests_properties(test_flash_boot PROPERTIES FIXTURES_REQUIRED flash_packs SKIP_RETURN_CODE 77)
 
 # The parsers of the store's state file and journal, and of key files.
 sw_add_fuzz_target(fuzz_store SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_store.c
   LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store)
 sw_add_fuzz_target(fuzz_keys SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_keys.c
   LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys)
+
+# No store fault stops a boot, and boot-check agrees with it: each fault
+# the unit's user can meet (a root lock, a read-only store or mount, an
+# unwritable or unreadable state, a busy lock), the boot and boot-check run
+# as that user (nobody; the test needs root and is skipped without it).
+add_test(NAME test_flash_store_faults COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_store_faults.sh
+         $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_store_faults)
+set_tests_properties(test_flash_store_faults PROPERTIES FIXTURES_REQUIRED flash_packs
+                     SKIP_RETURN_CODE 77)
+
+# The state's two copies: each damaged, emptied or removed, then both, then
+# seamwalk-flash repair (tests/test_flash_state.sh).
+add_test(NAME test_flash_state COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_state.sh
+         $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_state)
+set_tests_properties(test_flash_state PROPERTIES FIXTURES_REQUIRED flash_packs SKIP_RETURN_CODE 77)
+
+# The unit's trust anchor: keys files the unit's user could change refused
+# everywhere, --keys only narrowing, the signature checked before any
+# section is parsed (tests/test_flash_keys.sh; needs root, else skipped).
+add_test(NAME test_flash_keys COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash_keys.sh
+         $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> ${SW_FLASH_FIXTURE}
+         ${CMAKE_CURRENT_BINARY_DIR}/flash_keys)
+set_tests_properties(test_flash_keys PROPERTIES FIXTURES_REQUIRED flash_packs SKIP_RETURN_CODE 77)

@@ -239,6 +239,70 @@ static void test_secret_key_file_round_trip_and_errors(void)
              SW_ERR_FORMAT);
 }
 
+/* The raw check (before any section is parsed): the signed sample passes
+ * with its version and name; every flip is refused but those in the two
+ * checksum fields the signature leaves out, which the reader catches. */
+static void test_raw_check_refuses_flips_before_parsing(void)
+{
+    size_t size;
+    uint8_t *bytes = signed_sample(5, owner_sk, &size);
+    sw_trusted_keys keys = owner_keys();
+    sw_pack_signature sig;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_check_signature_raw(bytes, size, &keys, &sig, &err) == SW_OK, "%s",
+                 err.message);
+    SW_CHECK(sig.pack_version == 5 && strcmp(sig.name, "sample") == 0);
+    size_t passed = 0, caught_later = 0;
+    for (size_t i = 0; i < size; i++) {
+        bytes[i] ^= 0x10;
+        if (sw_pack_check_signature_raw(bytes, size, &keys, &sig, &err) == SW_OK) {
+            passed++;
+            caught_later += check_bytes(bytes, size, &keys, &err) != SW_OK;
+        }
+        bytes[i] ^= 0x10;
+    }
+    printf("raw check: %zu of %zu flips passed it (the unsigned checksum fields), %zu of them "
+           "refused by the reader\n", passed, size, caught_later);
+    SW_CHECK(passed == 16 && caught_later == passed);
+    for (size_t n = 0; n < size; n++)
+        SW_CHECK(sw_pack_check_signature_raw(bytes, n, &keys, &sig, &err) != SW_OK);
+    free(bytes);
+}
+
+/* A stranger's pack with a broken section: refused for its key, since the
+ * signature is checked before the section's checksum is looked at. */
+static void test_raw_check_names_the_key_before_a_checksum(void)
+{
+    size_t size;
+    uint8_t *bytes = signed_sample(1, other_sk, &size);
+    bytes[table_of(bytes)[0].offset] ^= 1;
+    sw_trusted_keys keys = owner_keys();
+    sw_pack_signature sig;
+    sw_error err = { 0 };
+    SW_CHECK(sw_pack_check_signature_raw(bytes, size, &keys, &sig, &err) == SW_ERR_ARG);
+    SW_CHECK_MSG(strstr(err.message, "not among the 1 trusted keys"), "%s", err.message);
+    free(bytes);
+}
+
+/* Located from the header and table: too few bytes for the table says how
+ * many are needed. */
+static void test_locate_asks_for_the_whole_table(void)
+{
+    size_t size;
+    uint8_t *bytes = signed_sample(1, owner_sk, &size);
+    uint32_t index;
+    uint64_t offset, table = 0;
+    sw_error err = { 0 };
+    SW_CHECK(sw_pack_signature_locate(bytes, 64, size, &index, &offset, &table, &err) ==
+             SW_ERR_RANGE);
+    SW_CHECK(table == 64u + 32u * header_of(bytes)->section_count);
+    SW_CHECK(sw_pack_signature_locate(bytes, (size_t)table, size, &index, &offset, NULL,
+                                      &err) == SW_OK);
+    SW_CHECK(index == header_of(bytes)->section_count - 1 &&
+             offset == table_of(bytes)[index].offset);
+    free(bytes);
+}
+
 int main(void)
 {
     SW_CHECK(sodium_init() >= 0);
@@ -252,6 +316,9 @@ int main(void)
     SW_RUN(test_every_flipped_byte_is_refused);
     SW_RUN(test_flip_with_valid_checksums_is_refused);
     SW_RUN(test_every_truncation_is_refused);
+    SW_RUN(test_raw_check_refuses_flips_before_parsing);
+    SW_RUN(test_raw_check_names_the_key_before_a_checksum);
+    SW_RUN(test_locate_asks_for_the_whole_table);
     SW_RUN(test_public_key_file_parses_keys_and_comments);
     SW_RUN(test_public_key_file_errors_name_the_line);
     SW_RUN(test_secret_key_file_round_trip_and_errors);

@@ -1,10 +1,12 @@
 /* The pack store's text files and decisions (firmware/sw_store_text.c,
  * sw_store_boot.c, sw_pack_store.c): round trips, every parser error naming
  * its line, the boot decision (trial, fallback, good slot never counted),
- * mark-good and rollback on a directory. */
+ * mark-good and rollback on a directory, the state's two copies, and the
+ * boot's run as boot-check (nothing changed) and as a boot. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "sw_pack_store.h"
@@ -172,6 +174,111 @@ static void test_mark_good_and_rollback_on_disk(void)
     SW_CHECK(system(cmd) == 0);
 }
 
+static void write_file(const char *dir, const char *name, const char *text)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    SW_CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
+static size_t read_file(const char *dir, const char *name, char *buf, size_t cap)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "r");
+    size_t n = f ? fread(buf, 1, cap - 1, f) : 0;
+    if (f)
+        fclose(f);
+    buf[n] = '\0';
+    return n;
+}
+
+static void remove_dir(const char *dir)
+{
+    char cmd[256];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    SW_CHECK(system(cmd) == 0);
+}
+
+/* Two copies: written alike; one damaged, the other is read and the
+ * damage named; both gone beside a slot file, an error, not an empty
+ * store, unless the journal says an install is writing that slot. */
+static void test_state_two_copies(void)
+{
+    char dir[] = "/tmp/test_pack_store-XXXXXX", a[SW_STORE_TEXT_MAX], b[SW_STORE_TEXT_MAX];
+    SW_CHECK(mkdtemp(dir) != NULL);
+    sw_store store;
+    sw_error err = { 0 };
+    SW_CHECK(sw_store_open(&store, dir, &err) == SW_OK);
+    sw_store_state s = two_slots(), back;
+    sw_state_copies copies;
+    SW_CHECK(sw_store_write_state(&store, &s, &err) == SW_OK);
+    SW_CHECK(read_file(dir, "state", a, sizeof a) > 0 && read_file(dir, "state.copy", b, sizeof b) > 0);
+    SW_CHECK(strcmp(a, b) == 0);
+    write_file(dir, "state", "seamwalk-store 1\ngeneration 99\n");
+    SW_CHECK(sw_store_read_state_copies(&store, &back, &copies, &err) == SW_OK);
+    SW_CHECK(back.generation == 8 && copies.used == 1 && !copies.valid[0] && copies.valid[1]);
+    SW_CHECK_MSG(strstr(copies.why[0], "/state:3: expected \"active\""), "%s", copies.why[0]);
+    write_file(dir, "state.copy", "");
+    SW_CHECK(sw_store_read_state(&store, &back, &err) == SW_ERR_CHECKSUM);
+    SW_CHECK_MSG(strstr(err.message, "state.copy: empty (0 bytes)"), "%s", err.message);
+    char path[512];
+    snprintf(path, sizeof path, "%s/state", dir);
+    unlink(path);
+    snprintf(path, sizeof path, "%s/state.copy", dir);
+    unlink(path);
+    SW_CHECK(sw_store_read_state(&store, &back, &err) == SW_OK && back.generation == 0);
+    write_file(dir, "slot-b.swpack", "half a pack");
+    SW_CHECK(sw_store_read_state(&store, &back, &err) == SW_ERR_FORMAT);
+    SW_CHECK_MSG(strstr(err.message, "no state file beside the slot files"), "%s", err.message);
+    sw_store_journal j = { .slot = SW_SLOT_B, .size = 100, .done = 11 };
+    SW_CHECK(sw_store_write_journal(&store, &j, &err) == SW_OK);
+    SW_CHECK(sw_store_read_state(&store, &back, &err) == SW_OK && back.generation == 0);
+    remove_dir(dir);
+}
+
+/* boot-check's run (record 0) decides as the boot does and changes no
+ * file; the boot (record 1) writes the attempt; a state that cannot be
+ * written starts the good slot and says why. */
+static void test_boot_begin_check_and_record(void)
+{
+    char dir[] = "/tmp/test_pack_store-XXXXXX", before[SW_STORE_TEXT_MAX], after[SW_STORE_TEXT_MAX];
+    SW_CHECK(mkdtemp(dir) != NULL);
+    sw_store store;
+    sw_error err = { 0 };
+    SW_CHECK(sw_store_open(&store, dir, &err) == SW_OK);
+    sw_store_state s = two_slots(), st;
+    s.attempts = 0;
+    SW_CHECK(sw_store_write_state(&store, &s, &err) == SW_OK);
+    read_file(dir, "state", before, sizeof before);
+    sw_boot_choice c;
+    sw_store_boot_begin(&store, 3, 0, &st, &c);
+    SW_CHECK(c.slot == SW_SLOT_B && c.trial && c.attempt == 1 && c.message[0] == '\0');
+    read_file(dir, "state", after, sizeof after);
+    SW_CHECK(strcmp(before, after) == 0);
+    char tmp[512];
+    snprintf(tmp, sizeof tmp, "%s/state.tmp", dir);
+    SW_CHECK(access(tmp, F_OK) != 0);
+    sw_store_boot_begin(&store, 3, 1, &st, &c);
+    SW_CHECK(c.slot == SW_SLOT_B && c.trial && st.attempts == 1);
+    SW_CHECK(sw_store_read_state(&store, &st, &err) == SW_OK && st.attempts == 1);
+    SW_CHECK(mkdir(tmp, 0755) == 0);
+    for (int record = 0; record < 2; record++) {
+        sw_store_boot_begin(&store, 3, record, &st, &c);
+        SW_CHECK(c.slot == SW_SLOT_A && !c.trial);
+        SW_CHECK_MSG(strstr(c.message, "cannot record the boot (") &&
+                     strstr(c.message, "state.tmp: Is a directory): starting the good slot, "
+                            "no trial"), "%s", c.message);
+    }
+    SW_CHECK(sw_store_read_state(&store, &st, &err) == SW_OK && st.attempts == 1);
+    remove_dir(dir);
+}
+
 int main(void)
 {
     SW_RUN(test_state_round_trip);
@@ -180,5 +287,7 @@ int main(void)
     SW_RUN(test_journal_round_trip_and_errors);
     SW_RUN(test_boot_decision);
     SW_RUN(test_mark_good_and_rollback_on_disk);
+    SW_RUN(test_state_two_copies);
+    SW_RUN(test_boot_begin_check_and_record);
     return sw_test_finish();
 }

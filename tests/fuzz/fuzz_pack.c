@@ -4,7 +4,8 @@
  * checksum, never reaching the record checks behind it. An accepted pack is
  * walked end to end, so a view the validator let out of bounds shows up
  * under AddressSanitizer; the resealed input is opened once more with the
- * checks' parts run backwards, which must give the same answer. */
+ * checks' parts run backwards, which must give the same answer. The raw
+ * signature check a unit runs before the reader goes first. */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -13,6 +14,7 @@
 
 #include "sw_border_strip.h"
 #include "sw_pack.h"
+#include "sw_pack_signature.h"
 #include "../parts_backwards.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -171,6 +173,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         memcpy(buf, data, size);
     sw_pack pack;
     sw_error err;
+    /* A unit checks the signature on the raw bytes before any parser runs
+     * (sw_pack_check_signature_raw): it must stay inside them too. */
+    sw_pack_signature sig;
+    (void)sw_pack_check_signature_raw(buf, size, NULL, &sig, &err);
     if (sw_pack_open_memory(buf, size, &pack, &err) == SW_OK)
         walk(&pack);
     if (size >= sizeof(sw_pack_header)) {
