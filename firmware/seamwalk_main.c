@@ -373,6 +373,12 @@ static void print_summary(const sw_program *rt)
            s->error_bound_px, (unsigned long long)s->cracks_max, s->waiting_max,
            s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
+    /* The walk's crack count is its own bookkeeping; the drawn borders are
+     * checked apart (sw_seam_drawn.h) on the measured frames. */
+    if (s->measure_every > 0)
+        printf("seamwalk: drawn borders, checked apart: gaps max %llu, T-vertices max %llu\n",
+               (unsigned long long)s->drawn_gaps_max,
+               (unsigned long long)s->drawn_t_vertices_max);
     if (s->error_behind_samples)
         printf("seamwalk: meshes drawn coarser while their new ones were made: error max %.3f"
                " px (%llu samples, not in the error max above)\n", s->error_behind_max_px,

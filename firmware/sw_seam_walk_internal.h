@@ -63,6 +63,16 @@ void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
  * is drawn so. */
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
 
+/* V, planning a frame after the swap: the stand-ins whose loops the swap
+ * moved, or whose neighbours' meshes changed or came into view, made
+ * again (given up out of view) so they meet what is drawn now. */
+void sw_seam_walk_restitch(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame);
+
+/* The count least recently drawn meshes out of view given up (their
+ * blocks free once the frames that drew them have finished); returns how
+ * many. */
+uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count);
+
 /* Surface s's cache entry (READY) into the plan's uploads. */
 void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan);
 

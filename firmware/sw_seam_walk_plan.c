@@ -81,10 +81,6 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
     }
     if (e->state == SW_SEAM_EMPTY && w->standins)
         sw_seam_walk_stand_in(w, s, plan, frame);
-    if (e->state == SW_SEAM_GONE) {   /* gone in the loops the stand-in was made in */
-        frame->vanished_surfaces++;
-        return;
-    }
     frame->cracks += e->cracks;
     if (e->state == SW_SEAM_EMPTY && w->workers) {
         frame->waiting_surfaces++;   /* its first mesh is not made yet */
@@ -119,36 +115,52 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
         count_behind(w, s, e, frame);
 }
 
-/* Is original o sewn into a loop of another surface drawn this frame? */
-static int shared_with_drawn(const sw_seam_walk *w, uint32_t o, uint32_t s)
+/* The vertex original o shows in a stand-in for s: where o is sewn into a
+ * loop of another surface drawn this frame from a mesh of the walk's own
+ * (not a stand-in), the one that mesh shows (drawn, by leaf position);
+ * elsewhere its highest ancestor within the seams' share of the finest
+ * level's error of every surface o is sewn into. Both depend on o alone,
+ * not on s, so every stand-in sewn to o shows the same vertex there: the
+ * sewn polyline, its points closer than the finest levels' seams merged
+ * (a pole's corners the file left apart). */
+static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
+                               const uint32_t *drawn)
 {
     const sw_seam_graph *g = &w->pack->seam;
+    const sw_levels *lv = &w->pack->levels;
     const sw_seam_vertex *v = &g->vertices[o];
+    float within = INFINITY;
     for (uint32_t r = v->first_slot_ref; r < v->first_slot_ref + v->slot_ref_count; r++) {
         uint32_t t = w->select.slot_surface[g->slot_refs[r]];
-        if (t != s && w->cache.entries[t].state == SW_SEAM_READY && w->visible[t] == 1)
-            return 1;
+        if (t != s && w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t] &&
+            w->visible[t] == 1)
+            return drawn[w->select.leaf_lo[o]];
+        uint32_t first = lv->surface_levels[t];
+        float share = first < lv->surface_levels[t + 1]
+                          ? (float)SW_SEAM_SHARE * lv->levels[first].error : 0.0f;
+        within = fminf(within, share);
     }
-    return 0;
+    uint32_t x = o;
+    while (g->vertices[x].child != SW_SEAM_NONE && g->vertices[g->vertices[x].child].error <= within)
+        x = g->vertices[x].child;
+    return x;
 }
 
 /* The front a stand-in for s is joined to, as the shown vertex of each of
- * its loops' originals (by leaf position, read only at s's slots): the
- * front every drawn mesh was made from (as it was before a batch in
- * flight moved it), so it meets every neighbour; or, sewn (every original
- * itself: *cracks gets the originals it shares with a surface drawn this
- * frame, which then meets it only within the seams' error). */
-static uint32_t *standin_front(sw_seam_walk *w, uint32_t s, int sewn, uint32_t *cracks)
+ * its loops' originals (in w->mixed_shown by leaf position, read only at
+ * s's slots; standin_vertex). So it meets the walk's meshes beside it, as
+ * they were made from the front before a batch in flight moved it, and
+ * other stand-ins, whatever levels they show; not the front alone, which
+ * for a surface that was out of view is as coarse as it goes, its loops
+ * mostly gone. */
+static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
 {
-    uint32_t *drawn = w->batch_count > 0 ? w->drawn_shown : w->select.shown;
-    if (!sewn)
-        return drawn;
+    const uint32_t *drawn = w->batch_count > 0 ? w->drawn_shown : w->select.shown;
     const sw_seam_graph *g = &w->pack->seam;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
-            w->mixed_shown[w->select.leaf_lo[o]] = o;
-            *cracks += (uint32_t)shared_with_drawn(w, o, s);
+            w->mixed_shown[w->select.leaf_lo[o]] = standin_vertex(w, o, s, drawn);
         }
     return w->mixed_shown;
 }
@@ -161,19 +173,18 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     sw_seam_select front = w->select;
     sw_seam_entry *e = &w->cache.entries[s];
     uint32_t last = e->last_frame;
-    /* Until a batch has moved the front for s, its seams may be as coarse
-     * as they go (it was out of view): its outer loop may have vanished
-     * there, and then it is joined to the sewn polylines instead. */
-    for (int sewn = 0; sewn < 2; sewn++) {
-        uint32_t cracks = 0;
-        front.shown = standin_front(w, s, sewn, &cracks);
-        if (!sw_seam_standin_make(w->standins, &front, s, level, w->seam_bound[s], &w->cache,
-                                  sw_seam_workers_place, w->workers, e))
-            return 0;
-        e->cracks += cracks;
-        if (e->state != SW_SEAM_GONE)
-            break;
+    front.shown = standin_front(w, s);
+    if (!sw_seam_standin_make(w->standins, &front, s, level, w->seam_bound[s], &w->cache,
+                              sw_seam_workers_place, w->workers, e)) {
+        /* No room: meshes out of view go (their blocks are free once the
+         * frames that drew them have finished), and it waits till then. */
+        frame->evicted += sw_seam_walk_evict(w, 16);
+        return 0;
     }
+    /* Gone in the loops it was made in is not gone at the surface's own
+     * bound: it waits, undrawn and counted, for its mesh. */
+    if (e->state != SW_SEAM_READY)
+        memset(e, 0, sizeof *e);
     e->last_frame = last;
     if (e->state != SW_SEAM_READY)
         return 0;
@@ -190,8 +201,10 @@ void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
 {
     uint32_t n = w->pack->seam.surface_count;
     plan->view = *view;
-    if (w->workers)
+    if (w->workers) {
         sw_seam_walk_commit(w, plan, frame);
+        sw_seam_walk_restitch(w, plan, frame);
+    }
     else
         for (uint32_t s = 0; s < n; s++)
             if (sw_seam_walk_needs_mesh(w, s))

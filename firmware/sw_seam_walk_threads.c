@@ -336,7 +336,7 @@ static void restitch_around(sw_seam_walk *w, uint32_t s)
         }
 }
 
-static void evict(sw_seam_walk *w, uint32_t count)
+uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
 {
     /* Oldest first by one sort of the candidates (the scratch choose()
      * used; free again by now): a search of the whole cache per mesh made
@@ -349,11 +349,13 @@ static void evict(sw_seam_walk *w, uint32_t count)
             w->candidates[m++] =
                 (sw_seam_candidate){ (float)(w->frame - c->entries[s].last_frame), s };
     sw_seam_candidates_sort(w->candidates, m);
-    for (uint32_t k = 0; k < count && k < m; k++) {
+    uint32_t k = 0;
+    for (; k < count && k < m; k++) {
         retire_mesh(w, w->candidates[k].surface);
         restitch_around(w, w->candidates[k].surface);
         c->evictions++;
     }
+    return k;
 }
 
 /* Surface s's published mesh becomes the drawn one; the mesh it replaces
@@ -377,14 +379,18 @@ static void consume(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_fra
     }
 }
 
-/* After a swap: the stand-ins whose loops the batch's move changed, or
- * whose neighbours' meshes changed, are joined to what is drawn now: made
- * again (the ones out of view given up). */
-static void remake_standins(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame)
+void sw_seam_walk_restitch(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     if (!w->standins)
         return;
     uint32_t n = w->pack->seam.surface_count;
+    /* A mesh of the walk's own coming into view: the stand-ins beside it
+     * took the sewn polyline where it was not drawn. */
+    for (uint32_t s = 0; s < n; s++)
+        if (w->visible[s] == 1 && !w->standin[s] &&
+            w->cache.entries[s].state == SW_SEAM_READY &&
+            w->cache.entries[s].last_frame + 1 != w->frame)
+            restitch_around(w, s);
     for (uint32_t s = 0; s < n; s++) {
         if (!w->standin[s] || !w->restitch[s])
             continue;
@@ -441,7 +447,7 @@ static int retry_no_room(sw_seam_walk *w, sw_seam_frame *frame)
      * without workers, which evicts until a mesh fits, had none. */
     uint32_t failed = w->batch_count - keep;
     uint32_t before = w->cache.evictions;
-    evict(w, failed > 4 ? 2 * failed : 8);
+    sw_seam_walk_evict(w, failed > 4 ? 2 * failed : 8);
     frame->evicted += w->cache.evictions - before;
     for (uint32_t i = keep; i < w->batch_count; i++) {
         uint32_t s = w->batch[i];
@@ -464,19 +470,14 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *fra
         wait_batch(w);
     else
         push_more(w);
-    uint32_t evictions = w->cache.evictions;
     while (batch_done(w) && retry_no_room(w, frame) && (w->sync_work || w->frame == 1))
         wait_batch(w);
-    /* A mesh given up may be what a stand-in was joined to. */
-    if (w->cache.evictions != evictions && !batch_done(w))
-        remake_standins(w, plan, frame);
     if (batch_done(w)) {
         for (uint32_t i = 0; i < w->batch_count; i++) {
             consume(w, w->batch[i], plan, frame);
             restitch_around(w, w->batch[i]);
         }
         w->batch_count = w->batch_pushed = 0;
-        remake_standins(w, plan, frame);
         w->room_tight = w->room_retries > 0;
         w->room_retries = 0;
         frame->batches_committed = 1;

@@ -6,7 +6,7 @@
 # wrong figure costs time, never a result. Used by tests/ and tests/bench/
 # (set_tests_properties sees only its own directory's tests).
 set(SW_TEST_COSTS_RELEASE
-    soak_short 23 walk_pictures 26 cull_walk 143 corpus_shared_models 114 test_pack_cli 67 walk_bench_smoke 48
+    standins 70 soak_short 23 walk_pictures 26 cull_walk 143 corpus_shared_models 114 test_pack_cli 67 walk_bench_smoke 48
     test_gen_parts 46 up_axis_cli 39 test_gen 38 holes_nist_mbe_pmi_4.stp 33 test_import_occt 32
     test_flash_power 30 model_nist_mbe_pmi_4.stp 25 model_occt_linkrods.step 20
     cull_bench_smoke 17 holes_occt_linkrods.step 17 test_flash_cli 15 walk_threads 15
@@ -17,7 +17,7 @@ set(SW_TEST_COSTS_RELEASE
     model_occt_bearing.iges 9 test_import_occt_truncations 9 holes_axom_boxed_sphere.step 8
     up_axis_orbit 8 model_gpucast_teapot.igs 8)
 set(SW_TEST_COSTS_ASAN
-    test_pack_cli 143 test_gen_parts 133 up_axis_cli 83 test_gen 73 test_import_occt 73
+    standins 150 test_pack_cli 143 test_gen_parts 133 up_axis_cli 83 test_gen 73 test_import_occt 73
     walk_bench_smoke 73 model_occt_linkrods.step 65 walk_threads 58 test_iges_crosscheck 44
     model_nist_mbe_pmi_4.stp 41 cull_bench_smoke 41 test_flash_cli 37 test_flash_power 35
     soak_short 29 test_flash_boot 28 walk_golden 27 model_axom_boxed_sphere.step 22

@@ -216,7 +216,7 @@ static void measure_surfaces(builder *b)
  * loop vanished. Then the tessellator's loops: outer ones first, then the
  * holes that have not vanished (as the walk gives them, sw_seam_surface.h),
  * or the outer ones alone (with_holes 0). */
-static int gather(builder *b, uint32_t s, float pin)
+static int gather(builder *b, const sw_seam_select *front, uint32_t s, float pin)
 {
     const sw_seam_graph *g = &b->pack->seam;
     uint32_t at = 0, first = g->surface_loops[s];
@@ -224,7 +224,7 @@ static int gather(builder *b, uint32_t s, float pin)
         uint32_t count = 0;
         int vanished = 0;
         /* Cannot fail: l is in range and the buffers hold the surface's slots. */
-        sw_seam_select_loop_slots(&b->sel, l, pin, b->seam_points + at, b->slots + at,
+        sw_seam_select_loop_slots(front, l, pin, b->seam_points + at, b->slots + at,
                                   b->max_points - at, &count, &vanished, NULL);
         if (vanished && (g->loops[l].flags & SW_SEAM_LOOP_OUTER))
             return 0;
@@ -269,10 +269,10 @@ static sw_trim_loops tess_loops(builder *b, uint32_t s, int with_holes)
     return (sw_trim_loops){ b->points, b->loop_first, k };
 }
 
-/* Surface s tessellated at bound; SW_ERR_FORMAT with its holes retried
- * without them (as the walk draws it). */
-static sw_status tessellate(builder *b, uint32_t s, double bound, sw_trim_loops *loops,
-                            sw_trim_tess_result *t)
+/* Surface s tessellated at bound inside its gathered loops; with
+ * drop_holes, SW_ERR_FORMAT retried without its holes. */
+static sw_status tessellate(builder *b, uint32_t s, double bound, int drop_holes,
+                            sw_trim_loops *loops, sw_trim_tess_result *t)
 {
     uint32_t count = 0;
     sw_trim_patches_from_pack(b->pack, s, b->patches, b->max_patches, &count, NULL);
@@ -282,7 +282,7 @@ static sw_status tessellate(builder *b, uint32_t s, double bound, sw_trim_loops 
     *loops = tess_loops(b, s, 1);
     sw_status st = sw_trim_tess(b->patches, count, loops, bound, &opt, &b->scratch, &out, t,
                                 NULL);
-    if (st == SW_ERR_FORMAT) {
+    if (st == SW_ERR_FORMAT && drop_holes) {
         sw_trim_loops outer = tess_loops(b, s, 0);
         if (outer.loop_count < loops->loop_count) {
             *loops = outer;
@@ -346,14 +346,22 @@ static sw_status make_level(builder *b, uint32_t s, uint32_t rank, sw_error *err
 {
     const sw_seam_graph *g = &b->pack->seam;
     double bound = level_bound(b, s, rank);
-    if (!gather(b, s, (float)(bound * SW_SEAM_SHARE))) {
+    float pin = (float)(bound * SW_SEAM_SHARE);
+    if (!gather(b, &b->sel, s, pin)) {
         b->alive[s] = 0;
         b->report->vanished++;
         return SW_OK;
     }
     sw_trim_loops loops;
     sw_trim_tess_result t;
-    sw_status st = tessellate(b, s, bound, &loops, &t);
+    sw_status st = tessellate(b, s, bound, 0, &loops, &t);
+    /* A hole whose coarse polyline crosses another loop: the loops as sewn
+     * (which do not cross) rather than a level without the hole, which
+     * would cover it wherever the walk shows it. */
+    if (st == SW_ERR_FORMAT) {
+        gather(b, &b->finest, s, pin);
+        st = tessellate(b, s, bound, 1, &loops, &t);
+    }
     b->report->too_large += st == SW_ERR_RANGE;
     b->report->refused += st != SW_OK && st != SW_ERR_RANGE;
     if (st != SW_OK)
