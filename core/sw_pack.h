@@ -277,7 +277,7 @@ uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count, uint64
  * range. */
 sw_status sw_pack_open_memory(const void *data, size_t size, sw_pack *out, sw_error *err);
 
-/* The same, with the section checksums and the Seam Graph's rules in parts
+/* The same, with the section checksums, the Seam Graph's and the levels' rules in parts
  * run by runner (sw_parts.h: the runtime's loader passes one that uses its
  * spare cores); the same result and message whatever the runner. */
 sw_status sw_pack_open_memory_with(const void *data, size_t size, const sw_parts_runner *runner,

@@ -480,7 +480,7 @@ static sw_status check_groups(const int32_t index[LAST_KNOWN + 1], sw_error *err
     return s == SW_OK ? check_levels_group(index, err) : s;
 }
 
-/* Each known section's size must be its count (in META or SEAM, named by
+/* Each known section's size must be its count (in META, SEAM or LEVELS, named by
  * count_name) times its record size. */
 static sw_status check_section_size(const sw_pack_section *sections, int32_t index,
                                     uint32_t type, uint64_t count, uint64_t record,

@@ -23,5 +23,7 @@ sw_host_only_test(up_axis_cli PROGRAMS seamwalk-pack)
 # The IMPORT_NOTES section: round trip, refusals, reports into records.
 sw_add_test(test_pack_notes SOURCES test_pack_notes.c LIBS sw_assets sw_core)
 # The static levels in the pack: round trip, one refusal per validation rule
-# (each also with the checks' parts run backwards), the info report.
+# (each also with the checks' parts run backwards), the info report. Their
+# fuzz seed (corpus/pack/seed-levels) is written by test_pack_write
+# --write-corpus from the same hand-built levels (pack_sample.h).
 sw_add_test(test_pack_levels SOURCES test_pack_levels.c LIBS sw_assets sw_core)

@@ -129,6 +129,41 @@ static void test_levels_round_trip(void)
     free(bytes);
 }
 
+/* With ORIENTATION and IMPORT_NOTES too, the levels come last, in type
+ * order, and each of the three one-section types is still read. */
+static void test_levels_follow_orientation_and_notes(void)
+{
+    sample s;
+    sample_seam g;
+    sample_levels l;
+    make_sample(&s);
+    make_sample_seam(&g);
+    make_sample_levels(&l);
+    const sw_pack_orientation up = { .up_axis = 3 };
+    const sw_pack_import_note note = { .kind = SW_NOTE_SKIPPED, .count = 2, .source = "a.igs",
+                                       .what = "IGES 406" };
+    sw_pack_contents c = sample_contents(&s);
+    c.seam = &g.graph;
+    c.orientation = &up;
+    c.import_notes = &note;
+    c.import_note_count = 1;
+    c.levels = &l.view;
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK);
+    sw_pack pack;
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.header->section_count == 30);
+    SW_CHECK(pack.sections[21].type == SW_SECTION_ORIENTATION &&
+             pack.sections[22].type == SW_SECTION_IMPORT_NOTES);
+    for (uint32_t i = 23; i < 30; i++)
+        SW_CHECK(pack.sections[i].type == SW_SECTION_LEVELS + (i - 23));
+    SW_CHECK(pack.orientation && pack.orientation->up_axis == 3 && pack.import_note_count == 1 &&
+             pack.levels_header && pack.levels.level_count == 3);
+    free(bytes);
+}
+
 /* Without levels the writer adds nothing and the reader's view is empty. */
 static void test_no_levels_writes_no_level_sections(void)
 {
@@ -447,6 +482,7 @@ static void test_info_reports_levels(void)
 int main(void)
 {
     SW_RUN(test_levels_round_trip);
+    SW_RUN(test_levels_follow_orientation_and_notes);
     SW_RUN(test_no_levels_writes_no_level_sections);
     SW_RUN(test_surfaces_without_levels_are_valid);
     SW_RUN(test_level_sections_are_skippable);
