@@ -13,7 +13,7 @@
 
 #include "sw_test.h"
 #include "pack_sample.h"
-#include "parts_backwards.h"
+#include "pack_expect.h"
 #include "sw_pack_info.h"
 
 /* The sample with its graph and levels l (NULL: none), serialised; malloc'd. */
@@ -31,21 +31,6 @@ static uint8_t *serialize_with_levels(const sample_levels *l, size_t *size)
     sw_status st = sw_pack_serialize(&c, &bytes, size, &err);
     SW_CHECK_MSG(st == SW_OK, "%s", err.message);
     return bytes;
-}
-
-static void expect_open(const uint8_t *bytes, size_t size, sw_status status, const char *needle)
-{
-    sw_pack pack;
-    sw_error err = { 0 }, backwards_err;
-    sw_status got = sw_pack_open_memory(bytes, size, &pack, &err);
-    SW_CHECK_MSG(got == status, "expected %s, got %s: %s", sw_status_name(status),
-                 sw_status_name(got), err.message);
-    SW_CHECK_MSG(status == SW_OK || strstr(err.message, needle) != NULL, "\"%s\" not in \"%s\"",
-                 needle, err.message);
-    /* The loader's threads run the checks' parts in any order. */
-    SW_CHECK_MSG(sw_opens_the_same_backwards(bytes, size, got, err.message, &backwards_err),
-                 "parts run backwards: \"%s\", in order: %s \"%s\"", backwards_err.message,
-                 sw_status_name(got), err.message);
 }
 
 /* The sample with the (edited) levels l must be refused with status and needle. */
