@@ -36,7 +36,10 @@ typedef struct rail {
     float first, next, offset, period;
 } rail;
 
-static uint32_t rail_vertex(const rail *r, uint32_t k) { return r->chain[(r->start + k) % r->n].vertex; }
+static uint32_t rail_vertex(const rail *r, uint32_t k)
+{
+    return r->chain[(r->start + k) % r->n].vertex;
+}
 
 static float raw_t(const rail *r, uint32_t k) { return r->chain[(r->start + k) % r->n].t; }
 

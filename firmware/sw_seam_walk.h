@@ -179,6 +179,7 @@ typedef struct sw_seam_walk {
      * levels; NULL otherwise (a surface in view waits for its mesh). */
     sw_seam_standin *standins;
     int no_standins;              /* set before the workers start: none even with levels */
+    uint32_t standin_evicted;     /* the frame stand-ins last gave meshes up for room */
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */
     uint8_t *restitch;            /* surface_count: a stand-in to make again after the swap */
     uint32_t *drawn_shown;        /* original_count: the front's shown vertices as the drawn

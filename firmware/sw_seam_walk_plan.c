@@ -141,7 +141,8 @@ static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
         within = fminf(within, share);
     }
     uint32_t x = o;
-    while (g->vertices[x].child != SW_SEAM_NONE && g->vertices[g->vertices[x].child].error <= within)
+    while (g->vertices[x].child != SW_SEAM_NONE &&
+           g->vertices[g->vertices[x].child].error <= within)
         x = g->vertices[x].child;
     return x;
 }
@@ -176,9 +177,13 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     front.shown = standin_front(w, s);
     if (!sw_seam_standin_make(w->standins, &front, s, level, w->seam_bound[s], &w->cache,
                               sw_seam_workers_place, w->workers, e)) {
-        /* No room: meshes out of view go (their blocks are free once the
-         * frames that drew them have finished), and it waits till then. */
-        frame->evicted += sw_seam_walk_evict(w, 16);
+        /* No room: meshes out of view go, once a frame (their blocks are
+         * free once the frames that drew them have finished), and it waits
+         * till then. */
+        if (w->standin_evicted != w->frame) {
+            frame->evicted += sw_seam_walk_evict(w, 64);
+            w->standin_evicted = w->frame;
+        }
         return 0;
     }
     /* Gone in the loops it was made in is not gone at the surface's own

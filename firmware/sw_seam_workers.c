@@ -53,8 +53,8 @@ static void run_job(sw_seam_workers *p, sw_seam_maker *maker, uint32_t s)
     uint64_t t0 = now_ns();
     const sw_seam_job job = p->jobs[s];
     int no_room = 0;
-    uint64_t tris = sw_seam_make(maker, s, job.bound, job.seam_bound, p->cache, sw_seam_workers_place,
-                                 p, &p->made[s], &no_room);
+    uint64_t tris = sw_seam_make(maker, s, job.bound, job.seam_bound, p->cache,
+                                 sw_seam_workers_place, p, &p->made[s], &no_room);
     p->no_room[s] = (uint8_t)no_room;
     atomic_fetch_add_explicit(&p->made_triangles, tris, memory_order_relaxed);
     atomic_fetch_add_explicit(&p->busy_ns, now_ns() - t0, memory_order_relaxed);

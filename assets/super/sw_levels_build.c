@@ -186,9 +186,9 @@ static void builder_close(builder *b)
                        b->loop_uvs, b->loop_at, b->loop_len, b->loop_vanished, b->points,
                        b->loop_first, b->tess_loop, b->patches, b->positions, b->normals,
                        b->uvs, b->out_ids, b->indices, b->chain_points, b->chain_first,
-                       b->size, b->sew_offset, b->noise, b->alive, b->finest_shown, b->bounds, b->made.data,
-                       b->vertices.data, b->vertex_uvs.data, b->index_data.data, b->chains.data,
-                       b->points_out.data };
+                       b->size, b->sew_offset, b->noise, b->alive, b->finest_shown, b->bounds,
+                       b->made.data, b->vertices.data, b->vertex_uvs.data, b->index_data.data,
+                       b->chains.data, b->points_out.data };
     for (size_t i = 0; i < sizeof blocks / sizeof *blocks; i++)
         free(blocks[i]);
 }
