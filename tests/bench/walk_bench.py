@@ -284,7 +284,26 @@ def unmeasured_walk(sc):
     return {"p50": s["frame_ms"]["p50"], "p99": s["frame_ms"]["p99"],
             "tris": s["tris_per_frame"]["median"], "frames": s["frames"],
             "waiting_surfaces_max": s["threads"]["waiting_surfaces_max"],
+            "standins_max": s["threads"]["standins_max"],
+            "static_levels_off": static_levels_off(sc),
             "pictures": walk_pictures(sc)}
+
+
+def static_levels_off(sc):
+    """The same walk measuring nothing with --static-levels 0: no stand-in
+    for a surface whose mesh is not made yet (it waits, undrawn), the row
+    to hold the stand-ins' cost and gain against, same path, same run."""
+    out = sc.run_seamwalk("unmeasured_no_levels", sc.a.frames, 0,
+                          AS_BUILT_FLAGS + ["--static-levels", "0"])
+    if not out:
+        sc.failures.append("the walk with --static-levels 0 failed (%s.log)"
+                           % sc.stats_file("unmeasured_no_levels"))
+        return None
+    with open(out) as f:
+        s = json.load(f)
+    return {"p50": s["frame_ms"]["p50"], "p99": s["frame_ms"]["p99"],
+            "tris": s["tris_per_frame"]["median"],
+            "waiting_surfaces_max": s["threads"]["waiting_surfaces_max"]}
 
 
 PICTURE_KEYS = ("frames_compared", "interior_background_px_max", "interior_background_frame",
@@ -426,6 +445,13 @@ def print_scene(a, sc):
               "runs): frame p50 %.1f ms, p99 %.1f ms, %d triangles a frame (median); up to %d "
               "surfaces in view left undrawn (no mesh yet); its error is not measured"
               % (u["p50"], u["p99"], u["tris"], u["waiting_surfaces_max"]))
+        off = u["static_levels_off"]
+        if off:
+            print("  static levels on (up to %d stand-ins a frame) against off (--static-levels "
+                  "0), same path: frame p50 %.1f against %.1f ms, p99 %.1f against %.1f ms, "
+                  "%d against %d triangles, undrawn max %d against %d"
+                  % (u["standins_max"], u["p50"], off["p50"], u["p99"], off["p99"], u["tris"],
+                     off["tris"], u["waiting_surfaces_max"], off["waiting_surfaces_max"]))
         p = u["pictures"]
         if p:
             print("  its pictures, one frame in %d (%d compared, %d with the model), against "
