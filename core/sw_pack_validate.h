@@ -11,6 +11,12 @@
 #include "sw_pack.h"
 #include "sw_parts.h"
 
+/* The header fields sw_pack_read_header (sw_pack_load.c) and
+ * sw_pack_open_memory both check; what names the thing the size was
+ * measured on ("data" or "file"). */
+sw_status sw_pack_check_header_identity(const sw_pack_header *h, uint64_t actual_size,
+                                        const char *what, sw_error *err);
+
 /* pack's views and counts are in bounds; checks every record of META, PARTS,
  * PATCHES, CONTROL, ADJACENCY, VIEWPOINTS and PART_TRANSFORMS for values the
  * runtime relies on. */
