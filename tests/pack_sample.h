@@ -361,6 +361,26 @@ static inline void reseal(uint8_t *bytes)
     h->header_checksum = XXH3_64bits(bytes, 64 + (size_t)h->section_count * 32);
 }
 
+/* Every section's checksum recomputed, then the header's: after a test
+ * edited sections' bytes, the check under test is the one that fires. */
+static inline void reseal_all(uint8_t *bytes)
+{
+    for (uint32_t i = 0; i < header_of(bytes)->section_count; i++) {
+        sw_pack_section *e = &table_of(bytes)[i];
+        e->checksum = XXH3_64bits(bytes + e->offset, (size_t)e->size);
+    }
+    reseal(bytes);
+}
+
+/* Index of the table entry of type in bytes, or -1. */
+static inline int entry_of(uint8_t *bytes, uint32_t type)
+{
+    for (uint32_t i = 0; i < header_of(bytes)->section_count; i++)
+        if (table_of(bytes)[i].type == type)
+            return (int)i;
+    return -1;
+}
+
 
 /* ---- forward compatibility ---- */
 
