@@ -1,17 +1,18 @@
 /* Stand-ins: a surface in view whose own mesh is not made yet is drawn at
  * once from one of its static levels (core/sw_levels.h), joined by border
- * strips (core/sw_border_strip.h) to its loops as the drawn meshes have
- * them, so it is neither left out nor cracked open beside its neighbours.
+ * strips (core/sw_border_strip.h) to the loops its neighbours draw, so it
+ * is not left out and meets their borders (but for a few gap points where
+ * the file left a pole's or a corner's originals apart:
+ * docs/static-levels.md).
  * The walk's visibility side V makes them (sw_seam_walk_plan.c) into the
  * cache like any mesh; the walk's own mesh replaces a stand-in when it is
  * swapped in. A stand-in is counted as behind, with its level's measured
  * error.
  *
- * The loops: the drawn meshes were all made from one state of the front
- * (the walk's batches, sw_seam_walk.h), which is the front itself unless a
- * batch is in flight; then it is the front as it was before the batch
- * moved it, kept by the walk (its shown vertices, the one part of the
- * front a loop's polyline reads).
+ * The loops it is joined to are given by the caller as a front
+ * (sw_seam_walk_plan.c, standin_front): at an original shared with a mesh
+ * of the walk's own drawn this frame, the vertex that mesh shows; elsewhere
+ * one that depends on the original alone, so stand-ins side by side meet.
  *
  * Memory: one block from the arena at init (the largest surface's slots,
  * its strips); no allocation after. Not thread-safe: V's. */
