@@ -338,6 +338,18 @@ sw_status sw_seam_select_force_split(sw_seam_select *s, uint32_t v, uint32_t max
     return SW_OK;
 }
 
+uint32_t sw_seam_select_surfaces_at(const sw_seam_select *s, uint32_t o,
+                                    const uint32_t **surfaces)
+{
+    if (o >= s->graph.original_count) {
+        *surfaces = NULL;
+        return 0;
+    }
+    uint32_t p = s->leaf_lo[o];
+    *surfaces = s->slot_surface + s->leaf_slots[p];
+    return s->leaf_slots[p + 1] - s->leaf_slots[p];
+}
+
 int sw_seam_select_is_active(const sw_seam_select *s, uint32_t v)
 {
     return s && v < s->graph.vertex_count && s->active[v];

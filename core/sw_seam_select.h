@@ -167,6 +167,13 @@ typedef struct sw_seam_select_stats {
 /* Counts over the whole graph: O(slot_count) (the loops are walked). */
 sw_seam_select_stats sw_seam_select_count(const sw_seam_select *state);
 
+/* The surfaces whose loops original o sits in, one for each of its slots
+ * (a surface twice where two of its loops, or one loop twice, meet there):
+ * *surfaces points at them in the state (valid while it lives); returns
+ * how many, 0 for a vertex that is not original. */
+uint32_t sw_seam_select_surfaces_at(const sw_seam_select *state, uint32_t o,
+                                    const uint32_t **surfaces);
+
 /* 1 when v is on the front. */
 int sw_seam_select_is_active(const sw_seam_select *state, uint32_t v);
 

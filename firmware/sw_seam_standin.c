@@ -77,7 +77,7 @@ uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound)
 
 /* Surface s's loops at front into m; 0 when an outer loop vanished. *points
  * gets their points in all. */
-static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s, float pin,
+static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
                   uint32_t *points)
 {
     const sw_seam_graph *g = &m->pack->seam;
@@ -86,7 +86,7 @@ static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s, f
         uint32_t count = 0;
         int vanished = 0;
         /* Cannot fail: l is in range and the buffers hold the surface's slots. */
-        sw_seam_select_loop_slots(front, l, pin, m->points + at, m->slots + at,
+        sw_seam_select_loop_slots(front, l, 0.0f, m->points + at, m->slots + at,
                                   m->capacity - at, &count, &vanished, NULL);
         if (vanished && (g->loops[l].flags & SW_SEAM_LOOP_OUTER))
             return 0;
@@ -166,7 +166,7 @@ static void sizes(const sw_seam_standin *m, uint32_t s, const sw_level *lv_rec, 
 }
 
 int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
-                         uint32_t level, float pin, sw_seam_cache *c, sw_seam_place_fn place,
+                         uint32_t level, sw_seam_cache *c, sw_seam_place_fn place,
                          void *place_ctx, sw_seam_entry *e)
 {
     const sw_levels *lv = &m->pack->levels;
@@ -175,7 +175,7 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32
     memset(e, 0, sizeof *e);
     e->made_bound = e->error_bound = rec->error;
     uint32_t points = 0, n = 0, idx = 0, cracks = 0;
-    if (!gather(m, front, s, pin, &points)) {
+    if (!gather(m, front, s, &points)) {
         e->state = SW_SEAM_GONE;
         return 1;
     }

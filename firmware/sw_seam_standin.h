@@ -1,9 +1,7 @@
 /* Stand-ins: a surface in view whose own mesh is not made yet is drawn at
  * once from one of its static levels (core/sw_levels.h), joined by border
  * strips (core/sw_border_strip.h) to the loops its neighbours draw, so it
- * is not left out and meets their borders (but for a few gap points where
- * the file left a pole's or a corner's originals apart:
- * docs/static-levels.md).
+ * is not left out and meets their borders vertex for vertex.
  * The walk's visibility side V makes them (sw_seam_walk_plan.c) into the
  * cache like any mesh; the walk's own mesh replaces a stand-in when it is
  * swapped in. A stand-in is counted as behind, with its level's measured
@@ -12,7 +10,8 @@
  * The loops it is joined to are given by the caller as a front
  * (sw_seam_walk_plan.c, standin_front): at an original shared with a mesh
  * of the walk's own drawn this frame, the vertex that mesh shows; elsewhere
- * one that depends on the original alone, so stand-ins side by side meet.
+ * one that depends on the original and the levels of the stand-ins sewn
+ * there, so stand-ins side by side meet.
  *
  * Memory: one block from the arena at init (the largest surface's slots,
  * its strips); no allocation after. Not thread-safe: V's. */
@@ -51,15 +50,17 @@ sw_status sw_seam_standin_init(sw_seam_standin *m, const sw_pack *pack, sw_arena
  * the finest; with no such level, its finest. UINT32_MAX when s has none. */
 uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound);
 
-/* Surface s's stand-in from level `level` and the loops front shows
- * (pinned as sw_seam_select_loop pins them), into *e with blocks from
+/* Surface s's stand-in from level `level` and the loops front shows (a
+ * run of slots showing one vertex is one point: only positions are drawn,
+ * and repeats of one, a pole's corners kept apart, would each add a strip
+ * triangle of no area), into *e with blocks from
  * place: READY (made_bound the level's error; its (u, v) NaN: it is not
  * measured as a tessellation is), GONE when its outer loop vanished there,
  * FAILED when it needs more than one draw's 65536 vertices. 0 when place
  * found no room (*e EMPTY), else 1. A loop the level covers (a hole it has
  * no chain for) but the front still shows counts its points as cracks. */
 int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
-                         uint32_t level, float pin, sw_seam_cache *c, sw_seam_place_fn place,
+                         uint32_t level, sw_seam_cache *c, sw_seam_place_fn place,
                          void *place_ctx, sw_seam_entry *e);
 
 #endif

@@ -182,6 +182,9 @@ typedef struct sw_seam_walk {
     uint32_t standin_evicted;     /* the frame stand-ins last gave meshes up for room */
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */
     uint8_t *restitch;            /* surface_count: a stand-in to make again after the swap */
+    float *standin_error;         /* surface_count: the error of the level its stand-in
+                                     shows, as its neighbours were joined to it (INFINITY:
+                                     none) */
     uint32_t *drawn_shown;        /* original_count: the front's shown vertices as the drawn
                                      meshes have them, kept while a batch is in flight */
     uint32_t *mixed_shown;        /* original_count: a stand-in's front (sw_seam_walk_plan.c) */

@@ -63,6 +63,15 @@ void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
  * is drawn so. */
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
 
+/* V: the error of the level surface s will stand in with (its target's)
+ * into w->standin_error; when that changed, the stand-ins beside it are
+ * marked to be made again, joined to it (sw_seam_walk_plan.c). */
+void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s);
+
+/* V: the stand-ins beside surface s (sharing an original with it) marked
+ * to be made again (after the swap): s's mesh or stand-in changed. */
+void sw_seam_walk_restitch_around(sw_seam_walk *w, uint32_t s);
+
 /* V, planning a frame after the swap: the stand-ins whose loops the swap
  * moved, or whose neighbours' meshes changed or came into view, made
  * again (given up out of view) so they meet what is drawn now. */

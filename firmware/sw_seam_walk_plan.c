@@ -119,32 +119,59 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
  * loop of another surface drawn this frame from a mesh of the walk's own
  * (not a stand-in), the one that mesh shows (drawn, by leaf position);
  * elsewhere its highest ancestor within the seams' share of the finest
- * level's error of every surface o is sewn into. Both depend on o alone,
- * not on s, so every stand-in sewn to o shows the same vertex there: the
- * sewn polyline, its points closer than the finest levels' seams merged
- * (a pole's corners the file left apart). */
+ * level that a stand-in sewn at o shows (w->standin_error, s's own among
+ * them). Both depend on o and the stand-ins' levels, not on s, so every
+ * stand-in sewn to o shows the same vertex there; when a stand-in's level
+ * changes, those beside it are made again (sw_seam_walk_standin_announce).
+ * So a far stand-in's border is about as coarse as its level; at the
+ * finest level's share for all (as first made), the strips were most of
+ * the stand-ins' triangles. */
 static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
                                const uint32_t *drawn)
 {
     const sw_seam_graph *g = &w->pack->seam;
-    const sw_levels *lv = &w->pack->levels;
-    const sw_seam_vertex *v = &g->vertices[o];
-    float within = INFINITY;
-    for (uint32_t r = v->first_slot_ref; r < v->first_slot_ref + v->slot_ref_count; r++) {
-        uint32_t t = w->select.slot_surface[g->slot_refs[r]];
+    const uint32_t *at = NULL;
+    uint32_t count = sw_seam_select_surfaces_at(&w->select, o, &at);
+    float within = w->standin_error[s];
+    for (uint32_t k = 0; k < count; k++) {
+        uint32_t t = at[k];
         if (t != s && w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t] &&
             w->visible[t] == 1)
             return drawn[w->select.leaf_lo[o]];
-        uint32_t first = lv->surface_levels[t];
-        float share = first < lv->surface_levels[t + 1]
-                          ? (float)SW_SEAM_SHARE * lv->levels[first].error : 0.0f;
-        within = fminf(within, share);
+        within = fminf(within, w->standin_error[t]);
     }
+    within = isfinite(within) ? (float)SW_SEAM_SHARE * within : 0.0f;
     uint32_t x = o;
     while (g->vertices[x].child != SW_SEAM_NONE &&
            g->vertices[g->vertices[x].child].error <= within)
         x = g->vertices[x].child;
     return x;
+}
+
+void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)
+{
+    uint32_t level = sw_seam_standin_level(w->pack, s, w->target[s]);
+    if (level == UINT32_MAX)
+        return;
+    float error = w->pack->levels.levels[level].error;
+    if (error == w->standin_error[s])
+        return;
+    w->standin_error[s] = error;
+    sw_seam_walk_restitch_around(w, s);
+}
+
+/* The level s stands in with: the one announced (its neighbours were
+ * joined to it; a stand-in made again keeps it, so they need not be), else
+ * its target's, announced now. */
+static uint32_t standin_level(sw_seam_walk *w, uint32_t s)
+{
+    const sw_levels *lv = &w->pack->levels;
+    if (s < lv->surface_count && isfinite(w->standin_error[s]))
+        for (uint32_t k = lv->surface_levels[s]; k < lv->surface_levels[s + 1]; k++)
+            if (lv->levels[k].error == w->standin_error[s])
+                return k;
+    sw_seam_walk_standin_announce(w, s);
+    return sw_seam_standin_level(w->pack, s, w->target[s]);
 }
 
 /* The front a stand-in for s is joined to, as the shown vertex of each of
@@ -168,14 +195,14 @@ static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
 
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
 {
-    uint32_t level = sw_seam_standin_level(w->pack, s, w->target[s]);
+    uint32_t level = standin_level(w, s);
     if (level == UINT32_MAX)
         return 0;
     sw_seam_select front = w->select;
     sw_seam_entry *e = &w->cache.entries[s];
     uint32_t last = e->last_frame;
     front.shown = standin_front(w, s);
-    if (!sw_seam_standin_make(w->standins, &front, s, level, w->seam_bound[s], &w->cache,
+    if (!sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
                               sw_seam_workers_place, w->workers, e)) {
         /* No room: meshes out of view go, once a frame (their blocks are
          * free once the frames that drew them have finished), and it waits

@@ -18,7 +18,7 @@ static size_t standin_bytes(const sw_pack *pack)
         return 0;
     size_t n = (size_t)pack->seam.surface_count + 1;
     return sw_arena_worst_case(sizeof(sw_seam_standin), 64) + sw_seam_standin_bytes(pack) +
-           2 * sw_arena_worst_case(n, 64) +
+           2 * sw_arena_worst_case(n, 64) + sw_arena_worst_case(n * sizeof(float), 64) +
            2 * sw_arena_worst_case(((size_t)pack->seam.original_count + 1) * sizeof(uint32_t), 64);
 }
 
@@ -38,13 +38,17 @@ static sw_status start_standins(sw_seam_walk *w, sw_arena *arena, sw_error *err)
     sw_seam_standin *m = sw_arena_alloc(arena, sizeof *m, 64);
     w->standin = sw_arena_alloc(arena, n, 64);
     w->restitch = sw_arena_alloc(arena, n, 64);
+    w->standin_error = sw_arena_alloc(arena, n * sizeof(float), 64);
     w->drawn_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
                                            sizeof(uint32_t), 64);
     w->mixed_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
                                            sizeof(uint32_t), 64);
-    if (!m || !w->standin || !w->restitch || !w->drawn_shown || !w->mixed_shown)
+    if (!m || !w->standin || !w->restitch || !w->standin_error || !w->drawn_shown ||
+        !w->mixed_shown)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the stand-ins");
     memset(w->standin, 0, n);
+    for (size_t s = 0; s < n; s++)
+        w->standin_error[s] = INFINITY;
     memset(w->restitch, 0, n);
     sw_status st = sw_seam_standin_init(m, pack, arena, err);
     if (st == SW_OK)
@@ -110,8 +114,10 @@ static void retire_mesh(sw_seam_walk *w, uint32_t s)
     if (e->state == SW_SEAM_READY)
         sw_retire_ring_put(&w->workers->retire,
                            (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
-    if (w->standin)
+    if (w->standin) {
         w->standin[s] = 0;
+        w->standin_error[s] = INFINITY;
+    }
     e->state = SW_SEAM_EMPTY;
     e->vertex_count = e->index_count = 0;
 }
@@ -314,28 +320,27 @@ sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error 
     return st;
 }
 
-/* The count least recently drawn meshes out of view, retired: workers
- * found no room. A mesh's epoch is the last frame that drew it (and
- * measured it: the GL thread reads a mesh only in the frames that draw it,
- * and at its upload, before any of them), so the workers may reuse its
- * blocks as soon as that frame has finished. */
-/* The stand-ins beside surface s (sharing an original with it) are joined
- * to what s draws: made again after the swap once s's mesh changed. */
-static void restitch_around(sw_seam_walk *w, uint32_t s)
+/* (sw_seam_walk_internal.h) */
+void sw_seam_walk_restitch_around(sw_seam_walk *w, uint32_t s)
 {
     if (!w->standins)
         return;
     const sw_seam_graph *g = &w->pack->seam;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
-            const sw_seam_vertex *v = &g->vertices[g->slots[g->loops[l].first_slot + k].vertex];
-            for (uint32_t r = v->first_slot_ref; r < v->first_slot_ref + v->slot_ref_count; r++) {
-                uint32_t t = w->select.slot_surface[g->slot_refs[r]];
-                w->restitch[t] |= w->standin[t];
-            }
+            const uint32_t *at = NULL;
+            uint32_t count = sw_seam_select_surfaces_at(
+                &w->select, g->slots[g->loops[l].first_slot + k].vertex, &at);
+            for (uint32_t i = 0; i < count; i++)
+                w->restitch[at[i]] |= w->standin[at[i]];
         }
 }
 
+/* The count least recently drawn meshes out of view, retired: workers
+ * found no room. A mesh's epoch is the last frame that drew it (and
+ * measured it: the GL thread reads a mesh only in the frames that draw it,
+ * and at its upload, before any of them), so the workers may reuse its
+ * blocks as soon as that frame has finished. */
 uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
 {
     /* Oldest first by one sort of the candidates (the scratch choose()
@@ -352,7 +357,7 @@ uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
     uint32_t k = 0;
     for (; k < count && k < m; k++) {
         retire_mesh(w, w->candidates[k].surface);
-        restitch_around(w, w->candidates[k].surface);
+        sw_seam_walk_restitch_around(w, w->candidates[k].surface);
         c->evictions++;
     }
     return k;
@@ -390,14 +395,24 @@ void sw_seam_walk_restitch(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *f
         if (w->visible[s] == 1 && !w->standin[s] &&
             w->cache.entries[s].state == SW_SEAM_READY &&
             w->cache.entries[s].last_frame + 1 != w->frame)
-            restitch_around(w, s);
+            sw_seam_walk_restitch_around(w, s);
+    for (uint32_t s = 0; s < n; s++)
+        if (w->visible[s] == 1 && s != w->drop_surface &&
+            w->cache.entries[s].state == SW_SEAM_EMPTY)
+            sw_seam_walk_standin_announce(w, s);
     for (uint32_t s = 0; s < n; s++) {
         if (!w->standin[s] || !w->restitch[s])
             continue;
         w->restitch[s] = 0;
+        float shown = w->standin_error[s];
         retire_mesh(w, s);
-        if (sw_seam_walk_needs_mesh(w, s))
+        w->standin_error[s] = shown;   /* what its neighbours were joined to */
+        if (sw_seam_walk_needs_mesh(w, s)) {
             sw_seam_walk_stand_in(w, s, plan, frame);
+        } else {
+            w->standin_error[s] = INFINITY;
+            sw_seam_walk_restitch_around(w, s);
+        }
     }
 }
 
@@ -475,7 +490,7 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *fra
     if (batch_done(w)) {
         for (uint32_t i = 0; i < w->batch_count; i++) {
             consume(w, w->batch[i], plan, frame);
-            restitch_around(w, w->batch[i]);
+            sw_seam_walk_restitch_around(w, w->batch[i]);
         }
         w->batch_count = w->batch_pushed = 0;
         w->room_tight = w->room_retries > 0;

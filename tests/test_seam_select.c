@@ -400,6 +400,43 @@ static void test_rejects_bad_input(void)
     fixture_close(&f);
 }
 
+/* The surfaces at each original, against a count of the loops' slots that
+ * sit at it (the graph's own loops, not the state's leaf order); the fin's
+ * seam has three, a free border point one; created vertices none. */
+static void test_surfaces_at_each_original(void)
+{
+    fixture f;
+    fixture_open(&f, &finned);
+    uint32_t *want = calloc(f.g.surface_count, sizeof *want);
+    uint32_t most = 0;
+    for (uint32_t o = 0; o < f.g.original_count; o++) {
+        memset(want, 0, f.g.surface_count * sizeof *want);
+        uint32_t slots = 0;
+        for (uint32_t l = 0; l < f.g.loop_count; l++)
+            for (uint32_t i = 0; i < f.g.loops[l].slot_count; i++)
+                if (f.g.slots[f.g.loops[l].first_slot + i].vertex == o) {
+                    want[f.g.loops[l].surface]++;
+                    slots++;
+                }
+        const uint32_t *at = NULL;
+        uint32_t count = sw_seam_select_surfaces_at(&f.sel, o, &at);
+        SW_CHECK_MSG(count == slots, "original %u: %u surfaces, %u slots", o, count, slots);
+        for (uint32_t k = 0; k < count; k++) {
+            SW_CHECK(at[k] < f.g.surface_count);
+            if (at[k] < f.g.surface_count)
+                want[at[k]]--;
+        }
+        for (uint32_t t = 0; t < f.g.surface_count; t++)
+            SW_CHECK_MSG(want[t] == 0, "original %u: surface %u off by %d", o, t, (int)want[t]);
+        most = count > most ? count : most;
+    }
+    SW_CHECK(most >= 3);   /* the fin's seam */
+    const uint32_t *at = NULL;
+    SW_CHECK(sw_seam_select_surfaces_at(&f.sel, f.g.original_count, &at) == 0 && !at);
+    free(want);
+    fixture_close(&f);
+}
+
 int main(void)
 {
     SW_RUN(test_starts_at_the_roots);
@@ -410,6 +447,7 @@ int main(void)
     SW_RUN(test_forced_split_clears_its_blockers);
     SW_RUN(test_capped_updates_converge);
     SW_RUN(test_non_manifold_seam_is_shared);
+    SW_RUN(test_surfaces_at_each_original);
     SW_RUN(test_no_heap_and_arena_bounded);
     SW_RUN(test_rejects_bad_input);
     return sw_test_finish();

@@ -17,13 +17,11 @@
 #     handle end near the eye: 3 pixels at 2 to 6 px from the reference's
 #     edge);
 #   - the walk made stand-ins and left no surface in view undrawn (stats);
-#   - measured every 3rd frame: the walk's own crack count is 0, and the
-#     drawn borders (firmware/sw_seam_drawn.h, which knows nothing of
-#     strips) were all checked. Their gaps and T-vertices are printed, not
-#     held to 0: stand-ins joined to the sewn polylines still leave a
-#     few gap points (0.02-0.04 mm, where a pole's or a corner's originals
-#     the file left apart meet), which the walk's count does not see; the
-#     walk's own meshes are held to no gap by test_walk_threads.sh;
+#   - measured every 3rd frame: the walk's own crack count is 0, no
+#     surface in view is undrawn, and the drawn borders
+#     (firmware/sw_seam_drawn.h, which knows nothing of strips or of the
+#     Seam Graph) show no gap and no T-vertex: stand-ins meet each other and
+#     the walk's own meshes vertex for vertex;
 #   - the mutant --static-levels 0 (no stand-ins) must show holes in some
 #     frame, or the comparison could not see a surface left out.
 # Exit 77 when the models are absent (CTest registers it only where they are).
@@ -94,15 +92,13 @@ print("stand-ins: %d made, up to %d drawn a frame; undrawn max %d; measured: gap
       % (t["standins_made"], t["standins_max"], t["waiting_surfaces_max"],
          m["seam_drawn"]["gaps_max"], m["cracks_max"]))
 assert t["standins_made"] > 0, "no stand-in was made: nothing was tested"
-# Not 0 yet in every walk: a surface whose every border point is shared
-# with drawn meshes at a front still as coarse as it goes (it was out of
-# view) has no loop there to join a stand-in to, and waits, counted.
-print("undrawn: %d of %d stand-ins made" % (t["waiting_surfaces_max"], t["standins_made"]))
+assert t["waiting_surfaces_max"] == 0, "surfaces in view left undrawn: %d" % t["waiting_surfaces_max"]
 assert m["threads"]["standins_made"] > 0, m["threads"]
+assert m["threads"]["waiting_surfaces_max"] == 0, m["threads"]
 d = m["seam_drawn"]
 assert d["unchecked_frames"] == 0, d
-print("drawn borders: gaps max %d, T-vertices max %d (not yet held to 0)"
-      % (d["gaps_max"], d["t_vertices_max"]))
+print("drawn borders: gaps max %d, T-vertices max %d" % (d["gaps_max"], d["t_vertices_max"]))
+assert d["gaps_max"] == 0 and d["t_vertices_max"] == 0, "stand-ins do not meet their neighbours"
 assert m["cracks_max"] == 0, m["cracks_max"]
 EOF
 echo "ok: stand-ins"
