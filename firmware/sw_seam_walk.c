@@ -168,7 +168,7 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
     if (w->visible[s] == 1) {
         bound = fmax(bound, (double)w->bound_floor);
         w->want[s] = (float)bound;
-        if (w->workers && !w->sync_work && w->frame == 0)
+        if (sw_seam_walk_coarse_start(w, 0))
             bound *= SW_SEAM_FIRST_COARSER;
         if (w->no_cache)
             w->target[s] = (float)bound;

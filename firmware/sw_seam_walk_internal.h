@@ -40,6 +40,17 @@ static inline int sw_seam_walk_async(const sw_seam_walk *w)
     return w->workers && !w->sync_work;
 }
 
+/* The threaded walk's first frame: without stand-ins it is made
+ * SW_SEAM_FIRST_COARSER times coarser than the view asks and waits for its
+ * batch (there is nothing else to draw); with them it is drawn at once
+ * from the static levels at the view's bound, and the work is budgeted
+ * from the start. 1 for that first frame (its number: 0 choosing the
+ * work, 1 swapping it in). */
+static inline int sw_seam_walk_coarse_start(const sw_seam_walk *w, uint32_t frame)
+{
+    return w->workers && !w->sync_work && !w->standins && w->frame == frame;
+}
+
 /* The seam update for w->seam_bound (complete), and the surfaces whose
  * loops it changed marked dirty. */
 sw_status sw_seam_walk_move_front(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err);

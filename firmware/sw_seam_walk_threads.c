@@ -184,8 +184,12 @@ static int wants_prefetch(const sw_seam_walk *w, uint32_t s, double *weight)
 }
 
 /* The batch takes all the work it finds, N and M aside: with sync_work,
- * and in the first frame (select counts the frame after the schedule). */
-static int no_budget(const sw_seam_walk *w) { return w->sync_work || w->frame == 0; }
+ * and in a first frame that waits for it (select counts the frame after
+ * the schedule). */
+static int no_budget(const sw_seam_walk *w)
+{
+    return w->sync_work || sw_seam_walk_coarse_start(w, 0);
+}
 
 enum { SW_CHOSEN = 1, SW_PASSED = 2 };   /* w->busy while a batch opens */
 
@@ -481,11 +485,12 @@ void sw_seam_walk_commit(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *fra
         return;
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    if (w->sync_work || w->frame == 1)
+    if (w->sync_work || sw_seam_walk_coarse_start(w, 1))
         wait_batch(w);
     else
         push_more(w);
-    while (batch_done(w) && retry_no_room(w, frame) && (w->sync_work || w->frame == 1))
+    while (batch_done(w) && retry_no_room(w, frame) &&
+           (w->sync_work || sw_seam_walk_coarse_start(w, 1)))
         wait_batch(w);
     if (batch_done(w)) {
         for (uint32_t i = 0; i < w->batch_count; i++) {

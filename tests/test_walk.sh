@@ -89,6 +89,32 @@ print("far: %d triangles for %d patches, %d surfaces vanished, %d active seam ve
       % (tris, patches, seam["surfaces_vanished_max"], seam["active_vertices_max"]))
 assert 0 < tris < patches and seam["surfaces_vanished_max"] > 0 and j["cracks_max"] == 0
 EOF
+  # The demo's first picture (tests/run-demo.sh: its orbit at 1280x720, the
+  # default workers, not waiting for them: CTest's SEAMWALK_TEST_SYNC_WORK
+  # would) within the bound: drawn at once from the static levels,
+  # it matches the first picture of the walk that makes every mesh in its
+  # frame (--workers 0) but for 0.5% of its pixels. Without the levels the
+  # first frame is made coarser (SW_SEAM_FIRST_COARSER) and must differ
+  # more, or the comparison could not see it.
+  first() {
+    "$walker" --pack "$work/model.swpack" --headless 1280x720 --orbit --frames 1 \
+      --measure-every 0 --png-dir "$work/first_$1" --png-every 1 --stats "$work/first_$1.json" \
+      "${@:2}" > "$work/first_$1.log" 2>&1 || fail "first picture, $1: $(tail -2 "$work/first_$1.log")"
+  }
+  first reference --workers 0
+  first levels --sync-work 0
+  first coarse --sync-work 0 --static-levels 0
+  "$compare" "$work/first_levels/frame_00000.png" "$work/first_reference/frame_00000.png" \
+    --level 8 --max-fraction 0.005 || fail "the first picture is not within the bound"
+  if "$compare" "$work/first_coarse/frame_00000.png" "$work/first_reference/frame_00000.png" \
+    --level 8 --max-fraction 0.005; then
+    fail "a first picture made coarser passes the comparison"
+  fi
+  python3 - "$work/first_levels.json" <<'EOF' || fail "first picture's stats"
+import json, sys
+t = json.load(open(sys.argv[1]))["threads"]
+assert t["workers"] > 0 and t["standins_made"] > 0 and t["waiting_surfaces_max"] == 0, t
+EOF
   ;;
 teapot)
   model=$src/../shared/models/newell_teapot.txt
