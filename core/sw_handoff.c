@@ -38,6 +38,14 @@ void sw_retire_ring_finish(sw_retire_ring *r, uint32_t epoch)
     atomic_store_explicit(&r->done_epoch, epoch, memory_order_release);
 }
 
+int sw_retire_ring_done(const sw_retire_ring *r, uint32_t epoch)
+{
+    /* The difference, not a plain <, keeps it right when the frame counter
+     * wraps. */
+    uint32_t done = atomic_load_explicit(&r->done_epoch, memory_order_acquire);
+    return (int32_t)(done - epoch) > 0;
+}
+
 int sw_retire_ring_take(sw_retire_ring *r, sw_retired *item)
 {
     uint32_t h = atomic_load_explicit(&r->head, memory_order_relaxed);
@@ -45,10 +53,9 @@ int sw_retire_ring_take(sw_retire_ring *r, sw_retired *item)
     if (h == t)
         return 0;
     sw_retired it = r->items[h & (r->capacity - 1)];
-    /* Epochs are put in order, so the oldest decides; the difference, not
-     * a plain <, keeps it right when the frame counter wraps. */
-    uint32_t done = atomic_load_explicit(&r->done_epoch, memory_order_acquire);
-    if ((int32_t)(done - it.epoch) <= 0)
+    /* The oldest put decides (the producer frees meshes of finished
+     * frames itself, so those put are of the last frame or two). */
+    if (!sw_retire_ring_done(r, it.epoch))
         return 0;
     *item = it;
     atomic_store_explicit(&r->head, h + 1, memory_order_release);

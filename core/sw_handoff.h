@@ -71,6 +71,9 @@ int sw_retire_ring_put(sw_retire_ring *r, sw_retired item);
 /* GL thread: every frame before epoch has finished drawing. */
 void sw_retire_ring_finish(sw_retire_ring *r, uint32_t epoch);
 
+/* 1 when the frame epoch has finished drawing (any thread). */
+int sw_retire_ring_done(const sw_retire_ring *r, uint32_t epoch);
+
 /* Consumer: the oldest retired mesh whose frame has finished; 0 when there
  * is none (empty, or the oldest may still be read). */
 int sw_retire_ring_take(sw_retire_ring *r, sw_retired *item);

@@ -193,6 +193,24 @@ static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
     return w->mixed_shown;
 }
 
+/* No room for a stand-in: meshes out of view go, least recently drawn
+ * first, in rounds of 64, 128, 256 and 512 a frame at most (each round
+ * sorts the cache). Those drawn in frames that have finished (most of
+ * them: they went out of view a while ago) free their blocks at once, so
+ * the stand-in is tried again now, not a frame later, in which a turn of
+ * the eye would leave a hundred surfaces undrawn. 1 when some went. */
+#define SW_STANDIN_EVICT_ROUNDS 4
+static int make_room(sw_seam_walk *w, sw_seam_frame *frame)
+{
+    if (w->standin_evicted != w->frame)
+        w->standin_evicted = w->frame, w->standin_evict_rounds = 0;
+    if (w->standin_evict_rounds == SW_STANDIN_EVICT_ROUNDS)
+        return 0;
+    uint32_t gone = sw_seam_walk_evict(w, 64u << w->standin_evict_rounds++);
+    frame->evicted += gone;
+    return gone > 0;
+}
+
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     uint32_t level = standin_level(w, s);
@@ -202,16 +220,14 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     sw_seam_entry *e = &w->cache.entries[s];
     uint32_t last = e->last_frame;
     front.shown = standin_front(w, s);
-    if (!sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
-                              sw_seam_workers_place, w->workers, e)) {
-        /* No room: meshes out of view go, once a frame (their blocks are
-         * free once the frames that drew them have finished), and it waits
-         * till then. */
-        if (w->standin_evicted != w->frame) {
-            frame->evicted += sw_seam_walk_evict(w, 64);
-            w->standin_evicted = w->frame;
-        }
-        return 0;
+    int made = sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
+                                    sw_seam_workers_place, w->workers, e);
+    if (!made && make_room(w, frame))
+        made = sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
+                                    sw_seam_workers_place, w->workers, e);
+    if (!made) {
+        e->last_frame = last;
+        return 0;   /* it waits, undrawn and counted */
     }
     /* Gone in the loops it was made in is not gone at the surface's own
      * bound: it waits, undrawn and counted, for its mesh. */

@@ -105,15 +105,16 @@ static double estimate_tris(const sw_seam_walk *w, uint32_t s, float bound)
     return 32.0 * w->pack->surfaces[s].patch_count;
 }
 
-/* Surface s's mesh handed to the retire ring with the last frame that drew
- * it (its blocks are free once that frame has finished) and the entry left
- * empty. The ring holds two meshes a surface, so it cannot be full. */
+/* Surface s's mesh given up with the last frame that drew it (its blocks
+ * are free once that frame has finished: at once, or through the retire
+ * ring) and the entry left empty. The ring holds two meshes a surface, so
+ * it cannot be full. */
 static void retire_mesh(sw_seam_walk *w, uint32_t s)
 {
     sw_seam_entry *e = &w->cache.entries[s];
     if (e->state == SW_SEAM_READY)
-        sw_retire_ring_put(&w->workers->retire,
-                           (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
+        sw_seam_workers_retire(w->workers,
+                               (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
     if (w->standin) {
         w->standin[s] = 0;
         w->standin_error[s] = INFINITY;

@@ -48,6 +48,17 @@ int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam
     return ok;
 }
 
+int sw_seam_workers_retire(sw_seam_workers *p, sw_retired r)
+{
+    if (!sw_retire_ring_done(&p->retire, r.epoch))
+        return sw_retire_ring_put(&p->retire, r);
+    pthread_mutex_lock(&p->alloc_lock);
+    sw_buddy_free(&p->cache->vertex_pool, r.vertex_block);
+    sw_buddy_free(&p->cache->index_pool, r.index_block);
+    pthread_mutex_unlock(&p->alloc_lock);
+    return 1;
+}
+
 static void run_job(sw_seam_workers *p, sw_seam_maker *maker, uint32_t s)
 {
     uint64_t t0 = now_ns();

@@ -101,6 +101,13 @@ int sw_seam_workers_push(sw_seam_workers *p, uint32_t s);
  * cache with: V's stand-ins. */
 int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e);
 
+/* Producer: a mesh given up, its blocks back to the pool at once when the
+ * frame that last drew it has finished (under alloc_lock), else through
+ * the retire ring; 0 when the ring is full. A mesh out of view for a while
+ * so frees its room for what is made this frame; through the ring alone it
+ * waited behind meshes retired since, of frames not yet drawn. */
+int sw_seam_workers_retire(sw_seam_workers *p, sw_retired r);
+
 /* Producer: wakes the workers after a round of pushes. */
 void sw_seam_workers_wake(sw_seam_workers *p);
 

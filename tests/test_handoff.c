@@ -46,9 +46,12 @@ static void test_retired_waits_for_its_frame(void)
     sw_retired got;
     SW_CHECK(sw_retire_ring_put(&r, (sw_retired){ 7, 9, 5 }));  /* last drawn in frame 5 */
     SW_CHECK(!sw_retire_ring_take(&r, &got));
+    SW_CHECK(!sw_retire_ring_done(&r, 5) && !sw_retire_ring_done(&r, 0));
     sw_retire_ring_finish(&r, 5);                               /* frames before 5 done */
     SW_CHECK(!sw_retire_ring_take(&r, &got));
+    SW_CHECK(sw_retire_ring_done(&r, 4) && !sw_retire_ring_done(&r, 5));
     sw_retire_ring_finish(&r, 6);                               /* frame 5 done */
+    SW_CHECK(sw_retire_ring_done(&r, 5) && !sw_retire_ring_done(&r, 6));
     SW_CHECK(sw_retire_ring_take(&r, &got));
     SW_CHECK(got.vertex_block == 7 && got.index_block == 9 && got.epoch == 5);
     SW_CHECK(!sw_retire_ring_take(&r, &got));
@@ -57,6 +60,7 @@ static void test_retired_waits_for_its_frame(void)
     SW_CHECK(sw_retire_ring_put(&r, (sw_retired){ 1, 1, UINT32_MAX }));
     SW_CHECK(!sw_retire_ring_take(&r, &got));
     sw_retire_ring_finish(&r, 0);
+    SW_CHECK(sw_retire_ring_done(&r, UINT32_MAX) && !sw_retire_ring_done(&r, 0));
     SW_CHECK(sw_retire_ring_take(&r, &got) && got.epoch == UINT32_MAX);
 }
 
