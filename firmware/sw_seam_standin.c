@@ -23,6 +23,7 @@ size_t sw_seam_standin_bytes(const sw_pack *pack)
            sw_arena_worst_case(p * sizeof(uint32_t), 64) +
            2 * sw_arena_worst_case(l * sizeof(uint32_t), 64) + sw_arena_worst_case(l, 64) +
            sw_arena_worst_case(p * sizeof(sw_strip_point), 64) +
+           sw_arena_worst_case(p * sizeof(uint32_t), 64) +
            sw_arena_worst_case(3 * t * sizeof(uint32_t), 64);
 }
 
@@ -41,9 +42,10 @@ sw_status sw_seam_standin_init(sw_seam_standin *m, const sw_pack *pack, sw_arena
     m->loop_count = sw_arena_alloc(arena, m->max_loops * sizeof *m->loop_count, 64);
     m->vanished = sw_arena_alloc(arena, m->max_loops, 64);
     m->outer = sw_arena_alloc(arena, m->capacity * sizeof *m->outer, 64);
+    m->same = sw_arena_alloc(arena, m->capacity * sizeof *m->same, 64);
     m->tris = sw_arena_alloc(arena, 3 * t * sizeof *m->tris, 64);
     if (!m->points || !m->slots || !m->loop_at || !m->loop_count || !m->vanished ||
-        !m->outer || !m->tris)
+        !m->outer || !m->same || !m->tris)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the stand-ins' "
                             "buffers (%zu bytes)", sw_seam_standin_bytes(pack));
     return SW_OK;
@@ -118,6 +120,28 @@ static void face_out(const sw_vertex *v, uint16_t *t)
     }
 }
 
+/* Where the strip joins one of the loop's points to a chain vertex at the
+ * very same position (the front shows the vertex the level was made
+ * with), the point is that vertex: same[j] its index, else the point's
+ * own. So the strip's triangles of no area (a third of them, on the
+ * 40,000-patch showroom's walk) repeat an index and are left out, and the
+ * mesh's edges stay whole (every edge inside it used twice). */
+static void join_same(sw_seam_standin *m, uint32_t count, uint32_t base, uint32_t tris,
+                      const sw_vertex *v)
+{
+    for (uint32_t j = 0; j < count; j++)
+        m->same[j] = base + j;
+    for (uint32_t t = 0; t < tris; t++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t x = m->tris[3 * t + k], y = m->tris[3 * t + (k + 1) % 3];
+            if (x < base)
+                x = y, y = m->tris[3 * t + k];
+            if (x >= base && y < base && m->same[x - base] == x &&
+                !memcmp(v[x].pos, v[y].pos, sizeof v[x].pos))
+                m->same[x - base] = y;
+        }
+}
+
 /* Loop i's strip between its points (mesh vertices from `base`) and the
  * level's chain, appended at idx; returns the indices written (0: the
  * chains did not make a strip). The points take their normals from the
@@ -139,12 +163,20 @@ static uint32_t strip(sw_seam_standin *m, uint32_t i, uint32_t base, const sw_le
             if (x >= base && from < base)
                 memcpy(v[x].normal, v[from].normal, sizeof v[x].normal);
         }
+    join_same(m, count, base, tris, v);
+    uint32_t written = 0;
     for (uint32_t t = 0; t < tris; t++) {
-        for (int k = 0; k < 3; k++)
-            idx[3 * t + k] = (uint16_t)m->tris[3 * t + k];
-        face_out(v, idx + 3 * t);
+        uint16_t *out = idx + written;
+        for (int k = 0; k < 3; k++) {
+            uint32_t x = m->tris[3 * t + k];
+            out[k] = (uint16_t)(x >= base ? m->same[x - base] : x);
+        }
+        if (out[0] == out[1] || out[1] == out[2] || out[0] == out[2])
+            continue;
+        face_out(v, out);
+        written += 3;
     }
-    return 3 * tris;
+    return written;
 }
 
 /* Vertices and indices the stand-in needs; cracks for loops it leaves as

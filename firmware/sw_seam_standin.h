@@ -35,6 +35,7 @@ typedef struct sw_seam_standin {
     uint32_t *loop_at, *loop_count;
     uint8_t *vanished;
     sw_strip_point *outer;        /* one loop's points as a chain */
+    uint32_t *same;               /* one loop's points: the chain vertex each is, or itself */
     uint32_t *tris;               /* one loop's strip */
     uint32_t capacity, max_loops, max_chain;
 } sw_seam_standin;
