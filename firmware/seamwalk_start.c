@@ -36,6 +36,7 @@
 #include "sw_heap.h"
 #include "sw_parts_threads.h"
 #include "sw_png.h"
+#include "sw_thread_name.h"
 #include "sw_up_axis.h"
 
 double sw_program_now_s(void)
@@ -314,6 +315,7 @@ static sw_status load(sw_program *rt, sw_error *err)
 static void *loader_main(void *arg)
 {
     sw_program *rt = arg;
+    sw_thread_name("sw-loader");
     rt->load_status = load(rt, &rt->load_err);
     return NULL;
 }

@@ -3,6 +3,8 @@
 #include <pthread.h>
 #include <stdatomic.h>
 
+#include "sw_thread_name.h"
+
 typedef struct parts_run {
     sw_part_fn fn;
     void *arg;
@@ -22,6 +24,7 @@ static void take_parts(parts_run *r)
 
 static void *helper_main(void *arg)
 {
+    sw_thread_name("sw-parts");
     take_parts(arg);
     return NULL;
 }

@@ -5,6 +5,7 @@
 #include <time.h>
 
 #include "sw_seam_walk_internal.h"
+#include "sw_thread_name.h"
 
 static void wait_sem(sem_t *s)
 {
@@ -49,6 +50,7 @@ static void plan_frame(sw_seam_visibility *v, uint32_t k)
 static void *visibility_main(void *arg)
 {
     sw_seam_visibility *v = arg;
+    sw_thread_name("sw-visibility");
     for (uint32_t k = 0;; k++) {
         wait_sem(&v->view_ready);
         if (atomic_load_explicit(&v->stop, memory_order_acquire))

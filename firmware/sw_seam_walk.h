@@ -180,7 +180,7 @@ typedef struct sw_seam_walk {
     sw_seam_standin *standins;
     int no_standins;              /* set before the workers start: none even with levels */
     uint32_t standin_evicted;     /* the frame stand-ins last gave meshes up for room */
-    uint32_t standin_evict_rounds;/* and how many times in it */
+    uint32_t standin_evict_rounds;/* and how many times in it (UINT32_MAX: none was left) */
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */
     uint8_t *restitch;            /* surface_count: a stand-in to make again after the swap */
     float *standin_error;         /* surface_count: the error of the level its stand-in

@@ -3,6 +3,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "sw_thread_name.h"
+
 _Static_assert(sizeof(sw_seam_job) == 2 * sizeof(float), "sw_walk_threads_bytes counts a job "
                "as two floats");
 
@@ -98,6 +100,7 @@ static void *worker_main(void *arg)
 {
     sw_seam_worker *w = arg;
     sw_seam_workers *p = w->pool;
+    sw_thread_name("sw-worker");
     while (!atomic_load_explicit(&p->stop, memory_order_acquire)) {
         if (atomic_load_explicit(&p->stall, memory_order_acquire)) {
             nanosleep(&(struct timespec){ 0, 1000000 }, NULL);   /* the test hook: idle */
