@@ -61,6 +61,10 @@ static void *visibility_main(void *arg)
             break;
         plan_frame(v, k);
         sem_post(&v->plan_ready);
+        /* The GL thread draws frame k meanwhile; its error, if any, goes
+         * with the next plan (P reads v->error only after that post). */
+        if (v->walk->defer_schedule && v->status == SW_OK)
+            v->status = sw_seam_walk_schedule_deferred(v->walk, &v->error);
     }
     return NULL;
 }
@@ -77,6 +81,12 @@ sw_status sw_seam_visibility_start(sw_seam_visibility *v, sw_seam_walk *walk, in
     sw_status st = sw_seam_walk_init_frames(walk, v->plans, arena, err);
     if (st != SW_OK || !threaded)
         return st;
+    /* With its own thread, workers that run on their own and stand-ins
+     * for what they have not made, V moves the front after handing each
+     * plan over (sw_seam_walk_schedule_deferred); otherwise a frame's plan
+     * must hold the work scheduled for it (sync_work, the first frame
+     * without stand-ins). */
+    walk->defer_schedule = !sync && sw_seam_walk_async(walk) && walk->standins;
     if (sem_init(&v->view_ready, 0, 0) != 0 || sem_init(&v->plan_ready, 0, 0) != 0 ||
         sem_init(&v->frame_done, 0, 0) != 0)
         return sw_error_set(err, SW_ERR_IO, "visibility thread: cannot make its semaphores");

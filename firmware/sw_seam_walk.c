@@ -295,6 +295,7 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
                               sw_error *err)
 {
     memset(frame, 0, sizeof *frame);
+    sw_seam_walk_take_deferred(w, frame);
     uint32_t n = w->pack->seam.surface_count;
     int changed = w->frame == 0;
     cull_boxes(w, view, frame);
@@ -311,7 +312,7 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     sw_status st = SW_OK;
     if (changed && !sw_seam_walk_async(w))
         st = sw_seam_walk_move_front(w, frame, err);
-    if (st == SW_OK && w->workers)
+    if (st == SW_OK && w->workers && !w->defer_schedule)
         st = sw_seam_walk_schedule(w, frame, err);
     /* The front's own count: sw_seam_select_count would walk every loop. */
     frame->active_vertices = w->select.active_count;

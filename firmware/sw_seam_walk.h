@@ -115,6 +115,67 @@
 
 enum { SW_SEAM_WALK_AWAY = 3 }; /* w->visible: in the frustum, its normal cone facing away */
 
+typedef struct sw_seam_frame {
+    uint32_t visible_surfaces, drawn_surfaces, vanished_surfaces;
+    uint32_t active_vertices;
+    uint32_t failed_surfaces;     /* the tessellator refused them, or the cache could not
+                                     hold them (not drawn) */
+    uint32_t capped_surfaces;     /* drawn coarser than their bound (over 65536 vertices) */
+    uint32_t holes_filled;        /* drawn without their holes: a hole's coarse polyline
+                                     crossed another loop, the tessellator refused the whole */
+    uint32_t retessellated;       /* surfaces tessellated this frame */
+    uint32_t evicted;             /* meshes the cache gave up for them */
+    uint64_t retess_triangles;    /* triangles those made */
+    uint64_t upload_bytes;        /* bytes written into the GL buffers */
+    uint64_t triangles;           /* the tessellations', the fill fans not counted: */
+    uint64_t fill_triangles;      /* zero-area fans over seam crossings (sw_seam_fill.h) */
+    uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
+                                     plus loop points the tessellator dropped off the
+                                     border's line (a gap; on it, a crossing), plus every
+                                     border point of a visible surface not drawn (a hole) */
+    uint64_t crossings;           /* border vertices on a seam segment between its vertices,
+                                     and loop points dropped where the border stays on
+                                     their line (T-vertices on a straight edge, not gaps) */
+    double tess_ms;               /* of the draw, spent tessellating and uploading */
+    uint64_t cull_box_tests;      /* of the select: patch and tree boxes tested against the
+                                     frustum (sw_cull_tree.h) */
+    uint64_t cull_depth_tests;    /* boxes whose depth range it computed */
+    double cull_ms;               /* of the select, spent on those */
+    uint32_t cone_culled;         /* in the frustum, left out: their cone faces away */
+    double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
+    double error_beyond_sewing_px;/* measured: the most a sample's error exceeds its surface's
+                                     sewing offset, what the level of detail and the
+                                     tessellation add: in pixels at the sample, scaled by
+                                     half a pixel over the bound where the bound's floor is
+                                     coarser than half a pixel (so <= error_px holds) */
+    double error_behind_beyond_sewing_px; /* the same, of meshes drawn coarser than the view
+                                     asks while their new ones are made (not in the one above) */
+    double sewing_offset_px;      /* measured: the largest sewing offset of a drawn surface, in
+                                     pixels at its nearest depth */
+    double seam_chord_px;         /* measured: the most a seam chord lies from its surface at
+                                     the same (u, v), sw_seam_measure.h */
+    /* With workers: */
+    uint32_t waiting_surfaces;    /* visible with no mesh yet (not drawn: holes until made) */
+    uint32_t standins;            /* drawn from a static level while their mesh is made */
+    uint32_t standins_made;       /* stand-ins made this frame */
+    uint32_t behind_surfaces;     /* drawn from a mesh coarser than the view's bound */
+    uint32_t frames_behind;       /* the longest a drawn surface has waited for its work */
+    double behind_ratio;          /* the most a drawn mesh's bound exceeds the view's */
+    uint32_t jobs_scheduled;      /* jobs this frame started */
+    uint32_t jobs_prefetch;       /* of them, out of view by w' (with budget left) */
+    uint32_t batches_committed;   /* batches swapped in this frame (0 or 1) */
+    double budget_tris;           /* N + M this frame */
+    double budget_used;           /* triangles scheduled over N + M */
+    uint32_t seam_ops;            /* the seam update's splits and collapses */
+    double updated_tris;          /* of the jobs, those whose loops moved (M's share) */
+    double updated_cap;           /* M, when the batch opened under it (0: no budget) */
+    /* The hand-over (sw_seam_visibility.h): */
+    double visibility_ms;         /* V's half of the frame: select, schedule, swap, plan */
+    double plan_wait_ms;          /* P waiting for the plan (0 without a visibility thread) */
+    uint8_t planned_on_gl_thread; /* V's half ran on P's thread */
+    uint8_t plan_overlapped;      /* V began it while P was still drawing the frame before */
+} sw_seam_frame;
+
 typedef struct sw_seam_walk {
     const sw_pack *pack;
     sw_seam_select select;
@@ -190,68 +251,10 @@ typedef struct sw_seam_walk {
                                      meshes have them, kept while a batch is in flight */
     uint32_t *mixed_shown;        /* original_count: a stand-in's front (sw_seam_walk_plan.c) */
     uint64_t batch_tris;          /* of the frame's schedule: triangles estimated */
+    int defer_schedule;           /* V runs the schedule after handing the plan over
+                                     (sw_seam_walk_schedule_deferred) */
+    sw_seam_frame deferred;       /* that schedule's counts, for the next frame's stats */
 } sw_seam_walk;
-
-typedef struct sw_seam_frame {
-    uint32_t visible_surfaces, drawn_surfaces, vanished_surfaces;
-    uint32_t active_vertices;
-    uint32_t failed_surfaces;     /* the tessellator refused them, or the cache could not
-                                     hold them (not drawn) */
-    uint32_t capped_surfaces;     /* drawn coarser than their bound (over 65536 vertices) */
-    uint32_t holes_filled;        /* drawn without their holes: a hole's coarse polyline
-                                     crossed another loop, the tessellator refused the whole */
-    uint32_t retessellated;       /* surfaces tessellated this frame */
-    uint32_t evicted;             /* meshes the cache gave up for them */
-    uint64_t retess_triangles;    /* triangles those made */
-    uint64_t upload_bytes;        /* bytes written into the GL buffers */
-    uint64_t triangles;           /* the tessellations', the fill fans not counted: */
-    uint64_t fill_triangles;      /* zero-area fans over seam crossings (sw_seam_fill.h) */
-    uint64_t cracks;              /* border vertices not bit-identical to their seam vertex,
-                                     plus loop points the tessellator dropped off the
-                                     border's line (a gap; on it, a crossing), plus every
-                                     border point of a visible surface not drawn (a hole) */
-    uint64_t crossings;           /* border vertices on a seam segment between its vertices,
-                                     and loop points dropped where the border stays on
-                                     their line (T-vertices on a straight edge, not gaps) */
-    double tess_ms;               /* of the draw, spent tessellating and uploading */
-    uint64_t cull_box_tests;      /* of the select: patch and tree boxes tested against the
-                                     frustum (sw_cull_tree.h) */
-    uint64_t cull_depth_tests;    /* boxes whose depth range it computed */
-    double cull_ms;               /* of the select, spent on those */
-    uint32_t cone_culled;         /* in the frustum, left out: their cone faces away */
-    double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
-    double error_beyond_sewing_px;/* measured: the most a sample's error exceeds its surface's
-                                     sewing offset, what the level of detail and the
-                                     tessellation add: in pixels at the sample, scaled by
-                                     half a pixel over the bound where the bound's floor is
-                                     coarser than half a pixel (so <= error_px holds) */
-    double error_behind_beyond_sewing_px; /* the same, of meshes drawn coarser than the view
-                                     asks while their new ones are made (not in the one above) */
-    double sewing_offset_px;      /* measured: the largest sewing offset of a drawn surface, in
-                                     pixels at its nearest depth */
-    double seam_chord_px;         /* measured: the most a seam chord lies from its surface at
-                                     the same (u, v), sw_seam_measure.h */
-    /* With workers: */
-    uint32_t waiting_surfaces;    /* visible with no mesh yet (not drawn: holes until made) */
-    uint32_t standins;            /* drawn from a static level while their mesh is made */
-    uint32_t standins_made;       /* stand-ins made this frame */
-    uint32_t behind_surfaces;     /* drawn from a mesh coarser than the view's bound */
-    uint32_t frames_behind;       /* the longest a drawn surface has waited for its work */
-    double behind_ratio;          /* the most a drawn mesh's bound exceeds the view's */
-    uint32_t jobs_scheduled;      /* jobs this frame started */
-    uint32_t jobs_prefetch;       /* of them, out of view by w' (with budget left) */
-    uint32_t batches_committed;   /* batches swapped in this frame (0 or 1) */
-    double budget_tris;           /* N + M this frame */
-    double budget_used;           /* triangles scheduled over N + M */
-    uint32_t seam_ops;            /* the seam update's splits and collapses */
-    double updated_tris;          /* of the jobs, those whose loops moved (M's share) */
-    double updated_cap;           /* M, when the batch opened under it (0: no budget) */
-    /* The hand-over (sw_seam_visibility.h): */
-    double visibility_ms;         /* V's half of the frame: select, schedule, swap, plan */
-    double plan_wait_ms;          /* P waiting for the plan (0 without a visibility thread) */
-    uint8_t planned_on_gl_thread; /* V's half ran on P's thread */
-    uint8_t plan_overlapped;      /* V began it while P was still drawing the frame before */
-} sw_seam_frame;
 
 /* Bytes sw_seam_walk_init takes from its arena for this validated pack
  * (which must hold a Seam Graph: pack->seam_header). */

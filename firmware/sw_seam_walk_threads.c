@@ -325,6 +325,22 @@ sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error 
     return st;
 }
 
+sw_status sw_seam_walk_schedule_deferred(sw_seam_walk *w, sw_error *err)
+{
+    memset(&w->deferred, 0, sizeof w->deferred);
+    return w->workers ? sw_seam_walk_schedule(w, &w->deferred, err) : SW_OK;
+}
+
+void sw_seam_walk_take_deferred(sw_seam_walk *w, sw_seam_frame *frame)
+{
+    const sw_seam_frame *d = &w->deferred;
+    frame->jobs_scheduled = d->jobs_scheduled, frame->jobs_prefetch = d->jobs_prefetch;
+    frame->updated_tris = d->updated_tris, frame->updated_cap = d->updated_cap;
+    frame->budget_tris = d->budget_tris, frame->budget_used = d->budget_used;
+    frame->seam_ops = d->seam_ops;
+    memset(&w->deferred, 0, sizeof w->deferred);
+}
+
 /* (sw_seam_walk_internal.h) */
 void sw_seam_walk_restitch_around(sw_seam_walk *w, uint32_t s)
 {
