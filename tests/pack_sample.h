@@ -378,6 +378,26 @@ static inline uint8_t *serialize_sample(const sample *s, size_t *size)
     return bytes;
 }
 
+/* The sample with its Seam Graph, the levels l and the super-surfaces k
+ * (each NULL: none), serialised; malloc'd. */
+static inline uint8_t *serialize_sample_with(const sw_levels *l, const sw_supers *k,
+                                             size_t *size)
+{
+    sample s;
+    sample_seam g;
+    make_sample(&s);
+    make_sample_seam(&g);
+    sw_pack_contents c = sample_contents(&s);
+    c.seam = &g.graph;
+    c.levels = l;
+    c.supers = k;
+    uint8_t *bytes = NULL;
+    sw_error err = { 0 };
+    sw_status st = sw_pack_serialize(&c, &bytes, size, &err);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    return bytes;
+}
+
 static inline sw_pack_header *header_of(uint8_t *bytes) { return (sw_pack_header *)bytes; }
 static inline sw_pack_section *table_of(uint8_t *bytes) { return (sw_pack_section *)(bytes + 64); }
 

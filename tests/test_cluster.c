@@ -17,6 +17,7 @@
 #include "sw_test.h"
 #include "sw_bezier.h"
 #include "sw_cluster.h"
+#include "sw_surface_cone.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
 
@@ -359,10 +360,7 @@ static uint64_t check_sampled_normals(const sw_pack *pack)
             continue;
         const sw_pack_surface *ps = &pack->surfaces[s];
         for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
-            const sw_pack_patch *p = &pack->patches[i];
-            const sw_bezier_patchf pf = { p->degree_u, p->degree_v,
-                                          (p->flags & SW_PATCH_RATIONAL) != 0,
-                                          pack->control + 4 * (size_t)p->first_control };
+            const sw_bezier_patchf pf = sw_pack_patch_view(pack, i);
             sw_bezier_patch bp = sw_bezier_patch_from_float(&pf, ctrl);
             for (int k = 0; k < 64; k++) {
                 sw_surface_point sp;

@@ -18,20 +18,9 @@
  * members and super_of cut to list_count entries. malloc'd. */
 static uint8_t *serialize_with(const sample_supers *k, uint32_t list_count, size_t *size)
 {
-    sample s;
-    sample_seam g;
-    make_sample(&s);
-    make_sample_seam(&g);
-    sw_pack_contents c = sample_contents(&s);
-    c.seam = &g.graph;
     sw_supers v = k->view;
     v.surface_count = list_count;
-    c.supers = &v;
-    uint8_t *bytes = NULL;
-    sw_error err = { 0 };
-    sw_status st = sw_pack_serialize(&c, &bytes, size, &err);
-    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
-    return bytes;
+    return serialize_sample_with(NULL, &v, size);
 }
 
 static void expect_rejected(const sample_supers *k, sw_status status, const char *needle)
@@ -48,15 +37,23 @@ static sample_supers *fresh(sample_supers *k)
     return k;
 }
 
+/* The sample with its graph and the clusters k (NULL: none) opened into
+ * *pack; the bytes it views, malloc'd. */
+static uint8_t *open_with(const sw_supers *k, sw_pack *pack)
+{
+    size_t size = 0;
+    uint8_t *bytes = serialize_sample_with(NULL, k, &size);
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, pack, &err) == SW_OK, "%s", err.message);
+    return bytes;
+}
+
 static void test_round_trip(void)
 {
     sample_supers k;
     make_sample_supers(&k);
-    size_t size = 0;
-    uint8_t *bytes = serialize_with(&k, 2, &size);
     sw_pack pack;
-    sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    uint8_t *bytes = open_with(&k.view, &pack);
     const sw_supers *r = &pack.supers;
     SW_CHECK(r->super_count == 2 && r->surface_count == 2);
     SW_CHECK(memcmp(r->supers, k.supers, sizeof k.supers) == 0);
@@ -72,13 +69,8 @@ static void test_round_trip(void)
 
 static void test_absent_is_empty(void)
 {
-    sample s;
-    make_sample(&s);
-    size_t size = 0;
-    uint8_t *bytes = serialize_sample(&s, &size);
     sw_pack pack;
-    sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    uint8_t *bytes = open_with(NULL, &pack);
     SW_CHECK(!pack.supers.supers && !pack.supers.members && pack.supers.super_count == 0);
     free(bytes);
 }
@@ -95,32 +87,36 @@ static void test_truncated_lists(void)
     free(bytes);
 }
 
-/* A section whose bytes are no whole number of records. */
-static void test_partial_record(void)
+/* The sample's clusters written, their table entry of type edited by
+ * edit, every checksum made again: refused with status and needle. */
+static void expect_table_edit(uint32_t type, void (*edit)(sw_pack_section *), sw_status status,
+                              const char *needle)
 {
     sample_supers k;
     make_sample_supers(&k);
     size_t size = 0;
     uint8_t *bytes = serialize_with(&k, 2, &size);
-    table_of(bytes)[entry_of(bytes, SW_SECTION_SUPER_SURFACES)].size -= 4;
+    edit(&table_of(bytes)[entry_of(bytes, type)]);
     reseal_all(bytes);
-    expect_open(bytes, size, SW_ERR_FORMAT, "(SUPER_SURFACES): 60 bytes, expected a multiple "
-                "of 32");
+    expect_open(bytes, size, status, needle);
     free(bytes);
+}
+
+static void shorten(sw_pack_section *s) { s->size -= 4; }
+static void rename_unknown(sw_pack_section *s) { s->type = 999; }
+
+/* A section whose bytes are no whole number of records. */
+static void test_partial_record(void)
+{
+    expect_table_edit(SW_SECTION_SUPER_SURFACES, shorten, SW_ERR_FORMAT,
+                      "(SUPER_SURFACES): 60 bytes, expected a multiple of 32");
 }
 
 /* One of the three left out (its type renamed to an unknown one). */
 static void test_group_together(void)
 {
-    sample_supers k;
-    make_sample_supers(&k);
-    size_t size = 0;
-    uint8_t *bytes = serialize_with(&k, 2, &size);
-    table_of(bytes)[entry_of(bytes, SW_SECTION_SUPER_OF)].type = 999;
-    reseal_all(bytes);
-    expect_open(bytes, size, SW_ERR_FORMAT, "no SUPER_OF section (the super-surfaces' three "
-                "sections appear together)");
-    free(bytes);
+    expect_table_edit(SW_SECTION_SUPER_OF, rename_unknown, SW_ERR_FORMAT,
+                      "no SUPER_OF section (the super-surfaces' three sections appear together)");
 }
 
 static void test_record_rules(void)
@@ -181,11 +177,9 @@ static void test_info(void)
 {
     sample_supers k;
     make_sample_supers(&k);
-    size_t size = 0;
-    uint8_t *bytes = serialize_with(&k, 2, &size);
     sw_pack pack;
+    uint8_t *bytes = open_with(&k.view, &pack);
     sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
     sw_pack_super_stats st;
     SW_CHECK(sw_pack_gather_super_stats(&pack, &st, &err) == SW_OK);
     SW_CHECK(st.supers == 2 && st.members_min == 1 && st.members_max == 1 && st.no_cone == 1);

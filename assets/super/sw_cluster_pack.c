@@ -7,6 +7,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "sw_surface_cone.h"
+
 sw_status sw_cluster_surface_cones(const sw_pack *pack, sw_normal_cone *cones, sw_error *err)
 {
     size_t doubles = sw_normal_cone_scratch_doubles(SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE);
@@ -14,19 +16,8 @@ sw_status sw_cluster_surface_cones(const sw_pack *pack, sw_normal_cone *cones, s
     if (!scratch)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "clustering: out of memory for the cones' "
                             "scratch");
-    for (uint32_t s = 0; s < pack->surface_count; s++) {
-        const sw_pack_surface *ps = &pack->surfaces[s];
-        sw_normal_cone cone = sw_normal_cone_empty();
-        for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
-            const sw_pack_patch *p = &pack->patches[i];
-            const sw_bezier_patchf patch = { p->degree_u, p->degree_v,
-                                             (p->flags & SW_PATCH_RATIONAL) != 0,
-                                             pack->control + 4 * (size_t)p->first_control };
-            sw_normal_cone c = sw_normal_cone_of_patch(&patch, scratch);
-            cone = sw_normal_cone_union_tight(&cone, &c);
-        }
-        cones[s] = cone;
-    }
+    for (uint32_t s = 0; s < pack->surface_count; s++)
+        cones[s] = sw_surface_normal_cone(pack, s, 1, scratch);
     free(scratch);
     return SW_OK;
 }
