@@ -14,6 +14,7 @@
 #include <strings.h>
 #include <time.h>
 
+#include "sw_cluster.h"
 #include "sw_gen_showroom.h"
 #include "sw_import.h"
 #include "sw_import_iges.h"
@@ -242,6 +243,7 @@ typedef struct seam_summary {
     uint32_t collapses;
     double simplify_s;
     sw_levels_report levels;
+    sw_cluster_report clusters;
 } seam_summary;
 
 /* The simplifier's view of the exact surfaces (sw_seam_runs.h). */
@@ -284,10 +286,29 @@ static const char **input_names(const build_options *o)
     return names;
 }
 
-/* The pack in *bytes again, with the static levels of its surfaces
- * (sw_levels_build.h), made from the pack as the runtime reads it. */
+/* The static levels and the super-surfaces of a pack (sw_levels_build.h,
+ * sw_cluster.h), made from the pack as the runtime reads it; the clusters
+ * are capped by the levels' triangles, so they come second. */
+typedef struct derived {
+    sw_levels_built levels;
+    sw_clusters_built clusters;
+} derived;
+
+static sw_status build_derived(const sw_pack *pack, derived *d, seam_summary *summary,
+                               sw_error *err)
+{
+    memset(d, 0, sizeof *d);
+    sw_status st = sw_levels_build(pack, NULL, &d->levels, &summary->levels, err);
+    if (st == SW_OK)
+        st = sw_cluster_pack(pack, &d->levels.view, NULL, &d->clusters, &summary->clusters, err);
+    if (st != SW_OK)
+        sw_levels_built_free(&d->levels);
+    return st;
+}
+
+/* The pack in *bytes again, with its static levels and super-surfaces. */
 static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t *size,
-                            sw_levels_report *report, sw_error *err)
+                            seam_summary *summary, sw_error *err)
 {
     sw_pack pack;
     sw_status st = sw_pack_open_memory(*bytes, *size, &pack, err);
@@ -295,20 +316,23 @@ static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t 
         sw_error_prefix(err, "the pack as written");
         return st;
     }
-    sw_levels_built levels;
-    st = sw_levels_build(&pack, NULL, &levels, report, err);
+    derived d;
+    st = build_derived(&pack, &d, summary, err);
     if (st != SW_OK)
         return st;
     uint8_t *with = NULL;
     size_t with_size = 0;
-    contents->levels = &levels.view;
+    contents->levels = &d.levels.view;
+    contents->supers = &d.clusters.view;
     st = sw_pack_serialize(contents, &with, &with_size, err);
     contents->levels = NULL;
-    sw_levels_built_free(&levels);
+    contents->supers = NULL;
+    sw_levels_built_free(&d.levels);
+    sw_clusters_built_free(&d.clusters);
     /* Read back as the runtime will: a pack the reader refuses is not
      * written. */
     if (st == SW_OK && (st = sw_pack_open_memory(with, with_size, &pack, err)) != SW_OK)
-        sw_error_prefix(err, "the pack with its static levels");
+        sw_error_prefix(err, "the pack with its static levels and super-surfaces");
     if (st != SW_OK) {
         free(with);
         return st;
@@ -349,8 +373,8 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
         on_progress(pc, "serialising", 0.0);
         st = sw_pack_serialize(&contents, &bytes, bytes_out, err);
         if (st == SW_OK) {
-            on_progress(pc, "static levels", 0.0);
-            st = add_levels(&contents, &bytes, bytes_out, &seam_summary_out->levels, err);
+            on_progress(pc, "static levels, super-surfaces", 0.0);
+            st = add_levels(&contents, &bytes, bytes_out, seam_summary_out, err);
         }
         sw_pack_contents_free(&contents);
     }
@@ -435,6 +459,11 @@ static void print_summary(const build_options *o, const sw_model *model,
            " with a border not one chain per loop; %.2f s\n", l->with_levels, l->surfaces,
            l->levels, l->triangles[0], l->triangles[1], l->triangles[2], l->triangles[3],
            l->refused, l->too_large, l->bad_border, l->seconds);
+    const sw_cluster_report *k = &seams->clusters;
+    printf("seamwalk-pack: super-surfaces: %" PRIu32 " of %" PRIu32 " surfaces (%" PRIu32
+           " small ones merged, %" PRIu32 " alone wider than alpha, %" PRIu32 " stopped by a "
+           "cap); %.2f s\n", k->clusters, k->surfaces, k->merged, k->wide_alone, k->capped,
+           k->seconds);
     printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
            model->patch_count, bytes, o->out_path, seconds);
 }

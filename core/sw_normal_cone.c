@@ -244,21 +244,12 @@ sw_normal_cone sw_normal_cone_empty(void)
     return c;
 }
 
-sw_normal_cone sw_normal_cone_union(const sw_normal_cone *a, const sw_normal_cone *b)
+/* The cone around unit axis holding a and b: each lies within its axis'
+ * angle to axis plus its own half-angle (the triangle inequality on the
+ * sphere). */
+static sw_normal_cone cover(sw_vec3 axis, const sw_normal_cone *a, const sw_normal_cone *b)
 {
-    if (a->half_angle < 0)
-        return *b;
-    if (b->half_angle < 0)
-        return *a;
-    if (a->half_angle >= SW_CONE_FULL || b->half_angle >= SW_CONE_FULL)
-        return full_sphere();
-    sw_vec3 sum = sw_v3_add(a->axis, b->axis);
-    double l = sw_v3_length(sum);
-    if (!(l > 1e-9))
-        return full_sphere();
-    sw_normal_cone u = { sw_v3_scale(sum, 1.0 / l), 0 };
-    /* Each cone lies within its axis' angle to the new axis plus its own
-     * half-angle (the triangle inequality on the sphere). */
+    sw_normal_cone u = { axis, 0 };
     for (int k = 0; k < 2; k++) {
         const sw_normal_cone *c = k ? b : a;
         double to_axis = atan2(sw_v3_length(sw_v3_cross(u.axis, c->axis)),
@@ -266,6 +257,55 @@ sw_normal_cone sw_normal_cone_union(const sw_normal_cone *a, const sw_normal_con
         u.half_angle = fmax(u.half_angle, to_axis + c->half_angle + 1e-12);
     }
     return u.half_angle < SW_CONE_FULL ? u : full_sphere();
+}
+
+/* 1 with *out the union when a or b is empty or the full sphere. */
+static int trivial_union(const sw_normal_cone *a, const sw_normal_cone *b, sw_normal_cone *out)
+{
+    if (a->half_angle < 0 || b->half_angle < 0)
+        *out = a->half_angle < 0 ? *b : *a;
+    else if (a->half_angle >= SW_CONE_FULL || b->half_angle >= SW_CONE_FULL)
+        *out = full_sphere();
+    else
+        return 0;
+    return 1;
+}
+
+sw_normal_cone sw_normal_cone_union(const sw_normal_cone *a, const sw_normal_cone *b)
+{
+    sw_normal_cone u;
+    if (trivial_union(a, b, &u))
+        return u;
+    sw_vec3 sum = sw_v3_add(a->axis, b->axis);
+    double l = sw_v3_length(sum);
+    if (!(l > 1e-9))
+        return full_sphere();
+    return cover(sw_v3_scale(sum, 1.0 / l), a, b);
+}
+
+/* The smallest cap holding two caps: its axis on the great circle through
+ * theirs, its rim touching both rims, half-angle (theta + ra + rb) / 2
+ * (theta the angle between the axes), unless one already holds the other.
+ * The half-angle is measured again from the axis as rounded (cover), so
+ * the result holds both whatever the rounding. */
+sw_normal_cone sw_normal_cone_union_tight(const sw_normal_cone *a, const sw_normal_cone *b)
+{
+    sw_normal_cone u;
+    if (trivial_union(a, b, &u))
+        return u;
+    double theta = atan2(sw_v3_length(sw_v3_cross(a->axis, b->axis)), sw_v3_dot(a->axis, b->axis));
+    if (theta + b->half_angle <= a->half_angle)
+        return *a;
+    if (theta + a->half_angle <= b->half_angle)
+        return *b;
+    double r = 0.5 * (theta + a->half_angle + b->half_angle);
+    sw_vec3 t = sw_v3_sub(b->axis, sw_v3_scale(a->axis, sw_v3_dot(a->axis, b->axis)));
+    double lt = sw_v3_length(t);
+    if (!(r < SW_CONE_FULL) || !(lt > 1e-12))
+        return full_sphere();
+    double turn = r - a->half_angle; /* from a's axis towards b's */
+    sw_vec3 axis = sw_v3_add(sw_v3_scale(a->axis, cos(turn)), sw_v3_scale(t, sin(turn) / lt));
+    return cover(sw_v3_scale(axis, 1.0 / sw_v3_length(axis)), a, b);
 }
 
 int sw_normal_cone_back_facing(const sw_normal_cone *cone, const sw_box *box, sw_vec3 eye,

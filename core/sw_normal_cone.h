@@ -19,7 +19,8 @@
  * the control net's cross products, which does not bound rational patches;
  * here the weights are in the polynomial.
  *
- * Used by the seam walk at load time (firmware/sw_seam_walk.c) and by the
+ * Used through sw_surface_cone.h by the seam walk at load time
+ * (firmware/sw_seam_walk.c) and the host's clustering, and by the
  * tests. Pure functions; scratch is the caller's. */
 #ifndef SW_NORMAL_CONE_H
 #define SW_NORMAL_CONE_H
@@ -50,6 +51,11 @@ sw_normal_cone sw_normal_cone_of_patch(const sw_bezier_patchf *patch, double *sc
 
 /* A cone holding both. */
 sw_normal_cone sw_normal_cone_union(const sw_normal_cone *a, const sw_normal_cone *b);
+
+/* The smallest cone holding both (sw_normal_cone_union keeps the bisector
+ * of the axes, which is only tight for equal cones and grows a cone a
+ * little with every union; clustering takes hundreds of unions in a row). */
+sw_normal_cone sw_normal_cone_union_tight(const sw_normal_cone *a, const sw_normal_cone *b);
 
 /* An empty cone: the union's identity. */
 sw_normal_cone sw_normal_cone_empty(void);

@@ -18,6 +18,7 @@
 #include "sw_levels.h"
 #include "sw_parts.h"
 #include "sw_seam_graph.h"
+#include "sw_super.h"
 
 #define SW_PACK_MAGIC "SWPACK\r\n"        /* 8 bytes, no terminator in the file */
 #define SW_PACK_VERSION 1u
@@ -75,6 +76,12 @@ enum sw_section_type {
     SW_SECTION_LEVEL_INDICES = 29,      /* uint16_t[index_count] */
     SW_SECTION_LEVEL_CHAINS = 30,       /* sw_level_chain[chain_count] */
     SW_SECTION_LEVEL_CHAIN_POINTS = 31, /* sw_strip_point[chain_point_count] */
+    /* Super-surfaces (core/sw_super.h); optional, all three or none, and
+     * only beside SURFACES (they index it). Each is a whole number of
+     * records; SUPER_MEMBERS and SUPER_OF hold one per surface. */
+    SW_SECTION_SUPER_SURFACES = 32,     /* sw_super_surface[] */
+    SW_SECTION_SUPER_MEMBERS = 33,      /* uint32_t[surface_count]: surface indices */
+    SW_SECTION_SUPER_OF = 34,           /* uint32_t[surface_count]: each surface's cluster */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
@@ -260,6 +267,9 @@ typedef struct sw_pack {
      * NULL and every count 0 when the pack has none. */
     const sw_pack_levels *levels_header;         /* NULL when absent */
     sw_levels levels;
+    /* The super-surfaces: views into the SUPER_* sections, every pointer
+     * NULL and every count 0 when the pack has none. */
+    sw_supers supers;
 } sw_pack;
 
 /* runtime_bytes for a pack of total_size bytes and patch_count patches whose

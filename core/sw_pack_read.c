@@ -141,8 +141,8 @@ enum { HEADER_BYTES = 64, SECTION_BYTES = 32, CONTROL_POINT_BYTES = 16,
        TRANSFORM_BYTES = 16 * 4, LAST_KNOWN = SW_SECTION_LEVEL_CHAIN_POINTS };
 
 /* Types this file does not index: SIGNATURE is checked by the unit
- * (sw_pack_signature.h), ORIENTATION and IMPORT_NOTES by their own modules,
- * each with its own "a second ..." rule. */
+ * (sw_pack_signature.h), ORIENTATION, IMPORT_NOTES and the SUPER_* group by
+ * their own modules, each with its own "a second ..." rule. */
 static int indexed_here(uint32_t t)
 {
     return t >= SW_SECTION_META && t <= LAST_KNOWN &&
@@ -182,6 +182,9 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_LEVEL_INDICES: return "LEVEL_INDICES";
     case SW_SECTION_LEVEL_CHAINS: return "LEVEL_CHAINS";
     case SW_SECTION_LEVEL_CHAIN_POINTS: return "LEVEL_CHAIN_POINTS";
+    case SW_SECTION_SUPER_SURFACES: return "SUPER_SURFACES";
+    case SW_SECTION_SUPER_MEMBERS: return "SUPER_MEMBERS";
+    case SW_SECTION_SUPER_OF: return "SUPER_OF";
     }
     return "unknown";
 }
@@ -770,7 +773,8 @@ sw_status sw_pack_open_memory_with(const void *data, size_t size, const sw_parts
         (s = sw_pack_validate_levels(&pack, runner, err)) != SW_OK ||
         (s = check_runtime_bytes(&pack, err)) != SW_OK ||
         (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK ||
-        (s = sw_pack_map_import_notes(bytes, &pack, err)) != SW_OK)
+        (s = sw_pack_map_import_notes(bytes, &pack, err)) != SW_OK ||
+        (s = sw_pack_map_supers(bytes, &pack, err)) != SW_OK)
         return s;
     *out = pack;
     return SW_OK;

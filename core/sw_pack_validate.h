@@ -43,6 +43,13 @@ sw_status sw_pack_validate_seam(const sw_pack *pack, const sw_parts_runner *runn
 sw_status sw_pack_validate_levels(const sw_pack *pack, const sw_parts_runner *runner,
                                   sw_error *err);
 
+/* The super-surfaces (SUPER_SURFACES, SUPER_MEMBERS, SUPER_OF), in
+ * sw_pack_validate_super.c; called last by sw_pack_open_memory on a pack
+ * whose SURFACES are known good. Finds its own sections (all three or
+ * none, each at most once), maps them into out->supers and checks every
+ * rule of PACK_FORMAT.md, "Super-surfaces", allocating nothing. */
+sw_status sw_pack_map_supers(const uint8_t *data, sw_pack *out, sw_error *err);
+
 /* Number of control points along edge (enum sw_patch_edge) of patch. */
 static inline uint32_t sw_pack_edge_points(const sw_pack_patch *patch, uint32_t edge)
 {

@@ -9,6 +9,7 @@
 #include "sw_seam_surface.h"
 #include "sw_seam_walk_internal.h"
 #include "sw_surface_at.h"
+#include "sw_surface_cone.h"
 
 size_t sw_seam_walk_arena_bytes(const sw_pack *pack)
 {
@@ -72,19 +73,8 @@ static sw_status make_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the normal cones' "
                             "scratch (%zu bytes)", doubles * sizeof(double));
     const sw_pack *pack = w->pack;
-    for (uint32_t s = 0; s < pack->seam.surface_count; s++) {
-        const sw_pack_surface *ps = &pack->surfaces[s];
-        sw_normal_cone cone = sw_normal_cone_empty();
-        for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
-            const sw_pack_patch *p = &pack->patches[i];
-            const sw_bezier_patchf patch = { p->degree_u, p->degree_v,
-                                             (p->flags & SW_PATCH_RATIONAL) != 0,
-                                             pack->control + 4 * (size_t)p->first_control };
-            sw_normal_cone c = sw_normal_cone_of_patch(&patch, scratch);
-            cone = sw_normal_cone_union(&cone, &c);
-        }
-        w->cones[s] = cone;
-    }
+    for (uint32_t s = 0; s < pack->seam.surface_count; s++)
+        w->cones[s] = sw_surface_normal_cone(pack, s, 0, scratch);
     sw_arena_reset_to(arena, mark);
     return SW_OK;
 }

@@ -27,3 +27,7 @@ sw_add_test(test_pack_notes SOURCES test_pack_notes.c LIBS sw_assets sw_core)
 # fuzz seed (corpus/pack/seed-levels) is written by test_pack_write
 # --write-corpus from the same hand-built levels (pack_sample.h).
 sw_add_test(test_pack_levels SOURCES test_pack_levels.c LIBS sw_assets sw_core)
+# The super-surfaces in the pack: round trip, one refusal per validation
+# rule, the info report; their fuzz seed (corpus/pack/seed-supers) is
+# written by test_pack_write --write-corpus (pack_sample.h).
+sw_add_test(test_pack_super SOURCES test_pack_super.c LIBS sw_assets sw_core)

@@ -315,6 +315,35 @@ static inline void make_sample_levels(sample_levels *l)
     view_sample_levels(l);
 }
 
+/* ---- the sample's super-surfaces: one per surface (each its own part),
+ * surface 0 (the bumped grid) in a 20-degree cone round +z, surface 1 in
+ * none (span pi, zero axis) ---- */
+typedef struct sample_supers {
+    sw_super_surface supers[2];
+    uint32_t members[2];
+    uint32_t super_of[2];
+    sw_supers view;
+} sample_supers;
+
+/* The view; call again after moving the struct or changing the counts. */
+static inline void view_sample_supers(sample_supers *k, uint32_t super_count)
+{
+    k->view = (sw_supers){ .supers = k->supers, .members = k->members, .super_of = k->super_of,
+                           .super_count = super_count, .surface_count = 2 };
+}
+
+static inline void make_sample_supers(sample_supers *k)
+{
+    memset(k, 0, sizeof *k);
+    k->supers[0] = (sw_super_surface){ .first_member = 0, .member_count = 1, .part = 0,
+                                       .span = 0.35f, .axis = { 0, 0, 1 } };
+    k->supers[1] = (sw_super_surface){ .first_member = 1, .member_count = 1, .part = 1,
+                                       .span = 3.14159265f };
+    k->members[0] = 0, k->members[1] = 1;
+    k->super_of[0] = 0, k->super_of[1] = 1;
+    view_sample_supers(k, 2);
+}
+
 static inline sw_pack_contents sample_contents(const sample *s)
 {
     sw_pack_contents c = { .meta = s->meta, .parts = s->parts, .patches = s->patches,
@@ -342,6 +371,26 @@ static inline sw_pack_contents sample_contents(const sample *s)
 static inline uint8_t *serialize_sample(const sample *s, size_t *size)
 {
     sw_pack_contents c = sample_contents(s);
+    uint8_t *bytes = NULL;
+    sw_error err = { 0 };
+    sw_status st = sw_pack_serialize(&c, &bytes, size, &err);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    return bytes;
+}
+
+/* The sample with its Seam Graph, the levels l and the super-surfaces k
+ * (each NULL: none), serialised; malloc'd. */
+static inline uint8_t *serialize_sample_with(const sw_levels *l, const sw_supers *k,
+                                             size_t *size)
+{
+    sample s;
+    sample_seam g;
+    make_sample(&s);
+    make_sample_seam(&g);
+    sw_pack_contents c = sample_contents(&s);
+    c.seam = &g.graph;
+    c.levels = l;
+    c.supers = k;
     uint8_t *bytes = NULL;
     sw_error err = { 0 };
     sw_status st = sw_pack_serialize(&c, &bytes, size, &err);

@@ -15,3 +15,8 @@ sw_add_test(test_levels_build SOURCES test_levels_build.c LIBS sw_assets sw_core
 # ... and on the teaset sample as the pack tool builds it.
 add_test(NAME levels_teaset COMMAND bash -c
   "$<TARGET_FILE:seamwalk-pack> build ${PROJECT_SOURCE_DIR}/assets/samples/teaset.ini -o ${CMAKE_CURRENT_BINARY_DIR}/levels_teaset.swpack --quiet && $<TARGET_FILE:test_levels_build> ${CMAKE_CURRENT_BINARY_DIR}/levels_teaset.swpack")
+# Super-surfaces: clustering on hand-built surfaces, and on the teaset as
+# the pack tool builds it (every sampled normal inside its cluster's cone).
+sw_add_test(test_cluster SOURCES test_cluster.c LIBS sw_assets sw_core)
+add_test(NAME cluster_teaset COMMAND bash -c
+  "$<TARGET_FILE:seamwalk-pack> build ${PROJECT_SOURCE_DIR}/assets/samples/teaset.ini -o ${CMAKE_CURRENT_BINARY_DIR}/cluster_teaset.swpack --quiet && $<TARGET_FILE:test_cluster> ${CMAKE_CURRENT_BINARY_DIR}/cluster_teaset.swpack")

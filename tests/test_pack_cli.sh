@@ -169,8 +169,12 @@ assert [s["name"] for s in j["sections"]][4:] == ["ADJACENCY", "SURFACES", "TRIM
   "TRIM_CURVES", "TRIM_DATA", "PATCH_DOMAINS", "TRIM_MASKS", "VIEWPOINTS", "PART_TRANSFORMS",
   "SEAM", "SEAM_VERTICES", "SEAM_SLOTS", "SEAM_LOOPS", "SEAM_EDGES", "SEAM_COLLAPSES",
   "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS", "ORIENTATION", "LEVELS", "LEVEL_RECORDS",
-  "LEVEL_SURFACES", "LEVEL_VERTICES", "LEVEL_INDICES", "LEVEL_CHAINS", "LEVEL_CHAIN_POINTS"]
+  "LEVEL_SURFACES", "LEVEL_VERTICES", "LEVEL_INDICES", "LEVEL_CHAINS", "LEVEL_CHAIN_POINTS",
+  "SUPER_SURFACES", "SUPER_MEMBERS", "SUPER_OF"]
 assert j["levels"]["levels"] > 0, j["levels"]
+k = j["super_surfaces"]
+assert 0 < k["count"] <= 70 and k["members"][0] >= 1 and k["members"][2] <= 64, k
+assert len(k["finest_triangles"]) == 3 and k["finest_triangles"][0] > 0, k
 EOF
 
 # A trimmed pack without any CAD reader: a generated plate with holes.

@@ -19,18 +19,7 @@
 /* The sample with its graph and levels l (NULL: none), serialised; malloc'd. */
 static uint8_t *serialize_with_levels(const sample_levels *l, size_t *size)
 {
-    sample s;
-    sample_seam g;
-    make_sample(&s);
-    make_sample_seam(&g);
-    sw_pack_contents c = sample_contents(&s);
-    c.seam = &g.graph;
-    c.levels = l ? &l->view : NULL;
-    uint8_t *bytes = NULL;
-    sw_error err = { 0 };
-    sw_status st = sw_pack_serialize(&c, &bytes, size, &err);
-    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
-    return bytes;
+    return serialize_sample_with(l ? &l->view : NULL, NULL, size);
 }
 
 /* The sample with the (edited) levels l must be refused with status and needle. */

@@ -449,43 +449,28 @@ static int write_model_seed(const sw_model *model, const char *dir, const char *
     return 0;
 }
 
-/* The sample with its hand-built Seam Graph (pack_sample.h). */
-static void write_seam_seed(const char *dir)
-{
-    sample s;
-    sample_seam g;
-    make_sample(&s);
-    make_sample_seam(&g);
-    sw_pack_contents c = sample_contents(&s);
-    c.seam = &g.graph;
-    uint8_t *bytes = NULL;
-    size_t size = 0;
-    sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK, "%s", err.message);
-    char path[512];
-    snprintf(path, sizeof path, "%s/seed-seam-graph", dir);
-    write_plain(path, bytes, size);
-    free(bytes);
-}
-
-/* The sample with its Seam Graph and its static levels (pack_sample.h). */
-static void write_levels_seed(const char *dir)
+/* The sample with its hand-built Seam Graph, and with its static levels
+ * and super-surfaces when asked (pack_sample.h), into dir/name. */
+static void write_sample_seed(const char *dir, const char *name, int levels, int supers)
 {
     sample s;
     sample_seam g;
     sample_levels l;
+    sample_supers k;
     make_sample(&s);
     make_sample_seam(&g);
     make_sample_levels(&l);
+    make_sample_supers(&k);
     sw_pack_contents c = sample_contents(&s);
     c.seam = &g.graph;
-    c.levels = &l.view;
+    c.levels = levels ? &l.view : NULL;
+    c.supers = supers ? &k.view : NULL;
     uint8_t *bytes = NULL;
     size_t size = 0;
     sw_error err = { 0 };
     SW_CHECK_MSG(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK, "%s", err.message);
     char path[512];
-    snprintf(path, sizeof path, "%s/seed-levels", dir);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     write_plain(path, bytes, size);
     free(bytes);
 }
@@ -531,8 +516,9 @@ static int write_corpus(const char *dir)
     snprintf(path, sizeof path, "%s/seed-bezier-only", dir);
     write_plain(path, bytes, size);
     free(bytes);
-    write_seam_seed(dir);
-    write_levels_seed(dir);
+    write_sample_seed(dir, "seed-seam-graph", 0, 0);
+    write_sample_seed(dir, "seed-levels", 1, 0);
+    write_sample_seed(dir, "seed-supers", 1, 1);
     write_orientation_seed(dir);
     sw_model model;
     start_model(&model);

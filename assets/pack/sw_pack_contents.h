@@ -9,6 +9,7 @@
 #include "sw_levels.h"
 #include "sw_pack.h"
 #include "sw_seam_graph.h"
+#include "sw_super.h"
 
 /* The flat arrays of a pack, as the writer lays them out. Tests build these
  * by hand to make packs with chosen faults. */
@@ -52,6 +53,10 @@ typedef struct sw_pack_contents {
      * Graph whose loops the chains follow, and levels->surface_count equal
      * to surface_count above. */
     const sw_levels *levels;
+    /* The super-surfaces (core/sw_super.h), or NULL for none: written as
+     * SUPER_SURFACES, SUPER_MEMBERS and SUPER_OF. Not owned, like seam;
+     * supers->surface_count must be surface_count above. */
+    const sw_supers *supers;
 } sw_pack_contents;
 
 #endif

@@ -309,9 +309,15 @@ static void print_levels_text(FILE *out, const sw_pack *pack, const sw_pack_leve
     }
 }
 
+/* The derived data's figures, gathered before anything is printed. */
+typedef struct derived_stats {
+    sw_pack_levels_stats levels;
+    sw_pack_super_stats supers;
+} derived_stats;
+
 static void print_text(FILE *out, const char *path, const sw_pack *pack,
                        const sw_pack_part_stats *parts, const sw_pack_part_stats *t,
-                       const sw_pack_levels_stats *levels)
+                       const derived_stats *derived)
 {
     const sw_pack_meta *m = pack->meta;
     fprintf(out, "%s: seamwalk pack version %" PRIu32 ", %" PRIu64 " bytes\n", path,
@@ -333,7 +339,8 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
             " masks\n", "trimming", t->loops, t->curves, t->computed_curves, pack->trim_mask_count);
     fprintf(out, "  %-16s %" PRIu32 "\n", "adjacency", m->adjacency_count);
     print_seam_text(out, pack);
-    print_levels_text(out, pack, levels);
+    print_levels_text(out, pack, &derived->levels);
+    sw_pack_print_super_text(out, pack, &derived->supers);
     fprintf(out, "  %-16s %" PRIu32, "viewpoints", pack->viewpoint_count);
     for (uint32_t i = 0; i < pack->viewpoint_count; i++)
         fprintf(out, "%s%s", i ? ", " : ": ", pack->viewpoints[i].name);
@@ -492,7 +499,7 @@ static void json_levels(FILE *out, const sw_pack *pack, const sw_pack_levels_sta
 
 static void print_json(FILE *out, const char *path, const sw_pack *pack,
                        const sw_pack_part_stats *parts, const sw_pack_part_stats *t,
-                       const sw_pack_levels_stats *levels)
+                       const derived_stats *derived)
 {
     const sw_pack_meta *m = pack->meta;
     fprintf(out, "{\n  \"file\": ");
@@ -514,7 +521,8 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack,
     fprintf(out, ",\n  \"trim_masks\": %" PRIu32 ",\n", pack->trim_mask_count);
     fprintf(out, "  \"adjacency\": %" PRIu32 ",\n", m->adjacency_count);
     json_seam(out, pack);
-    json_levels(out, pack, levels);
+    json_levels(out, pack, &derived->levels);
+    sw_pack_print_super_json(out, pack, &derived->supers);
     json_viewpoints(out, pack);
     json_sections(out, pack);
     fprintf(out, "  \"units\": \"%s\",\n  \"model_tolerance\": %.9g,\n",
@@ -540,12 +548,14 @@ sw_status sw_pack_print_info(FILE *out, const char *path, const sw_pack *pack, i
         return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: cannot allocate stats for %u parts",
                             path, (unsigned)pack->meta->part_count);
     sw_pack_gather_stats(pack, parts, &total);
-    sw_pack_levels_stats levels;
-    sw_status s = sw_pack_gather_levels_stats(pack, &levels, err);
+    derived_stats derived;
+    sw_status s = sw_pack_gather_levels_stats(pack, &derived.levels, err);
+    if (s == SW_OK)
+        s = sw_pack_gather_super_stats(pack, &derived.supers, err);
     if (s == SW_OK && json)
-        print_json(out, path, pack, parts, &total, &levels);
+        print_json(out, path, pack, parts, &total, &derived);
     else if (s == SW_OK)
-        print_text(out, path, pack, parts, &total, &levels);
+        print_text(out, path, pack, parts, &total, &derived);
     free(parts);
     if (s != SW_OK)
         sw_error_prefix(err, "%s", path);

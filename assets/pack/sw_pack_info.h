@@ -71,6 +71,32 @@ typedef struct sw_pack_levels_stats {
 sw_status sw_pack_gather_levels_stats(const sw_pack *pack, sw_pack_levels_stats *out,
                                       sw_error *err);
 
+/* The super-surfaces (core/sw_super.h): how many, their members, spans and
+ * the triangles of their members' finest static levels together. Medians
+ * are the lower middle for an even count. */
+typedef struct sw_pack_super_stats {
+    uint32_t supers;
+    uint32_t members_min, members_median, members_max;
+    uint32_t no_cone;               /* spans of pi/2 or more: no cone to cull by */
+    float span_median;              /* radians, over every super-surface */
+    float span_max_cone;            /* radians, the largest below pi/2 (0: none) */
+    int with_triangles;             /* the pack has levels: the triangles below are known */
+    uint64_t triangles_min, triangles_median, triangles_max;
+    uint64_t bytes;                 /* the three sections' sizes */
+} sw_pack_super_stats;
+
+/* Fills *out when the pack has super-surfaces (all zero otherwise).
+ * SW_ERR_NO_MEMORY when the medians' scratch cannot be allocated. In
+ * sw_pack_info_super.c, with the report's lines below. */
+sw_status sw_pack_gather_super_stats(const sw_pack *pack, sw_pack_super_stats *out,
+                                     sw_error *err);
+
+/* The text line(s), nothing for a pack without super-surfaces. */
+void sw_pack_print_super_text(FILE *out, const sw_pack *pack, const sw_pack_super_stats *s);
+
+/* "super_surfaces": {...}, or null for a pack without them. */
+void sw_pack_print_super_json(FILE *out, const sw_pack *pack, const sw_pack_super_stats *s);
+
 /* "mm", "m" or "unspecified" for META.units. */
 const char *sw_pack_units_name(uint32_t units);
 

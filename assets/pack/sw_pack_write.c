@@ -21,10 +21,12 @@
 #include "sw_walk_memory.h"
 
 /* Types 1..13 (the first five always written), then the seam group's eight,
- * then ORIENTATION and IMPORT_NOTES, then the levels' seven. */
+ * then ORIENTATION and IMPORT_NOTES, then the levels' seven, then the
+ * super-surfaces' three. */
 enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8, LEVEL_SECTIONS = 7,
-       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2 + LEVEL_SECTIONS, HEADER_BYTES = 64,
-       SECTION_BYTES = 32 };
+       SUPER_SECTIONS = 3,
+       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2 + LEVEL_SECTIONS + SUPER_SECTIONS,
+       HEADER_BYTES = 64, SECTION_BYTES = 32 };
 
 static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
 
@@ -97,7 +99,8 @@ static void list_level_sections(const sw_levels *l, const sw_pack_levels *record
 /* The sections contents asks for, in the order they are written: the five
  * of the walking skeleton always, each optional one when its array is set,
  * the seam group when there is a graph (seam_rec holds its SEAM record), the
- * level group when there are levels (levels_rec holds their LEVELS record). */
+ * level group when there are levels (levels_rec holds their LEVELS record),
+ * the super-surfaces' group when there are clusters. */
 static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
                          sw_pack_levels *levels_rec, section_source src[MAX_SECTIONS])
 {
@@ -143,6 +146,14 @@ static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
         *levels_rec = levels_record(c->levels);
         list_level_sections(c->levels, levels_rec, &src[n]);
         n += LEVEL_SECTIONS;
+    }
+    if (c->supers) {
+        const sw_supers *sp = c->supers;
+        uint64_t list = (uint64_t)sp->surface_count * sizeof(uint32_t);
+        src[n++] = (section_source){ SW_SECTION_SUPER_SURFACES, sp->supers,
+                                     (uint64_t)sp->super_count * sizeof(sw_super_surface) };
+        src[n++] = (section_source){ SW_SECTION_SUPER_MEMBERS, sp->members, list };
+        src[n++] = (section_source){ SW_SECTION_SUPER_OF, sp->super_of, list };
     }
     return n;
 }

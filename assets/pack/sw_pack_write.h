@@ -17,7 +17,8 @@
  * ADJACENCY, then the optional sections present in sw_section_type order,
  * the seam sections when contents->seam is set, ORIENTATION when
  * contents->orientation is, IMPORT_NOTES when contents->import_notes is, the
- * seven level sections last when contents->levels is),
+ * seven level sections when contents->levels is, the three super-surface
+ * sections last when contents->supers is),
  * sections 64-byte aligned, checksums. *out is malloc'd; the caller frees it. */
 sw_status sw_pack_serialize(const sw_pack_contents *contents, uint8_t **out, size_t *out_size,
                             sw_error *err);
