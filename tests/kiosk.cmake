@@ -37,3 +37,7 @@ add_test(NAME test_service COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_service
 add_test(NAME test_notify COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/test_notify.py
          $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-pack> ${PROJECT_SOURCE_DIR}/assets/samples
          ${CMAKE_CURRENT_BINARY_DIR}/notify)
+
+# The evdev keyboard through libevdev, SYN_DROPPED included, on a recorded
+# event stream with the kernel's ioctls faked for it (tests/test_evdev_keys.c).
+sw_add_test(test_evdev_keys SOURCES test_evdev_keys.c LIBS sw_runtime)
