@@ -19,6 +19,7 @@
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "seamwalk_program.h"
@@ -357,12 +358,22 @@ static sw_status write_stats(sw_program *rt, sw_error *err)
     s->height = rt->opt.height;
     if (!rt->opt.stats_path)
         return SW_OK;
-    FILE *f = fopen(rt->opt.stats_path, "w");
+    /* The JSON in memory first (the walk is over: allocating is allowed),
+     * then written whole or not at all: a temporary beside it, fsynced and
+     * renamed over it, removed on any failure (a full disk left a 0-byte
+     * stats file that readers took for the run's). */
+    char *json = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&json, &size);
     if (!f)
-        return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.stats_path, strerror(errno));
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: %s", rt->opt.stats_path,
+                            strerror(errno));
     sw_status st = sw_stats_write_json(s, f, &rt->arena, err);
     if (fclose(f) != 0 && st == SW_OK)
-        st = sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.stats_path, strerror(errno));
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "%s: %s", rt->opt.stats_path, strerror(errno));
+    if (st == SW_OK && (st = sw_store_write_atomic(rt->opt.stats_path, json, size, err)) != SW_OK)
+        sw_error_prefix(err, "stats");
+    free(json);
     return st;
 }
 

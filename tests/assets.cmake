@@ -18,3 +18,9 @@ add_test(NAME test_pack_cli
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_pack_cli.sh $<TARGET_FILE:seamwalk-pack>
           ${SW_SAMPLES} ${SW_SHARED_MODELS})
 sw_host_only_test(test_pack_cli PROGRAMS seamwalk-pack)
+
+# The STEP file's quick pass before OpenCASCADE: instances, shells' faces,
+# the limits (issue 25: a shell listing one face 200,000 times).
+sw_add_test(test_step_scan SOURCES test_step_scan.c LIBS sw_assets sw_core)
+sw_add_fuzz_target(fuzz_step_scan SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_step_scan.c
+  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/step_scan)

@@ -17,6 +17,7 @@
  * captured (not printed) while we run, so an error can quote them. */
 extern "C" {
 #include "sw_import_occt.h"
+#include "sw_step_scan.h"
 #include "sw_math.h"
 #include "sw_occt_measure.h"
 }
@@ -91,6 +92,7 @@ extern "C" {
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <sys/stat.h>
 #include <exception>
 #include <string>
 #include <vector>
@@ -977,12 +979,25 @@ sw_status import_file(ImportContext *ctx)
         return sw_error_set(ctx->err, SW_ERR_ARG,
                             "%s: not a STEP (.stp, .step) or IGES (.igs, .iges) file name",
                             ctx->path);
+    struct stat st;
+    if (stat(ctx->path, &st) != 0)
+        return sw_error_set(ctx->err, SW_ERR_IO, "%s: %s", ctx->path, std::strerror(errno));
+    if (!S_ISREG(st.st_mode))
+        return sw_error_set(ctx->err, SW_ERR_IO, "%s: %s, expected a %s file", ctx->path,
+                            S_ISDIR(st.st_mode) ? "a directory" : "not a regular file",
+                            step ? "STEP" : "IGES");
     FILE *f = std::fopen(ctx->path, "rb");
     if (!f)
         return sw_error_set(ctx->err, SW_ERR_IO, "%s: %s", ctx->path, std::strerror(errno));
     std::fclose(f);
     if (!file_tail_has(ctx->path, step))
         return truncated(ctx, step);
+    /* Limits OpenCASCADE does not have: a shell listing a face many times
+     * kept it busy for minutes (sw_step_scan.h). */
+    sw_step_scan_result scan;
+    sw_status scanned = step ? sw_step_scan_file(ctx->path, &scan, ctx->err) : SW_OK;
+    if (scanned != SW_OK)
+        return scanned;
 
     MessageCapture messages;
     std::vector<Leaf> leaves;
