@@ -55,9 +55,11 @@ set_tests_properties(test_flash_boot PROPERTIES FIXTURES_REQUIRED flash_packs SK
 
 # The parsers of the store's state file and journal, and of key files.
 sw_add_fuzz_target(fuzz_store SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_store.c
-  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store)
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store
+  DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/store.dict)
 sw_add_fuzz_target(fuzz_keys SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_keys.c
-  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys)
+  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys
+  DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/keys.dict)
 
 # No store fault stops a boot, and boot-check agrees with it: each fault
 # the unit's user can meet (a root lock, a read-only store or mount, an
