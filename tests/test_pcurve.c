@@ -112,18 +112,26 @@ static int lifted_target(void *user, double t, sw_vec3 *p, double uv[2])
     return 0;
 }
 
-static void test_fit_of_curve_off_the_surface(void)
+/* A fit of target (on the wavy surface, t in [0, 2 pi]) within tol. */
+static sw_status fit_on_wavy(int (*target)(void *, double, sw_vec3 *, double *), double tol,
+                             sw_pcurve_result *fit, sw_error *err)
 {
     sw_nurbs_surface s = wavy();
     sw_pcurve_surface ps;
     SW_CHECK(sw_pcurve_surface_init(&ps, &s, NULL) == SW_OK);
-    sw_pcurve_target tg = {lifted_target, &s, 0.0, 2 * SW_PI};
+    sw_pcurve_target tg = {target, &s, 0.0, 2 * SW_PI};
+    sw_status st = sw_pcurve_fit(&ps, &tg, tol, fit, err);
+    sw_pcurve_surface_free(&ps);
+    return st;
+}
+
+static void test_fit_of_curve_off_the_surface(void)
+{
     sw_pcurve_result fit;
     sw_error err = {0};
-    SW_CHECK_MSG(sw_pcurve_fit(&ps, &tg, 1e-3, &fit, &err) == SW_OK, "%s", err.message);
+    SW_CHECK_MSG(fit_on_wavy(lifted_target, 1e-3, &fit, &err) == SW_OK, "%s", err.message);
     SW_CHECK(fit.max_gap > 0.5 && fit.max_gap < 1.0 + 1e-9);
     sw_pcurve_result_free(&fit);
-    sw_pcurve_surface_free(&ps);
 }
 
 /* A curve 1 above the surface that swings across it 2,000 times: no cubic fit
@@ -141,14 +149,10 @@ static int wild_target(void *user, double t, sw_vec3 *p, double uv[2])
 
 static void test_fit_gives_up_at_its_limit(void)
 {
-    sw_nurbs_surface s = wavy();
-    sw_pcurve_surface ps;
-    SW_CHECK(sw_pcurve_surface_init(&ps, &s, NULL) == SW_OK);
-    sw_pcurve_target tg = {wild_target, &s, 0.0, 2 * SW_PI};
     sw_pcurve_result fit;
     sw_error err = {0};
     clock_t c0 = clock();
-    sw_status st = sw_pcurve_fit(&ps, &tg, 1e-6, &fit, &err);
+    sw_status st = fit_on_wavy(wild_target, 1e-6, &fit, &err);
     double cpu_s = (double)(clock() - c0) / CLOCKS_PER_SEC;
     printf("wild curve: %s after %ld evaluations, %.3f s: %s\n", st == SW_OK ? "fitted" : "refused",
            fit.evals, cpu_s, err.message);
@@ -159,22 +163,16 @@ static void test_fit_gives_up_at_its_limit(void)
     SW_CHECK(fit.evals > SW_PCURVE_FIT_MAX_EVALS && fit.evals < SW_PCURVE_FIT_MAX_EVALS + 1200);
     SW_CHECK_MSG(cpu_s < 0.5, "%.3f s", cpu_s);
     SW_CHECK(fit.knots == NULL && fit.ctrl == NULL);
-    sw_pcurve_surface_free(&ps);
 }
 
 /* The fits the importers make stay far below the limit. */
 static void test_good_fits_stay_below_the_limit(void)
 {
-    sw_nurbs_surface s = wavy();
-    sw_pcurve_surface ps;
-    SW_CHECK(sw_pcurve_surface_init(&ps, &s, NULL) == SW_OK);
-    sw_pcurve_target tg = {circle_target, &s, 0.0, 2 * SW_PI};
     sw_pcurve_result fit;
-    SW_CHECK(sw_pcurve_fit(&ps, &tg, 1e-6, &fit, NULL) == SW_OK);
+    SW_CHECK(fit_on_wavy(circle_target, 1e-6, &fit, NULL) == SW_OK);
     printf("circle at 1e-6: %ld evaluations, %d points\n", fit.evals, fit.count);
     SW_CHECK_MSG(fit.evals < SW_PCURVE_FIT_MAX_EVALS / 10, "%ld", fit.evals);
     sw_pcurve_result_free(&fit);
-    sw_pcurve_surface_free(&ps);
 }
 
 int main(void)

@@ -144,11 +144,9 @@ static void walk(const sw_pack *pack)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    uint8_t *buf = calloc(1, size ? size : 1); /* malloc family: aligned for any type */
+    uint8_t *buf = fuzz_copy(data, size);
     if (!buf)
         return 0;
-    if (size)
-        memcpy(buf, data, size);
     sw_pack pack;
     sw_error err;
     /* A unit checks the signature on the raw bytes before any parser runs

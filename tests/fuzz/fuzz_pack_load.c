@@ -29,11 +29,9 @@ static void same_answer(const uint8_t *buf, size_t size)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    uint8_t *buf = calloc(1, size ? size : 1); /* malloc family: aligned for any type */
+    uint8_t *buf = fuzz_copy(data, size);
     if (!buf)
         return 0;
-    if (size)
-        memcpy(buf, data, size);
     same_answer(buf, size);
     if (size >= sizeof(sw_pack_header)) {
         reseal(buf, size);

@@ -7,6 +7,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <xxhash.h>
 
@@ -32,6 +33,16 @@ static inline void reseal(uint8_t *buf, size_t size)
     memcpy(buf, &h, sizeof h);
     h.header_checksum = XXH3_64bits(buf, 64 + (size_t)h.section_count * 32);
     memcpy(buf, &h, sizeof h);
+}
+
+/* The input in a buffer of our own, which reseal may change; calloc's
+ * alignment suits any type. NULL when out of memory. */
+static inline uint8_t *fuzz_copy(const uint8_t *data, size_t size)
+{
+    uint8_t *buf = calloc(1, size ? size : 1);
+    if (buf && size)
+        memcpy(buf, data, size);
+    return buf;
 }
 
 #endif
