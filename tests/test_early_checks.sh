@@ -92,5 +92,19 @@ check "--stats on a full disk: no temporary left" [ ! -e "$work/full/stats.json.
   --stats "$work/full/stats.json" >/dev/null 2>&1
 check "--stats with room: written whole" python3 -c "import json; json.load(open('$work/full/stats.json'))['frames']"
 
+# ---- a reader that crashes ------------------------------------------------------------
+# OpenCASCADE's STEP reader crashes on some damaged files (fuzz_step_occt
+# found one); the file is read first in a child process, and its death is
+# an error naming the file, not seamwalk-pack's. The test hook makes the
+# child crash on a good file; without it the same file builds.
+square=$samples/../../tests/fuzz/corpus/step_occt/square.step
+run build "$square" -o "$work/square.swpack" --quiet
+check "a good STEP file builds" rc 0
+SEAMWALK_TEST_READER_CRASH=1 run build "$square" -o "$work/crash.swpack" --quiet
+echo "a reader that crashes: exit $(cat "$work/rc"): $(cat "$work/err")"
+check "crashing reader: refused, not crashed" rc 1
+check "crashing reader: says so" said "square.step: OpenCASCADE's STEP reader crashed on the file (signal 11"
+check "crashing reader: no pack" [ ! -e "$work/crash.swpack" ]
+
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]
