@@ -5,6 +5,7 @@
  * written through sw_write_file_atomic only after everything succeeded.
  * Warnings (entities an importer skipped) are printed after a successful
  * build; --strict makes them failures. */
+#include <errno.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdint.h>
@@ -12,7 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "sw_cluster.h"
 #include "sw_gen_showroom.h"
@@ -65,9 +68,25 @@ static int usage_error(const char *fmt, const char *arg)
     return 2;
 }
 
+/* s with its control bytes as \xNN: a message may quote a file's bytes
+ * (a token, an entity name, an OpenCASCADE message), and a binary file's
+ * escape sequences must not reach the terminal. */
+static void put_escaped(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c < 0x20 || c == 0x7f)
+            fprintf(f, "\\x%02x", c);
+        else
+            fputc(c, f);
+    }
+}
+
 static int fail(const sw_error *err)
 {
-    fprintf(stderr, "seamwalk-pack: %s\n", err->message);
+    fputs("seamwalk-pack: ", stderr);
+    put_escaped(stderr, err->message);
+    fputc('\n', stderr);
     return 1;
 }
 
@@ -418,7 +437,9 @@ static void print_tally(const char *name, const sw_import_tally *t, const char *
 {
     size_t listed = 0;
     for (size_t k = 0; k < t->kinds && k < SW_IMPORT_KINDS; k++) {
-        fprintf(stderr, "warning: %s: %zu x %s %s\n", name, t->count[k], t->kind[k], done);
+        fprintf(stderr, "warning: %s: %zu x ", name, t->count[k]);
+        put_escaped(stderr, t->kind[k]);
+        fprintf(stderr, " %s\n", done);
         listed += t->count[k];
     }
     if (t->total > listed)
@@ -509,6 +530,32 @@ static int parse_build(int argc, char **argv, build_options *o)
     return 0;
 }
 
+/* The output, checked before a build that may take minutes: not a
+ * directory, and its folder takes a new file (a probe created beside it,
+ * as the final write's temporary will be, and removed). */
+static sw_status check_output(const char *path, sw_error *err)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        return sw_error_set(err, SW_ERR_ARG, "%s: a directory, expected the pack's file name "
+                            "(-o)", path);
+    char probe[4200];
+    if (snprintf(probe, sizeof probe, "%s.tmp-XXXXXX", path) >= (int)sizeof probe)
+        return sw_error_set(err, SW_ERR_ARG, "%.200s...: the output's name is too long", path);
+    int fd = mkstemp(probe);
+    if (fd < 0) {
+        int e = errno;
+        const char *slash = strrchr(path, '/');
+        int dir_len = slash ? (int)(slash - path) : 1;
+        return sw_error_set(err, SW_ERR_IO, "%s: cannot write there (%.*s: %s); nothing was built",
+                            path, dir_len, slash ? (slash == path ? "/" : path) : ".",
+                            strerror(e));
+    }
+    close(fd);
+    unlink(probe);
+    return SW_OK;
+}
+
 static int cmd_build(int argc, char **argv)
 {
     build_options o = { .inputs = calloc((size_t)argc + 1, sizeof(char *)) };
@@ -519,6 +566,9 @@ static int cmd_build(int argc, char **argv)
         return fail(&(sw_error){SW_ERR_NO_MEMORY, "out of memory"});
     }
     int rc = parse_build(argc, argv, &o);
+    sw_error out_err = {0};
+    if (rc == 0 && check_output(o.out_path, &out_err) != SW_OK)
+        rc = fail(&out_err);
     if (rc == 0) {
         sw_model model;
         sw_model_init(&model);

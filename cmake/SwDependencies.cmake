@@ -19,6 +19,8 @@ pkg_check_modules(SODIUM REQUIRED IMPORTED_TARGET libsodium)   # ed25519 pack si
 pkg_check_modules(INIH REQUIRED IMPORTED_TARGET inih)          # showroom scene files, the config
 pkg_check_modules(HIDAPI REQUIRED IMPORTED_TARGET hidapi-hidraw)  # gamepads (sw_hid_hidapi.c)
 pkg_check_modules(GPIOD REQUIRED IMPORTED_TARGET libgpiod)     # GPIO buttons (sw_gpio_gpiod.c)
+pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)  # sd_notify: READY, WATCHDOG (sw_notify.c)
+pkg_check_modules(EVDEV REQUIRED IMPORTED_TARGET libevdev)    # the kiosk keyboard (sw_evdev_keys.c)
 
 # stb ships as headers (libstb-dev); we compile the implementations we use
 # ourselves so that allocation can be routed into the arena.

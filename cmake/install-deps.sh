@@ -21,6 +21,8 @@ packages=(
   libinih-dev                        # showroom scene files and the unit's config (INI)
   libhidapi-dev                      # gamepads and joysticks (hidapi-hidraw, firmware/sw_hid_hidapi.c)
   libgpiod-dev                       # GPIO buttons (libgpiod v1, firmware/sw_gpio_gpiod.c)
+  libsystemd-dev                     # sd_notify for the service: READY, WATCHDOG (firmware/sw_notify.c)
+  libevdev-dev                       # the kiosk keyboard, SYN_DROPPED resync (firmware/sw_evdev_keys.c)
   libsodium-dev                      # ed25519 signatures of packs (seamwalk-pack sign, seamwalk-flash)
   libgl-dev libglu1-mesa-dev         # the benchmark's reference: GLU's NURBS tessellator
   python3                            # tests read the stats JSON

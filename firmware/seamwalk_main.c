@@ -19,6 +19,7 @@
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "seamwalk_program.h"
@@ -213,7 +214,10 @@ static sw_status run_frame(sw_program *rt, uint64_t f, sw_error *err)
     if (rt->opt.png_dir && frame % rt->opt.png_every == 0 &&
         (st = write_png(rt, frame, err)) != SW_OK)
         return st;
-    return sw_display_present(rt->display, err);
+    if ((st = sw_display_present(rt->display, err)) != SW_OK)
+        return st;
+    sw_notify_frame(&rt->notify, sw_program_now_s());   /* READY=1 once it is shown */
+    return SW_OK;
 }
 
 /* The whole process's heap calls when tests/process_alloc_shim.so is
@@ -275,8 +279,11 @@ static sw_status walk(sw_program *rt, sw_error *err)
             if (s->loops == 1)
                 s->rss_first_loop_kb = s->rss_loop_kb[0];
         }
-        if (rt->opt.store_dir)
+        if (rt->opt.store_dir && !rt->boot.marked_good) {
             sw_boot_poll_good(&rt->boot, sw_program_now_s() - t0, rt->opt.good_after_s);
+            if (rt->boot.marked_good == 1)
+                sw_notify_status("slot %c marked good", sw_slot_letter(rt->boot.slot));
+        }
         if (rt->display->close_requested)
             break;   /* the window closed, or SIGTERM/SIGINT: end as if the walk were done */
     }
@@ -304,6 +311,7 @@ static sw_status show_message(sw_program *rt, sw_error *err)
             return st;
         if ((st = sw_display_present(rt->display, err)) != SW_OK)
             return st;
+        sw_notify_frame(&rt->notify, sw_program_now_s());
         if (rt->display->close_requested)
             break;
     }
@@ -315,7 +323,7 @@ static sw_status show_message(sw_program *rt, sw_error *err)
 static void store_stats(sw_program *rt)
 {
     sw_stats *s = &rt->stats;
-    if (rt->boot.trial && !rt->boot.marked_good)
+    if (rt->boot.trial && !rt->boot.marked_good && !rt->boot.no_picture)
         sw_boot_note(&rt->boot, "slot %c is still pending: it ran %.2f s of the %g s "
                      "(--good-after-s) before it is marked good", sw_slot_letter(rt->boot.slot),
                      s->walk_s, rt->opt.good_after_s);
@@ -350,12 +358,22 @@ static sw_status write_stats(sw_program *rt, sw_error *err)
     s->height = rt->opt.height;
     if (!rt->opt.stats_path)
         return SW_OK;
-    FILE *f = fopen(rt->opt.stats_path, "w");
+    /* The JSON in memory first (the walk is over: allocating is allowed),
+     * then written whole or not at all: a temporary beside it, fsynced and
+     * renamed over it, removed on any failure (a full disk left a 0-byte
+     * stats file that readers took for the run's). */
+    char *json = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&json, &size);
     if (!f)
-        return sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.stats_path, strerror(errno));
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: %s", rt->opt.stats_path,
+                            strerror(errno));
     sw_status st = sw_stats_write_json(s, f, &rt->arena, err);
     if (fclose(f) != 0 && st == SW_OK)
-        st = sw_error_set(err, SW_ERR_IO, "%s: %s", rt->opt.stats_path, strerror(errno));
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "%s: %s", rt->opt.stats_path, strerror(errno));
+    if (st == SW_OK && (st = sw_store_write_atomic(rt->opt.stats_path, json, size, err)) != SW_OK)
+        sw_error_prefix(err, "stats");
+    free(json);
     return st;
 }
 
@@ -399,6 +417,21 @@ static void print_summary(const sw_program *rt)
         printf("seamwalk: stats in %s\n", rt->opt.stats_path);
 }
 
+/* What runs, for `systemctl status` (READY=1 follows with the first frame). */
+static void say_status(const sw_program *rt)
+{
+    const char *display = sw_display_kind_name(rt->display->kind);
+    if (rt->no_pack)
+        sw_notify_status("NO VALID PACK on %s (journalctl -u seamwalk says why)", display);
+    else if (rt->opt.store_dir)
+        sw_notify_status("walking slot %c (%s) on %s %dx%d", sw_slot_letter(rt->boot.slot),
+                         rt->boot.trial ? "pending, on trial" : "good", display,
+                         rt->display->width, rt->display->height);
+    else
+        sw_notify_status("walking %s (unsigned, --pack) on %s %dx%d", rt->opt.pack_path,
+                         display, rt->display->width, rt->display->height);
+}
+
 int main(int argc, char **argv)
 {
     static sw_program rt;
@@ -421,7 +454,11 @@ int main(int argc, char **argv)
     sigaction(SIGINT, &stop_walk_on, NULL);
     /* A batch's worth of scene (sw_gl_pool.h) as the heap's steps. */
     sw_heap_keep((size_t)rt.opt.batch_tris * SW_GL_POOL_SCENE_BYTES_PER_TRIANGLE);
+    sw_notify_status("starting");
     st = sw_program_start(&rt, &err);
+    sw_notify_init(&rt.notify);
+    if (st == SW_OK)
+        say_status(&rt);
     if (st == SW_OK)
         st = rt.no_pack ? show_message(&rt, &err) : walk(&rt, &err);
     if (st == SW_OK)

@@ -11,6 +11,7 @@
 
 #include "sw_arena.h"
 #include "sw_boot.h"
+#include "sw_notify.h"
 #include "sw_camera_path.h"
 #include "sw_display.h"
 #include "sw_error.h"
@@ -62,6 +63,7 @@ typedef struct sw_program {
     double mark_s;            /* the GL thread's start steps: the end of the last one timed */
     double display_ms, gl_ms, load_wait_ms;   /* its steps, kept across sw_stats_init */
     sw_boot boot;             /* with --store: the slot being started, mark-good */
+    sw_notify notify;         /* systemd's READY, WATCHDOG and STATUS (sw_notify.h) */
     int loading_slot;         /* with --store: the slot start() loads */
     int no_pack;              /* with --store: no slot started; the message screen runs */
     sw_kiosk_run kiosk;       /* with --navigate or --input-timeline */

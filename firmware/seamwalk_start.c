@@ -509,6 +509,8 @@ static sw_status start_from_store(sw_program *rt, sw_error *err)
         sw_error slot_err = { 0 };
         if (start_pack(rt, &slot_err) == SW_OK) {
             sw_boot_started(&rt->boot, slots[i]);
+            if (rt->display->kind == SW_DISPLAY_KIND_HEADLESS)
+                sw_boot_no_picture(&rt->boot, "the display is headless (no screen shows it)");
             return SW_OK;
         }
         sw_boot_note(&rt->boot, "slot %c does not start: %s", sw_slot_letter(slots[i]),

@@ -74,9 +74,17 @@ void sw_boot_started(sw_boot *b, int slot)
                  s->name, s->version, kind);
 }
 
+void sw_boot_no_picture(sw_boot *b, const char *why)
+{
+    b->no_picture = why;
+    if (b->trial)
+        sw_boot_note(b, "slot %c stays pending: %s, so no frame shows that it works",
+                     sw_slot_letter(b->slot), why);
+}
+
 void sw_boot_poll_good(sw_boot *b, double healthy_s, double good_after_s)
 {
-    if (!b->trial || b->marked_good || healthy_s < good_after_s)
+    if (!b->trial || b->marked_good || b->no_picture || healthy_s < good_after_s)
         return;
     sw_error err = { 0 };
     sw_status st = sw_store_mark_good(&b->store, b->slot, b->state.slot[b->slot].version, &err);

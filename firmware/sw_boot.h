@@ -22,6 +22,7 @@ typedef struct sw_boot {
     int slot;                          /* the slot running, SW_SLOT_NONE before or if none */
     int trial;                         /* the running slot is the pending one on trial */
     int marked_good;                   /* 1 marked, -1 marking failed (logged) */
+    const char *no_picture;            /* why frames prove nothing (headless): never marked good */
     char pack_path[3200];              /* the slot file being started */
     char log[2560];                    /* what the boot did, for the log and the stats */
 } sw_boot;
@@ -49,9 +50,14 @@ void sw_boot_started(sw_boot *b, int slot);
 /* Adds a line to the log (and stderr). */
 void sw_boot_note(sw_boot *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
+/* The frames show no picture (why: a headless display), so they prove
+ * nothing: a trial slot is never marked good in this run (its boot attempt
+ * stays counted). Logged once when the running slot is on trial. */
+void sw_boot_no_picture(sw_boot *b, const char *why);
+
 /* After a healthy frame, healthy_s seconds into the walk: marks a trial
  * slot good once healthy_s >= good_after_s (retried while the store is
- * busy). Allocates nothing. */
+ * busy), never after sw_boot_no_picture. Allocates nothing. */
 void sw_boot_poll_good(sw_boot *b, double healthy_s, double good_after_s);
 
 #endif

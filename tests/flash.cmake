@@ -55,9 +55,11 @@ set_tests_properties(test_flash_boot PROPERTIES FIXTURES_REQUIRED flash_packs SK
 
 # The parsers of the store's state file and journal, and of key files.
 sw_add_fuzz_target(fuzz_store SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_store.c
-  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store)
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store
+  DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/store.dict)
 sw_add_fuzz_target(fuzz_keys SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_keys.c
-  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys)
+  LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys
+  DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/keys.dict)
 
 # No store fault stops a boot, and boot-check agrees with it: each fault
 # the unit's user can meet (a root lock, a read-only store or mount, an
@@ -83,3 +85,11 @@ add_test(NAME test_flash_keys COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flas
          $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-flash> ${SW_FLASH_FIXTURE}
          ${CMAKE_CURRENT_BINARY_DIR}/flash_keys)
 set_tests_properties(test_flash_keys PROPERTIES FIXTURES_REQUIRED flash_packs SKIP_RETURN_CODE 77)
+
+# Caps and early checks (issue 25, item 7): the 200,000-face STEP shell,
+# the output checked before the build, directories named like models,
+# control bytes escaped, no partial pack or stats on a full disk (the
+# fault shim's).
+add_test(NAME test_early_checks COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_early_checks.sh
+         $<TARGET_FILE:seamwalk-pack> $<TARGET_FILE:seamwalk> $<TARGET_FILE:flash_fault_shim>
+         ${SW_SAMPLES} ${CMAKE_CURRENT_BINARY_DIR}/early_checks)

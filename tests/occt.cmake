@@ -16,3 +16,14 @@ if(SW_OCCT_FOUND)
     ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/occt-lsan.supp:print_suppressions=0")
   sw_host_only_test(test_import_occt_truncations PROGRAMS test_import_occt)
 endif()
+
+# A STEP file through the OpenCASCADE importer, in-process (its time and
+# memory capped by run-fuzzers.sh). OCCT's singletons never freed: leaks
+# are not checked here (occt-lsan.supp covers the tests').
+if(SW_OCCT_FOUND)
+  sw_add_fuzz_target(fuzz_step_occt SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_step_occt.c
+    LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/step_occt
+    DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/step.dict MODELS stp step)
+  set_tests_properties(fuzz_step_occt_replay PROPERTIES ENVIRONMENT
+    "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/occt-lsan.supp:print_suppressions=0")
+endif()

@@ -24,13 +24,21 @@ static int same_values(const sw_config *a, const sw_config *b)
     return memcmp(&x, &y, sizeof x) == 0;
 }
 
-static void example_loads_and_is_the_defaults(void)
+/* The shipped config is the defaults but for what the service needs: the
+ * unit's store and the KMS display (never auto, which could fall back to a
+ * headless walk nobody sees). */
+static void example_loads_and_is_the_defaults_but_store_and_kms(void)
 {
     sw_config cfg, def;
     sw_error err = {0};
     sw_config_defaults(&def);
     sw_status st = sw_config_load(example_path, &cfg, &err);
     SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    SW_CHECK(cfg.display == SW_DISPLAY_KMS);
+    SW_CHECK_MSG(!strcmp(cfg.store, "/var/lib/seamwalk/store"), "store = '%s'", cfg.store);
+    SW_CHECK(cfg.pack[0] == '\0');
+    def.display = SW_DISPLAY_KMS;
+    snprintf(def.store, sizeof def.store, "%s", "/var/lib/seamwalk/store");
     SW_CHECK(same_values(&cfg, &def));
     /* Every key but size (no default) is written out in the example. */
     static const char *const keys[] = {
@@ -476,7 +484,7 @@ int main(int argc, char **argv)
     }
     example_path = argv[1];
     SW_RUN(kiosk_input_keys_have_file_line_errors);
-    SW_RUN(example_loads_and_is_the_defaults);
+    SW_RUN(example_loads_and_is_the_defaults_but_store_and_kms);
     SW_RUN(example_gpio_block_uncommented_is_the_gpio_defaults);
     SW_RUN(empty_file_is_the_defaults);
     SW_RUN(empty_pack_beside_store_is_no_pack);

@@ -4,21 +4,32 @@
 # never runs healthy, gets K boots and then the unit falls back to the good
 # slot and says so; boots of the good slot are never counted, so repeated
 # power cuts cannot use it up; a unit with no valid slot shows the message
-# screen (its PNG read back here) instead of a black display.
+# screen (its PNG read back here) instead of a black display. The unit
+# shows its frames on a display, here an X11 window on Xvfb: a headless
+# walk shows nobody anything, so it never marks a pending slot good.
 #   test_flash_boot.sh SEAMWALK SEAMWALK_FLASH FAULT_SHIM FIXTURE WORK
 set -uo pipefail
 if [ "$(id -u)" != 0 ]; then  # the unit's trusted keys must be root's (firmware/STORE.md)
   echo "skipped: needs root, for trusted keys owned by root"
   exit 77
 fi
+command -v Xvfb >/dev/null || { echo "skipped: Xvfb is not installed (Debian: xvfb)"; exit 77; }
 walker=$1 flash=$2 shim=$3 fixture=$4 work=$5
 rm -rf "$work" && mkdir -p "$work"
+Xvfb -displayfd 5 -screen 0 640x480x24 -nolisten tcp 5>"$work/display" 2>"$work/xvfb.log" &
+xvfb=$!
+trap 'kill "$xvfb" 2>/dev/null; wait "$xvfb" 2>/dev/null' EXIT
+for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
+[ -s "$work/display" ] || { echo "FAIL: Xvfb did not start: $(cat "$work/xvfb.log")"; exit 1; }
+export DISPLAY=:$(tr -d '\n' <"$work/display")
+unset WAYLAND_DISPLAY
 unit=$work/unit
 keys=$fixture/keys cfg=$fixture/unit.ini
 failures=0 checks=0
 check() { checks=$((checks + 1)); if ! "${@:2}"; then echo "FAIL: $1"; failures=$((failures + 1)); fi; }
+display=(--display x11 --size 160x120)
 boot() {  # boot ARGS...: one boot of the unit; its exit code in $work/rc, its log in $work/log
-  "$walker" --store "$unit" --keys "$keys" --headless 160x120 --orbit --frames 3 \
+  "$walker" --store "$unit" --keys "$keys" "${display[@]}" --orbit --frames 3 \
     --stats "$work/stats.json" "$@" >"$work/log" 2>&1
   echo $? >"$work/rc"
 }
@@ -70,11 +81,22 @@ print(f"message frame {w}x{h}: {bg} background, {text} text, {len(pixels) - bg -
 sys.exit(0 if bg > len(pixels) // 2 and text > len(pixels) // 50 and bg + text == len(pixels) else 1)
 EOF
 
-# ---- a pending slot is marked good after healthy frames ----------------------------
+# ---- headless: frames nobody sees never mark a pending slot good ----------------------
 "$flash" install --store "$unit" --config "$cfg" --quiet "$fixture/old.swpack" >/dev/null
+display=(--headless 160x120)
+boot --good-after-s 0
+display=(--display x11 --size 160x120)
+check "headless: runs" rc 0
+check "headless: on trial" logged "starting slot A ('spoon-1' version 1), pending: boot attempt 1"
+check "headless: says why it stays pending" logged "slot A stays pending: the display is headless"
+check "headless: not marked good" not_logged "ran healthy for .* s: marked good"
+check "headless: the stats say not marked" stat_is marked_good 0
+check "headless: the state still says pending" state "pending: A (1 boots so far)"
+
+# ---- a pending slot is marked good after healthy frames ----------------------------
 boot --good-after-s 0
 check "first pack: runs" rc 0
-check "first pack: on trial" logged "starting slot A ('spoon-1' version 1), pending: boot attempt 1"
+check "first pack: on trial" logged "starting slot A ('spoon-1' version 1), pending: boot attempt 2"
 check "first pack: marked good" logged "slot A ran healthy for .* s: marked good"
 check "first pack: stats" stat_is marked_good 1
 check "no heap calls after start, mark-good included" python3 -c \

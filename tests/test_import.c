@@ -392,7 +392,10 @@ static void newell_missing_file_is_an_io_error(void)
     sw_error err = {0};
     check_error(sw_import_newell_file("no/such/teapot.txt", &m, &err), &err, SW_ERR_IO,
                 "no/such/teapot.txt", "cannot open");
-    check_error(sw_import_newell_file(".", &m, &err), &err, SW_ERR_IO, ".", "not a regular");
+    check_error(sw_import_newell_file(".", &m, &err), &err, SW_ERR_IO, ".",
+                "a directory, not a file");
+    check_error(sw_import_newell_file("/dev/null", &m, &err), &err, SW_ERR_IO, "/dev/null",
+                "not a regular file");
     sw_model_free(&m);
 }
 

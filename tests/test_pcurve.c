@@ -3,6 +3,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <time.h>
 
 #include "sw_pcurve.h"
 #include "sw_test.h"
@@ -110,18 +112,67 @@ static int lifted_target(void *user, double t, sw_vec3 *p, double uv[2])
     return 0;
 }
 
-static void test_fit_of_curve_off_the_surface(void)
+/* A fit of target (on the wavy surface, t in [0, 2 pi]) within tol. */
+static sw_status fit_on_wavy(int (*target)(void *, double, sw_vec3 *, double *), double tol,
+                             sw_pcurve_result *fit, sw_error *err)
 {
     sw_nurbs_surface s = wavy();
     sw_pcurve_surface ps;
     SW_CHECK(sw_pcurve_surface_init(&ps, &s, NULL) == SW_OK);
-    sw_pcurve_target tg = {lifted_target, &s, 0.0, 2 * SW_PI};
+    sw_pcurve_target tg = {target, &s, 0.0, 2 * SW_PI};
+    sw_status st = sw_pcurve_fit(&ps, &tg, tol, fit, err);
+    sw_pcurve_surface_free(&ps);
+    return st;
+}
+
+static void test_fit_of_curve_off_the_surface(void)
+{
     sw_pcurve_result fit;
     sw_error err = {0};
-    SW_CHECK_MSG(sw_pcurve_fit(&ps, &tg, 1e-3, &fit, &err) == SW_OK, "%s", err.message);
+    SW_CHECK_MSG(fit_on_wavy(lifted_target, 1e-3, &fit, &err) == SW_OK, "%s", err.message);
     SW_CHECK(fit.max_gap > 0.5 && fit.max_gap < 1.0 + 1e-9);
     sw_pcurve_result_free(&fit);
-    sw_pcurve_surface_free(&ps);
+}
+
+/* A curve 1 above the surface that swings across it 2,000 times: no cubic fit
+ * and no polyline of up to 4,096 points follows it. The fit gives up at
+ * its evaluation limit with a clear error, fast, instead of trying every
+ * size to the end (issue 25: the slow p-curve fit). */
+static int wild_target(void *user, double t, sw_vec3 *p, double uv[2])
+{
+    const sw_nurbs_surface *s = user;
+    *p = sw_nurbs_surface_point(s, 1.0 + 0.6 * cos(t), 0.5 + 0.45 * sin(2000 * t));
+    p->z += 1.0;   /* off the surface: no inversion is accepted at once */
+    (void)uv;
+    return 0;
+}
+
+static void test_fit_gives_up_at_its_limit(void)
+{
+    sw_pcurve_result fit;
+    sw_error err = {0};
+    clock_t c0 = clock();
+    sw_status st = fit_on_wavy(wild_target, 1e-6, &fit, &err);
+    double cpu_s = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    printf("wild curve: %s after %ld evaluations, %.3f s: %s\n", st == SW_OK ? "fitted" : "refused",
+           fit.evals, cpu_s, err.message);
+    SW_CHECK(st == SW_ERR_RANGE);
+    SW_CHECK_MSG(strstr(err.message, "gave up after") != NULL, "%s", err.message);
+    /* past the limit by less than one inversion's worth: two Newton runs of
+     * 40 steps with 12 halvings each and a grid scan */
+    SW_CHECK(fit.evals > SW_PCURVE_FIT_MAX_EVALS && fit.evals < SW_PCURVE_FIT_MAX_EVALS + 1200);
+    SW_CHECK_MSG(cpu_s < 0.5, "%.3f s", cpu_s);
+    SW_CHECK(fit.knots == NULL && fit.ctrl == NULL);
+}
+
+/* The fits the importers make stay far below the limit. */
+static void test_good_fits_stay_below_the_limit(void)
+{
+    sw_pcurve_result fit;
+    SW_CHECK(fit_on_wavy(circle_target, 1e-6, &fit, NULL) == SW_OK);
+    printf("circle at 1e-6: %ld evaluations, %d points\n", fit.evals, fit.count);
+    SW_CHECK_MSG(fit.evals < SW_PCURVE_FIT_MAX_EVALS / 10, "%ld", fit.evals);
+    sw_pcurve_result_free(&fit);
 }
 
 int main(void)
@@ -130,5 +181,7 @@ int main(void)
     SW_RUN(test_inversion_of_offset_points);
     SW_RUN(test_fit_within_tolerance);
     SW_RUN(test_fit_of_curve_off_the_surface);
+    SW_RUN(test_fit_gives_up_at_its_limit);
+    SW_RUN(test_good_fits_stay_below_the_limit);
     return sw_test_finish();
 }

@@ -169,11 +169,20 @@ static void bound_step(const sw_surface_point *sp, sw_vec3 r, const double uv[2]
     step[k] = h > 0 ? -g / h : a > 0 ? -g / a : 0;
 }
 
-static double newton(const sw_pcurve_surface *ps, sw_vec3 p, double uv[2])
+/* Surface evaluations spent so far, counted against a fit's limit
+ * (SW_PCURVE_FIT_MAX_EVALS); NULL counts nothing. */
+static void spend(long *evals, long n)
+{
+    if (evals)
+        *evals += n;
+}
+
+static double newton(const sw_pcurve_surface *ps, sw_vec3 p, double uv[2], long *evals)
 {
     const double *d = ps->domain;
     sw_surface_point sp;
     sw_pcurve_surface_eval(ps, uv[0], uv[1], SW_EVAL_SECOND, &sp);
+    spend(evals, 1);
     double best = sw_v3_length(sw_v3_sub(sp.p, p));
     for (int it = 0; it < 40 && best > 1e-15 * ps->size; it++) {
         double step[2];
@@ -186,6 +195,7 @@ static double newton(const sw_pcurve_surface *ps, sw_vec3 p, double uv[2])
             trial[0] = clampd(uv[0] + lambda * step[0], d[0], d[1]);
             trial[1] = clampd(uv[1] + lambda * step[1], d[2], d[3]);
             dist = dist_at(ps, p, trial);
+            spend(evals, 1);
             improved = dist < best;
         }
         if (!improved)
@@ -197,6 +207,7 @@ static double newton(const sw_pcurve_surface *ps, sw_vec3 p, double uv[2])
         if (moved < 1e-14 * ps->size)
             break;
         sw_pcurve_surface_eval(ps, uv[0], uv[1], SW_EVAL_SECOND, &sp);
+        spend(evals, 1);
     }
     return best;
 }
@@ -217,25 +228,34 @@ static void grid_start(const sw_pcurve_surface *ps, sw_vec3 p, double uv[2])
     uv[1] = ps->domain[2] + (ps->domain[3] - ps->domain[2]) * bj / (ps->grid_v - 1);
 }
 
-double sw_pcurve_invert(const sw_pcurve_surface *ps, sw_vec3 p, const double *start,
-                        double accept, double uv[2])
+/* sw_pcurve_invert, its evaluations counted (the grid's scan as one
+ * evaluation per 64 grid points: about what it costs). */
+static double invert(const sw_pcurve_surface *ps, sw_vec3 p, const double *start, double accept,
+                     double uv[2], long *evals)
 {
     double best = INFINITY;
     if (start) {
         uv[0] = clampd(start[0], ps->domain[0], ps->domain[1]);
         uv[1] = clampd(start[1], ps->domain[2], ps->domain[3]);
-        best = newton(ps, p, uv);
+        best = newton(ps, p, uv, evals);
         if (best <= accept)
             return best;
     }
     double alt[2];
     grid_start(ps, p, alt);
-    double d = newton(ps, p, alt);
+    spend(evals, 1 + ps->grid_u * ps->grid_v / 64);
+    double d = newton(ps, p, alt, evals);
     if (d < best) {
         uv[0] = alt[0], uv[1] = alt[1];
         best = d;
     }
     return best;
+}
+
+double sw_pcurve_invert(const sw_pcurve_surface *ps, sw_vec3 p, const double *start,
+                        double accept, double uv[2])
+{
+    return invert(ps, p, start, accept, uv, NULL);
 }
 
 /* ---- fitting ---------------------------------------------------------- */
@@ -246,13 +266,14 @@ enum { FIT_MAX_CTRL = 256, POLY_MAX_POINTS = 4096 };
  * of that point from the surface. warm carries the previous answer along the
  * curve so neighbouring samples stay on the same side of a seam. */
 static double sample_uv(const sw_pcurve_surface *ps, const sw_pcurve_target *tg, double t,
-                        double tol, double warm[2], int *have_warm, sw_vec3 *p, double uv[2])
+                        double tol, double warm[2], int *have_warm, sw_vec3 *p, double uv[2],
+                        long *evals)
 {
     if (tg->eval(tg->user, t, p, uv)) {
         warm[0] = uv[0], warm[1] = uv[1], *have_warm = 1;
         return 0.0;
     }
-    double gap = sw_pcurve_invert(ps, *p, *have_warm ? warm : NULL, 0.01 * tol, uv);
+    double gap = invert(ps, *p, *have_warm ? warm : NULL, 0.01 * tol, uv, evals);
     warm[0] = uv[0], warm[1] = uv[1], *have_warm = 1;
     return gap;
 }
@@ -415,7 +436,16 @@ typedef struct fit_samples {
     int n;
     double *t, *uv;
     double max_gap;
+    long evals;          /* surface evaluations spent on this fit */
 } fit_samples;
+
+static sw_status over_budget(const fit_samples *s, sw_error *err)
+{
+    return sw_error_set(err, SW_ERR_RANGE,
+                        "pcurve fit: gave up after %ld surface evaluations (the limit is %ld): "
+                        "the curve does not follow the surface closely enough to fit",
+                        s->evals, (long)SW_PCURVE_FIT_MAX_EVALS);
+}
 
 static sw_status take_samples(const sw_pcurve_surface *ps, const sw_pcurve_target *tg,
                               double tol, int n, fit_samples *s, sw_error *err)
@@ -429,9 +459,12 @@ static sw_status take_samples(const sw_pcurve_surface *ps, const sw_pcurve_targe
     double warm[2] = {0, 0};
     int have_warm = 0;
     for (int i = 0; i < n; i++) {
+        if (s->evals > SW_PCURVE_FIT_MAX_EVALS)
+            return over_budget(s, err);
         sw_vec3 p;
         s->t[i] = i == n - 1 ? tg->t1 : tg->t0 + (tg->t1 - tg->t0) * i / (n - 1);
-        double gap = sample_uv(ps, tg, s->t[i], tol, warm, &have_warm, &p, s->uv + 2 * i);
+        double gap = sample_uv(ps, tg, s->t[i], tol, warm, &have_warm, &p, s->uv + 2 * i,
+                               &s->evals);
         if (gap > s->max_gap)
             s->max_gap = gap;
     }
@@ -441,22 +474,22 @@ static sw_status take_samples(const sw_pcurve_surface *ps, const sw_pcurve_targe
 /* The worst excess of |S(c(t)) - C(t)| over C's own distance from the
  * surface, at checks points spread evenly over [t0, t1]. */
 static double fit_error(const sw_pcurve_surface *ps, const sw_pcurve_target *tg, double tol,
-                        const sw_pcurve_result *c, int checks, double *max_gap)
+                        const sw_pcurve_result *c, int checks, fit_samples *s)
 {
     double worst = 0.0;
-    for (int i = 0; i < checks; i++) {
+    for (int i = 0; i < checks && s->evals <= SW_PCURVE_FIT_MAX_EVALS; i++) {
         double t = tg->t0 + (tg->t1 - tg->t0) * i / (checks - 1);
         sw_vec3 fuv = curve_uv(c, t), p;
         double warm[2] = {fuv.x, fuv.y}, uv[2];
         int have_warm = 1;
-        double gap = sample_uv(ps, tg, t, tol, warm, &have_warm, &p, uv);
+        double gap = sample_uv(ps, tg, t, tol, warm, &have_warm, &p, uv, &s->evals);
         sw_surface_point on;
         sw_pcurve_surface_eval(ps, fuv.x, fuv.y, SW_EVAL_POINT, &on);
         double e = sw_v3_length(sw_v3_sub(on.p, p)) - gap;
         if (!(e <= worst))
             worst = e;   /* NaN counts as the worst */
-        if (gap > *max_gap)
-            *max_gap = gap;
+        if (gap > s->max_gap)
+            s->max_gap = gap;
     }
     return worst;
 }
@@ -470,7 +503,11 @@ static sw_status try_fits(const sw_pcurve_surface *ps, const sw_pcurve_target *t
             st = lsq_cubic(n, s->n, s->t, s->uv, tg->t0, tg->t1, out, err);
         if (st != SW_OK)
             return st;
-        *worst = fit_error(ps, tg, tol, out, 4 * s->n + 1, &s->max_gap);
+        *worst = fit_error(ps, tg, tol, out, 4 * s->n + 1, s);
+        if (s->evals > SW_PCURVE_FIT_MAX_EVALS) {
+            sw_pcurve_result_free(out);
+            return over_budget(s, err);
+        }
         if (*worst <= tol)
             return SW_OK;
         sw_pcurve_result_free(out);
@@ -481,7 +518,11 @@ static sw_status try_fits(const sw_pcurve_surface *ps, const sw_pcurve_target *t
             st = polyline(s->n, s->t, s->uv, out, err);
         if (st != SW_OK)
             return st;
-        *worst = fit_error(ps, tg, tol, out, 2 * s->n + 1, &s->max_gap);
+        *worst = fit_error(ps, tg, tol, out, 2 * s->n + 1, s);
+        if (s->evals > SW_PCURVE_FIT_MAX_EVALS) {
+            sw_pcurve_result_free(out);
+            return over_budget(s, err);
+        }
         if (*worst <= tol)
             return SW_OK;
         sw_pcurve_result_free(out);
@@ -501,10 +542,11 @@ sw_status sw_pcurve_fit(const sw_pcurve_surface *ps, const sw_pcurve_target *tg,
                             tg->t1);
     if (!(tol > 0))
         return sw_error_set(err, SW_ERR_ARG, "pcurve fit: tolerance %g, expected > 0", tol);
-    fit_samples s = {0, NULL, NULL, 0.0};
+    fit_samples s = {0, NULL, NULL, 0.0, 0};
     double worst = INFINITY;
     sw_status st = try_fits(ps, tg, tol, &s, out, &worst, err);
     free(s.t);
+    out->evals = s.evals;
     if (st == SW_OK)
         out->max_error = worst > 0 ? worst : 0, out->max_gap = s.max_gap;
     return st;

@@ -90,15 +90,34 @@ static inline const char *sw_scan_peek(sw_text_scan *s, size_t *len)
     return s->p;
 }
 
-/* Describes the token at p for a message: "'abc'" or "the end of the line". */
+/* bytes[0..len) for a message, into out (NUL-terminated, cut to cap):
+ * printable ASCII as it is, every other byte as \xNN, so a binary file
+ * never sends control bytes (escape sequences, a bell) to the terminal. */
+static inline void sw_text_escape(const char *bytes, size_t len, char *out, size_t cap)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < len && n + 5 <= cap; i++) {
+        unsigned char c = (unsigned char)bytes[i];
+        if (c >= 0x20 && c < 0x7f && c != '\\')
+            out[n++] = (char)c;
+        else
+            n += (size_t)snprintf(out + n, cap - n, "\\x%02x", c);
+    }
+    if (cap > 0)
+        out[n < cap ? n : cap - 1] = '\0';
+}
+
+/* Describes the token at p for a message: "'abc'" or "the end of the line";
+ * bytes other than printable ASCII shown as \xNN. */
 static inline const char *sw_scan_describe(sw_text_scan *s, char *buf, size_t buf_size)
 {
     size_t len;
     const char *tok = sw_scan_peek(s, &len);
     if (len == 0)
         return sw_scan_at_eof(s) ? "the end of the file" : "the end of the line";
-    int shown = len > 24 ? 24 : (int)len;
-    snprintf(buf, buf_size, "'%.*s%s'", shown, tok, len > 24 ? "..." : "");
+    char shown[24 * 4 + 1];
+    sw_text_escape(tok, len > 24 ? 24 : len, shown, sizeof shown);
+    snprintf(buf, buf_size, "'%s%s'", shown, len > 24 ? "..." : "");
     return buf;
 }
 
@@ -119,7 +138,7 @@ static inline size_t sw_scan_copy_token(sw_text_scan *s, char buf[SW_SCAN_TOKEN_
 static inline sw_status sw_scan_fail(sw_text_scan *s, sw_error *err, sw_status status,
                                      const char *what)
 {
-    char buf[48];
+    char buf[112];
     const char *found = sw_scan_describe(s, buf, sizeof buf);
     return sw_error_set(err, status, "%s:%ld:%ld: expected %s, found %s", s->file, s->line,
                         sw_scan_column(s), what, found);
@@ -170,7 +189,7 @@ static inline sw_status sw_scan_long(sw_text_scan *s, long *out, long lo, long h
 static inline sw_status sw_scan_end_line(sw_text_scan *s, const char *after, sw_error *err)
 {
     if (!sw_scan_at_eol(s)) {
-        char buf[48];
+        char buf[112];
         const char *found = sw_scan_describe(s, buf, sizeof buf);
         return sw_error_set(err, SW_ERR_FORMAT,
                             "%s:%ld:%ld: expected the end of the line after %s, found %s",
@@ -194,7 +213,8 @@ static inline sw_status sw_read_whole_file(const char *path, char **out, size_t 
     struct stat st;
     if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
         fclose(f);
-        return sw_error_set(err, SW_ERR_IO, "%s: not a regular file", path);
+        return sw_error_set(err, SW_ERR_IO, "%s: %s", path,
+                            S_ISDIR(st.st_mode) ? "a directory, not a file" : "not a regular file");
     }
     size_t cap = 1 << 16, size = 0;
     char *buf = malloc(cap);

@@ -10,12 +10,12 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <xxhash.h>
 
 #include "sw_border_strip.h"
 #include "sw_pack.h"
 #include "sw_pack_signature.h"
 #include "../parts_backwards.h"
+#include "fuzz_reseal.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -142,35 +142,11 @@ static void walk(const sw_pack *pack)
     sink = sum + walk_trims(pack) + walk_scene(pack) + walk_seam(pack) + walk_levels(pack);
 }
 
-/* Recomputes what it can: section checksums whose ranges lie in the buffer,
- * then the header checksum if the table fits. Touches nothing else. */
-static void reseal(uint8_t *buf, size_t size)
-{
-    sw_pack_header h;
-    memcpy(&h, buf, sizeof h);
-    if (h.section_count > SW_PACK_MAX_SECTIONS || 64 + (size_t)h.section_count * 32 > size)
-        return;
-    for (uint32_t i = 0; i < h.section_count; i++) {
-        sw_pack_section s;
-        memcpy(&s, buf + 64 + (size_t)i * 32, sizeof s);
-        if (s.offset <= size && s.size <= size - s.offset) {
-            s.checksum = XXH3_64bits(buf + s.offset, (size_t)s.size);
-            memcpy(buf + 64 + (size_t)i * 32, &s, sizeof s);
-        }
-    }
-    h.header_checksum = 0;
-    memcpy(buf, &h, sizeof h);
-    h.header_checksum = XXH3_64bits(buf, 64 + (size_t)h.section_count * 32);
-    memcpy(buf, &h, sizeof h);
-}
-
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    uint8_t *buf = calloc(1, size ? size : 1); /* malloc family: aligned for any type */
+    uint8_t *buf = fuzz_copy(data, size);
     if (!buf)
         return 0;
-    if (size)
-        memcpy(buf, data, size);
     sw_pack pack;
     sw_error err;
     /* A unit checks the signature on the raw bytes before any parser runs

@@ -1,10 +1,21 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan+UBSan, the whole tree
-# coverage-instrumented) and runs each for SECONDS (default 30), as many at
-# once as there are cores, starting from a copy of its seed corpus so the
-# repository's seeds stay as they are.
-# A crash leaves its input in build-fuzz/crashes/ and fails the script.
+# coverage-instrumented, optimised: -O1 -g, asserts kept) and runs every
+# target the build defines (build-fuzz/fuzz-targets.txt, written by
+# tests/fuzz/fuzz.cmake), or those named, for SECONDS each (default 30), as
+# many at once as there are cores (SW_FUZZ_JOBS). Each target runs with
+# its dictionary (tests/fuzz/dict/) on a kept corpus: build-fuzz/corpus/NAME
+# (SW_FUZZ_CORPUS=DIR for another place, e.g. a CI cache), never emptied,
+# into which its repository seeds and the real model files of its formats
+# (SW_FUZZ_MODELS, default ../shared/models; up to 256 kB each, copied
+# there, never into the repository) are added, so each run starts where
+# the last one ended. Caps: 25 s an input and 2 GB (the STEP target
+# through OpenCASCADE: 60 s, 3 GB); an input past them is a finding.
+# A crash, a timeout or an out-of-memory leaves its input in
+# build-fuzz/crashes/ and fails the script. The last lines: executions
+# per target.
 #   bash tests/fuzz/run-fuzzers.sh [SECONDS] [TARGET...]
+#   bash tests/fuzz/run-fuzzers.sh 300       # the 5-minute local run, every target
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$top"
@@ -14,31 +25,49 @@ bash cmake/install-deps.sh
 export CMAKE_GENERATOR=${CMAKE_GENERATOR:-Ninja}
 seconds=${1:-30}
 shift || true
+jobs=${SW_FUZZ_JOBS:-$(nproc 2>/dev/null || echo 2)}
+corpus_root=${SW_FUZZ_CORPUS:-$top/build-fuzz/corpus}
+models=${SW_FUZZ_MODELS:-$top/../shared/models}
+
+# -O1 -g without NDEBUG: the code's asserts stay, and an IGES input that
+# took 70 s unoptimised runs at Release speed.
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSW_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" >/dev/null
+list=build-fuzz/fuzz-targets.txt
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_pack fuzz_newell fuzz_bpt fuzz_scene fuzz_camera_path fuzz_iges fuzz_store fuzz_keys fuzz_config)
+[ ${#targets[@]} -gt 0 ] || mapfile -t targets < <(awk '{print $1}' "$list")
+for t in "${targets[@]}"; do
+  grep -q "^$t " "$list" || { echo "run-fuzzers: no fuzz target $t in this build ($list)"; exit 2; }
+done
+cmake --build build-fuzz -j"$jobs" --target "${targets[@]}"
 
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSW_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null
-cmake --build build-fuzz -j"$(nproc 2>/dev/null || echo 2)" --target "${targets[@]}"
-
-# As many fuzzers at once as there are cores (a libFuzzer run is one process
-# on one core); each writes its own log, printed when it ends; a crash fails
-# the script.
 mkdir -p build-fuzz/crashes build-fuzz/logs
-fuzz_one() {  # fuzz_one TARGET
-  local t=$1 seeds=tests/fuzz/corpus/${1#fuzz_} work=build-fuzz/corpus/$1
-  rm -rf "$work" && mkdir -p "$work" && cp -r "$seeds"/. "$work"/
-  build-fuzz/tests/"$t" -max_total_time="$seconds" -print_final_stats=1 \
-    -artifact_prefix=build-fuzz/crashes/"$t"- "$work" > build-fuzz/logs/"$t".log 2>&1
+fuzz_one() {  # fuzz_one TARGET: its kept corpus grown, then fuzzed
+  local t=$1 seeds dict exts
+  read -r _ seeds dict exts < <(grep "^$t " "$list")
+  local work=$corpus_root/$t
+  mkdir -p "$work"
+  cp -rn "$seeds"/. "$work"/
+  if [ "$exts" != - ] && [ -d "$models" ]; then
+    for ext in ${exts//,/ }; do
+      find "$models" -maxdepth 1 -type f -iname "*.$ext" -size -257k -exec cp -n {} "$work"/ \;
+    done
+  fi
+  local flags=(-max_total_time="$seconds" -print_final_stats=1 -timeout=25 -rss_limit_mb=2048
+               -artifact_prefix=build-fuzz/crashes/"$t"-)
+  [ "$dict" = - ] || flags+=(-dict="$dict")
+  # OpenCASCADE: slower inputs, more memory, and singletons it never frees.
+  [ "$t" = fuzz_step_occt ] && flags+=(-timeout=60 -rss_limit_mb=3072 -detect_leaks=0)
+  build-fuzz/tests/"$t" "${flags[@]}" "$work" >build-fuzz/logs/"$t".log 2>&1
 }
-jobs=$(nproc 2>/dev/null || echo 2)
-failed=() running=()
+
+failed=() running=() pids=()
 report() {  # report INDEX: waits for running[INDEX], prints its log's tail
   local t=${running[$1]}
   wait "${pids[$1]}" || failed+=("$t")
   echo "fuzzed $t for ${seconds}s"
   tail -n 12 build-fuzz/logs/"$t".log
 }
-pids=()
 for t in "${targets[@]}"; do
   if [ ${#running[@]} -ge "$jobs" ]; then
     report 0
@@ -47,5 +76,12 @@ for t in "${targets[@]}"; do
   fuzz_one "$t" & pids+=($!) running+=("$t")
 done
 for i in "${!running[@]}"; do report "$i"; done
+
+echo "executions in ${seconds} s (corpus kept in $corpus_root):"
+for t in "${targets[@]}"; do
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' build-fuzz/logs/"$t".log | tail -1)
+  files=$(find "$corpus_root/$t" -type f | wc -l)
+  printf '  %-22s %12s executions, corpus %s files\n' "$t" "${runs:-?}" "$files"
+done
 [ ${#failed[@]} -eq 0 ] || { echo "fuzzers that failed: ${failed[*]} (inputs in build-fuzz/crashes/)"; exit 1; }
 echo "fuzzers ran without a crash"
