@@ -123,9 +123,9 @@ static void face_out(const sw_vertex *v, uint16_t *t)
 /* Where the strip joins one of the loop's points to a chain vertex at the
  * very same position (the front shows the vertex the level was made
  * with), the point is that vertex: same[j] its index, else the point's
- * own. So the strip's triangles of no area (a third of them, on the
- * 40,000-patch showroom's walk) repeat an index and are left out, and the
- * mesh's edges stay whole (every edge inside it used twice). */
+ * own. So the strip's triangles of no area (many: the front often shows
+ * the vertices the level was made with) repeat an index and are left out,
+ * and the mesh's edges stay whole (every edge inside it used twice). */
 static void join_same(sw_seam_standin *m, uint32_t count, uint32_t base, uint32_t tris,
                       const sw_vertex *v)
 {

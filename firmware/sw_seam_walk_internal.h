@@ -63,8 +63,8 @@ sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error 
 /* The schedule deferred (w->defer_schedule: V's own thread, workers on
  * their own, stand-ins drawing what is not made yet): V runs it after it
  * has handed frame k's plan to the GL thread, for frame k's targets, so
- * the front's move (tens to hundreds of milliseconds on a 40,000-patch
- * pack) no longer holds up the plan the GL thread waits for; its counts
+ * the front's move (a pass over the whole Seam Graph) no longer holds up
+ * the plan the GL thread waits for; its counts
  * go into w->deferred, and into frame k + 1's stats at that frame's
  * select (sw_seam_walk_take_deferred). The batch is then swapped in by
  * frame k + 1's plan at the soonest, as before. */

@@ -198,9 +198,8 @@ static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
  * at most log2(surfaces / 64) + 1 of them) until none is left out of view.
  * Those drawn in frames that have finished (most of them: they went out
  * of view a while ago) free their blocks at once, so the stand-in is tried
- * again now, not a frame later, in which a turn of the eye left hundreds
- * of surfaces undrawn (2,684 in one frame of the 40,000-patch courtyard,
- * with one round of 64). 1 when some went. */
+ * again now, not a frame later, in which a turn of the eye would leave
+ * hundreds of surfaces undrawn. 1 when some went. */
 static int make_room(sw_seam_walk *w, sw_seam_frame *frame)
 {
     if (w->standin_evicted != w->frame)

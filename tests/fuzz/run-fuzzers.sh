@@ -59,7 +59,7 @@ fuzz_one() {  # fuzz_one TARGET: its kept corpus grown, then fuzzed
   # OpenCASCADE: slower inputs, more memory, and singletons it never frees:
   # no leak check per input, and at exit its own allocations suppressed
   # (tests/occt-lsan.supp: without them the run ends in a leak report of
-  # its ~3 kB of singletons, and fails, however clean the inputs were).
+  # those singletons, and fails, however clean the inputs were).
   local lsan=${LSAN_OPTIONS:-}
   if [ "$t" = fuzz_step_occt ]; then
     flags+=(-timeout=60 -rss_limit_mb=3072 -detect_leaks=0)
