@@ -13,6 +13,10 @@
  * price of the overlap. P waits for V only when V's plan is not ready when
  * P has finished the previous frame: V's work is then the frame's bound,
  * and the stats say so (plan_wait_ms). P never waits for the workers.
+ * With stand-ins (the pack's static levels) V moves the seams and opens
+ * the next batch after it has posted plan i, while P draws it
+ * (sw_seam_walk_schedule_deferred), so that move is not in the plan's
+ * time.
  *
  * sync (the walk's sync_work, tests): V plans frame i only once P has
  * finished frame i-1, so every retired mesh is free again as in a walk

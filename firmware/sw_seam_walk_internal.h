@@ -64,10 +64,10 @@ sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error 
  * their own, stand-ins drawing what is not made yet): V runs it after it
  * has handed frame k's plan to the GL thread, for frame k's targets, so
  * the front's move (a pass over the whole Seam Graph) no longer holds up
- * the plan the GL thread waits for; its counts
- * go into w->deferred, and into frame k + 1's stats at that frame's
- * select (sw_seam_walk_take_deferred). The batch is then swapped in by
- * frame k + 1's plan at the soonest, as before. */
+ * the plan the GL thread waits for; its counts go into w->deferred, and
+ * into frame k + 1's stats at that frame's select
+ * (sw_seam_walk_take_deferred). The batch is then swapped in by frame
+ * k + 1's plan at the soonest, as before. */
 sw_status sw_seam_walk_schedule_deferred(sw_seam_walk *w, sw_error *err);
 void sw_seam_walk_take_deferred(sw_seam_walk *w, sw_seam_frame *frame);
 
