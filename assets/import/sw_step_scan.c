@@ -121,7 +121,8 @@ static sw_status check_repeats(step_reader *r, long n, long id, const char *kw, 
         r->ids[2 * i] = r->ids[i];
         r->ids[2 * i + 1] = i;
     }
-    qsort(r->ids, (size_t)n, 2 * sizeof(long), cmp_pair);
+    if (n > 1)   /* qsort's array may not be NULL, even for none */
+        qsort(r->ids, (size_t)n, 2 * sizeof(long), cmp_pair);
     /* Each run of one id holds its positions in order: its second is where
      * it is listed again; the earliest of those is reported. */
     long best = -1, face = 0, first = 0, times = 0;

@@ -442,7 +442,8 @@ static sw_status assemble(builder *b, sw_levels_built *out, sw_error *err)
 {
     made_level *m = b->made.data;
     uint32_t n = b->pack->seam.surface_count, total = 0, at = 0;
-    qsort(m, b->made.count, sizeof *m, by_surface_then_rank);
+    if (b->made.count > 1)   /* none made: m is NULL, which qsort may not take */
+        qsort(m, b->made.count, sizeof *m, by_surface_then_rank);
     size_t verts = 0, idx = 0, chains = 0, points = 0;
     uint32_t *first = calloc((size_t)n + 2, sizeof *first);
     if (!first)

@@ -35,7 +35,8 @@ static int compare_keys(const void *x, const void *y)
 static sw_status rows_from_keys(pair_list *l, uint32_t surface_count, sw_surface_adjacency *out,
                                 sw_error *err)
 {
-    qsort(l->keys, (size_t)l->count, sizeof *l->keys, compare_keys);
+    if (l->count > 1)   /* no pairs: keys may be NULL, which qsort may not take */
+        qsort(l->keys, (size_t)l->count, sizeof *l->keys, compare_keys);
     out->surface_count = surface_count;
     out->first = calloc((size_t)surface_count + 1, sizeof *out->first);
     out->next = malloc(((size_t)l->count + 1) * sizeof *out->next);
