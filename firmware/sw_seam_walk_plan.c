@@ -45,7 +45,11 @@ sw_status sw_seam_walk_init_frames(sw_seam_walk *w, sw_seam_plan plans[2], sw_ar
 void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan)
 {
     const sw_seam_cache *c = &w->cache;
-    const sw_seam_entry *e = &c->entries[s];
+    sw_seam_entry *e = &w->cache.entries[s];
+    /* P reads the blocks to upload them, drawn or not: a mesh that came in
+     * for a surface gone out of view would otherwise keep an old epoch and
+     * be freed, and written over, while P still uploads it. */
+    e->last_frame = w->frame;
     sw_seam_plan_upload(plan, sw_seam_cache_first_vertex(c, s), e->vertex_count,
                         sw_seam_cache_first_index(c, s), e->index_count);
 }

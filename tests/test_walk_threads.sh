@@ -82,8 +82,11 @@ for name, j in (("stalled", stalled), ("async", run), ("slow", slow)):
 # stalled walk": that is one surface's worst, and under TSan on a loaded
 # machine (frames of 100 ms and more, so small budgets) a surface the async
 # walk kept passing over was 20 frames behind against the stalled walk's 19.
+# Nor "more triangles made than the stalled walk": that walk has no static
+# levels, so its workers mesh every surface for its first frame, where the
+# async walk draws stand-ins and its workers refine only what is close.
 assert run["threads"]["batches"] > stalled["threads"]["batches"]
-assert run["threads"]["worker_triangles"] > stalled["threads"]["worker_triangles"]
+assert run["threads"]["worker_triangles"] > 0
 PY
 
 walk --frames 6 --workers 1 --sync-work 0 --visibility-thread 0 --stats "$work/on_gl.json" \
