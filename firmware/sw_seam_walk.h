@@ -247,6 +247,8 @@ typedef struct sw_seam_walk {
     float *standin_error;         /* surface_count: the error of the level its stand-in
                                      shows, as its neighbours were joined to it (INFINITY:
                                      none) */
+    float *standin_border;        /* surface_count: the error its stand-in's loops may
+                                     show, as announced with that level (INFINITY: none) */
     uint32_t *drawn_shown;        /* original_count: the front's shown vertices as the drawn
                                      meshes have them, kept while a batch is in flight */
     uint32_t *mixed_shown;        /* original_count: a stand-in's front (sw_seam_walk_plan.c) */

@@ -123,26 +123,26 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
  * loop of another surface drawn this frame from a mesh of the walk's own
  * (not a stand-in), the one that mesh shows (drawn, by leaf position);
  * elsewhere its highest ancestor within the seams' share of the finest
- * level that a stand-in sewn at o shows (w->standin_error, s's own among
- * them). Both depend on o and the stand-ins' levels, not on s, so every
- * stand-in sewn to o shows the same vertex there; when a stand-in's level
- * changes, those beside it are made again (sw_seam_walk_standin_announce).
- * So a far stand-in's border is about as coarse as its level; at the
- * finest level's share for all (as first made), the strips were most of
- * the stand-ins' triangles. */
+ * border that a stand-in sewn at o was announced with (w->standin_border,
+ * s's own among them). Both depend on o and the stand-ins' announcements,
+ * not on s, so every stand-in sewn to o shows the same vertex there; when
+ * one changes, those beside it are made again
+ * (sw_seam_walk_standin_announce). So a far stand-in's border is about as
+ * coarse as its bound allows; at the finest level's share for all (as
+ * first made), the strips were most of the stand-ins' triangles. */
 static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
                                const uint32_t *drawn)
 {
     const sw_seam_graph *g = &w->pack->seam;
     const uint32_t *at = NULL;
     uint32_t count = sw_seam_select_surfaces_at(&w->select, o, &at);
-    float within = w->standin_error[s];
+    float within = w->standin_border[s];
     for (uint32_t k = 0; k < count; k++) {
         uint32_t t = at[k];
         if (t != s && w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t] &&
             w->visible[t] == 1)
             return drawn[w->select.leaf_lo[o]];
-        within = fminf(within, w->standin_error[t]);
+        within = fminf(within, w->standin_border[t]);
     }
     within = isfinite(within) ? (float)SW_SEAM_SHARE * within : 0.0f;
     uint32_t x = o;
@@ -152,15 +152,72 @@ static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
     return x;
 }
 
+/* What s's stand-in's loops may show: its level's error or, coarser, the
+ * power of two at or below its target. Not the level's error alone: a
+ * surface whose coarsest level is far finer than its bound (a plane is
+ * exact at every level, so it keeps one) held the loops of every stand-in
+ * beside it to that fineness, and at the far end of an orbit the strips
+ * were three quarters of the triangles drawn. Not the target itself:
+ * it changes every frame, and each change makes the stand-ins beside s
+ * again; a power of two changes once a doubling of the distance. */
+static float border_step(const sw_seam_walk *w, uint32_t s, float level_error)
+{
+    float target = w->target[s];
+    float step = target > 0 && isfinite(target) ? exp2f(floorf(log2f(target))) : 0.0f;
+    return fmaxf(level_error, step);
+}
+
+/* 1 when each outer loop of s still shows three vertices or more with its
+ * originals at their highest ancestors within the seams' share of border
+ * (its neighbours may hold them finer, never coarser): as the select's
+ * loop walk counts them, distinct. */
+static int keeps_outer_loops(const sw_seam_walk *w, uint32_t s, float border)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    float within = (float)SW_SEAM_SHARE * border;
+    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++) {
+        if (!(g->loops[l].flags & SW_SEAM_LOOP_OUTER))
+            continue;
+        uint32_t seen[3], distinct = 0;
+        for (uint32_t k = 0; k < g->loops[l].slot_count && distinct < 3; k++) {
+            uint32_t x = g->slots[g->loops[l].first_slot + k].vertex;
+            while (g->vertices[x].child != SW_SEAM_NONE &&
+                   g->vertices[g->vertices[x].child].error <= within)
+                x = g->vertices[x].child;
+            uint32_t i = 0;
+            while (i < distinct && seen[i] != x)
+                i++;
+            if (i == distinct)
+                seen[distinct++] = x;
+        }
+        if (distinct < 3)
+            return 0;
+    }
+    return 1;
+}
+
+/* The border s is announced with: the step, halved while that would leave
+ * an outer loop of s with fewer than three vertices (a stand-in then has
+ * nothing to draw: a small surface far off, or a thin one, would be left
+ * out), down to its level's own error, where the level was made. */
+static float standin_border(const sw_seam_walk *w, uint32_t s, float level_error)
+{
+    float border = border_step(w, s, level_error);
+    for (int k = 0; k < 32 && border > level_error && !keeps_outer_loops(w, s, border); k++)
+        border = fmaxf(level_error, 0.5f * border);
+    return border;
+}
+
 void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)
 {
     uint32_t level = sw_seam_standin_level(w->pack, s, w->target[s]);
     if (level == UINT32_MAX)
         return;
     float error = w->pack->levels.levels[level].error;
-    if (error == w->standin_error[s])
+    float border = standin_border(w, s, error);
+    if (error == w->standin_error[s] && border == w->standin_border[s])
         return;
-    w->standin_error[s] = error;
+    w->standin_error[s] = error, w->standin_border[s] = border;
     sw_seam_walk_restitch_around(w, s);
 }
 

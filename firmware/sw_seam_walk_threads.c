@@ -18,7 +18,7 @@ static size_t standin_bytes(const sw_pack *pack)
         return 0;
     size_t n = (size_t)pack->seam.surface_count + 1;
     return sw_arena_worst_case(sizeof(sw_seam_standin), 64) + sw_seam_standin_bytes(pack) +
-           2 * sw_arena_worst_case(n, 64) + sw_arena_worst_case(n * sizeof(float), 64) +
+           2 * sw_arena_worst_case(n, 64) + 2 * sw_arena_worst_case(n * sizeof(float), 64) +
            2 * sw_arena_worst_case(((size_t)pack->seam.original_count + 1) * sizeof(uint32_t), 64);
 }
 
@@ -39,16 +39,18 @@ static sw_status start_standins(sw_seam_walk *w, sw_arena *arena, sw_error *err)
     w->standin = sw_arena_alloc(arena, n, 64);
     w->restitch = sw_arena_alloc(arena, n, 64);
     w->standin_error = sw_arena_alloc(arena, n * sizeof(float), 64);
+    w->standin_border = sw_arena_alloc(arena, n * sizeof(float), 64);
     w->drawn_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
                                            sizeof(uint32_t), 64);
     w->mixed_shown = sw_arena_alloc(arena, ((size_t)pack->seam.original_count + 1) *
                                            sizeof(uint32_t), 64);
-    if (!m || !w->standin || !w->restitch || !w->standin_error || !w->drawn_shown ||
+    if (!m || !w->standin || !w->restitch || !w->standin_error || !w->standin_border ||
+        !w->drawn_shown ||
         !w->mixed_shown)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the stand-ins");
     memset(w->standin, 0, n);
     for (size_t s = 0; s < n; s++)
-        w->standin_error[s] = INFINITY;
+        w->standin_error[s] = w->standin_border[s] = INFINITY;
     memset(w->restitch, 0, n);
     sw_status st = sw_seam_standin_init(m, pack, arena, err);
     if (st == SW_OK)
@@ -117,7 +119,7 @@ static void retire_mesh(sw_seam_walk *w, uint32_t s)
                                (sw_retired){ e->vertex_block, e->index_block, e->last_frame });
     if (w->standin) {
         w->standin[s] = 0;
-        w->standin_error[s] = INFINITY;
+        w->standin_error[s] = w->standin_border[s] = INFINITY;
     }
     e->state = SW_SEAM_EMPTY;
     e->vertex_count = e->index_count = 0;
@@ -425,13 +427,14 @@ void sw_seam_walk_restitch(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *f
         if (!w->standin[s] || !w->restitch[s])
             continue;
         w->restitch[s] = 0;
-        float shown = w->standin_error[s];
+        float shown = w->standin_error[s], border = w->standin_border[s];
         retire_mesh(w, s);
-        w->standin_error[s] = shown;   /* what its neighbours were joined to */
+        /* what its neighbours were joined to */
+        w->standin_error[s] = shown, w->standin_border[s] = border;
         if (sw_seam_walk_needs_mesh(w, s)) {
             sw_seam_walk_stand_in(w, s, plan, frame);
         } else {
-            w->standin_error[s] = INFINITY;
+            w->standin_error[s] = w->standin_border[s] = INFINITY;
             sw_seam_walk_restitch_around(w, s);
         }
     }

@@ -410,7 +410,7 @@ static char *info_of(const sample_levels *l, int json)
 
 /* 32 + 3 x 32 + 3 x 4 + 11 x 16 + 15 x 2 + 4 x 8 + 11 x 8 = 466 bytes. Rank
  * 0 is levels 0 and 1 (2 + 2 triangles, errors 0.01 and 0.005), rank 1
- * level 2 (1 triangle, 0.02). */
+ * level 2 (1 triangle, 0.02), half of level 1's of the same surface. */
 static void test_info_reports_levels(void)
 {
     sample_levels l;
@@ -421,16 +421,19 @@ static void test_info_reports_levels(void)
                               "    rank 0         2 surfaces, 4 triangles, error max 0.01, "
                               "median 0.005\n"
                               "    rank 1         1 surfaces, 1 triangles, error max 0.02, "
-                              "median 0.02\n"), "%s", text);
+                              "median 0.02; 50% fewer triangles than rank 0 of the same "
+                              "surfaces\n"), "%s", text);
     free(text);
     text = info_of(&l, 1);
     SW_CHECK_MSG(strstr(text, "  \"levels\": {\"levels\": 3, \"per_surface\": [1, 2], "
                               "\"vertices\": 11, \"indices\": 15, \"triangles\": 5, "
                               "\"chain_points\": 11, \"bytes\": 466,\n"
                               "             \"ranks\": [{\"rank\": 0, \"surfaces\": 2, "
-                              "\"triangles\": 4, \"error_max\": 0.00999999978, "
+                              "\"triangles\": 4, \"triangles_before\": 0, "
+                              "\"error_max\": 0.00999999978, "
                               "\"error_median\": 0.00499999989}, {\"rank\": 1, \"surfaces\": 1, "
-                              "\"triangles\": 1, \"error_max\": 0.0199999996, "
+                              "\"triangles\": 1, \"triangles_before\": 2, "
+                              "\"error_max\": 0.0199999996, "
                               "\"error_median\": 0.0199999996}]},\n"), "%s", text);
     free(text);
     text = info_of(NULL, 0);

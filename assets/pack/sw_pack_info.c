@@ -183,6 +183,8 @@ static void gather_rank(const sw_levels *l, uint32_t r, float *errors,
         if (k >= l->surface_levels[s + 1])
             continue;
         out->triangles += l->levels[k].index_count / 3;
+        if (r > 0)
+            out->triangles_before += l->levels[k - 1].index_count / 3;
         errors[n++] = l->levels[k].error;
     }
     qsort(errors, n, sizeof *errors, compare_floats);
@@ -304,8 +306,12 @@ static void print_levels_text(FILE *out, const sw_pack *pack, const sw_pack_leve
         char rank[16];
         snprintf(rank, sizeof rank, "rank %" PRIu32, r);
         fprintf(out, "    %-14s %" PRIu32 " surfaces, %" PRIu64 " triangles, error max %g, "
-                "median %g\n", rank, k->levels, k->triangles, (double)k->error_max,
+                "median %g", rank, k->levels, k->triangles, (double)k->error_max,
                 (double)k->error_median);
+        if (k->triangles_before > 0)
+            fprintf(out, "; %.0f%% fewer triangles than rank %" PRIu32 " of the same surfaces",
+                    100.0 * (1.0 - (double)k->triangles / (double)k->triangles_before), r - 1);
+        fputc('\n', out);
     }
 }
 
@@ -491,8 +497,9 @@ static void json_levels(FILE *out, const sw_pack *pack, const sw_pack_levels_sta
     for (uint32_t r = 0; r < s->rank_count; r++) {
         const sw_pack_level_rank_stats *k = &s->ranks[r];
         fprintf(out, "%s{\"rank\": %" PRIu32 ", \"surfaces\": %" PRIu32 ", \"triangles\": %"
-                PRIu64 ", \"error_max\": %.9g, \"error_median\": %.9g}", r ? ", " : "", r,
-                k->levels, k->triangles, (double)k->error_max, (double)k->error_median);
+                PRIu64 ", \"triangles_before\": %" PRIu64 ", \"error_max\": %.9g, "
+                "\"error_median\": %.9g}", r ? ", " : "", r, k->levels, k->triangles,
+                k->triangles_before, (double)k->error_max, (double)k->error_median);
     }
     fprintf(out, "]},\n");
 }

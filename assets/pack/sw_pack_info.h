@@ -53,6 +53,9 @@ int sw_pack_gather_seam_stats(const sw_pack *pack, sw_pack_seam_stats *out);
 typedef struct sw_pack_level_rank_stats {
     uint32_t levels;                /* surfaces with a level of this rank */
     uint64_t triangles;             /* their triangles together */
+    uint64_t triangles_before;      /* the same surfaces' triangles one rank finer (rank 0:
+                                       0): 1 - triangles / triangles_before is the
+                                       reduction of this level */
     float error_max;                /* the largest of their errors */
     float error_median;             /* the middle one (the lower for an even count) */
 } sw_pack_level_rank_stats;
