@@ -33,7 +33,10 @@ against the reference walk of the same path with --workers 0 (every mesh
 made in its frame), each pair's interior background pixels (surfaces in
 view the walk left undrawn) and pixels differing, against 0 and 0.5%; the
 surfaces left undrawn (threads.waiting_surfaces_max) of both walks are
-printed. Prints the table and the
+printed. Then the whole model in view (--orbit, measuring nothing, as built
+and with --workers 0): its triangles a frame against the patches, and each
+static level's reduction of triangles (seamwalk-pack info). Prints the
+table and the
 ratios against the issue's targets, writes the JSON (--json) and a PNG of
 frame time along the path (--plot, gnuplot). Never fails on timing or on
 the pictures' figures: exit 1 only when a run fails or a figure is missing.
@@ -128,13 +131,14 @@ class Scene:
     def stats_file(self, key):
         return os.path.join(self.work, "%s_%s.json" % (self.name, key))
 
-    def run_seamwalk(self, key, frames, measure_every, flags):
-        """seamwalk on the scene's pack and path; its stats file, or None
-        when it failed (the log beside it)."""
+    def run_seamwalk(self, key, frames, measure_every, flags, where=None):
+        """seamwalk on the scene's pack and path (or where: other camera
+        flags); its stats file, or None when it failed (the log beside
+        it)."""
         a = self.a
         out = self.stats_file(key)
-        cmd = [a.build + "/firmware/seamwalk", "--pack", self.pack, "--path", self.path,
-               "--headless", a.size, "--frames", str(frames), "--memory-mb", "16384",
+        cmd = [a.build + "/firmware/seamwalk", "--pack", self.pack] + \
+            (where or ["--path", self.path]) + ["--headless", a.size, "--frames", str(frames), "--memory-mb", "16384",
                "--measure-every", str(measure_every), "--stats", out] + flags
         return out if run(cmd, out + ".log") else None
 
@@ -317,6 +321,37 @@ def static_levels_off(sc):
             "waiting_surfaces_max": s["threads"]["waiting_surfaces_max"]}
 
 
+def orbit_far_end(sc):
+    """The whole model in view: --orbit (a circle round it that keeps all of
+    it on screen), measuring nothing, as built and with --workers 0, and
+    the triangles a frame of each against the pack's patches (paper 000:
+    fewer than 2n for n patches; the issue asks for fewer than n)."""
+    frames = 4 if sc.a.quick else 16
+    out = {"frames": frames, "patches": sc.info["bezier_patches"]}
+    for key, flags in (("orbit", AS_BUILT_FLAGS), ("orbit_single", SINGLE_FLAGS)):
+        js = sc.run_seamwalk(key, frames, 0, flags, where=["--orbit"])
+        if not js:
+            sc.failures.append("the orbit (%s) failed (%s.log)" % (" ".join(flags),
+                                                                    sc.stats_file(key)))
+            return None
+        with open(js) as f:
+            s = json.load(f)
+        out[key] = {"tris": s["tris_per_frame"]["median"], "tris_max": s["tris_per_frame"]["max"],
+                    "p50": s["frame_ms"]["p50"],
+                    "standins_max": s["threads"]["standins_max"] if s.get("threads") else 0,
+                    "waiting_surfaces_max": s["threads"]["waiting_surfaces_max"]
+                    if s.get("threads") else 0}
+    return out
+
+
+def level_reductions(info):
+    """Each static level's triangles against the same surfaces' level one
+    finer (seamwalk-pack info), as fractions fewer; [] without levels."""
+    levels = info.get("levels") or {}
+    return [1 - r["triangles"] / r["triangles_before"] for r in levels.get("ranks", [])
+            if r.get("triangles_before")]
+
+
 PICTURE_KEYS = ("frames_compared", "interior_background_px_max", "interior_background_frame",
                 "differing_fraction_max", "differing_frame", "inside_px_max")
 
@@ -357,6 +392,7 @@ def run_scene(a, name, work):
     sc = Scene(a, name, work)
     sc.start = start_times(sc, 3 if a.quick else 9)
     sc.unmeasured = unmeasured_walk(sc)
+    sc.orbit = orbit_far_end(sc)
     same = AS_BUILT_FLAGS == SINGLE_FLAGS
     r1 = sc.seamwalk("seamwalk", "seamwalk as built", AS_BUILT_FLAGS)
     r2 = sc.seamwalk("seamwalk_single", "seamwalk single-threaded", SINGLE_FLAGS)
@@ -396,6 +432,12 @@ def ratios(sc):
         if p:
             out["interior_background_px"] = p["interior_background_px_max"]
             out["differing_pct"] = 100 * p["differing_fraction_max"]
+    if sc.orbit:
+        out["orbit_tris_over_patches"] = sc.orbit["orbit"]["tris"] / sc.orbit["patches"]
+    reductions = level_reductions(sc.info)
+    if reductions:
+        out["level_reduction_min_pct"] = 100 * min(reductions)
+        out["level_reduction_max_pct"] = 100 * max(reductions)
     if r1["ok"]:
         out["frame_p50_ms"] = r1["p50"]
         out["frame_p99_ms"] = r1["p99"]
@@ -474,6 +516,17 @@ def print_scene(a, sc):
                      p["interior_background_px_max"], p["interior_background_frame"],
                      100 * p["differing_fraction_max"], p["differing_frame"], p["inside_px_max"],
                      p["waiting_surfaces_max"], p["dir"]))
+    if sc.orbit:
+        o, one = sc.orbit["orbit"], sc.orbit["orbit_single"]
+        print("seamwalk at the far end of an orbit (--orbit, %d frames, the whole model in view, "
+              "measuring nothing): %d triangles a frame (median; max %d), up to %d stand-ins, "
+              "%d undrawn; with --workers 0 %d (median); the pack has %d patches"
+              % (sc.orbit["frames"], o["tris"], o["tris_max"], o["standins_max"],
+                 o["waiting_surfaces_max"], one["tris"], sc.orbit["patches"]))
+    reductions = level_reductions(sc.info)
+    if reductions:
+        print("static levels: each level's triangles fewer than the level before of the same "
+              "surfaces by %s" % ", ".join("%.0f%%" % (100 * r) for r in reductions))
     if sc.start:
         t = sc.start
         print("seamwalk: start to first frame over %d more starts, back to back: median %.0f ms "
@@ -528,6 +581,12 @@ def print_scene(a, sc):
          lambda v: v == t["interior_background_px"])
     line("differing_pct", "measuring nothing: %.3f%% of pixels differ (<= 0.5%%)",
          lambda v: v <= 100 * t["differing_fraction"])
+    line("orbit_tris_over_patches", "far end of an orbit: %.2f triangles a patch (< 1)",
+         lambda v: v < 1)
+    line("level_reduction_min_pct", "static levels: reduction per level at least %.0f%% "
+         "(30-80%%)", lambda v: 30 <= v <= 80)
+    line("level_reduction_max_pct", "static levels: reduction per level at most %.0f%% "
+         "(30-80%%)", lambda v: 30 <= v <= 80)
     line("error_max_px", "error max %.3f px at bound 0.5 (target <= 1)",
          lambda v: v <= t["error_max_px"])
     line("cracks", "cracks %d (drawn gaps + seamwalk's own; target 0)", lambda v: v == 0)
@@ -614,6 +673,8 @@ def main():
                                    "uniform_tried": sc.uniform_tried,
                                    "start_to_first_frame": sc.start,
                                    "unmeasured_walk": sc.unmeasured,
+                                   "orbit_far_end": sc.orbit,
+                                   "level_reductions": level_reductions(sc.info),
                                    "rows": [{k: v for k, v in r.items() if k != "series"}
                                             for r in sc.rows],
                                    "ratios": sc.ratio} for sc in scenes}}
