@@ -158,6 +158,7 @@ typedef struct sw_seam_frame {
     uint32_t waiting_surfaces;    /* visible with no mesh yet (not drawn: holes until made) */
     uint32_t standins;            /* drawn from a static level while their mesh is made */
     uint32_t standins_made;       /* stand-ins made this frame */
+    uint64_t standin_triangles;   /* of triangles: those the stand-ins drew */
     uint32_t behind_surfaces;     /* drawn from a mesh coarser than the view's bound */
     uint32_t frames_behind;       /* the longest a drawn surface has waited for its work */
     double behind_ratio;          /* the most a drawn mesh's bound exceeds the view's */

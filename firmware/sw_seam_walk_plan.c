@@ -107,6 +107,7 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
         .standin = w->standins && w->standin[s],
     };
     frame->standins += item.standin;
+    frame->standin_triangles += item.standin ? e->index_count / 3 : 0;
     sw_seam_plan_draw(plan, &item);
     e->last_frame = w->frame;   /* the epoch its blocks stay in use until (sw_handoff.h) */
     frame->drawn_surfaces++;

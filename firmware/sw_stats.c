@@ -289,10 +289,13 @@ void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
     }
 }
 
-void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made)
+void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint64_t triangles)
 {
     s->standins_max = drawn > s->standins_max ? drawn : s->standins_max;
     s->standins_made += made;
+    s->standin_triangles += triangles;
+    if (triangles > s->standin_triangles_max)
+        s->standin_triangles_max = triangles;
 }
 
 void sw_stats_add_update_cap(sw_stats *s, double used, double cap)
@@ -331,6 +334,7 @@ static void write_threads(FILE *f, const sw_stats *s)
 {
     fprintf(f, "  \"threads\": {\"workers\": %d, \"sync_work\": %d, \"target_ms\": %.3f, "
                "\"waiting_surfaces_max\": %u, \"standins_max\": %u, \"standins_made\": %llu, "
+               "\"standin_triangles\": {\"mean\": %.0f, \"max\": %llu}, "
                "\"behind_surfaces_max\": %u, "
                "\"frames_behind_max\": %u, \"behind_ratio_max\": %.3f, \"jobs\": %llu, "
                "\"prefetch_jobs\": %llu, \"batches\": %llu, \"seam_ops\": %llu, \"budget_used_mean\": %.3f, "
@@ -339,7 +343,9 @@ static void write_threads(FILE *f, const sw_stats *s)
                "\"updated\": {\"capped_batches\": %llu, \"over_cap_batches\": %llu, "
                "\"over_cap_ratio_max\": %.3f}},\n",
             s->workers, s->sync_work, s->target_ms, s->waiting_max, s->standins_max,
-            (unsigned long long)s->standins_made, s->behind_max,
+            (unsigned long long)s->standins_made,
+            s->frames_total ? (double)s->standin_triangles / (double)s->frames_total : 0.0,
+            (unsigned long long)s->standin_triangles_max, s->behind_max,
             s->frames_behind_max, s->behind_ratio_max, (unsigned long long)s->jobs_total,
             (unsigned long long)s->prefetch_total, (unsigned long long)s->batches_total, (unsigned long long)s->seam_ops_total,
             s->budget_frames ? s->budget_used_sum / s->budget_frames : 0.0, s->budget_used_max,
