@@ -195,6 +195,53 @@ void sw_box_depth_range(const sw_box *b, sw_vec3 eye, sw_vec3 forward, double *l
     *hi = sw_v3_dot(sw_v3_sub(far_c, eye), forward);
 }
 
+/* Polygon in[0 .. n) clipped to the side of plane p where dot(n, x) + d >= 0,
+ * into out; returns its vertex count (at most n + 1). */
+static int clip_polygon(const sw_vec3 *in, int n, const sw_plane *p, sw_vec3 *out)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        sw_vec3 a = in[i], b = in[(i + 1) % n];
+        double da = sw_v3_dot(p->n, a) + p->d, db = sw_v3_dot(p->n, b) + p->d;
+        if (da >= 0)
+            out[m++] = a;
+        if ((da >= 0) != (db >= 0))
+            out[m++] = sw_v3_lerp(a, b, da / (da - db));
+    }
+    return m;
+}
+
+double sw_box_visible_min_depth(const sw_box *box, const sw_frustum *f, sw_vec3 eye,
+                                sw_vec3 forward)
+{
+    if (sw_box_is_empty(box))
+        return INFINITY;
+    if (eye.x >= box->min.x && eye.x <= box->max.x && eye.y >= box->min.y &&
+        eye.y <= box->max.y && eye.z >= box->min.z && eye.z <= box->max.z)
+        return 0.0;
+    const double *lo = &box->min.x, *hi = &box->max.x;
+    double best = INFINITY;
+    for (int axis = 0; axis < 3; axis++)
+        for (int side = 0; side < 2; side++) {
+            /* The face at lo or hi on axis, its corners in order round it. */
+            int a = (axis + 1) % 3, b = (axis + 2) % 3;
+            sw_vec3 poly[2][8];
+            for (int k = 0; k < 4; k++) {
+                double c[3];
+                c[axis] = side ? hi[axis] : lo[axis];
+                c[a] = (k == 1 || k == 2) ? hi[a] : lo[a];
+                c[b] = (k >= 2) ? hi[b] : lo[b];
+                poly[0][k] = sw_v3(c[0], c[1], c[2]);
+            }
+            int n = 4, cur = 0;
+            for (int i = 0; i < 4 && n > 0; i++, cur ^= 1)
+                n = clip_polygon(poly[cur], n, &f->planes[i], poly[cur ^ 1]);
+            for (int k = 0; k < n; k++)
+                best = fmin(best, sw_v3_dot(sw_v3_sub(poly[cur][k], eye), forward));
+        }
+    return best;
+}
+
 int sw_box_is_empty(const sw_box *box)
 {
     return !(box->min.x <= box->max.x && box->min.y <= box->max.y && box->min.z <= box->max.z);

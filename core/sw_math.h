@@ -60,6 +60,16 @@ double sw_box_distance(const sw_box *box, sw_vec3 p);
  * bit (core/sw_cull_tree.h). */
 void sw_box_depth_range(const sw_box *box, sw_vec3 eye, sw_vec3 forward, double *lo, double *hi);
 
+/* The smallest depth dot(p - eye, forward) over the points p of the box
+ * inside the frustum's four side planes (planes 0-3; near and far are not
+ * applied): where the box can be seen at all. INFINITY when no point of
+ * the box is inside them; 0 when the eye is in the box. Exact up to
+ * rounding: the smallest value lies at a vertex of the clipped box, and
+ * every such vertex but the frustum's apex (the eye) is a vertex of a face
+ * of the box clipped by the planes. */
+double sw_box_visible_min_depth(const sw_box *box, const sw_frustum *f, sw_vec3 eye,
+                                sw_vec3 forward);
+
 /* Planes of the clip volume of view_proj (Gribb/Hartmann), normalised. */
 sw_frustum sw_frustum_from_matrix(const sw_mat4 *view_proj);
 sw_cull sw_frustum_test_box(const sw_frustum *f, const sw_box *box);

@@ -11,9 +11,9 @@
 #include "sw_view.h"
 
 /* Over the patches in view of every surface the walk will draw: *nearest
- * their smallest box depth (clamped to view's near plane, as the walk's
- * culling does), *farthest their farthest box corner. 0 when nothing is
- * drawn (both left untouched). */
+ * the smallest depth at which their boxes can be seen (inside the view's
+ * sides; at least view's near plane), *farthest their farthest box corner.
+ * 0 when nothing is drawn (both left untouched). */
 int sw_seam_depth_range(const sw_seam_walk *w, const sw_view *view, double *nearest,
                         double *farthest);
 

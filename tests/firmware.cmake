@@ -32,6 +32,10 @@ endforeach()
 add_test(NAME seam_drawn_walk
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_seam_drawn_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
 
+# The depth planes fit where the model is seen: no back face in front.
+add_test(NAME depth_fit
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_depth_fit.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+
 # The threaded walk: stalled workers, two workers, --sync-work against --workers 0.
 add_test(NAME walk_threads
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_walk_threads.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})

@@ -1,5 +1,8 @@
 /* sw_math: camera matrices against hand-computed values, frustum culling of
  * boxes, box and segment distances. */
+#include <math.h>
+#include <stdint.h>
+
 #include "sw_math.h"
 #include "sw_test.h"
 
@@ -99,6 +102,57 @@ static void test_frustum_culls_boxes(void)
     SW_CHECK(sw_frustum_test_box(&f, &empty) == SW_CULL_OUTSIDE);
 }
 
+/* Where a box can be seen: a floor the eye stands over from depth 2 on (its
+ * corners reach behind the eye, so their nearest depth is -10); a box off
+ * to the side nowhere; one round the eye at once; one in front at its face. */
+static void test_box_visible_min_depth(void)
+{
+    sw_frustum f = test_frustum();
+    sw_vec3 eye = sw_v3(0, 0, 10), fwd = sw_v3(0, 0, -1);
+    sw_box floor_box = box_of(-100, -3, -100, 100, -2, 20);
+    sw_box left = box_of(-30, -1, -1, -20, 1, 1);
+    sw_box round_eye = box_of(-1, -1, 9, 1, 1, 11);
+    sw_box inside = box_of(-1, -1, -1, 1, 1, 1);
+    SW_CHECK_NEAR(sw_box_visible_min_depth(&floor_box, &f, eye, fwd), 2, 1e-9);
+    SW_CHECK(isinf(sw_box_visible_min_depth(&left, &f, eye, fwd)));
+    SW_CHECK(sw_box_visible_min_depth(&round_eye, &f, eye, fwd) == 0);
+    SW_CHECK_NEAR(sw_box_visible_min_depth(&inside, &f, eye, fwd), 9, 1e-9);
+    sw_box empty = sw_box_empty();
+    SW_CHECK(isinf(sw_box_visible_min_depth(&empty, &f, eye, fwd)));
+    /* Random boxes against points sampled in them: never above the nearest
+     * sample inside the sides (it bounds what is seen), and within a
+     * sample step of it. */
+    uint32_t seed = 7;
+    for (int t = 0; t < 300; t++) {
+        double c[6];
+        for (int k = 0; k < 6; k++) {
+            seed = seed * 1664525u + 1013904223u;
+            c[k] = (seed >> 8) / 16777216.0 * 40 - 20;
+        }
+        sw_box b = box_of(fmin(c[0], c[3]), fmin(c[1], c[4]), fmin(c[2], c[5]), fmax(c[0], c[3]),
+                          fmax(c[1], c[4]), fmax(c[2], c[5]));
+        double got = sw_box_visible_min_depth(&b, &f, eye, fwd), sampled = INFINITY, step = 0;
+        const int n = 24;
+        for (int i = 0; i <= n; i++)
+            for (int j = 0; j <= n; j++)
+                for (int k = 0; k <= n; k++) {
+                    sw_vec3 d = sw_v3_sub(b.max, b.min);
+                    sw_vec3 p = sw_v3(b.min.x + d.x * i / n, b.min.y + d.y * j / n,
+                                      b.min.z + d.z * k / n);
+                    step = sw_v3_length(d) / n;
+                    int in = 1;
+                    for (int q = 0; q < 4; q++)
+                        in &= sw_v3_dot(f.planes[q].n, p) + f.planes[q].d >= 0;
+                    if (in)
+                        sampled = fmin(sampled, sw_v3_dot(sw_v3_sub(p, eye), fwd));
+                }
+        if (isinf(sampled))
+            continue; /* nothing sampled inside: a sliver, or none */
+        SW_CHECK_MSG(got <= sampled + 1e-9 && got >= sampled - 2 * step - 1e-9,
+                     "box %d: %g against sampled %g (step %g)", t, got, sampled, step);
+    }
+}
+
 static void test_box_distance(void)
 {
     sw_box b = box_of(0, 0, 0, 1, 2, 3);
@@ -158,6 +212,7 @@ int main(void)
     SW_RUN(test_mat4_mul_and_rotate);
     SW_RUN(test_frustum_planes_are_normalised);
     SW_RUN(test_frustum_culls_boxes);
+    SW_RUN(test_box_visible_min_depth);
     SW_RUN(test_box_distance);
     SW_RUN(test_box_accumulates);
     SW_RUN(test_vectors);
