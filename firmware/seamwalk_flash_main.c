@@ -58,11 +58,7 @@ typedef struct args {
 
 static int usage(const char *fmt, const char *arg)
 {
-    fputs("seamwalk-flash: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputc('\n', stderr);
-    fputs(usage_text, stderr);
-    return EXIT_USAGE;
+    return sw_usage_error("seamwalk-flash", fmt, arg);
 }
 
 static int failed(const sw_error *err, int code)
