@@ -61,11 +61,7 @@ static const char usage_text[] =
 
 static int usage_error(const char *fmt, const char *arg)
 {
-    fputs("seamwalk-pack: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputc('\n', stderr);
-    fputs(usage_text, stderr);
-    return 2;
+    return sw_usage_error("seamwalk-pack", fmt, arg);
 }
 
 /* s with its control bytes as \xNN: a message may quote a file's bytes

@@ -32,6 +32,17 @@ void sw_error_prefix(sw_error *err, const char *fmt, ...)
     err->message[sizeof err->message - 1] = '\0';
 }
 
+int sw_usage_error(const char *program, const char *fmt, ...)
+{
+    fprintf(stderr, "%s: ", program);
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "\ntry '%s --help'\n", program);
+    return SW_EXIT_USAGE;
+}
+
 const char *sw_status_name(sw_status status)
 {
     switch (status) {

@@ -35,4 +35,12 @@ void sw_error_prefix(sw_error *err, const char *fmt, ...) __attribute__((format(
 
 const char *sw_status_name(sw_status status);
 
+/* A command line's usage error as every seamwalk program reports it, on
+ * stderr: "PROGRAM: what was wrong" and a line naming PROGRAM --help. The
+ * whole usage would bury the one line that says what to fix. Returns the
+ * usage exit status, SW_EXIT_USAGE. */
+enum { SW_EXIT_USAGE = 2 };
+int sw_usage_error(const char *program, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
 #endif

@@ -1,6 +1,6 @@
 /* seamwalk-flash: puts signed packs onto a display unit's pack store
  * (sw_pack_store.h, firmware/STORE.md) and looks after its slots.
- * Exit status (also in the usage text and the README):
+ * Exit status (also in the usage text and docs/flashing.md):
  *   0 done
  *   1 failed (I/O error, damaged store); what the unit boots is unchanged
  *   2 usage error
@@ -58,11 +58,7 @@ typedef struct args {
 
 static int usage(const char *fmt, const char *arg)
 {
-    fputs("seamwalk-flash: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputc('\n', stderr);
-    fputs(usage_text, stderr);
-    return EXIT_USAGE;
+    return sw_usage_error("seamwalk-flash", fmt, arg);
 }
 
 static int failed(const sw_error *err, int code)

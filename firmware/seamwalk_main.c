@@ -441,11 +441,11 @@ int main(int argc, char **argv)
     sw_heap_huge_pages(argv, sw_program_now_s());   /* returns when it did not run again */
     rt.start_s = sw_heap_started_s(sw_program_now_s());
     sw_status st = sw_options_parse(argc, argv, &rt.opt, &err);
-    if (st != SW_OK || rt.opt.help) {
-        if (st != SW_OK)
-            fprintf(stderr, "seamwalk: %s\n", err.message);
-        sw_options_print_usage(argv[0]);
-        return st != SW_OK ? 2 : 0;
+    if (st != SW_OK)
+        return sw_usage_error("seamwalk", "%s", err.message);
+    if (rt.opt.help) {
+        sw_options_print_usage(stdout, argv[0]);
+        return fflush(stdout) == 0 ? 0 : 1;
     }
     /* A service stop (SIGTERM) or Ctrl-C ends the walk after the frame, so
      * the stats are written and a KMS display gives the screen back. */

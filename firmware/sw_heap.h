@@ -1,8 +1,9 @@
 /* The process heap, held for the GL driver so that resident memory is
- * taken at start and does not move in a walk (README, "The soak"). Our own
- * memory is the arena; after start only the driver and libc use the heap
- * (Mesa's llvmpipe: its binned scenes, 64 kiB blocks, every frame). glibc
- * only (elsewhere these do nothing). Called by seamwalk's main thread. */
+ * taken at start and does not move in a walk (docs/architecture.md,
+ * "Memory after start"). Our own memory is the arena; after start only the
+ * driver and libc use the heap (Mesa's llvmpipe: its binned scenes, 64 kiB
+ * blocks, every frame). glibc only (elsewhere these do nothing). Called by
+ * seamwalk's main thread. */
 #ifndef SW_HEAP_H
 #define SW_HEAP_H
 

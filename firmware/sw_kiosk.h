@@ -12,7 +12,7 @@
  *    movement actions act while held; other actions fire on press, or, for
  *    a button with a long_action, the action on a short press's release and
  *    the long action on the long press.
- *  - the keyboard (evdev, a fixed table, see sw_kiosk.c and the README):
+ *  - the keyboard (evdev, a fixed table, see sw_kiosk.c and docs/kiosk.md):
  *    arrows or WASD, Q/E strafe, Page Up/Down look, N/P viewpoints, H or
  *    Home, M mode, T tour.
  * Absent devices are log lines, never failures: no gamepad is simply none

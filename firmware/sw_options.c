@@ -309,9 +309,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
     return st != SW_OK ? st : check_complete(o, err);
 }
 
-void sw_options_print_usage(const char *argv0)
+void sw_options_print_usage(FILE *out, const char *argv0)
 {
-    fprintf(stderr,
+    fprintf(out,
             "usage: %s (--pack FILE | --store DIR)\n"
             "          (--path FILE | --orbit | --view NAME | --navigate | --input-timeline FILE)\n"
             "          [--display auto|headless|kms|x11|wayland] [--size WxH] [--headless WxH]\n"
@@ -351,7 +351,7 @@ void sw_options_print_usage(const char *argv0)
             "  --navigate          the unit's inputs drive the camera: gamepads (hidapi,\n"
             "                      hot-plugged), [gpio] buttons (libgpiod), the keyboard\n"
             "                      (evdev); walk, orbit, viewpoints, home, attract tour\n"
-            "                      (README \"Inputs and navigation\"; keys: [gamepad],\n"
+            "                      (docs/kiosk.md, \"Inputs and navigation\"; keys:\n"
             "                      [keyboard], [navigation], [gpio NAME] in the config)\n"
             "  --input-timeline FILE  the same navigation driven by a recorded input timeline\n"
             "                      (format: firmware/sw_input_timeline.h) through fake\n"

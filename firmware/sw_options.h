@@ -5,6 +5,8 @@
 #ifndef SW_OPTIONS_H
 #define SW_OPTIONS_H
 
+#include <stdio.h>
+
 #include "sw_config.h"
 #include "sw_display.h"
 #include "sw_error.h"
@@ -81,6 +83,7 @@ typedef struct sw_options {
  * naming the option and what it expects. */
 sw_status sw_options_parse(int argc, char **argv, sw_options *opts, sw_error *err);
 
-void sw_options_print_usage(const char *argv0);
+/* The usage: on stdout for --help, which is asked for. */
+void sw_options_print_usage(FILE *out, const char *argv0);
 
 #endif

@@ -25,7 +25,7 @@
  * of one scene, 4 to 7 scenes' worth (147 to 258 MB), as the machine's load
  * came and went, and the heap kept the most it had reached. At about 600 bytes of scene a triangle there,
  * 32768 triangles keep it to about one scene, at no frame time we could
- * measure (README, "The soak"). Fencing each batch (EGL_KHR_fence_sync) and
+ * measure (docs/perf/2026-12-05-soak.md). Fencing each batch (EGL_KHR_fence_sync) and
  * waiting for the one before, so the rasteriser works while the next batch
  * is drawn, was not faster there and held more (16384 a batch: 17 to 35 MB
  * more after the first loop, and one run grew 5.6 MB after it). */

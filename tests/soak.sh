@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# The soak (issue 10, item 6): seamwalk walks a looping path for a while and
+# The soak: seamwalk walks a looping path for a while and
 # its resident memory must stay flat and its code allocate nothing.
 #   soak.sh BUILD_DIR [--duration S] [--pack PACK] [--path FILE]
 #           [--size WxH] [--frames N] [--max-growth-kb K] [--stats FILE]
 #           [--test-grow-kb K]
 # Default: the teaset (built into a temporary folder) orbited at 640x360 in
 # loops of 120 frames for 20 s. The 10-minute soak on the 40,000-patch
-# showroom (README, "The soak"):
+# showroom (docs/testing.md, "The soak"):
 #   bash tests/soak.sh build --duration 600 --pack showroom.swpack --size 1280x720
 # Fails (exit 1) when the walk fails, when mallocs_after_init is not 0, when
 # it walked fewer than two loops, or when resident memory at the end exceeds

@@ -38,7 +38,7 @@ one_line_failure() {
 run --help
 check "--help prints usage and exits 0" eval '[ "$(code)" -eq 0 ] && has "$work/out" "usage: seamwalk-pack build"'
 run
-check "no command exits 2 with usage" eval '[ "$(code)" -eq 2 ] && has "$work/err" "usage:"'
+check "no command exits 2 with one line and a hint" eval '[ "$(code)" -eq 2 ] && [ "$(lines "$work/err")" -eq 2 ] && has "$work/err" "missing command" && has "$work/err" "^try .seamwalk-pack --help.$"'
 run frobnicate x
 check "unknown command exits 2" eval '[ "$(code)" -eq 2 ] && has "$work/err" "unknown command .frobnicate."'
 run build "$samples/teapot.txt"

@@ -15,12 +15,7 @@
 
 static int usage(const char *fmt, const char *arg)
 {
-    fputs("seamwalk-pack: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputs("\nusage: seamwalk-pack keygen -o PREFIX\n"
-          "       seamwalk-pack sign PACK --key PREFIX.key --version N --name NAME [-o OUT]\n"
-          "       seamwalk-pack verify PACK --key KEYS.pub\n", stderr);
-    return 2;
+    return sw_usage_error("seamwalk-pack", fmt, arg);
 }
 
 static int fail(const sw_error *err)

@@ -456,18 +456,11 @@ sw_status sw_gen_showroom_scene(const sw_gen_showroom_desc *desc, char **text,
 
 /* ---- the command -------------------------------------------------------- */
 
-static const char gen_usage[] =
-    "usage: seamwalk-pack gen showroom --patches N -o SCENE.ini [--part FILE]... [--seed S]\n"
-    "Writes a scene of about N Bezier patches (copies of the part files and generated\n"
-    "plates, vases and rails); build it with seamwalk-pack build SCENE.ini -o OUT.swpack\n";
-
 static int gen_usage_error(const char *fmt, const char *arg)
 {
-    fputs("seamwalk-pack: gen: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputc('\n', stderr);
-    fputs(gen_usage, stderr);
-    return 2;
+    char what[SW_ERROR_MESSAGE_MAX];
+    snprintf(what, sizeof what, fmt, arg);
+    return sw_usage_error("seamwalk-pack", "gen: %s", what);
 }
 
 /* A whole decimal number up to max, all of arg. */
