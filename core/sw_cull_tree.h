@@ -4,7 +4,7 @@
  *
  * Built once at load time into the runtime's arena (sw_cull_tree_build,
  * bytes counted in the pack's runtime_bytes through core/sw_walk_memory.c),
- * queried by the seam walk every frame (firmware/sw_seam_walk.c). A query
+ * queried by the seam walk every frame (firmware/walk/sw_seam_walk.c). A query
  * gives, per surface, exactly what testing each of its patch boxes against
  * the frustum gives (sw_cull_brute): the nearest depth of a patch box in view
  * (clamped to the near plane; +inf when none is in view) and the farthest

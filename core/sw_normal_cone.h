@@ -20,7 +20,7 @@
  * here the weights are in the polynomial.
  *
  * Used through sw_surface_cone.h by the seam walk at load time
- * (firmware/sw_seam_walk.c) and the host's clustering, and by the
+ * (firmware/walk/sw_seam_walk.c) and the host's clustering, and by the
  * tests. Pure functions; scratch is the caller's. */
 #ifndef SW_NORMAL_CONE_H
 #define SW_NORMAL_CONE_H

@@ -1,6 +1,6 @@
 /* A surface's current Seam Graph loops as the trimmed tessellator takes them
  * (sw_trim_tess.h), and the share of its error bound its seams get: what the
- * runtime's seam walk (firmware/sw_seam_walk.c) and the host's verify
+ * runtime's seam walk (firmware/walk/sw_seam_walk.c) and the host's verify
  * (assets/pack/sw_pack_verify_tess.c) share, so that what verify proves is
  * what the runtime draws. No allocation. */
 #ifndef SW_SEAM_SURFACE_H

@@ -1,6 +1,6 @@
 /* A pack's surface's normal cone: the union of its Bezier patches' cones
  * (sw_normal_cone.h), and the float patch view both take. The walk builds
- * its culling cones with it at load time (firmware/sw_seam_walk.c), the
+ * its culling cones with it at load time (firmware/walk/sw_seam_walk.c), the
  * host's clustering its super-surfaces' (assets/super/sw_cluster_pack.c).
  * Pure functions; scratch is the caller's. */
 #ifndef SW_SURFACE_CONE_H

@@ -1,5 +1,5 @@
 /* What the runtime's walk through a pack's Seam Graph takes from its arena
- * (firmware/sw_seam_walk.h): the selection's front, per-surface state, the
+ * (firmware/walk/sw_seam_walk.h): the selection's front, per-surface state, the
  * tessellation cache's pools, the trimmed tessellator's scratch and one
  * surface's output. A function of the pack alone, so the pack writer puts it
  * into the header's runtime_bytes (PACK_FORMAT.md, "runtime_bytes"), the

@@ -32,7 +32,7 @@ typedef struct sw_stats {
     double error_max_px;
     /* Samples of meshes drawn coarser than the view asks while their new
      * ones are being made (the threaded walk's first frame and late work,
-     * firmware/sw_seam_walk.h): kept apart from error_px, which is then the
+     * firmware/walk/sw_seam_walk.h): kept apart from error_px, which is then the
      * error of meshes made for their bounds; route_behind is set by the
      * walk around such a mesh's measurement. */
     int route_behind;
@@ -51,7 +51,7 @@ typedef struct sw_stats {
     double seam_error_beyond_sewing_px; /* measured error beyond each surface's sewing offset */
     double seam_sewing_offset_px;       /* largest sewing offset of a drawn surface, pixels */
 
-    /* The seams as drawn (firmware/sw_seam_drawn.h), the most of a measured frame. */
+    /* The seams as drawn (firmware/walk/gl/sw_seam_drawn.h), the most of a measured frame. */
     uint64_t drawn_points_max, drawn_t_vertices_max, drawn_gaps_max, drawn_free_max;
     int drawn_unchecked_frames;
     uint64_t fill_triangles_max; /* zero-area fans over seam crossings drawn in a frame,
@@ -59,12 +59,12 @@ typedef struct sw_stats {
     double seam_chord_px_max;    /* seam chords against their surfaces, sw_seam_measure.h */  /* measured frames whose borders overflowed the check */
 
     /* The depth buffer (platform/sw_egl_headless.h) and the planes fitted
-     * to each frame's drawn surfaces (firmware/sw_seam_depth.h). */
+     * to each frame's drawn surfaces (firmware/walk/visibility/sw_seam_depth.h). */
     int depth_bits;
     double depth_far_over_near_max;     /* the largest far / near of a frame: the depth
                                            buffer resolves depth^2 * this / (far * 2^bits) */
 
-    /* The tessellation cache (firmware/sw_seam_walk.h), per frame and in all. */
+    /* The tessellation cache (firmware/walk/sw_seam_walk.h), per frame and in all. */
     uint32_t *retess;            /* per frame: surfaces tessellated */
     float *tess_ms;              /* per frame: of frame_ms, tessellating and uploading */
     uint64_t retess_total, retess_triangles_total, retess_triangles_max;
@@ -79,7 +79,7 @@ typedef struct sw_stats {
     int cone_cull;               /* cone culling was on (--back-faces hidden) */
     double cull_tree_ms, cones_ms; /* start-up: building the tree and the cones */
 
-    /* With workers (firmware/sw_seam_walk.h, "Threads"): how far the work is
+    /* With workers (firmware/walk/sw_seam_walk.h, "Threads"): how far the work is
      * behind the view and what of the budget it used. */
     int workers, sync_work;
     uint64_t prefetch_total;     /* jobs for surfaces out of view (w', budget left) */

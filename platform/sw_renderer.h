@@ -49,7 +49,7 @@ void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3]);
 void sw_renderer_set_back_hidden(sw_renderer *r, int hidden);
 
 /* Draws that follow, until set again, are fill fans over seam crossings
- * (firmware/sw_seam_fill.h): lit on the side their normals face, whatever
+ * (firmware/walk/workers/sw_seam_fill.h): lit on the side their normals face, whatever
  * way the sliver winds, never flat like a back face. */
 void sw_renderer_set_fill(sw_renderer *r, int fill);
 

@@ -12,7 +12,7 @@ sewn border is off a face by up to the gap whatever the level of detail:
 the walk measures that offset once per surface and reports it); error_px.max
 itself may exceed the bound by no more than that offset. The cache's fields
 are there and consistent (no more surfaces re-tessellated in a frame than
-the pack has). The seams as drawn (firmware/sw_seam_drawn.h): every measured
+the pack has). The seams as drawn (firmware/walk/gl/sw_seam_drawn.h): every measured
 frame checked, T-vertices reported, no gap where the model has no free
 border. The depth buffer's bits (16 at least) and the largest far /
 near of a frame are reported."""

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The depth planes fit where the model can be seen (firmware/sw_seam_depth.h),
+# The depth planes fit where the model can be seen (firmware/walk/visibility/sw_seam_depth.h),
 # told by pixels alone: a strip of floor that runs from behind the eye to
 # 25 m ahead (its box reaches behind the eye: its nearest corner is no
 # guide to the near plane) and a column 20 m ahead of the eye. The frame is

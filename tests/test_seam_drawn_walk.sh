@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The seams as drawn, end to end (firmware/sw_seam_drawn.h, sw_seam_fill.h):
+# The seams as drawn, end to end (firmware/walk/gl/sw_seam_drawn.h, sw_seam_fill.h):
 #   test_seam_drawn_walk.sh BUILD_DIR SOURCE_DIR
 # The teaset walked around an orbit, every frame measured: drawn as the
 # tessellator makes them (--fill-crossings 0) its seam crossings are

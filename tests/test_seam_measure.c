@@ -1,4 +1,4 @@
-/* The measurement of what was drawn (firmware/sw_seam_measure.h): the error
+/* The measurement of what was drawn (firmware/walk/gl/sw_seam_measure.h): the error
  * is the distance on screen between the flat point and the exact one, both
  * projected, and only samples on screen count. The exact surface is the
  * plane z = 0 (x, y in [-40, 40]) seen from z = 10; the meshes are single

@@ -6,7 +6,7 @@
 # at 640x360, with the workers stalled from frame 1: every surface that
 # comes into view after the first frame gets no mesh of its own all walk
 # long, so all that is drawn of it is its stand-in (a static level joined
-# to its neighbours by border strips, firmware/sw_seam_standin.h). Against
+# to its neighbours by border strips, firmware/walk/visibility/sw_seam_standin.h). Against
 # the same path walked with --workers 0 (every mesh made in its frame):
 #   - every 10th frame: no pixel more than 6 px inside the reference's
 #     model shows the background (tests/image_holes.c), so no surface in
@@ -19,7 +19,7 @@
 #   - the walk made stand-ins and left no surface in view undrawn (stats);
 #   - measured every 3rd frame: the walk's own crack count is 0, no
 #     surface in view is undrawn, and the drawn borders
-#     (firmware/sw_seam_drawn.h, which knows nothing of strips or of the
+#     (firmware/walk/gl/sw_seam_drawn.h, which knows nothing of strips or of the
 #     Seam Graph) show no gap and no T-vertex: stand-ins meet each other and
 #     the walk's own meshes vertex for vertex;
 #   - the mutant --static-levels 0 (no stand-ins) must show holes in some

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The threaded walk end to end (firmware/sw_seam_walk.h, "Threads"):
+# The threaded walk end to end (firmware/walk/sw_seam_walk.h, "Threads"):
 #   test_walk_threads.sh BUILD_DIR SOURCE_DIR
 # - P never blocks on T: the workers stalled from frame 4 on (a test hook),
 #   every frame still comes, drawn from the meshes it has, crack-free (0
@@ -14,8 +14,8 @@
 #   came (not whole batches) passed this too, on the teaset, a 2,000- and
 #   the 40,000-patch showroom: the seams as drawn did not tell the two
 #   apart there, so the batch rule rests on its construction
-#   (firmware/sw_seam_walk.h) more than on this check.
-# - the visibility thread V (firmware/sw_seam_visibility.h): with workers
+#   (firmware/walk/sw_seam_walk.h) more than on this check.
+# - the visibility thread V (firmware/walk/visibility/sw_seam_visibility.h): with workers
 #   every frame's plan is made off the GL thread, and V plans frame i+1
 #   while P draws frame i (overlapped frames > 0: V began planning before
 #   P had finished the frame before); --visibility-thread 0 plans on the GL

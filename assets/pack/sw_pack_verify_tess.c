@@ -1,5 +1,5 @@
 /* Every surface tessellated at every seam state from the finest to the
- * coarsest drawn (sw_pack_verify_tess.h), as firmware/sw_seam_walk.c draws
+ * coarsest drawn (sw_pack_verify_tess.h), as firmware/walk/sw_seam_walk.c draws
  * it: its loops from sw_seam_surface_loops (a surface whose outer loop
  * vanished is not drawn); a surface the clipping refuses for a crossing
  * hole is tried without its holes; one that needs too many vertices is

@@ -267,7 +267,7 @@ static sw_camera_pose pose_at(const wb_run *r, int frame)
 }
 
 /* Near and far fitted to the visible patches, as seamwalk fits them to
- * its drawn surfaces (firmware/sw_seam_depth.h). */
+ * its drawn surfaces (firmware/walk/visibility/sw_seam_depth.h). */
 static sw_view fitted_view(const wb_run *r, const sw_view *v)
 {
     double lo = INFINITY, hi = -INFINITY;

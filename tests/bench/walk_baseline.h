@@ -1,8 +1,8 @@
 /* The walkthrough benchmark's baselines (tests/bench/walk_bench.sh): the
  * same pack, camera path, viewport, renderer (platform/sw_renderer.h),
  * stats file (firmware/sw_stats.h) and independent measures as seamwalk
- * (error: firmware/sw_seam_measure.h, every drawn triangle against the
- * exact surface on screen; cracks: firmware/sw_seam_drawn.h, the drawn
+ * (error: firmware/walk/gl/sw_seam_measure.h, every drawn triangle against the
+ * exact surface on screen; cracks: firmware/walk/gl/sw_seam_drawn.h, the drawn
  * borders against each other), drawn by
  *   uniform  every visible patch on one uniform grid of S x S segments, the
  *            cells outside its trim mask left out (firmware/sw_cell_filter.h,

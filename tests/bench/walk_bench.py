@@ -21,7 +21,7 @@ and on each, side by side:
 Every row writes seamwalk's stats file and is measured the same way: frame
 time without the measuring, triangles per frame, error (every drawn
 triangle against the exact surface, on screen), cracks (the drawn borders
-against each other, firmware/sw_seam_drawn.h: gaps), resident memory (peak).
+against each other, firmware/walk/gl/sw_seam_drawn.h: gaps), resident memory (peak).
 The baselines are slow, so they draw every K-th frame of the path (said in
 the table) and GLU stops after a time limit. Before the rows, seamwalk is
 started 9 more times for one frame each (start to first frame: median and
