@@ -1,0 +1,197 @@
+/* V: surfaces in view without a mesh of the walk's own drawn from their
+ * static levels (sw_seam_standin.h), joined to what is drawn beside them;
+ * the borders they announce to each other, and room made for them in the
+ * cache. */
+#include <math.h>
+#include <string.h>
+
+#include "sw_seam_surface.h"
+#include "sw_seam_walk_internal.h"
+
+/* The vertex original o shows in a stand-in for s: where o is sewn into a
+ * loop of another surface drawn this frame from a mesh of the walk's own
+ * (not a stand-in), the one that mesh shows (drawn, by leaf position);
+ * elsewhere its highest ancestor within the seams' share of the finest
+ * border that a stand-in sewn at o was announced with (w->standin_border,
+ * s's own among them). Both depend on o and the stand-ins' announcements,
+ * not on s, so every stand-in sewn to o shows the same vertex there; when
+ * one changes, those beside it are made again
+ * (sw_seam_walk_standin_announce). So a far stand-in's border is about as
+ * coarse as its bound allows; at the finest level's share for all (as
+ * first made), the strips were most of the stand-ins' triangles. */
+static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
+                               const uint32_t *drawn)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    const uint32_t *at = NULL;
+    uint32_t count = sw_seam_select_surfaces_at(&w->select, o, &at);
+    float within = w->standin_border[s];
+    for (uint32_t k = 0; k < count; k++) {
+        uint32_t t = at[k];
+        if (t != s && w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t] &&
+            w->visible[t] == 1)
+            return drawn[w->select.leaf_lo[o]];
+        within = fminf(within, w->standin_border[t]);
+    }
+    within = isfinite(within) ? (float)SW_SEAM_SHARE * within : 0.0f;
+    uint32_t x = o;
+    while (g->vertices[x].child != SW_SEAM_NONE &&
+           g->vertices[g->vertices[x].child].error <= within)
+        x = g->vertices[x].child;
+    return x;
+}
+
+/* What s's stand-in's loops may show: its level's error or, coarser, the
+ * power of two at or below its target. Not the level's error alone: a
+ * surface whose coarsest level is far finer than its bound (a plane is
+ * exact at every level, so it keeps one) held the loops of every stand-in
+ * beside it to that fineness, and at the far end of an orbit the strips
+ * were three quarters of the triangles drawn. Not the target itself:
+ * it changes every frame, and each change makes the stand-ins beside s
+ * again; a power of two changes once a doubling of the distance. */
+static float border_step(const sw_seam_walk *w, uint32_t s, float level_error)
+{
+    float target = w->target[s];
+    float step = target > 0 && isfinite(target) ? exp2f(floorf(log2f(target))) : 0.0f;
+    return fmaxf(level_error, step);
+}
+
+/* 1 when each outer loop of s still shows three vertices or more with its
+ * originals at their highest ancestors within the seams' share of border
+ * (its neighbours may hold them finer, never coarser): as the select's
+ * loop walk counts them, distinct. */
+static int keeps_outer_loops(const sw_seam_walk *w, uint32_t s, float border)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    float within = (float)SW_SEAM_SHARE * border;
+    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++) {
+        if (!(g->loops[l].flags & SW_SEAM_LOOP_OUTER))
+            continue;
+        uint32_t seen[3], distinct = 0;
+        for (uint32_t k = 0; k < g->loops[l].slot_count && distinct < 3; k++) {
+            uint32_t x = g->slots[g->loops[l].first_slot + k].vertex;
+            while (g->vertices[x].child != SW_SEAM_NONE &&
+                   g->vertices[g->vertices[x].child].error <= within)
+                x = g->vertices[x].child;
+            uint32_t i = 0;
+            while (i < distinct && seen[i] != x)
+                i++;
+            if (i == distinct)
+                seen[distinct++] = x;
+        }
+        if (distinct < 3)
+            return 0;
+    }
+    return 1;
+}
+
+/* The border s is announced with: the step, halved while that would leave
+ * an outer loop of s with fewer than three vertices (a stand-in then has
+ * nothing to draw: a small surface far off, or a thin one, would be left
+ * out), down to its level's own error, where the level was made. */
+static float standin_border(const sw_seam_walk *w, uint32_t s, float level_error)
+{
+    float border = border_step(w, s, level_error);
+    for (int k = 0; k < 32 && border > level_error && !keeps_outer_loops(w, s, border); k++)
+        border = fmaxf(level_error, 0.5f * border);
+    return border;
+}
+
+void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)
+{
+    uint32_t level = sw_seam_standin_level(w->pack, s, w->target[s]);
+    if (level == UINT32_MAX)
+        return;
+    float error = w->pack->levels.levels[level].error;
+    float border = standin_border(w, s, error);
+    if (error == w->standin_error[s] && border == w->standin_border[s])
+        return;
+    w->standin_error[s] = error, w->standin_border[s] = border;
+    sw_seam_walk_restitch_around(w, s);
+}
+
+/* The level s stands in with: the one announced (its neighbours were
+ * joined to it; a stand-in made again keeps it, so they need not be), else
+ * its target's, announced now. */
+static uint32_t standin_level(sw_seam_walk *w, uint32_t s)
+{
+    const sw_levels *lv = &w->pack->levels;
+    if (s < lv->surface_count && isfinite(w->standin_error[s]))
+        for (uint32_t k = lv->surface_levels[s]; k < lv->surface_levels[s + 1]; k++)
+            if (lv->levels[k].error == w->standin_error[s])
+                return k;
+    sw_seam_walk_standin_announce(w, s);
+    return sw_seam_standin_level(w->pack, s, w->target[s]);
+}
+
+/* The front a stand-in for s is joined to, as the shown vertex of each of
+ * its loops' originals (in w->mixed_shown by leaf position, read only at
+ * s's slots; standin_vertex). So it meets the walk's meshes beside it, as
+ * they were made from the front before a batch in flight moved it, and
+ * other stand-ins, whatever levels they show; not the front alone, which
+ * for a surface that was out of view is as coarse as it goes, its loops
+ * mostly gone. */
+static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
+{
+    const uint32_t *drawn = w->batch_count > 0 ? w->drawn_shown : w->select.shown;
+    const sw_seam_graph *g = &w->pack->seam;
+    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+        for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
+            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
+            w->mixed_shown[w->select.leaf_lo[o]] = standin_vertex(w, o, s, drawn);
+        }
+    return w->mixed_shown;
+}
+
+/* No room for a stand-in: meshes out of view go, least recently drawn
+ * first, in rounds of 64, 128, 256... a frame (each round sorts the cache:
+ * at most log2(surfaces / 64) + 1 of them) until none is left out of view.
+ * Those drawn in frames that have finished (most of them: they went out
+ * of view a while ago) free their blocks at once, so the stand-in is tried
+ * again now, not a frame later, in which a turn of the eye would leave
+ * hundreds of surfaces undrawn. 1 when some went. */
+static int make_room(sw_seam_walk *w, sw_seam_frame *frame)
+{
+    if (w->standin_evicted != w->frame)
+        w->standin_evicted = w->frame, w->standin_evict_rounds = 0;
+    if (w->standin_evict_rounds == UINT32_MAX)
+        return 0;   /* nothing left out of view this frame */
+    uint32_t want = 64u << (w->standin_evict_rounds < 24 ? w->standin_evict_rounds : 24);
+    uint32_t gone = sw_seam_walk_evict(w, want);
+    w->standin_evict_rounds = gone < want ? UINT32_MAX : w->standin_evict_rounds + 1;
+    frame->evicted += gone;
+    return gone > 0;
+}
+
+int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
+{
+    uint32_t level = standin_level(w, s);
+    if (level == UINT32_MAX)
+        return 0;
+    sw_seam_select front = w->select;
+    sw_seam_entry *e = &w->cache.entries[s];
+    uint32_t last = e->last_frame;
+    front.shown = standin_front(w, s);
+    int made = sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
+                                    sw_seam_workers_place, w->workers, e);
+    if (!made && make_room(w, frame))
+        made = sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
+                                    sw_seam_workers_place, w->workers, e);
+    if (!made) {
+        e->last_frame = last;
+        return 0;   /* it waits, undrawn and counted */
+    }
+    /* Gone in the loops it was made in is not gone at the surface's own
+     * bound: it waits, undrawn and counted, for its mesh. */
+    if (e->state != SW_SEAM_READY)
+        memset(e, 0, sizeof *e);
+    e->last_frame = last;
+    if (e->state != SW_SEAM_READY)
+        return 0;
+    w->standin[s] = 1;
+    frame->standins_made++;
+    if (w->need_since[s] == UINT32_MAX)
+        w->need_since[s] = w->frame - 1;
+    sw_seam_walk_plan_upload(w, s, plan);
+    return 1;
+}
