@@ -15,7 +15,7 @@
 #   the 40,000-patch showroom: the seams as drawn did not tell the two
 #   apart there, so the batch rule rests on its construction
 #   (firmware/walk/sw_seam_walk.h) more than on this check.
-# - the visibility thread V (firmware/walk/visibility/sw_seam_visibility.h): with workers
+# - the visibility thread V (firmware/walk/sw_seam_visibility.h): with workers
 #   every frame's plan is made off the GL thread, and V plans frame i+1
 #   while P draws frame i (overlapped frames > 0: V began planning before
 #   P had finished the frame before); --visibility-thread 0 plans on the GL
