@@ -32,6 +32,11 @@ endforeach()
 add_test(NAME seam_drawn_walk
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_seam_drawn_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
 
+# The includes run one way: no header circle, and the walk's folders
+# (firmware/walk/ and its thread folders) never include each other both ways.
+add_test(NAME include_graph
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/check_includes.py ${PROJECT_SOURCE_DIR})
+
 # The depth planes fit where the model is seen: no back face in front.
 add_test(NAME depth_fit
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_depth_fit.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})

@@ -1,5 +1,7 @@
 #include "sw_seam_depth.h"
 
+#include "sw_seam_walk.h"
+
 #include <math.h>
 
 static int drawn(const sw_seam_walk *w, uint32_t s)

@@ -7,14 +7,17 @@
 #ifndef SW_SEAM_DEPTH_H
 #define SW_SEAM_DEPTH_H
 
-#include "sw_seam_walk.h"
 #include "sw_view.h"
+
+/* The walk's state (../sw_seam_walk.h), which includes this folder's
+ * headers: declared here, not included, so the includes run one way. */
+struct sw_seam_walk;
 
 /* Over the patches in view of every surface the walk will draw: *nearest
  * the smallest depth at which their boxes can be seen (inside the view's
  * sides; at least view's near plane), *farthest their farthest box corner.
  * 0 when nothing is drawn (both left untouched). */
-int sw_seam_depth_range(const sw_seam_walk *w, const sw_view *view, double *nearest,
+int sw_seam_depth_range(const struct sw_seam_walk *w, const sw_view *view, double *nearest,
                         double *farthest);
 
 #endif
