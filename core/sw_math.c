@@ -219,7 +219,8 @@ double sw_box_visible_min_depth(const sw_box *box, const sw_frustum *f, sw_vec3 
     if (eye.x >= box->min.x && eye.x <= box->max.x && eye.y >= box->min.y &&
         eye.y <= box->max.y && eye.z >= box->min.z && eye.z <= box->max.z)
         return 0.0;
-    const double *lo = &box->min.x, *hi = &box->max.x;
+    const double lo[3] = { box->min.x, box->min.y, box->min.z };
+    const double hi[3] = { box->max.x, box->max.y, box->max.z };
     double best = INFINITY;
     for (int axis = 0; axis < 3; axis++)
         for (int side = 0; side < 2; side++) {
