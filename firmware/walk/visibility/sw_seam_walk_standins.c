@@ -46,7 +46,7 @@ static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
  * surface whose coarsest level is far finer than its bound (a plane is
  * exact at every level, so it keeps one) held the loops of every stand-in
  * beside it to that fineness, and at the far end of an orbit the strips
- * were three quarters of the triangles drawn. Not the target itself:
+ * were most of the triangles drawn. Not the target itself:
  * it changes every frame, and each change makes the stand-ins beside s
  * again; a power of two changes once a doubling of the distance. */
 static float border_step(const sw_seam_walk *w, uint32_t s, float level_error)
