@@ -46,7 +46,9 @@ function(sw_occt_apply target core)
   # The C++ file is an object library of its own: sw_apply_warnings' C-only
   # flags (-Wstrict-prototypes, -Wmissing-prototypes) are errors for g++ under
   # -Werror, so C++ gets the equivalent set here.
-  add_library(${target}_occt OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_import_occt.cpp)
+  add_library(${target}_occt OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_import_occt.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_measure.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_step_file.cpp)
   target_include_directories(${target}_occt PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/import
     ${CMAKE_CURRENT_SOURCE_DIR}/model)
   # SYSTEM: OCCT's headers are not ours to keep free of -Wextra warnings.

@@ -1,5 +1,7 @@
 /* STEP (AP203, AP214, AP242) and IGES through OpenCASCADE 7.6 behind the C
- * interface of sw_import_occt.h and sw_occt_measure.h.
+ * interface of sw_import_occt.h: reading and converting. What the file says
+ * of itself is read in sw_occt_step_file.cpp, the measurement for
+ * cross-checks (sw_occt_measure.h) is sw_occt_measure.cpp.
  *
  * Reading: STEP through STEPCAFControl_Reader into an XCAF document, whose
  * assembly tree gives one model part per leaf shape instance with its name and
@@ -21,19 +23,15 @@ extern "C" {
 #include "sw_math.h"
 #include "sw_occt_measure.h"
 }
+#include "sw_occt_internal.h"
 
-#include <BRepAdaptor_Curve.hxx>
 #include <BRepBndLib.hxx>
-#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
-#include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
-#include <GCPnts_AbscissaPoint.hxx>
-#include <GProp_GProps.hxx>
 #include <Geom2dConvert.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
@@ -43,8 +41,6 @@ extern "C" {
 #include <IGESControl_Reader.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
-#include <Interface_Check.hxx>
-#include <Interface_CheckIterator.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -55,18 +51,8 @@ extern "C" {
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Wire.hxx>
 #include <Standard_Failure.hxx>
-#include <StepBasic_UncertaintyMeasureWithUnit.hxx>
 #include <StepData_StepModel.hxx>
-#include <StepGeom_Pcurve.hxx>
-#include <StepGeom_Surface.hxx>
-#include <StepGeom_SurfaceCurve.hxx>
-#include <StepShape_AdvancedFace.hxx>
-#include <StepShape_EdgeCurve.hxx>
-#include <StepShape_EdgeLoop.hxx>
-#include <StepShape_FaceBound.hxx>
-#include <StepShape_OrientedEdge.hxx>
 #include <TColStd_Array1OfReal.hxx>
-#include <TColStd_SequenceOfAsciiString.hxx>
 #include <TCollection_AsciiString.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
@@ -102,63 +88,9 @@ extern "C" {
 #include <string>
 #include <vector>
 
+using namespace sw_occt;
+
 namespace {
-
-/* ---- OCCT's messages and progress ------------------------------------- */
-
-/* Keeps OCCT's fail and alarm messages instead of printing them: a library
- * must not write to the tool's stdout, and the first failure is the best
- * description of a malformed file we get. */
-class CapturePrinter : public Message_Printer {
-public:
-    mutable std::vector<std::string> lines;
-
-protected:
-    void send(const TCollection_AsciiString &text, const Message_Gravity gravity) const override
-    {
-        if (gravity >= Message_Alarm && lines.size() < 16)
-            lines.emplace_back(text.ToCString());
-    }
-};
-
-/* Replaces the default messenger's printers for the lifetime of one call. */
-class MessageCapture {
-public:
-    MessageCapture() : printer_(new CapturePrinter)
-    {
-        const Handle(Message_Messenger) &messenger = Message::DefaultMessenger();
-        saved_ = messenger->Printers();
-        messenger->ChangePrinters().Clear();
-        messenger->AddPrinter(printer_);
-    }
-    ~MessageCapture()
-    {
-        const Handle(Message_Messenger) &messenger = Message::DefaultMessenger();
-        messenger->ChangePrinters() = saved_;
-    }
-    MessageCapture(const MessageCapture &) = delete;
-    MessageCapture &operator=(const MessageCapture &) = delete;
-
-    /* The first captured line, trimmed, or "" when OCCT said nothing. */
-    std::string first() const
-    {
-        for (const std::string &line : printer_->lines) {
-            size_t b = line.find_first_not_of(" \t\r\n*");
-            /* "ERR StepFile : Undefined Parsing: ...": the tag is noise. */
-            size_t tag = line.find(" : ", b);
-            if (line.compare(b, 4, "ERR ") == 0 && tag != std::string::npos)
-                b = tag + 3;
-            size_t e = line.find_last_not_of(" \t\r\n*");
-            if (b != std::string::npos)
-                return line.substr(b, e - b + 1);
-        }
-        return std::string();
-    }
-
-private:
-    Handle(CapturePrinter) printer_;
-    Message_SequenceOfPrinters saved_;
-};
 
 /* Forwards OCCT's transfer progress to options->progress, at most once per
  * percent so the callback stays cheap. */
@@ -193,6 +125,10 @@ void report_progress(const sw_import_options *options, const char *stage, double
 
 /* ---- small helpers ----------------------------------------------------- */
 
+}  // namespace
+
+namespace sw_occt {
+
 std::string lower_extension(const char *path)
 {
     const char *dot = std::strrchr(path, '.');
@@ -204,6 +140,10 @@ std::string lower_extension(const char *path)
         c = (char)std::tolower((unsigned char)c);
     return ext;
 }
+
+}  // namespace sw_occt
+
+namespace {
 
 /* "dir/linkrods.step" -> "linkrods": the part name when the file has none. */
 std::string file_stem(const char *path)
@@ -344,11 +284,6 @@ void fill_surface(const Handle(Geom_BSplineSurface) &b, Surface *out)
 }
 
 /* ---- faces -------------------------------------------------------------- */
-
-/* What the file itself said about p-curves: for STEP, the number of edge uses
- * of each face (keyed by the face's TShape) whose edge carries no PCURVE on
- * that face's surface, so OCCT's reader had to project one. */
-typedef TopTools_DataMapOfShapeInteger FilePcurveGaps;
 
 struct ImportContext {
     const char *path;
@@ -585,246 +520,6 @@ sw_status add_part(ImportContext *ctx, const TopoDS_Shape &shape, const TopLoc_L
 
 }  // namespace
 
-namespace {
-
-/* ---- what the STEP file says ------------------------------------------- */
-
-/* Edge uses of a STEP face whose edge carries no PCURVE on the face's own
- * surface: OCCT's reader projected those (the NIST files have none at all). */
-int step_face_pcurve_gaps(const Handle(StepShape_FaceSurface) &face)
-{
-    Handle(StepGeom_Surface) surface = face->FaceGeometry();
-    int gaps = 0;
-    for (int b = 1; b <= face->NbBounds(); b++) {
-        Handle(StepShape_EdgeLoop) loop =
-            Handle(StepShape_EdgeLoop)::DownCast(face->BoundsValue(b)->Bound());
-        if (loop.IsNull())
-            continue;
-        for (int e = 1; e <= loop->NbEdgeList(); e++) {
-            Handle(StepShape_EdgeCurve) edge =
-                Handle(StepShape_EdgeCurve)::DownCast(loop->EdgeListValue(e)->EdgeElement());
-            Handle(StepGeom_SurfaceCurve) sc = edge.IsNull()
-                ? Handle(StepGeom_SurfaceCurve)()
-                : Handle(StepGeom_SurfaceCurve)::DownCast(edge->EdgeGeometry());
-            bool found = false;
-            for (int g = 1; !sc.IsNull() && g <= sc->NbAssociatedGeometry(); g++) {
-                Handle(StepGeom_Pcurve) pc = sc->AssociatedGeometryValue(g).Pcurve();
-                found = found || (!pc.IsNull() && pc->BasisSurface() == surface);
-            }
-            gaps += !found;
-        }
-    }
-    return gaps;
-}
-
-/* Maps every transferred face to its p-curve gaps in the file. */
-void map_step_pcurve_gaps(const Handle(XSControl_WorkSession) &ws, FilePcurveGaps *gaps)
-{
-    Handle(Transfer_TransientProcess) tp = ws->TransferReader()->TransientProcess();
-    if (tp.IsNull())
-        return;
-    for (int i = 1; i <= tp->NbMapped(); i++) {
-        Handle(StepShape_FaceSurface) face = Handle(StepShape_FaceSurface)::DownCast(tp->Mapped(i));
-        if (face.IsNull())
-            continue;
-        TopoDS_Shape shape = TransferBRep::ShapeResult(tp, face);
-        if (!shape.IsNull() && shape.ShapeType() == TopAbs_FACE)
-            gaps->Bind(shape.Located(TopLoc_Location()), step_face_pcurve_gaps(face));
-    }
-}
-
-/* Millimetres per file length unit, from the names OCCT's reader reports. */
-double step_units_to_mm(STEPControl_Reader &reader)
-{
-    TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
-    reader.FileUnits(lengths, angles, solid_angles);
-    if (lengths.IsEmpty())
-        return 1.0;
-    TCollection_AsciiString unit = lengths.First();
-    unit.UpperCase();
-    static const struct { const char *name; double mm; } known[] = {
-        {"MM", 1.0},     {"MILLIMETRE", 1.0}, {"CM", 10.0},       {"CENTIMETRE", 10.0},
-        {"M", 1000.0},   {"METRE", 1000.0},   {"KM", 1e6},        {"KILOMETRE", 1e6},
-        {"UM", 1e-3},    {"MICRON", 1e-3},    {"MICROMETRE", 1e-3},
-        {"INCH", 25.4},  {"IN", 25.4},        {"FT", 304.8},      {"FOOT", 304.8},
-        {"MI", 1609344.0}, {"MILE", 1609344.0}, {"MIL", 0.0254},
-    };
-    for (const auto &k : known)
-        if (unit.IsEqual(k.name))
-            return k.mm;
-    return 1.0;
-}
-
-/* The largest UNCERTAINTY_MEASURE_WITH_UNIT, in file units (0: none). */
-double step_uncertainty(const Handle(StepData_StepModel) &model)
-{
-    double tolerance = 0.0;
-    for (int i = 1; i <= model->NbEntities(); i++) {
-        Handle(StepBasic_UncertaintyMeasureWithUnit) u =
-            Handle(StepBasic_UncertaintyMeasureWithUnit)::DownCast(model->Value(i));
-        if (!u.IsNull() && u->ValueComponent() > tolerance)
-            tolerance = u->ValueComponent();
-    }
-    return tolerance;
-}
-
-/* The STEP entity (#id) that starts last at or before a line of the file
- * (0: none; line 0: the whole file). */
-int step_entity_at_line(const char *path, long line)
-{
-    FILE *f = std::fopen(path, "rb");
-    if (!f)
-        return 0;
-    int id = 0;
-    long n = 1;
-    bool line_start = true;
-    for (int c; (line == 0 || n <= line) && (c = std::fgetc(f)) != EOF;) {
-        if (line_start && c == '#') {
-            int value = 0;
-            if (std::fscanf(f, "%d", &value) == 1)
-                id = value;
-        }
-        line_start = c == '\n';
-        n += c == '\n';
-    }
-    std::fclose(f);
-    return id;
-}
-
-/* The line number in one of OCCT's parser messages ("... Line 745: ..."). */
-long message_line(const std::string &message)
-{
-    size_t at = message.find("Line ");
-    return at == std::string::npos ? 0 : std::strtol(message.c_str() + at + 5, nullptr, 10);
-}
-
-/* Names where a check points: "#172: " (STEP) or "entity at D325: " (IGES
- * directory entry). The parser's own messages name a line, which OCCT 7.6
- * counts a line or two off, so those say "near #id", except at the end of
- * the file, where the entity cut short is the last one that starts. */
-std::string check_place(const Handle(Interface_InterfaceModel) &model, int number, bool step,
-                        const char *path, const std::string &message)
-{
-    char buf[48] = "";
-    Handle(StepData_StepModel) sm = Handle(StepData_StepModel)::DownCast(model);
-    if (number > 0 && step && !sm.IsNull() && number <= sm->NbEntities()) {
-        std::snprintf(buf, sizeof buf, "#%d: ", sm->IdentLabel(sm->Value(number)));
-    } else if (number > 0 && !step) {
-        std::snprintf(buf, sizeof buf, "entity at D%d: ", 2 * number - 1);
-    } else if (step && message.find("end of file") != std::string::npos) {
-        int id = step_entity_at_line(path, 0);
-        if (id > 0)
-            std::snprintf(buf, sizeof buf, "cut short in #%d: ", id);
-    } else if (step && message_line(message) > 0) {
-        int id = step_entity_at_line(path, message_line(message));
-        if (id > 0)
-            std::snprintf(buf, sizeof buf, "near #%d: ", id);
-    }
-    return buf;
-}
-
-/* Whether a failed check leaves the model unreadable where it points: a
- * geometric or topological entity with a bad parameter cannot become a
- * shape, and OCCT's transfer of one (a CARTESIAN_POINT with a string among
- * its coordinates) crashes. Fails elsewhere (units, contexts, names,
- * presentation, PMI, the IGES global section) are messages: OCCT reads on
- * with its defaults and transfers every face, and so does seamwalk. */
-bool check_is_fatal(const Handle(Interface_InterfaceModel) &model, int number, bool step,
-                    const std::string &fail)
-{
-    if (number <= 0 || number > model->NbEntities())
-        return !(!step && fail.find("Global Section") != std::string::npos);
-    if (step && fail.find("not a quoted String") != std::string::npos)
-        return false;  /* names carry no geometry (Rhino writes $ for them) */
-    const char *type = model->Value(number)->DynamicType()->Name();
-    static const char *const geometric[] = {"StepGeom_", "StepShape_", "IGESGeom_",
-                                            "IGESSolid_"};
-    for (const char *prefix : geometric)
-        if (std::strncmp(type, prefix, std::strlen(prefix)) == 0)
-            return true;
-    return false;
-}
-
-/* The loaded model's first failing check that makes it unreadable, as one
- * phrase naming the entity ("" when there is none). The others are counted
- * in report (when given) by their text, the first one kept in full. */
-std::string fatal_check_failure(const Handle(XSControl_WorkSession) &ws, bool step,
-                                const char *path, sw_import_report *report)
-{
-    Interface_CheckIterator checks = ws->ModelCheckList();
-    Handle(Interface_InterfaceModel) model = ws->Model();
-    for (checks.Start(); checks.More(); checks.Next()) {
-        const Handle(Interface_Check) &check = checks.Value();
-        for (int i = 1; i <= check->NbFails(); i++) {
-            std::string fail = check->CFail(i);
-            std::string place = check_place(model, checks.Number(), step, path, fail);
-            if (check_is_fatal(model, checks.Number(), step, fail))
-                return place + fail;
-            if (report) {
-                std::string kind = std::string(step ? "STEP: " : "IGES: ") + fail;
-                sw_import_report_message(report, kind.c_str(), (place + fail).c_str());
-            }
-        }
-    }
-    return std::string();
-}
-
-/* ---- truncation --------------------------------------------------------- */
-
-/* Both formats end with a fixed trailer (STEP: END-ISO-10303-21;, IGES: the
- * T record), checked before OCCT parses anything: its IGES reader accepts a
- * file cut in the parameter section and transfers what it got, and its STEP
- * parser reports a cut as a syntax error at a line that may be off. */
-bool file_tail_has(const char *path, bool step)
-{
-    FILE *f = std::fopen(path, "rb");
-    if (!f)
-        return false;
-    char tail[512] = {0};
-    size_t n = 0;
-    if (std::fseek(f, -(long)(sizeof tail - 1), SEEK_END) != 0)
-        std::rewind(f);
-    n = std::fread(tail, 1, sizeof tail - 1, f);
-    std::fclose(f);
-    tail[n] = '\0';
-    std::string text(tail, n);
-    if (step)
-        return text.find("END-ISO-10303-21") != std::string::npos;
-    size_t end = text.find_last_not_of(" \r\n\t\x1a");
-    if (end == std::string::npos)
-        return false;
-    size_t start = text.find_last_of('\n', end);
-    std::string last = text.substr(start == std::string::npos ? 0 : start + 1,
-                                   end + 1 - (start == std::string::npos ? 0 : start + 1));
-    return last.size() >= 73 && last[72] == 'T';
-}
-
-/* The #id of the last entity whose text ends (its ';' outside a string):
- * where a truncated file was cut. 0 when none is complete. */
-int last_complete_step_entity(const char *path)
-{
-    FILE *f = std::fopen(path, "rb");
-    if (!f)
-        return 0;
-    int current = 0, complete = 0;
-    bool line_start = true, quoted = false;
-    for (int c; (c = std::fgetc(f)) != EOF;) {
-        if (line_start && c == '#' && !quoted) {
-            int value = 0;
-            if (std::fscanf(f, "%d", &value) == 1)
-                current = value;
-        } else if (c == '\'') {
-            quoted = !quoted;
-        } else if (c == ';' && !quoted) {
-            complete = current;
-        }
-        line_start = c == '\n';
-    }
-    std::fclose(f);
-    return complete;
-}
-
-}  // namespace
 
 namespace {
 
@@ -1089,25 +784,6 @@ sw_status import_file(ImportContext *ctx)
     return SW_OK;
 }
 
-/* The one place exceptions stop: whatever OCCT or the C++ library throws
- * becomes an error naming the file. */
-template <typename Fn>
-sw_status guarded(const char *path, sw_error *err, Fn fn)
-{
-    try {
-        return fn();
-    } catch (const Standard_Failure &e) {
-        return sw_error_set(err, SW_ERR_FORMAT, "%s: OCCT: %s (%s)", path, e.GetMessageString(),
-                            e.DynamicType()->Name());
-    } catch (const std::bad_alloc &) {
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: out of memory", path);
-    } catch (const std::exception &e) {
-        return sw_error_set(err, SW_ERR_FORMAT, "%s: %s", path, e.what());
-    } catch (...) {
-        return sw_error_set(err, SW_ERR_FORMAT, "%s: unknown exception in OCCT", path);
-    }
-}
-
 }  // namespace
 
 extern "C" int sw_import_occt_available(void)
@@ -1129,111 +805,4 @@ extern "C" sw_status sw_import_occt_file(const char *path, const sw_import_optio
         ImportContext ctx{path, options, model, report, err, FilePcurveGaps()};
         return import_file(&ctx);
     });
-}
-
-/* ---- measurement --------------------------------------------------------- */
-
-namespace {
-
-/* OCCT's plain reader of either kind, all roots as one shape. STEP files
- * with failed checks are refused (their transfer can crash); IGES ones are
- * transferred as OCCT would, which is what a cross-check wants to see. */
-template <typename Reader>
-sw_status read_one_shape(const char *path, bool step, TopoDS_Shape *shape, sw_error *err)
-{
-    Reader reader;
-    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-    if (reader.ReadFile(path) != IFSelect_RetDone)
-        return sw_error_set(err, SW_ERR_FORMAT, "%s: OCCT cannot read it", path);
-    std::string fail = step ? fatal_check_failure(reader.WS(), true, path, nullptr) : "";
-    if (!fail.empty())
-        return sw_error_set(err, SW_ERR_FORMAT, "%s: %s", path, fail.c_str());
-    reader.TransferRoots();
-    *shape = reader.OneShape();
-    return SW_OK;
-}
-
-/* The file, STEP or IGES by its extension, as one shape. */
-sw_status read_file_shape(const char *path, TopoDS_Shape *shape, sw_error *err)
-{
-    std::string ext = lower_extension(path);
-    bool step = ext == "stp" || ext == "step" || ext == "p21";
-    MessageCapture messages;
-    return step ? read_one_shape<STEPControl_Reader>(path, true, shape, err)
-                : read_one_shape<IGESControl_Reader>(path, false, shape, err);
-}
-
-sw_status measure_file(const char *path, sw_occt_measure *out, sw_error *err)
-{
-    TopoDS_Shape shape;
-    *out = sw_occt_measure{};
-    sw_status status = read_file_shape(path, &shape, err);
-    if (status != SW_OK)
-        return status;
-    if (shape.IsNull())
-        return SW_OK;   /* an empty shape: no faces, the caller decides */
-    TopTools_IndexedMapOfShape faces;
-    TopExp::MapShapes(shape, TopAbs_FACE, faces);
-    out->faces = (size_t)faces.Extent();
-    Bnd_Box box;
-    BRepBndLib::AddOptimal(shape, box, Standard_False, Standard_False);
-    if (!box.IsVoid())
-        box.Get(out->box_min[0], out->box_min[1], out->box_min[2], out->box_max[0],
-                out->box_max[1], out->box_max[2]);
-    /* The adaptive form: the plain one integrates each face at a fixed Gauss
-     * order and was 0.01-0.2% short on the hammer's faces. */
-    GProp_GProps props;
-    BRepGProp::SurfaceProperties(shape, props, 1e-9);
-    out->area_mm2 = props.Mass();
-    return SW_OK;
-}
-
-double edge_length(const TopoDS_Edge &edge)
-{
-    if (BRep_Tool::Degenerated(edge))
-        return 0.0;
-    BRepAdaptor_Curve curve(edge);  /* its 3D curve, or its curve on a face (IGES) */
-    return GCPnts_AbscissaPoint::Length(curve);
-}
-
-sw_status measure_sewing(const char *path, double tolerance, sw_occt_sewing *out, sw_error *err)
-{
-    TopoDS_Shape shape;
-    *out = sw_occt_sewing{};
-    sw_status status = read_file_shape(path, &shape, err);
-    if (status != SW_OK || shape.IsNull())
-        return status;
-    BRepBuilderAPI_Sewing sewing(tolerance);
-    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
-        BRepBuilderAPI_Copy copy(f.Current());
-        sewing.Add(copy.Shape());
-        out->faces++;
-    }
-    sewing.Perform();
-    for (int i = 1; i <= sewing.NbFreeEdges(); i++)
-        out->free_length_mm += edge_length(sewing.FreeEdge(i));
-    out->free_edges = (size_t)sewing.NbFreeEdges();
-    TopoDS_Shape sewn = sewing.SewedShape();
-    for (TopExp_Explorer f(sewn, TopAbs_FACE); f.More(); f.Next())
-        for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next())
-            out->border_length_mm += edge_length(TopoDS::Edge(e.Current()));
-    return SW_OK;
-}
-
-}  // namespace
-
-extern "C" sw_status sw_occt_measure_sewing(const char *path, double tolerance_mm,
-                                            sw_occt_sewing *out, sw_error *err)
-{
-    if (!path || !out || !(tolerance_mm > 0))
-        return sw_error_set(err, SW_ERR_ARG, "sw_occt_measure_sewing: no path, output or "
-                                             "positive tolerance");
-    return guarded(path, err, [&]() { return measure_sewing(path, tolerance_mm, out, err); });
-}
-
-extern "C" sw_status sw_occt_measure_file(const char *path, sw_occt_measure *out, sw_error *err)
-{
-    if (!path || !out)
-        return sw_error_set(err, SW_ERR_ARG, "sw_occt_measure_file: no path or output");
-    return guarded(path, err, [&]() { return measure_file(path, out, err); });
 }
