@@ -159,7 +159,7 @@ if(NOT SW_ASAN AND NOT SW_TSAN)
 endif()
 
 # The short soak: the teaset looped for 20 s; resident memory flat after
-# the first loop and no allocation (tests/soak.sh; the 10-minute soak is the
+# the warm-up (the first quarter of the loops) and no allocation (tests/soak.sh; the 10-minute soak is the
 # same script with --duration 600, docs/testing.md, "The soak"). Under the
 # sanitizers resident memory is theirs (ASan's quarantine keeps what Mesa
 # frees each frame: +3 MB in 20 s), so there only the loops and
