@@ -4,6 +4,9 @@
  *   old one, the least recently drawn evictable surface goes first, a
  *   surface marked not evictable is never evicted, and a mesh that cannot
  *   fit leaves its surface EMPTY;
+ * - the pools the walk sizes for a pack hold a small mesh for every one of
+ *   its surfaces at once (the whole model in view, each surface a stand-in
+ *   of a few triangles): blocks are counted, not only vertices;
  * - a pack's runtime_bytes holds the loaded pack and the whole seam walk
  *   (sw_seam_walk_init), with little to spare: the figure is the memory. */
 #include <stdlib.h>
@@ -75,6 +78,40 @@ static void test_surfaces_in_view_are_never_evicted(void)
     SW_CHECK(c.entries[2].state == SW_SEAM_EMPTY);
 }
 
+/* 40,000 one-patch surfaces (the courtyard of walk_bench), each with a
+ * mesh of 16 vertices and 16 triangles, none evictable: all fit in the
+ * pools sw_walk_cache_vertices gives. With blocks of 64 vertices the pools
+ * had 32,768 blocks, and at the far end of an orbit thousands of surfaces
+ * in view were left undrawn. */
+static void test_every_surface_fits_at_once(void)
+{
+    enum { SURFACES = 40000 };
+    sw_pack_surface *surfaces = calloc(SURFACES, sizeof *surfaces);
+    uint8_t *none = calloc(SURFACES, 1);
+    sw_seam_graph g = { .surface_count = SURFACES };
+    for (uint32_t s = 0; surfaces && s < SURFACES; s++)
+        surfaces[s].patch_count = 1;
+    uint32_t v = surfaces ? sw_walk_cache_vertices(&g, surfaces) : 0;
+    size_t bytes = sw_seam_cache_arena_bytes(SURFACES, v, sw_walk_cache_indices(v));
+    void *mem = malloc(bytes);
+    SW_CHECK(surfaces && none && mem);
+    if (surfaces && none && mem) {
+        sw_arena a;
+        sw_seam_cache c;
+        sw_arena_init(&a, mem, bytes);
+        SW_CHECK(sw_seam_cache_init(&c, SURFACES, v, sw_walk_cache_indices(v), &a, NULL) == SW_OK);
+        uint32_t placed = 0;
+        for (uint32_t s = 0; s < SURFACES; s++)
+            placed += (uint32_t)sw_seam_cache_place(&c, s, 16, 48, none);
+        SW_CHECK_MSG(placed == SURFACES, "%u of %u surfaces placed in %u vertices", placed,
+                     (unsigned)SURFACES, v);
+        SW_CHECK(c.evictions == 0);
+    }
+    free(mem);
+    free(none);
+    free(surfaces);
+}
+
 /* The fuzz seed with a Seam Graph: loaded and walked in an arena of exactly
  * its runtime_bytes. */
 static void test_runtime_bytes_hold_pack_and_walk(const char *seed)
@@ -110,6 +147,7 @@ int main(int argc, char **argv)
     SW_RUN(test_meshes_get_their_own_blocks);
     SW_RUN(test_least_recently_drawn_goes_first);
     SW_RUN(test_surfaces_in_view_are_never_evicted);
+    SW_RUN(test_every_surface_fits_at_once);
     if (argc == 2)
         test_runtime_bytes_hold_pack_and_walk(argv[1]);
     else
