@@ -295,6 +295,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_int(a, v, 0, 1 << 20, &o->test_grow_kb, err);
         } else if (!strcmp(a, "--test-slow-workers")) {
             st = parse_int(a, v, 0, 10000, &o->slow_workers_ms, err);
+        } else if (!strcmp(a, "--test-standin-share")) {
+            st = parse_real(a, v, 0.01, 1, &o->standin_share, err);
         } else if (!strcmp(a, "--test-stall-workers")) {
             st = parse_int(a, v, 0, INT_MAX, &o->stall_workers_at, err);
         } else if (!strcmp(a, "--fov-deg")) {
@@ -396,6 +398,9 @@ void sw_options_print_usage(FILE *out, const char *argv0)
             "                      SEAMWALK_TEST_SYNC_WORK=1)\n"
             "  --test-stall-workers F  from frame F on the workers take no work: frames must\n"
             "                      go on with the meshes they have (tests)\n"
+            "  --test-standin-share F  a stand-in where a silhouette may cross it shows a\n"
+            "                      level within F of the bound (default 0.25; tests: 1 is\n"
+            "                      the mutant whose silhouettes leave slits)\n"
             "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
             "                      many frames (tests: no half batch may show)\n"
             "  --batch-tris N      wait for the GL driver after every N triangles drawn\n"

@@ -89,6 +89,16 @@ if(NOT SW_ASAN AND NOT SW_TSAN)
   set_tests_properties(walk_pictures PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
 endif()
 
+# Stand-ins' silhouettes (tests/test_silhouettes.sh): a generated courtyard
+# of columns walked as the service walks it has no interior background
+# pixel against the reference walk; the mutant whose stand-ins use the
+# whole bound at silhouettes shows slits. Release only, as above.
+if(NOT SW_ASAN AND NOT SW_TSAN)
+  add_test(NAME silhouettes
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_silhouettes.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+  set_tests_properties(silhouettes PROPERTIES TIMEOUT 300)
+endif()
+
 # The corpus command on the shared models (tests/corpus.sh): every file built,
 # verified and walked close to far with no crack and no refused surface, and
 # (IGES, STEP) its free border at most 1.05 times OpenCASCADE's sewing at the

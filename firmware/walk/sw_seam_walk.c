@@ -90,6 +90,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->error_px = error_px;
     w->bound_floor = 0.1f * pack->seam.tolerance;
     w->drop_surface = UINT32_MAX;
+    w->standin_share = SW_SEAM_STANDIN_SILHOUETTE_SHARE;
     sw_status st = sw_seam_select_init_checked(&w->select, &pack->seam, arena, err);
     if (st != SW_OK)
         return st;
@@ -288,6 +289,7 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     sw_seam_walk_take_deferred(w, frame);
     uint32_t n = w->pack->seam.surface_count;
     int changed = w->frame == 0;
+    w->eye = view->eye;
     cull_boxes(w, view, frame);
     for (uint32_t s = 0; s < n; s++) {
         changed |= cull_surface(w, view, s, &frame->cone_culled);

@@ -177,6 +177,16 @@ typedef struct sw_seam_frame {
     uint8_t plan_overlapped;      /* V began it while P was still drawing the frame before */
 } sw_seam_frame;
 
+/* A level's error is its largest distance from the surface, and a
+ * silhouette shows it whole, across the view. The walk's own meshes are
+ * made by a tessellator that proves its bound, so they come out well
+ * within it; a stand-in drawn at its level's whole error beside them moved
+ * silhouettes by a pixel, and where two silhouettes met (columns one
+ * behind another) the background showed through between them. So where a
+ * silhouette may cross a stand-in, its level is within this share of the
+ * bound; elsewhere within the bound (sw_seam_walk_standins.c). */
+#define SW_SEAM_STANDIN_SILHOUETTE_SHARE 0.25f
+
 typedef struct sw_seam_walk {
     const sw_pack *pack;
     sw_seam_select select;
@@ -211,6 +221,8 @@ typedef struct sw_seam_walk {
     double cull_tree_ms, cones_ms;/* time building the tree (init) and the cones */
     int cone_cull;                /* surfaces whose cone faces away over their box are not
                                      drawn (set by sw_seam_walk_enable_cones; 0: off) */
+    sw_vec3 eye;                  /* this frame's (select): which stand-ins may show a
+                                     silhouette */
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
     uint32_t frame;               /* frames selected so far */
@@ -241,6 +253,9 @@ typedef struct sw_seam_walk {
      * levels; NULL otherwise (a surface in view waits for its mesh). */
     sw_seam_standin *standins;
     int no_standins;              /* set before the workers start: none even with levels */
+    float standin_share;          /* where a silhouette may cross a stand-in, the share of its
+                                     bound its level may show (SW_SEAM_STANDIN_SILHOUETTE_SHARE;
+                                     tests set others) */
     uint32_t standin_evicted;     /* the frame stand-ins last gave meshes up for room */
     uint32_t standin_evict_rounds;/* and how many times in it (UINT32_MAX: none was left) */
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */

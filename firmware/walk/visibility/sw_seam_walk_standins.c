@@ -99,7 +99,7 @@ static float standin_border(const sw_seam_walk *w, uint32_t s, float level_error
 
 void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)
 {
-    uint32_t level = sw_seam_standin_level(w->pack, s, w->target[s]);
+    uint32_t level = sw_seam_standin_level(w->pack, s, sw_seam_walk_standin_bound(w, s));
     if (level == UINT32_MAX)
         return;
     float error = w->pack->levels.levels[level].error;
@@ -108,6 +108,39 @@ void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)
         return;
     w->standin_error[s] = error, w->standin_border[s] = border;
     sw_seam_walk_restitch_around(w, s);
+}
+
+/* Where a silhouette may cross s, its level must be within a share of the
+ * bound (w->standin_share, sw_seam_walk.h says why); where none can (every
+ * normal of it faces the eye) its error lies mostly along the view and its
+ * outline is its loops, which the strip joins to the seams: there the
+ * level may use the whole bound. */
+#define SW_STANDIN_FACING_MARGIN_RAD 0.05
+
+/* The normals of s: its own cone when cone culling made them, else its
+ * super-surface's (a bound of every member's normals); none known: the
+ * full sphere. */
+static sw_normal_cone surface_cone(const sw_seam_walk *w, uint32_t s)
+{
+    if (w->cones)
+        return w->cones[s];
+    const sw_supers *sp = &w->pack->supers;
+    sw_normal_cone all = { sw_v3(0, 0, 0), SW_CONE_FULL };
+    if (sp->super_count == 0 || s >= sp->surface_count)
+        return all;
+    const sw_super_surface *c = &sp->supers[sp->super_of[s]];
+    if (!(c->span < SW_SUPER_SPAN_FULL))
+        return all;
+    return (sw_normal_cone){ sw_v3(c->axis[0], c->axis[1], c->axis[2]), c->span };
+}
+
+float sw_seam_walk_standin_bound(const sw_seam_walk *w, uint32_t s)
+{
+    sw_normal_cone away = surface_cone(w, s);
+    away.axis = sw_v3_scale(away.axis, -1.0);   /* facing the eye: its reverse faces away */
+    sw_box box = sw_cull_tree_surface_box(&w->cull_tree, s);
+    int facing = sw_normal_cone_back_facing(&away, &box, w->eye, SW_STANDIN_FACING_MARGIN_RAD);
+    return facing ? w->target[s] : w->standin_share * w->target[s];
 }
 
 /* The level s stands in with: the one announced (its neighbours were
@@ -121,7 +154,7 @@ static uint32_t standin_level(sw_seam_walk *w, uint32_t s)
             if (lv->levels[k].error == w->standin_error[s])
                 return k;
     sw_seam_walk_standin_announce(w, s);
-    return sw_seam_standin_level(w->pack, s, w->target[s]);
+    return sw_seam_standin_level(w->pack, s, sw_seam_walk_standin_bound(w, s));
 }
 
 /* The front a stand-in for s is joined to, as the shown vertex of each of

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Stand-ins' silhouettes against the reference walk's:
+#   test_silhouettes.sh BUILD_DIR SOURCE_DIR
+# A courtyard of 40 x 40 cells (tests/gen_soup.py: a paved patch soup with
+# rows of columns, 3,800 patches) walked along walk_path.py's path, 120
+# frames at 640x360, as the kiosk service walks it (tests/walk_pictures.py):
+# columns seen one behind another, their silhouettes meeting, most of them
+# drawn from static levels. Against the reference walk (--workers 0):
+# - as built: no interior background pixel in any 10th frame (exit 0);
+# - the mutant --test-standin-share 1 (a stand-in's level may use the whole
+#   bound where a silhouette crosses it): slits of background between
+#   columns (exit 1, interior background above 0).
+# Needs nothing from ../shared/models.
+set -uo pipefail
+build=$(cd "$1" && pwd) src=$(cd "$2" && pwd)
+tool=$build/assets/seamwalk-pack
+work=$build/tests/silhouettes
+fail() { echo "FAIL: $*"; exit 1; }
+rm -rf "$work" && mkdir -p "$work"
+python3 "$src/tests/gen_soup.py" "$work/court.igs" --cells 40 > "$work/gen.log" 2>&1 \
+  || fail "gen_soup: $(tail -n 3 "$work/gen.log")"
+"$tool" build "$work/court.igs" -o "$work/court.swpack" --quiet > "$work/build.log" 2>&1 \
+  || fail "build: $(tail -n 3 "$work/build.log")"
+"$tool" info --json "$work/court.swpack" > "$work/info.json" || fail "info"
+python3 - "$work/info.json" "$work/court.path" "$src/tests/bench/walk_path.py" <<'PY' \
+  || fail "walk_path"
+import json, subprocess, sys
+info = json.load(open(sys.argv[1]))
+subprocess.run([sys.executable, sys.argv[3], sys.argv[2], "--box"] +
+               ["%.6f" % v for v in info["box"]["min"] + info["box"]["max"]] +
+               ["--up", info["up_axis"].lstrip("+-"), "--seconds", "40"], check=True)
+PY
+pictures() {
+  python3 "$src/tests/walk_pictures.py" "$work/court.swpack" "$work/court.path" "$build" \
+    "$work/$1" 640x360 120 --json "$work/$1.json" "${@:2}" > "$work/$1.log" 2>&1
+}
+pictures built
+rc=$?
+grep -E "interior background px max|differing max|undrawn" "$work/built.log"
+[ $rc -eq 0 ] || fail "as built: exit $rc ($work/built.log)"
+pictures mutant --test-standin-share 1
+rc=$?
+grep -E "interior background px max" "$work/mutant.log" | sed 's/^/mutant:/'
+[ $rc -eq 1 ] || fail "the mutant --test-standin-share 1: exit $rc, expected 1 (slits seen)"
+echo "silhouettes: ok"
