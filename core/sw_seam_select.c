@@ -43,9 +43,9 @@ size_t sw_seam_select_arena_bytes(const sw_seam_graph *g)
     if (largest > (uint64_t)(SIZE_MAX / 64))
         return SIZE_MAX;   /* 32-bit size_t: more than the address space */
     size_t v = g->vertex_count, o = g->original_count;
-    return worst(v, 1) * 2 + worst(v, 4) * 4 + worst(o, 4) * 2 + worst(o + 1, 4) +
-           worst(g->slot_count, 4) * 3 + worst((size_t)g->collapse_count + 1, 4) +
-           worst(g->surface_count, 1);
+    return worst(v, 1) * 3 + worst(v, 4) * 4 + worst(o, 4) * 2 + worst(o + 1, 4) +
+           worst(g->slot_count, 4) * 3 + worst((size_t)g->collapse_count + 1, 4) * 2 +
+           worst(g->surface_count, 1) + worst(g->surface_count, 4);
 }
 
 static void *take(sw_arena *arena, size_t count, size_t size, int *failed)
@@ -75,6 +75,9 @@ static sw_status take_arrays(sw_seam_select *s, sw_arena *arena, sw_error *err)
     s->slot_next = take(arena, g->slot_count, 4, &failed);
     s->stack = take(arena, (size_t)g->collapse_count + 1, 4, &failed);
     s->surface_changed = take(arena, g->surface_count, 1, &failed);
+    s->surface_bound = take(arena, g->surface_count, 4, &failed);
+    s->seeds = take(arena, (size_t)g->collapse_count + 1, 4, &failed);
+    s->seeded = take(arena, v, 1, &failed);
     if (failed)
         return sw_error_set(err, SW_ERR_NO_MEMORY,
                             "seam select: arena too small (%zu bytes free, %zu needed)",
@@ -171,7 +174,7 @@ sw_status sw_seam_select_init_checked(sw_seam_select *s, const sw_seam_graph *gr
     build_leaf_ranges(s);
     build_leaf_slots(s);
     for (uint32_t v = 0; v < g->vertex_count; v++) {
-        s->queued[v] = 0;
+        s->queued[v] = s->seeded[v] = 0;
         s->active[v] = g->vertices[v].child == SW_SEAM_NONE;
         if (s->active[v]) {
             s->active_count++;
@@ -282,6 +285,7 @@ sw_status sw_seam_select_split(sw_seam_select *s, uint32_t vn, sw_error *err)
 {
     if (!sw_seam_select_can_split(s, vn))
         return sw_error_set(err, SW_ERR_ARG, "seam select: split of vertex %u not allowed", vn);
+    s->bounds_known = 0;   /* the next update cannot go from the last one's */
     do_split(s, vn);
     return SW_OK;
 }
@@ -291,6 +295,7 @@ sw_status sw_seam_select_collapse(sw_seam_select *s, uint32_t vn, sw_error *err)
     if (!sw_seam_select_can_collapse(s, vn))
         return sw_error_set(err, SW_ERR_ARG, "seam select: collapse into vertex %u not allowed",
                             vn);
+    s->bounds_known = 0;
     sw_seam_select_do_collapse(s, vn);
     return SW_OK;
 }
@@ -332,6 +337,7 @@ sw_status sw_seam_select_force_split(sw_seam_select *s, uint32_t v, uint32_t max
     if (!s || !is_created(s, v) || !s->active[v])
         return sw_error_set(err, SW_ERR_ARG,
                             "seam select: vertex %u is not an active created vertex", v);
+    s->bounds_known = 0;
     uint32_t n = sw_seam_select_force(s, v, max_ops, NULL, NULL);
     if (splits)
         *splits = n;

@@ -51,14 +51,22 @@ typedef struct sw_seam_select {
     uint32_t *queue;           /* vertex_count: update's work list (a heap) */
     uint8_t *queued;           /* vertex_count */
     uint8_t *surface_changed;  /* surface_count */
+    /* What the next update starts from (sw_seam_select_update.c): */
+    float *surface_bound;      /* surface_count: the bounds bound[] was folded from */
+    uint32_t *seeds;           /* collapse_count + 1: collapses the next update tries (those
+                                  the rule blocked in the last one, and more it adds) */
+    uint8_t *seeded;           /* vertex_count: 1 while in seeds */
+    uint32_t seed_count;
+    int bounds_known;          /* 1: bound[] and seeds[] are the last complete update's and
+                                  the front moved only through updates since */
     uint32_t queue_len;
     int queue_largest_first;
     uint32_t active_count;
 } sw_seam_select;
 
 /* Arena bytes sw_seam_select_init takes for graph, worst case (alignment
- * included): 18 bytes per vertex, 4 more per created vertex, 12 more per
- * original, 12 per slot and 1 per surface (about 76 bytes per original
+ * included): 19 bytes per vertex, 8 more per created vertex, 12 more per
+ * original, 12 per slot and 5 per surface (about 82 bytes per original
  * vertex of a sewn graph: 2 slots each, as many created vertices). */
 size_t sw_seam_select_arena_bytes(const sw_seam_graph *graph);
 
@@ -123,6 +131,10 @@ typedef struct sw_seam_update_result {
  * SW_ERR_ARG for a missing, NaN, infinite or negative bound. */
 sw_status sw_seam_select_update(sw_seam_select *state, const float *surface_bound,
                                 uint32_t max_ops, sw_seam_update_result *result, sw_error *err);
+
+/* The next update works from every surface's bound, as the first one does,
+ * not from those that changed since the last (tests compare the two). */
+void sw_seam_select_forget_bounds(sw_seam_select *state);
 
 /* One point of a loop's current polyline: the active vertex shown and the
  * (u, v) to use for it in the loop's surface. */

@@ -56,6 +56,22 @@ static void drain(sw_seam_select *s)
         pop(s);
 }
 
+static inline float smaller(float a, float b) { return b < a ? b : a; }
+
+static int too_coarse(const sw_seam_select *s, uint32_t v)
+{
+    return v >= s->graph.original_count && s->graph.vertices[v].error > s->bound[v];
+}
+
+/* A collapse the coarsening tries (sw_seam_select.h, seeds). */
+static void seed(sw_seam_select *s, uint32_t c)
+{
+    if (c == SW_SEAM_NONE || c < s->graph.original_count || s->seeded[c])
+        return;
+    s->seeded[c] = 1;
+    s->seeds[s->seed_count++] = c;
+}
+
 /* A vertex's bound: the smallest over the surfaces of its originals' slots.
  * Those are exactly the surfaces whose loops show it while it is active
  * (a slot shows v iff its original is under v), vanished loops included, so
@@ -71,17 +87,55 @@ static void fold_bounds(sw_seam_select *s, const float *surface_bound)
         float b = surface_bound[loop->surface];
         for (uint32_t i = 0; i < loop->slot_count; i++) {
             float *vb = &s->bound[g->slots[loop->first_slot + i].vertex];
-            *vb = fminf(*vb, b);
+            *vb = smaller(*vb, b);
         }
     }
     for (uint32_t k = 0; k < g->collapse_count; k++)
         s->bound[g->original_count + k] =
-            fminf(s->bound[g->collapses[k].v1], s->bound[g->collapses[k].v2]);
+            smaller(s->bound[g->collapses[k].v1], s->bound[g->collapses[k].v2]);
 }
 
-static int too_coarse(const sw_seam_select *s, uint32_t v)
+/* Original o's bound again from the surfaces of its slots, and its
+ * descendants' while theirs change: an active one that is now too coarse
+ * goes into the refinement's heap, and each changed created vertex is
+ * seeded for the coarsening (its bound may have risen). */
+static void refold_original(sw_seam_select *s, uint32_t o, const float *surface_bound)
 {
-    return v >= s->graph.original_count && s->graph.vertices[v].error > s->bound[v];
+    const sw_seam_graph *g = &s->graph;
+    uint32_t p = s->leaf_lo[o];
+    float b = INFINITY;
+    for (uint32_t e = s->leaf_slots[p]; e < s->leaf_slots[p + 1]; e++)
+        b = smaller(b, surface_bound[s->slot_surface[e]]);
+    if (b == s->bound[o])
+        return;
+    s->bound[o] = b;
+    for (uint32_t c = g->vertices[o].child; c != SW_SEAM_NONE; c = g->vertices[c].child) {
+        const sw_seam_collapse *k = &g->collapses[c - g->original_count];
+        float nb = smaller(s->bound[k->v1], s->bound[k->v2]);
+        if (nb == s->bound[c])
+            return;
+        s->bound[c] = nb;
+        if (s->active[c] && too_coarse(s, c))
+            push(s, c);
+        seed(s, c);
+    }
+}
+
+/* Only the surfaces whose bound changed since the last complete update:
+ * their originals' bounds folded again (in a walk a few hundred surfaces a
+ * frame change level, where folding every bound touched every slot and
+ * every vertex of the graph). */
+static void refold_changed(sw_seam_select *s, const float *surface_bound)
+{
+    const sw_seam_graph *g = &s->graph;
+    s->queue_largest_first = 1;
+    for (uint32_t l = 0; l < g->loop_count; l++) {
+        const sw_seam_loop *loop = &g->loops[l];
+        if (surface_bound[loop->surface] == s->surface_bound[loop->surface])
+            continue;
+        for (uint32_t i = 0; i < loop->slot_count; i++)
+            refold_original(s, g->slots[loop->first_slot + i].vertex, surface_bound);
+    }
 }
 
 static void on_split(void *ctx, sw_seam_select *s, uint32_t vn, uint32_t wanted)
@@ -91,6 +145,8 @@ static void on_split(void *ctx, sw_seam_select *s, uint32_t vn, uint32_t wanted)
     r->splits++;
     if (!too_coarse(s, vn))
         r->forced_splits++;
+    /* its parents are active now: undoing it is a collapse to try */
+    seed(s, vn);
     const sw_seam_collapse *c = &s->graph.collapses[vn - s->graph.original_count];
     if (too_coarse(s, c->v1))
         push(s, c->v1);
@@ -99,11 +155,14 @@ static void on_split(void *ctx, sw_seam_select *s, uint32_t vn, uint32_t wanted)
 }
 
 /* Splits every active vertex whose error exceeds its bound, forcing the
- * splits that block it, and its parents in turn while they still do. */
-static int refine(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
+ * splits that block it, and its parents in turn while they still do. With
+ * scan, every active vertex is looked at; without, those already in the
+ * heap are all there can be (refold_changed). */
+static int refine(sw_seam_select *s, int scan, uint32_t max_ops, uint32_t *used,
+                  sw_seam_update_result *r)
 {
     s->queue_largest_first = 1;
-    for (uint32_t v = s->graph.original_count; v < s->graph.vertex_count; v++)
+    for (uint32_t v = s->graph.original_count; scan && v < s->graph.vertex_count; v++)
         if (s->active[v] && too_coarse(s, v))
             push(s, v);
     while (s->queue_len) {
@@ -124,24 +183,38 @@ static int refine(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_u
  * into c waits for is smaller than c (its parents; a finer neighbour w's
  * own collapse, child(w) < c), so it was settled before c came up; a
  * neighbour larger than c blocks until a split, and this phase splits
- * nothing. The new vertex's own collapse is queued after it. Only
- * collapses whose parents are both active and whose vertex meets its bound
- * start in the list, so a frame where nothing changes costs little more
- * than the pass over the bounds. */
-static int coarsen(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_update_result *r)
+ * nothing. The new vertex's own collapse is queued after it. With scan,
+ * every collapse whose parents are both active is looked at; without, the
+ * seeds: those the rule blocked last time, those whose bound changed and
+ * those this update split, which is every collapse that can have become
+ * possible since. The ones the rule blocks are the next update's seeds. */
+static int coarsen(sw_seam_select *s, int scan, uint32_t max_ops, uint32_t *used,
+                   sw_seam_update_result *r)
 {
     drain(s);
     s->queue_largest_first = 0;
     const sw_seam_graph *g = &s->graph;
-    for (uint32_t k = 0; k < g->collapse_count; k++) {
+    for (uint32_t k = 0; scan && k < g->collapse_count; k++) {
         uint32_t c = g->original_count + k;
         if (s->active[g->collapses[k].v1] && s->active[g->collapses[k].v2] && !too_coarse(s, c))
             push(s, c);
     }
+    for (uint32_t i = 0; i < s->seed_count; i++) {
+        s->seeded[s->seeds[i]] = 0;
+        push(s, s->seeds[i]);
+    }
+    s->seed_count = 0;
     while (s->queue_len) {
         uint32_t c = pop(s);
-        if (s->active[c] || too_coarse(s, c) || !sw_seam_select_can_collapse(s, c))
+        if (s->active[c] || too_coarse(s, c))
             continue;
+        const sw_seam_collapse *k = &g->collapses[c - g->original_count];
+        if (!s->active[k->v1] || !s->active[k->v2])
+            continue;
+        if (!sw_seam_select_can_collapse(s, c)) {
+            seed(s, c);
+            continue;
+        }
         if (max_ops && *used == max_ops)
             return 0;
         sw_seam_select_do_collapse(s, c);
@@ -150,6 +223,12 @@ static int coarsen(sw_seam_select *s, uint32_t max_ops, uint32_t *used, sw_seam_
         push(s, s->graph.vertices[c].child);
     }
     return 1;
+}
+
+void sw_seam_select_forget_bounds(sw_seam_select *s)
+{
+    if (s)
+        s->bounds_known = 0;
 }
 
 sw_status sw_seam_select_update(sw_seam_select *s, const float *surface_bound,
@@ -165,10 +244,22 @@ sw_status sw_seam_select_update(sw_seam_select *s, const float *surface_bound,
             return sw_error_set(err, SW_ERR_ARG,
                                 "seam select update: surface %u bound %g, expected finite >= 0",
                                 i, (double)surface_bound[i]);
-    fold_bounds(s, surface_bound);
+    int scan = !s->bounds_known;
+    if (scan) {
+        fold_bounds(s, surface_bound);
+        for (uint32_t i = 0; i < s->seed_count; i++)
+            s->seeded[s->seeds[i]] = 0;
+        s->seed_count = 0;
+    } else {
+        refold_changed(s, surface_bound);
+    }
     uint32_t used = 0;
-    r.complete = refine(s, max_ops, &used, &r) && coarsen(s, max_ops, &used, &r);
+    r.complete = refine(s, scan, max_ops, &used, &r) && coarsen(s, scan, max_ops, &used, &r);
     drain(s);
+    for (uint32_t i = 0; i < s->graph.surface_count; i++)
+        s->surface_bound[i] = surface_bound[i];
+    /* A capped update leaves work the seeds do not hold: the next one scans. */
+    s->bounds_known = r.complete;
     if (result)
         *result = r;
     return SW_OK;

@@ -185,6 +185,46 @@ static void test_update_meets_every_bound_and_no_more(void)
     }
 }
 
+/* Updates that fold only the bounds that changed since the last one (a few
+ * surfaces a frame, as in a walk) move the front exactly as updates that
+ * fold every bound: the same active vertices after every frame, and both
+ * meet every bound with nothing left to collapse. */
+static void test_changed_bounds_alone_give_the_same_front(void)
+{
+    const seam_gen *cases[] = {&grid, &finned};
+    for (int c = 0; c < 2; c++) {
+        fixture f, full;
+        fixture_open(&f, cases[c]);
+        fixture_open(&full, cases[c]);
+        float *bound = malloc(f.g.surface_count * sizeof *bound);
+        for (uint32_t s = 0; s < f.g.surface_count; s++)
+            bound[s] = 0.05f;
+        uint32_t differ = 0, moves = 0;
+        for (int frame = 0; frame < 200; frame++) {
+            /* one to three surfaces change level, finer or coarser */
+            for (int k = 1 + frame % 3; k > 0; k--) {
+                uint32_t s = (uint32_t)(sw_test_random() * f.g.surface_count) % f.g.surface_count;
+                bound[s] = (float)(0.001 * pow(2.0, floor(10 * sw_test_random())));
+            }
+            sw_seam_update_result r, rf;
+            sw_seam_select_forget_bounds(&full.sel);
+            SW_CHECK(sw_seam_select_update(&f.sel, bound, 0, &r, NULL) == SW_OK && r.complete);
+            SW_CHECK(sw_seam_select_update(&full.sel, bound, 0, &rf, NULL) == SW_OK && rf.complete);
+            moves += r.splits + r.collapses;
+            for (uint32_t v = 0; v < f.g.vertex_count; v++)
+                differ += f.sel.active[v] != full.sel.active[v];
+            if (frame % 20 == 0)
+                check_update_result(&f, bound);
+        }
+        SW_CHECK_MSG(differ == 0, "case %d: %u vertices active in one front and not the other",
+                     c, differ);
+        SW_CHECK(moves > 0);
+        free(bound);
+        fixture_close(&full);
+        fixture_close(&f);
+    }
+}
+
 static void test_huge_bound_collapses_each_part_to_a_vertex(void)
 {
     fixture f;
@@ -443,6 +483,7 @@ int main(void)
     SW_RUN(test_random_steps_keep_the_rule_and_undo_exactly);
     SW_RUN(test_full_refinement_is_the_original_graph);
     SW_RUN(test_update_meets_every_bound_and_no_more);
+    SW_RUN(test_changed_bounds_alone_give_the_same_front);
     SW_RUN(test_huge_bound_collapses_each_part_to_a_vertex);
     SW_RUN(test_forced_split_clears_its_blockers);
     SW_RUN(test_capped_updates_converge);
