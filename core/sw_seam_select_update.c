@@ -97,8 +97,10 @@ static void fold_bounds(sw_seam_select *s, const float *surface_bound)
 
 /* Original o's bound again from the surfaces of its slots, and its
  * descendants' while theirs change: an active one that is now too coarse
- * goes into the refinement's heap, and each changed created vertex is
- * seeded for the coarsening (its bound may have risen). */
+ * goes into the refinement's heap, and a changed collapse whose parents
+ * are both active and which meets its bound now is seeded for the
+ * coarsening (one whose parents become active in the refinement is seeded
+ * by its split). */
 static void refold_original(sw_seam_select *s, uint32_t o, const float *surface_bound)
 {
     const sw_seam_graph *g = &s->graph;
@@ -117,7 +119,8 @@ static void refold_original(sw_seam_select *s, uint32_t o, const float *surface_
         s->bound[c] = nb;
         if (s->active[c] && too_coarse(s, c))
             push(s, c);
-        seed(s, c);
+        else if (s->active[k->v1] && s->active[k->v2] && !too_coarse(s, c))
+            seed(s, c);
     }
 }
 
@@ -138,6 +141,33 @@ static void refold_changed(sw_seam_select *s, const float *surface_bound)
     }
 }
 
+/* What the dependency rule reads for a collapse is who its parents'
+ * active neighbours are, so a collapse it blocked can go only once one of
+ * them changed: a change at x (split or collapse) is a change for the
+ * collapses of x's neighbours. Those above `after` go into this pass's
+ * heap (it has not reached them), the rest are the next update's seeds. */
+typedef struct neighbours_of {
+    sw_seam_select *s;
+    uint32_t after;   /* the collapse being done (0: none, all seeded) */
+} neighbours_of;
+
+static uint32_t reconsider(void *ctx, uint32_t w)
+{
+    neighbours_of *n = ctx;
+    uint32_t c = n->s->graph.vertices[w].child;
+    if (c != SW_SEAM_NONE && n->after && c > n->after)
+        push(n->s, c);
+    else
+        seed(n->s, c);
+    return 0;
+}
+
+static void reconsider_around(sw_seam_select *s, uint32_t x, uint32_t after)
+{
+    neighbours_of n = { s, after };
+    sw_seam_select_scan_neighbours(s, x, reconsider, &n);
+}
+
 static void on_split(void *ctx, sw_seam_select *s, uint32_t vn, uint32_t wanted)
 {
     sw_seam_update_result *r = ctx;
@@ -145,9 +175,12 @@ static void on_split(void *ctx, sw_seam_select *s, uint32_t vn, uint32_t wanted)
     r->splits++;
     if (!too_coarse(s, vn))
         r->forced_splits++;
-    /* its parents are active now: undoing it is a collapse to try */
+    /* its parents are active now: undoing it is a collapse to try, and
+     * their neighbours' collapses see new neighbours */
     seed(s, vn);
     const sw_seam_collapse *c = &s->graph.collapses[vn - s->graph.original_count];
+    reconsider_around(s, c->v1, 0);
+    reconsider_around(s, c->v2, 0);
     if (too_coarse(s, c->v1))
         push(s, c->v1);
     if (too_coarse(s, c->v2))
@@ -185,9 +218,10 @@ static int refine(sw_seam_select *s, int scan, uint32_t max_ops, uint32_t *used,
  * neighbour larger than c blocks until a split, and this phase splits
  * nothing. The new vertex's own collapse is queued after it. With scan,
  * every collapse whose parents are both active is looked at; without, the
- * seeds: those the rule blocked last time, those whose bound changed and
- * those this update split, which is every collapse that can have become
- * possible since. The ones the rule blocks are the next update's seeds. */
+ * seeds: those whose bound changed, those this update split, and those
+ * whose parents' neighbours changed since they were last tried, which is
+ * every collapse that can have become possible since (a collapse the rule
+ * blocks stays blocked until one of those neighbours changes). */
 static int coarsen(sw_seam_select *s, int scan, uint32_t max_ops, uint32_t *used,
                    sw_seam_update_result *r)
 {
@@ -211,16 +245,15 @@ static int coarsen(sw_seam_select *s, int scan, uint32_t max_ops, uint32_t *used
         const sw_seam_collapse *k = &g->collapses[c - g->original_count];
         if (!s->active[k->v1] || !s->active[k->v2])
             continue;
-        if (!sw_seam_select_can_collapse(s, c)) {
-            seed(s, c);
+        if (!sw_seam_select_can_collapse(s, c))
             continue;
-        }
         if (max_ops && *used == max_ops)
             return 0;
         sw_seam_select_do_collapse(s, c);
         (*used)++;
         r->collapses++;
         push(s, s->graph.vertices[c].child);
+        reconsider_around(s, c, c);
     }
     return 1;
 }
