@@ -45,7 +45,8 @@ typedef struct sw_level {         /* 32 bytes */
     uint32_t index_count;         /* a multiple of 3 */
     uint32_t first_chain;         /* chains[first_chain .. + the surface's loop count), in
                                      the order of the Seam Graph's surface_loops */
-    uint32_t reserved;            /* zero */
+    float made_bound;             /* model units: the bound the walk's tessellator made it
+                                     for (finite, >= 0; 0: not known, a pack from before) */
 } sw_level;
 
 typedef struct sw_level_chain {   /* 8 bytes: one loop's border in one level */

@@ -17,7 +17,7 @@ _Static_assert(offsetof(sw_pack_levels, reserved) == 24, "sw_pack_levels.reserve
 _Static_assert(sizeof(sw_level) == 32, "sw_level");
 _Static_assert(offsetof(sw_level, error) == 4, "sw_level.error");
 _Static_assert(offsetof(sw_level, first_chain) == 24, "sw_level.first_chain");
-_Static_assert(offsetof(sw_level, reserved) == 28, "sw_level.reserved");
+_Static_assert(offsetof(sw_level, made_bound) == 28, "sw_level.made_bound");
 _Static_assert(sizeof(sw_level_vertex) == 16, "sw_level_vertex");
 _Static_assert(offsetof(sw_level_vertex, normal) == 12, "sw_level_vertex.normal");
 _Static_assert(sizeof(sw_level_chain) == 8, "sw_level_chain");
@@ -110,9 +110,9 @@ static sw_status check_level_fields(const sw_pack *pack, uint32_t s, uint32_t k,
                             "surface's %u loops exceeds LEVEL_CHAINS count %u", ku,
                             (unsigned)lv->first_chain, (unsigned)loops,
                             (unsigned)l->chain_count);
-    if (lv->reserved != 0)
-        return sw_error_set(err, SW_ERR_FORMAT, "LEVEL_RECORDS[%u].reserved: %u, expected 0", ku,
-                            (unsigned)lv->reserved);
+    if (!isfinite(lv->made_bound) || lv->made_bound < 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "LEVEL_RECORDS[%u].made_bound: %g, expected "
+                            "finite and >= 0", ku, (double)lv->made_bound);
     return SW_OK;
 }
 

@@ -197,8 +197,7 @@ static sw_status init_seams(sw_program *rt, double *mark_s, sw_error *err)
                                &rt->arena, err);
     rt->seam.drawn = &rt->drawn;
     rt->seam.fill = rt->opt.fill_crossings ? &rt->fill : NULL;
-    if (rt->opt.standin_share > 0)
-        rt->seam.standin_share = (float)rt->opt.standin_share;
+    rt->seam.standin_silhouettes = rt->opt.standin_silhouettes;
     if (st == SW_OK && rt->opt.drop_surface >= 0)
         rt->seam.drop_surface = (uint32_t)rt->opt.drop_surface;
     rt->seam.no_standins = !rt->opt.static_levels;

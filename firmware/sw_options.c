@@ -103,6 +103,7 @@ static void set_defaults(sw_options *o)
     o->workers = c->budget_workers;   /* -1: cores - 1, at least 1, decided in main */
     o->target_ms = c->budget_frame_ms;
     o->stall_workers_at = -1;
+    o->standin_silhouettes = 1;
     o->visibility_thread = 1;
     /* The test suite's deterministic frames (tests/CMakeLists.txt sets it
      * for every test); the command line's --sync-work wins. */
@@ -295,8 +296,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_int(a, v, 0, 1 << 20, &o->test_grow_kb, err);
         } else if (!strcmp(a, "--test-slow-workers")) {
             st = parse_int(a, v, 0, 10000, &o->slow_workers_ms, err);
-        } else if (!strcmp(a, "--test-standin-share")) {
-            st = parse_real(a, v, 0.01, 1, &o->standin_share, err);
+        } else if (!strcmp(a, "--test-standin-silhouettes")) {
+            st = parse_int(a, v, 0, 1, &o->standin_silhouettes, err);
         } else if (!strcmp(a, "--test-stall-workers")) {
             st = parse_int(a, v, 0, INT_MAX, &o->stall_workers_at, err);
         } else if (!strcmp(a, "--fov-deg")) {
@@ -398,9 +399,10 @@ void sw_options_print_usage(FILE *out, const char *argv0)
             "                      SEAMWALK_TEST_SYNC_WORK=1)\n"
             "  --test-stall-workers F  from frame F on the workers take no work: frames must\n"
             "                      go on with the meshes they have (tests)\n"
-            "  --test-standin-share F  a stand-in where a silhouette may cross it shows a\n"
-            "                      level within F of the bound (default 0.25; tests: 1 is\n"
-            "                      the mutant whose silhouettes leave slits)\n"
+            "  --test-standin-silhouettes 0|1  where a silhouette may cross a stand-in, its\n"
+            "                      level is chosen by the bound it was made for (1, default)\n"
+            "                      or by its error (0: the tests' mutant, whose silhouettes\n"
+            "                      leave slits)\n"
             "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
             "                      many frames (tests: no half batch may show)\n"
             "  --batch-tris N      wait for the GL driver after every N triangles drawn\n"

@@ -65,9 +65,9 @@ typedef struct sw_options {
     double target_ms;            /* --target-ms MS: the budgets' frame time; default 16.7 */
     int sync_work;               /* --sync-work 0|1: each frame waits for its work (tests) */
     int stall_workers_at;        /* --test-stall-workers F: workers idle from frame F; -1 */
-    double standin_share;        /* --test-standin-share F: the share of the bound a stand-in's
-                                    level may show where a silhouette may cross it; 0: the
-                                    walk's own (sw_seam_walk.h) */
+    int standin_silhouettes;     /* --test-standin-silhouettes 0|1: where a silhouette may
+                                    cross a stand-in, its level chosen by the bound it was made
+                                    for (1, default) or by its error (0, tests) */
     int visibility_thread;       /* --visibility-thread 0|1: V on its own thread (with
                                     workers); 1 */
     int slow_workers_ms;         /* --test-slow-workers MS: each job published MS late; 0 */

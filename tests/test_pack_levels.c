@@ -292,8 +292,10 @@ static void test_level_fields(void)
     expect_rejected(&l, SW_ERR_FORMAT, "LEVEL_RECORDS[2].error: 0.005, expected more than the "
                                        "previous level's 0.005 (errors rise over a surface's "
                                        "levels)");
-    fresh(&l)->levels[2].reserved = 9;
-    expect_rejected(&l, SW_ERR_FORMAT, "LEVEL_RECORDS[2].reserved: 9, expected 0");
+    fresh(&l)->levels[2].made_bound = -1.0f;
+    expect_rejected(&l, SW_ERR_FORMAT, "LEVEL_RECORDS[2].made_bound: -1, expected finite and >= 0");
+    fresh(&l)->levels[1].made_bound = INFINITY;
+    expect_rejected(&l, SW_ERR_FORMAT, "LEVEL_RECORDS[1].made_bound: inf, expected finite and >= 0");
 }
 
 static void test_level_ranges(void)
@@ -379,8 +381,8 @@ static void test_first_problem_in_rule_order_is_named(void)
 {
     sample_levels l;
     fresh(&l)->vertices[0].normal[3] = 5;  /* the vertices, after every level */
-    l.levels[2].reserved = 1;
-    expect_rejected(&l, SW_ERR_FORMAT, "LEVEL_RECORDS[2].reserved: 1");
+    l.levels[2].made_bound = NAN;
+    expect_rejected(&l, SW_ERR_FORMAT, "LEVEL_RECORDS[2].made_bound: nan");
     fresh(&l)->levels[1].error = -1;       /* surface 1 ... */
     l.chains[0].point_count = 0;           /* ... after surface 0's outer chain */
     expect_rejected(&l, SW_ERR_FORMAT, "LEVEL_CHAINS[0].point_count: 0");

@@ -7,9 +7,10 @@
 # columns seen one behind another, their silhouettes meeting, most of them
 # drawn from static levels. Against the reference walk (--workers 0):
 # - as built: no interior background pixel in any 10th frame (exit 0);
-# - the mutant --test-standin-share 1 (a stand-in's level may use the whole
-#   bound where a silhouette crosses it): slits of background between
-#   columns (exit 1, interior background above 0).
+# - the mutant --test-standin-silhouettes 0 (a stand-in's level chosen by its
+#   error alone where a silhouette crosses it, not by the bound it was made
+#   for): slits of background between columns (exit 1, interior background
+#   above 0).
 # Needs nothing from ../shared/models.
 set -uo pipefail
 build=$(cd "$1" && pwd) src=$(cd "$2" && pwd)
@@ -38,8 +39,8 @@ pictures built
 rc=$?
 grep -E "interior background px max|differing max|undrawn" "$work/built.log"
 [ $rc -eq 0 ] || fail "as built: exit $rc ($work/built.log)"
-pictures mutant --test-standin-share 1
+pictures mutant --test-standin-silhouettes 0
 rc=$?
 grep -E "interior background px max" "$work/mutant.log" | sed 's/^/mutant:/'
-[ $rc -eq 1 ] || fail "the mutant --test-standin-share 1: exit $rc, expected 1 (slits seen)"
+[ $rc -eq 1 ] || fail "the mutant --test-standin-silhouettes 0: exit $rc, expected 1 (slits seen)"
 echo "silhouettes: ok"

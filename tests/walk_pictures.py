@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A walk judged by its pictures, as a person would judge it:
   walk_pictures.py PACK PATH BUILD_DIR OUT_DIR [SIZE] [FRAMES] [--every K]
-                   [--workers N] [--test-drop-surface S] [--test-standin-share F]
+                   [--workers N] [--test-drop-surface S] [--test-standin-silhouettes 0|1]
                    [--max-error-px E]
                    [--memory-mb M] [--max-differing F] [--json FILE]
 PACK is walked along PATH (FRAMES frames, default 120, headless at SIZE,
@@ -31,9 +31,9 @@ OUT_DIR/reference, each frame's holes in red in OUT_DIR/holes.
 Exit 0 when no frame has interior background (and, with --max-differing F,
 none differs in more than F of its pixels), 1 when one has, 2 when a walk
 or a comparison fails or no reference picture shows the model.
---test-standin-share F: the test walk's stand-ins where a silhouette may cross
-them show levels within F of the bound (1: the mutant whose silhouettes leave
-slits between columns).
+--test-standin-silhouettes 0: the test walk's stand-ins where a silhouette may
+cross them take their level by its error alone (the mutant whose silhouettes
+leave slits between columns).
 --test-drop-surface S: the test walk never draws surface S (a mutant: the
 comparison must see it).
 Limits: writing a picture stops the GL thread (read back, PNG) while the
@@ -143,7 +143,7 @@ def parse_args(argv):
     ap.add_argument("--every", type=int, default=10)
     ap.add_argument("--workers", type=int)
     ap.add_argument("--test-drop-surface", type=int)
-    ap.add_argument("--test-standin-share", type=float)
+    ap.add_argument("--test-standin-silhouettes", type=int)
     ap.add_argument("--max-error-px", type=float)
     ap.add_argument("--memory-mb", type=int)
     ap.add_argument("--max-differing", type=float)
@@ -168,8 +168,8 @@ def main(argv):
         test_flags += ["--workers", str(a.workers)]
     if a.test_drop_surface is not None:
         test_flags += ["--test-drop-surface", str(a.test_drop_surface)]
-    if a.test_standin_share is not None:
-        test_flags += ["--test-standin-share", str(a.test_standin_share)]
+    if a.test_standin_silhouettes is not None:
+        test_flags += ["--test-standin-silhouettes", str(a.test_standin_silhouettes)]
     ref_flags = ["--workers", "0"]
     test = walk(a, "test", test_flags)
     ref = walk(a, "reference", ref_flags)

@@ -21,7 +21,7 @@
 /* A level as made, before the levels are ordered by surface. */
 typedef struct made_level {
     uint32_t surface, rank;
-    float error;
+    float error, made_bound;
     uint32_t first_vertex, vertex_count, first_index, index_count;
     uint32_t first_chain, chain_count;
 } made_level;
@@ -298,6 +298,11 @@ static int8_t snorm8(float x)
     return (int8_t)lrintf(c * 127.0f);
 }
 
+static double level_bound(const builder *b, uint32_t s, uint32_t rank)
+{
+    return b->size[s] * b->opt.finest * pow(b->opt.step, rank);
+}
+
 /* The made mesh, its chains (in the surface's loop order; a loop left out
  * of the tessellation has none) and its record into the growing arrays. */
 static sw_status keep(builder *b, uint32_t s, uint32_t rank, float error,
@@ -305,7 +310,8 @@ static sw_status keep(builder *b, uint32_t s, uint32_t rank, float error,
 {
     const sw_seam_graph *g = &b->pack->seam;
     uint32_t loop_count = g->surface_loops[s + 1] - g->surface_loops[s];
-    made_level m = { s, rank, error, (uint32_t)b->vertices.count, t->vertex_count,
+    made_level m = { s, rank, error, (float)level_bound(b, s, rank), (uint32_t)b->vertices.count,
+                     t->vertex_count,
                      (uint32_t)b->index_data.count, t->index_count, (uint32_t)b->chains.count,
                      loop_count };
     uint32_t chain_total = b->chain_first[loops->loop_count];
@@ -335,10 +341,6 @@ static sw_status keep(builder *b, uint32_t s, uint32_t rank, float error,
     return SW_OK;
 }
 
-static double level_bound(const builder *b, uint32_t s, uint32_t rank)
-{
-    return b->size[s] * b->opt.finest * pow(b->opt.step, rank);
-}
 
 /* Surface s's level of this rank at the current front, kept when it
  * tessellates, its border reads back and its error is measured. */
@@ -483,7 +485,8 @@ static sw_status assemble(builder *b, sw_levels_built *out, sw_error *err)
     for (uint32_t i = 0; i < total; i++) {
         const made_level *l = &m[i];
         out->levels[i] = (sw_level){ l->surface, l->error, v->vertex_count, l->vertex_count,
-                                     v->index_count, l->index_count, v->chain_count, 0 };
+                                     v->index_count, l->index_count, v->chain_count,
+                                     l->made_bound };
         memcpy(out->vertices + v->vertex_count,
                (const sw_level_vertex *)b->vertices.data + l->first_vertex,
                l->vertex_count * sizeof *out->vertices);

@@ -90,7 +90,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->error_px = error_px;
     w->bound_floor = 0.1f * pack->seam.tolerance;
     w->drop_surface = UINT32_MAX;
-    w->standin_share = SW_SEAM_STANDIN_SILHOUETTE_SHARE;
+    w->standin_silhouettes = 1;
     sw_status st = sw_seam_select_init_checked(&w->select, &pack->seam, arena, err);
     if (st != SW_OK)
         return st;

@@ -177,16 +177,6 @@ typedef struct sw_seam_frame {
     uint8_t plan_overlapped;      /* V began it while P was still drawing the frame before */
 } sw_seam_frame;
 
-/* A level's error is its largest distance from the surface, and a
- * silhouette shows it whole, across the view. The walk's own meshes are
- * made by a tessellator that proves its bound, so they come out well
- * within it; a stand-in drawn at its level's whole error beside them moved
- * silhouettes by a pixel, and where two silhouettes met (columns one
- * behind another) the background showed through between them. So where a
- * silhouette may cross a stand-in, its level is within this share of the
- * bound; elsewhere within the bound (sw_seam_walk_standins.c). */
-#define SW_SEAM_STANDIN_SILHOUETTE_SHARE 0.25f
-
 typedef struct sw_seam_walk {
     const sw_pack *pack;
     sw_seam_select select;
@@ -253,9 +243,9 @@ typedef struct sw_seam_walk {
      * levels; NULL otherwise (a surface in view waits for its mesh). */
     sw_seam_standin *standins;
     int no_standins;              /* set before the workers start: none even with levels */
-    float standin_share;          /* where a silhouette may cross a stand-in, the share of its
-                                     bound its level may show (SW_SEAM_STANDIN_SILHOUETTE_SHARE;
-                                     tests set others) */
+    int standin_silhouettes;      /* 1: where a silhouette may cross a stand-in its level is
+                                     chosen by the bound it was made for
+                                     (sw_seam_standin_worth); 0 by its error alone (tests) */
     uint32_t standin_evicted;     /* the frame stand-ins last gave meshes up for room */
     uint32_t standin_evict_rounds;/* and how many times in it (UINT32_MAX: none was left) */
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */

@@ -85,10 +85,10 @@ void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
  * is drawn so. */
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
 
-/* V: the largest error a static level may have to stand in for surface s
- * this frame: its target, or a share of it where a silhouette may cross
- * s (sw_seam_walk_standins.c). */
-float sw_seam_walk_standin_bound(const sw_seam_walk *w, uint32_t s);
+/* V: 1 when surface s's stand-in still serves its target: its level's
+ * worth (sw_seam_standin_worth, a silhouette or not this frame) within it
+ * (sw_seam_walk_standins.c). */
+int sw_seam_walk_standin_serves(const sw_seam_walk *w, uint32_t s);
 
 /* V: the error of the level surface s will stand in with (its target's)
  * into w->standin_error; when that changed, the stand-ins beside it are

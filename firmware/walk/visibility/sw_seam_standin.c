@@ -60,7 +60,14 @@ static int whole(const sw_levels *lv, uint32_t k, uint32_t loops)
     return 1;
 }
 
-uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound)
+float sw_seam_standin_worth(const sw_level *level, int silhouette)
+{
+    if (!silhouette)
+        return level->error;
+    return level->made_bound > 0 ? fmaxf(level->made_bound, level->error) : 4.0f * level->error;
+}
+
+uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound, int silhouette)
 {
     const sw_levels *lv = &pack->levels;
     if (!lv->surface_levels || s >= lv->surface_count)
@@ -71,7 +78,7 @@ uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound)
     for (uint32_t k = first; k < end; k++) {
         if (!whole(lv, k, loops))
             continue;
-        if (best == UINT32_MAX || lv->levels[k].error <= bound)
+        if (best == UINT32_MAX || sw_seam_standin_worth(&lv->levels[k], silhouette) <= bound)
             best = k;
     }
     return best != UINT32_MAX ? best : first < end ? first : UINT32_MAX;
@@ -98,6 +105,12 @@ static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
     }
     *points = at;
     return 1;
+}
+
+int sw_seam_standin_vanishes(sw_seam_standin *m, const sw_seam_select *front, uint32_t s)
+{
+    uint32_t points = 0;
+    return !gather(m, front, s, &points);
 }
 
 _Static_assert(sizeof(sw_level_vertex) == sizeof(sw_vertex), "a level's vertices are drawn as "

@@ -45,11 +45,27 @@ size_t sw_seam_standin_bytes(const sw_pack *pack);
 sw_status sw_seam_standin_init(sw_seam_standin *m, const sw_pack *pack, sw_arena *arena,
                                sw_error *err);
 
+/* What a level is worth against a bound: its error; or, where a silhouette
+ * may cross the surface, the bound it was made for when that is larger. A
+ * level's error is its worst point, and a silhouette shows it whole; the
+ * walk's own mesh for a bound comes out well within it (its tessellator
+ * proves the bound), and a stand-in drawn at its level's whole error
+ * beside such meshes moved silhouettes by a pixel: between two columns,
+ * one behind the other, the background showed. A level made for the bound
+ * by the same tessellator is as close as the walk's own mesh. A pack that
+ * keeps no made bound: four times the error. */
+float sw_seam_standin_worth(const sw_level *level, int silhouette);
+
 /* The level of surface s to stand in for a mesh made for bound (model
  * units): of its levels with a chain for every loop (a level made without
- * a hole would cover it), the coarsest whose error is within bound, else
- * the finest; with no such level, its finest. UINT32_MAX when s has none. */
-uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound);
+ * a hole would cover it), the coarsest worth bound or less (with or
+ * without a silhouette, as above), else the finest; with no such level,
+ * its finest. UINT32_MAX when s has none. */
+uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound, int silhouette);
+
+/* 1 when an outer loop of surface s vanishes at front (m's buffers are
+ * written). */
+int sw_seam_standin_vanishes(sw_seam_standin *m, const sw_seam_select *front, uint32_t s);
 
 /* Surface s's stand-in from level `level` and the loops front shows (a
  * run of slots showing one vertex is one point: only positions are drawn,

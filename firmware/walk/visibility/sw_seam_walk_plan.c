@@ -81,6 +81,10 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
     }
     if (e->state == SW_SEAM_EMPTY && w->standins)
         sw_seam_walk_stand_in(w, s, plan, frame);
+    if (e->state == SW_SEAM_GONE) {
+        frame->vanished_surfaces++;
+        return;
+    }
     frame->cracks += e->cracks;
     if (e->state == SW_SEAM_EMPTY && w->workers) {
         frame->waiting_surfaces++;   /* its first mesh is not made yet */

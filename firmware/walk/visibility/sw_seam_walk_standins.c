@@ -97,9 +97,55 @@ static float standin_border(const sw_seam_walk *w, uint32_t s, float level_error
     return border;
 }
 
+/* 1 when a silhouette may cross s from this frame's eye: not every normal
+ * of it (its own cone when cone culling made them, else its
+ * super-surface's, a bound of every member's) faces the eye over its box. */
+#define SW_STANDIN_FACING_MARGIN_RAD 0.05
+static int may_show_silhouette(const sw_seam_walk *w, uint32_t s)
+{
+    if (!w->standin_silhouettes)
+        return 0;
+    sw_normal_cone cone = { sw_v3(0, 0, 0), SW_CONE_FULL };
+    const sw_supers *sp = &w->pack->supers;
+    if (w->cones) {
+        cone = w->cones[s];
+    } else if (sp->super_count > 0 && s < sp->surface_count) {
+        const sw_super_surface *c = &sp->supers[sp->super_of[s]];
+        if (c->span < SW_SUPER_SPAN_FULL)
+            cone = (sw_normal_cone){ sw_v3(c->axis[0], c->axis[1], c->axis[2]), c->span };
+    }
+    cone.axis = sw_v3_scale(cone.axis, -1.0);   /* facing the eye: its reverse faces away */
+    sw_box box = sw_cull_tree_surface_box(&w->cull_tree, s);
+    return !sw_normal_cone_back_facing(&cone, &box, w->eye, SW_STANDIN_FACING_MARGIN_RAD);
+}
+
+static uint32_t level_for_target(const sw_seam_walk *w, uint32_t s)
+{
+    return sw_seam_standin_level(w->pack, s, w->target[s], may_show_silhouette(w, s));
+}
+
+/* The level announced for s (w->standin_error), or UINT32_MAX. */
+static uint32_t announced_level(const sw_seam_walk *w, uint32_t s)
+{
+    const sw_levels *lv = &w->pack->levels;
+    if (s < lv->surface_count && isfinite(w->standin_error[s]))
+        for (uint32_t k = lv->surface_levels[s]; k < lv->surface_levels[s + 1]; k++)
+            if (lv->levels[k].error == w->standin_error[s])
+                return k;
+    return UINT32_MAX;
+}
+
+int sw_seam_walk_standin_serves(const sw_seam_walk *w, uint32_t s)
+{
+    uint32_t k = announced_level(w, s);
+    return k != UINT32_MAX &&
+           sw_seam_standin_worth(&w->pack->levels.levels[k], may_show_silhouette(w, s)) <=
+               w->target[s];
+}
+
 void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)
 {
-    uint32_t level = sw_seam_standin_level(w->pack, s, sw_seam_walk_standin_bound(w, s));
+    uint32_t level = level_for_target(w, s);
     if (level == UINT32_MAX)
         return;
     float error = w->pack->levels.levels[level].error;
@@ -110,51 +156,16 @@ void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)
     sw_seam_walk_restitch_around(w, s);
 }
 
-/* Where a silhouette may cross s, its level must be within a share of the
- * bound (w->standin_share, sw_seam_walk.h says why); where none can (every
- * normal of it faces the eye) its error lies mostly along the view and its
- * outline is its loops, which the strip joins to the seams: there the
- * level may use the whole bound. */
-#define SW_STANDIN_FACING_MARGIN_RAD 0.05
-
-/* The normals of s: its own cone when cone culling made them, else its
- * super-surface's (a bound of every member's normals); none known: the
- * full sphere. */
-static sw_normal_cone surface_cone(const sw_seam_walk *w, uint32_t s)
-{
-    if (w->cones)
-        return w->cones[s];
-    const sw_supers *sp = &w->pack->supers;
-    sw_normal_cone all = { sw_v3(0, 0, 0), SW_CONE_FULL };
-    if (sp->super_count == 0 || s >= sp->surface_count)
-        return all;
-    const sw_super_surface *c = &sp->supers[sp->super_of[s]];
-    if (!(c->span < SW_SUPER_SPAN_FULL))
-        return all;
-    return (sw_normal_cone){ sw_v3(c->axis[0], c->axis[1], c->axis[2]), c->span };
-}
-
-float sw_seam_walk_standin_bound(const sw_seam_walk *w, uint32_t s)
-{
-    sw_normal_cone away = surface_cone(w, s);
-    away.axis = sw_v3_scale(away.axis, -1.0);   /* facing the eye: its reverse faces away */
-    sw_box box = sw_cull_tree_surface_box(&w->cull_tree, s);
-    int facing = sw_normal_cone_back_facing(&away, &box, w->eye, SW_STANDIN_FACING_MARGIN_RAD);
-    return facing ? w->target[s] : w->standin_share * w->target[s];
-}
-
 /* The level s stands in with: the one announced (its neighbours were
  * joined to it; a stand-in made again keeps it, so they need not be), else
  * its target's, announced now. */
 static uint32_t standin_level(sw_seam_walk *w, uint32_t s)
 {
-    const sw_levels *lv = &w->pack->levels;
-    if (s < lv->surface_count && isfinite(w->standin_error[s]))
-        for (uint32_t k = lv->surface_levels[s]; k < lv->surface_levels[s + 1]; k++)
-            if (lv->levels[k].error == w->standin_error[s])
-                return k;
+    uint32_t k = announced_level(w, s);
+    if (k != UINT32_MAX)
+        return k;
     sw_seam_walk_standin_announce(w, s);
-    return sw_seam_standin_level(w->pack, s, sw_seam_walk_standin_bound(w, s));
+    return level_for_target(w, s);
 }
 
 /* The front a stand-in for s is joined to, as the shown vertex of each of
@@ -214,9 +225,12 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
         e->last_frame = last;
         return 0;   /* it waits, undrawn and counted */
     }
-    /* Gone in the loops it was made in is not gone at the surface's own
-     * bound: it waits, undrawn and counted, for its mesh. */
-    if (e->state != SW_SEAM_READY)
+    /* Gone in the loops it was made in (its neighbours' meshes show its
+     * seams coarser) is not gone at the surface's own bound: it waits,
+     * undrawn and counted, for its mesh. Gone at the front its own bound
+     * moved too: it vanishes within the bound, as the walk's own mesh
+     * would (the paper's vanishing patch), until its mesh is made. */
+    if (e->state == SW_SEAM_GONE && !sw_seam_standin_vanishes(w->standins, &w->select, s))
         memset(e, 0, sizeof *e);
     e->last_frame = last;
     if (e->state != SW_SEAM_READY)

@@ -158,7 +158,7 @@ static int wants_work(const sw_seam_walk *w, uint32_t s, double *weight)
         return 0;
     /* A static level within the bound is as good as a mesh made for it. */
     if (w->standins && w->standin[s] && e->state == SW_SEAM_READY &&
-        e->made_bound <= sw_seam_walk_standin_bound(w, s))
+        sw_seam_walk_standin_serves(w, s))
         return 0;
     int has_mesh = e->state == SW_SEAM_READY;
     double t = has_mesh ? e->made_bound : w->target[s];
