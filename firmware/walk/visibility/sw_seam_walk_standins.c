@@ -227,10 +227,13 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     }
     /* Gone in the loops it was made in (its neighbours' meshes show its
      * seams coarser) is not gone at the surface's own bound: it waits,
-     * undrawn and counted, for its mesh. Gone at the front its own bound
-     * moved too: it vanishes within the bound, as the walk's own mesh
-     * would (the paper's vanishing patch), until its mesh is made. */
-    if (e->state == SW_SEAM_GONE && !sw_seam_standin_vanishes(w->standins, &w->select, s))
+     * undrawn and counted, for its mesh, as one too large for a draw does.
+     * Gone at the front its own bound moved too: it vanishes within the
+     * bound, as the walk's own mesh would (the paper's vanishing patch),
+     * until its mesh is made. */
+    int vanished = e->state == SW_SEAM_GONE &&
+                   sw_seam_standin_vanishes(w->standins, &w->select, s);
+    if (e->state != SW_SEAM_READY && !vanished)
         memset(e, 0, sizeof *e);
     e->last_frame = last;
     if (e->state != SW_SEAM_READY)
