@@ -23,6 +23,7 @@ extern "C" {
 #include "sw_math.h"
 #include "sw_occt_measure.h"
 }
+#include "sw_occt_bspline.h"
 #include "sw_occt_internal.h"
 
 #include <BRepBndLib.hxx>
@@ -163,125 +164,12 @@ sw_mat4 matrix_of(const gp_Trsf &t)
     return m;
 }
 
-/* ---- geometry: OCCT B-splines as seamwalk's clamped NURBS -------------- */
-
-/* A 2D curve's points as (u, v, 0, w) and its flat knot vector. */
-struct TrimCurve {
-    int degree = 0, count = 0;
-    std::vector<double> knots, ctrl;
-};
-
-/* seamwalk's B-splines are clamped (end knots of multiplicity degree + 1).
- * OCCT's need not be: SetNotPeriodic leaves the periodic knot pattern, and
- * files may hold unclamped ones. Segmenting to the valid range clamps. */
-bool clamped(const TColStd_Array1OfReal &flat, int degree, int poles)
-{
-    int lo = flat.Lower();
-    return flat(lo) == flat(lo + degree) && flat(lo + poles) == flat(lo + poles + degree);
-}
-
-void clamp_curve(const Handle(Geom2d_BSplineCurve) &b)
-{
-    if (b->IsPeriodic())
-        b->SetNotPeriodic();
-    TColStd_Array1OfReal flat(1, b->NbPoles() + b->Degree() + 1);
-    b->KnotSequence(flat);
-    if (!clamped(flat, b->Degree(), b->NbPoles()))
-        b->Segment(flat(1 + b->Degree()), flat(1 + b->NbPoles()));
-}
-
-void clamp_surface(const Handle(Geom_BSplineSurface) &b)
-{
-    if (b->IsUPeriodic())
-        b->SetUNotPeriodic();
-    if (b->IsVPeriodic())
-        b->SetVNotPeriodic();
-    int du = b->UDegree(), dv = b->VDegree(), nu = b->NbUPoles(), nv = b->NbVPoles();
-    TColStd_Array1OfReal ku(1, nu + du + 1), kv(1, nv + dv + 1);
-    b->UKnotSequence(ku);
-    b->VKnotSequence(kv);
-    if (!clamped(ku, du, nu) || !clamped(kv, dv, nv))
-        b->Segment(ku(1 + du), ku(1 + nu), kv(1 + dv), kv(1 + nv));
-}
-
-/* The p-curve's used range [first, last] as a clamped B-spline. A periodic
- * one is cut first: its range may cross the period's start. */
-Handle(Geom2d_BSplineCurve) clamped_pcurve(const Handle(Geom2d_Curve) &curve, double first,
-                                           double last)
-{
-    Handle(Geom2d_BSplineCurve) b = Handle(Geom2d_BSplineCurve)::DownCast(curve);
-    if (b.IsNull()) {
-        Handle(Geom2d_TrimmedCurve) piece = new Geom2d_TrimmedCurve(curve, first, last);
-        b = Geom2dConvert::CurveToBSplineCurve(piece);
-    } else {
-        b = Handle(Geom2d_BSplineCurve)::DownCast(b->Copy());
-        if (std::fabs(first - b->FirstParameter()) > 1e-12 ||
-            std::fabs(last - b->LastParameter()) > 1e-12)
-            b->Segment(first, last);
-    }
-    clamp_curve(b);
-    return b;
-}
-
-TrimCurve trim_curve_of(const Handle(Geom2d_BSplineCurve) &b)
-{
-    TrimCurve t;
-    t.degree = b->Degree();
-    t.count = b->NbPoles();
-    TColStd_Array1OfReal flat(1, b->NbPoles() + b->Degree() + 1);
-    b->KnotSequence(flat);
-    t.knots.assign(flat.begin(), flat.end());
-    t.ctrl.reserve((size_t)t.count * 4);
-    for (int i = 1; i <= t.count; i++) {
-        gp_Pnt2d p = b->Pole(i);
-        t.ctrl.insert(t.ctrl.end(), {p.X(), p.Y(), 0.0, b->Weight(i)});
-    }
-    return t;
-}
-
-struct Surface {
-    std::vector<double> knots_u, knots_v, ctrl;
-    sw_nurbs_surface view{};
-};
-
-Handle(Geom_BSplineSurface) bspline_surface_of(const TopoDS_Face &face)
-{
-    Handle(Geom_Surface) s = BRep_Tool::Surface(face);   /* the face's location applied */
-    Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(s);
-    if (b.IsNull())
-        b = GeomConvert::SurfaceToBSplineSurface(s);
-    else
-        b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
-    clamp_surface(b);
-    return b;
-}
-
-void fill_surface(const Handle(Geom_BSplineSurface) &b, Surface *out)
-{
-    int nu = b->NbUPoles(), nv = b->NbVPoles();
-    TColStd_Array1OfReal ku(1, nu + b->UDegree() + 1), kv(1, nv + b->VDegree() + 1);
-    b->UKnotSequence(ku);
-    b->VKnotSequence(kv);
-    out->knots_u.assign(ku.begin(), ku.end());
-    out->knots_v.assign(kv.begin(), kv.end());
-    out->ctrl.resize((size_t)nu * (size_t)nv * 4);
-    for (int j = 0; j < nv; j++)
-        for (int i = 0; i < nu; i++) {
-            gp_Pnt p = b->Pole(i + 1, j + 1);
-            double *c = &out->ctrl[((size_t)j * (size_t)nu + (size_t)i) * 4];
-            c[0] = p.X();
-            c[1] = p.Y();
-            c[2] = p.Z();
-            c[3] = b->Weight(i + 1, j + 1);
-        }
-    out->view.degree_u = b->UDegree();
-    out->view.degree_v = b->VDegree();
-    out->view.count_u = nu;
-    out->view.count_v = nv;
-    out->view.knots_u = out->knots_u.data();
-    out->view.knots_v = out->knots_v.data();
-    out->view.ctrl = out->ctrl.data();
-}
+using sw_occt::Surface;
+using sw_occt::TrimCurve;
+using sw_occt::bspline_surface_of;
+using sw_occt::clamped_pcurve;
+using sw_occt::fill_surface;
+using sw_occt::trim_curve_of;
 
 /* ---- faces -------------------------------------------------------------- */
 

@@ -2,7 +2,8 @@
  * assets/import/): OCCT's messages captured instead of printed, the
  * file's extension, what the file says of itself (sw_occt_step_file.cpp),
  * and the one place exceptions stop. The reader and converter is
- * sw_import_occt.cpp, the measurement for cross-checks sw_occt_measure.cpp. */
+ * sw_import_occt.cpp (its B-splines from sw_occt_bspline.h), the
+ * measurement for cross-checks sw_occt_measure.cpp. */
 #ifndef SW_OCCT_INTERNAL_H
 #define SW_OCCT_INTERNAL_H
 

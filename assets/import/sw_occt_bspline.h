@@ -1,0 +1,45 @@
+/* OpenCASCADE's B-spline curves and surfaces as seamwalk's clamped NURBS
+ * (C++ only, inside assets/import/): clamped where OCCT's are periodic or
+ * unclamped, and copied into flat arrays the C model takes. The importer's
+ * faces and loops (sw_import_occt.cpp) are made of these. */
+#ifndef SW_OCCT_BSPLINE_H
+#define SW_OCCT_BSPLINE_H
+
+extern "C" {
+#include "sw_nurbs.h"
+}
+
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <vector>
+
+namespace sw_occt {
+
+/* A 2D curve's points as (u, v, 0, w) and its flat knot vector. */
+struct TrimCurve {
+    int degree = 0, count = 0;
+    std::vector<double> knots, ctrl;
+};
+
+/* A surface's knots and points, and the C model's view of them. */
+struct Surface {
+    std::vector<double> knots_u, knots_v, ctrl;
+    sw_nurbs_surface view{};
+};
+
+/* The p-curve's used range [first, last] as a clamped B-spline. A periodic
+ * one is cut first: its range may cross the period's start. */
+Handle(Geom2d_BSplineCurve) clamped_pcurve(const Handle(Geom2d_Curve) &curve, double first,
+                                           double last);
+TrimCurve trim_curve_of(const Handle(Geom2d_BSplineCurve) &b);
+
+/* The face's surface (its location applied) as a clamped B-spline copy. */
+Handle(Geom_BSplineSurface) bspline_surface_of(const TopoDS_Face &face);
+void fill_surface(const Handle(Geom_BSplineSurface) &b, Surface *out);
+
+}  // namespace sw_occt
+
+#endif
