@@ -5,21 +5,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_pow2.h"
+
 #define CELL_BITS 21
 #define CELL_MAX ((1u << CELL_BITS) - 1u)
 #define FIRST_WINDS_UP 0x80000000u /* edge_uses: first seen as low -> high index */
 
-static uint32_t pow2_at_least(uint32_t n)
-{
-    uint32_t p = 16;
-    while (p < n && p < 0x80000000u)
-        p <<= 1;
-    return p;
-}
-
 size_t sw_seam_drawn_arena_bytes(uint32_t max_edges, uint32_t max_mesh_indices)
 {
-    size_t table = pow2_at_least(2 * max_mesh_indices);
+    size_t table = sw_pow2_at_least(2 * max_mesh_indices, 16);
     return sw_arena_worst_case((size_t)max_edges * sizeof(sw_seam_drawn_edge), 64) +
            sw_arena_worst_case(4 * (size_t)max_edges * sizeof(sw_seam_drawn_cell), 64) +
            2 * sw_arena_worst_case(table * sizeof(uint32_t), 64);
@@ -32,7 +26,7 @@ sw_status sw_seam_drawn_init(sw_seam_drawn *d, const sw_box *box, double reach,
     memset(d, 0, sizeof *d);
     d->max_edges = max_edges;
     d->max_cells = 4 * max_edges;
-    d->edge_table = pow2_at_least(2 * max_mesh_indices);
+    d->edge_table = sw_pow2_at_least(2 * max_mesh_indices, 16);
     d->edges = sw_arena_alloc(arena, (size_t)max_edges * sizeof *d->edges, 64);
     d->cells = sw_arena_alloc(arena, (size_t)d->max_cells * sizeof *d->cells, 64);
     d->edge_keys = sw_arena_alloc(arena, d->edge_table * sizeof(uint32_t), 64);
@@ -75,7 +69,7 @@ static void use_edge(sw_seam_drawn *d, uint32_t size, uint16_t a, uint16_t b)
 
 void sw_seam_drawn_add_mesh(sw_seam_drawn *d, uint32_t surface, const sw_seam_mesh *mesh)
 {
-    uint32_t size = pow2_at_least(2 * mesh->index_count);
+    uint32_t size = sw_pow2_at_least(2 * mesh->index_count, 16);
     if (size > d->edge_table) {
         d->overflow = 1;
         return;

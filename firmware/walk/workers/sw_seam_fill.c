@@ -2,23 +2,17 @@
 
 #include <string.h>
 
+#include "sw_pow2.h"
+
 #include "sw_trim_tess.h"
 
 #define UNSET 0xFFFFFFFFu
 #define TANGLED 0xFFFFFFFEu        /* next[]: the vertex starts two border edges */
 #define FIRST_WINDS_UP 0x80000000u /* uses: first seen as low -> high index */
 
-static uint32_t pow2_at_least(uint32_t n)
-{
-    uint32_t p = 16;
-    while (p < n && p < 0x80000000u)
-        p <<= 1;
-    return p;
-}
-
 size_t sw_seam_fill_arena_bytes(uint32_t max_vertices, uint32_t max_indices)
 {
-    size_t table = pow2_at_least(2 * max_indices);
+    size_t table = sw_pow2_at_least(2 * max_indices, 16);
     return 2 * sw_arena_worst_case(table * sizeof(uint32_t), 64) +
            sw_arena_worst_case((size_t)max_vertices * sizeof(uint32_t), 64);
 }
@@ -27,7 +21,7 @@ sw_status sw_seam_fill_init(sw_seam_fill *f, uint32_t max_vertices, uint32_t max
                             sw_arena *arena, sw_error *err)
 {
     memset(f, 0, sizeof *f);
-    f->table = pow2_at_least(2 * max_indices);
+    f->table = sw_pow2_at_least(2 * max_indices, 16);
     f->max_vertices = max_vertices;
     f->keys = sw_arena_alloc(arena, f->table * sizeof(uint32_t), 64);
     f->uses = sw_arena_alloc(arena, f->table * sizeof(uint32_t), 64);
@@ -63,7 +57,7 @@ static int link_border(sw_seam_fill *f, const uint32_t *ids, uint32_t vertex_cou
     for (uint32_t t = 0; t + 2 < index_count; t += 3)
         for (int k = 0; k < 3; k++)
             edges += on_border(ids[indices[t + k]]) && on_border(ids[indices[t + (k + 1) % 3]]);
-    uint32_t size = pow2_at_least(2 * edges + 16);
+    uint32_t size = sw_pow2_at_least(2 * edges + 16, 16);
     if (size > f->table || vertex_count > f->max_vertices)
         return 0;
     memset(f->keys, 0, size * sizeof(uint32_t));
