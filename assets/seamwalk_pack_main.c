@@ -23,6 +23,7 @@
 #include "sw_import_iges.h"
 #include "sw_import_occt.h"
 #include "sw_levels_build.h"
+#include "sw_part_levels_build.h"
 #include "sw_model.h"
 #include "sw_pack.h"
 #include "sw_pack_import_notes.h"
@@ -259,6 +260,7 @@ typedef struct seam_summary {
     double simplify_s;
     sw_levels_report levels;
     sw_cluster_report clusters;
+    sw_part_levels_report part_levels;
 } seam_summary;
 
 /* The simplifier's view of the exact surfaces (sw_seam_runs.h). */
@@ -307,6 +309,7 @@ static const char **input_names(const build_options *o)
 typedef struct derived {
     sw_levels_built levels;
     sw_clusters_built clusters;
+    sw_part_levels_built part_levels;
 } derived;
 
 static sw_status build_derived(const sw_pack *pack, derived *d, seam_summary *summary,
@@ -316,8 +319,13 @@ static sw_status build_derived(const sw_pack *pack, derived *d, seam_summary *su
     sw_status st = sw_levels_build(pack, NULL, &d->levels, &summary->levels, err);
     if (st == SW_OK)
         st = sw_cluster_pack(pack, &d->levels.view, NULL, &d->clusters, &summary->clusters, err);
-    if (st != SW_OK)
+    if (st == SW_OK)
+        st = sw_part_levels_build(pack, &d->levels.view, NULL, &d->part_levels,
+                                  &summary->part_levels, err);
+    if (st != SW_OK) {
         sw_levels_built_free(&d->levels);
+        sw_clusters_built_free(&d->clusters);
+    }
     return st;
 }
 
@@ -339,11 +347,14 @@ static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t 
     size_t with_size = 0;
     contents->levels = &d.levels.view;
     contents->supers = &d.clusters.view;
+    contents->part_levels = &d.part_levels.view;
     st = sw_pack_serialize(contents, &with, &with_size, err);
     contents->levels = NULL;
     contents->supers = NULL;
+    contents->part_levels = NULL;
     sw_levels_built_free(&d.levels);
     sw_clusters_built_free(&d.clusters);
+    sw_part_levels_built_free(&d.part_levels);
     /* Read back as the runtime will: a pack the reader refuses is not
      * written. */
     if (st == SW_OK && (st = sw_pack_open_memory(with, with_size, &pack, err)) != SW_OK)
@@ -481,6 +492,15 @@ static void print_summary(const build_options *o, const sw_model *model,
            " small ones merged, %" PRIu32 " alone wider than alpha, %" PRIu32 " stopped by a "
            "cap); %.2f s\n", k->clusters, k->surfaces, k->merged, k->wide_alone, k->capped,
            k->seconds);
+    const sw_part_levels_report *pl = &seams->part_levels;
+    printf("seamwalk-pack: part levels: %" PRIu32 " of %" PRIu32 " parts, %" PRIu32
+           " levels from %" PRIu64 " source triangles, triangles by rank %" PRIu64 " %" PRIu64
+           " %" PRIu64 " %" PRIu64 "; left out: %" PRIu32 " parts with a surface without a "
+           "level, %" PRIu32 " levels not smaller, %" PRIu32 " over 65536 vertices; worst "
+           "error over bound %.2f; %.2f s\n", pl->with_levels, pl->parts, pl->levels,
+           pl->source_triangles, pl->triangles[0], pl->triangles[1], pl->triangles[2],
+           pl->triangles[3], pl->incomplete, pl->not_smaller, pl->too_large,
+           pl->worst_over_bound, pl->seconds);
     printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
            model->patch_count, bytes, o->out_path, seconds);
 }

@@ -17,6 +17,8 @@ pkg_check_modules(WAYLAND_SCANNER REQUIRED wayland-scanner)
 pkg_get_variable(WAYLAND_SCANNER wayland-scanner wayland_scanner)
 pkg_check_modules(SODIUM REQUIRED IMPORTED_TARGET libsodium)   # ed25519 pack signatures
 pkg_check_modules(INIH REQUIRED IMPORTED_TARGET inih)          # showroom scene files, the config
+# The part levels' simplifier (host tool only); Debian ships no .pc for it.
+find_package(meshoptimizer REQUIRED CONFIG)
 pkg_check_modules(HIDAPI REQUIRED IMPORTED_TARGET hidapi-hidraw)  # gamepads (sw_hid_hidapi.c)
 pkg_check_modules(GPIOD REQUIRED IMPORTED_TARGET libgpiod)     # GPIO buttons (sw_gpio_gpiod.c)
 pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)  # sd_notify: READY, WATCHDOG (sw_notify.c)

@@ -19,6 +19,7 @@ packages=(
   libxxhash-dev                      # pack section checksums (XXH3-64)
   libstb-dev                         # stb_image_write (PNG frames), stb_image (tests)
   libinih-dev                        # showroom scene files and the unit's config (INI)
+  libmeshoptimizer-dev               # the part levels' simplifier (assets/super/sw_part_levels_build.c)
   libhidapi-dev                      # gamepads and joysticks (hidapi-hidraw, firmware/sw_hid_hidapi.c)
   libgpiod-dev                       # GPIO buttons (libgpiod v1, firmware/sw_gpio_gpiod.c)
   libsystemd-dev                     # sd_notify for the service: READY, WATCHDOG (firmware/sw_notify.c)

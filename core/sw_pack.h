@@ -16,6 +16,7 @@
 #include "sw_arena.h"
 #include "sw_error.h"
 #include "sw_levels.h"
+#include "sw_part_levels.h"
 #include "sw_parts.h"
 #include "sw_seam_graph.h"
 #include "sw_super.h"
@@ -82,6 +83,14 @@ enum sw_section_type {
     SW_SECTION_SUPER_SURFACES = 32,     /* sw_super_surface[] */
     SW_SECTION_SUPER_MEMBERS = 33,      /* uint32_t[surface_count]: surface indices */
     SW_SECTION_SUPER_OF = 34,           /* uint32_t[surface_count]: each surface's cluster */
+    /* Part levels (core/sw_part_levels.h); optional, all five or none.
+     * Older readers skip them; absent, every part is drawn by its
+     * surfaces. */
+    SW_SECTION_PART_LEVELS = 35,        /* one sw_pack_part_levels */
+    SW_SECTION_PART_LEVEL_RECORDS = 36, /* sw_part_level[level_count] */
+    SW_SECTION_PART_LEVEL_PARTS = 37,   /* uint32_t[part_count + 1] */
+    SW_SECTION_PART_LEVEL_VERTICES = 38,/* sw_level_vertex[vertex_count] */
+    SW_SECTION_PART_LEVEL_INDICES = 39, /* uint16_t[index_count] */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
@@ -270,6 +279,9 @@ typedef struct sw_pack {
     /* The super-surfaces: views into the SUPER_* sections, every pointer
      * NULL and every count 0 when the pack has none. */
     sw_supers supers;
+    /* The part levels: views into the PART_LEVEL* sections, every pointer
+     * NULL and every count 0 when the pack has none. */
+    sw_part_levels part_levels;
 } sw_pack;
 
 /* runtime_bytes for a pack of total_size bytes and patch_count patches whose

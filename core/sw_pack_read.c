@@ -141,7 +141,7 @@ enum { HEADER_BYTES = 64, SECTION_BYTES = 32, CONTROL_POINT_BYTES = 16,
        TRANSFORM_BYTES = 16 * 4, LAST_KNOWN = SW_SECTION_LEVEL_CHAIN_POINTS };
 
 /* Types this file does not index: SIGNATURE is checked by the unit
- * (sw_pack_signature.h), ORIENTATION, IMPORT_NOTES and the SUPER_* group by
+ * (sw_pack_signature.h), ORIENTATION, IMPORT_NOTES, the SUPER_* and PART_LEVEL* groups by
  * their own modules, each with its own "a second ..." rule. */
 static int indexed_here(uint32_t t)
 {
@@ -185,6 +185,11 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_SUPER_SURFACES: return "SUPER_SURFACES";
     case SW_SECTION_SUPER_MEMBERS: return "SUPER_MEMBERS";
     case SW_SECTION_SUPER_OF: return "SUPER_OF";
+    case SW_SECTION_PART_LEVELS: return "PART_LEVELS";
+    case SW_SECTION_PART_LEVEL_RECORDS: return "PART_LEVEL_RECORDS";
+    case SW_SECTION_PART_LEVEL_PARTS: return "PART_LEVEL_PARTS";
+    case SW_SECTION_PART_LEVEL_VERTICES: return "PART_LEVEL_VERTICES";
+    case SW_SECTION_PART_LEVEL_INDICES: return "PART_LEVEL_INDICES";
     }
     return "unknown";
 }
@@ -774,7 +779,8 @@ sw_status sw_pack_open_memory_with(const void *data, size_t size, const sw_parts
         (s = check_runtime_bytes(&pack, err)) != SW_OK ||
         (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK ||
         (s = sw_pack_map_import_notes(bytes, &pack, err)) != SW_OK ||
-        (s = sw_pack_map_supers(bytes, &pack, err)) != SW_OK)
+        (s = sw_pack_map_supers(bytes, &pack, err)) != SW_OK ||
+        (s = sw_pack_map_part_levels(bytes, &pack, err)) != SW_OK)
         return s;
     *out = pack;
     return SW_OK;

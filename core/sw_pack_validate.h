@@ -50,6 +50,10 @@ sw_status sw_pack_validate_levels(const sw_pack *pack, const sw_parts_runner *ru
  * rule of PACK_FORMAT.md, "Super-surfaces", allocating nothing. */
 sw_status sw_pack_map_supers(const uint8_t *data, sw_pack *out, sw_error *err);
 
+/* The part levels' five sections (sw_pack_validate_part_levels.c): all or
+ * none, their counts and every rule of PACK_FORMAT.md's "Part levels". */
+sw_status sw_pack_map_part_levels(const uint8_t *data, sw_pack *out, sw_error *err);
+
 /* Number of control points along edge (enum sw_patch_edge) of patch. */
 static inline uint32_t sw_pack_edge_points(const sw_pack_patch *patch, uint32_t edge)
 {

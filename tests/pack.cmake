@@ -31,6 +31,7 @@ sw_add_test(test_pack_levels SOURCES test_pack_levels.c LIBS sw_assets sw_core)
 # rule, the info report; their fuzz seed (corpus/pack/seed-supers) is
 # written by test_pack_write --write-corpus (pack_sample.h).
 sw_add_test(test_pack_super SOURCES test_pack_super.c LIBS sw_assets sw_core)
+sw_add_test(test_pack_part_levels SOURCES test_pack_part_levels.c LIBS sw_assets sw_core)
 # The runtime's threaded loader: helper threads check the parts, and the
 # answer must be the serial reader's (tests/fuzz/fuzz_pack_load.c).
 sw_add_fuzz_target(fuzz_pack_load SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pack_load.c

@@ -344,6 +344,39 @@ static inline void make_sample_supers(sample_supers *k)
     view_sample_supers(k, 2);
 }
 
+/* Part levels for the sample's two parts: part 0 two levels (a square of
+ * two triangles, then one triangle), part 1 none. */
+typedef struct sample_part_levels {
+    sw_part_level levels[2];
+    uint32_t part_levels[3];
+    sw_level_vertex vertices[7];
+    uint16_t indices[9];
+    sw_part_levels view;
+} sample_part_levels;
+
+static inline void view_sample_part_levels(sample_part_levels *k)
+{
+    k->view = (sw_part_levels){ k->levels, k->part_levels, k->vertices, k->indices, 2, 7, 9, 2 };
+}
+
+static inline void make_sample_part_levels(sample_part_levels *k)
+{
+    memset(k, 0, sizeof *k);
+    const float square[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
+    for (int i = 0; i < 7; i++) {
+        memcpy(k->vertices[i].p, square[i < 4 ? i : i - 4], sizeof k->vertices[i].p);
+        k->vertices[i].normal[2] = 127;
+    }
+    const uint16_t idx[9] = { 0, 1, 2, 0, 2, 3, 0, 1, 2 };
+    memcpy(k->indices, idx, sizeof idx);
+    k->levels[0] = (sw_part_level){ .part = 0, .error = 0.1f, .first_vertex = 0,
+                                    .vertex_count = 4, .first_index = 0, .index_count = 6 };
+    k->levels[1] = (sw_part_level){ .part = 0, .error = 0.4f, .first_vertex = 4,
+                                    .vertex_count = 3, .first_index = 6, .index_count = 3 };
+    k->part_levels[0] = 0, k->part_levels[1] = 2, k->part_levels[2] = 2;
+    view_sample_part_levels(k);
+}
+
 static inline sw_pack_contents sample_contents(const sample *s)
 {
     sw_pack_contents c = { .meta = s->meta, .parts = s->parts, .patches = s->patches,

@@ -170,8 +170,13 @@ assert [s["name"] for s in j["sections"]][4:] == ["ADJACENCY", "SURFACES", "TRIM
   "SEAM", "SEAM_VERTICES", "SEAM_SLOTS", "SEAM_LOOPS", "SEAM_EDGES", "SEAM_COLLAPSES",
   "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS", "ORIENTATION", "LEVELS", "LEVEL_RECORDS",
   "LEVEL_SURFACES", "LEVEL_VERTICES", "LEVEL_INDICES", "LEVEL_CHAINS", "LEVEL_CHAIN_POINTS",
-  "SUPER_SURFACES", "SUPER_MEMBERS", "SUPER_OF"]
+  "SUPER_SURFACES", "SUPER_MEMBERS", "SUPER_OF", "PART_LEVELS", "PART_LEVEL_RECORDS",
+  "PART_LEVEL_PARTS", "PART_LEVEL_VERTICES", "PART_LEVEL_INDICES"]
 assert j["levels"]["levels"] > 0, j["levels"]
+pl = j["part_levels"]
+assert pl["parts"] == 3 and pl["levels"] >= 3 and pl["bytes"] > 0, pl
+t = [r["triangles"] for r in pl["ranks"]]
+assert all(a > b for a, b in zip(t, t[1:])) and all(r["error_max"] > 0 for r in pl["ranks"]), pl
 k = j["super_surfaces"]
 assert 0 < k["count"] <= 70 and k["members"][0] >= 1 and k["members"][2] <= 64, k
 assert len(k["finest_triangles"]) == 3 and k["finest_triangles"][0] > 0, k

@@ -451,20 +451,24 @@ static int write_model_seed(const sw_model *model, const char *dir, const char *
 
 /* The sample with its hand-built Seam Graph, and with its static levels
  * and super-surfaces when asked (pack_sample.h), into dir/name. */
-static void write_sample_seed(const char *dir, const char *name, int levels, int supers)
+static void write_sample_seed(const char *dir, const char *name, int levels, int supers,
+                              int part_levels)
 {
     sample s;
     sample_seam g;
     sample_levels l;
     sample_supers k;
+    sample_part_levels pl;
     make_sample(&s);
     make_sample_seam(&g);
     make_sample_levels(&l);
     make_sample_supers(&k);
+    make_sample_part_levels(&pl);
     sw_pack_contents c = sample_contents(&s);
     c.seam = &g.graph;
     c.levels = levels ? &l.view : NULL;
     c.supers = supers ? &k.view : NULL;
+    c.part_levels = part_levels ? &pl.view : NULL;
     uint8_t *bytes = NULL;
     size_t size = 0;
     sw_error err = { 0 };
@@ -516,9 +520,10 @@ static int write_corpus(const char *dir)
     snprintf(path, sizeof path, "%s/seed-bezier-only", dir);
     write_plain(path, bytes, size);
     free(bytes);
-    write_sample_seed(dir, "seed-seam-graph", 0, 0);
-    write_sample_seed(dir, "seed-levels", 1, 0);
-    write_sample_seed(dir, "seed-supers", 1, 1);
+    write_sample_seed(dir, "seed-seam-graph", 0, 0, 0);
+    write_sample_seed(dir, "seed-levels", 1, 0, 0);
+    write_sample_seed(dir, "seed-supers", 1, 1, 0);
+    write_sample_seed(dir, "seed-part-levels", 1, 1, 1);
     write_orientation_seed(dir);
     sw_model model;
     start_model(&model);

@@ -57,6 +57,10 @@ typedef struct sw_pack_contents {
      * SUPER_SURFACES, SUPER_MEMBERS and SUPER_OF. Not owned, like seam;
      * supers->surface_count must be surface_count above. */
     const sw_supers *supers;
+    /* The part levels (core/sw_part_levels.h), or NULL for none: written
+     * as the PART_LEVELS record and the four PART_LEVEL_* sections. Not
+     * owned, like seam; part_levels->part_count must be meta.part_count. */
+    const sw_part_levels *part_levels;
 } sw_pack_contents;
 
 #endif

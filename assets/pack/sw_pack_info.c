@@ -347,6 +347,7 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
     print_seam_text(out, pack);
     print_levels_text(out, pack, &derived->levels);
     sw_pack_print_super_text(out, pack, &derived->supers);
+    sw_pack_print_part_levels_text(out, pack);
     fprintf(out, "  %-16s %" PRIu32, "viewpoints", pack->viewpoint_count);
     for (uint32_t i = 0; i < pack->viewpoint_count; i++)
         fprintf(out, "%s%s", i ? ", " : ": ", pack->viewpoints[i].name);
@@ -530,6 +531,7 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack,
     json_seam(out, pack);
     json_levels(out, pack, &derived->levels);
     sw_pack_print_super_json(out, pack, &derived->supers);
+    sw_pack_print_part_levels_json(out, pack);
     json_viewpoints(out, pack);
     json_sections(out, pack);
     fprintf(out, "  \"units\": \"%s\",\n  \"model_tolerance\": %.9g,\n",

@@ -100,6 +100,12 @@ void sw_pack_print_super_text(FILE *out, const sw_pack *pack, const sw_pack_supe
 /* "super_surfaces": {...}, or null for a pack without them. */
 void sw_pack_print_super_json(FILE *out, const sw_pack *pack, const sw_pack_super_stats *s);
 
+/* The part levels (core/sw_part_levels.h): parts with them, and per rank
+ * the levels, triangles and largest error (sw_pack_info_part_levels.c).
+ * Text: nothing without them; JSON: "part_levels": {...} or null. */
+void sw_pack_print_part_levels_text(FILE *out, const sw_pack *pack);
+void sw_pack_print_part_levels_json(FILE *out, const sw_pack *pack);
+
 /* "mm", "m" or "unspecified" for META.units. */
 const char *sw_pack_units_name(uint32_t units);
 

@@ -22,10 +22,11 @@
 
 /* Types 1..13 (the first five always written), then the seam group's eight,
  * then ORIENTATION and IMPORT_NOTES, then the levels' seven, then the
- * super-surfaces' three. */
+ * super-surfaces' three, then the part levels' five. */
 enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8, LEVEL_SECTIONS = 7,
-       SUPER_SECTIONS = 3,
-       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2 + LEVEL_SECTIONS + SUPER_SECTIONS,
+       SUPER_SECTIONS = 3, PART_LEVEL_SECTIONS = 5,
+       MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2 + LEVEL_SECTIONS + SUPER_SECTIONS +
+                      PART_LEVEL_SECTIONS,
        HEADER_BYTES = 64, SECTION_BYTES = 32 };
 
 static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
@@ -102,7 +103,8 @@ static void list_level_sections(const sw_levels *l, const sw_pack_levels *record
  * level group when there are levels (levels_rec holds their LEVELS record),
  * the super-surfaces' group when there are clusters. */
 static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
-                         sw_pack_levels *levels_rec, section_source src[MAX_SECTIONS])
+                         sw_pack_levels *levels_rec, sw_pack_part_levels *parts_rec,
+                         section_source src[MAX_SECTIONS])
 {
     const sw_pack_meta *m = &c->meta;
     const section_source all[PLAIN_SECTIONS] = {
@@ -155,6 +157,20 @@ static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
         src[n++] = (section_source){ SW_SECTION_SUPER_MEMBERS, sp->members, list };
         src[n++] = (section_source){ SW_SECTION_SUPER_OF, sp->super_of, list };
     }
+    if (c->part_levels) {
+        const sw_part_levels *pl = c->part_levels;
+        *parts_rec = (sw_pack_part_levels){ pl->level_count, pl->vertex_count, pl->index_count,
+                                            pl->part_count };
+        src[n++] = (section_source){ SW_SECTION_PART_LEVELS, parts_rec, sizeof *parts_rec };
+        src[n++] = (section_source){ SW_SECTION_PART_LEVEL_RECORDS, pl->levels,
+                                     (uint64_t)pl->level_count * sizeof(sw_part_level) };
+        src[n++] = (section_source){ SW_SECTION_PART_LEVEL_PARTS, pl->part_levels,
+                                     ((uint64_t)pl->part_count + 1) * sizeof(uint32_t) };
+        src[n++] = (section_source){ SW_SECTION_PART_LEVEL_VERTICES, pl->vertices,
+                                     (uint64_t)pl->vertex_count * sizeof(sw_level_vertex) };
+        src[n++] = (section_source){ SW_SECTION_PART_LEVEL_INDICES, pl->indices,
+                                     (uint64_t)pl->index_count * sizeof(uint16_t) };
+    }
     return n;
 }
 
@@ -201,7 +217,8 @@ sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *ou
     sw_pack_section table[MAX_SECTIONS];
     sw_pack_seam seam_rec;
     sw_pack_levels levels_rec;
-    int n = list_sections(c, &seam_rec, &levels_rec, src);
+    sw_pack_part_levels parts_rec;
+    int n = list_sections(c, &seam_rec, &levels_rec, &parts_rec, src);
     uint64_t total = 0;
     sw_status s = lay_out(src, n, table, &total, err);
     if (s != SW_OK)

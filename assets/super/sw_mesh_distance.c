@@ -1,0 +1,229 @@
+/* Sampled one-sided distance between two meshes (sw_mesh_distance.h). */
+#include "sw_mesh_distance.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct sw_mesh_grid {
+    const sw_mesh_view *mesh;
+    double lo[3], cell;
+    int dim[3];
+    uint32_t *first;    /* cells + 1: cell c's triangles are tri[first[c] .. first[c + 1]) */
+    uint32_t *tri;      /* triangle numbers */
+};
+
+static void triangle_box(const sw_mesh_view *m, uint32_t t, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++)
+        lo[k] = INFINITY, hi[k] = -INFINITY;
+    for (int c = 0; c < 3; c++) {
+        const float *p = m->positions + 3 * (size_t)m->indices[3 * (size_t)t + c];
+        for (int k = 0; k < 3; k++)
+            lo[k] = fmin(lo[k], p[k]), hi[k] = fmax(hi[k], p[k]);
+    }
+}
+
+static int cell_of(const sw_mesh_grid *g, double x, int k)
+{
+    int c = (int)floor((x - g->lo[k]) / g->cell);
+    return c < 0 ? 0 : c >= g->dim[k] ? g->dim[k] - 1 : c;
+}
+
+static size_t cell_index(const sw_mesh_grid *g, int x, int y, int z)
+{
+    return ((size_t)z * (size_t)g->dim[1] + (size_t)y) * (size_t)g->dim[0] + (size_t)x;
+}
+
+/* Calls back for every cell triangle t's box covers: counting (pass 0) or
+ * filling (pass 1). */
+static void bin(sw_mesh_grid *g, uint32_t t, int pass, uint32_t *fill)
+{
+    double lo[3], hi[3];
+    triangle_box(g->mesh, t, lo, hi);
+    int a[3], b[3];
+    for (int k = 0; k < 3; k++)
+        a[k] = cell_of(g, lo[k], k), b[k] = cell_of(g, hi[k], k);
+    for (int z = a[2]; z <= b[2]; z++)
+        for (int y = a[1]; y <= b[1]; y++)
+            for (int x = a[0]; x <= b[0]; x++) {
+                size_t c = cell_index(g, x, y, z);
+                if (pass == 0)
+                    g->first[c + 1]++;
+                else
+                    g->tri[fill[c]++] = t;
+            }
+}
+
+sw_mesh_grid *sw_mesh_grid_make(const sw_mesh_view *b)
+{
+    uint32_t n = b->index_count / 3;
+    if (n == 0)
+        return NULL;
+    sw_mesh_grid *g = calloc(1, sizeof *g);
+    if (!g)
+        return NULL;
+    g->mesh = b;
+    double hi[3] = { -INFINITY, -INFINITY, -INFINITY }, extent = 0;
+    for (int k = 0; k < 3; k++)
+        g->lo[k] = INFINITY;
+    for (uint32_t t = 0; t < n; t++) {
+        double tl[3], th[3];
+        triangle_box(b, t, tl, th);
+        for (int k = 0; k < 3; k++)
+            g->lo[k] = fmin(g->lo[k], tl[k]), hi[k] = fmax(hi[k], th[k]);
+    }
+    for (int k = 0; k < 3; k++)
+        extent = fmax(extent, hi[k] - g->lo[k]);
+    /* About a triangle a cell over the mesh's box, at most 96 a side. */
+    double volume = 1;
+    for (int k = 0; k < 3; k++)
+        volume *= fmax(hi[k] - g->lo[k], extent * 1e-3) + 1e-30;
+    g->cell = fmax(cbrt(volume / n), extent / 96.0) + 1e-30;
+    size_t cells = 1;
+    for (int k = 0; k < 3; k++) {
+        g->dim[k] = (int)fmin(96, floor((hi[k] - g->lo[k]) / g->cell) + 1);
+        cells *= (size_t)g->dim[k];
+    }
+    g->first = calloc(cells + 1, sizeof *g->first);
+    uint32_t *fill = malloc((cells + 1) * sizeof *fill);
+    if (!g->first || !fill) {
+        free(fill);
+        sw_mesh_grid_free(g);
+        return NULL;
+    }
+    for (uint32_t t = 0; t < n; t++)
+        bin(g, t, 0, NULL);
+    for (size_t c = 0; c < cells; c++)
+        g->first[c + 1] += g->first[c];
+    g->tri = malloc(((size_t)g->first[cells] + 1) * sizeof *g->tri);
+    if (!g->tri) {
+        free(fill);
+        sw_mesh_grid_free(g);
+        return NULL;
+    }
+    memcpy(fill, g->first, cells * sizeof *fill);
+    for (uint32_t t = 0; t < n; t++)
+        bin(g, t, 1, fill);
+    free(fill);
+    return g;
+}
+
+void sw_mesh_grid_free(sw_mesh_grid *g)
+{
+    if (!g)
+        return;
+    free(g->first);
+    free(g->tri);
+    free(g);
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* Squared distance from p to triangle abc (the closest point by regions,
+ * as in Ericson, Real-Time Collision Detection, 5.1.5). */
+static double triangle_distance2(const double p[3], const double a[3], const double b[3],
+                                 const double c[3])
+{
+    double ab[3], ac[3], ap[3], q[3];
+    for (int k = 0; k < 3; k++)
+        ab[k] = b[k] - a[k], ac[k] = c[k] - a[k], ap[k] = p[k] - a[k];
+    double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
+    double bp[3], cp[3];
+    for (int k = 0; k < 3; k++)
+        bp[k] = p[k] - b[k], cp[k] = p[k] - c[k];
+    double d3 = dot3(ab, bp), d4 = dot3(ac, bp), d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+    double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+    if (d1 <= 0 && d2 <= 0)
+        memcpy(q, a, sizeof q);
+    else if (d3 >= 0 && d4 <= d3)
+        memcpy(q, b, sizeof q);
+    else if (d6 >= 0 && d5 <= d6)
+        memcpy(q, c, sizeof q);
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        double v = d1 / (d1 - d3);
+        for (int k = 0; k < 3; k++)
+            q[k] = a[k] + v * ab[k];
+    } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        double w = d2 / (d2 - d6);
+        for (int k = 0; k < 3; k++)
+            q[k] = a[k] + w * ac[k];
+    } else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int k = 0; k < 3; k++)
+            q[k] = b[k] + w * (c[k] - b[k]);
+    } else {
+        double den = va + vb + vc, v = den != 0 ? vb / den : 0, w = den != 0 ? vc / den : 0;
+        for (int k = 0; k < 3; k++)
+            q[k] = a[k] + ab[k] * v + ac[k] * w;
+    }
+    double d[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
+    return dot3(d, d);
+}
+
+static double cells_nearest2(const sw_mesh_grid *g, const double p[3], const int a[3],
+                             const int b[3], double best)
+{
+    const sw_mesh_view *m = g->mesh;
+    for (int z = a[2]; z <= b[2]; z++)
+        for (int y = a[1]; y <= b[1]; y++)
+            for (int x = a[0]; x <= b[0]; x++) {
+                size_t c = cell_index(g, x, y, z);
+                for (uint32_t i = g->first[c]; i < g->first[c + 1]; i++) {
+                    const uint32_t *t = m->indices + 3 * (size_t)g->tri[i];
+                    double v[3][3];
+                    for (int j = 0; j < 3; j++)
+                        for (int k = 0; k < 3; k++)
+                            v[j][k] = m->positions[3 * (size_t)t[j] + k];
+                    best = fmin(best, triangle_distance2(p, v[0], v[1], v[2]));
+                }
+            }
+    return best;
+}
+
+double sw_mesh_grid_distance(const sw_mesh_grid *g, const double p[3])
+{
+    /* Every triangle within r of p is binned in a cell the box p +- r
+     * covers: widen r until the nearest found is within it, or every cell
+     * has been looked at. */
+    double best = INFINITY;
+    for (double r = 0.5 * g->cell;; r *= 2) {
+        int a[3], b[3], whole = 1;
+        for (int k = 0; k < 3; k++) {
+            a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
+            whole &= a[k] == 0 && b[k] == g->dim[k] - 1;
+        }
+        best = cells_nearest2(g, p, a, b, best);
+        if (best <= r * r || whole)
+            return sqrt(best);
+    }
+}
+
+double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing)
+{
+    double worst = 0;
+    for (uint32_t t = 0; t + 2 < a->index_count; t += 3) {
+        double v[3][3], longest = 0;
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++)
+                v[j][k] = a->positions[3 * (size_t)a->indices[t + j] + k];
+        for (int j = 0; j < 3; j++) {
+            double d[3] = { v[j][0] - v[(j + 1) % 3][0], v[j][1] - v[(j + 1) % 3][1],
+                            v[j][2] - v[(j + 1) % 3][2] };
+            longest = fmax(longest, sqrt(dot3(d, d)));
+        }
+        int n = spacing > 0 ? (int)fmin(8, ceil(longest / spacing)) : 1;
+        n = n < 1 ? 1 : n;
+        for (int i = 0; i <= n; i++)
+            for (int j = 0; i + j <= n; j++) {
+                double w0 = (double)i / n, w1 = (double)j / n, w2 = 1 - w0 - w1, p[3];
+                for (int k = 0; k < 3; k++)
+                    p[k] = w0 * v[0][k] + w1 * v[1][k] + w2 * v[2][k];
+                worst = fmax(worst, sw_mesh_grid_distance(g, p));
+            }
+    }
+    return worst;
+}

@@ -1,0 +1,34 @@
+/* How far one triangle mesh lies from another: the largest distance from
+ * points sampled on mesh A's triangles to the nearest point of mesh B (a
+ * one-sided Hausdorff distance, sampled). Used to measure a simplified
+ * level against the mesh it was simplified from, both ways, apart from
+ * the simplifier's own estimate. Host only: allocates. */
+#ifndef SW_MESH_DISTANCE_H
+#define SW_MESH_DISTANCE_H
+
+#include <stdint.h>
+
+#include "sw_error.h"
+
+typedef struct sw_mesh_view {
+    const float *positions;   /* 3 per vertex */
+    const uint32_t *indices;  /* triangles */
+    uint32_t vertex_count, index_count;
+} sw_mesh_view;
+
+typedef struct sw_mesh_grid sw_mesh_grid;   /* B's triangles, binned in a uniform grid */
+
+/* The grid over b's triangles (b must outlive it); NULL when out of memory
+ * or b has no triangle. */
+sw_mesh_grid *sw_mesh_grid_make(const sw_mesh_view *b);
+void sw_mesh_grid_free(sw_mesh_grid *g);
+
+/* The distance from point p to the nearest point of the grid's mesh. */
+double sw_mesh_grid_distance(const sw_mesh_grid *g, const double p[3]);
+
+/* The largest distance from a's sample points to g's mesh: each triangle
+ * of a sampled on a barycentric grid fine enough that neighbouring samples
+ * are at most `spacing` apart (at most 8 a side), its corners included. */
+double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing);
+
+#endif

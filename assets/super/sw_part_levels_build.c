@@ -1,0 +1,448 @@
+/* Part levels: each part's source welded, simplified toward rising
+ * bounds, measured both ways, its normals chosen per corner
+ * (sw_part_levels_build.h). */
+#include "sw_part_levels_build.h"
+
+#include <math.h>
+#include <meshoptimizer.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "sw_grow.h"
+#include "sw_mesh_distance.h"
+#include "sw_part_source.h"
+
+/* One part's source, welded (reused from part to part). */
+typedef struct part_mesh {
+    float *pos, *nrm;             /* the part's source vertices */
+    uint32_t *weld;               /* source vertex -> welded vertex */
+    float *wpos;                  /* welded positions */
+    uint32_t *idx;                /* welded triangles, none of no area */
+    uint32_t *wedge_first, *wedge;/* welded vertex -> its source vertices */
+    uint32_t *dest;               /* simplified triangles */
+    uint64_t *keys;               /* output vertex hash: (welded << 32 | source) + 1 */
+    uint32_t *key_value;
+    size_t cap_v, cap_i, cap_w, cap_d, cap_k, cap_kv, cap_n, cap_p, cap_wf, cap_wd, cap_x;
+    uint32_t count, wcount, icount;
+    double error;                 /* the source's measured error */
+} part_mesh;
+
+typedef struct out_arrays {
+    sw_part_level *levels;
+    sw_level_vertex *vertices;
+    uint16_t *indices;
+    size_t cap_l, cap_v, cap_i;
+    uint32_t level_count, vertex_count, index_count;
+} out_arrays;
+
+static uint64_t hash64(uint64_t x)
+{
+    x ^= x >> 33;
+    x *= 0xff51afd7ed558ccdull;
+    x ^= x >> 33;
+    x *= 0xc4ceb9fe1a85ec53ull;
+    return x ^ (x >> 33);
+}
+
+static size_t pow2_at_least(size_t n)
+{
+    size_t p = 16;
+    while (p < n)
+        p *= 2;
+    return p;
+}
+
+/* The part's source vertices and triangles gathered; 0 when out of memory,
+ * -1 when a surface of it has no mesh in the source. */
+static int gather_part(part_mesh *m, const sw_pack *pack, const sw_levels *levels,
+                       const sw_part_source *src, uint32_t part)
+{
+    m->count = 0, m->icount = 0, m->error = 0;
+    for (uint32_t s = 0; s < src->surface_count; s++) {
+        if (pack->surfaces[s].part != part)
+            continue;
+        if (levels->surface_levels[s] == levels->surface_levels[s + 1])
+            return -1;
+        if (isnan(src->error[s]))
+            continue;   /* its outer loop vanished at the front: the walk shows none */
+        m->error = fmax(m->error, src->error[s]);
+        uint32_t v0 = src->surface_vertices[s], nv = src->surface_vertices[s + 1] - v0;
+        uint32_t i0 = src->surface_indices[s], ni = src->surface_indices[s + 1] - i0;
+        float *p = sw_grow(m->pos, &m->cap_p, 3 * ((size_t)m->count + nv), sizeof(float));
+        if (p)
+            m->pos = p;
+        float *n = sw_grow(m->nrm, &m->cap_n, 3 * ((size_t)m->count + nv), sizeof(float));
+        if (n)
+            m->nrm = n;
+        uint32_t *ix = sw_grow(m->idx, &m->cap_i, (size_t)m->icount + ni, sizeof *ix);
+        if (ix)
+            m->idx = ix;
+        if (!p || !n || !ix)
+            return 0;
+        memcpy(m->pos + 3 * (size_t)m->count, src->positions + 3 * (size_t)v0,
+               3 * sizeof(float) * nv);
+        memcpy(m->nrm + 3 * (size_t)m->count, src->normals + 3 * (size_t)v0,
+               3 * sizeof(float) * nv);
+        for (uint32_t i = 0; i < ni; i++)
+            m->idx[m->icount + i] = src->indices[i0 + i] - v0 + m->count;
+        m->count += nv, m->icount += ni;
+    }
+    return 1;
+}
+
+/* Vertices at the very same position become one; triangles that then
+ * repeat a vertex are dropped. Each welded vertex keeps the list of the
+ * source vertices it stands for. 0 when out of memory. */
+static int weld(part_mesh *m)
+{
+    size_t cap = pow2_at_least(2 * (size_t)m->count);
+    uint32_t *table = malloc(cap * sizeof *table);
+    m->weld = sw_grow(m->weld, &m->cap_w, m->count + 1, sizeof *m->weld);
+    m->wpos = sw_grow(m->wpos, &m->cap_x, 3 * ((size_t)m->count + 1), sizeof *m->wpos);
+    m->wedge_first = sw_grow(m->wedge_first, &m->cap_wf, m->count + 2, sizeof *m->wedge_first);
+    m->wedge = sw_grow(m->wedge, &m->cap_wd, m->count + 1, sizeof *m->wedge);
+    if (!table || !m->weld || !m->wpos || !m->wedge_first || !m->wedge) {
+        free(table);
+        return 0;
+    }
+    memset(table, 0xff, cap * sizeof *table);
+    m->wcount = 0;
+    for (uint32_t v = 0; v < m->count; v++) {
+        uint32_t bits[3];
+        memcpy(bits, m->pos + 3 * (size_t)v, sizeof bits);
+        size_t h = hash64(((uint64_t)bits[0] << 32 | bits[1]) ^ hash64(bits[2])) & (cap - 1);
+        while (table[h] != UINT32_MAX &&
+               memcmp(m->wpos + 3 * (size_t)table[h], bits, sizeof bits))
+            h = (h + 1) & (cap - 1);
+        if (table[h] == UINT32_MAX) {
+            table[h] = m->wcount;
+            memcpy(m->wpos + 3 * (size_t)m->wcount++, bits, sizeof bits);
+        }
+        m->weld[v] = table[h];
+    }
+    free(table);
+    memset(m->wedge_first, 0, ((size_t)m->wcount + 2) * sizeof *m->wedge_first);
+    for (uint32_t v = 0; v < m->count; v++)
+        m->wedge_first[m->weld[v] + 2]++;
+    for (uint32_t w = 0; w < m->wcount; w++)
+        m->wedge_first[w + 2] += m->wedge_first[w + 1];
+    for (uint32_t v = 0; v < m->count; v++)
+        m->wedge[m->wedge_first[m->weld[v] + 1]++] = v;
+    uint32_t kept = 0;
+    for (uint32_t t = 0; t + 2 < m->icount; t += 3) {
+        uint32_t a = m->weld[m->idx[t]], b = m->weld[m->idx[t + 1]], c = m->weld[m->idx[t + 2]];
+        if (a == b || b == c || a == c)
+            continue;
+        m->idx[kept] = a, m->idx[kept + 1] = b, m->idx[kept + 2] = c;
+        kept += 3;
+    }
+    m->icount = kept;
+    return 1;
+}
+
+/* Edge (a, b) of triangle t's corners k, k + 1 as a key, lowest first. */
+static uint64_t edge_key(uint32_t a, uint32_t b)
+{
+    return a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
+}
+
+/* The triangles turned so that each edge two of them share is run once each
+ * way, spreading from triangle to triangle over such edges. The surfaces'
+ * normals do not decide it: a part's surfaces may face opposite ways (the
+ * renderer lights both sides), and meshoptimizer takes an edge not run both
+ * ways for a border it must keep. 0 when out of memory. */
+static int orient(part_mesh *m)
+{
+    uint32_t tris = m->icount / 3;
+    size_t cap = pow2_at_least(4 * (size_t)m->icount);
+    uint64_t *keys = calloc(cap, sizeof *keys);
+    uint32_t *first = malloc(cap * sizeof *first), *second = malloc(cap * sizeof *second);
+    uint32_t *queue = malloc(((size_t)tris + 1) * sizeof *queue);
+    uint8_t *done = calloc((size_t)tris + 1, 1);
+    if (!keys || !first || !second || !queue || !done) {
+        free(keys), free(first), free(second), free(queue), free(done);
+        return 0;
+    }
+    /* Each edge's first two triangles (a third or more: not spread over). */
+    for (uint32_t t = 0; t < tris; t++)
+        for (int k = 0; k < 3; k++) {
+            uint64_t key = edge_key(m->idx[3 * t + k], m->idx[3 * t + (k + 1) % 3]) + 1;
+            size_t h = hash64(key) & (cap - 1);
+            while (keys[h] && keys[h] != key)
+                h = (h + 1) & (cap - 1);
+            if (!keys[h])
+                keys[h] = key, first[h] = t, second[h] = UINT32_MAX;
+            else
+                second[h] = second[h] == UINT32_MAX && first[h] != t ? t : UINT32_MAX - 1;
+        }
+    for (uint32_t seed = 0; seed < tris; seed++) {
+        if (done[seed])
+            continue;
+        uint32_t head = 0, tail = 0;
+        done[seed] = 1, queue[tail++] = seed;
+        while (head < tail) {
+            uint32_t t = queue[head++];
+            for (int k = 0; k < 3; k++) {
+                uint32_t a = m->idx[3 * t + k], b = m->idx[3 * t + (k + 1) % 3];
+                uint64_t key = edge_key(a, b) + 1;
+                size_t h = hash64(key) & (cap - 1);
+                while (keys[h] != key)
+                    h = (h + 1) & (cap - 1);
+                if (second[h] >= UINT32_MAX - 1)
+                    continue;
+                uint32_t u = first[h] == t ? second[h] : first[h];
+                if (done[u])
+                    continue;
+                uint32_t *c = m->idx + 3 * (size_t)u;
+                int same = (c[0] == a && c[1] == b) || (c[1] == a && c[2] == b) ||
+                           (c[2] == a && c[0] == b);
+                if (same) {
+                    uint32_t x = c[1];
+                    c[1] = c[2], c[2] = x;
+                }
+                done[u] = 1, queue[tail++] = u;
+            }
+        }
+    }
+    free(keys), free(first), free(second), free(queue), free(done);
+    return 1;
+}
+
+static double part_size(const part_mesh *m)
+{
+    double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+    for (uint32_t w = 0; w < m->wcount; w++)
+        for (int k = 0; k < 3; k++)
+            lo[k] = fmin(lo[k], m->wpos[3 * (size_t)w + k]),
+            hi[k] = fmax(hi[k], m->wpos[3 * (size_t)w + k]);
+    double d = 0;
+    for (int k = 0; k < 3; k++)
+        d += hi[k] > lo[k] ? (hi[k] - lo[k]) * (hi[k] - lo[k]) : 0;
+    return sqrt(d);
+}
+
+static int8_t snorm8(float x)
+{
+    float c = x < -1.0f ? -1.0f : x > 1.0f ? 1.0f : x;
+    return (int8_t)lrintf(c * 127.0f);
+}
+
+/* Of the normals the surfaces meeting at welded vertex w have there, the
+ * one closest to the line of n, turned to n's side (the renderer takes a
+ * normal to face the way its triangle winds, and lights both sides). */
+static void closest_normal(const part_mesh *m, uint32_t w, const double n[3], int8_t q[3])
+{
+    double best = -1, sign = 1;
+    const float *pick = m->nrm + 3 * (size_t)m->wedge[m->wedge_first[w]];
+    for (uint32_t i = m->wedge_first[w]; i < m->wedge_first[w + 1]; i++) {
+        const float *nv = m->nrm + 3 * (size_t)m->wedge[i];
+        double d = n[0] * nv[0] + n[1] * nv[1] + n[2] * nv[2];
+        if (fabs(d) > best)
+            best = fabs(d), pick = nv, sign = d < 0 ? -1 : 1;
+    }
+    for (int k = 0; k < 3; k++)
+        q[k] = snorm8((float)(sign * pick[k]));
+}
+
+/* Output vertex for welded w with normal q (packed snorm8 x, y, z): the one
+ * made already, else a new one. UINT32_MAX past one draw's vertices. */
+static uint32_t output_vertex(part_mesh *m, out_arrays *o, uint32_t first, size_t cap,
+                              uint32_t w, const int8_t q[3])
+{
+    uint64_t key = ((uint64_t)w << 24 | (uint64_t)(uint8_t)q[0] << 16 |
+                    (uint64_t)(uint8_t)q[1] << 8 | (uint8_t)q[2]) + 1;
+    size_t h = hash64(key) & (cap - 1);
+    while (m->keys[h] && m->keys[h] != key)
+        h = (h + 1) & (cap - 1);
+    if (m->keys[h])
+        return m->key_value[h];
+    uint32_t local = o->vertex_count - first;
+    if (local >= 65536)
+        return UINT32_MAX;
+    m->keys[h] = key, m->key_value[h] = local;
+    sw_level_vertex *v = &o->vertices[o->vertex_count++];
+    memcpy(v->p, m->wpos + 3 * (size_t)w, sizeof v->p);
+    memcpy(v->normal, q, 3);
+    v->normal[3] = 0;
+    return local;
+}
+
+/* The simplified triangles dest[0 .. n) as a level's vertices and indices
+ * appended to o; 0 when out of memory, -1 when over one draw. */
+static int emit(part_mesh *m, out_arrays *o, uint32_t n, uint32_t *first_vertex)
+{
+    size_t cap = pow2_at_least(2 * (size_t)n);
+    m->keys = sw_grow(m->keys, &m->cap_k, cap, sizeof *m->keys);
+    m->key_value = sw_grow(m->key_value, &m->cap_kv, cap, sizeof *m->key_value);
+    sw_level_vertex *vs = sw_grow(o->vertices, &o->cap_v, (size_t)o->vertex_count + n,
+                                  sizeof *vs);
+    if (vs)
+        o->vertices = vs;
+    uint16_t *is = sw_grow(o->indices, &o->cap_i, (size_t)o->index_count + n, sizeof *is);
+    if (is)
+        o->indices = is;
+    if (!m->keys || !m->key_value || !vs || !is)
+        return 0;
+    memset(m->keys, 0, cap * sizeof *m->keys);
+    *first_vertex = o->vertex_count;
+    for (uint32_t t = 0; t + 2 < n; t += 3) {
+        const float *a = m->wpos + 3 * (size_t)m->dest[t], *b = m->wpos + 3 * (size_t)m->dest[t + 1],
+                    *c = m->wpos + 3 * (size_t)m->dest[t + 2];
+        double e1[3], e2[3], fn[3];
+        for (int k = 0; k < 3; k++)
+            e1[k] = (double)b[k] - a[k], e2[k] = (double)c[k] - a[k];
+        fn[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        fn[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        fn[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        for (int k = 0; k < 3; k++) {
+            int8_t q[3];
+            closest_normal(m, m->dest[t + k], fn, q);
+            uint32_t v = output_vertex(m, o, *first_vertex, cap, m->dest[t + k], q);
+            if (v == UINT32_MAX)
+                return -1;
+            o->indices[o->index_count + t + k] = (uint16_t)v;
+        }
+    }
+    return 1;
+}
+
+/* Part `part`'s levels toward rising bounds, kept as the header says. */
+static sw_status build_part(part_mesh *m, out_arrays *o, uint32_t part,
+                            const sw_part_levels_options *opt, sw_part_levels_report *r,
+                            sw_error *err)
+{
+    m->dest = sw_grow(m->dest, &m->cap_d, m->icount + 1, sizeof *m->dest);
+    if (!m->dest)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    double size = part_size(m), scale = meshopt_simplifyScale(m->wpos, m->wcount, 12);
+    sw_mesh_view source = { m->wpos, m->idx, m->wcount, m->icount };
+    sw_mesh_grid *source_grid = sw_mesh_grid_make(&source);
+    if (!source_grid || scale <= 0)
+        return source_grid ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: grid");
+    float last_error = 0;
+    uint32_t last_indices = m->icount, kept = 0;
+    for (uint32_t k = 0; k < opt->count; k++) {
+        double bound = size * opt->finest * pow(opt->step, k);
+        if (bound <= 2 * m->error)
+            continue;   /* the source is not that much closer to the surfaces */
+        size_t n = meshopt_simplify(m->dest, m->idx, m->icount, m->wpos, m->wcount,
+                                    3 * sizeof(float), 0, (float)((bound - m->error) / scale),
+                                    0, NULL);
+        if (n == 0 || n > 0.8 * last_indices) {
+            r->not_smaller++;
+            continue;
+        }
+        sw_mesh_view lod = { m->wpos, m->dest, m->wcount, (uint32_t)n };
+        sw_mesh_grid *lod_grid = sw_mesh_grid_make(&lod);
+        if (!lod_grid) {
+            sw_mesh_grid_free(source_grid);
+            return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: grid");
+        }
+        double spacing = 2 * bound;
+        double d = fmax(sw_mesh_distance(&lod, source_grid, spacing),
+                        sw_mesh_distance(&source, lod_grid, spacing));
+        sw_mesh_grid_free(lod_grid);
+        float error = (float)(d + m->error);
+        if (!(error > last_error)) {
+            r->not_smaller++;
+            continue;
+        }
+        uint32_t first_vertex = 0, first_index = o->index_count;
+        int made = emit(m, o, (uint32_t)n, &first_vertex);
+        sw_part_level *l = sw_grow(o->levels, &o->cap_l, (size_t)o->level_count + 1, sizeof *l);
+        if (made == 0 || !l) {
+            sw_mesh_grid_free(source_grid);
+            return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+        }
+        o->levels = l;
+        if (made < 0) {
+            o->vertex_count = first_vertex;
+            r->too_large++;
+            continue;
+        }
+        o->index_count += (uint32_t)n;
+        o->levels[o->level_count++] = (sw_part_level){ part, error, first_vertex,
+                                                       o->vertex_count - first_vertex,
+                                                       first_index, (uint32_t)n, { 0, 0 } };
+        r->triangles[kept++] += n / 3;
+        r->worst_over_bound = fmax(r->worst_over_bound, error / bound);
+        last_error = error, last_indices = (uint32_t)n;
+    }
+    r->source_triangles += kept ? m->icount / 3 : 0;
+    r->with_levels += kept > 0;
+    r->levels += kept;
+    sw_mesh_grid_free(source_grid);
+    return SW_OK;
+}
+
+static void free_part_mesh(part_mesh *m)
+{
+    void *blocks[] = { m->pos, m->nrm, m->weld, m->wpos, m->idx, m->wedge_first, m->wedge,
+                       m->dest, m->keys, m->key_value };
+    for (size_t i = 0; i < sizeof blocks / sizeof *blocks; i++)
+        free(blocks[i]);
+}
+
+static sw_status build_all(const sw_pack *pack, const sw_levels *levels,
+                           const sw_part_source *src, const sw_part_levels_options *opt,
+                           out_arrays *o, uint32_t *part_levels, sw_part_levels_report *r,
+                           sw_error *err)
+{
+    part_mesh m = { 0 };
+    sw_status st = SW_OK;
+    for (uint32_t p = 0; st == SW_OK && p < pack->meta->part_count; p++) {
+        int got = gather_part(&m, pack, levels, src, p);
+        r->incomplete += got < 0;
+        if (got == 0 || (got > 0 && (!weld(&m) || !orient(&m))))
+            st = sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+        else if (got > 0 && m.icount > 0)
+            st = build_part(&m, o, p, opt, r, err);
+        part_levels[p + 1] = o->level_count;
+    }
+    free_part_mesh(&m);
+    return st;
+}
+
+sw_status sw_part_levels_build(const sw_pack *pack, const sw_levels *levels,
+                               const sw_part_levels_options *opt, sw_part_levels_built *out,
+                               sw_part_levels_report *report, sw_error *err)
+{
+    memset(out, 0, sizeof *out);
+    memset(report, 0, sizeof *report);
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    sw_part_levels_options o = opt ? *opt : (sw_part_levels_options){ 0 };
+    o.finest = o.finest > 0 ? o.finest : 1.0 / 512;
+    o.step = o.step > 1 ? o.step : 4.0;
+    o.count = o.count ? (o.count < SW_PART_LEVELS_MAX ? o.count : SW_PART_LEVELS_MAX) : 4;
+    report->parts = pack->meta->part_count;
+    sw_part_source src;
+    sw_status st = sw_part_source_build(pack, levels, &src, err);
+    if (st != SW_OK)
+        return st;
+    out_arrays arrays = { 0 };
+    out->part_levels = calloc((size_t)pack->meta->part_count + 1, sizeof *out->part_levels);
+    st = out->part_levels ? build_all(pack, levels, &src, &o, &arrays, out->part_levels,
+                                      report, err)
+                          : sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    sw_part_source_free(&src);
+    out->levels = arrays.levels, out->vertices = arrays.vertices, out->indices = arrays.indices;
+    out->view = (sw_part_levels){ out->levels, out->part_levels, out->vertices, out->indices,
+                                  arrays.level_count, arrays.vertex_count, arrays.index_count,
+                                  pack->meta->part_count };
+    if (st != SW_OK)
+        sw_part_levels_built_free(out);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    report->seconds = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    return st;
+}
+
+void sw_part_levels_built_free(sw_part_levels_built *b)
+{
+    free(b->levels);
+    free(b->part_levels);
+    free(b->vertices);
+    free(b->indices);
+    memset(b, 0, sizeof *b);
+}

@@ -1,0 +1,69 @@
+/* The part levels of a pack (core/sw_part_levels.h), made on the host from
+ * its surfaces' finest static levels joined at one front
+ * (sw_part_source.h).
+ *
+ * Each part's source is welded by position (the surfaces meet on shared
+ * polyline vertices) and simplified by meshoptimizer (meshopt_simplify,
+ * across the surfaces' borders; the part's own open borders stay borders)
+ * toward bounds of finest * step^k of the part's size. Each result is
+ * measured, not taken from the simplifier's estimate: the sampled distance
+ * both ways between it and the source (sw_mesh_distance.h), plus the
+ * source's own measured error. A level is kept when its error rises over
+ * the one before and it has fewer triangles by at least a fifth, and it
+ * fits one draw (65536 vertices).
+ *
+ * Normals: a welded vertex stands for one vertex of each surface that met
+ * there, with that surface's normal; each corner of a simplified triangle
+ * takes the one closest to the triangle's own normal, so a crease between
+ * two surfaces stays a crease.
+ *
+ * A part gets none when one of its surfaces has no finest level (that
+ * surface would be missing from it); counted. Host only: allocates. */
+#ifndef SW_PART_LEVELS_BUILD_H
+#define SW_PART_LEVELS_BUILD_H
+
+#include <stdint.h>
+
+#include "sw_error.h"
+#include "sw_levels.h"
+#include "sw_pack.h"
+#include "sw_part_levels.h"
+
+typedef struct sw_part_levels_options {
+    double finest;      /* the finest level's bound over the part's size (0: 1/512) */
+    double step;        /* each level's bound over the one before (0: 4) */
+    uint32_t count;     /* levels tried per part (0: 4; at most SW_PART_LEVELS_MAX) */
+} sw_part_levels_options;
+
+typedef struct sw_part_levels_report {
+    uint32_t parts;               /* of the pack */
+    uint32_t with_levels;         /* parts with at least one level */
+    uint32_t levels;              /* kept */
+    uint32_t incomplete;          /* parts with a surface without a finest level */
+    uint32_t not_smaller;         /* tried levels left out: not a fifth fewer triangles, or
+                                     error not rising */
+    uint32_t too_large;           /* tried levels over 65536 vertices */
+    uint64_t source_triangles;    /* of the parts with levels */
+    uint64_t triangles[SW_PART_LEVELS_MAX];  /* kept, by rank (finest 0) */
+    double worst_over_bound;      /* the largest measured error over its target bound */
+    double seconds;
+} sw_part_levels_report;
+
+typedef struct sw_part_levels_built {
+    sw_part_levels view;
+    sw_part_level *levels;
+    uint32_t *part_levels;
+    sw_level_vertex *vertices;
+    uint16_t *indices;
+} sw_part_levels_built;
+
+/* The part levels of pack from its surface levels (which must be the
+ * pack's: built from it). opt may be NULL. SW_ERR_NO_MEMORY; on error *out
+ * is empty. */
+sw_status sw_part_levels_build(const sw_pack *pack, const sw_levels *levels,
+                               const sw_part_levels_options *opt, sw_part_levels_built *out,
+                               sw_part_levels_report *report, sw_error *err);
+
+void sw_part_levels_built_free(sw_part_levels_built *b);
+
+#endif

@@ -1,0 +1,174 @@
+/* The part levels' sections (PART_LEVELS, PART_LEVEL_RECORDS,
+ * PART_LEVEL_PARTS, PART_LEVEL_VERTICES, PART_LEVEL_INDICES;
+ * core/sw_part_levels.h), found, mapped and checked once at load, apart
+ * from sw_pack_read.c as the super-surfaces are. Rules: assets/PACK_FORMAT.md,
+ * "Part levels". */
+#include <math.h>
+#include <stddef.h>
+
+#include "sw_pack_validate.h"
+
+_Static_assert(sizeof(sw_part_level) == 32, "sw_part_level");
+_Static_assert(sizeof(sw_pack_part_levels) == 16, "sw_pack_part_levels");
+_Static_assert(sizeof(sw_level_vertex) == 16, "sw_level_vertex");
+
+enum { GROUP = 5 };
+static const uint32_t group_types[GROUP] = {
+    SW_SECTION_PART_LEVELS, SW_SECTION_PART_LEVEL_RECORDS, SW_SECTION_PART_LEVEL_PARTS,
+    SW_SECTION_PART_LEVEL_VERTICES, SW_SECTION_PART_LEVEL_INDICES };
+static const uint64_t group_records[GROUP] = { sizeof(sw_pack_part_levels), sizeof(sw_part_level),
+                                               sizeof(uint32_t), sizeof(sw_level_vertex),
+                                               sizeof(uint16_t) };
+
+/* index[k] = the table entry of group_types[k], or -1; each at most once and
+ * a whole number of records. */
+static sw_status find_group(const sw_pack *pack, int32_t index[GROUP], sw_error *err)
+{
+    for (int k = 0; k < GROUP; k++)
+        index[k] = -1;
+    for (uint32_t i = 0; i < pack->header->section_count; i++) {
+        const sw_pack_section *s = &pack->sections[i];
+        for (int k = 0; k < GROUP; k++) {
+            if (s->type != group_types[k])
+                continue;
+            const char *name = sw_section_type_name(s->type);
+            if (index[k] >= 0)
+                return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): a second %s section "
+                                    "(the first is section %d)", (unsigned)i, name, name,
+                                    (int)index[k]);
+            if (s->size % group_records[k] != 0 || s->size / group_records[k] > UINT32_MAX)
+                return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): %llu bytes, expected "
+                                    "a multiple of %llu", (unsigned)i, name,
+                                    (unsigned long long)s->size,
+                                    (unsigned long long)group_records[k]);
+            index[k] = (int32_t)i;
+        }
+    }
+    return SW_OK;
+}
+
+/* All five or none; the counts record's counts are the sections' sizes. */
+static sw_status check_group(const sw_pack *pack, const int32_t index[GROUP], sw_error *err)
+{
+    int present = 0;
+    for (int k = 0; k < GROUP; k++)
+        present += index[k] >= 0;
+    if (present == 0)
+        return SW_OK;
+    for (int k = 0; k < GROUP; k++)
+        if (index[k] < 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "section table: no %s section (the part "
+                                "levels' five sections appear together)",
+                                sw_section_type_name(group_types[k]));
+    const sw_pack_section *sec = pack->sections;
+    if (sec[index[0]].size != sizeof(sw_pack_part_levels))
+        return sw_error_set(err, SW_ERR_FORMAT, "section %d (PART_LEVELS): %llu bytes, expected "
+                            "%zu", (int)index[0], (unsigned long long)sec[index[0]].size,
+                            sizeof(sw_pack_part_levels));
+    const sw_pack_part_levels *h = (const sw_pack_part_levels *)(pack->data + sec[index[0]].offset);
+    const uint64_t want[GROUP] = { 1, h->level_count, (uint64_t)h->part_count + 1,
+                                   h->vertex_count, h->index_count };
+    if (h->part_count != pack->meta->part_count)
+        return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVELS.part_count: %u, expected %u (the "
+                            "PARTS count)", (unsigned)h->part_count,
+                            (unsigned)pack->meta->part_count);
+    for (int k = 1; k < GROUP; k++)
+        if (sec[index[k]].size / group_records[k] != want[k])
+            return sw_error_set(err, SW_ERR_FORMAT, "section %d (%s): %llu records, expected "
+                                "%llu (PART_LEVELS)", (int)index[k],
+                                sw_section_type_name(group_types[k]),
+                                (unsigned long long)(sec[index[k]].size / group_records[k]),
+                                (unsigned long long)want[k]);
+    return SW_OK;
+}
+
+/* Level i of part p, after the level `prev` of the same part (NULL for its
+ * first): its ranges, error and reserved words. */
+static sw_status check_level(const sw_part_levels *v, uint32_t i, uint32_t p,
+                             const sw_part_level *prev, sw_error *err)
+{
+    const sw_part_level *l = &v->levels[i];
+    if (l->part != p)
+        return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RECORDS[%u].part: %u, expected %u "
+                            "(PART_LEVEL_PARTS gives it to that part)", (unsigned)i,
+                            (unsigned)l->part, (unsigned)p);
+    if (!isfinite(l->error) || !(l->error > 0) || (prev && !(l->error > prev->error)))
+        return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RECORDS[%u].error: %g, expected "
+                            "finite, > 0 and above the part's level before it", (unsigned)i,
+                            (double)l->error);
+    if (l->vertex_count < 3 || l->vertex_count > 65536 ||
+        (uint64_t)l->first_vertex + l->vertex_count > v->vertex_count)
+        return sw_error_set(err, SW_ERR_RANGE, "PART_LEVEL_RECORDS[%u]: vertices %u + %u, "
+                            "expected 3 to 65536 within PART_LEVEL_VERTICES (%u)", (unsigned)i,
+                            (unsigned)l->first_vertex, (unsigned)l->vertex_count,
+                            (unsigned)v->vertex_count);
+    if (l->index_count == 0 || l->index_count % 3 != 0 ||
+        (uint64_t)l->first_index + l->index_count > v->index_count)
+        return sw_error_set(err, SW_ERR_RANGE, "PART_LEVEL_RECORDS[%u]: indices %u + %u, "
+                            "expected a positive multiple of 3 within PART_LEVEL_INDICES (%u)",
+                            (unsigned)i, (unsigned)l->first_index, (unsigned)l->index_count,
+                            (unsigned)v->index_count);
+    if (l->reserved[0] || l->reserved[1])
+        return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RECORDS[%u].reserved: not zero",
+                            (unsigned)i);
+    for (uint32_t k = 0; k < l->index_count; k++)
+        if (v->indices[l->first_index + k] >= l->vertex_count)
+            return sw_error_set(err, SW_ERR_RANGE, "PART_LEVEL_INDICES[%u]: %u, expected < %u "
+                                "(PART_LEVEL_RECORDS[%u].vertex_count)",
+                                (unsigned)(l->first_index + k),
+                                (unsigned)v->indices[l->first_index + k],
+                                (unsigned)l->vertex_count, (unsigned)i);
+    return SW_OK;
+}
+
+static sw_status check_records(const sw_part_levels *v, sw_error *err)
+{
+    if (v->part_levels[0] != 0 || v->part_levels[v->part_count] != v->level_count)
+        return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_PARTS: runs from %u to %u, expected "
+                            "0 to %u (the level count)", (unsigned)v->part_levels[0],
+                            (unsigned)v->part_levels[v->part_count], (unsigned)v->level_count);
+    for (uint32_t p = 0; p < v->part_count; p++) {
+        uint32_t a = v->part_levels[p], b = v->part_levels[p + 1];
+        if (b < a || b > v->level_count || b - a > SW_PART_LEVELS_MAX)
+            return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_PARTS[%u]: %u to %u, expected "
+                                "rising by at most %u within the %u levels", (unsigned)p,
+                                (unsigned)a, (unsigned)b, (unsigned)SW_PART_LEVELS_MAX,
+                                (unsigned)v->level_count);
+        for (uint32_t i = a; i < b; i++) {
+            sw_status st = check_level(v, i, p, i > a ? &v->levels[i - 1] : NULL, err);
+            if (st != SW_OK)
+                return st;
+        }
+    }
+    for (uint32_t i = 0; i < v->vertex_count; i++) {
+        const sw_level_vertex *x = &v->vertices[i];
+        if (!isfinite(x->p[0]) || !isfinite(x->p[1]) || !isfinite(x->p[2]) || x->normal[3])
+            return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_VERTICES[%u]: expected finite "
+                                "coordinates and a zero fourth normal byte", (unsigned)i);
+    }
+    return SW_OK;
+}
+
+sw_status sw_pack_map_part_levels(const uint8_t *data, sw_pack *out, sw_error *err)
+{
+    int32_t index[GROUP];
+    out->part_levels = (sw_part_levels){ 0 };
+    sw_status st = find_group(out, index, err);
+    if (st == SW_OK)
+        st = check_group(out, index, err);
+    if (st != SW_OK || index[0] < 0)
+        return st;
+    const sw_pack_section *sec = out->sections;
+    const sw_pack_part_levels *h = (const sw_pack_part_levels *)(data + sec[index[0]].offset);
+    sw_part_levels v = {
+        .levels = (const sw_part_level *)(data + sec[index[1]].offset),
+        .part_levels = (const uint32_t *)(data + sec[index[2]].offset),
+        .vertices = (const sw_level_vertex *)(data + sec[index[3]].offset),
+        .indices = (const uint16_t *)(data + sec[index[4]].offset),
+        .level_count = h->level_count, .vertex_count = h->vertex_count,
+        .index_count = h->index_count, .part_count = h->part_count };
+    st = check_records(&v, err);
+    if (st == SW_OK)
+        out->part_levels = v;
+    return st;
+}

@@ -1,0 +1,58 @@
+/* Part levels: a whole part drawn far away as one simplified mesh, one
+ * draw, in place of its surfaces. A surface level (sw_levels.h) cannot go
+ * below a few triangles a surface plus the strips to its neighbours; a
+ * part of many small surfaces, a screw or a hammer, seen from the far end
+ * of a hall needs fewer triangles than it has surfaces. A part level is
+ * simplified across the borders of its surfaces, from the surfaces' finest
+ * levels joined at one front (assets/super/sw_part_source.h), so it has no
+ * border to join to anything: the part is drawn from it whole, or not at
+ * all (paper 000's super-surface levels, taken to the part).
+ *
+ * Its error is measured on the host both ways (the largest distance from
+ * points on the level to the mesh it was simplified from, and from points
+ * on that mesh to the level), plus that mesh's own measured error against
+ * the exact surfaces.
+ *
+ * Written by the pack tool (assets/super/sw_part_levels_build.h), checked
+ * by the pack reader (PACK_FORMAT.md, "PART_LEVELS"), drawn by the walk. */
+#ifndef SW_PART_LEVELS_H
+#define SW_PART_LEVELS_H
+
+#include <stdint.h>
+
+#include "sw_levels.h"
+
+#define SW_PART_LEVELS_MAX 6u     /* levels per part */
+
+typedef struct sw_part_level {    /* 32 bytes */
+    uint32_t part;                /* the pack's part */
+    float error;                  /* model units, measured (above); finite, > 0, rising
+                                     strictly over a part's levels */
+    uint32_t first_vertex;        /* part_level_vertices[first_vertex .. + vertex_count) */
+    uint32_t vertex_count;        /* 3 .. 65536 (16-bit indices) */
+    uint32_t first_index;         /* part_level_indices[first_index .. + index_count),
+                                     level-local */
+    uint32_t index_count;         /* a positive multiple of 3 */
+    uint32_t reserved[2];         /* zero */
+} sw_part_level;
+
+/* Section PART_LEVELS: the counts. */
+typedef struct sw_pack_part_levels {   /* 16 bytes */
+    uint32_t level_count;
+    uint32_t vertex_count;
+    uint32_t index_count;
+    uint32_t part_count;          /* == the PARTS count */
+} sw_pack_part_levels;
+
+/* The part levels as views (host: owned by whoever built them; runtime:
+ * into the pack). */
+typedef struct sw_part_levels {
+    const sw_part_level *levels;
+    const uint32_t *part_levels;      /* part_count + 1: part p has the levels
+                                         [part_levels[p], part_levels[p + 1]), finest first */
+    const sw_level_vertex *vertices;
+    const uint16_t *indices;
+    uint32_t level_count, vertex_count, index_count, part_count;
+} sw_part_levels;
+
+#endif
