@@ -201,6 +201,7 @@ static sw_status init_seams(sw_program *rt, double *mark_s, sw_error *err)
     if (st == SW_OK && rt->opt.drop_surface >= 0)
         rt->seam.drop_surface = (uint32_t)rt->opt.drop_surface;
     rt->seam.no_standins = !rt->opt.static_levels;
+    rt->seam.no_part_levels = !rt->opt.part_levels;
     rt->stats.start_walk_init_ms = lap_ms(mark_s);
     if (st == SW_OK)
         st = start_frames(rt, err);
@@ -372,6 +373,11 @@ sw_status sw_program_start_pool(sw_program *rt, sw_error *err)
     if (st != SW_OK)
         return st;
     rt->pool_up = 1;
+    const sw_part_levels *pl = &rt->pack.part_levels;
+    if (rt->opt.part_levels && pl->levels &&
+        (st = sw_gl_pool_resident(&rt->pool, (const sw_vertex *)pl->vertices, pl->vertex_count,
+                                  pl->indices, pl->index_count, err)) != SW_OK)
+        return st;
     if ((rt->staging_block = sw_heap_take_block(sw_gl_pool_merge_bytes())))
         sw_gl_pool_merge_start(&rt->pool, rt->staging_block);   /* else a draw a mesh */
     size_t total = rt->arena.size + rt->frame_arena.size + rt->readback_arena.size +

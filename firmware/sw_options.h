@@ -53,6 +53,8 @@ typedef struct sw_options {
                                     surfaces each frame (1, default) or to the model box */
     int static_levels;           /* --static-levels 0|1: the pack's static levels stand in for
                                     meshes not made yet (1, default) */
+    int part_levels;             /* --part-levels 0|1: far parts drawn whole from the pack's
+                                    part levels (1, default) */
     int fill_crossings;          /* --fill-crossings 0|1: fans over seam crossings (1, default;
                                     0 shows the T-junction pinholes they close) */
     long drop_surface;           /* --test-drop-surface S: surface S is never drawn (a

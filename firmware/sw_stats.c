@@ -330,6 +330,24 @@ static sw_status write_visibility(FILE *f, const sw_stats *s, sw_arena *scratch)
     return SW_OK;
 }
 
+void sw_stats_add_part_levels(sw_stats *s, uint32_t parts, uint32_t covered, uint64_t triangles)
+{
+    s->part_levels_max = parts > s->part_levels_max ? parts : s->part_levels_max;
+    s->covered_max = covered > s->covered_max ? covered : s->covered_max;
+    s->part_level_triangles += triangles;
+    if (triangles > s->part_level_triangles_max)
+        s->part_level_triangles_max = triangles;
+}
+
+static void write_part_levels(FILE *f, const sw_stats *s)
+{
+    fprintf(f, "  \"part_levels\": {\"parts_max\": %u, \"covered_surfaces_max\": %u, "
+               "\"triangles\": {\"mean\": %.0f, \"max\": %llu}},\n",
+            s->part_levels_max, s->covered_max,
+            s->frames_total ? (double)s->part_level_triangles / (double)s->frames_total : 0.0,
+            (unsigned long long)s->part_level_triangles_max);
+}
+
 static void write_threads(FILE *f, const sw_stats *s)
 {
     fprintf(f, "  \"threads\": {\"workers\": %d, \"sync_work\": %d, \"target_ms\": %.3f, "
@@ -443,6 +461,7 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
     fprintf(f, "  \"depth\": {\"bits\": %d, \"far_over_near_max\": %.1f},\n", s->depth_bits,
             s->depth_far_over_near_max);
     write_threads(f, s);
+    write_part_levels(f, s);
     if (s->store)
         write_store(f, s);
     write_series_and_soak(f, s);

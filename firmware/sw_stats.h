@@ -94,6 +94,10 @@ typedef struct sw_stats {
     uint64_t standins_made;      /* stand-ins made (sw_seam_standin.h) */
     uint64_t standin_triangles;  /* the stand-ins drew, over every frame */
     uint64_t standin_triangles_max; /* of a frame */
+    uint32_t part_levels_max;    /* parts drawn whole from a part level, the most of a frame */
+    uint32_t covered_max;        /* surfaces in view drawn by their part's level, the most */
+    uint64_t part_level_triangles;   /* the part levels drew, over every frame */
+    uint64_t part_level_triangles_max; /* of a frame */
     uint32_t behind_max;         /* drawn from a mesh coarser than the view asks */
     uint32_t frames_behind_max;  /* the longest a drawn surface waited for its work */
     double behind_ratio_max;     /* the most a drawn mesh's bound exceeded the view's */
@@ -170,6 +174,7 @@ void sw_stats_add_update_cap(sw_stats *s, double used, double cap);
  * the bound ratio, jobs and whether a batch was swapped in, the budget. */
 /* The threaded walk's stand-ins: drawn this frame, and made. */
 void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint64_t triangles);
+void sw_stats_add_part_levels(sw_stats *s, uint32_t parts, uint32_t covered, uint64_t triangles);
 
 void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
                                 uint32_t frames_behind, double behind_ratio, uint32_t jobs,

@@ -50,6 +50,11 @@ sw_status sw_gl_pool_init(sw_gl_pool *p, uint32_t vertices, uint32_t indices,
 
 void sw_gl_pool_destroy(sw_gl_pool *p)
 {
+    if (p->resident_vertices)
+        glDeleteBuffers(1, &p->resident_vertices);
+    if (p->resident_indices)
+        glDeleteBuffers(1, &p->resident_indices);
+    p->resident_vertices = p->resident_indices = 0;
     if (p->stream_buffer)
         glDeleteBuffers(1, &p->stream_buffer);
     p->stream_buffer = 0;
@@ -98,6 +103,46 @@ void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
     /* No base vertex in GLES2: the layout points at the mesh. */
     sw_renderer_set_layout(r, (size_t)first_vertex * sizeof(sw_vertex));
     glDrawElements(GL_TRIANGLES, (GLsizei)(index_count - index_count % 3), GL_UNSIGNED_SHORT,
+                   (const void *)((size_t)first_index * 2));
+    drawn(p, index_count / 3);
+}
+
+sw_status sw_gl_pool_resident(sw_gl_pool *p, const sw_vertex *verts, uint32_t n,
+                              const uint16_t *indices, uint32_t m, sw_error *err)
+{
+    glGenBuffers(1, &p->resident_vertices);
+    glGenBuffers(1, &p->resident_indices);
+    glBindBuffer(GL_ARRAY_BUFFER, p->resident_vertices);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)n * (GLsizeiptr)sizeof(sw_vertex), verts,
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p->resident_indices);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)m * 2, indices, GL_STATIC_DRAW);
+    GLenum code = glGetError();
+    if (code != GL_NO_ERROR) {
+        glDeleteBuffers(1, &p->resident_vertices);
+        glDeleteBuffers(1, &p->resident_indices);
+        p->resident_vertices = p->resident_indices = 0;
+        return sw_error_set(err, SW_ERR_GL, "GL pool: resident buffers for %u vertices and %u "
+                            "indices refused (0x%04x)", (unsigned)n, (unsigned)m,
+                            (unsigned)code);
+    }
+    p->resident_vertex_count = n, p->resident_index_count = m;
+    p->bytes_uploaded += (uint64_t)n * sizeof(sw_vertex) + (uint64_t)m * 2;
+    return SW_OK;
+}
+
+void sw_gl_pool_draw_resident(sw_gl_pool *p, sw_renderer *r, const float rgba[4],
+                              uint32_t first_vertex, uint32_t first_index, uint32_t index_count)
+{
+    index_count -= index_count % 3;
+    if (!p->resident_vertices || index_count == 0 || first_vertex >= p->resident_vertex_count ||
+        (uint64_t)first_index + index_count > p->resident_index_count)
+        return;
+    glBindBuffer(GL_ARRAY_BUFFER, p->resident_vertices);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p->resident_indices);
+    sw_renderer_set_layout(r, (size_t)first_vertex * sizeof(sw_vertex));
+    sw_renderer_set_color(r, rgba);
+    glDrawElements(GL_TRIANGLES, (GLsizei)index_count, GL_UNSIGNED_SHORT,
                    (const void *)((size_t)first_index * 2));
     drawn(p, index_count / 3);
 }

@@ -66,6 +66,8 @@ typedef struct sw_gl_pool {
     uint64_t bytes_uploaded;         /* since init */
     uint64_t draw_calls, triangles;  /* since init */
     uint64_t waits;                  /* glFinish calls in sw_gl_pool_draw, since init */
+    unsigned int resident_vertices, resident_indices;   /* sw_gl_pool_resident; 0: none */
+    uint32_t resident_vertex_count, resident_index_count;
 } sw_gl_pool;
 
 /* Creates both buffers (GL_DYNAMIC_DRAW) and writes them once, so the
@@ -87,6 +89,19 @@ int sw_gl_pool_upload(sw_gl_pool *p, uint32_t first_vertex, const sw_vertex *ver
  * the last wait. */
 void sw_gl_pool_draw(sw_gl_pool *p, const sw_renderer *r, uint32_t first_vertex,
                      uint32_t first_index, uint32_t index_count);
+
+/* Meshes written once and kept for the whole walk (the pack's part
+ * levels), in buffers of their own (GL_STATIC_DRAW). SW_ERR_GL when the GL
+ * refuses; the pool's own buffers are left as they are. */
+sw_status sw_gl_pool_resident(sw_gl_pool *p, const sw_vertex *verts, uint32_t n,
+                              const uint16_t *indices, uint32_t m, sw_error *err);
+
+/* Draws index_count of the resident indices from first_index, their
+ * vertices counted from first_vertex, in rgba; at once, not merged (one
+ * call a mesh: the resident meshes are whole parts). Ranges outside what
+ * was written are not drawn. */
+void sw_gl_pool_draw_resident(sw_gl_pool *p, sw_renderer *r, const float rgba[4],
+                              uint32_t first_vertex, uint32_t first_index, uint32_t index_count);
 
 /* Merged draws. In GLES2 a mesh's draw has to point the attributes at
  * its first vertex (16-bit indices local to the mesh, no base-vertex

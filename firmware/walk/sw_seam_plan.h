@@ -37,6 +37,9 @@ typedef struct sw_seam_draw_item {
                                             is being made): measured apart */
     uint8_t standin;                     /* a static level standing in (no (u, v) to measure
                                             against the surface: its error is the level's) */
+    uint8_t part_level;                  /* a whole part from its part level: first_vertex and
+                                            first_index are in the pack's part levels (P's
+                                            resident buffers), surface is UINT32_MAX */
 } sw_seam_draw_item;
 
 /* One mesh to upload before the frame's first draw. */

@@ -295,6 +295,7 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
         changed |= cull_surface(w, view, s, &frame->cone_culled);
         frame->visible_surfaces += w->visible[s] != 0;
     }
+    sw_seam_walk_choose_parts(w, view, frame);
     /* The update is complete (no operation cap) and depends on the bounds
      * alone, so with no bound changed the front already meets them: a
      * still camera, or one whose surfaces all keep their tessellations,

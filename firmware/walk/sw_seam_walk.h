@@ -114,6 +114,7 @@
 #define SW_SEAM_WALK_INDICES SW_WALK_INDICES
 
 enum { SW_SEAM_WALK_AWAY = 3 }; /* w->visible: in the frustum, its normal cone facing away */
+enum { SW_SEAM_WALK_PART = 4 }; /* w->visible: in view, drawn as its part's level */
 
 typedef struct sw_seam_frame {
     uint32_t visible_surfaces, drawn_surfaces, vanished_surfaces;
@@ -159,6 +160,9 @@ typedef struct sw_seam_frame {
     uint32_t standins;            /* drawn from a static level while their mesh is made */
     uint32_t standins_made;       /* stand-ins made this frame */
     uint64_t standin_triangles;   /* of triangles: those the stand-ins drew */
+    uint32_t part_levels;         /* parts drawn whole from a part level */
+    uint64_t part_level_triangles;/* of triangles: those the part levels drew */
+    uint32_t covered_surfaces;    /* surfaces in view drawn by their part's level */
     uint32_t behind_surfaces;     /* drawn from a mesh coarser than the view's bound */
     uint32_t frames_behind;       /* the longest a drawn surface has waited for its work */
     double behind_ratio;          /* the most a drawn mesh's bound exceeds the view's */
@@ -243,6 +247,13 @@ typedef struct sw_seam_walk {
      * levels; NULL otherwise (a surface in view waits for its mesh). */
     sw_seam_standin *standins;
     int no_standins;              /* set before the workers start: none even with levels */
+    /* Part levels (core/sw_part_levels.h; visibility/sw_seam_part_levels.c),
+     * V's; NULL when the pack has none or no_part_levels was set before
+     * sw_seam_walk_init_frames: */
+    const sw_part_levels *part_levels;
+    int no_part_levels;
+    uint32_t *part_level;         /* part_count: the level drawn this frame, UINT32_MAX none */
+    double *part_depth;           /* part_count: its surfaces' nearest depth in view */
     int standin_silhouettes;      /* 1: where a silhouette may cross a stand-in its level is
                                      chosen by the bound it was made for
                                      (sw_seam_standin_worth); 0 by its error alone (tests) */

@@ -85,6 +85,15 @@ void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
  * is drawn so. */
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
 
+/* V, after culling: each part in view whose coarsest level within the
+ * bound at its surfaces' nearest depth is drawn whole from it; its
+ * surfaces in view are marked SW_SEAM_WALK_PART (not drawn, no work)
+ * (visibility/sw_seam_part_levels.c). */
+void sw_seam_walk_choose_parts(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame);
+
+/* V, planning: the parts chosen above into the plan, counted. */
+void sw_seam_walk_plan_parts(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame);
+
 /* V: 1 when surface s's stand-in still serves its target: its level's
  * worth (sw_seam_standin_worth, a silhouette or not this frame) within it
  * (sw_seam_walk_standins.c). */

@@ -13,6 +13,8 @@ static void measure_item(sw_seam_walk *w, const sw_seam_draw_item *it, const sw_
 {
     const sw_seam_cache *c = &w->cache;
     uint32_t s = it->surface, patch_count = 0;
+    if (it->part_level)   /* its error is its level's, measured on the host */
+        return;
     const sw_seam_mesh mesh = { c->verts + it->first_vertex,
                                 c->uvs + 2 * (size_t)it->first_vertex,
                                 c->index_data + it->first_index, it->vertex_count,
@@ -41,6 +43,11 @@ static void draw_item(const sw_seam_walk *w, const sw_seam_draw_item *it, sw_ren
                       sw_gl_pool *pool)
 {
     const float *rgba = w->pack->parts[it->part].color;
+    if (it->part_level) {   /* a whole part, from P's resident buffers */
+        sw_gl_pool_draw_resident(pool, r, rgba, it->first_vertex, it->first_index,
+                                 it->index_count);
+        return;
+    }
     const uint16_t *idx = w->cache.index_data + it->first_index;
     uint32_t v0 = it->first_vertex, i0 = it->first_index, fill = it->fill_indices;
     uint32_t mesh = it->index_count - fill;

@@ -8,8 +8,9 @@ static int drawn(const sw_seam_walk *w, uint32_t s)
 {
     /* Out of view, or too small to draw, are not; those facing away count,
      * so that cone culling leaves the depth planes, and so every pixel of
-     * what is drawn, as they were. */
-    return w->visible[s] == 1 || w->visible[s] == SW_SEAM_WALK_AWAY;
+     * what is drawn, as they were; and those drawn by their part's level. */
+    return w->visible[s] == 1 || w->visible[s] == SW_SEAM_WALK_AWAY ||
+           w->visible[s] == SW_SEAM_WALK_PART;
 }
 
 /* The nearest depth at which surface s can be seen: its patch boxes
