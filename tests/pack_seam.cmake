@@ -20,3 +20,10 @@ add_test(NAME levels_teaset COMMAND bash -c
 sw_add_test(test_cluster SOURCES test_cluster.c LIBS sw_assets sw_core)
 add_test(NAME cluster_teaset COMMAND bash -c
   "$<TARGET_FILE:seamwalk-pack> build ${PROJECT_SOURCE_DIR}/assets/samples/teaset.ini -o ${CMAKE_CURRENT_BINARY_DIR}/cluster_teaset.swpack --quiet && $<TARGET_FILE:test_cluster> ${CMAKE_CURRENT_BINARY_DIR}/cluster_teaset.swpack")
+# The part levels of the built teaset against its exact surfaces.
+add_executable(test_part_levels_build_prog test_part_levels_build.c)
+target_link_libraries(test_part_levels_build_prog PRIVATE sw_assets sw_core)
+target_include_directories(test_part_levels_build_prog PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+sw_apply_warnings(test_part_levels_build_prog)
+add_test(NAME part_levels_teaset COMMAND bash -c
+  "$<TARGET_FILE:seamwalk-pack> build ${PROJECT_SOURCE_DIR}/assets/samples/teaset.ini -o ${CMAKE_CURRENT_BINARY_DIR}/part_levels_teaset.swpack --quiet && $<TARGET_FILE:test_part_levels_build_prog> ${CMAKE_CURRENT_BINARY_DIR}/part_levels_teaset.swpack")

@@ -11,8 +11,9 @@ default 640x360) twice, each writing every K-th frame's picture (default 10):
              measuring nothing (--measure-every 0), never waiting for the
              work (--sync-work 0: CTest's SEAMWALK_TEST_SYNC_WORK=1 would
              make each frame wait);
-  reference  the same path, frames and bound with --workers 0: every mesh
-             made in its frame, so every surface in view is drawn.
+  reference  the same path, frames and bound with --workers 0 and
+             --part-levels 0: every surface's mesh made in its frame, so
+             every surface in view is drawn as the tessellator makes it.
 Both are drawn over magenta (255,0,255), a colour no part has, back faces
 flat cyan (0,255,255), so each pair of pictures can be compared pixel by
 pixel:
@@ -170,7 +171,7 @@ def main(argv):
         test_flags += ["--test-drop-surface", str(a.test_drop_surface)]
     if a.test_standin_silhouettes is not None:
         test_flags += ["--test-standin-silhouettes", str(a.test_standin_silhouettes)]
-    ref_flags = ["--workers", "0"]
+    ref_flags = ["--workers", "0", "--part-levels", "0"]
     test = walk(a, "test", test_flags)
     ref = walk(a, "reference", ref_flags)
     if test is None or ref is None:
