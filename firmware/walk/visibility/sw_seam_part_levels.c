@@ -54,6 +54,7 @@ void sw_seam_walk_choose_parts(sw_seam_walk *w, const sw_view *view, sw_seam_fra
 void sw_seam_walk_plan_parts(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     const sw_part_levels *pl = w->part_levels;
+    frame->drawn_surfaces += frame->covered_surfaces;   /* drawn, through their parts */
     for (uint32_t p = 0; pl && p < pl->part_count; p++) {
         if (w->part_level[p] == UINT32_MAX)
             continue;
