@@ -194,6 +194,33 @@ const char *sw_section_type_name(uint32_t type)
     return "unknown";
 }
 
+sw_status sw_pack_find_group(const sw_pack *pack, const uint32_t *types,
+                             const uint64_t *record_bytes, int count, int32_t *index,
+                             sw_error *err)
+{
+    for (int k = 0; k < count; k++)
+        index[k] = -1;
+    for (uint32_t i = 0; i < pack->header->section_count; i++) {
+        const sw_pack_section *s = &pack->sections[i];
+        for (int k = 0; k < count; k++) {
+            if (s->type != types[k])
+                continue;
+            const char *name = sw_section_type_name(s->type);
+            if (index[k] >= 0)
+                return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): a second %s section "
+                                    "(the first is section %d)", (unsigned)i, name, name,
+                                    (int)index[k]);
+            if (s->size % record_bytes[k] != 0 || s->size / record_bytes[k] > UINT32_MAX)
+                return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): %llu bytes, expected "
+                                    "a multiple of %llu", (unsigned)i, name,
+                                    (unsigned long long)s->size,
+                                    (unsigned long long)record_bytes[k]);
+            index[k] = (int32_t)i;
+        }
+    }
+    return SW_OK;
+}
+
 uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count, uint64_t walk_bytes)
 {
     if (total_size > UINT64_MAX / 4 || walk_bytes > UINT64_MAX / 4)

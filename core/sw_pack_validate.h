@@ -43,6 +43,14 @@ sw_status sw_pack_validate_seam(const sw_pack *pack, const sw_parts_runner *runn
 sw_status sw_pack_validate_levels(const sw_pack *pack, const sw_parts_runner *runner,
                                   sw_error *err);
 
+/* An optional group of sections not indexed by the reader's table pass
+ * (sw_pack_read.c): index[k] the table entry of types[k], or -1. Each may
+ * appear once and hold a whole number of its records (record_bytes[k]);
+ * else SW_ERR_FORMAT naming the section. */
+sw_status sw_pack_find_group(const sw_pack *pack, const uint32_t *types,
+                             const uint64_t *record_bytes, int count, int32_t *index,
+                             sw_error *err);
+
 /* The super-surfaces (SUPER_SURFACES, SUPER_MEMBERS, SUPER_OF), in
  * sw_pack_validate_super.c; called last by sw_pack_open_memory on a pack
  * whose SURFACES are known good. Finds its own sections (all three or

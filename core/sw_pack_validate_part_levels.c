@@ -20,33 +20,6 @@ static const uint64_t group_records[GROUP] = { sizeof(sw_pack_part_levels), size
                                                sizeof(uint32_t), sizeof(sw_level_vertex),
                                                sizeof(uint16_t) };
 
-/* index[k] = the table entry of group_types[k], or -1; each at most once and
- * a whole number of records. */
-static sw_status find_group(const sw_pack *pack, int32_t index[GROUP], sw_error *err)
-{
-    for (int k = 0; k < GROUP; k++)
-        index[k] = -1;
-    for (uint32_t i = 0; i < pack->header->section_count; i++) {
-        const sw_pack_section *s = &pack->sections[i];
-        for (int k = 0; k < GROUP; k++) {
-            if (s->type != group_types[k])
-                continue;
-            const char *name = sw_section_type_name(s->type);
-            if (index[k] >= 0)
-                return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): a second %s section "
-                                    "(the first is section %d)", (unsigned)i, name, name,
-                                    (int)index[k]);
-            if (s->size % group_records[k] != 0 || s->size / group_records[k] > UINT32_MAX)
-                return sw_error_set(err, SW_ERR_FORMAT, "section %u (%s): %llu bytes, expected "
-                                    "a multiple of %llu", (unsigned)i, name,
-                                    (unsigned long long)s->size,
-                                    (unsigned long long)group_records[k]);
-            index[k] = (int32_t)i;
-        }
-    }
-    return SW_OK;
-}
-
 /* All five or none; the counts record's counts are the sections' sizes. */
 static sw_status check_group(const sw_pack *pack, const int32_t index[GROUP], sw_error *err)
 {
@@ -153,7 +126,7 @@ sw_status sw_pack_map_part_levels(const uint8_t *data, sw_pack *out, sw_error *e
 {
     int32_t index[GROUP];
     out->part_levels = (sw_part_levels){ 0 };
-    sw_status st = find_group(out, index, err);
+    sw_status st = sw_pack_find_group(out, group_types, group_records, GROUP, index, err);
     if (st == SW_OK)
         st = check_group(out, index, err);
     if (st != SW_OK || index[0] < 0)
