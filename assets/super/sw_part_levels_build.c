@@ -12,6 +12,7 @@
 #include "sw_grow.h"
 #include "sw_mesh_distance.h"
 #include "sw_part_source.h"
+#include "sw_pow2.h"
 
 /* One part's source, welded (reused from part to part). */
 typedef struct part_mesh {
@@ -43,14 +44,6 @@ static uint64_t hash64(uint64_t x)
     x ^= x >> 33;
     x *= 0xc4ceb9fe1a85ec53ull;
     return x ^ (x >> 33);
-}
-
-static size_t pow2_at_least(size_t n)
-{
-    size_t p = 16;
-    while (p < n)
-        p *= 2;
-    return p;
 }
 
 /* The part's source vertices and triangles gathered; 0 when out of memory,
@@ -96,13 +89,18 @@ static int gather_part(part_mesh *m, const sw_pack *pack, const sw_levels *level
  * source vertices it stands for. 0 when out of memory. */
 static int weld(part_mesh *m)
 {
-    size_t cap = pow2_at_least(2 * (size_t)m->count);
+    size_t cap = sw_pow2_at_least(2 * m->count, 16);
     uint32_t *table = malloc(cap * sizeof *table);
-    m->weld = sw_grow(m->weld, &m->cap_w, m->count + 1, sizeof *m->weld);
-    m->wpos = sw_grow(m->wpos, &m->cap_x, 3 * ((size_t)m->count + 1), sizeof *m->wpos);
-    m->wedge_first = sw_grow(m->wedge_first, &m->cap_wf, m->count + 2, sizeof *m->wedge_first);
-    m->wedge = sw_grow(m->wedge, &m->cap_wd, m->count + 1, sizeof *m->wedge);
-    if (!table || !m->weld || !m->wpos || !m->wedge_first || !m->wedge) {
+    /* Each kept as it was when it cannot grow: freed with the rest. */
+    uint32_t *wl = sw_grow(m->weld, &m->cap_w, m->count + 1, sizeof *m->weld);
+    m->weld = wl ? wl : m->weld;
+    float *wp = sw_grow(m->wpos, &m->cap_x, 3 * ((size_t)m->count + 1), sizeof *m->wpos);
+    m->wpos = wp ? wp : m->wpos;
+    uint32_t *wf = sw_grow(m->wedge_first, &m->cap_wf, m->count + 2, sizeof *m->wedge_first);
+    m->wedge_first = wf ? wf : m->wedge_first;
+    uint32_t *wd = sw_grow(m->wedge, &m->cap_wd, m->count + 1, sizeof *m->wedge);
+    m->wedge = wd ? wd : m->wedge;
+    if (!table || !wl || !wp || !wf || !wd) {
         free(table);
         return 0;
     }
@@ -147,66 +145,118 @@ static uint64_t edge_key(uint32_t a, uint32_t b)
     return a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
 }
 
+/* Each edge's first two triangles (a third or more: UINT32_MAX - 1, not
+ * spread over), in an open-addressed table of cap slots. */
+typedef struct edge_table {
+    uint64_t *keys;
+    uint32_t *first, *second;
+    size_t cap;
+} edge_table;
+
+static size_t edge_slot(const edge_table *e, uint32_t a, uint32_t b)
+{
+    uint64_t key = edge_key(a, b) + 1;
+    size_t h = hash64(key) & (e->cap - 1);
+    while (e->keys[h] && e->keys[h] != key)
+        h = (h + 1) & (e->cap - 1);
+    e->keys[h] = key;
+    return h;
+}
+
+static void fill_edges(const part_mesh *m, edge_table *e)
+{
+    for (uint32_t t = 0; t < m->icount / 3; t++)
+        for (int k = 0; k < 3; k++) {
+            size_t h = edge_slot(e, m->idx[3 * t + k], m->idx[3 * t + (k + 1) % 3]);
+            if (e->first[h] == UINT32_MAX)
+                e->first[h] = t, e->second[h] = UINT32_MAX;
+            else
+                e->second[h] = e->second[h] == UINT32_MAX && e->first[h] != t ? t
+                                                                                : UINT32_MAX - 1;
+        }
+}
+
+/* From seed, the triangles reached over edges two share, each turned to
+ * run such an edge the other way from the one it came from, into
+ * queue[0 .. return). */
+static uint32_t spread(part_mesh *m, const edge_table *e, uint32_t seed, uint32_t *queue,
+                       uint8_t *done)
+{
+    uint32_t head = 0, tail = 0;
+    done[seed] = 1, queue[tail++] = seed;
+    while (head < tail) {
+        uint32_t t = queue[head++];
+        for (int k = 0; k < 3; k++) {
+            uint32_t a = m->idx[3 * t + k], b = m->idx[3 * t + (k + 1) % 3];
+            size_t h = edge_slot(e, a, b);
+            uint32_t u = e->first[h] == t ? e->second[h] : e->first[h];
+            if (e->second[h] >= UINT32_MAX - 1 || done[u])
+                continue;
+            uint32_t *c = m->idx + 3 * (size_t)u;
+            if ((c[0] == a && c[1] == b) || (c[1] == a && c[2] == b) || (c[2] == a && c[0] == b)) {
+                uint32_t x = c[1];
+                c[1] = c[2], c[2] = x;
+            }
+            done[u] = 1, queue[tail++] = u;
+        }
+    }
+    return tail;
+}
+
+/* The triangles tris[0 .. count), one piece turned one way, turned over
+ * when most of their area faces against the surfaces' normals: so the
+ * piece's front is the surfaces' (hidden back faces stay hidden, shown
+ * ones stay shown). */
+static void face_out(part_mesh *m, const uint32_t *tris, uint32_t count)
+{
+    double vote = 0;
+    for (uint32_t i = 0; i < count; i++) {
+        const uint32_t *c = m->idx + 3 * (size_t)tris[i];
+        const float *a = m->wpos + 3 * (size_t)c[0], *b = m->wpos + 3 * (size_t)c[1],
+                    *d = m->wpos + 3 * (size_t)c[2];
+        double e1[3], e2[3], n[3], sum[3] = { 0, 0, 0 };
+        for (int k = 0; k < 3; k++)
+            e1[k] = (double)b[k] - a[k], e2[k] = (double)d[k] - a[k];
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        for (int j = 0; j < 3; j++)
+            for (uint32_t w = m->wedge_first[c[j]]; w < m->wedge_first[c[j] + 1]; w++)
+                for (int k = 0; k < 3; k++)
+                    sum[k] += m->nrm[3 * (size_t)m->wedge[w] + k];
+        vote += n[0] * sum[0] + n[1] * sum[1] + n[2] * sum[2];
+    }
+    for (uint32_t i = 0; vote < 0 && i < count; i++) {
+        uint32_t *c = m->idx + 3 * (size_t)tris[i], x = c[1];
+        c[1] = c[2], c[2] = x;
+    }
+}
+
 /* The triangles turned so that each edge two of them share is run once each
- * way, spreading from triangle to triangle over such edges. The surfaces'
- * normals do not decide it: a part's surfaces may face opposite ways (the
- * renderer lights both sides), and meshoptimizer takes an edge not run both
- * ways for a border it must keep. 0 when out of memory. */
+ * way, piece by piece, each piece to the side its surfaces face. The
+ * surfaces' normals alone do not decide each triangle: a part's surfaces
+ * may face opposite ways (the renderer lights both sides), and
+ * meshoptimizer takes an edge not run both ways for a border it must keep.
+ * 0 when out of memory. */
 static int orient(part_mesh *m)
 {
     uint32_t tris = m->icount / 3;
-    size_t cap = pow2_at_least(4 * (size_t)m->icount);
-    uint64_t *keys = calloc(cap, sizeof *keys);
-    uint32_t *first = malloc(cap * sizeof *first), *second = malloc(cap * sizeof *second);
+    edge_table e = { .cap = sw_pow2_at_least(4 * m->icount, 16) };
+    e.keys = calloc(e.cap, sizeof *e.keys);
+    e.first = malloc(e.cap * sizeof *e.first);
+    e.second = malloc(e.cap * sizeof *e.second);
     uint32_t *queue = malloc(((size_t)tris + 1) * sizeof *queue);
     uint8_t *done = calloc((size_t)tris + 1, 1);
-    if (!keys || !first || !second || !queue || !done) {
-        free(keys), free(first), free(second), free(queue), free(done);
-        return 0;
+    int ok = e.keys && e.first && e.second && queue && done;
+    if (ok) {
+        memset(e.first, 0xff, e.cap * sizeof *e.first);
+        fill_edges(m, &e);
+        for (uint32_t seed = 0; seed < tris; seed++)
+            if (!done[seed])
+                face_out(m, queue, spread(m, &e, seed, queue, done));
     }
-    /* Each edge's first two triangles (a third or more: not spread over). */
-    for (uint32_t t = 0; t < tris; t++)
-        for (int k = 0; k < 3; k++) {
-            uint64_t key = edge_key(m->idx[3 * t + k], m->idx[3 * t + (k + 1) % 3]) + 1;
-            size_t h = hash64(key) & (cap - 1);
-            while (keys[h] && keys[h] != key)
-                h = (h + 1) & (cap - 1);
-            if (!keys[h])
-                keys[h] = key, first[h] = t, second[h] = UINT32_MAX;
-            else
-                second[h] = second[h] == UINT32_MAX && first[h] != t ? t : UINT32_MAX - 1;
-        }
-    for (uint32_t seed = 0; seed < tris; seed++) {
-        if (done[seed])
-            continue;
-        uint32_t head = 0, tail = 0;
-        done[seed] = 1, queue[tail++] = seed;
-        while (head < tail) {
-            uint32_t t = queue[head++];
-            for (int k = 0; k < 3; k++) {
-                uint32_t a = m->idx[3 * t + k], b = m->idx[3 * t + (k + 1) % 3];
-                uint64_t key = edge_key(a, b) + 1;
-                size_t h = hash64(key) & (cap - 1);
-                while (keys[h] != key)
-                    h = (h + 1) & (cap - 1);
-                if (second[h] >= UINT32_MAX - 1)
-                    continue;
-                uint32_t u = first[h] == t ? second[h] : first[h];
-                if (done[u])
-                    continue;
-                uint32_t *c = m->idx + 3 * (size_t)u;
-                int same = (c[0] == a && c[1] == b) || (c[1] == a && c[2] == b) ||
-                           (c[2] == a && c[0] == b);
-                if (same) {
-                    uint32_t x = c[1];
-                    c[1] = c[2], c[2] = x;
-                }
-                done[u] = 1, queue[tail++] = u;
-            }
-        }
-    }
-    free(keys), free(first), free(second), free(queue), free(done);
-    return 1;
+    free(e.keys), free(e.first), free(e.second), free(queue), free(done);
+    return ok;
 }
 
 static double part_size(const part_mesh *m)
@@ -272,9 +322,11 @@ static uint32_t output_vertex(part_mesh *m, out_arrays *o, uint32_t first, size_
  * appended to o; 0 when out of memory, -1 when over one draw. */
 static int emit(part_mesh *m, out_arrays *o, uint32_t n, uint32_t *first_vertex)
 {
-    size_t cap = pow2_at_least(2 * (size_t)n);
-    m->keys = sw_grow(m->keys, &m->cap_k, cap, sizeof *m->keys);
-    m->key_value = sw_grow(m->key_value, &m->cap_kv, cap, sizeof *m->key_value);
+    size_t cap = sw_pow2_at_least(2 * n, 16);
+    uint64_t *ks = sw_grow(m->keys, &m->cap_k, cap, sizeof *m->keys);
+    m->keys = ks ? ks : m->keys;
+    uint32_t *kv = sw_grow(m->key_value, &m->cap_kv, cap, sizeof *m->key_value);
+    m->key_value = kv ? kv : m->key_value;
     sw_level_vertex *vs = sw_grow(o->vertices, &o->cap_v, (size_t)o->vertex_count + n,
                                   sizeof *vs);
     if (vs)
@@ -282,7 +334,7 @@ static int emit(part_mesh *m, out_arrays *o, uint32_t n, uint32_t *first_vertex)
     uint16_t *is = sw_grow(o->indices, &o->cap_i, (size_t)o->index_count + n, sizeof *is);
     if (is)
         o->indices = is;
-    if (!m->keys || !m->key_value || !vs || !is)
+    if (!ks || !kv || !vs || !is)
         return 0;
     memset(m->keys, 0, cap * sizeof *m->keys);
     *first_vertex = o->vertex_count;
@@ -312,14 +364,19 @@ static sw_status build_part(part_mesh *m, out_arrays *o, uint32_t part,
                             const sw_part_levels_options *opt, sw_part_levels_report *r,
                             sw_error *err)
 {
-    m->dest = sw_grow(m->dest, &m->cap_d, m->icount + 1, sizeof *m->dest);
-    if (!m->dest)
+    uint32_t *dest = sw_grow(m->dest, &m->cap_d, m->icount + 1, sizeof *m->dest);
+    if (!dest)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    m->dest = dest;
     double size = part_size(m), scale = meshopt_simplifyScale(m->wpos, m->wcount, 12);
     sw_mesh_view source = { m->wpos, m->idx, m->wcount, m->icount };
     sw_mesh_grid *source_grid = sw_mesh_grid_make(&source);
-    if (!source_grid || scale <= 0)
-        return source_grid ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: grid");
+    if (!source_grid)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: grid");
+    if (!(scale > 0)) {   /* every vertex at one point: nothing to draw far away */
+        sw_mesh_grid_free(source_grid);
+        return SW_OK;
+    }
     float last_error = 0;
     uint32_t last_indices = m->icount, kept = 0;
     for (uint32_t k = 0; k < opt->count; k++) {
