@@ -413,8 +413,10 @@ static inline uint8_t *serialize_sample(const sample *s, size_t *size)
 
 /* The sample with its Seam Graph, the levels l and the super-surfaces k
  * (each NULL: none), serialised; malloc'd. */
-static inline uint8_t *serialize_sample_with(const sw_levels *l, const sw_supers *k,
-                                             size_t *size)
+/* The sample with its graph, the levels l, clusters k and part levels pl
+ * (each NULL: none), serialised; malloc'd. */
+static inline uint8_t *serialize_sample_all(const sw_levels *l, const sw_supers *k,
+                                            const sw_part_levels *pl, size_t *size)
 {
     sample s;
     sample_seam g;
@@ -424,11 +426,18 @@ static inline uint8_t *serialize_sample_with(const sw_levels *l, const sw_supers
     c.seam = &g.graph;
     c.levels = l;
     c.supers = k;
+    c.part_levels = pl;
     uint8_t *bytes = NULL;
     sw_error err = { 0 };
     sw_status st = sw_pack_serialize(&c, &bytes, size, &err);
     SW_CHECK_MSG(st == SW_OK, "%s", err.message);
     return bytes;
+}
+
+static inline uint8_t *serialize_sample_with(const sw_levels *l, const sw_supers *k,
+                                             size_t *size)
+{
+    return serialize_sample_all(l, k, NULL, size);
 }
 
 static inline sw_pack_header *header_of(uint8_t *bytes) { return (sw_pack_header *)bytes; }

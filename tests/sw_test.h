@@ -59,6 +59,29 @@ static inline int sw_test_finish(void)
     return sw_test_failures ? 1 : 0;
 }
 
+/* The bytes of the file at path (malloc'd: aligned enough for the pack
+ * reader), *size its length; NULL, a failed check, when it cannot be read. */
+static inline unsigned char *sw_test_read_file(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    SW_CHECK_MSG(f != NULL, "cannot open %s", path);
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    unsigned char *bytes = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    int read = bytes && fread(bytes, 1, (size_t)n, f) == (size_t)n;
+    fclose(f);
+    SW_CHECK_MSG(read, "cannot read %s", path);
+    if (!read) {
+        free(bytes);
+        return NULL;
+    }
+    *size = (size_t)n;
+    return bytes;
+}
+
 /* Deterministic random numbers for tests (xorshift64*), seedable. */
 static unsigned long long sw_test_rng_state = 0x9E3779B97F4A7C15ull;
 static inline double sw_test_random(void)

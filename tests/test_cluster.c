@@ -380,26 +380,10 @@ static uint64_t check_sampled_normals(const sw_pack *pack)
     return sampled;
 }
 
-/* The file's bytes (malloc: aligned enough for the reader), NULL if unread. */
-static uint8_t *read_file(const char *path, size_t *size)
-{
-    FILE *f = fopen(path, "rb");
-    SW_CHECK_MSG(f != NULL, "%s", path);
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    *size = (size_t)ftell(f);
-    fseek(f, 0, SEEK_SET);
-    uint8_t *bytes = malloc(*size + 1);
-    SW_CHECK(fread(bytes, 1, *size, f) == *size);
-    fclose(f);
-    return bytes;
-}
-
 static void test_pack(const char *path)
 {
     size_t size = 0;
-    uint8_t *bytes = read_file(path, &size);
+    uint8_t *bytes = sw_test_read_file(path, &size);
     if (!bytes)
         return;
     sw_pack pack;

@@ -14,17 +14,7 @@
 
 static uint8_t *serialize_with(const sw_part_levels *pl, size_t *size)
 {
-    sample s;
-    sample_seam g;
-    make_sample(&s);
-    make_sample_seam(&g);
-    sw_pack_contents c = sample_contents(&s);
-    c.seam = &g.graph;
-    c.part_levels = pl;
-    uint8_t *bytes = NULL;
-    sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_serialize(&c, &bytes, size, &err) == SW_OK, "%s", err.message);
-    return bytes;
+    return serialize_sample_all(NULL, NULL, pl, size);
 }
 
 static void expect_rejected(const sample_part_levels *k, sw_status status, const char *needle)

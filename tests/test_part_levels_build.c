@@ -139,19 +139,13 @@ static void check_part(const sw_pack *pack, uint32_t p)
 
 static void check_pack_file(const char *path)
 {
-    FILE *f = fopen(path, "rb");
-    SW_CHECK_MSG(f != NULL, "%s", path);
-    if (!f)
+    size_t size = 0;
+    uint8_t *bytes = sw_test_read_file(path, &size);
+    if (!bytes)
         return;
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    uint8_t *bytes = malloc((size_t)size + 8);
-    SW_CHECK(fread(bytes, 1, (size_t)size, f) == (size_t)size);
-    fclose(f);
     sw_pack pack;
     sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, (size_t)size, &pack, &err) == SW_OK, "%s",
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s",
                  err.message);
     SW_CHECK_MSG(pack.part_levels.level_count > 0, "%s: no part levels", path);
     for (uint32_t p = 0; p < pack.part_levels.part_count; p++)

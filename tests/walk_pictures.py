@@ -4,7 +4,9 @@
                    [--workers N] [--test-drop-surface S] [--test-standin-silhouettes 0|1]
                    [--max-error-px E]
                    [--memory-mb M] [--max-differing F] [--json FILE]
-PACK is walked along PATH (FRAMES frames, default 120, headless at SIZE,
+PACK is walked along PATH (a camera path file, or `orbit` for --orbit: the
+whole model in view, where far parts are drawn from their part levels)
+(FRAMES frames, default 120, headless at SIZE,
 default 640x360) twice, each writing every K-th frame's picture (default 10):
   test       as the kiosk service runs it (firmware/seamwalk.service): the
              default workers (the cores less one; --workers N to choose),
@@ -61,7 +63,8 @@ def walk(a, name, flags):
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     stats = out + ".json"
-    cmd = [os.path.join(a.build, "firmware", "seamwalk"), "--pack", a.pack, "--path", a.path,
+    where = ["--orbit"] if a.path == "orbit" else ["--path", a.path]
+    cmd = [os.path.join(a.build, "firmware", "seamwalk"), "--pack", a.pack] + where + [
            "--headless", a.size, "--frames", str(a.frames), "--measure-every", "0",
            "--background", MAGENTA, "--back-faces", CYAN, "--png-dir", out,
            "--png-every", str(a.every), "--stats", stats] + flags
@@ -153,7 +156,8 @@ def parse_args(argv):
     if a.frames < 1 or a.every < 1:
         ap.error("FRAMES and --every must be at least 1")
     for k in ("pack", "path", "build", "out"):
-        setattr(a, k, os.path.abspath(getattr(a, k)))
+        if k != "path" or a.path != "orbit":
+            setattr(a, k, os.path.abspath(getattr(a, k)))
     return a
 
 
