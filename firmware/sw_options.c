@@ -301,6 +301,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_int(a, v, 0, 10000, &o->slow_workers_ms, err);
         } else if (!strcmp(a, "--test-standin-silhouettes")) {
             st = parse_int(a, v, 0, 1, &o->standin_silhouettes, err);
+        } else if (!strcmp(a, "--test-part-levels-coarsest")) {
+            st = parse_int(a, v, 0, 1, &o->part_levels_coarsest, err);
         } else if (!strcmp(a, "--test-stall-workers")) {
             st = parse_int(a, v, 0, INT_MAX, &o->stall_workers_at, err);
         } else if (!strcmp(a, "--fov-deg")) {
@@ -407,6 +409,9 @@ void sw_options_print_usage(FILE *out, const char *argv0)
             "                      level is chosen by the bound it was made for (1, default)\n"
             "                      or by its error (0: the tests' mutant, whose silhouettes\n"
             "                      leave slits)\n"
+            "  --test-part-levels-coarsest 0|1  every part in view drawn from its coarsest\n"
+            "                      part level whatever the bound (1: the tests' mutant;\n"
+            "                      0, default)\n"
             "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
             "                      many frames (tests: no half batch may show)\n"
             "  --batch-tris N      wait for the GL driver after every N triangles drawn\n"

@@ -70,6 +70,8 @@ typedef struct sw_options {
     int standin_silhouettes;     /* --test-standin-silhouettes 0|1: where a silhouette may
                                     cross a stand-in, its level chosen by the bound it was made
                                     for (1, default) or by its error (0, tests) */
+    int part_levels_coarsest;    /* --test-part-levels-coarsest 0|1: parts in view drawn
+                                    from their coarsest level whatever the bound (1, tests) */
     int visibility_thread;       /* --visibility-thread 0|1: V on its own thread (with
                                     workers); 1 */
     int slow_workers_ms;         /* --test-slow-workers MS: each job published MS late; 0 */

@@ -81,7 +81,9 @@ endif()
 
 # A walk judged by its pictures against the reference walk (--workers 0),
 # tests/walk_pictures.py: on a 2,000-patch showroom the same walk matches
-# pixel for pixel and a walk without a plate in view must show its hole
+# pixel for pixel and a walk without a plate in view must show its hole;
+# its orbit with far parts drawn from part levels meets the picture targets
+# and the mutant drawing every part from its coarsest level does not
 # (tests/test_walk_pictures.sh). Release only, as the holes tests above.
 if(NOT SW_ASAN AND NOT SW_TSAN)
   add_test(NAME walk_pictures

@@ -13,9 +13,11 @@
 #   (so in view: lying on the floor beside the walk, nothing behind it but
 #   the background), --workers 0: the plate's pixels must show as interior
 #   background (exit 1, more than 0 px).
-# The threaded walk as the kiosk service runs it is not required to match
-# here: today it leaves surfaces in view undrawn (walk_bench prints its
-# figures). Exit 77: ../shared/models is absent; with it present a missing
+# - the whole showroom in view (--orbit) as the kiosk service walks it,
+#   far parts drawn from their part levels: within the targets (no interior
+#   background, at most 0.5% differing) and at least one part drawn so; the
+#   mutant --test-part-levels-coarsest 1 must miss them (exit 1).
+# Exit 77: ../shared/models is absent; with it present a missing
 # part fails.
 set -uo pipefail
 build=$(cd "$1" && pwd) src=$(cd "$2" && pwd)
@@ -89,15 +91,41 @@ pictures() {   # pictures NAME ARGS...: walk_pictures.py into work/NAME, its exi
 }
 figure() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$@"; }
 
-pictures same --workers 0 --max-differing 0
+pictures same --workers 0 --part-levels 0 --max-differing 0
 rc=$?
 [ $rc -eq 0 ] || fail "--workers 0 against itself: exit $rc (0 expected; $work/same.out)"
 [ "$(figure "$work/same.json" interior_background_px_max)" -eq 0 ] || fail "same: holes"
 echo "ok   --workers 0 against the reference: no interior background, no pixel differs"
 
-pictures drop --workers 0 --test-drop-surface "$surface"
+pictures drop --workers 0 --part-levels 0 --test-drop-surface "$surface"
 rc=$?
 [ $rc -eq 1 ] || fail "without surface $surface: exit $rc (1 expected: the missing plate; $work/drop.out)"
 holes=$(figure "$work/drop.json" interior_background_px_max)
 [ "$holes" -gt 0 ] || fail "without surface $surface: no interior background pixel"
 echo "ok   without surface $surface: $holes interior background px (frame $(figure "$work/drop.json" interior_background_frame))"
+
+# The whole showroom in view (--orbit), walked as the kiosk service walks
+# it: far parts are drawn whole from their part levels, and the pictures
+# must still meet the targets; the mutant drawing every part from its
+# coarsest level must not.
+orbit() { # orbit NAME FLAGS...: 16 frames, every one compared
+  local name=$1
+  shift
+  python3 "$src/tests/walk_pictures.py" "$work/showroom.swpack" orbit "$build" "$work/$name" \
+    640x360 16 --every 1 --max-differing 0.005 --json "$work/$name.json" "$@" \
+    > "$work/$name.out" 2>&1
+  local rc=$?
+  sed "s|$work/||g; s/^/  /" "$work/$name.out" | tail -n 6
+  return $rc
+}
+orbit orbit
+rc=$?
+[ $rc -eq 0 ] || fail "the orbit with part levels: exit $rc (0 expected; $work/orbit.out)"
+parts=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['part_levels']['parts_max'])" \
+  "$work/orbit/test.json")
+[ "$parts" -gt 0 ] || fail "the orbit drew no part from a part level"
+echo "ok   the orbit: $parts parts drawn from part levels, pictures within the targets"
+orbit coarsest --test-part-levels-coarsest 1
+rc=$?
+[ $rc -eq 1 ] || fail "every part at its coarsest level: exit $rc (1 expected; $work/coarsest.out)"
+echo "ok   every part at its coarsest level: $(figure "$work/coarsest.json" differing_fraction_max) of the pixels differ"

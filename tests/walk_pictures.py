@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """A walk judged by its pictures, as a person would judge it:
   walk_pictures.py PACK PATH BUILD_DIR OUT_DIR [SIZE] [FRAMES] [--every K]
-                   [--workers N] [--test-drop-surface S] [--test-standin-silhouettes 0|1]
+                   [--workers N] [--part-levels 0|1] [--test-part-levels-coarsest 0|1]
+                   [--test-drop-surface S]
+                   [--test-standin-silhouettes 0|1]
                    [--max-error-px E]
                    [--memory-mb M] [--max-differing F] [--json FILE]
 PACK is walked along PATH (a camera path file, or `orbit` for --orbit: the
@@ -37,6 +39,9 @@ or a comparison fails or no reference picture shows the model.
 --test-standin-silhouettes 0: the test walk's stand-ins where a silhouette may
 cross them take their level by its error alone (the mutant whose silhouettes
 leave slits between columns).
+--part-levels 0|1: passed to the test walk (default: seamwalk's, on).
+--test-part-levels-coarsest 1: the test walk draws every part in view from
+its coarsest part level (a mutant: the comparison must see it).
 --test-drop-surface S: the test walk never draws surface S (a mutant: the
 comparison must see it).
 Limits: writing a picture stops the GL thread (read back, PNG) while the
@@ -148,6 +153,8 @@ def parse_args(argv):
     ap.add_argument("--workers", type=int)
     ap.add_argument("--test-drop-surface", type=int)
     ap.add_argument("--test-standin-silhouettes", type=int)
+    ap.add_argument("--part-levels", type=int, choices=(0, 1))
+    ap.add_argument("--test-part-levels-coarsest", type=int, choices=(0, 1))
     ap.add_argument("--max-error-px", type=float)
     ap.add_argument("--memory-mb", type=int)
     ap.add_argument("--max-differing", type=float)
@@ -173,6 +180,10 @@ def main(argv):
         test_flags += ["--workers", str(a.workers)]
     if a.test_drop_surface is not None:
         test_flags += ["--test-drop-surface", str(a.test_drop_surface)]
+    if a.part_levels is not None:
+        test_flags += ["--part-levels", str(a.part_levels)]
+    if a.test_part_levels_coarsest is not None:
+        test_flags += ["--test-part-levels-coarsest", str(a.test_part_levels_coarsest)]
     if a.test_standin_silhouettes is not None:
         test_flags += ["--test-standin-silhouettes", str(a.test_standin_silhouettes)]
     ref_flags = ["--workers", "0", "--part-levels", "0"]

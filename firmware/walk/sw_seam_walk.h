@@ -252,6 +252,7 @@ typedef struct sw_seam_walk {
      * sw_seam_walk_init_frames: */
     const sw_part_levels *part_levels;
     int no_part_levels;
+    int part_levels_coarsest;     /* tests' mutant: each part from its coarsest level */
     uint32_t *part_level;         /* part_count: the level drawn this frame, UINT32_MAX none */
     double *part_depth;           /* part_count: its surfaces' nearest depth in view */
     int standin_silhouettes;      /* 1: where a silhouette may cross a stand-in its level is

@@ -38,11 +38,15 @@ void sw_seam_walk_choose_parts(sw_seam_walk *w, const sw_view *view, sw_seam_fra
         if (in_view(w->visible[s]))
             w->part_depth[p] = fmin(w->part_depth[p], w->cull_near[s]);
     }
-    for (uint32_t p = 0; p < pl->part_count; p++)
-        if (isfinite(w->part_depth[p]))
-            w->part_level[p] = coarsest_within(
-                pl, p, sw_view_error_world(view, w->error_px, fmax(w->part_depth[p],
-                                                                    view->near_z)));
+    for (uint32_t p = 0; p < pl->part_count; p++) {
+        if (!isfinite(w->part_depth[p]))
+            continue;
+        double bound = w->part_levels_coarsest
+                           ? INFINITY
+                           : sw_view_error_world(view, w->error_px,
+                                                 fmax(w->part_depth[p], view->near_z));
+        w->part_level[p] = coarsest_within(pl, p, bound);
+    }
     for (uint32_t s = 0; s < n; s++)
         if (in_view(w->visible[s]) && w->part_level[w->pack->surfaces[s].part] != UINT32_MAX) {
             w->visible[s] = SW_SEAM_WALK_PART;
