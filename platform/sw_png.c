@@ -14,12 +14,14 @@
 #include "sw_png.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <setjmp.h>
 #include <stdalign.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 /* Every stb block gets the alignment malloc would give it. */
 #define PNG_ALIGN alignof(max_align_t)
@@ -131,23 +133,45 @@ static sw_status check_args(const char *path, int width, int height, int channel
     return SW_OK;
 }
 
+/* Written whole or not at all: into a temporary beside path, renamed over
+ * it. A walk stopped mid-write (SIGTERM, a full disk) then leaves the
+ * frame before it as it was and no truncated PNG that passes for a frame.
+ * No fsync: a picture is not worth a flush per frame, and a power cut
+ * loses at most the newest frames whole. */
 static sw_status write_file(const char *path, const unsigned char *bytes, size_t size,
                             sw_error *err)
 {
-    FILE *f = fopen(path, "wb");
-    if (!f)
-        return sw_error_set(err, SW_ERR_IO, "png %s: cannot open for writing: %s", path,
+    char tmp[4096];
+    if (snprintf(tmp, sizeof tmp, "%s.tmp", path) >= (int)sizeof tmp)
+        return sw_error_set(err, SW_ERR_ARG, "png %s: path too long", path);
+    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0)
+        return sw_error_set(err, SW_ERR_IO, "png %s: cannot open for writing: %s", tmp,
                             strerror(errno));
-    size_t written = fwrite(bytes, 1, size, f);
-    int write_errno = errno;
-    if (fclose(f) != 0 && written == size) {
-        write_errno = errno;
-        written = 0;
+    size_t at = 0;
+    int write_errno = 0;
+    while (at < size) {
+        ssize_t n = write(fd, bytes + at, size - at);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            write_errno = n < 0 ? errno : ENOSPC;
+            break;
+        }
+        at += (size_t)n;
     }
-    if (written != size) {
-        remove(path);   /* a truncated PNG must not pass for a frame */
-        return sw_error_set(err, SW_ERR_IO, "png %s: writing %zu bytes failed: %s", path, size,
+    if (close(fd) != 0 && at == size)
+        write_errno = errno, at = 0;
+    if (at != size) {
+        remove(tmp);
+        return sw_error_set(err, SW_ERR_IO, "png %s: writing %zu bytes failed: %s", tmp, size,
                             strerror(write_errno));
+    }
+    if (rename(tmp, path) != 0) {
+        int e = errno;
+        remove(tmp);
+        return sw_error_set(err, SW_ERR_IO, "png %s: rename from %s: %s", path, tmp,
+                            strerror(e));
     }
     return SW_OK;
 }

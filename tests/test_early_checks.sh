@@ -95,6 +95,20 @@ check "--stats on a full disk: no temporary left" [ ! -e "$work/full/stats.json.
 "$walker" --pack "$work/spoon.swpack" --headless 64x48 --orbit --frames 2 \
   --stats "$work/full/stats.json" >/dev/null 2>&1
 check "--stats with room: written whole" python3 -c "import json; json.load(open('$work/full/stats.json'))['frames']"
+# A frame's picture the same way: a full disk mid-frame leaves the picture
+# that was there whole, and no truncated PNG or temporary.
+mkdir -p "$work/full/png"
+"$walker" --pack "$work/spoon.swpack" --headless 64x48 --orbit --frames 1 \
+  --png-dir "$work/full/png" >/dev/null 2>&1
+cp "$work/full/png/frame_00000.png" "$work/frame_before.png"
+LD_PRELOAD=$shim ASAN_OPTIONS=verify_asan_link_order=0 SW_FAULT_FULL_AFTER=100 \
+  "$walker" --pack "$work/spoon.swpack" --headless 64x48 --orbit --frames 1 \
+  --png-dir "$work/full/png" >/dev/null 2>"$work/err"
+echo $? >"$work/rc"
+check "--png-dir on a full disk: fails" rc 1
+check "--png-dir on a full disk: says so" said "frame_00000.png.tmp: writing .*No space left on device"
+check "--png-dir on a full disk: the old picture as it was" cmp -s "$work/frame_before.png" "$work/full/png/frame_00000.png"
+check "--png-dir on a full disk: no temporary left" [ ! -e "$work/full/png/frame_00000.png.tmp" ]
 
 # ---- a reader that crashes ------------------------------------------------------------
 # OpenCASCADE's STEP reader crashes on some damaged files (fuzz_step_occt
