@@ -118,7 +118,8 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
         return st;
     w->cull_tree_ms = sw_seam_walk_ms_since(&t0);
     for (size_t k = 0; k < n; k++)
-        w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0, w->sew_offset[k] = -1;
+        w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0, w->sew_offset[k] = -1,
+        w->depth[k] = INFINITY;
     memset(w->dirty, 0, n);
     uint32_t cache = sw_walk_cache_vertices(&pack->seam, pack->surfaces);
     return sw_seam_cache_init(&w->cache, (uint32_t)n, cache, sw_walk_cache_indices(cache), arena,
@@ -152,19 +153,22 @@ static int still_valid(const sw_seam_entry *e, float t, double b)
 
 /* Surface s's target for this frame's bound (0 out of view) and its seams'
  * share; 1 when that share changed. The threaded walk's first frame asks
- * for SW_SEAM_FIRST_COARSER times the bound (the coarsest start). */
-static int choose_target(sw_seam_walk *w, uint32_t s, double bound)
+ * for SW_SEAM_FIRST_COARSER times the bound (the coarsest start). ahead
+ * (<= bound) is the bound a few frames on (ahead_bound): a kept mesh that
+ * will not serve it is made again now, for it. */
+static int choose_target(sw_seam_walk *w, uint32_t s, double bound, double ahead)
 {
     const sw_seam_entry *e = &w->cache.entries[s];
     if (w->visible[s] == 1) {
         bound = fmax(bound, (double)w->bound_floor);
+        ahead = fmin(fmax(ahead, (double)w->bound_floor), bound);
         w->want[s] = (float)bound;
         if (sw_seam_walk_coarse_start(w, 0))
-            bound *= SW_SEAM_FIRST_COARSER;
+            bound *= SW_SEAM_FIRST_COARSER, ahead = bound;
         if (w->no_cache)
             w->target[s] = (float)bound;
-        else if (!still_valid(e, w->target[s], bound))
-            w->target[s] = sw_seam_walk_level_of(bound);
+        else if (!still_valid(e, w->target[s], bound) || w->target[s] > ahead)
+            w->target[s] = sw_seam_walk_level_of(ahead);
     } else if (e->state != SW_SEAM_READY && !w->busy[s]) {
         w->target[s] = SW_SEAM_INVISIBLE_BOUND;
     }
@@ -212,6 +216,29 @@ static float culled_want(const sw_seam_walk *w, const sw_view *view, uint32_t s)
     return (float)fmax(bound, (double)w->bound_floor);
 }
 
+/* How many frames ahead the threaded walk makes meshes for: about a
+ * batch's way from scheduled to drawn. A mesh made for the bound of the
+ * frame it was asked in is behind it (coarser than the view asks) by the
+ * time it is drawn whenever the eye comes closer, and stays so until the
+ * next; where two silhouettes meet, such a mesh left a pixel of background
+ * between them. */
+#define SW_SEAM_LOOKAHEAD_FRAMES 2.0
+
+/* The bound surface s will need SW_SEAM_LOOKAHEAD_FRAMES on, were the eye
+ * to keep coming closer to it as it did since the last frame (its nearest
+ * depth then in w->depth), at most twice as close; the bound itself
+ * without workers (each frame's meshes are made in it), when it is not
+ * coming closer, or was not in view. */
+static double ahead_bound(const sw_seam_walk *w, const sw_view *view, uint32_t s, double depth,
+                          double bound)
+{
+    double last = w->depth[s];
+    if (!sw_seam_walk_async(w) || !isfinite(depth) || !isfinite(last) || !(last > depth))
+        return bound;
+    double ahead = fmax(depth - SW_SEAM_LOOKAHEAD_FRAMES * (last - depth), 0.5 * depth);
+    return sw_view_error_world(view, w->error_px, fmax(ahead, view->near_z));
+}
+
 /* Visible when any of its patches' boxes is (the culling tree's answer,
  * w->cull_near); depth the nearest of those.
  * A visible surface whose whole box fits within its bound is too small to
@@ -224,8 +251,9 @@ static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32
 {
     double depth = w->cull_near[s];
     w->visible[s] = isfinite(depth);
-    w->depth[s] = (float)depth;
     double bound = w->visible[s] ? sw_view_error_world(view, w->error_px, depth) : 0.0;
+    double ahead = ahead_bound(w, view, s, depth, bound);
+    w->depth[s] = (float)depth;
     int away = 0;
     if (w->visible[s]) {
         sw_box all = sw_cull_tree_surface_box(&w->cull_tree, s);
@@ -241,7 +269,7 @@ static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32
      * more, but then its target's hysteresis and cache residency, and
      * through the seams its neighbours' meshes, would differ within the
      * bound from a walk without cone culling.) */
-    int changed = choose_target(w, s, bound);
+    int changed = choose_target(w, s, bound, ahead);
     if (!w->visible[s])
         w->want[s] = culled_want(w, view, s);
     if (away)

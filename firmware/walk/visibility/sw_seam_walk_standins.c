@@ -207,6 +207,26 @@ static int make_room(sw_seam_walk *w, sw_seam_frame *frame)
     return gone > 0;
 }
 
+/* 1 when the front s's stand-in was joined to (w->mixed_shown, at s's
+ * originals) shows every vertex within the seams' share of s's own bound
+ * this frame (w->want): gone in those loops, s then vanishes within its
+ * bound, as the walk's own mesh made in the frame would. (The select's
+ * front is moved for the targets, which may be finer than the bound: a
+ * mesh is made for a level at or below it, and, coming closer, for the
+ * bound a few frames on.) */
+static int joined_within_bound(const sw_seam_walk *w, uint32_t s)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    float within = (float)SW_SEAM_SHARE * w->want[s];
+    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+        for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
+            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
+            if (g->vertices[w->mixed_shown[w->select.leaf_lo[o]]].error > within)
+                return 0;
+        }
+    return 1;
+}
+
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
 {
     uint32_t level = standin_level(w, s);
@@ -232,7 +252,8 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
      * bound, as the walk's own mesh would (the paper's vanishing patch),
      * until its mesh is made. */
     int vanished = e->state == SW_SEAM_GONE &&
-                   sw_seam_standin_vanishes(w->standins, &w->select, s);
+                   (joined_within_bound(w, s) ||
+                    sw_seam_standin_vanishes(w->standins, &w->select, s));
     if (e->state != SW_SEAM_READY && !vanished)
         memset(e, 0, sizeof *e);
     e->last_frame = last;
