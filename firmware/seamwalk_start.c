@@ -202,6 +202,7 @@ static sw_status init_seams(sw_program *rt, double *mark_s, sw_error *err)
         rt->seam.drop_surface = (uint32_t)rt->opt.drop_surface;
     rt->seam.no_standins = !rt->opt.static_levels;
     rt->seam.no_part_levels = !rt->opt.part_levels;
+    rt->seam.no_leaner_standins = !rt->opt.leaner_standins;
     rt->seam.part_levels_coarsest = rt->opt.part_levels_coarsest;
     rt->stats.start_walk_init_ms = lap_ms(mark_s);
     if (st == SW_OK)

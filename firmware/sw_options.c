@@ -99,6 +99,7 @@ static void set_defaults(sw_options *o)
     o->fill_crossings = 1;
     o->static_levels = 1;
     o->part_levels = 1;
+    o->leaner_standins = 1;
     o->cone_cull = 1;
     o->drop_surface = -1;
     o->workers = c->budget_workers;   /* -1: cores - 1, at least 1, decided in main */
@@ -279,6 +280,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
             st = parse_int(a, v, 0, 1, &o->static_levels, err);
         } else if (!strcmp(a, "--part-levels")) {
             st = parse_int(a, v, 0, 1, &o->part_levels, err);
+        } else if (!strcmp(a, "--leaner-standins")) {
+            st = parse_int(a, v, 0, 1, &o->leaner_standins, err);
         } else if (!strcmp(a, "--fill-crossings")) {
             st = parse_int(a, v, 0, 1, &o->fill_crossings, err);
         } else if (!strcmp(a, "--test-drop-surface")) {
@@ -329,6 +332,7 @@ void sw_options_print_usage(FILE *out, const char *argv0)
             "          [--config FILE] [--pose-log FILE] [--no-cache] [--background R,G,B]\n"
             "          [--back-faces lit|hidden|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
             "          [--fill-crossings 0|1] [--static-levels 0|1] [--part-levels 0|1]\n"
+            "          [--leaner-standins 0|1]\n"
             "          [--cone-cull 0|1]\n"
             "          [--cull tree|brute]\n"
             "          [--workers N] [--target-ms MS] [--visibility-thread 0|1]\n"
@@ -446,6 +450,10 @@ void sw_options_print_usage(FILE *out, const char *argv0)
             "  --part-levels 0|1   a part far enough away is drawn whole from one of the\n"
             "                      pack's part levels, within the bound (1, default), or\n"
             "                      surface by surface (0)\n"
+            "  --leaner-standins 0|1  with workers, a stand-in within its bound but made for\n"
+            "                      one 1.6 times finer or more gets the walk's own mesh\n"
+            "                      when the workers have budget left (1, default: fewer\n"
+            "                      triangles to draw), or stays (0)\n"
             "  --fill-crossings 0|1  close each seam crossing (a T-junction with the surface\n"
             "                      across) with a zero-area fan (1, default), or not (0:\n"
             "                      single-pixel pinholes open along such seams)\n"

@@ -55,6 +55,8 @@ typedef struct sw_options {
                                     meshes not made yet (1, default) */
     int part_levels;             /* --part-levels 0|1: far parts drawn whole from the pack's
                                     part levels (1, default) */
+    int leaner_standins;         /* --leaner-standins 0|1: stand-ins far finer than their
+                                    bound replaced by the walk's own meshes (1, default) */
     int fill_crossings;          /* --fill-crossings 0|1: fans over seam crossings (1, default;
                                     0 shows the T-junction pinholes they close) */
     long drop_surface;           /* --test-drop-surface S: surface S is never drawn (a

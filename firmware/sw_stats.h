@@ -92,6 +92,7 @@ typedef struct sw_stats {
     uint32_t waiting_max;        /* visible surfaces with no mesh yet, the most of a frame */
     uint32_t standins_max;       /* drawn from a static level while their mesh is made */
     uint64_t standins_made;      /* stand-ins made (sw_seam_standin.h) */
+    uint64_t standins_leaner;    /* jobs giving stand-ins finer than needed the walk's own mesh */
     uint64_t standin_triangles;  /* the stand-ins drew, over every frame */
     uint64_t standin_triangles_max; /* of a frame */
     uint32_t part_levels_max;    /* parts drawn whole from a part level, the most of a frame */
@@ -172,8 +173,10 @@ void sw_stats_add_update_cap(sw_stats *s, double used, double cap);
 
 /* The threaded walk's frame: waiting and behind surfaces, frames behind,
  * the bound ratio, jobs and whether a batch was swapped in, the budget. */
-/* The threaded walk's stand-ins: drawn this frame, and made. */
-void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint64_t triangles);
+/* The threaded walk's stand-ins: drawn this frame, made, their triangles,
+ * and the jobs scheduled to replace the ones finer than needed. */
+void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint64_t triangles,
+                           uint32_t leaner_jobs);
 void sw_stats_add_part_levels(sw_stats *s, uint32_t parts, uint32_t covered, uint64_t triangles);
 
 void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,

@@ -7,7 +7,9 @@
 # columns seen one behind another, their silhouettes meeting, most of them
 # drawn from static levels. Against the reference walk (--workers 0):
 # - as built: no interior background pixel in any 10th frame (exit 0);
-# - the mutant --test-standin-silhouettes 0 (a stand-in's level chosen by its
+# - the stand-ins kept till the walk's meshes come for their bound
+#   (--leaner-standins 0): none either;
+# - that, with the mutant --test-standin-silhouettes 0 (a stand-in's level chosen by its
 #   error alone where a silhouette crosses it, not by the bound it was made
 #   for): slits of background between columns (exit 1, interior background
 #   above 0).
@@ -39,7 +41,14 @@ pictures built
 rc=$?
 grep -E "interior background px max|differing max|undrawn" "$work/built.log"
 [ $rc -eq 0 ] || fail "as built: exit $rc ($work/built.log)"
-pictures mutant --test-standin-silhouettes 0
+# The stand-ins themselves, kept until the walk's own meshes come for
+# their bound (as built, ones far finer than their bound are soon replaced
+# by leaner meshes, and the mutant's slits would not last to be seen).
+pictures kept --leaner-standins 0
+rc=$?
+grep -E "interior background px max" "$work/kept.log" | sed 's/^/kept:/'
+[ $rc -eq 0 ] || fail "stand-ins kept: exit $rc ($work/kept.log)"
+pictures mutant --leaner-standins 0 --test-standin-silhouettes 0
 rc=$?
 grep -E "interior background px max" "$work/mutant.log" | sed 's/^/mutant:/'
 [ $rc -eq 1 ] || fail "the mutant --test-standin-silhouettes 0: exit $rc, expected 1 (slits seen)"

@@ -124,7 +124,13 @@ rc=$?
 parts=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['part_levels']['parts_max'])" \
   "$work/orbit/test.json")
 [ "$parts" -gt 0 ] || fail "the orbit drew no part from a part level"
-echo "ok   the orbit: $parts parts drawn from part levels, pictures within the targets"
+# Stand-ins far finer than their bound are replaced by the walk's own
+# meshes when the workers have budget left: those pictures are the ones
+# judged above.
+leaner=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['threads']['standins_leaner_jobs'])" \
+  "$work/orbit/test.json")
+[ "$leaner" -gt 0 ] || fail "the orbit gave no stand-in a leaner mesh of the walk's own"
+echo "ok   the orbit: $parts parts drawn from part levels, $leaner stand-ins given leaner meshes, pictures within the targets"
 orbit coarsest --test-part-levels-coarsest 1
 rc=$?
 [ $rc -eq 1 ] || fail "every part at its coarsest level: exit $rc (1 expected; $work/coarsest.out)"

@@ -39,7 +39,8 @@ or a comparison fails or no reference picture shows the model.
 --test-standin-silhouettes 0: the test walk's stand-ins where a silhouette may
 cross them take their level by its error alone (the mutant whose silhouettes
 leave slits between columns).
---part-levels 0|1: passed to the test walk (default: seamwalk's, on).
+--part-levels 0|1, --leaner-standins 0|1: passed to the test walk (default:
+seamwalk's, on).
 --test-part-levels-coarsest 1: the test walk draws every part in view from
 its coarsest part level (a mutant: the comparison must see it).
 --test-drop-surface S: the test walk never draws surface S (a mutant: the
@@ -154,6 +155,7 @@ def parse_args(argv):
     ap.add_argument("--test-drop-surface", type=int)
     ap.add_argument("--test-standin-silhouettes", type=int)
     ap.add_argument("--part-levels", type=int, choices=(0, 1))
+    ap.add_argument("--leaner-standins", type=int, choices=(0, 1))
     ap.add_argument("--test-part-levels-coarsest", type=int, choices=(0, 1))
     ap.add_argument("--max-error-px", type=float)
     ap.add_argument("--memory-mb", type=int)
@@ -182,6 +184,8 @@ def main(argv):
         test_flags += ["--test-drop-surface", str(a.test_drop_surface)]
     if a.part_levels is not None:
         test_flags += ["--part-levels", str(a.part_levels)]
+    if a.leaner_standins is not None:
+        test_flags += ["--leaner-standins", str(a.leaner_standins)]
     if a.test_part_levels_coarsest is not None:
         test_flags += ["--test-part-levels-coarsest", str(a.test_part_levels_coarsest)]
     if a.test_standin_silhouettes is not None:

@@ -168,6 +168,8 @@ typedef struct sw_seam_frame {
     double behind_ratio;          /* the most a drawn mesh's bound exceeds the view's */
     uint32_t jobs_scheduled;      /* jobs this frame started */
     uint32_t jobs_prefetch;       /* of them, out of view by w' (with budget left) */
+    uint32_t jobs_leaner;         /* of them, for stand-ins in view finer than their target
+                                     needs (with budget left) */
     uint32_t batches_committed;   /* batches swapped in this frame (0 or 1) */
     double budget_tris;           /* N + M this frame */
     double budget_used;           /* triangles scheduled over N + M */
@@ -247,6 +249,7 @@ typedef struct sw_seam_walk {
      * levels; NULL otherwise (a surface in view waits for its mesh). */
     sw_seam_standin *standins;
     int no_standins;              /* set before the workers start: none even with levels */
+    int no_leaner_standins;       /* stand-ins finer than needed stay (no leaner jobs) */
     /* Part levels (core/sw_part_levels.h; visibility/sw_seam_part_levels.c),
      * V's; NULL when the pack has none or no_part_levels was set before
      * sw_seam_walk_init_frames: */

@@ -99,6 +99,16 @@ void sw_seam_walk_plan_parts(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame 
  * (sw_seam_walk_standins.c). */
 int sw_seam_walk_standin_serves(const sw_seam_walk *w, uint32_t s);
 
+/* V: that worth, INFINITY when s has no level announced. */
+float sw_seam_walk_standin_worth(const sw_seam_walk *w, uint32_t s);
+
+/* V: 1 when every surface sewn to s without a mesh of its own (the
+ * stand-ins, and those not drawn yet) keeps its outer loops with s's seams
+ * at the walk's share of bound: a mesh of s's own made for bound leaves
+ * none of them gone in the loops it is joined to (a stand-in so gone
+ * waits, undrawn, for a mesh of its own). */
+int sw_seam_walk_leaner_keeps_neighbours(const sw_seam_walk *w, uint32_t s, float bound);
+
 /* V: the error of the level surface s will stand in with (its target's)
  * into w->standin_error; when that changed, the stand-ins beside it are
  * marked to be made again, joined to it (sw_seam_walk_plan.c). */

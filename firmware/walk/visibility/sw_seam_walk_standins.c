@@ -135,12 +135,39 @@ static uint32_t announced_level(const sw_seam_walk *w, uint32_t s)
     return UINT32_MAX;
 }
 
-int sw_seam_walk_standin_serves(const sw_seam_walk *w, uint32_t s)
+float sw_seam_walk_standin_worth(const sw_seam_walk *w, uint32_t s)
 {
     uint32_t k = announced_level(w, s);
-    return k != UINT32_MAX &&
-           sw_seam_standin_worth(&w->pack->levels.levels[k], may_show_silhouette(w, s)) <=
-               w->target[s];
+    return k != UINT32_MAX
+               ? sw_seam_standin_worth(&w->pack->levels.levels[k], may_show_silhouette(w, s))
+               : INFINITY;
+}
+
+int sw_seam_walk_leaner_keeps_neighbours(const sw_seam_walk *w, uint32_t s, float bound)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    uint32_t last = UINT32_MAX;
+    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+        for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
+            const uint32_t *at = NULL;
+            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
+            uint32_t count = sw_seam_select_surfaces_at(&w->select, o, &at);
+            for (uint32_t i = 0; i < count; i++) {
+                uint32_t t = at[i];
+                int own_mesh = w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t];
+                if (t == s || t == last || own_mesh)
+                    continue;
+                if (!keeps_outer_loops(w, t, fmaxf(bound, w->standin_border[t])))
+                    return 0;
+                last = t;   /* runs of slots share the neighbour: checked once a run */
+            }
+        }
+    return 1;
+}
+
+int sw_seam_walk_standin_serves(const sw_seam_walk *w, uint32_t s)
+{
+    return sw_seam_walk_standin_worth(w, s) <= w->target[s];
 }
 
 void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)

@@ -186,6 +186,33 @@ static int wants_prefetch(const sw_seam_walk *w, uint32_t s, double *weight)
     return v > 0;
 }
 
+/* How much coarser than a leaner mesh's target its seams may come to be
+ * drawn (it falls behind as the eye comes closer, until made again) with
+ * every stand-in sewn to it keeping its loops (checked when it is chosen). */
+#define SW_SEAM_LEANER_MARGIN 2.0f
+
+/* A stand-in that serves its target but stands for a bound KEEP times
+ * finer or more (its level's worth; the levels are a factor of 4 apart,
+ * and at silhouettes one made for a bound at or below the target is
+ * taken): the walk's own mesh for the target has fewer triangles to draw,
+ * every frame it stays. 1 and a weight below 1 (by how much finer): made
+ * after all the work in view, in what its budget leaves; never with
+ * sync_work (the frames must be those of the walk without workers) nor
+ * when the cache is tight. */
+static int wants_leaner(const sw_seam_walk *w, uint32_t s, double *weight)
+{
+    const sw_seam_entry *e = &w->cache.entries[s];
+    if (w->no_leaner_standins || !w->standins || !w->standin[s] || w->visible[s] != 1 ||
+        e->state != SW_SEAM_READY ||
+        !sw_seam_walk_async(w) || w->room_tight || w->busy[s])
+        return 0;
+    double worth = sw_seam_walk_standin_worth(w, s), target = w->target[s];
+    if (!(worth * SW_SEAM_KEEP < target))
+        return 0;
+    *weight = 1.0 - worth / target;
+    return 1;
+}
+
 /* The batch takes all the work it finds, N and M aside: with sync_work,
  * and in a first frame that waits for it (select counts the frame after
  * the schedule). */
@@ -209,8 +236,11 @@ static double choose(sw_seam_walk *w, sw_seam_frame *frame)
             w->candidates[cands++] = (sw_seam_candidate){ (float)weight, s };
             continue;
         }
-        if (!wants_work(w, s, &weight))
+        if (!wants_work(w, s, &weight)) {
+            if (wants_leaner(w, s, &weight))
+                w->candidates[cands++] = (sw_seam_candidate){ (float)weight, s };
             continue;
+        }
         if (w->need_since[s] == UINT32_MAX)
             w->need_since[s] = w->frame;
         w->candidates[cands++] = (sw_seam_candidate){ (float)weight, s };
@@ -218,20 +248,25 @@ static double choose(sw_seam_walk *w, sw_seam_frame *frame)
     sw_seam_candidates_sort(w->candidates, cands);
     int unlimited = no_budget(w);
     /* Time left (paper 004): the culled go only when nothing in view waits;
-     * taken after visible work in the same batch they delayed its swap. */
+     * taken after visible work in the same batch they delayed its swap.
+     * Leaner meshes for stand-ins in view go after the work in view, in
+     * what its budget leaves: they are drawn every frame until made. */
     int time_left = cands == 0 || w->candidates[0].weight < 1.0f;
     double tris = 0;
     for (uint32_t i = 0; i < cands; i++) {
         uint32_t s = w->candidates[i].surface;
-        int culled = w->candidates[i].weight < 1.0f;
+        int low = w->candidates[i].weight < 1.0f, leaner = low && w->visible[s] == 1;
+        int culled = low && !leaner;
         if (culled && !time_left) {
             w->busy[s] = SW_PASSED;
             continue;
         }
         float target = culled ? sw_seam_walk_level_of(w->want[s]) : w->target[s];
         double est = estimate_tris(w, s, target);
-        int take = culled ? tris + est <= w->budget.new_tris
-                          : unlimited || i == 0 || tris + est <= w->budget.new_tris;
+        int take = low ? tris + est <= w->budget.new_tris
+                       : unlimited || i == 0 || tris + est <= w->budget.new_tris;
+        take = take && (!leaner || sw_seam_walk_leaner_keeps_neighbours(
+                                       w, s, SW_SEAM_LEANER_MARGIN * target));
         w->busy[s] = take ? SW_CHOSEN : SW_PASSED;
         tris += take ? est : 0;
         frame->jobs_scheduled += (uint32_t)take;
@@ -239,6 +274,7 @@ static double choose(sw_seam_walk *w, sw_seam_frame *frame)
             w->target[s] = target;
             frame->jobs_prefetch++;
         }
+        frame->jobs_leaner += (uint32_t)(take && leaner);
     }
     return tris;
 }
@@ -337,6 +373,7 @@ void sw_seam_walk_take_deferred(sw_seam_walk *w, sw_seam_frame *frame)
 {
     const sw_seam_frame *d = &w->deferred;
     frame->jobs_scheduled = d->jobs_scheduled, frame->jobs_prefetch = d->jobs_prefetch;
+    frame->jobs_leaner = d->jobs_leaner;
     frame->updated_tris = d->updated_tris, frame->updated_cap = d->updated_cap;
     frame->budget_tris = d->budget_tris, frame->budget_used = d->budget_used;
     frame->seam_ops = d->seam_ops;
