@@ -300,19 +300,29 @@ def unmeasured_walk(sc):
             "tris": s["tris_per_frame"]["median"], "frames": s["frames"],
             "waiting_surfaces_max": s["threads"]["waiting_surfaces_max"],
             "standins_max": s["threads"]["standins_max"],
-            "static_levels_off": static_levels_off(sc),
+            "static_levels_off": walk_without(sc, "unmeasured_no_levels", "--static-levels"),
+            "part_levels_off": walk_without(sc, "unmeasured_no_part_levels", "--part-levels"),
+            "leaner_standins_off": walk_without(sc, "unmeasured_no_leaner",
+                                                "--leaner-standins"),
             "pictures": walk_pictures(sc)}
 
 
-def static_levels_off(sc):
-    """The same walk measuring nothing with --static-levels 0: no stand-in
-    for a surface whose mesh is not made yet (it waits, undrawn), the row
-    to hold the stand-ins' cost and gain against, same path, same run."""
-    out = sc.run_seamwalk("unmeasured_no_levels", sc.a.frames, 0,
-                          AS_BUILT_FLAGS + ["--static-levels", "0"])
+# The rows walk_without runs, printed against the walk as built: the
+# option turned off, what it does, and the JSON key (unmeasured_walk.KEY).
+WITHOUT_ROWS = [("--static-levels", "static levels (stand-ins for meshes not made yet)",
+                 "static_levels_off"),
+                ("--part-levels", "part levels (far parts drawn whole)", "part_levels_off"),
+                ("--leaner-standins", "leaner meshes for stand-ins finer than needed",
+                 "leaner_standins_off")]
+
+
+def walk_without(sc, name, option):
+    """The same walk measuring nothing with OPTION 0, same path, same run:
+    the row to hold that part's cost and gain against (--static-levels 0:
+    a surface whose mesh is not made yet waits, undrawn)."""
+    out = sc.run_seamwalk(name, sc.a.frames, 0, AS_BUILT_FLAGS + [option, "0"])
     if not out:
-        sc.failures.append("the walk with --static-levels 0 failed (%s.log)"
-                           % sc.stats_file("unmeasured_no_levels"))
+        sc.failures.append("the walk with %s 0 failed (%s.log)" % (option, sc.stats_file(name)))
         return None
     with open(out) as f:
         s = json.load(f)
@@ -498,13 +508,15 @@ def print_scene(a, sc):
               "runs): frame p50 %.1f ms, p99 %.1f ms, %d triangles a frame (median); up to %d "
               "surfaces in view left undrawn (no mesh yet); its error is not measured"
               % (u["p50"], u["p99"], u["tris"], u["waiting_surfaces_max"]))
-        off = u["static_levels_off"]
-        if off:
-            print("  static levels on (up to %d stand-ins a frame) against off (--static-levels "
-                  "0), same path: frame p50 %.1f against %.1f ms, p99 %.1f against %.1f ms, "
-                  "%d against %d triangles, undrawn max %d against %d"
-                  % (u["standins_max"], u["p50"], off["p50"], u["p99"], off["p99"], u["tris"],
-                     off["tris"], u["waiting_surfaces_max"], off["waiting_surfaces_max"]))
+        print("  up to %d stand-ins a frame" % u["standins_max"])
+        for option, what, key in WITHOUT_ROWS:
+            off = u.get(key)
+            if off:
+                print("  %s on against off (%s 0), same path: frame p50 %.1f against %.1f ms, "
+                      "p99 %.1f against %.1f ms, %d against %d triangles, undrawn max %d "
+                      "against %d"
+                      % (what, option, u["p50"], off["p50"], u["p99"], off["p99"], u["tris"],
+                         off["tris"], u["waiting_surfaces_max"], off["waiting_surfaces_max"]))
         p = u["pictures"]
         if p:
             print("  its pictures, one frame in %d (%d compared, %d with the model), against "
