@@ -48,7 +48,7 @@ static const char usage_text[] =
     "       seamwalk-pack keygen -o PREFIX\n"
     "       seamwalk-pack sign PACK --key PREFIX.key --version N --name NAME [-o OUT]\n"
     "       seamwalk-pack gen showroom --patches N -o SCENE.ini [--part FILE]... [--seed S]\n"
-    "       seamwalk-pack --help\n"
+    "       seamwalk-pack --help | --version\n"
     "INPUT: a Newell listing (.txt), Bezier patch text (.bpt), IGES (.igs, .iges),\n"
     "STEP (.stp, .step) or a scene (.ini). Each file becomes one part named after\n"
     "it; a scene adds its parts. IGES is read by the native reader unless\n"
@@ -686,6 +686,10 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         fputs(usage_text, stdout);
         return 0;
+    }
+    if (strcmp(cmd, "--version") == 0) {
+        puts("seamwalk-pack " SW_VERSION);
+        return fflush(stdout) == 0 ? 0 : 1;
     }
     int rc;
     if (strcmp(cmd, "build") == 0)

@@ -34,6 +34,7 @@ static const char usage_text[] =
     "       seamwalk-flash rollback [--store DIR]\n"
     "       seamwalk-flash boot-check [--store DIR] [--attempts K]\n"
     "       seamwalk-flash repair [--store DIR]\n"
+    "       seamwalk-flash --help | --version\n"
     "every command also takes [--config FILE] [--keys FILE]\n"
     "--config: the unit's config (default /etc/seamwalk/seamwalk.ini, if it\n"
     "exists): its [pack] store is the default DIR, its [pack] keys the unit's\n"
@@ -499,6 +500,10 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         fputs(usage_text, stdout);
         return EXIT_OK;
+    }
+    if (strcmp(cmd, "--version") == 0) {
+        puts("seamwalk-flash " SW_VERSION);
+        return fflush(stdout) == 0 ? EXIT_OK : 1;
     }
     args a = { 0 };
     int rc = parse_args(argc - 2, argv + 2, &a);

@@ -449,6 +449,10 @@ int main(int argc, char **argv)
         sw_options_print_usage(stdout, argv[0]);
         return fflush(stdout) == 0 ? 0 : 1;
     }
+    if (rt.opt.version) {
+        puts("seamwalk " SW_VERSION);
+        return fflush(stdout) == 0 ? 0 : 1;
+    }
     /* A service stop (SIGTERM) or Ctrl-C ends the walk after the frame, so
      * the stats are written and a KMS display gives the screen back. */
     struct sigaction stop_walk_on = {.sa_handler = sw_display_close_on_signal};

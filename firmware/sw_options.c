@@ -201,6 +201,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             o->help = 1;
             return SW_OK;
+        } else if (!strcmp(a, "--version")) {
+            o->version = 1;
+            return SW_OK;
         } else if (!strcmp(a, "--orbit")) {
             o->orbit = 1;
             takes_value = 0;
@@ -323,7 +326,8 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
 void sw_options_print_usage(FILE *out, const char *argv0)
 {
     fprintf(out,
-            "usage: %s (--pack FILE | --store DIR)\n"
+            "usage: %s --help | --version\n"
+            "       %s (--pack FILE | --store DIR)\n"
             "          (--path FILE | --orbit | --view NAME | --navigate | --input-timeline FILE)\n"
             "          [--display auto|headless|kms|x11|wayland] [--size WxH] [--headless WxH]\n"
             "          [--frames N] [--duration S] [--png-dir DIR] [--png-every K]\n"
@@ -459,5 +463,5 @@ void sw_options_print_usage(FILE *out, const char *argv0)
             "                      single-pixel pinholes open along such seams)\n"
             "  --test-drop-surface S  never draw surface S: a hole on purpose, for the image\n"
             "                      tests' mutants\n",
-            argv0);
+            argv0, argv0);
 }

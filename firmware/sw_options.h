@@ -82,6 +82,7 @@ typedef struct sw_options {
     int test_grow_kb;            /* --test-grow-kb K: K kB more resident at each loop's end
                                     (tests: the soak must fail on it); 0 */
     int help;
+    int version;                 /* --version: print it and exit */
     const char *config_path;     /* --config FILE, or NULL: no file is read */
     /* The file's values. pack_path, store_dir and keys_path may point into
      * it, so an sw_options stays where it was parsed (or is copied back). */

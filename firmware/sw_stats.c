@@ -422,7 +422,7 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
     memcpy(ms, s->frame_ms, (size_t)n * sizeof(float));
     sw_percentiles fms = sw_percentiles_of(ms, n), tri = sw_percentiles_of(tris, n);
     sw_percentiles visible = sw_percentiles_of(vis, n);
-    fprintf(f, "{\n  \"frames\": %d,\n", n);
+    fprintf(f, "{\n  \"version\": \"%s\",\n  \"frames\": %d,\n", SW_VERSION, n);
     fprintf(f, "  \"frame_ms\": {\"p50\": %.3f, \"p90\": %.3f, \"p99\": %.3f, \"max\": %.3f},\n",
             fms.p50, fms.p90, fms.p99, fms.max);
     fprintf(f, "  \"fps_median\": %.2f,\n", fms.p50 > 0 ? 1000.0 / fms.p50 : 0.0);

@@ -93,3 +93,9 @@ set_tests_properties(test_flash_keys PROPERTIES FIXTURES_REQUIRED flash_packs SK
 add_test(NAME test_early_checks COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_early_checks.sh
          $<TARGET_FILE:seamwalk-pack> $<TARGET_FILE:seamwalk> $<TARGET_FILE:flash_fault_shim>
          ${SW_SAMPLES} ${CMAKE_CURRENT_BINARY_DIR}/early_checks)
+
+# One version: each program's --version and the stats' (CMake's project
+# version, the one source).
+add_test(NAME test_version COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_version.sh
+         ${PROJECT_VERSION} $<TARGET_FILE:seamwalk> $<TARGET_FILE:seamwalk-pack>
+         $<TARGET_FILE:seamwalk-flash> ${SW_SAMPLES} ${CMAKE_CURRENT_BINARY_DIR}/version)
