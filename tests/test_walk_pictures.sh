@@ -89,7 +89,13 @@ pictures() {   # pictures NAME ARGS...: walk_pictures.py into work/NAME, its exi
   sed "s|$work/||g; s/^/  /" "$work/$name.out" | tail -n 6
   return $rc
 }
-figure() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$@"; }
+# figure FILE KEY...: the JSON figure at that path of keys
+figure() {
+  python3 -c "import json,sys
+v = json.load(open(sys.argv[1]))
+for k in sys.argv[2:]: v = v[k]
+print(v)" "$@"
+}
 
 pictures same --workers 0 --part-levels 0 --max-differing 0
 rc=$?
@@ -121,14 +127,12 @@ orbit() { # orbit NAME FLAGS...: 16 frames, every one compared
 orbit orbit
 rc=$?
 [ $rc -eq 0 ] || fail "the orbit with part levels: exit $rc (0 expected; $work/orbit.out)"
-parts=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['part_levels']['parts_max'])" \
-  "$work/orbit/test.json")
+parts=$(figure "$work/orbit/test.json" part_levels parts_max)
 [ "$parts" -gt 0 ] || fail "the orbit drew no part from a part level"
 # Stand-ins far finer than their bound are replaced by the walk's own
 # meshes when the workers have budget left: those pictures are the ones
 # judged above.
-leaner=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['threads']['standins_leaner_jobs'])" \
-  "$work/orbit/test.json")
+leaner=$(figure "$work/orbit/test.json" threads standins_leaner_jobs)
 [ "$leaner" -gt 0 ] || fail "the orbit gave no stand-in a leaner mesh of the walk's own"
 echo "ok   the orbit: $parts parts drawn from part levels, $leaner stand-ins given leaner meshes, pictures within the targets"
 orbit coarsest --test-part-levels-coarsest 1

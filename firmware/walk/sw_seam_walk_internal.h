@@ -102,11 +102,13 @@ int sw_seam_walk_standin_serves(const sw_seam_walk *w, uint32_t s);
 /* V: that worth, INFINITY when s has no level announced. */
 float sw_seam_walk_standin_worth(const sw_seam_walk *w, uint32_t s);
 
-/* V: 1 when every surface sewn to s without a mesh of its own (the
- * stand-ins, and those not drawn yet) keeps its outer loops with s's seams
- * at the walk's share of bound: a mesh of s's own made for bound leaves
- * none of them gone in the loops it is joined to (a stand-in so gone
- * waits, undrawn, for a mesh of its own). */
+/* V: 1 when every surface sewn to s without a mesh of its own keeps its
+ * outer loops with s's seams at the walk's share of bound (a stand-in's
+ * own border taken where it is coarser): a mesh of s's own made for bound
+ * leaves none of them gone in the loops it is joined to (a stand-in so
+ * gone waits, undrawn, for a mesh of its own). A surface with neither a
+ * mesh nor a stand-in has no border yet and is checked with its seams as
+ * coarse as they go, so beside one, s keeps its stand-in. */
 int sw_seam_walk_leaner_keeps_neighbours(const sw_seam_walk *w, uint32_t s, float bound);
 
 /* V: the error of the level surface s will stand in with (its target's)
