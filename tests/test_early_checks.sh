@@ -126,5 +126,19 @@ check "crashing reader: refused, not crashed" rc 1
 check "crashing reader: says so" said "square.step: OpenCASCADE's STEP reader crashed on the file (signal 11"
 check "crashing reader: no pack" [ ! -e "$work/crash.swpack" ]
 
+# ---- a reader that never finishes ----------------------------------------------------
+# A reader stuck in a loop (a fuzzed file kept the trial read busy past 60 s)
+# is stopped at the time allowed for the file's size; the hook makes the
+# child hang on a good file and allows it 2 s.
+start=$(date +%s%N)
+SEAMWALK_TEST_READER_HANG=2 run build "$square" -o "$work/hang.swpack" --quiet
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+echo "a reader that never finishes: exit $(cat "$work/rc") in $ms ms: $(cat "$work/err")"
+check "hung reader: refused" rc 1
+check "hung reader: says so" said "square.step: OpenCASCADE's STEP reader did not finish reading the file in 2 s"
+check "hung reader: stopped near its time (2 s), not left to run" [ "$ms" -lt 20000 ]
+check "hung reader: no pack" [ ! -e "$work/hang.swpack" ]
+check "hung reader: no child left" [ -z "$(pgrep -f "seamwalk-pack build $square -o $work/hang.swpack" || true)" ]
+
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]

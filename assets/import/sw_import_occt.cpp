@@ -80,11 +80,7 @@ extern "C" {
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <csignal>
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <exception>
 #include <string>
 #include <vector>
@@ -559,63 +555,6 @@ sw_status read_iges(ImportContext *ctx, const MessageCapture &messages, std::vec
     return SW_OK;
 }
 
-/* OpenCASCADE 7.6's readers crash on some damaged files instead of
- * failing (fuzz_step_occt: SIGSEGV in Interface_InterfaceModel::AddEntity
- * on a mutated STEP file), which took seamwalk-pack down with no word of
- * the file. The file is read once first in a child process, its output
- * thrown away; a child that dies (a signal, or a sanitizer's exit) makes a
- * clear error here, and only a file the reader survives is read again in
- * this process. Costs one more parse (not the transfer, the dear part).
- * Without fork (it failed) the file is read in process as before. */
-sw_status survives_reading(ImportContext *ctx, bool step)
-{
-    std::fflush(stdout);
-    std::fflush(stderr);
-    pid_t pid = fork();
-    if (pid < 0)
-        return SW_OK;
-    if (pid == 0) {
-        /* The parent's crash handlers (a fuzzer's, a sanitizer's) are not
-         * the child's business: it dies plainly. */
-        const int deadly[] = { SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL };
-        for (int sig : deadly)
-            std::signal(sig, SIG_DFL);
-        int null = open("/dev/null", O_WRONLY);
-        if (null >= 0) {
-            dup2(null, 1);
-            dup2(null, 2);
-        }
-        /* Tests: a reader that crashes, on any file (test_import_occt_crash.sh). */
-        if (std::getenv("SEAMWALK_TEST_READER_CRASH"))
-            std::raise(SIGSEGV);
-        try {
-            if (step) {
-                STEPControl_Reader reader;
-                reader.ReadFile(ctx->path);
-            } else {
-                IGESControl_Reader reader;
-                reader.ReadFile(ctx->path);
-            }
-        } catch (...) {   /* an exception is an answer: the parent reads it again */
-        }
-        _exit(0);
-    }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (WIFSIGNALED(status))
-        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: OpenCASCADE's %s reader crashed on "
-                            "the file (signal %d, %s): it is damaged or holds what the reader "
-                            "cannot read", ctx->path, step ? "STEP" : "IGES", WTERMSIG(status),
-                            strsignal(WTERMSIG(status)));
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: OpenCASCADE's %s reader failed on the "
-                            "file (its reading process ended with status %d): it is damaged or "
-                            "holds what the reader cannot read", ctx->path, step ? "STEP" : "IGES",
-                            WIFEXITED(status) ? WEXITSTATUS(status) : -1);
-    return SW_OK;
-}
-
 sw_status import_file(ImportContext *ctx)
 {
     std::string ext = lower_extension(ctx->path);
@@ -644,7 +583,7 @@ sw_status import_file(ImportContext *ctx)
     if (scanned != SW_OK)
         return scanned;
 
-    sw_status survived = survives_reading(ctx, step);
+    sw_status survived = reader_survives(ctx->path, step, ctx->err);
     if (survived != SW_OK)
         return survived;
     MessageCapture messages;

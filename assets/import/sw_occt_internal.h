@@ -2,8 +2,9 @@
  * assets/import/): OCCT's messages captured instead of printed, the
  * file's extension, what the file says of itself (sw_occt_step_file.cpp),
  * and the one place exceptions stop. The reader and converter is
- * sw_import_occt.cpp (its B-splines from sw_occt_bspline.h), the
- * measurement for cross-checks sw_occt_measure.cpp. */
+ * sw_import_occt.cpp (its B-splines from sw_occt_bspline.h, its trial
+ * read in a child sw_occt_read_check.cpp), the measurement for
+ * cross-checks sw_occt_measure.cpp. */
 #ifndef SW_OCCT_INTERNAL_H
 #define SW_OCCT_INTERNAL_H
 
@@ -112,6 +113,13 @@ bool file_tail_has(const char *path, bool step);
 /* The #id of the last entity whose text ends (its ';' outside a string):
  * where a truncated file was cut. 0 when none is complete. */
 int last_complete_step_entity(const char *path);
+
+/* ---- the reader's trial run (sw_occt_read_check.cpp) ---- */
+
+/* Reads the file once in a child process: SW_OK when the reader came
+ * through (whatever it thought of the file), an error naming the file when
+ * it crashed or ran past the time allowed for the file's size. */
+sw_status reader_survives(const char *path, bool step, sw_error *err);
 
 /* ---- shared helpers (sw_import_occt.cpp) ---- */
 

@@ -71,8 +71,15 @@ fuzz_one() {  # fuzz_one TARGET: its kept corpus grown, then fuzzed
 failed=() running=() pids=()
 report() {  # report INDEX: waits for running[INDEX], prints its log's tail
   local t=${running[$1]}
-  wait "${pids[$1]}" || failed+=("$t")
+  local ok=1
+  wait "${pids[$1]}" || { ok=0; failed+=("$t"); }
   echo "fuzzed $t for ${seconds}s"
+  if [ $ok = 0 ]; then
+    # What failed and where: the finding's first line and the top of its
+    # stack, which the log's tail (the run's statistics) leaves out.
+    grep -m1 -A24 -E '^==[0-9]+==.*(ERROR|WARNING)|^ALARM|^SUMMARY' build-fuzz/logs/"$t".log || true
+    echo "  ..."
+  fi
   tail -n 12 build-fuzz/logs/"$t".log
 }
 for t in "${targets[@]}"; do
