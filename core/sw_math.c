@@ -219,6 +219,21 @@ double sw_box_visible_min_depth(const sw_box *box, const sw_frustum *f, sw_vec3 
     if (eye.x >= box->min.x && eye.x <= box->max.x && eye.y >= box->min.y &&
         eye.y <= box->max.y && eye.z >= box->min.z && eye.z <= box->max.z)
         return 0.0;
+    /* A box inside all four sides clips to itself: its nearest corner,
+     * found as sw_box_depth_range finds it (most boxes of a far view). */
+    int inside = 1;
+    for (int i = 0; i < 4 && inside; i++) {
+        const sw_plane *p = &f->planes[i];
+        sw_vec3 c = sw_v3(p->n.x >= 0 ? box->min.x : box->max.x,
+                          p->n.y >= 0 ? box->min.y : box->max.y,
+                          p->n.z >= 0 ? box->min.z : box->max.z);
+        inside = sw_v3_dot(p->n, c) + p->d >= 0;
+    }
+    if (inside) {
+        double near_depth, far_depth;
+        sw_box_depth_range(box, eye, forward, &near_depth, &far_depth);
+        return near_depth;
+    }
     const double lo[3] = { box->min.x, box->min.y, box->min.z };
     const double hi[3] = { box->max.x, box->max.y, box->max.z };
     double best = INFINITY;

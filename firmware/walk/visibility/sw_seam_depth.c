@@ -13,17 +13,23 @@ static int drawn(const sw_seam_walk *w, uint32_t s)
            w->visible[s] == SW_SEAM_WALK_PART;
 }
 
-/* The nearest depth at which surface s can be seen: its patch boxes
- * clipped to the view's sides. */
-static double visible_nearest(const sw_seam_walk *w, const sw_view *view, uint32_t s)
+/* The nearest depth at which surface s can be seen, its patch boxes
+ * clipped to the view's sides, or best when that is no nearer. Clipping
+ * only takes a box's nearest depth farther: a box whose unclipped nearest
+ * corner is not before best cannot better it, and is not clipped. */
+static double visible_nearest(const sw_seam_walk *w, const sw_view *view, uint32_t s,
+                              double best)
 {
     const sw_pack_surface *surface = &w->pack->surfaces[s];
-    double best = INFINITY;
     for (uint32_t i = 0; i < surface->patch_count; i++) {
         const sw_pack_patch *p = &w->pack->patches[surface->first_patch + i];
         sw_box b = { sw_v3(p->box_min[0], p->box_min[1], p->box_min[2]),
                      sw_v3(p->box_max[0], p->box_max[1], p->box_max[2]) };
-        best = fmin(best, sw_box_visible_min_depth(&b, &view->frustum, view->eye, view->forward));
+        double near_depth, far_depth;
+        sw_box_depth_range(&b, view->eye, view->forward, &near_depth, &far_depth);
+        if (near_depth < best)
+            best = fmin(best, sw_box_visible_min_depth(&b, &view->frustum, view->eye,
+                                                       view->forward));
     }
     return best;
 }
@@ -41,7 +47,7 @@ static void nearest_in_band(const sw_seam_walk *w, const sw_view *view, double f
         if (!drawn(w, s) || r < from)
             continue;
         if (r < far)
-            *best = fmin(*best, visible_nearest(w, view, s));
+            *best = r < *best ? visible_nearest(w, view, s, *best) : *best;
         else
             *beyond = fmin(*beyond, r);
     }
