@@ -22,7 +22,7 @@
 
 #include "sw_levels.h"
 
-#define SW_PART_LEVELS_MAX 8u     /* levels per part */
+#define SW_PART_LEVELS_MAX 6u     /* levels per part */
 
 typedef struct sw_part_level {    /* 32 bytes */
     uint32_t part;                /* the pack's part */

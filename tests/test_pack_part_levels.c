@@ -93,7 +93,7 @@ static void test_rules(void)
     expect_rejected((make_sample_part_levels(&k), k.part_levels[2] = 1, &k), SW_ERR_FORMAT,
                     "PART_LEVEL_PARTS: runs from 0 to 1, expected 0 to 2");
     expect_rejected((make_sample_part_levels(&k), k.part_levels[1] = 3, &k), SW_ERR_FORMAT,
-                    "PART_LEVEL_PARTS[0]: 0 to 3, expected rising by at most 8 within the 2");
+                    "PART_LEVEL_PARTS[0]: 0 to 3, expected rising by at most 6 within the 2");
     expect_rejected((make_sample_part_levels(&k), k.vertices[5].p[1] = INFINITY, &k),
                     SW_ERR_FORMAT, "PART_LEVEL_VERTICES[5]");
     expect_rejected((make_sample_part_levels(&k), k.vertices[2].normal[3] = 1, &k),

@@ -471,8 +471,8 @@ sw_status sw_part_levels_build(const sw_pack *pack, const sw_levels *levels,
     clock_gettime(CLOCK_MONOTONIC, &t0);
     sw_part_levels_options o = opt ? *opt : (sw_part_levels_options){ 0 };
     o.finest = o.finest > 0 ? o.finest : 1.0 / 512;
-    o.step = o.step > 1 ? o.step : 2.0;
-    o.count = o.count ? (o.count < SW_PART_LEVELS_MAX ? o.count : SW_PART_LEVELS_MAX) : 8;
+    o.step = o.step > 1 ? o.step : 4.0;
+    o.count = o.count ? (o.count < SW_PART_LEVELS_MAX ? o.count : SW_PART_LEVELS_MAX) : 4;
     report->parts = pack->meta->part_count;
     sw_part_source src;
     sw_status st = sw_part_source_build(pack, levels, &src, err);

@@ -31,12 +31,8 @@
 
 typedef struct sw_part_levels_options {
     double finest;      /* the finest level's bound over the part's size (0: 1/512) */
-    /* The walk draws the coarsest level within its bound, on average
-     * finer than the bound asks by (step - 1) / ln(step) in triangles
-     * (their count goes about as 1 / error): 2.2 for a step of 4, 1.4 for
-     * 2, for about half again the levels' bytes. */
-    double step;        /* each level's bound over the one before (0: 2) */
-    uint32_t count;     /* levels tried per part (0: 8; at most SW_PART_LEVELS_MAX) */
+    double step;        /* each level's bound over the one before (0: 4) */
+    uint32_t count;     /* levels tried per part (0: 4; at most SW_PART_LEVELS_MAX) */
 } sw_part_levels_options;
 
 typedef struct sw_part_levels_report {
