@@ -26,11 +26,10 @@ namespace sw_occt {
 
 namespace {
 
-/* The parse takes about 0.3 s a MB here (Release, a 1.8 MB STEP file in
- * 0.5 s); an instrumented build is several times slower. 30 s and 10 s a
- * MB is past any honest parse by far, yet short of a test's or a fuzzer's
- * patience, so a reader stuck in a loop becomes an error instead of a
- * hang. */
+/* Many times an honest parse's time, even in a sanitizer's build, yet
+ * short of a test's or a fuzzer's patience for the files they use: a
+ * reader stuck in a loop (OpenCASCADE's entity numbering, on a fuzzed
+ * file) becomes an error instead of a hang. */
 double allowed_seconds(const char *path)
 {
     /* Tests: a reader that never finishes, given this many seconds
