@@ -110,6 +110,9 @@ static sw_status load_path(sw_program *rt, size_t path_bytes, sw_error *err)
 
 /* --workers: the cores less one, at least one, unless given; none for the
  * --no-cache baseline (it remakes everything in the frame by definition). */
+_Static_assert(SW_OPTIONS_MAX_WORKERS <= SW_SEAM_WORKERS_MAX,
+               "every worker count the options and the config take, the walk can start");
+
 static int workers_wanted(const sw_options *o)
 {
     if (o->no_cache)

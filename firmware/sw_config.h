@@ -23,6 +23,11 @@
 
 #define SW_CONFIG_DEFAULT_PATH "/etc/seamwalk/seamwalk.ini"
 
+/* The ranges a setting shares with its command-line option
+ * (sw_options.h), so a value one takes the other takes too. */
+#define SW_CONFIG_MAX_WORKERS 16          /* [budgets] workers, --workers */
+#define SW_CONFIG_MAX_FRAME_MS 10000.0    /* [budgets] frame_ms, --target-ms */
+
 /* inih reads lines of at most 200 bytes, so paths stay below that. */
 enum { SW_CONFIG_PATH_MAX = 192, SW_CONFIG_NAME_MAX = 32, SW_CONFIG_GPIO_MAX = 16,
        SW_CONFIG_PAD_BUTTONS = 15 /* sw_pad_button, in its order */ };

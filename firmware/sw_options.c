@@ -294,7 +294,7 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         } else if (!strcmp(a, "--workers")) {
             st = parse_int(a, v, 0, SW_OPTIONS_MAX_WORKERS, &o->workers, err);
         } else if (!strcmp(a, "--target-ms")) {
-            st = parse_real(a, v, 1, 10000, &o->target_ms, err);
+            st = parse_real(a, v, 1, SW_CONFIG_MAX_FRAME_MS, &o->target_ms, err);
         } else if (!strcmp(a, "--visibility-thread")) {
             st = parse_int(a, v, 0, 1, &o->visibility_thread, err);
         } else if (!strcmp(a, "--sync-work")) {

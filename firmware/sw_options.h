@@ -11,7 +11,7 @@
 #include "sw_display.h"
 #include "sw_error.h"
 
-#define SW_OPTIONS_MAX_WORKERS 16
+#define SW_OPTIONS_MAX_WORKERS SW_CONFIG_MAX_WORKERS
 
 typedef struct sw_options {
     const char *pack_path;

@@ -382,6 +382,21 @@ static void budgets_come_from_the_file(void)
     SW_CHECK(parse(&o, &err, 5, argv) == SW_ERR_FORMAT);
     SW_CHECK_MSG(strstr(err.message, "budgets.ini:2: [budgets] workers:") != NULL, "%s",
                  err.message);
+    /* The file takes what the command line takes, no more: workers up to
+     * the walk's 16 (17 once passed here and failed when the workers
+     * started), a frame time up to 10 s (the file stopped at 1 s). */
+    write_text("budgets.ini", "[pack]\npack = a.swpack\n[navigation]\nmode = orbit\n"
+                              "[budgets]\nworkers = 16\nframe_ms = 5000\n");
+    st = parse(&o, &err, 5, argv);
+    SW_CHECK_MSG(st == SW_OK && o.workers == 16 && o.target_ms == 5000, "%s", err.message);
+    write_text("budgets.ini", "[budgets]\nworkers = 17\n");
+    SW_CHECK(parse(&o, &err, 5, argv) == SW_ERR_FORMAT);
+    SW_CHECK_MSG(strstr(err.message, "budgets.ini:2: [budgets] workers:") != NULL, "%s",
+                 err.message);
+    char *too_many[] = {"seamwalk", "--headless", "64x48", "--orbit", "--pack", "a.swpack",
+                        "--workers", "17"};
+    SW_CHECK(parse(&o, &err, 8, too_many) != SW_OK);
+    SW_CHECK_MSG(strstr(err.message, "--workers") != NULL, "%s", err.message);
 }
 
 /* --navigate without --config walks with the config's defaults: keyboard and
