@@ -4,6 +4,28 @@
 #include <stdio.h>
 #include <string.h>
 
+/* msg (of cap bytes) with its control bytes as \xNN, cut to fit: a
+ * message may quote a file's bytes (a token, a name, a library's message),
+ * and a binary file's escape sequences must not reach the terminal or the
+ * journal that prints it. Escaping twice changes nothing. */
+static void escape_controls(char *msg, size_t cap)
+{
+    char out[SW_ERROR_MESSAGE_MAX];
+    size_t n = 0;
+    for (const char *s = msg; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        int control = c < 0x20 || c == 0x7f;
+        if (n + (control ? 4 : 1) >= sizeof out || n + (control ? 4 : 1) >= cap)
+            break;
+        if (control)
+            n += (size_t)snprintf(out + n, sizeof out - n, "\\x%02x", c);
+        else
+            out[n++] = (char)c;
+    }
+    out[n] = '\0';
+    memcpy(msg, out, n + 1);
+}
+
 sw_status sw_error_set(sw_error *err, sw_status status, const char *fmt, ...)
 {
     if (!err)
@@ -13,6 +35,7 @@ sw_status sw_error_set(sw_error *err, sw_status status, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(err->message, sizeof err->message, fmt, ap);
     va_end(ap);
+    escape_controls(err->message, sizeof err->message);
     return status;
 }
 
@@ -30,16 +53,18 @@ void sw_error_prefix(sw_error *err, const char *fmt, ...)
     snprintf(joined, sizeof joined, "%s: %s", prefix, err->message);
     memcpy(err->message, joined, sizeof err->message - 1);
     err->message[sizeof err->message - 1] = '\0';
+    escape_controls(err->message, sizeof err->message);
 }
 
 int sw_usage_error(const char *program, const char *fmt, ...)
 {
-    fprintf(stderr, "%s: ", program);
+    char line[SW_ERROR_MESSAGE_MAX];
     va_list ap;
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
-    fprintf(stderr, "\ntry '%s --help'\n", program);
+    escape_controls(line, sizeof line);
+    fprintf(stderr, "%s: %s\ntry '%s --help'\n", program, line, program);
     return SW_EXIT_USAGE;
 }
 

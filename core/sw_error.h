@@ -25,7 +25,9 @@ typedef struct sw_error {
 } sw_error;
 
 /* Records status and a printf-style message in err (err may be NULL) and
- * returns status, so callers can write `return sw_error_set(err, ...)`. */
+ * returns status, so callers can write `return sw_error_set(err, ...)`.
+ * Control bytes in the message (a file's bytes quoted) become \xNN, here
+ * and in sw_error_prefix and sw_usage_error, so no caller prints them. */
 sw_status sw_error_set(sw_error *err, sw_status status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 

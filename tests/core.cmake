@@ -1,5 +1,6 @@
 # tests of the core area
 sw_add_test(test_math SOURCES test_math.c LIBS sw_core)
+sw_add_test(test_error SOURCES test_error.c LIBS sw_core)
 sw_add_test(test_bezier SOURCES test_bezier.c LIBS sw_core)
 sw_add_test(test_nurbs SOURCES test_nurbs.c LIBS sw_core)
 sw_add_test(test_tess SOURCES test_tess.c LIBS sw_core)

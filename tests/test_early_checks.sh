@@ -140,5 +140,24 @@ check "hung reader: stopped near its time (2 s), not left to run" [ "$ms" -lt 20
 check "hung reader: no pack" [ ! -e "$work/hang.swpack" ]
 check "hung reader: no child left" [ -z "$(pgrep -f "seamwalk-pack build $square -o $work/hang.swpack" || true)" ]
 
+# ---- a file's control bytes never reach the terminal ----------------------------------
+# Every error message escapes them (core/sw_error.c); a config and a camera
+# path that quote an escape sequence back, through seamwalk's own errors.
+no_controls() { ! LC_ALL=C grep -q "$(printf '[\001-\010\013-\037\177]')" "$1"; }
+printf '[display]\n\033[2Jsize = 1\n' >"$work/binary.ini"
+"$walker" --config "$work/binary.ini" --headless 64x48 --orbit --pack "$work/square.swpack" \
+  >/dev/null 2>"$work/err"
+echo $? >"$work/rc"
+check "binary config: refused (a usage error)" rc 2
+check "binary config: the escape shown as \\x1b" said 'binary.ini:2: .*\\x1b\[2Jsize'
+check "binary config: no control byte printed" no_controls "$work/err"
+printf '\033]0;pwned\007 0 0 0 1 1 1 0 1 0\n' >"$work/binary.path"
+"$walker" --pack "$work/square.swpack" --path "$work/binary.path" --headless 64x48 --frames 1 \
+  >/dev/null 2>"$work/err"
+echo $? >"$work/rc"
+echo "binary camera path: exit $(cat "$work/rc"): $(cat -v "$work/err")"
+check "binary camera path: refused" [ "$(cat "$work/rc")" != 0 ]
+check "binary camera path: no control byte printed" no_controls "$work/err"
+
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]
