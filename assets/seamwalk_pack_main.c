@@ -65,9 +65,10 @@ static int usage_error(const char *fmt, const char *arg)
     return sw_usage_error("seamwalk-pack", fmt, arg);
 }
 
-/* s with its control bytes as \xNN: a message may quote a file's bytes
- * (a token, an entity name, an OpenCASCADE message), and a binary file's
- * escape sequences must not reach the terminal. */
+/* s with its control bytes as \xNN: the kinds of messages tallied quote
+ * OpenCASCADE's words about a file, which may carry the file's bytes, and
+ * a binary file's escape sequences must not reach the terminal (an
+ * sw_error's message is escaped where it is made, core/sw_error.c). */
 static void put_escaped(FILE *f, const char *s)
 {
     for (; *s; s++) {
@@ -81,9 +82,7 @@ static void put_escaped(FILE *f, const char *s)
 
 static int fail(const sw_error *err)
 {
-    fputs("seamwalk-pack: ", stderr);
-    put_escaped(stderr, err->message);
-    fputc('\n', stderr);
+    fprintf(stderr, "seamwalk-pack: %s\n", err->message);
     return 1;
 }
 
