@@ -33,7 +33,7 @@ enum sw_section_type {
     SW_SECTION_PATCHES = 3,   /* sw_pack_patch[patch_count] */
     SW_SECTION_CONTROL = 4,   /* float[4 * control_count]: x, y, z, w per point */
     SW_SECTION_ADJACENCY = 5, /* sw_pack_adjacency[adjacency_count] */
-    /* Trimmed-surface sections (issue 3). Optional as a group: a pack of
+    /* Trimmed-surface sections. Optional as a group: a pack of
      * untrimmed Bezier patches may omit them all; if SURFACES is present,
      * PATCH_DOMAINS must be too, and the other four need SURFACES (absent
      * ones count as empty). Each known type appears at most once. Their

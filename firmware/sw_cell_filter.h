@@ -4,8 +4,8 @@
  * the filter is as conservative as the mask: nothing of the face is lost,
  * and what is drawn beyond the trim is at most one mask cell wide. The
  * runtime draws through the Seam Graph (exact trims) and no longer uses it:
- * it stays for the uniform-grid baseline of the walkthrough benchmark
- * (issue 10). No allocation. */
+ * it stays for the uniform-grid baseline of the walkthrough benchmark. No
+ * allocation. */
 #ifndef SW_CELL_FILTER_H
 #define SW_CELL_FILTER_H
 

@@ -1,4 +1,4 @@
-/* The unit's configuration file (issue 11 item 6): an INI file read with inih
+/* The unit's configuration file: an INI file read with inih
  * at start-up, before the arena is taken (sw_config_load reads the file into
  * a heap buffer it frees before returning; the frame loop never sees this). `seamwalk --config FILE` reads one; its values fill the
  * options the command line does not give (sw_options.h). The service (issue

@@ -1,4 +1,4 @@
-/* Debouncing one GPIO button line (issue 11 item 3), the logic only: the
+/* Debouncing one GPIO button line, the logic only: the
  * device layer (libgpiod v1, which has no debounce of its own) feeds each
  * both-edge event with its kernel timestamp, and ticks the machine with the
  * current time so that confirmations and long presses fire while the line is

@@ -1,4 +1,4 @@
-/* Gamepad mappings in SDL's gamecontrollerdb grammar (issue 11 item 2), so
+/* Gamepad mappings in SDL's gamecontrollerdb grammar, so
  * lines written for SDL paste into [gamepad] mapping = FILE unchanged:
  *
  *   GUID,name,binding,binding,...      one controller per line

@@ -1,4 +1,4 @@
-/* HID report descriptors of game controllers (issue 11 item 2): the parser
+/* HID report descriptors of game controllers: the parser
  * that turns a descriptor (HIDIOCGRDESC or sysfs report_descriptor bytes)
  * into a layout of the fields a walk needs, and the decoder that reads an
  * input report through that layout. Called by the pad layer (sw_pad.h) when

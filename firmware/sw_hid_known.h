@@ -1,4 +1,4 @@
-/* Known controller layouts (issue 11 item 2): controllers whose descriptor
+/* Known controller layouts: controllers whose descriptor
  * does not say what a walk needs. The DualShock 4 over USB describes its
  * triggers as Rx/Ry and its right stick as Z/Rz, and Linux's hid-playstation
  * driver (what SDL's Linux mappings were written against) orders them

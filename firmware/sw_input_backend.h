@@ -1,4 +1,4 @@
-/* The thin device layer under the kiosk's inputs (issue 11 items 2-4): what
+/* The thin device layer under the kiosk's inputs: what
  * the input step (sw_kiosk.h) needs from hidapi, libgpiod and evdev, as
  * three small tables of functions, so tests and headless runs plug in the
  * fake devices of sw_input_fake.h (recorded descriptors and reports, a

@@ -1,4 +1,4 @@
-/* Input timelines (issue 11 item 5): a recorded or scripted sequence of
+/* Input timelines: a recorded or scripted sequence of
  * device events that `seamwalk --input-timeline FILE` replays through the
  * fake devices (sw_input_fake.h) on a simulated clock, so a headless walk
  * is driven exactly as a unit's devices would drive it and replays to the

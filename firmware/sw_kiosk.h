@@ -1,4 +1,4 @@
-/* The frame loop's input step (issue 11 items 2-5): poll the devices ->
+/* The frame loop's input step: poll the devices ->
  * actions -> navigation -> the camera pose, once per frame on the GL
  * thread. seamwalk_main.c calls sw_kiosk_init at start-up and
  * sw_kiosk_step per frame, nothing else.

@@ -1,4 +1,4 @@
-/* Navigation (issue 11 item 5): turns one frame's input intents into the
+/* Navigation: turns one frame's input intents into the
  * camera pose. Called once per frame by the input step (sw_kiosk.h) after
  * the devices were polled. Pure and deterministic: no clock, no allocation;
  * the same inputs and time steps give the same poses, which is what lets a

@@ -1,4 +1,4 @@
-/* The connected game controllers (issue 11 item 2): hot-plug by periodic
+/* The connected game controllers: hot-plug by periodic
  * enumeration, and per controller its layout (a known one, sw_hid_known.h,
  * else its parsed descriptor), its mapping (the file's line for its GUID,
  * else the known layout's, else sw_pad_default_bindings) and its state.

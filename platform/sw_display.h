@@ -1,5 +1,5 @@
 /* The display seamwalk draws into, behind one small interface so the GLES2
- * code never knows which (issue 11 item 1):
+ * code never knows which:
  *   headless  EGL surfaceless, an offscreen framebuffer (CI; sw_egl_headless.h)
  *   kms       GBM/KMS scan-out on a kiosk without X or Wayland (sw_display_kms.c)
  *   x11       a developer window through EGL on X11 (sw_display_x11.c)

@@ -63,10 +63,10 @@ typedef struct sw_pcurve_result {
 /* A fit gives up with SW_ERR_RANGE after this many surface evaluations
  * (Newton steps, their backtracking, a starting grid's scan counted as one
  * per 64 points): a curve that never follows the surface would otherwise
- * try every fit up to 4,096 points, each sample searched afresh (issue 25:
- * 0.84 s for one 2.8 kB IGES file, 70 s unoptimised). About 0.15 s of one
- * core here; a cubic fit of a wavy curve within 1e-6 takes 44,000
- * (test_pcurve). */
+ * try every fit up to 4,096 points, each sample searched afresh (one small
+ * IGES file's curve kept the reader busy for a minute unoptimised). The cap
+ * is well above what a hard but honest fit takes (test_pcurve fits a wavy
+ * curve within it). */
 #define SW_PCURVE_FIT_MAX_EVALS 500000L
 
 /* Fits a parameter-space curve c on [t0, t1] such that at dense samples

@@ -1,8 +1,8 @@
 /* A quick pass over a STEP (ISO 10303-21) file before OpenCASCADE reads it:
  * counts the entity instances and reads every CLOSED_SHELL and OPEN_SHELL's
  * list of faces, so a file that would keep OpenCASCADE busy for minutes is
- * refused at once with the line and what was wrong (issue 25: a shell
- * listing one face 200,000 times ran for over 600 s; 5,000 times, 3.5 s).
+ * refused at once with the line and what was wrong (a shell listing one
+ * face many times kept OpenCASCADE's reader busy for minutes).
  * It checks only these limits; everything else about the file is left to
  * OpenCASCADE. Called by the STEP importer (sw_import_occt.cpp) on the
  * file's bytes; host only, allocates (and frees) a shell's list. */
