@@ -11,11 +11,11 @@
 static void escape_controls(char *msg, size_t cap)
 {
     char out[SW_ERROR_MESSAGE_MAX];
-    size_t n = 0;
+    size_t room = cap < sizeof out ? cap : sizeof out, n = 0;
     for (const char *s = msg; *s; s++) {
         unsigned char c = (unsigned char)*s;
         int control = c < 0x20 || c == 0x7f;
-        if (n + (control ? 4 : 1) >= sizeof out || n + (control ? 4 : 1) >= cap)
+        if (n + (control ? 4 : 1) >= room)   /* the terminator's byte kept */
             break;
         if (control)
             n += (size_t)snprintf(out + n, sizeof out - n, "\\x%02x", c);
