@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Every Debian package seamwalk uses, found once, exposed as imported targets.
 find_package(PkgConfig REQUIRED)
 find_package(Threads REQUIRED)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages seamwalk builds and tests with, only those
 # missing, so it is quiet and fast when run again. Needs root (or sudo) only
 # when something is missing.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* --navigate and --input-timeline (sw_kiosk_run.h). */
 #include "sw_kiosk_run.h"
 

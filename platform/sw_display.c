@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_display.h: one switch per call onto the display that runs. Headless is
  * the existing sw_egl_headless, unchanged. */
 #include "sw_display.h"

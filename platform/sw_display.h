@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The display seamwalk draws into, behind one small interface so the GLES2
  * code never knows which:
  *   headless  EGL surfaceless, an offscreen framebuffer (CI; sw_egl_headless.h)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Which display "auto" means (sw_display.h), and the names of the kinds. */
 #include "sw_display.h"
 

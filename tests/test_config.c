@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The configuration file (firmware/sw_config.h) and --config in seamwalk's
  * options (firmware/sw_options.h). argv[1]: the example firmware/seamwalk.ini. */
 #include <stdio.h>

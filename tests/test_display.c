@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The display interface (platform/sw_display.h) on a machine without a DRM
  * device, X server or Wayland compositor: auto's choice over environments
  * built here, --display's words, every missing display failing with one
