@@ -16,3 +16,9 @@ add_test(NAME man_seamwalk_ini COMMAND ${SW_CHECK_MAN} config ${SW_MAN}/seamwalk
   ${PROJECT_SOURCE_DIR}/firmware/sw_config.c $<TARGET_FILE:seamwalk>)
 sw_host_only_test(man_seamwalk_pack PROGRAMS seamwalk-pack)
 sw_host_only_test(man_seamwalk_flash PROGRAMS seamwalk-flash)
+
+# The .deb packages (tests/test_package.sh): made by cpack from this build,
+# unpacked into a staging root, their layout, control data, unit, programs
+# and man pages checked there.
+add_test(NAME package COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_package.sh
+  ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR} ${PROJECT_VERSION} ${CMAKE_CURRENT_BINARY_DIR}/package)
