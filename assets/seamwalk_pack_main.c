@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk-pack: the host tool that turns model files into packs and looks
  * inside packs. Commands: build, info, verify, keygen, sign, gen (usage below). Exit status:
  * 0 success, 1 failure (one line on stderr naming the file), 2 usage error.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The progress line (sw_progress.h). */
 #include "sw_progress.h"
 

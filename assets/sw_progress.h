@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A one-line progress bar for seamwalk-pack's long builds: stage, percent
  * and rate ("importing bearing.iges  42%  1800 faces/s") on standard error,
  * redrawn in place with \r at most ten times a second and cleared at the end.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # OpenCASCADE (Debian libocct-*-dev) for the STEP reader and the OCCT IGES
 # cross-check: assets/import/sw_import_occt.cpp when found, the C fallback
 # assets/import/sw_import_occt_none.c (a clear "built without STEP support") when not.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Sanitizer builds apply to every target in the tree, libraries included, so a
 # report can point into any layer.
 if(SW_ASAN AND SW_TSAN)

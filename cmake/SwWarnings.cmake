@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Warning flags for every seamwalk target: sw_apply_warnings(target).
 function(sw_apply_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wshadow -Wstrict-prototypes

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages seamwalk builds and tests with, only those
 # missing, so it is quiet and fast when run again. Needs root (or sudo) only
 # when something is missing.
@@ -27,6 +28,9 @@ packages=(
   libsodium-dev                      # ed25519 signatures of packs (seamwalk-pack sign, seamwalk-flash)
   libgl-dev libglu1-mesa-dev         # the benchmark's reference: GLU's NURBS tessellator
   python3                            # tests read the stats JSON
+  dpkg-dev                           # the .deb packages' Depends: dpkg-shlibdeps (cmake/SwPackage.cmake)
+  man-db                             # tests render the man pages: man --warnings -l (groff)
+  systemd                            # tests verify the unit: systemd-analyze, systemd-sysusers
   gnuplot-nox                        # tests/bench/walk_bench.sh plots frame time along the path (PNG)
   clang libclang-rt-14-dev           # libFuzzer runs of the parsers (tests/fuzz)
   # OpenCASCADE 7.6: STEP import and the IGES cross-check (assets/import/sw_import_occt.cpp,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_arena.h"
 
 #include <assert.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The arena: one block taken at start-up, handed out by bump allocation and by
  * fixed-size slabs. The runtime sizes it from the pack header and its options
  * before the first frame; nothing after that calls malloc. The caller owns the

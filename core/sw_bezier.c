@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_bezier.h"
 
 #include <assert.h>

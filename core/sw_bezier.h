@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Rational tensor-product Bezier patches of degree 1..SW_BEZIER_MAX_DEGREE in u
  * and v: evaluation with first and second derivatives and the normal, bounds
  * on the second derivatives (paper 000, section 4.1, after Filip et al.), and

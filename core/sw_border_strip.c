@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Border strips (sw_border_strip.h). */
 #include "sw_border_strip.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Border strips (paper 000, sections 4.2 and 4.3): the triangles that join
  * a mesh made for one state of a surface's border to the border as it is
  * now. A static level of detail is stored, and an older mesh kept, with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A buddy allocator over a range of units (no memory of its own to hand
  * out: it says where in the caller's pools a block lies). The tessellation
  * cache keeps every surface's mesh in one block of a vertex pool and one of

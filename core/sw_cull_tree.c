@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_cull_tree.h"
 
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The culling hierarchy: a bounding-volume tree over a pack's surfaces whose
  * leaves are, again, trees over each surface's patches (paper 000, section
  * 6; paper 004, section 6.2), and the per-patch loop it replaces.

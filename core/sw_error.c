@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_error.h"
 
 #include <stdarg.h>

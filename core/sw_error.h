@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Errors as values: every fallible seamwalk call returns an sw_status and, when
  * given an sw_error, fills it with one line that names the file, the position and
  * what was expected. Used by every layer. */

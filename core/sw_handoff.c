@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_handoff.h"
 
 size_t sw_retire_ring_arena_bytes(uint32_t capacity)

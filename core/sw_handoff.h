@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The hand-over of tessellations between the threads of the walk (paper
  * 000 section 5.2): a worker writes a new tessellation into fresh memory
  * and publishes it with one atomic pointer swap; the GL thread takes what

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_hex.h"
 
 int sw_hex_digit(char c)

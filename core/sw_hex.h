@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Hexadecimal digits, for the text formats that carry bytes as hex (pack
  * keys and signatures, SDL mapping GUIDs, recorded HID reports). */
 #ifndef SW_HEX_H

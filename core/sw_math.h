@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Vectors, 4x4 matrices, axis-aligned boxes and the view frustum, in double.
  * Used by the geometry code on both sides and by the runtime's camera; the
  * renderer converts matrices to float at upload (sw_mat4_to_float). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_normal_cone.h"
 
 #include <float.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Normal cones: the pseudo-Gauss map of a rational Bezier patch (paper 000,
  * section 3) bounded by a cone of directions, their union over a surface,
  * and the eye-dependent back-face test of paper 004 (section 6.2) with the

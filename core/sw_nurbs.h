@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* B-spline (NURBS) curves and surfaces and their conversion to rational Bezier
  * pieces by knot insertion (Boehm; every interior knot raised to multiplicity
  * degree). The pack builder calls it for every imported surface; tests compare

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack: seamwalk's preprocessed model file, version 1, and its reader.
  * Written by seamwalk-pack on the host (assets/pack/sw_pack_write.c), read here by
  * the runtime and the host tools (core/sw_pack_read.c, sw_pack_validate.c). The format is specified in assets/PACK_FORMAT.md;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reading a pack file: its header alone (to size the arena), or the whole
  * file into the arena and then the checks of sw_pack_read.c
  * (sw_pack_open_memory_with); the file I/O only. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The IMPORT_NOTES section (sw_pack_notes.h). */
 #include "sw_pack_notes.h"
 

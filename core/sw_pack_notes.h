@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack's IMPORT_NOTES section: what the host's importers skipped or
  * read past, per input file, carried so that `seamwalk-pack info` can say
  * it long after the build. The runtime ignores it. Kept apart from

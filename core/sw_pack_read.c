@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack container: header, section table, section bounds and checksums,
  * which sections must or may appear (reading a file: sw_pack_load.c). The
  * records inside the sections are checked by sw_pack_validate.c and, for the

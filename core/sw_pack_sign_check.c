@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The SIGNATURE section's check (sw_pack_signature.h) and the trusted-key file
  * parser. Runs on the unit: no allocation, the digest streams over the
  * pack's bytes in place. */

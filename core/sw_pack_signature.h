@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Signed packs: the SIGNATURE section (type 22) and its check against a
  * unit's trusted ed25519 keys (libsodium). Written by seamwalk-pack sign
  * (assets/pack/sw_pack_sign.c); checked by seamwalk-flash before it installs

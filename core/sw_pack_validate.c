@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The record checks of sw_pack_open_memory: every value the runtime indexes
  * with, divides by or draws is checked here once, so the walk over a
  * validated pack needs no checks of its own. Messages name the record and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to the pack format code: the checks of the records themselves,
  * which sw_pack_read.c runs once the header, the section table and every
  * checksum have been verified and each view's byte size matches its META

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Seam Graph sections (SEAM, SEAM_VERTICES, SEAM_SLOTS, SEAM_LOOPS,
  * SEAM_EDGES, SEAM_COLLAPSES, SEAM_SLOT_REFS, SEAM_SURFACE_LOOPS;
  * core/sw_seam_graph.h): the SEAM header record here, then every rule of the

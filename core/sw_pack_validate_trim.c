@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The record checks of the trimmed-surface sections (SURFACES, TRIM_LOOPS,
  * TRIM_CURVES, TRIM_DATA, PATCH_DOMAINS, TRIM_MASKS). Like sw_pack_validate.c
  * it checks every index and every value the runtime divides by or walks

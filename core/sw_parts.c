@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_parts.h"
 
 void sw_parts_run(const sw_parts_runner *runner, sw_part_fn fn, void *arg, uint32_t count)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Work cut into independent parts, for the checks a start waits on (the
  * pack's section checksums, the Seam Graph's rules). The core starts no
  * thread of its own: a caller with cores to spare (the runtime's loader,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The power of two hash tables are sized by. No allocation. */
 #ifndef SW_POW2_H
 #define SW_POW2_H

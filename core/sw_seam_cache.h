@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The tessellation cache of the seam walk (paper 004 section 6.4): each
  * surface keeps its last tessellation, the bound it was made for and what
  * the tessellator proved, in fixed pools carved from the arena at start: a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_seam_graph_check (sw_seam_check.h): every rule of a Seam Graph, for a
  * graph built on the host and for one read from a pack (the pack reader's
  * sw_pack_validate_seam checks the SEAM header record and then calls this,

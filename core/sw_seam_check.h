@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every rule of a Seam Graph (sw_seam_graph.h), checked before anyone
  * indexes into it: the pack reader calls it for a pack's graph (after the
  * SEAM header record, sw_pack_validate_seam), the runtime selection for the

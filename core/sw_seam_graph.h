@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Seam Graph (Guthe et al. 2002, sections 4-5, paper 004 in
  * ../shared/papers): the sewn trimming polylines of a model's surfaces, as
  * flat arrays with indices, and the edge-collapse hierarchy over them.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Seam Graph's front: init, the dependency rule, split, collapse and
  * forced split (sw_seam_select.h). The per-frame update is in
  * sw_seam_select_update.c, the polylines in sw_seam_select_loop.c.

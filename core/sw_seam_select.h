@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* View-dependent level of detail of the Seam Graph (Guthe et al. 2002,
  * sections 5.5 and 6.1): the runtime's front of active vertices over the
  * collapse hierarchy of core/sw_seam_graph.h, moved by vertex splits and edge

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared between the files of the Seam Graph selection (sw_seam_select*.c);
  * not public. */
 #ifndef SW_SEAM_SELECT_INTERNAL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Loops' current polylines and the front's counts (sw_seam_select.h). */
 #include "sw_seam_select.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_seam_select_update: one frame's refinement and coarsening of the Seam
  * Graph's front (sw_seam_select.h; paper 5.5 and 6.1). */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A surface's current Seam Graph loops as the trimmed tessellator takes them
  * (sw_trim_tess.h), and the share of its error bound its seams get: what the
  * runtime's seam walk (firmware/walk/sw_seam_walk.c) and the host's verify

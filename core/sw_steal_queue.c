@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_steal_queue.h"
 
 static uint32_t head_of(uint64_t e) { return (uint32_t)(e & 0xFFFFu); }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A worker's queue of tessellation jobs with lock-free stealing (paper 000
  * section 5.1, after Kumar et al.'s load balancing): the visibility side
  * (one producer) appends job ids at the tail, the owning worker takes them

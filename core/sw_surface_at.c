@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The exact surface and the sewing offset (sw_surface_at.h). */
 #include "sw_surface_at.h"
 

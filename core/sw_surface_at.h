@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The exact surface of a trimmed surface's patches at a (u, v), and how far
  * its sewn border lies from it: what every measurement of drawn or stored
  * triangles against the surface uses (the walk's error, the static levels'

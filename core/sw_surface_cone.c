@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A surface's normal cone from its patches (sw_surface_cone.h). */
 #include "sw_surface_cone.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A pack's surface's normal cone: the union of its Bezier patches' cones
  * (sw_normal_cone.h), and the float patch view both take. The walk builds
  * its culling cones with it at load time (firmware/walk/sw_seam_walk.c), the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Uniform tessellation of a Bezier patch into caller-provided buffers, and the
  * grid size that meets an object-space error bound (paper 000, section 4.1:
  * deviation of a grid triangle with legs l1, l2 is at most

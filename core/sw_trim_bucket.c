@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The loops' segments by grid cell (core/sw_trim_tess.c): each segment is
  * walked column by column over the grid (its v range within the column,
  * then the rows of that range, each tested exactly with sw_tt_clip against

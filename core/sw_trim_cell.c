@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_trim_cell.h"
 
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to the trimmed tessellator (core/sw_trim_tess.c): one cell of the
  * grid (or a part of one) cut by the trimming loops (paper 004, section 6.3) and the
  * triangulation of the resulting polygons. Parameter-space geometry only; no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Exact surface evaluation for the trimmed tessellator's grid
  * (core/sw_trim_tess.c): Bernstein sums on the homogeneous control points,
  * contracted in v once per grid line and knot column (the line cache), then

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Collapsed loops: a loop whose points lie on one line in (u, v) bounds no
  * region there, yet its points (the Seam Graph's vertices) may span a
  * triangle in space. That happens at coarse seam states, where a face

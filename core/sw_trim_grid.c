@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The trimmed tessellator's conformal tensor grid (core/sw_trim_tess.c):
  * columns are the patches' knot intervals in u, rows in v, each split into
  * sub-patch intervals (2, or 4 on rational surfaces, whose bounds tighten

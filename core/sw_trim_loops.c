@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The loops as the trimmed tessellator sees them (core/sw_trim_tess.c):
  * repeated points merged, every loop turned so the trimmed region lies on its
  * left (even-odd nesting decides which side that is, whatever the caller's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The row sweep of the trimmed tessellator (core/sw_trim_tess.c): the grid's
  * rows inside the loops' box from bottom to top. A row's crossed cells are
  * its runs of (cell, segment) pairs; between them lie runs of cells no loop

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trimmed tessellation (paper 004 section 6.3's trimming, on a grid instead
  * of the paper's binary trees). The steps, one file each:
  * - sw_trim_loops.c: the loops oriented and moved a tiny distance into the

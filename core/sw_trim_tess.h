@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Runtime trimmed tessellation of one surface (Guthe et al. 2002, paper 004,
  * section 6.3, with a conformal grid in place of the paper's binary trees):
  * the surface's rational Bezier patches get one tensor grid whose cells meet

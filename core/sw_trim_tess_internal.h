@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to the trimmed tessellator: the state one sw_trim_tess call
  * shares between its steps (core/sw_trim_tess.c: input and output,
  * sw_trim_loops.c: the loops' orientation and region shrink, sw_trim_grid.c:

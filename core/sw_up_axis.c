@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The up axis (sw_up_axis.h): names, parsing, vectors, and the pack's
  * ORIENTATION section. Kept apart from sw_pack_read.c so the section is one
  * small addition to the container, not a change to its group rules. */

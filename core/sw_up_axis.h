@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The up axis of a model: which of its coordinate axes points up in the
  * world it was drawn in. Mechanical CAD (STEP, IGES) is z-up by convention,
  * the runtime's default camera is y-up; the pack says which (its ORIENTATION

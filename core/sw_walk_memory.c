@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_walk_memory.h"
 
 #include "sw_arena.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the runtime's walk through a pack's Seam Graph takes from its arena
  * (firmware/walk/sw_seam_walk.h): the selection's front, per-surface state, the
  * tessellation cache's pools, the trimmed tessellator's scratch and one

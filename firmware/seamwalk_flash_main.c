@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk-flash: puts signed packs onto a display unit's pack store
  * (sw_pack_store.h, firmware/STORE.md) and looks after its slots.
  * Exit status (also in the usage text and docs/flashing.md):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk: the walkthrough runtime. seamwalk_start.c sizes one arena from
  * the pack header and the options, refuses at once if it does not fit
  * --memory-mb, loads and validates the pack into it (on a loader thread,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The seamwalk program's state, shared by its two files: the start-up
  * (seamwalk_start.c: memory, the pack, the display, the GL, the threads)
  * and the walk (seamwalk_main.c: the frame loop, the stats). Not a library

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk's start-up: from the options to the first frame's threads.
  *
  * Two things take most of a start and need nothing of each other: the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_alloc_count.h"
 
 #include <stdatomic.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Counts the heap calls seamwalk's own code makes, so the runtime can prove
  * its frame loop allocates nothing. The seamwalk binary is linked with
  * -Wl,--wrap=malloc (and calloc, realloc, free, posix_memalign,

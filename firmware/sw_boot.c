@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The runtime's side of the pack store (sw_boot.h). */
 #include "sw_boot.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk --store: the runtime's side of the pack store (sw_pack_store.h).
  * At start it takes the boot decision (the pending slot on trial, counted
  * before loading, else the good slot), checks the loaded pack's signature

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_camera_path.h"
 
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Camera paths for walks: timed key frames read from a text file, interpolated
  * smoothly, and the orbit around a model. Called by the runtime at start-up
  * (parsing, into caller memory) and every frame (evaluation, no allocation).

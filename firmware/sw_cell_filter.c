@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_cell_filter.h"
 
 #include <string.h>

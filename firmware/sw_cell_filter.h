@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Which cells of a patch's uniform grid survive its trim mask
  * (sw_pack_trim_mask: 32 x 32 cells of the patch's domain that touch the
  * trimmed face). A grid cell is kept when it overlaps any set mask cell, so

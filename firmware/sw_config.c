@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The configuration file (sw_config.h). inih splits the text into sections
  * and key = value pairs; our line reader feeds it and counts lines (this inih
  * build passes no line numbers to the handler), checks each [section] header

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The unit's configuration file: an INI file read with inih
  * at start-up, before the arena is taken (sw_config_load reads the file into
  * a heap buffer it frees before returning; the frame loop never sees this). `seamwalk --config FILE` reads one; its values fill the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The debounce state machine (sw_debounce.h has the rule). Every input first
  * lets time pass up to its timestamp (step), so an edge that arrives after a
  * quiet gap ends the previous burst before it starts a new one. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Debouncing one GPIO button line, the logic only: the
  * device layer (libgpiod v1, which has no debounce of its own) feeds each
  * both-edge event with its kernel timestamp, and ticks the machine with the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The keyboard backend on evdev (sw_input_backend.h), for the kiosk where
  * there is no window (a window's keys come through sw_window_keys.c),
  * through libevdev. "auto" takes the first /dev/input/eventN that reports

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* gamecontrollerdb lines (sw_gamepad_map.h). */
 #include "sw_gamepad_map.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Gamepad mappings in SDL's gamecontrollerdb grammar, so
  * lines written for SDL paste into [gamepad] mapping = FILE unchanged:
  *

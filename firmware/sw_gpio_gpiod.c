@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GPIO button backend on libgpiod v1 (sw_input_backend.h; Debian 12
  * ships 1.6). Only a unit with buttons exercises it; tests use
  * sw_input_fake.h. v1 has no debounce, so lines are requested for both

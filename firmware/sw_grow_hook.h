@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A test hook for the soak (seamwalk --test-grow-kb, tests/soak.sh): resident
  * memory that grows by a fixed step at each loop's end, with no allocation
  * in the frame loop, so a test can show that the soak's check fails on

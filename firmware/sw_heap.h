@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The process heap, held for the GL driver so that resident memory is
  * taken at start and does not move in a walk (docs/architecture.md,
  * "Memory after start"). Our own memory is the arena; after start only the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The HID report descriptor parser and report decoder (sw_hid_desc.h).
  * Items follow HID 1.11 section 6.2.2: a prefix byte (size in bits 0-1, 3
  * meaning 4 bytes; type in bits 2-3; tag in bits 4-7), then the data. The

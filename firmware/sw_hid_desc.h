@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* HID report descriptors of game controllers: the parser
  * that turns a descriptor (HIDIOCGRDESC or sysfs report_descriptor bytes)
  * into a layout of the fields a walk needs, and the decoder that reads an

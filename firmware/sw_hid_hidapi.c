@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The gamepad backend on hidapi's hidraw build (sw_input_backend.h). Only
  * a unit with controllers exercises it; tests use sw_input_fake.h.
  *

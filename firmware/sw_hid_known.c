@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Known layouts (sw_hid_known.h). Bit offsets count from the byte after the
  * report ID, as sw_hid_decode reads them. */
 #include "sw_hid_known.h"

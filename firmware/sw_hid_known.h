@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Known controller layouts: controllers whose descriptor
  * does not say what a walk needs. The DualShock 4 over USB describes its
  * triggers as Rx/Ry and its right stick as Z/Rz, and Linux's hid-playstation

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The thin device layer under the kiosk's inputs: what
  * the input step (sw_kiosk.h) needs from hidapi, libgpiod and evdev, as
  * three small tables of functions, so tests and headless runs plug in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fake devices (sw_input_fake.h). */
 #include "sw_input_fake.h"
 

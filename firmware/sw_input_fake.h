@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fake devices behind the device layer's interface (sw_input_backend.h):
  * what tests and `seamwalk --input-timeline` drive instead of hidapi,
  * libgpiod and evdev. A fake controller slot holds a recorded descriptor and

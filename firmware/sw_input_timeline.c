@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Input timeline and hex byte parsers (sw_input_timeline.h). A line is cut
  * into at most 300 whitespace-separated words in place of a copy, so a line
  * of any length is read without a buffer. */

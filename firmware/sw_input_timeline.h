@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Input timelines: a recorded or scripted sequence of
  * device events that `seamwalk --input-timeline FILE` replays through the
  * fake devices (sw_input_fake.h) on a simulated clock, so a headless walk

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The input step (sw_kiosk.h): devices -> one sw_nav_input -> sw_nav. */
 #include "sw_kiosk.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The frame loop's input step: poll the devices ->
  * actions -> navigation -> the camera pose, once per frame on the GL
  * thread. seamwalk_main.c calls sw_kiosk_init at start-up and

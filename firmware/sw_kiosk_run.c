@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* --navigate and --input-timeline (sw_kiosk_run.h). */
 #include "sw_kiosk_run.h"
 
@@ -114,14 +115,24 @@ sw_status sw_kiosk_run_start(sw_kiosk_run *r, const sw_options *opt, sw_display 
         r->keys = sw_fake_key_backend(&r->fake);
         r->t0_ns = 0;
     } else {
+#if SW_HAVE_HIDAPI
         r->hid = sw_hid_hidapi_backend();
-        r->gpio = sw_gpio_gpiod_backend();
+#else
+        if (cfg->gamepad_enabled)
+            fprintf(stderr, "seamwalk: no gamepads: built without hidapi (SW_WITH_HIDAPI=OFF)\n");
+#endif
+#if SW_HAVE_GPIOD
+        r->gpio = sw_gpio_gpiod_backend();   /* without: sw_options.c refused [gpio] buttons */
+#endif
         r->keys = sw_window_has_keyboard(display) ? sw_window_key_backend(display)
                                                   : sw_evdev_key_backend();
         r->t0_ns = monotonic_ns();
     }
     r->last_ns = r->t0_ns;
-    sw_kiosk_devices dev = {&r->hid, &r->gpio, &r->keys, cfg->keyboard_device};
+    /* NULL: a backend the build lacks, so the kiosk opens none of those. */
+    sw_kiosk_devices dev = {r->simulated || SW_HAVE_HIDAPI ? &r->hid : NULL,
+                            r->simulated || SW_HAVE_GPIOD ? &r->gpio : NULL, &r->keys,
+                            cfg->keyboard_device};
     sw_nav_params np = sw_kiosk_nav_params(cfg, fovy_rad, aspect, cfg->nav_mode == SW_NAV_ORBIT);
     sw_kiosk_init(&r->kiosk, cfg, &dev, cfg->gamepad_mapping[0] ? &r->db : NULL, &np, frame,
                   box, views, view_count, r->t0_ns);

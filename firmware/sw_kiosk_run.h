@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk's --navigate and --input-timeline: chooses the devices (the real
  * ones, or fake ones fed from a timeline), loads what they need at start-up
  * (the mapping file, the timeline and its descriptors, the pose log) and

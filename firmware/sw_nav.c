@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Navigation (sw_nav.h). Walk and orbit keep angles, not matrices, so the
  * state is small and steps are exact functions of their inputs. A
  * direction from yaw y and pitch p is cos p (cos y A + sin y R) + sin p U

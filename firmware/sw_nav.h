@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Navigation: turns one frame's input intents into the
  * camera pose. Called once per frame by the input step (sw_kiosk.h) after
  * the devices were polled. Pure and deterministic: no clock, no allocation;

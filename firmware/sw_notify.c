@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The service manager's notifications (sw_notify.h). GL thread. */
 #include "sw_notify.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk under systemd (firmware/seamwalk.service, Type=notify): the
  * service manager's notifications through libsystemd's sd_notify. READY=1
  * once the first frame is on the display (so `systemctl start` returns

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_options.h"
 
 #include <errno.h>
@@ -183,6 +184,19 @@ static sw_status check_complete(const sw_options *o, sw_error *err)
     return SW_OK;
 }
 
+/* What this build was made without is a usage error when the walk would
+ * need it: a display left out, or [gpio] buttons for --navigate without
+ * libgpiod (SW_WITH_GPIOD=OFF). Gamepads are looked for, not asked for, so
+ * sw_kiosk_run.c only says they are missing. */
+static sw_status check_built(const sw_options *o, sw_error *err)
+{
+    sw_status st = sw_display_kind_check_built(o->display, err);
+    if (st != SW_OK || SW_HAVE_GPIOD || !o->navigate || o->config.gpio_count == 0)
+        return st;
+    return sw_error_set(err, SW_ERR_ARG, "[gpio %s]: built without libgpiod (SW_WITH_GPIOD=OFF)",
+                        o->config.gpio[0].name);
+}
+
 sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
 {
     set_defaults(o);
@@ -320,7 +334,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
     }
     if (st == SW_OK)
         merge_choice(o, &choice);
-    return st != SW_OK ? st : check_complete(o, err);
+    if (st == SW_OK)
+        st = check_complete(o, err);
+    return st != SW_OK ? st : check_built(o, err);
 }
 
 void sw_options_print_usage(FILE *out, const char *argv0)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The seamwalk command line, parsed into a struct where zero means default.
  * Called once by main before anything else. With --config FILE the file
  * (sw_config.h) is read first and fills what the command line does not give:

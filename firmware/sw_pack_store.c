@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #define _DEFAULT_SOURCE /* realpath */
 /* The pack store's files and its state changes (sw_pack_store.h). Nothing
  * here allocates: the runtime calls sw_store_mark_good between frames (only

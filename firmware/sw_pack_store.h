@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The unit's pack store: a directory with two pack slots (A and B), a small
  * state file saying which slot is good, which is pending its first good
  * run, and how often the pending one was started, and, during an install,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Connected controllers (sw_pads.h). */
 #include "sw_pads.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The connected game controllers: hot-plug by periodic
  * enumeration, and per controller its layout (a known one, sw_hid_known.h,
  * else its parsed descriptor), its mapping (the file's line for its GUID,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_parts_threads.h"
 
 #include <pthread.h>

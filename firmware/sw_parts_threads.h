@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The loader's parts runner (core/sw_parts.h): the calling thread and up to
  * SW_PARTS_MAX_HELPERS more take parts from one atomic counter. Helpers are
  * started for a run and joined at its end (a start makes two runs: the

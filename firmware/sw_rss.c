@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_rss.h"
 
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The process's resident memory, read from /proc/self/status (Linux):
  * VmRSS now and VmHWM, the most it has been. The soak (seamwalk --duration)
  * reads it at the walk's start, after its first loop and at its end, to

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Walk statistics: per-frame samples kept in arena arrays sized at start, an
  * error histogram, and the stats JSON (a contract: fields are added, never
  * renamed). The frame loop records; main writes the file after the walk. */

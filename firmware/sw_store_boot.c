@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Which slot a unit starts, and the state changes around a boot: counting
  * the pending slot's attempts, giving up on it, mark-good and rollback
  * (sw_pack_store.h). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Installing a pack into the store's inactive slot (sw_store_install.h).
  * Order of the steps, and why each is safe to be cut off by a power loss:
  *   1. check the pack in memory (nothing on disk changes if it is refused);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk-flash's install into the pack store (sw_pack_store.h): check the
  * pack, write the inactive slot in chunks under a journal (an interrupted
  * install resumes), fsync, read it back and verify every checksum and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The store's two small text files, the state and the install journal
  * (sw_pack_store.h; layout in firmware/STORE.md). Text, so an engineer can
  * read a unit's state with cat; a trailing XXH3 line, so a damaged file is

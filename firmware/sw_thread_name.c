@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_thread_name.h"
 
 #include <sys/prctl.h>

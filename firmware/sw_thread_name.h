@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The calling thread's name as top, perf and gdb show it (Linux: 15
  * characters at most, longer is cut), so a profile of the walk says which
  * of its threads spent the time: sw-visibility, sw-worker, sw-loader,

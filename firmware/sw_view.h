@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* One frame's view: camera matrices, frustum, clip planes fitted to the model,
  * and the screen-space error rule. Computed once per frame by the frame loop;
  * pure math, no GL. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The keyboard backend of a developer window (sw_input_backend.h): the key
  * events an X11 or Wayland window queued (platform/sw_key_queue.h, as X11/XKB
  * keysyms) handed to the input step as the Linux KEY_* codes the kiosk's key

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A developer window's keyboard as the input step's key backend
  * (sw_input_backend.h): with --navigate on an X11 or Wayland window the
  * window's key events drive the camera; on headless and KMS the kiosk reads

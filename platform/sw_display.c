@@ -1,5 +1,8 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_display.h: one switch per call onto the display that runs. Headless is
- * the existing sw_egl_headless, unchanged. */
+ * the existing sw_egl_headless, unchanged. A display the build was made
+ * without (SW_HAVE_KMS, SW_HAVE_X11, SW_HAVE_WAYLAND 0) has no case: init
+ * refuses it, so no other call meets it. */
 #include "sw_display.h"
 
 #include <GLES2/gl2.h>
@@ -20,6 +23,10 @@ static sw_status init_kind(sw_display *d, const sw_display_desc *desc, sw_error 
 {
     const char *title = desc->title ? desc->title : "seamwalk";
     int w = desc->width, h = desc->height;
+    sw_status st = sw_display_kind_check_built(d->kind, err);
+    if (st != SW_OK)
+        return st;
+    (void)title;   /* only the windows use it, and a build may have neither */
     switch (d->kind) {
     case SW_DISPLAY_KIND_HEADLESS:
         if (w < 1 || h < 1)
@@ -29,19 +36,25 @@ static sw_status init_kind(sw_display *d, const sw_display_desc *desc, sw_error 
         d->height = h;
         return sw_egl_headless_init_depth(&d->u.headless, SW_GL_API_GLES2, w, h,
                                           desc->max_depth_bits ? desc->max_depth_bits : 24, err);
+#if SW_HAVE_KMS
     case SW_DISPLAY_KIND_KMS:
         return sw_display_kms_init(&d->u.kms, desc->drm_device, w, h, &d->width, &d->height,
                                    err);
+#endif
+#if SW_HAVE_X11
     case SW_DISPLAY_KIND_X11:
         d->width = w > 0 ? w : 1280;
         d->height = h > 0 ? h : 720;
         return sw_display_x11_init(&d->u.x11, title, d->width, d->height, &d->keys,
                                    &d->close_requested, err);
+#endif
+#if SW_HAVE_WAYLAND
     case SW_DISPLAY_KIND_WAYLAND:
         d->width = w > 0 ? w : 1280;
         d->height = h > 0 ? h : 720;
         return sw_display_wayland_init(&d->u.wayland, title, d->width, d->height, &d->keys,
                                        &d->close_requested, err);
+#endif
     default:
         return sw_error_set(err, SW_ERR_ARG, "display: unknown kind %d", (int)d->kind);
     }
@@ -80,12 +93,19 @@ int sw_display_depth_bits(const sw_display *d)
 
 sw_status sw_display_present(sw_display *d, sw_error *err)
 {
+    (void)err;   /* only the windows and KMS can fail, and a build may have none */
     if (close_signal)
         d->close_requested = 1;
     switch (d->kind) {
+#if SW_HAVE_KMS
     case SW_DISPLAY_KIND_KMS: return sw_display_kms_present(&d->u.kms, err);
+#endif
+#if SW_HAVE_X11
     case SW_DISPLAY_KIND_X11: return sw_display_x11_present(&d->u.x11, err);
+#endif
+#if SW_HAVE_WAYLAND
     case SW_DISPLAY_KIND_WAYLAND: return sw_display_wayland_present(&d->u.wayland, err);
+#endif
     default: return SW_OK;   /* headless: the FBO is the picture; nothing to show */
     }
 }
@@ -113,9 +133,15 @@ void sw_display_destroy(sw_display *d)
 {
     switch (d->kind) {
     case SW_DISPLAY_KIND_HEADLESS: sw_egl_headless_destroy(&d->u.headless); break;
+#if SW_HAVE_KMS
     case SW_DISPLAY_KIND_KMS: sw_display_kms_destroy(&d->u.kms); break;
+#endif
+#if SW_HAVE_X11
     case SW_DISPLAY_KIND_X11: sw_display_x11_destroy(&d->u.x11); break;
+#endif
+#if SW_HAVE_WAYLAND
     case SW_DISPLAY_KIND_WAYLAND: sw_display_wayland_destroy(&d->u.wayland); break;
+#endif
     default: break;
     }
     d->up = 0;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The display seamwalk draws into, behind one small interface so the GLES2
  * code never knows which:
  *   headless  EGL surfaceless, an offscreen framebuffer (CI; sw_egl_headless.h)
@@ -72,7 +73,8 @@ void sw_display_probe(sw_display_env *env);
 /* auto's rule, in order: Wayland when WAYLAND_DISPLAY is set and EGL offers
  * EGL_KHR/EXT_platform_wayland; X11 when DISPLAY is set and it offers
  * EGL_KHR/EXT_platform_x11; KMS when a /dev/dri/card* exists and it offers
- * EGL_KHR/MESA_platform_gbm; else headless (EGL_MESA_platform_surfaceless;
+ * EGL_KHR/MESA_platform_gbm; each only if this build has it
+ * (sw_display_kind_check_built); else headless (EGL_MESA_platform_surfaceless;
  * its init says so if even that is missing). A session's window wins over
  * the bare device, which a compositor holds anyway. why gets one line. */
 sw_display_kind sw_display_choose(const sw_display_env *env, char *why, size_t why_size);
@@ -81,6 +83,13 @@ sw_display_kind sw_display_choose(const sw_display_env *env, char *why, size_t w
 const char *sw_display_kind_name(sw_display_kind kind);
 /* SW_ERR_ARG naming the word and the choices for anything else. */
 sw_status sw_display_kind_parse(const char *name, sw_display_kind *kind, sw_error *err);
+
+/* SW_OK when this build has the display (auto and headless it always has);
+ * else SW_ERR_ARG "built without X11 (SW_WITH_X11=OFF)". The build leaves
+ * out KMS, X11 or Wayland with the CMake options SW_WITH_KMS, SW_WITH_X11
+ * and SW_WITH_WAYLAND (SW_HAVE_* in the code), and auto never picks one it
+ * lacks. */
+sw_status sw_display_kind_check_built(sw_display_kind kind, sw_error *err);
 
 /* Opens the display, makes its GLES2 context current with the default (or
  * headless: the offscreen) framebuffer bound. On failure cleans up and err

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Which display "auto" means (sw_display.h), and the names of the kinds. */
 #include "sw_display.h"
 
@@ -27,6 +28,23 @@ sw_status sw_display_kind_parse(const char *name, sw_display_kind *kind, sw_erro
                         "wayland, got '%s'", name ? name : "");
 }
 
+sw_status sw_display_kind_check_built(sw_display_kind kind, sw_error *err)
+{
+    switch (kind) {
+    case SW_DISPLAY_KIND_KMS:
+        return SW_HAVE_KMS ? SW_OK
+                           : sw_error_set(err, SW_ERR_ARG, "built without KMS (SW_WITH_KMS=OFF)");
+    case SW_DISPLAY_KIND_X11:
+        return SW_HAVE_X11 ? SW_OK
+                           : sw_error_set(err, SW_ERR_ARG, "built without X11 (SW_WITH_X11=OFF)");
+    case SW_DISPLAY_KIND_WAYLAND:
+        return SW_HAVE_WAYLAND ? SW_OK : sw_error_set(err, SW_ERR_ARG, "built without Wayland "
+                                                      "(SW_WITH_WAYLAND=OFF)");
+    default:
+        return SW_OK;
+    }
+}
+
 static int env_set(const char *name)
 {
     const char *v = getenv(name);
@@ -52,16 +70,18 @@ static int offers(const sw_display_env *env, const char *a, const char *b)
 
 sw_display_kind sw_display_choose(const sw_display_env *env, char *why, size_t why_size)
 {
-    if (env->wayland_display_set &&
+    if (SW_HAVE_WAYLAND && env->wayland_display_set &&
         offers(env, "EGL_KHR_platform_wayland", "EGL_EXT_platform_wayland")) {
         snprintf(why, why_size, "auto: WAYLAND_DISPLAY is set and EGL offers Wayland");
         return SW_DISPLAY_KIND_WAYLAND;
     }
-    if (env->x_display_set && offers(env, "EGL_KHR_platform_x11", "EGL_EXT_platform_x11")) {
+    if (SW_HAVE_X11 && env->x_display_set &&
+        offers(env, "EGL_KHR_platform_x11", "EGL_EXT_platform_x11")) {
         snprintf(why, why_size, "auto: DISPLAY is set and EGL offers X11");
         return SW_DISPLAY_KIND_X11;
     }
-    if (env->drm_card_present && offers(env, "EGL_KHR_platform_gbm", "EGL_MESA_platform_gbm")) {
+    if (SW_HAVE_KMS && env->drm_card_present &&
+        offers(env, "EGL_KHR_platform_gbm", "EGL_MESA_platform_gbm")) {
         snprintf(why, why_size, "auto: /dev/dri/card* exists and EGL offers GBM");
         return SW_DISPLAY_KIND_KMS;
     }

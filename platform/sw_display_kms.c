@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* KMS through libdrm's legacy mode-setting calls and GBM, as kmscube's
  * drm-legacy.c and common.c do it: init_drm (device, connector, mode, CRTC),
  * init_gbm (scan-out surface), init_egl (EGL on GBM), then per frame lock the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The KMS display (sw_display.h "kms"): full-screen scan-out on a kiosk
  * without X or Wayland, through libdrm and GBM, shaped like kmscube's
  * drm-legacy.c: open /dev/dri/cardN and become DRM master, pick a connected

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A Wayland window for developers: the registry gives wl_compositor,
  * xdg_wm_base and wl_seat; an xdg_toplevel is configured before the first
  * frame (xdg-shell requires the ack before a buffer is attached); EGL draws

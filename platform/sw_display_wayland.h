@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Wayland developer window (sw_display.h "wayland"): wayland-client with
  * xdg-shell, EGL on Wayland through wayland-egl, wl_keyboard keys turned into
  * keysyms with the compositor's keymap (xkbcommon) and queued

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* An X11 window for developers: Xlib opens the server, EGL picks the config
  * and so the visual, the window is made with that visual and a fixed size
  * (the arena's read-back and the view's aspect were sized for it). Events

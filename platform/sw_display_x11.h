@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The X11 developer window (sw_display.h "x11"): Xlib, EGL on X11
  * (EGL_KHR/EXT_platform_x11), a fixed-size window with the EGL config's
  * visual, key events queued (sw_key_queue.h) and the window manager's close

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Headless EGL through Mesa's surfaceless platform. The steps follow kmscube's
  * egl setup, minus the window: platform display, config, context made current
  * without a surface (EGL_KHR_surfaceless_context), then an FBO to draw into.

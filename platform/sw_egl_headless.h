@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A headless EGL display: Mesa's surfaceless platform (EGL_MESA_platform_surfaceless),
  * no window and no /dev/dri needed, with llvmpipe in CI. For GLES2 it renders
  * into an offscreen framebuffer object (RGBA8 texture + a depth renderbuffer

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The window half of kmscube's init_egl: platform display, config matched to
  * the native visual, window surface, context. */
 #define _GNU_SOURCE /* dl_iterate_phdr, RTLD_NODELETE */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* EGL on a window-system surface, shared by the KMS (GBM), X11 and Wayland
  * displays (sw_display_*.c): a platform display from EGL_EXT_platform_base,
  * a GLES2 config with a window bit and depth, a window surface, a context

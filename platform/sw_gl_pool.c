@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_gl_pool.h"
 
 #include <GLES2/gl2.h>

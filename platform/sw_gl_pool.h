@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GL buffers that keep meshes across frames (paper 004 section 6.4: a
  * surface's tessellation is uploaded once and drawn until it is redone).
  * One vertex buffer and one index buffer, sized at start (GLES2 has no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_key_queue.h"
 
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Key events from a developer window (X11 key events, Wayland wl_keyboard),
  * kept in a fixed ring inside the display until the input step takes them
  * with sw_display_poll_keys (sw_display.h). No allocation: a full queue drops

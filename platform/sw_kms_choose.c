@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_kms_choose.h"
 
 int sw_kms_choose_connector(const sw_kms_connector_info *connectors, int count)

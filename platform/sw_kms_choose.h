@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The KMS display's choices as pure functions over plain lists, so they are
  * tested without a DRM device (tests/test_kms_choose.c): which connector,
  * which of its modes. sw_display_kms.c fills the lists from libdrm. */

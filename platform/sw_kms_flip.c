@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_kms_flip.h"
 
 #include <stddef.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The KMS display's scan-out buffer bookkeeping as a pure state machine
  * (kmscube's loop: lock the new front buffer, flip to it, wait for the flip
  * event, release the previous one), so the order is tested without a DRM

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The message screen (sw_message_screen.h). */
 #include "sw_message_screen.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A screen that says what is wrong when there is nothing to walk (no valid
  * pack on the unit): a dark red background, a white border and a line of
  * blocky capitals, drawn with glScissor and glClear alone, so it needs no

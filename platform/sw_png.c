@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* PNG output through stb_image_write with its allocations served by an arena.
  *
  * stb takes its allocator as macros, not as a parameter, so the arena is passed

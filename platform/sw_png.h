@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* PNG files through stb_image_write, with every allocation stb makes served
  * from a caller-given arena region, so writing frames does not call malloc
  * after start-up. Only one thread at a time may write. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GLES2 renderer. Lighting is computed per fragment in eye space with two
  * directional lights fixed to the camera: a headlight (from the eye, so what
  * the walker looks at is never dark) and a key light above and to the right

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GLES2 renderer: one shader program with per-fragment lighting (a
  * headlight plus a key light, two-sided so soups of patches with mixed
  * orientation still shade), depth test, 16-bit indices, streaming vertex and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_xkb_keys.h"
 
 #include <errno.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Wayland window's keyboard (sw_display_wayland.c): the keymap the
  * compositor sends with wl_keyboard.keymap (XKB text in a shared file) and
  * the translation of its key codes (evdev numbers) into X11/XKB keysyms, the

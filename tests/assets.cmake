@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests of the assets area: host model, importers, scenes, seamwalk-pack
 sw_add_test(test_import SOURCES test_import.c LIBS sw_assets sw_core
   ARGS ${SW_SAMPLES} ${SW_SHARED_MODELS})

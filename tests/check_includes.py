@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The includes run one way (docs/architecture.md):
   check_includes.py SOURCE_DIR
 fails (exit 1) when a header of core/, platform/, firmware/ or assets/

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """check_stats.py STATS.json FRAMES [--bound PX]: the stats file
 holds every contract field, counts FRAMES frames, allocates nothing after
 init, and measured an error within the bound the test asked for (--bound,

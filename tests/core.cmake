@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests of the core area
 sw_add_test(test_math SOURCES test_math.c LIBS sw_core)
 sw_add_test(test_error SOURCES test_error.c LIBS sw_core)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Does seamwalk take these CAD files? For every IGES, STEP, Newell listing
 # and .bpt file under the folders given:
 #   tests/corpus.sh [--build DIR] [--require-sewing] [--allow-free FILE:MM]...

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """One row of tests/corpus.sh: a JSON object (line 1) and the table line
 (line 2) for a file, from its pack's info, its close-to-far walk's stats and
 OpenCASCADE's sewing of it (each may be missing: an earlier step failed).

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Runs a test's command and passes only when it exits as expected and its
 output says what it must. CTest's PASS_REGULAR_EXPRESSION alone ignores the
 exit code: a crash, an abort or a sanitizer's report after the expected line

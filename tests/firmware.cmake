@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests of the firmware area: runtime modules, then the whole program.
 sw_add_test(test_arena SOURCES test_arena.c LIBS sw_core)
 sw_add_test(test_buddy SOURCES test_buddy.c LIBS sw_core)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* An LD_PRELOAD shim for the pack store's tests: counts the calls that
  * change files (write and pwrite on descriptors above 2, fsync, fdatasync,
  * ftruncate, rename, unlink) and, as the environment asks,

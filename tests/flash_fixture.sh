@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The pack store tests' fixture: two owner key pairs and signed packs in DIR.
 #   flash_fixture.sh SEAMWALK_PACK SAMPLES DIR
 # old.swpack (teaspoon, version 1), new.swpack (teacup, version 2),

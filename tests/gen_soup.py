@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """A patch soup as CAD exporters write them, for holding seamwalk's sewing
 against OpenCASCADE's: an IGES 5.3 file of independent B-spline surfaces
 (type 128), sharing no topology.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reads the recorded descriptors and reports of tests/hid/ (hex files, with
  * their sources in the comments) for the kiosk input tests. */
 #ifndef HID_FIXTURE_H

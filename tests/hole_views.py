@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """hole_views.py INFO.json OUT.path: a camera path of still views for the
 image hole test (tests/test_image_holes.sh) around a pack's box (from
 `seamwalk-pack info --json`): close (0.5 model sizes from the centre, in

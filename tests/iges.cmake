@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests of the native IGES reader and point inversion / pcurve fitting
 sw_add_test(test_import_iges SOURCES test_import_iges.c LIBS sw_assets sw_core
   ARGS ${SW_SHARED_MODELS})

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """An independent measure of an IGES file's bounds, for the files OpenCASCADE
 reads no faces from (gpucast's teapot): its own small reader of the rational
 B-spline surfaces (entity 128), sharing nothing with seamwalk's importer.

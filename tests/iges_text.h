@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Writes small IGES 5.3 files for the tests of the native IGES reader: the
  * S, G, D, P and T sections in fixed 80-column records from a list of
  * entities given as their parameter text. Millimetres, tolerance 0.001. */

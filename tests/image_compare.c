@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* image_compare A.png B.png [--level L] [--max-fraction F]
  * Compares two pictures of the same size for the golden-image tests: a pixel
  * differs when any channel differs by more than L levels (default 8); the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* image_holes TEST.png REFERENCE.png R,G,B [--inside R,G,B] [--margin PX] [--reach PX]
  *             [--max N] [--max-inside N] [--out HOLES.png] [--empty-ok]
  * Cracks and holes in a picture, told by pixels alone (no bookkeeping of the

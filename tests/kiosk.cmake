@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests of the kiosk pieces of issue 11: configuration and button debouncing.
 sw_add_test(test_debounce SOURCES test_debounce.c LIBS sw_runtime)
 sw_add_test(test_config SOURCES test_config.c LIBS sw_runtime

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shapes built in the tests of the model and the trims (test_model.c,
  * test_trim.c): exact rational circles as trim curves, rectangles as
  * polygons of lines, planes as B-spline surfaces with the identity

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """near_far_path.py INFO.json OUT_DIR: camera paths for a walk from close to
 far around a pack (its box from `seamwalk-pack info --json`), for a 320x240
 headless walk at seamwalk's 45 degree field of view. OUT_DIR/near_far.path:

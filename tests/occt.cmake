@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests of the OpenCASCADE importer (assets/import/sw_import_occt.cpp), or, in a build
 # without OCCT, of its "built without STEP support" fallback.
 set(SW_OCCT_SCRATCH ${CMAKE_CURRENT_BINARY_DIR}/occt-scratch)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What OpenCASCADE measures in a CAD file, as JSON on stdout, for
  * test_models.sh to hold packs against an independent reader:
  *   occt_measure FILE              faces, area, tight box

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests of the pack area: the reader (test_pack; test_pack_trim for the optional
 # sections), the writer (test_pack_write)
 # and the reader's fuzz target with its seed packs.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the pack reader's tests (test_pack_seam.c, test_pack_levels.c):
  * a pack must open with the status expected, its message naming the rule,
  * and the same with the checks' parts run backwards. Include after

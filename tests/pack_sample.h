@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the pack tests (test_pack.c: the reader; test_pack_write.c: the
  * writer): a small pack built by hand, header and table access for making
  * faulty packs with valid checksums, and a scratch directory for files.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The Seam Graph in the pack: writer round trip, one refusal per validation
 # rule, the info report (test_pack_seam); seamwalk-pack info on the fuzz seed
 # that holds a graph (test_pack_seam_info). The seed itself is replayed by

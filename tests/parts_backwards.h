@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A parts runner (core/sw_parts.h) for the tests and the pack fuzzer: it
  * runs the parts last first. The loader's threads run the pack's checks in
  * any order, so a pack must open with the same status and message this way

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A preload library that counts every heap call of the whole process, for
  * the test that sets seamwalk's own count (sw_alloc_count, which sees only
  * our code through --wrap) beside what the process really does, Mesa's

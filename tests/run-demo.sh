@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The main job: installs what is missing, builds, packs the built-in teaset
 # sample, walks it headless (an orbit of 120 frames at 1280x720) and leaves PNG
 # frames and a stats JSON in out/. The walk goes through the pack's Seam

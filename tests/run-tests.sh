@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The test command: installs what is missing, configures and builds with
 # warnings as errors, and runs the whole CTest suite. Safe to run again.
 #   --sanitizers   also build and run the suite under ASan+UBSan

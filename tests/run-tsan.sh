@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # CI's thread step: builds the tree with ThreadSanitizer (cmake -DSW_TSAN=ON)
 # and runs under it every test that runs instrumented code (the
 # Release-only sweeps are named in tests/firmware.cmake, with why). Every

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Synthetic Seam Graphs for the seam LOD tests and the benchmark, built as
  * the sewing would leave them (original vertices only): a grid of square
  * surfaces sewn along their shared sides, optionally a hole in each square,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The invariants every original Seam Graph (sw_seam_host, before any
  * collapse) must meet, for the sewing tests (test_seam_sew.c,
  * test_seam_sew_repairs.c). */

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests of the Seam Graph's level of detail: the host simplifier (assets) and
 # the runtime selection (core), on synthetic graphs (seam_graph_gen.h)
 sw_add_test(test_seam_simplify SOURCES test_seam_simplify.c LIBS sw_assets)

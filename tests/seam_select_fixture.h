@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the tests of sw_seam_select (test_seam_select.c: the front;
  * test_seam_select_loop.c: the loops' polylines): a simplified generated
  * graph with its state, and an independent view of a front, recomputed from

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # the original Seam Graph: trims flattened within the tolerance and sewn (sw_seam_sew.h)
 sw_add_test(test_seam_sew SOURCES test_seam_sew.c LIBS sw_assets sw_core ARGS ${SW_SAMPLES} ${SW_SHARED_MODELS})
 # Beyond the intervals: gaps from the file, trims past the domain, T-junctions.

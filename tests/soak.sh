@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The soak: seamwalk walks a looping path for a while and
 # its resident memory must stay flat and its code allocate nothing.
 #   soak.sh BUILD_DIR [--duration S] [--pack PACK] [--path FILE]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A minimal test harness: each check prints file:line and the failed
  * expression with the values, and the program exits non-zero at the end if
  * any check failed. Tests read as specifications: one behaviour per function. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The heap-call counter sees our code's malloc family through --wrap, so a
  * zero mallocs_after_init is evidence, not an absence of counting. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The arena: bump allocation, alignment, exhaustion, marks, in-place growth,
  * slabs, and touching the block at start. */
 #define _DEFAULT_SOURCE /* mincore, MAP_ANONYMOUS */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_bezier: evaluation against a long-double de Casteljau written here,
  * derivatives against finite differences, normals, the collapsed-edge normal,
  * second-derivative bounds against dense sampling, the control box. */

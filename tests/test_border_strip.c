@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Border strips (core/sw_border_strip.h). The outer chain's vertices are
  * numbered 0 .. a - 1, the inner chain's a .. a + b - 1, as the chains are
  * given (not sorted). Geometry, where a test needs it: the loop is a

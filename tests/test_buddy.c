@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The buddy allocator behind the tessellation cache: blocks never overlap,
  * requests round up to powers of two, freeing merges buddies back into the
  * whole range, odd-sized ranges, exhaustion and bad frees. A randomised run

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Camera path files: parsing, errors with file:line, interpolation through
  * the keys, smoothness, and the orbit. */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The trim-mask cell filter: which grid cells of a patch are drawn. */
 #include <string.h>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The command-line conventions of seamwalk, seamwalk-pack and seamwalk-flash:
 # --help prints the usage on stdout, nothing on stderr, exit 0; a usage error
 # (unknown option or command, bad value, missing argument) prints nothing on

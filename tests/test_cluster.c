@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Clustering into super-surfaces (assets/super/sw_cluster.h), checked by
  * what the clusters must be, on hand-built surfaces and, given a pack's
  * path, on a real pack (the teaset, built by CTest):

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # seamwalk --config end to end: a unit's config file names the pack, the
 # size, the error bound and an orbit, and the command line overrides it.
 #   test_config_walk.sh BUILD_DIR SOURCE_DIR

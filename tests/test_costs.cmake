@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Each test's cost in seconds, as measured on the 2-core development VM
 # (CTest's own averages, rounded; tests under 8 s left at CTest's default):
 # a fresh build has no CTest history, and in declaration order the longest

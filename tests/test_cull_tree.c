@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_cull_tree: the hierarchy gives exactly the per-surface nearest and
  * farthest depths of testing every patch box (sw_cull_brute), on generated
  * scenes from many random views and, given pack files, on real packs from

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Culling end to end (issue 10, item 4):
 #   test_cull_walk.sh BUILD_DIR SOURCE_DIR [MODEL...]
 # For the teaset sample, a generated showroom of 3,000 patches and each

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GPIO button debouncer (firmware/sw_debounce.h): scripted edges with
  * exact timestamps in, the exact events out. Times are in microseconds in
  * the scripts for reading; the machine sees nanoseconds. */

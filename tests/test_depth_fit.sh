@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The depth planes fit where the model can be seen (firmware/walk/visibility/sw_seam_depth.h),
 # told by pixels alone: a strip of floor that runs from behind the eye to
 # 25 m ahead (its box reaches behind the eye: its nearest corner is no

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # SIGTERM (a service stop) and SIGINT (Ctrl-C) end a walk after the frame in
 # progress, through the display's close request (sw_display_close_on_signal):
 # seamwalk exits 0, writes its stats for the frames it drew and prints its

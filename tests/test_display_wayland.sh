@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The Wayland developer window for real: Weston's headless backend with its
 # pixman renderer as the compositor, Mesa's EGL on Wayland with llvmpipe
 # (wl_shm buffers) as the client. seamwalk --display wayland must give the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The X11 window (platform/sw_display_x11.c) on a real X server: run by
  * tests/test_display_x11.sh under Xvfb with Mesa's llvmpipe. The window
  * draws and reads back, key events sent to it come out of

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The X11 developer window for real: Xvfb (a virtual X server) with Mesa's
 # llvmpipe. Runs tests/test_display_x11 (draw, read back, keys, close), then
 # seamwalk --display x11 against --headless: the same frames (image_compare),

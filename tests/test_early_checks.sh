@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Caps and early checks (issue 25, item 7), end to end: a STEP shell that
 # lists one face 200,000 times ends at once with its line; the output's
 # folder and name are checked before the build starts; a directory named

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Errors as values (core/sw_error.h): a message that quotes a file's bytes
  * never carries a control byte out, however it is built or cut. */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The kiosk keyboard on evdev (firmware/sw_evdev_keys.c) through libevdev,
  * without /dev/input: the device is a pipe carrying recorded input_events,
  * and the kernel's answers to libevdev's ioctls (its name, the keys it

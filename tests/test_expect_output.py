@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The tests that check a program's output pass only when it also exits as
 expected (tests/expect_output.py): the expected line followed by a crash,
 an abort or a non-zero exit fails, and no CTest test of the build checks

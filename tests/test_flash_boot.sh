@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # seamwalk --store, the boot side of the pack store: a pending slot runs on
 # trial and is marked good after healthy frames; one that fails to load, or
 # never runs healthy, gets K boots and then the unit falls back to the good

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # seamwalk-flash from the command line: refusals (unsigned, wrong key, a
 # flipped byte anywhere, truncated, older) change nothing on the unit; I/O
 # faults (failing write, fsync, rename, ftruncate; a full disk) leave the old

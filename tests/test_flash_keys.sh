@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The unit's trust anchor. A keys file its own user could change (group- or
 # world-writable, owned by that user, in a directory that user owns or that
 # others may write, or reached through such a directory or link) is refused

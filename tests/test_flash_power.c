@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Power loss during seamwalk-flash install: the installer is killed with
  * SIGKILL at random points, and after each kill the unit must boot the old
  * pack or the new one, verified (seamwalk-flash boot-check: the runtime's

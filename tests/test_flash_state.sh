@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The store's state is kept twice (state, state.copy): one damaged, empty
 # or missing copy loses nothing (the boot, boot-check, status, install,
 # rollback and mark-good go on from the other, and say which); with both

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # No store fault stops a boot, and boot-check says what the boot will do.
 # For each fault the unit's user can meet (the service runs as seamwalk;
 # here as nobody): a lock and state left by root's install, a lock it cannot

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* gamecontrollerdb mappings (sw_gamepad_map.h): SDL's GUID, SDL's own line
  * for the F310's D mode applied to a recorded-layout report, the grammar's
  * half axes and inversion, the dead zone, and every bad line. Argument:

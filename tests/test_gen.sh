@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Specification of the showroom generator (sw_gen_showroom.h): the scene it
 # writes builds with seamwalk-pack into a pack of N Bezier patches (within 5%;
 # the plan is exact), with its viewpoints; the seed decides the scene; bad

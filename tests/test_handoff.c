@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The hand-over primitives (core/sw_handoff.h): a published mesh is seen
  * whole, a take empties the slot, and a retired mesh comes back for reuse
  * only after the frame that last drew it has finished. The threaded cases

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The HID report descriptor parser and report decoder (sw_hid_desc.h),
  * against recorded descriptors of four real controllers (tests/hid/, each
  * file names its source) and every error path. Argument: tests/hid. */

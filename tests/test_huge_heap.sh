@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # seamwalk runs itself again once with glibc's heap on huge pages
 # (sw_heap_huge_pages, firmware/sw_heap.h), seen from outside: where the
 # kernel's THP mode is "madvise", the running walk's [heap] mapping carries

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The native IGES reader against OpenCASCADE's, on every shared IGES model:
  * the same number of faces, the same tight bounding box within the file's
  * model tolerance, and the same total trimmed area within 0.001%. The two share

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Cracks and holes seen in the pictures, not in the walk's own counts:
 #   test_image_holes.sh MODEL BUILD_DIR SOURCE_DIR
 # MODEL (a scene .ini or a CAD file) is packed and walked headless through

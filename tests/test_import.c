@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Specification of the host model (sw_model.h) and the text importers
  * (sw_import_newell.h, sw_import_bpt.h).
  * Usage: test_import SAMPLES_DIR [SHARED_MODELS_DIR] */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Specification of the native IGES reader (sw_import_iges.h): analytic
  * entities made exact NURBS, transforms, trims as written or computed, the
  * B-rep route, errors that name the section and line, and the shared models.

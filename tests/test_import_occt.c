@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Specification of the OpenCASCADE importer (sw_import_occt.h): every shared
  * STEP file imports with the faces its description gives, its trims close on
  * their surfaces, and the imported geometry covers what OCCT itself measures

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The input timeline and hex parsers (sw_input_timeline.h): every event
  * kind, comments, and each error with its FILE:LINE message. */
 #include <string.h>

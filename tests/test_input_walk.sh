@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # seamwalk --input-timeline end to end (issue 11, "Done when"): a scripted
 # timeline drives a headless walk through the fake devices: a recorded
 # F310 descriptor plugged at start, its left stick pushed and released, a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The window key queue (platform/sw_key_queue.h): order, partial takes, and
  * a full queue dropping the oldest. */
 #include "sw_key_queue.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The input step (sw_kiosk.h) on fake devices: GPIO buttons with bouncing
  * edges become exactly one action, a tap shorter than the debounce time is
  * not lost, a long press runs the long action, a missing chip is a log line,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The KMS display's connector and mode choice (platform/sw_kms_choose.h) over
  * connector and mode lists built here as libdrm would report them. */
 #include "sw_kms_choose.h"

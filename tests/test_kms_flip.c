@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The KMS display's scan-out buffer bookkeeping (platform/sw_kms_flip.h):
  * kmscube's order of lock, flip, wait for the event, release the previous
  * buffer, walked through with three stand-in buffers as GBM hands them out. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The static levels the pack tool makes (assets/super/sw_levels_build.h),
  * checked by what they must be, not by how they were made:
  * - every level's triangles re-measured against the exact surface at

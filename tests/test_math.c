@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_math: camera matrices against hand-computed values, frustum culling of
  * boxes, box and segment distances. */
 #include <math.h>

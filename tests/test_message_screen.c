@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The "no valid pack" screen (platform/sw_message_screen.c), rendered
  * headless and read back: the background and text colours where the
  * glyphs say, nothing else, and not a black display. */

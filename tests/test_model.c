@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_model: surfaces split into Bezier patches that reproduce the NURBS,
  * reversal, restriction of patches to the trims with conservative masks,
  * part transforms, viewpoints, Bezier inputs as one-patch surfaces, and

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # One shared CAD model end to end (one CTest test per file in ../shared/models):
 #   test_models.sh MODEL_FILE BUILD_DIR SOURCE_DIR
 # builds its pack (time and info counts printed), verifies it, walks it

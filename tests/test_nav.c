@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Navigation (sw_nav.h) with scripted inputs against golden poses worked
  * out by hand: at 30 Hz with accel_s 0.4 a speed ramps in 12 frames of
  * 1/12 each, so one second at full stick covers (78/12 + 18) / 30 of a

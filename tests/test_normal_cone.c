@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_normal_cone: a patch's cone holds every normal of the patch (sampled
  * densely, random degrees, shapes and weights), narrower cones are caught
  * by the same sampling, planes and collapsed edges get narrow cones, a

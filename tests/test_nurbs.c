@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_nurbs: the Bezier pieces from knot insertion reproduce the B-spline
  * (against a Cox-de Boor basis evaluation written here in long double), piece
  * counts and parameter ranges, and check() naming each kind of bad input. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack reader, version 1: what it accepts and, above all, what it
  * refuses and how it says so. The writer's side is in test_pack_write.c. */
 #include <stdint.h>

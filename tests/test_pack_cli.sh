@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Specification of the seamwalk-pack command line: build, info, verify, and
 # how it fails (exit 1 with one stderr line, exit 2 for usage, no partial or
 # damaged output file); per-part info on trimmed packs, --strict, --quiet,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The static levels in the pack: the sample's hand-built levels over its
  * Seam Graph (pack_sample.h) written and read back identical; which level
  * sections must appear together and how their sizes are checked; one

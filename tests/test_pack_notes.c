@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The IMPORT_NOTES section (core/sw_pack_notes.h): what a build's importers
  * skipped or read past, carried in the pack for `seamwalk-pack info`; the
  * reports turned into records (assets/pack/sw_pack_import_notes.h). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The part levels in the pack: the sample's hand-made levels
  * (pack_sample.h) written and read back identical; the five sections
  * together or not at all; one refusal per validation rule, each made by

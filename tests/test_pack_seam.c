@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Seam Graph in the pack: the sample's hand-built graph (pack_sample.h)
  * written and read back identical; which seam sections must appear together
  * and how their sizes are checked; one refusal per validation rule, each

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # seamwalk-pack info on a pack with a Seam Graph: the text report has the
 # seam lines and --json parses with the seam counts in it.
 # Usage: test_pack_seam_info.sh SEAMWALK_PACK PACK

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Signed packs: signing (assets/pack/sw_pack_sign.c), the check
  * (core/sw_pack_sign_check.c) and the key file parsers. Every byte of a
  * signed pack is flipped in turn; each flip must be refused. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack store's text files and decisions (firmware/sw_store_text.c,
  * sw_store_boot.c, sw_pack_store.c): round trips, every parser error naming
  * its line, the boot decision (trial, fallback, good slot never counted),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The super-surfaces in the pack: the sample's hand-built clusters
  * (pack_sample.h) written and read back identical; which sections must
  * appear together and how their sizes are checked; one refusal per

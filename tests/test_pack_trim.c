@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack reader on the optional sections (trimmed surfaces, masks,
  * viewpoints, part transforms): which sections may appear together, how
  * their sizes are checked, and one refusal per record rule, each made with

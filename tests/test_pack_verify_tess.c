@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk-pack verify's tessellation proof (assets/pack/sw_pack_verify_tess.h):
  * a pack whose surfaces all tessellate passes at every seam state; one
  * with a surface the runtime would leave out (a trim crossing itself) fails,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack writer: model conversion and adjacency, and writing files
  * atomically. Run with --write-corpus DIR to (re)write the fuzz seeds in
  * tests/fuzz/corpus/pack. */

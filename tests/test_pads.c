@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Hot-plug of game controllers (sw_pads.h) with the fake enumerator
  * (sw_input_fake.h): plugged controllers are found by the next periodic
  * enumeration, a read of -1 closes them, a replug is found again, a

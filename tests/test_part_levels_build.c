@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The part levels the pack tool makes (assets/super/sw_part_levels_build.h),
  * checked against what they stand for, not against how they were made:
  * - points at random (u, v) on every untrimmed surface of the part, on the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The loader's parts runner (firmware/sw_parts_threads.h): every part runs
  * exactly once whatever the helpers and the count; with a helper, two parts
  * do run at the same time; and a pack's checks give the same result and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Specification of point inversion and parameter-curve fitting
  * (sw_pcurve.h) on a rational bicubic surface with interior knots. */
 #include <math.h>

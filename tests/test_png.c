@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* PNG output: exact round trips through stb_image, the scratch bound against
  * the measured peak on incompressible images up to 3840x2160, and the errors
  * (too little scratch, unwritable path, bad arguments). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Specification of the procedural objects (sw_procedural.h): announced patch
  * counts, exact shapes (plane, surface of revolution, sweep), exact circular
  * trims, closed loops, orientation, determinism and parameter checks. The

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # seamwalk's own heap calls after start-up (mallocs_after_init, counted
 # through --wrap) beside the whole process's (process_mallocs_after_init,
 # counted by the preloaded tests/process_alloc_shim.so): the first must be 0

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk-pack's progress line: what one line says, that it is drawn only
  * on a terminal (checked on a pseudo-terminal and on a file), at most every
  * 0.1 s, and erased at the end. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The headless GLES2 display and the renderer, read back pixel by pixel.
  * One 64x48 context serves every case; the camera sits at the origin looking
  * down -z (model-view identity) with a 60 degree vertical field of view. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Specification of showroom scene files (sw_scene.h).
  * Usage: test_scene SAMPLES_DIR. Files the cases need are written to a
  * scratch folder under /tmp, removed at the end. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The tessellation cache (core/sw_seam_cache.h) and the walk's memory
  * (core/sw_walk_memory.h):
  * - meshes get blocks that never overlap, a surface's new mesh replaces its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The seams as drawn (firmware/walk/gl/sw_seam_drawn.h): two unit squares side by
  * side, A over x in [0, 1] and B over [1, 2], meeting along x = 1; B's
  * side of the seam varied to make each case. */

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The seams as drawn, end to end (firmware/walk/gl/sw_seam_drawn.h, sw_seam_fill.h):
 #   test_seam_drawn_walk.sh BUILD_DIR SOURCE_DIR
 # The teaset walked around an orbit, every frame measured: drawn as the

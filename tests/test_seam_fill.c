@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fill fans over seam crossings (firmware/walk/workers/sw_seam_fill.h). The mesh is a
  * strip of three quads over a seam: its bottom border runs from seam vertex
  * a through two crossings to seam vertex b, so the neighbour's straight

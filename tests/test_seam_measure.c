@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The measurement of what was drawn (firmware/walk/gl/sw_seam_measure.h): the error
  * is the distance on screen between the flat point and the exact one, both
  * projected, and only samples on screen count. The exact surface is the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_seam_select: the runtime front over the Seam Graph's collapse hierarchy
  * (paper 5.5, 6.1). The checks here recompute everything from the graph by
  * walking child links (not the module's leaf ranges and shown[]), so they

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_seam_select's loops as polylines (core/sw_seam_select_loop.c): repeats
  * dropped, a pole's corners pinned, each point with its slot; checked
  * against the graph walked independently (seam_select_fixture.h). */

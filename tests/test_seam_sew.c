@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The original Seam Graph (sw_seam_sew.h): trims flattened within the
  * tolerance in model space, sewn across surfaces. The Newell teaset against
  * the pack's control-row adjacency, planar faces with gaps, a T-junction,

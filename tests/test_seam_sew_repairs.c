@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the sewing does beyond the paper's intervals (sw_sew.h): the file's
  * own gaps widen its tolerance edge by edge, trims past their domain are put
  * on it, and T-junctions the intervals missed are closed (step 3b). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_seam_simplify: the collapse hierarchy of a sewn Seam Graph (paper
  * 5.2-5.5), on synthetic graphs built here (seam_graph_gen.h). */
 #include <float.h>

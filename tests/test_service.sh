@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The unit and the udev rule as shipped (firmware/seamwalk.service,
 # firmware/70-seamwalk.rules, issue 25): the unit verifies (systemd-analyze
 # verify, on a copy whose ExecStart is this build's seamwalk), rates at most

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Stand-ins' silhouettes against the reference walk's:
 #   test_silhouettes.sh BUILD_DIR SOURCE_DIR
 # A courtyard of 40 x 40 cells (tests/gen_soup.py: a paved patch soup with

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Stand-ins seen in the pictures:
 #   test_standins.sh BUILD_DIR SOURCE_DIR MODELS_DIR [PATCHES]
 # A generated showroom of PATCHES (default 2,000) of the shared parts (as walk_bench makes

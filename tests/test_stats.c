@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Walk statistics: percentiles, the error histogram's p99, and the JSON
  * contract (every field the stats file promises). */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The workers' queues (core/sw_steal_queue.h): order, capacity, stealing
  * half, and under threads every job taken exactly once (run under TSan by
  * the CI's thread step). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The STEP file's quick pass before OpenCASCADE (assets/import/sw_step_scan.h):
  * entity instances counted, each shell's face list read, a face listed
  * twice or too many faces refused with the line, strings and comments

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_tess: buffer sizes and index layout, vertices against the double
  * evaluator, the deviation bound, the segment count for an error, the
  * bicubic fast path against the generic paths, shared edges bit-identical. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_trim: polylines within their tolerance of exact rational circles and
  * random B-splines, the even-odd rule, conservative boxes and masks against
  * analytic shapes, and trimmed areas against closed forms and a fine-grid

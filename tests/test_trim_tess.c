@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_trim_tess: untrimmed coverage and the error bound, a disc with a hole
  * (area, inside, border bit-identical, every seam vertex used), no
  * T-vertices and no gaps (and the checks themselves fail on a bad mesh), a

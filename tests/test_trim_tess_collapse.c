@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_trim_tess where a loop has no area in (u, v): one whose positions span
  * area in space is drawn as a fan over them (core/sw_trim_fan.c), turned
  * as the sweep turns its triangles; one flat in space too is left out, and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_trim_tess on bad input: every argument and loop error returns its
  * status and writes nothing it should not; random bad loops never crash;
  * patches from a pack. (Split from test_trim_tess.c.) */

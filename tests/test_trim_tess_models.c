@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_trim_tess on real CAD trims: every surface of the shared IGES models
  * (imported natively, packed in memory), its trimming curves sampled into
  * polylines with the surface's positions (an untrimmed one: its domain

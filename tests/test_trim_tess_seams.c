@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_trim_tess where loops are seams (the Seam Graph walk's options):
  * crossings on their seam segment, and the cells a loop crosses taking
  * their share of the error. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The up axis: its names, the pack's ORIENTATION section (written, read back,
  * absent in older packs, refused when malformed), which axis each kind of
  * input gets and how a build of several inputs chooses, and the scene's

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The up axis end to end, one mode per CTest test:
 #   test_up_axis.sh MODE BUILD_DIR SOURCE_DIR SHARED_MODELS_DIR
 # cli:   seamwalk-pack build's defaults per input, --up, a scene's up_axis, the

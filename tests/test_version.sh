@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # One version everywhere: each program's --version prints its name and the
 # project's version (CMake's project(VERSION), the one source), on stdout
 # with exit 0, and a walk's stats carry the same.

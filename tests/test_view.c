@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The view: the screen-space error rule and the clip planes. */
 #include <math.h>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # End-to-end tests of the two programs, one mode per CTest test:
 #   test_walk.sh MODE BUILD_DIR SOURCE_DIR
 # MODE: teaset | teapot | golden | errors | seams. Exit 77 means skipped.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The picture comparison of tests/walk_pictures.py can fail, and does not
 # fail without cause:
 #   test_walk_pictures.sh BUILD_DIR SOURCE_DIR

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The threaded walk end to end (firmware/walk/sw_seam_walk.h, "Threads"):
 #   test_walk_threads.sh BUILD_DIR SOURCE_DIR
 # - P never blocks on T: the workers stalled from frame 4 on (a test hook),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Wayland keyboard's keymap and key translation (platform/sw_xkb_keys.h)
  * with a real keymap: the US layout compiled by xkbcommon from
  * xkeyboard-config, written to a file and handed over by descriptor as a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fixtures of the trimmed-tessellation tests (test_trim_tess.c,
  * test_trim_tess_seams.c): surfaces from trim_tess_shapes.h, loops whose
  * points lie on the surface, one tessellation into static buffers. One copy

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The surfaces the trimmed-tessellation test and benchmark share (tests/
  * test_trim_tess.c, tests/bench/trim_tess_bench.c): a bicubic bump cut into
  * k x k patches and a rational quarter cylinder, as sw_trim_patch views of

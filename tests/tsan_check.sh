@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The TSan step checks what it claims (tests/run-tsan.sh): a planted race
 # (tsan_race) is reported and fails with TSan's exit code 66; the runtime
 # and a test program of the threaded walk carry TSan's instrumentation; the

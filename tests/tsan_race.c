@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A planted data race: two threads add to one plain counter. Built only
  * under TSan (tests/tsan_check.sh runs it), where it must be reported and
  * fail (exit 66): the proof that a TSan report fails a test, so the whole

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # A pack walked through the Seam Graph from close to far (issue 4):
 #   walk_near_far.sh WALKER PACK INFO.json WORK_DIR SOURCE_DIR [WALKER ARGS...]
 # Views from 0.8 to 40 model sizes away, turning as they go, then the far

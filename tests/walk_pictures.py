@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """A walk judged by its pictures, as a person would judge it:
   walk_pictures.py PACK PATH BUILD_DIR OUT_DIR [SIZE] [FRAMES] [--every K]
                    [--workers N] [--part-levels 0|1] [--test-part-levels-coarsest 0|1]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Presses a key in another client's X11 window, as a person at the
  * keyboard would: waits until a top-level window named TITLE exists, sends it
  * a KeyPress of KEYSYM (an X keysym name: Up, n, ...), holds it HOLD_S

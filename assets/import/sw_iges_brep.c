@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The IGES B-rep route (IGES 5.3, 4.147-4.152): 186 manifold solid ->
  * 514 shells -> 510 faces -> 508 loops -> 504 edges (model-space curves)
  * and 502 vertices. A face's orientation is the product of the shell's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* IGES curve entities as exact NURBS pieces: 100 circular arc, 102
  * composite curve, 104 conic arc, 110 line, 112 parametric spline curve, 126
  * rational B-spline curve; each entity's 124 transform applied. */

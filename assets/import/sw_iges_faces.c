@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Faces as the IGES reader collects them before they go into the model:
  * a surface and its trimming loops in the surface's parameter space, loops
  * closed across small gaps, natural boundaries, parameter curves mapped from

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the files of the native IGES reader (sw_iges_*.c,
  * sw_import_iges.c), nothing else: the record/section view of the file, the
  * directory, parameter lists, owned NURBS in the reader's working form and the

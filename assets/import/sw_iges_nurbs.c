@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The IGES reader's owned NURBS: allocation, clamping of periodic and
  * unclamped knot vectors by knot insertion (Boehm; The NURBS Book, 5.2),
  * transforms, reversal, and the exact rational forms of lines and circular

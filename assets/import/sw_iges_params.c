@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* IGES free-format parameters: the G section's and each entity's P lines,
  * cut at the delimiters the G section declares, Hollerith strings (nH...)
  * skipped by their count, read up to the record delimiter (D entries' line

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* IGES records and sections: the buffer cut into 80-column records, grouped
  * by the section letter in column 73, the global section's delimiters, units
  * and tolerance, and the directory's two-line entries. Sequence numbers in

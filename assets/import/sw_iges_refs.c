@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Entity references in the native IGES reader: the guards every entity
  * read goes through (cycles, depth, total expansion), the one error for
  * an unsupported type, and 124 transformation chains. Below the readers of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* IGES surface entities as one clamped NURBS surface each: 128 rational
  * B-spline surface (periodic and unclamped knots clamped to its U/V range),
  * 114 parametric spline surface (bicubic power-form patches made Bezier),

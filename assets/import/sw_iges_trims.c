@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* IGES trimmed surfaces: 144 (surface, outer boundary or the natural one,
  * inner boundaries, each a 142 curve on surface), 143 bounded surface with
  * its 141 boundaries, and bare surfaces as untrimmed faces. A boundary's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What every CAD importer shares: its options (strictness, progress) and its
  * report (what was read, skipped, tolerated or computed). Host only. */
 #ifndef SW_IMPORT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* .bpt Bezier patch text (format and point order: sw_import_bpt.h). */
 #include "sw_import_bpt.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Importer for .bpt (Bezier patch text) files: any number of polynomial
  * tensor-product Bezier patches of degree 1..15 in each direction. Host only;
  * called by the scene loader, seamwalk-pack and the fuzz target.

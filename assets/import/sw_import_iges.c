@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The native IGES reader's driver (sw_import_iges.h): sections, directory,
  * which entities become faces, 124 transforms, reference guards, and the
  * hand-over of the collected faces to the model in millimetres. */

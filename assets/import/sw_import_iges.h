@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* IGES 5.3, read natively: sections S, G, D, P, T; the curve and surface
  * entities real exporters write, trimmed surfaces (144, 141/143) and the
  * B-rep route (186/502/504/508/510/514), analytic geometry made exact NURBS,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Newell teaset listings (format and control point order: sw_import_newell.h). */
 #include "sw_import_newell.h"
 

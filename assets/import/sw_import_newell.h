@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Importer for Martin Newell's Bezier patch listings (the teaset: teapot,
  * teacup, teaspoon), as distributed with freeglut. Host only; called by the
  * scene loader, seamwalk-pack and the fuzz target.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* STEP (AP203, AP214, AP242) and IGES through OpenCASCADE 7.6 behind the C
  * interface of sw_import_occt.h: reading and converting. What the file says
  * of itself is read in sw_occt_step_file.cpp, the measurement for

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* STEP (AP203, AP214, AP242) and IGES through OpenCASCADE, behind a C
  * interface (the implementation is the one C++ file, sw_import_occt.cpp).
  * Reads the file, walks the assembly tree applying locations (one model part

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The OCCT importer in a build without OpenCASCADE (SW_WITH_OCCT=OFF or the
  * library not installed): the interface exists so seamwalk-pack and the tests
  * link, and every call says how to get STEP support. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The import report every importer fills (sw_import.h). */
 #include "sw_import.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* OCCT's B-splines as seamwalk's clamped NURBS (sw_occt_bspline.h). */
 #include "sw_occt_bspline.h"
 

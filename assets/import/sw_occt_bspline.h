@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* OpenCASCADE's B-spline curves and surfaces as seamwalk's clamped NURBS
  * (C++ only, inside assets/import/): clamped where OCCT's are periodic or
  * unclamped, and copied into flat arrays the C model takes. The importer's

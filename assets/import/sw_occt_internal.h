@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the OpenCASCADE importer's files share (C++ only, inside
  * assets/import/): OCCT's messages captured instead of printed, the
  * file's extension, what the file says of itself (sw_occt_step_file.cpp),

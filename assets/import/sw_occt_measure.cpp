@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The measurement of a file by OpenCASCADE alone, for the cross-checks of
  * sw_occt_measure.h: its faces, box and area, and how its faces sew. */
 extern "C" {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What OpenCASCADE itself measures in a CAD file, for tests that cross-check
  * seamwalk's importers (native IGES, the OCCT path's NURBS conversion) against
  * it. Host only; without OCCT the function says "built without STEP support". */

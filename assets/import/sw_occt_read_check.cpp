@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The file read once by OpenCASCADE in a child process before it is read
  * in this one: OCCT 7.6's readers crash on some damaged files instead of
  * failing (fuzz_step_occt: SIGSEGV in Interface_InterfaceModel::AddEntity

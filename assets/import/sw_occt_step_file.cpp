@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What a STEP or IGES file says of itself, read from OCCT's model and from
  * the file's text: the edge uses whose p-curves the file left out, its
  * units and uncertainty, the first check that makes it unreadable (with the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Point inversion and parameter-space curve fitting (sw_pcurve.h). */
 #include "sw_pcurve.h"
 

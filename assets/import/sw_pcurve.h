@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Parameter-space curves from model-space curves: point inversion on a NURBS
  * surface (closest point by safeguarded Newton) and least-squares B-spline
  * fitting checked against the model-space curve. Importers call it when a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The STEP file's quick pass (sw_step_scan.h). A tokenizer just good
  * enough to find statements: strings ('...' with '' inside), comments,
  * and parentheses; instances "#N = KEYWORD(...);". */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A quick pass over a STEP (ISO 10303-21) file before OpenCASCADE reads it:
  * counts the entity instances and reads every CLOSED_SHELL and OPEN_SHELL's
  * list of faces, so a file that would keep OpenCASCADE busy for minutes is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A line-aware scanner over a text buffer that is NOT NUL-terminated, shared by
  * the text importers (Newell listings, .bpt). It never reads past the end,
  * tracks line and column for messages, and parses numbers strictly (the whole

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The host-side model (sw_model.h): growable arrays of parts, surfaces,
  * loops, trim curves, Bezier patches and viewpoints. A surface is built
  * completely on the side (a "staged" surface) and only then appended, so a

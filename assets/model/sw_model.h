@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The host-side model: parts made of trimmed NURBS surfaces (a soup: no
  * adjacency assumed), each split into rational Bezier patches by knot
  * insertion, the form every importer produces and the pack builder consumes.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_model_trims.h"
 
 #include <math.h>

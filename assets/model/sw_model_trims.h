@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The trim module (sw_trim.h) applied to faces already in a model: their
  * stored loops as polylines, their trimmed areas. Above both the model and
  * the trim code, so that neither needs the other's whole API. Host only. */

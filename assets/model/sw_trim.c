@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trim polylines, point-in-face, box and mask classification (sw_trim.h).
  * The area integral is in sw_trim_area.c. */
 #include "sw_trim.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trim geometry on the host: a face's trimming loops flattened into closed
  * polylines in the surface's (u, v) parameter space with a guaranteed
  * tolerance, the even-odd point-in-face test, conservative box and 32 x 32

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trimmed area of a NURBS surface in model space (sw_trim.h).
  *
  * Per Bezier patch, in its local parameters (x, y) in [0,1]^2 where the area

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Branch and bound per surface and per axis direction: a Bezier sub-patch's
  * control points bound its points from above (convex hull property, weights
  * positive), points evaluated inside the trims bound the answer from below,

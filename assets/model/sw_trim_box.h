@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The tight bounding box of a model's trimmed faces, within a given
  * tolerance, for reports and for checking importers against each other. The
  * pack keeps control-hull boxes (cheap and conservative); this is the box of

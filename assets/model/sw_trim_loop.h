@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A face's trimming loop as curves in its surface's parameter space: what
  * importers hand to the model (sw_model_add_surface) and what the trim
  * flattener (sw_trim.h) takes. Its own header so that the trim code, below

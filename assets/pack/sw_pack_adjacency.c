@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Adjacency by matching boundary control rows. Edges are entered in a hash
  * grid keyed on the cell of their first endpoint; each edge then looks up the
  * cells around both of its endpoints (first endpoint: same order, last

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Finds the patches of a model that share a boundary curve, for the pack's
  * ADJACENCY section (the runtime stitches seams along them). Host only; used
  * by sw_pack_contents_from_model. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack as flat arrays in memory, before it is serialised: what the
  * writer (sw_pack_write.h) lays out and the section builders
  * (sw_pack_sections.h) fill. Host only. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_pack_import_notes.h"
 
 #include <stdlib.h>

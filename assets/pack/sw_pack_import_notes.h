@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The import reports of a build as the pack's IMPORT_NOTES records
  * (core/sw_pack_notes.h): one per input file and kind of skipped entity or
  * message read past, so `seamwalk-pack info` can tell them later. Host only. */

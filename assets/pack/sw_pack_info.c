@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk-pack info (sw_pack_info.h): stats per part and for the pack, as
  * aligned text and as JSON. Keys are added, never renamed: scripts read them. */
 #include "sw_pack_info.h"

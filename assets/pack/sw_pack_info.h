@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What `seamwalk-pack info` reports about a validated pack: counts for the
  * whole pack and per part (surfaces, Bezier patches, trimming loops and
  * curves, degrees, rational counts, parameter curves computed by point

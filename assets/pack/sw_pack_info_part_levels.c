@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The part levels' part of `seamwalk-pack info` (sw_pack_info.h): how many
  * parts have them, and per rank (finest first) the levels, their
  * triangles and their largest measured error. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The super-surfaces' part of `seamwalk-pack info` (sw_pack_info.h): their
  * count, members, spans and the finest levels' triangles per super-surface,
  * the figures that say whether the clustering's caps and alpha did their

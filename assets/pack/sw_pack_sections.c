@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The optional pack sections from a model (sw_pack_sections.h): surfaces,
  * their trimming loops and curves, each patch's domain and trim mask,
  * viewpoints and part transforms. Everything is rounded to float here, and

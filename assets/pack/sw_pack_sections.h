@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack's optional sections made from a model: SURFACES, TRIM_LOOPS,
  * TRIM_CURVES, TRIM_DATA, PATCH_DOMAINS, TRIM_MASKS, VIEWPOINTS and
  * PART_TRANSFORMS. Split from sw_pack_write.c (which converts the patches and

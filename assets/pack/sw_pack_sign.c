@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Key files and pack signing (sw_pack_sign.h in this folder). */
 #include "sw_pack_sign.h"
 

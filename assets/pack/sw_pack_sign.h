@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host side of signed packs: ed25519 key pairs (libsodium) in key files, and
  * re-writing a pack with a SIGNATURE section (core/sw_pack_signature.h has the
  * record and the check). Used by seamwalk-pack keygen / sign / verify --key.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seamwalk-pack keygen, sign and verify --key: the command lines over
  * sw_pack_sign.h. Exit status 0, 1 failure (one line on stderr), 2 usage. */
 #include <inttypes.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every surface tessellated at every seam state from the finest to the
  * coarsest drawn (sw_pack_verify_tess.h), as firmware/walk/sw_seam_walk.c draws
  * it: its loops from sw_seam_surface_loops (a surface whose outer loop

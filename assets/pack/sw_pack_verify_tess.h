@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `seamwalk-pack verify`'s proof that no surface is lost at run time: every
  * surface of a pack with a Seam Graph is tessellated, as the runtime's seam
  * walk does it (core/sw_trim_tess.c inside the loops sw_seam_select_loop

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pack writer: model -> contents (float control points, boxes, second
  * derivative bounds, adjacency), contents -> bytes (header, section table,
  * 64-byte aligned sections, checksums), bytes -> file (atomically). Host only;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Builds a version-1 pack from a model: per-patch boxes and derivative bounds,
  * adjacency of patches that share a boundary curve, the section table with
  * checksums; writes it to memory or, atomically, to a file. Host only. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The build's up axis (sw_up_inputs.h). */
 #include "sw_up_inputs.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Which up axis a build writes into its pack (the ORIENTATION section): each
  * input's own convention, unless `seamwalk-pack build --up` says otherwise.
  * STEP and IGES are z-up (mechanical CAD), Newell listings and .bpt y-up (as

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The showroom generator (sw_gen_showroom.h): plan the objects, lay them
  * out, print the scene. Planning uses the same counts the build will see: a
  * part file is imported once, a procedural object announces its count. */

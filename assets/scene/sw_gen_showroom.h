@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The showroom generator: `seamwalk-pack gen showroom --patches N -o
  * scene.ini [--part FILE]... [--seed S]` writes a scene (sw_scene.h) that
  * lays out copies of the given part files and procedural objects

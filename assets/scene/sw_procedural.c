@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Procedural trimmed NURBS objects (sw_procedural.h). Every shape is built
  * from exact constructions: control points at Greville abscissae (so a
  * B-spline reproduces a linear map exactly), circles as 9-point rational

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Procedural trimmed NURBS objects for showrooms and scale tests: plates with
  * circular holes, revolved vases and swept rails, in millimetres, y up,
  * standing on (or floating above) the floor y = 0 around the origin, and

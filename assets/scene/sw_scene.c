@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Showroom scene files (sw_scene.h). inih splits lines into sections and
  * key = value pairs; our line reader feeds it from memory and counts lines, so
  * every message can name file:line even though this inih build does not pass

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Showroom scenes: an INI file that places parts (model files or generated
  * objects) and named viewpoints in one sw_model. Host only; called by
  * seamwalk-pack build, the showroom generator and the fuzz target. The format

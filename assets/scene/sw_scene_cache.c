@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Part files read once per scene load (sw_scene_internal.h). Copies go
  * through the model's public calls: sw_model_add_surface re-splits and
  * re-trims each surface, which is cheap next to reading a STEP file, and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The scene loader's one error: the first failure, with file:line, wherever
  * in the parse it happens (sw_scene_internal.h). Below the loader and the
  * key handlers, which both report through it. */

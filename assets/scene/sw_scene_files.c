@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The files a scene names: their format by extension, whether the format
  * carries its units, the importer for each, and the default colours parts
  * get in order. Below the scene loader and the part cache, which both

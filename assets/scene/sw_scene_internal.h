@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the two halves of the scene reader share: sw_scene.c reads lines,
  * drives inih and loads parts; sw_scene_keys.c understands sections and keys
  * and checks each section once the whole file is read. Internal to assets/. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sections and keys of showroom scenes (the format is in sw_scene.h): what
  * each key accepts, and the checks that need a whole section (required keys,
  * keys that exclude each other, generator parameters that depend on the

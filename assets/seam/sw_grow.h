@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Growing a malloc'd array on the host: the one doubling rule the sewing
  * code's append functions share. Host only. */
 #ifndef SW_GROW_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* How much of a Seam Graph's border is sewn: the length of every loop's
  * edges, and of those no other loop (nor the same loop elsewhere) runs
  * along, which are the free border. For `seamwalk-pack info` and the build

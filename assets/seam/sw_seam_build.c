@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_seam_host: views and release (sw_seam_build.h). */
 #include "sw_seam_build.h"
 

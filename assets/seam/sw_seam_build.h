@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The host side of the Seam Graph (core/sw_seam_graph.h): the arrays a build
  * owns while it sews the model's trims and simplifies the seams, before the
  * pack writer stores them. Host only (malloc). */

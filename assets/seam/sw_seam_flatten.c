@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trimming loops to polylines with a model-space error bound
  * (sw_seam_flatten.h; Guthe et al. 2002, section 4).
  *

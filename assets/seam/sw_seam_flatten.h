@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A model's trimming loops as polylines with a guaranteed error in model
  * space (Guthe et al. 2002, section 4): the first half of the Seam Graph's
  * preprocessing, before sewing (sw_sew.h). Host only (malloc).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lazy quad-trees of derivative bounds over a surface's Bezier patches
  * (sw_seam_qtree.h). Every node holds rigorous bounds for its own cell: the
  * second derivatives from the cell's sub-patch (sw_bezier_second_deriv_bounds,

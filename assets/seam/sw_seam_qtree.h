@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Derivative bounds of a NURBS surface over boxes of its parameter domain,
  * from a quad-tree over each of its Bezier patches (Guthe et al. 2002,
  * section 4: the surface is subdivided until it is flat within a third of the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Runs of the loops during simplification (sw_seam_runs.h). */
 #include "sw_seam_runs.h"
 

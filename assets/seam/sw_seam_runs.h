@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The loops' current polylines while the collapse hierarchy is built
  * (assets/seam/sw_seam_simplify.c), as the runtime will draw them
  * (core/sw_seam_select.h): per loop a cyclic list of runs, each showing one

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The model's original Seam Graph: flatten, then sew (sw_seam_sew.h). */
 #include "sw_seam_sew.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The original Seam Graph of a model: its trimming loops flattened within
  * the sewing tolerance (sw_seam_flatten.h) and sewn across surfaces
  * (sw_sew.h), in an sw_seam_host with no collapses yet (Guthe et al. 2002,

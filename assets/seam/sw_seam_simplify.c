@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_seam_simplify: the edge-collapse hierarchy of a sewn Seam Graph
  * (sw_seam_simplify.h; Guthe et al. 2002, 5.2-5.5).
  *

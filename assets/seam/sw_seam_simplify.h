@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Seam Graph's collapse hierarchy (Guthe et al. 2002, sections
  * 5.2-5.5), built on the host after sewing: seamwalk-pack calls it on the
  * sewn graph before writing the pack. The runtime walks the result with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sewing (Guthe et al. 2002, section 4.1): the flattened trimming loops of
  * all surfaces (sw_seam_flatten.h) joined where they run within the sewing
  * tolerance of each other, so that the loops share vertices along every seam:

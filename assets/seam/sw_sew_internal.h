@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared between the steps of sewing (sw_sew.h): the driver
  * (sw_sew_polylines.c), projections (sw_sew_project.c), intervals
  * (sw_sew_intervals.c) and the merge into an sw_seam_host (sw_sew_merge.c). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sewing step 2, the sewing intervals (paper section 4.1, figure 2). The
  * entry sw_sew_polylines (sw_sew.h) is in sw_sew_polylines.c, steps 1 and 3
  * in sw_sew_project.c and sw_sew_merge.c.

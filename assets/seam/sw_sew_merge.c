@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sewing step 3 (sw_sew.h): the interval joins become merged vertices and
  * the host arrays of the original Seam Graph. Points are the polyline
  * vertices (ids below N) and the feet inserted into edges (ids from N); a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The sewing driver (sw_sew.h): per-vertex loops and arc lengths, then the
  * three steps of sw_sew_internal.h in order. */
 #include <math.h>

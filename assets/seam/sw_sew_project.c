@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sewing step 1 (sw_sew.h): every vertex projected onto the edges of other
  * loops within the tolerance, candidates from a 3D uniform grid (paper
  * section 4.1, "a 3D grid is used similar to [13]"). Each edge is entered,

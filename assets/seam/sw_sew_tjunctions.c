@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sewing step 3b: T-junctions the intervals left open. Where one loop has
  * an unsewn edge x-b and another an unsewn edge a-b from the same vertex b,
  * and x lies within the tolerance of the chord a-b (strictly between its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Measured triangulation error and timing helpers: see bench_error.h. */
 #define _GNU_SOURCE /* clock_gettime */
 #include "bench_error.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The achieved error of a triangulation, measured the same way for every
  * tessellator the benchmarks compare (tess_bench.c, trim_tess_bench.c) and
  * independently of their own claims: a triangle's sample points (vertices,

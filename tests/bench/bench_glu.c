@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GLU's NURBS tessellator driven through callbacks: see bench_glu.h. */
 #include "bench_glu.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GLU's NURBS tessellator as the benchmarks drive it (tess_bench.c,
  * trim_tess_bench.c): GLU_NURBS_TESSELLATOR mode with object-space
  * parametric-error sampling, the output handed to callbacks instead of GL.

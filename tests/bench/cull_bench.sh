@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Culling that scales (issue 10, item 4): the culling tree against testing
 # every patch box every frame (seamwalk --cull brute), and cone culling on
 # and off with back faces hidden, side by side in one run:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* seam_bench: the original Seam Graph (flatten + sew, sw_seam_sew.h) of CAD
  * files: time per stage, peak memory, and the report's counts, as a table and
  * one JSON line per model. Newell listings (.txt) by the Newell importer,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Seam Graph LOD benchmark: sw_seam_simplify's time and memory on sewn
  * grids of 10^3 .. 10^6 vertices (seam_graph_gen.h), and the runtime
  * selection's arena and update times on the result. Each size runs in a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tessellation benchmark: seamwalk's uniform bicubic grid against GLU's NURBS
  * tessellator, on the Newell teaset and on a grid of random bicubic patches,
  * at the same object-space tolerance (a fraction of the model's size).

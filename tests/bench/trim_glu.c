@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GLU's form of a trimmed surface, its timed and measured runs and the
  * tolerance search: see trim_glu.h. */
 #include "trim_glu.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GLU's trimmed NURBS tessellation of the surfaces trim_tess_bench.c gives
  * sw_trim_tess: the same work in GLU's form. A surface's Bezier patches tile
  * its domain on a grid of knot intervals, so GLU gets them as one NURBS

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trimmed tessellation benchmark: sw_trim_tess (paper 004, section 6.3: the
  * binary trees with the proven bound, clipped by the loops) against GLU's
  * trimmed NURBS tessellator (trim_glu.h: the same patches as one NURBS

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* walk_baseline: the walkthrough benchmark's baselines (walk_baseline.h)
  * walked like seamwalk walks: same pack, path or orbit, viewport, field of
  * view, renderer and stats file.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The walkthrough benchmark's baselines (tests/bench/walk_bench.sh): the
  * same pack, camera path, viewport, renderer (platform/sw_renderer.h),
  * stats file (firmware/sw_stats.h) and independent measures as seamwalk

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The baselines' draw batch and their measure (walk_baseline.h): the same
  * renderer call and the same independent measures as seamwalk's walk. */
 #include <time.h>

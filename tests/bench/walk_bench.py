@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The walkthrough benchmark (issue 10, item 7), one command:
   walk_bench.py BUILD_DIR [--quick] [--work DIR] [--json FILE] [--plot FILE.png]
                 [--scenes showroom,courtyard]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The tessellation cache (issue 9, item 3) against tessellating every visible
 # surface every frame (seamwalk --no-cache), side by side in one run:
 #   walk_cache_bench.sh BUILD_DIR [--quick] [--repeats N] [--showroom PATCHES]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GLU baseline of walk_baseline.h: every visible surface handed to
  * GLU's NURBS tessellator every frame, its output (strips, fans, triangles)
  * caught by callbacks as indexed triangles and drawn through the same

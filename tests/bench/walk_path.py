@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """walk_path.py OUT.path --box X0 Y0 Z0 X1 Y1 Z1 --up y|z [--rect A0 B0 A1 B1]
                 [--eye-mm H] [--seconds S]
 A closed walk for the walkthrough benchmark (tests/bench/walk_bench.sh) in

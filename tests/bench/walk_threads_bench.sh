@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The threaded walk (issue 10: workers, budgets) against the walk without
 # workers, side by side in one run:
 #   walk_threads_bench.sh BUILD_DIR [--quick] [--repeats N] [--showroom PATCHES]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The uniform-grid baseline of walk_baseline.h: every visible patch on the
  * same S x S grid, every frame, the cells outside its trim mask left out. */
 #include <string.h>

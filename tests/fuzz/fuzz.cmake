@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # sw_add_fuzz_target(NAME SOURCE src LIBS libs... CORPUS dir [DICT file] [MODELS ext...])
 # Every parser has one libFuzzer entry point (LLVMFuzzerTestOneInput). With
 # SW_FUZZ=ON (clang) it becomes a libFuzzer binary; in every build it is also

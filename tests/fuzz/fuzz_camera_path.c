@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fuzz target: the camera path parser, and evaluation of whatever it accepts. */
 #include <stddef.h>
 #include <stdint.h>

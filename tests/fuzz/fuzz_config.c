@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer entry point for the configuration file parser (sw_config.h):
  * every input either loads into a config that keeps the parser's promises or
  * fails with a message that names the file and a line. Accepted buttons'

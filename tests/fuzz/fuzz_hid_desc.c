@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer entry point for the HID descriptor parser and report decoder
  * (sw_hid_desc.h): every input either parses into a layout whose fields fit
  * a report, or fails with a message naming the descriptor; then the same

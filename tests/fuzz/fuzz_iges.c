@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer entry point for the native IGES reader. Besides not crashing,
  * a failed import must explain itself naming the file, and a successful one
  * must have added what its report says. */

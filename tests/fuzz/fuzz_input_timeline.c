@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer entry point for input timelines and hex files
  * (sw_input_timeline.h): every input parses into events with times that
  * never decrease, or fails with "fuzz.timeline:LINE: ..."; the same bytes

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fuzz target: the key file parsers, trusted public keys
  * (core/sw_pack_sign_check.c) and the signer's secret key
  * (assets/pack/sw_pack_sign.c). */

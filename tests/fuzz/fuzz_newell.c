@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer entry point for the Newell listing importer. Besides not
  * crashing, a failed import must leave the model empty and explain itself. */
 #include <stdint.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fuzz target for sw_pack_open_memory. Each input is tried twice: as it is,
  * and with every checksum recomputed, because random mutations almost never
  * keep an XXH3 checksum valid and would otherwise stop at the first

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fuzz target: the runtime's threaded loader. seamwalk checks a pack on
  * its loader thread with helper threads taking the checks' parts
  * (firmware/sw_parts_threads.h, sw_pack_open_memory_with); whatever order

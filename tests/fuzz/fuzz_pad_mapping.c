@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer entry point for gamecontrollerdb files (sw_gamepad_map.h):
  * every input parses or fails with "fuzz.db:LINE: ..."; a parsed mapping
  * applied to a state keeps sticks in [-1, 1] and triggers in [0, 1]. */

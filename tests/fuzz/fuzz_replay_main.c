@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Replays files (or every file in given directories) through a fuzz target's
  * LLVMFuzzerTestOneInput, for builds without libFuzzer and for CTest. A target
  * must return without crashing on every input; sanitizer builds catch the rest. */

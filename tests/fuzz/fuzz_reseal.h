@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fuzz targets' resealing of a pack (fuzz_pack.c, fuzz_pack_load.c):
  * random mutations almost never keep an XXH3 checksum valid, so an input
  * is also tried with its checksums recomputed, to reach the checks behind

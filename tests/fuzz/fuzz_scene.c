@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer entry point for the scene loader. Part files resolve against
  * SW_FUZZ_SCENE_DIR (the bundled samples), so inputs can reach the importers
  * and the transforms, not only the INI parsing; generated parts and views go

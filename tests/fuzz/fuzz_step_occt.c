@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fuzz target: a STEP file through the importer seamwalk-pack uses
  * (sw_import_occt_file: the quick pass of sw_step_scan.c, then
  * OpenCASCADE's reader, the transfer, sewing and the conversion to the

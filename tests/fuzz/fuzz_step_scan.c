@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fuzz target: the STEP file's quick pass before OpenCASCADE
  * (assets/import/sw_step_scan.c). */
 #include <stddef.h>

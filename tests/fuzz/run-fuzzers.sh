@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Builds the libFuzzer targets with clang (ASan+UBSan, the whole tree
 # coverage-instrumented, optimised: -O1 -g, asserts kept) and runs every
 # target the build defines (build-fuzz/fuzz-targets.txt, written by

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Regenerates the golden pictures from the current build after an intended
 # change of the picture (look at them before committing!):
 #   bash tests/golden/update.sh [BUILD_DIR]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 import re,sys
 # Extracts report_descriptor = [...] of a hid-tools device class as hex lines:
 # python3 extract_rdesc.py hidtools/device/sony_gamepad.py PS4ControllerUSB

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The Debian 12 packages the QEMU tests (kms_in_qemu.sh, run-uhid.sh) need
 # beyond cmake/install-deps.sh: QEMU, a Debian kernel to boot (its virtio-gpu,
 # 9p, virtio-pci and uhid modules) and a static busybox for the initramfs.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The KMS display on a real DRM device: boots Debian's kernel in QEMU with a
 # virtio-gpu, the host's root file system read-only over 9p and the work
 # folder writable, and runs seamwalk --display kms (and auto) inside, where

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Sourced by the QEMU tests (kms_in_qemu.sh, run-uhid.sh): boots Debian's
 # kernel in QEMU with the host's root file system read-only over 9p, chroots
 # into it and runs a guest script from a writable work folder, which the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Boots Debian's kernel in QEMU (TCG, no KVM needed; tests/qemu/qemu_boot.sh)
 # with the host's root over 9p and runs tests/qemu/uhid_guest.sh: a UHID
 # gamepad (the F310's recorded descriptor) that the real hidapi backend

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Inside the QEMU guest (tests/qemu/run-uhid.sh), chrooted into the host's
 # root over 9p, read-only, with /run/sw writable (tests/qemu/qemu_boot.sh): a UHID
 # gamepad that hidapi really opens drives seamwalk --navigate; the results

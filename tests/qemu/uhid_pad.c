@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A virtual gamepad through /dev/uhid for tests/qemu/run-uhid.sh: creates a
  * HID device with a recorded descriptor (a tests/hid/ hex file), so hidraw
  * and hidapi see a real device; once something opens it (UHID_OPEN: hidapi

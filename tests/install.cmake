@@ -1,0 +1,24 @@
+# SPDX-License-Identifier: MIT
+# The man pages against the programs (tests/check_man.py): every option and
+# command --help prints has an entry and every option a page names exists,
+# every config key of firmware/sw_config.c's table has an entry in
+# seamwalk.ini(5) and the other way round, and `man --warnings -l` renders
+# each page without a warning.
+set(SW_MAN ${PROJECT_SOURCE_DIR}/docs/man)
+set(SW_CHECK_MAN python3 ${CMAKE_CURRENT_SOURCE_DIR}/check_man.py)
+add_test(NAME man_seamwalk COMMAND ${SW_CHECK_MAN} program ${SW_MAN}/seamwalk.1
+  $<TARGET_FILE:seamwalk>)
+add_test(NAME man_seamwalk_flash COMMAND ${SW_CHECK_MAN} program ${SW_MAN}/seamwalk-flash.8
+  $<TARGET_FILE:seamwalk-flash>)
+add_test(NAME man_seamwalk_pack COMMAND ${SW_CHECK_MAN} program ${SW_MAN}/seamwalk-pack.1
+  $<TARGET_FILE:seamwalk-pack>)
+add_test(NAME man_seamwalk_ini COMMAND ${SW_CHECK_MAN} config ${SW_MAN}/seamwalk.ini.5
+  ${PROJECT_SOURCE_DIR}/firmware/sw_config.c $<TARGET_FILE:seamwalk>)
+sw_host_only_test(man_seamwalk_pack PROGRAMS seamwalk-pack)
+sw_host_only_test(man_seamwalk_flash PROGRAMS seamwalk-flash)
+
+# The .deb packages (tests/test_package.sh): made by cpack from this build,
+# unpacked into a staging root, their layout, control data, unit, programs
+# and man pages checked there.
+add_test(NAME package COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_package.sh
+  ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR} ${PROJECT_VERSION} ${CMAKE_CURRENT_BINARY_DIR}/package)
