@@ -81,7 +81,10 @@ static sw_status check_level(const sw_part_levels *v, uint32_t i, uint32_t p,
                             "expected a positive multiple of 3 within PART_LEVEL_INDICES (%u)",
                             (unsigned)i, (unsigned)l->first_index, (unsigned)l->index_count,
                             (unsigned)v->index_count);
-    if (l->reserved[0] || l->reserved[1])
+    if (!isfinite(l->shading_side) || !(l->shading_side >= 0))
+        return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RECORDS[%u].shading_side: %g, "
+                            "expected finite and >= 0", (unsigned)i, (double)l->shading_side);
+    if (l->reserved)
         return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RECORDS[%u].reserved: not zero",
                             (unsigned)i);
     for (uint32_t k = 0; k < l->index_count; k++)

@@ -22,7 +22,11 @@
 
 #include "sw_levels.h"
 
-#define SW_PART_LEVELS_MAX 6u     /* levels per part */
+#define SW_PART_LEVELS_MAX 8u     /* levels per part */
+
+/* A level's shading normal further than this from the surfaces' is shaded
+ * wrong (sw_part_level.shading_side). */
+#define SW_PART_LEVEL_CREASE_COS 0.8660254f   /* cos 30 degrees */
 
 typedef struct sw_part_level {    /* 32 bytes */
     uint32_t part;                /* the pack's part */
@@ -33,7 +37,13 @@ typedef struct sw_part_level {    /* 32 bytes */
     uint32_t first_index;         /* part_level_indices[first_index .. + index_count),
                                      level-local */
     uint32_t index_count;         /* a positive multiple of 3 */
-    uint32_t reserved[2];         /* zero */
+    float shading_side;           /* model units: the side of a square as large as the
+                                     level's area shaded wrong (its normals more than 30
+                                     degrees off the surfaces' within its error, measured
+                                     on the host); 0 when none; finite, >= 0. The error
+                                     bounds the shape, not the normals, so the walk holds
+                                     this to a bound of its own. */
+    uint32_t reserved;            /* zero */
 } sw_part_level;
 
 /* Section PART_LEVELS: the counts. */

@@ -87,14 +87,18 @@ static void test_rules(void)
                     SW_ERR_RANGE, "PART_LEVEL_RECORDS[0]: indices 0 + 5");
     expect_rejected((make_sample_part_levels(&k), k.levels[1].index_count = 6, &k),
                     SW_ERR_RANGE, "PART_LEVEL_RECORDS[1]: indices 6 + 6");
-    expect_rejected((make_sample_part_levels(&k), k.levels[0].reserved[1] = 1, &k),
+    expect_rejected((make_sample_part_levels(&k), k.levels[0].reserved = 1, &k),
                     SW_ERR_FORMAT, "PART_LEVEL_RECORDS[0].reserved");
+    expect_rejected((make_sample_part_levels(&k), k.levels[1].shading_side = -1, &k),
+                    SW_ERR_FORMAT, "PART_LEVEL_RECORDS[1].shading_side: -1");
+    expect_rejected((make_sample_part_levels(&k), k.levels[0].shading_side = NAN, &k),
+                    SW_ERR_FORMAT, "PART_LEVEL_RECORDS[0].shading_side");
     expect_rejected((make_sample_part_levels(&k), k.indices[8] = 3, &k), SW_ERR_RANGE,
                     "PART_LEVEL_INDICES[8]: 3, expected < 3");
     expect_rejected((make_sample_part_levels(&k), k.part_levels[2] = 1, &k), SW_ERR_FORMAT,
                     "PART_LEVEL_PARTS: runs from 0 to 1, expected 0 to 2");
     expect_rejected((make_sample_part_levels(&k), k.part_levels[1] = 3, &k), SW_ERR_FORMAT,
-                    "PART_LEVEL_PARTS[0]: 0 to 3, expected rising by at most 6 within the 2");
+                    "PART_LEVEL_PARTS[0]: 0 to 3, expected rising by at most 8 within the 2");
     expect_rejected((make_sample_part_levels(&k), k.vertices[5].p[1] = INFINITY, &k),
                     SW_ERR_FORMAT, "PART_LEVEL_VERTICES[5]");
     expect_rejected((make_sample_part_levels(&k), k.vertices[2].normal[3] = 1, &k),

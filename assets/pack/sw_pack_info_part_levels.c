@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The part levels' part of `seamwalk-pack info` (sw_pack_info.h): how many
  * parts have them, and per rank (finest first) the levels, their
- * triangles and their largest measured error. */
+ * triangles, their largest measured error and their largest side shaded
+ * wrong. */
 #include <inttypes.h>
 #include <string.h>
 
@@ -10,7 +11,7 @@
 typedef struct part_level_figures {
     uint32_t parts, levels[SW_PART_LEVELS_MAX];
     uint64_t triangles[SW_PART_LEVELS_MAX], bytes;
-    double error_max[SW_PART_LEVELS_MAX];
+    double error_max[SW_PART_LEVELS_MAX], shading_side_max[SW_PART_LEVELS_MAX];
     uint32_t ranks;
 } part_level_figures;
 
@@ -31,6 +32,8 @@ static part_level_figures gather(const sw_pack *pack)
             uint32_t r = i - a;
             f.levels[r]++;
             f.triangles[r] += pl->levels[i].index_count / 3;
+            if (pl->levels[i].shading_side > f.shading_side_max[r])
+                f.shading_side_max[r] = pl->levels[i].shading_side;
             f.error_max[r] = pl->levels[i].error > f.error_max[r] ? pl->levels[i].error
                                                                    : f.error_max[r];
             f.ranks = r + 1 > f.ranks ? r + 1 : f.ranks;
@@ -49,7 +52,8 @@ void sw_pack_print_part_levels_text(FILE *out, const sw_pack *pack)
             pack->part_levels.level_count, f.bytes);
     for (uint32_t r = 0; r < f.ranks; r++)
         fprintf(out, "    rank %-9" PRIu32 " %" PRIu32 " levels, %" PRIu64 " triangles, error "
-                "max %.6g\n", r, f.levels[r], f.triangles[r], f.error_max[r]);
+                "max %.6g, shading side max %.6g\n", r, f.levels[r], f.triangles[r],
+                f.error_max[r], f.shading_side_max[r]);
 }
 
 void sw_pack_print_part_levels_json(FILE *out, const sw_pack *pack)
@@ -64,7 +68,7 @@ void sw_pack_print_part_levels_json(FILE *out, const sw_pack *pack)
             f.bytes);
     for (uint32_t r = 0; r < f.ranks; r++)
         fprintf(out, "%s{\"levels\": %" PRIu32 ", \"triangles\": %" PRIu64
-                ", \"error_max\": %.9g}", r ? ", " : "", f.levels[r], f.triangles[r],
-                f.error_max[r]);
+                ", \"error_max\": %.9g, \"shading_side_max\": %.9g}", r ? ", " : "",
+                f.levels[r], f.triangles[r], f.error_max[r], f.shading_side_max[r]);
     fprintf(out, "]},\n");
 }

@@ -124,9 +124,10 @@ static double dot3(const double a[3], const double b[3])
 }
 
 /* Squared distance from p to triangle abc (the closest point by regions,
- * as in Ericson, Real-Time Collision Detection, 5.1.5). */
+ * as in Ericson, Real-Time Collision Detection, 5.1.5); w gets the closest
+ * point's barycentric weights of a, b and c. */
 static double triangle_distance2(const double p[3], const double a[3], const double b[3],
-                                 const double c[3])
+                                 const double c[3], double w3[3])
 {
     double ab[3], ac[3], ap[3], q[3];
     for (int k = 0; k < 3; k++)
@@ -137,35 +138,32 @@ static double triangle_distance2(const double p[3], const double a[3], const dou
         bp[k] = p[k] - b[k], cp[k] = p[k] - c[k];
     double d3 = dot3(ab, bp), d4 = dot3(ac, bp), d5 = dot3(ab, cp), d6 = dot3(ac, cp);
     double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+    double v = 0, w = 0;   /* q = a + v ab + w ac */
     if (d1 <= 0 && d2 <= 0)
-        memcpy(q, a, sizeof q);
+        v = 0, w = 0;
     else if (d3 >= 0 && d4 <= d3)
-        memcpy(q, b, sizeof q);
+        v = 1, w = 0;
     else if (d6 >= 0 && d5 <= d6)
-        memcpy(q, c, sizeof q);
-    else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-        double v = d1 / (d1 - d3);
-        for (int k = 0; k < 3; k++)
-            q[k] = a[k] + v * ab[k];
-    } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-        double w = d2 / (d2 - d6);
-        for (int k = 0; k < 3; k++)
-            q[k] = a[k] + w * ac[k];
-    } else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-        double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        for (int k = 0; k < 3; k++)
-            q[k] = b[k] + w * (c[k] - b[k]);
-    } else {
-        double den = va + vb + vc, v = den != 0 ? vb / den : 0, w = den != 0 ? vc / den : 0;
-        for (int k = 0; k < 3; k++)
-            q[k] = a[k] + ab[k] * v + ac[k] * w;
+        v = 0, w = 1;
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        v = d1 / (d1 - d3), w = 0;
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        v = 0, w = d2 / (d2 - d6);
+    else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        w = (d4 - d3) / ((d4 - d3) + (d5 - d6)), v = 1 - w;
+    else {
+        double den = va + vb + vc;
+        v = den != 0 ? vb / den : 0, w = den != 0 ? vc / den : 0;
     }
+    for (int k = 0; k < 3; k++)
+        q[k] = a[k] + ab[k] * v + ac[k] * w;
+    w3[0] = 1 - v - w, w3[1] = v, w3[2] = w;
     double d[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
     return dot3(d, d);
 }
 
 static double cells_nearest2(const sw_mesh_grid *g, const double p[3], const int a[3],
-                             const int b[3], double best)
+                             const int b[3], double best, sw_mesh_point *at)
 {
     const sw_mesh_view *m = g->mesh;
     for (int z = a[2]; z <= b[2]; z++)
@@ -178,7 +176,12 @@ static double cells_nearest2(const sw_mesh_grid *g, const double p[3], const int
                     for (int j = 0; j < 3; j++)
                         for (int k = 0; k < 3; k++)
                             v[j][k] = m->positions[3 * (size_t)t[j] + k];
-                    best = fmin(best, triangle_distance2(p, v[0], v[1], v[2]));
+                    double w[3], d2 = triangle_distance2(p, v[0], v[1], v[2], w);
+                    if (d2 < best) {
+                        best = d2;
+                        at->triangle = g->tri[i];
+                        memcpy(at->weights, w, sizeof w);
+                    }
                 }
             }
     return best;
@@ -186,20 +189,53 @@ static double cells_nearest2(const sw_mesh_grid *g, const double p[3], const int
 
 double sw_mesh_grid_distance(const sw_mesh_grid *g, const double p[3])
 {
+    sw_mesh_point at;
+    return sw_mesh_grid_nearest(g, p, &at);
+}
+
+double sw_mesh_grid_nearest(const sw_mesh_grid *g, const double p[3], sw_mesh_point *at)
+{
     /* Every triangle within r of p is binned in a cell the box p +- r
      * covers: widen r until the nearest found is within it, or every cell
      * has been looked at. */
     double best = INFINITY;
+    at->triangle = 0, at->weights[0] = 1, at->weights[1] = at->weights[2] = 0;
     for (double r = 0.5 * g->cell;; r *= 2) {
         int a[3], b[3], whole = 1;
         for (int k = 0; k < 3; k++) {
             a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
             whole &= a[k] == 0 && b[k] == g->dim[k] - 1;
         }
-        best = cells_nearest2(g, p, a, b, best);
+        best = cells_nearest2(g, p, a, b, best, at);
         if (best <= r * r || whole)
             return sqrt(best);
     }
+}
+
+int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
+                        int (*visit)(void *ctx, const sw_mesh_point *at), void *ctx)
+{
+    const sw_mesh_view *m = g->mesh;
+    int a[3], b[3];
+    for (int k = 0; k < 3; k++)
+        a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
+    for (int z = a[2]; z <= b[2]; z++)
+        for (int y = a[1]; y <= b[1]; y++)
+            for (int x = a[0]; x <= b[0]; x++) {
+                size_t c = cell_index(g, x, y, z);
+                for (uint32_t i = g->first[c]; i < g->first[c + 1]; i++) {
+                    const uint32_t *t = m->indices + 3 * (size_t)g->tri[i];
+                    double v[3][3];
+                    for (int j = 0; j < 3; j++)
+                        for (int k = 0; k < 3; k++)
+                            v[j][k] = m->positions[3 * (size_t)t[j] + k];
+                    sw_mesh_point at = { g->tri[i], { 0, 0, 0 } };
+                    if (triangle_distance2(p, v[0], v[1], v[2], at.weights) <= r * r &&
+                        visit(ctx, &at))
+                        return 1;
+                }
+            }
+    return 0;
 }
 
 double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing)

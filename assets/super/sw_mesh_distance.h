@@ -26,6 +26,20 @@ void sw_mesh_grid_free(sw_mesh_grid *g);
 /* The distance from point p to the nearest point of the grid's mesh. */
 double sw_mesh_grid_distance(const sw_mesh_grid *g, const double p[3]);
 
+typedef struct sw_mesh_point {
+    uint32_t triangle;        /* the mesh's triangle (its first index / 3) */
+    double weights[3];        /* barycentric, of its three corners */
+} sw_mesh_point;
+
+/* The same distance, and where on the mesh that nearest point is. */
+double sw_mesh_grid_nearest(const sw_mesh_grid *g, const double p[3], sw_mesh_point *at);
+
+/* visit(ctx, at) for the nearest point to p of each triangle of the grid's
+ * mesh within r of p (a triangle may be visited more than once), until a
+ * visit returns nonzero; returns whether one did. */
+int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
+                        int (*visit)(void *ctx, const sw_mesh_point *at), void *ctx);
+
 /* The largest distance from a's sample points to g's mesh: each triangle
  * of a sampled on a barycentric grid fine enough that neighbouring samples
  * are at most `spacing` apart (at most 8 a side), its corners included. */

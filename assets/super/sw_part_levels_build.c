@@ -20,11 +20,12 @@ typedef struct part_mesh {
     uint32_t *weld;               /* source vertex -> welded vertex */
     float *wpos;                  /* welded positions */
     uint32_t *idx;                /* welded triangles, none of no area */
+    uint32_t *corner;             /* the source vertex of each of idx's corners */
     uint32_t *wedge_first, *wedge;/* welded vertex -> its source vertices */
     uint32_t *dest;               /* simplified triangles */
     uint64_t *keys;               /* output vertex hash: (welded << 32 | source) + 1 */
     uint32_t *key_value;
-    size_t cap_v, cap_i, cap_w, cap_d, cap_k, cap_kv, cap_n, cap_p, cap_wf, cap_wd, cap_x;
+    size_t cap_v, cap_i, cap_c, cap_w, cap_d, cap_k, cap_kv, cap_n, cap_p, cap_wf, cap_wd, cap_x;
     uint32_t count, wcount, icount;
     double error;                 /* the source's measured error */
 } part_mesh;
@@ -71,14 +72,17 @@ static int gather_part(part_mesh *m, const sw_pack *pack, const sw_levels *level
         uint32_t *ix = sw_grow(m->idx, &m->cap_i, (size_t)m->icount + ni, sizeof *ix);
         if (ix)
             m->idx = ix;
-        if (!p || !n || !ix)
+        uint32_t *cx = sw_grow(m->corner, &m->cap_c, (size_t)m->icount + ni, sizeof *cx);
+        if (cx)
+            m->corner = cx;
+        if (!p || !n || !ix || !cx)
             return 0;
         memcpy(m->pos + 3 * (size_t)m->count, src->positions + 3 * (size_t)v0,
                3 * sizeof(float) * nv);
         memcpy(m->nrm + 3 * (size_t)m->count, src->normals + 3 * (size_t)v0,
                3 * sizeof(float) * nv);
         for (uint32_t i = 0; i < ni; i++)
-            m->idx[m->icount + i] = src->indices[i0 + i] - v0 + m->count;
+            m->idx[m->icount + i] = m->corner[m->icount + i] = src->indices[i0 + i] - v0 + m->count;
         m->count += nv, m->icount += ni;
     }
     return 1;
@@ -133,6 +137,7 @@ static int weld(part_mesh *m)
         if (a == b || b == c || a == c)
             continue;
         m->idx[kept] = a, m->idx[kept + 1] = b, m->idx[kept + 2] = c;
+        memmove(m->corner + kept, m->corner + t, 3 * sizeof *m->corner);
         kept += 3;
     }
     m->icount = kept;
@@ -176,6 +181,14 @@ static void fill_edges(const part_mesh *m, edge_table *e)
         }
 }
 
+/* Triangle t wound the other way (its corners' source vertices with it). */
+static void turn_over(part_mesh *m, uint32_t t)
+{
+    uint32_t *c = m->idx + 3 * (size_t)t, *s = m->corner + 3 * (size_t)t, x = c[1], y = s[1];
+    c[1] = c[2], c[2] = x;
+    s[1] = s[2], s[2] = y;
+}
+
 /* From seed, the triangles reached over edges two share, each turned to
  * run such an edge the other way from the one it came from, into
  * queue[0 .. return). */
@@ -193,10 +206,8 @@ static uint32_t spread(part_mesh *m, const edge_table *e, uint32_t seed, uint32_
             if (e->second[h] >= UINT32_MAX - 1 || done[u])
                 continue;
             uint32_t *c = m->idx + 3 * (size_t)u;
-            if ((c[0] == a && c[1] == b) || (c[1] == a && c[2] == b) || (c[2] == a && c[0] == b)) {
-                uint32_t x = c[1];
-                c[1] = c[2], c[2] = x;
-            }
+            if ((c[0] == a && c[1] == b) || (c[1] == a && c[2] == b) || (c[2] == a && c[0] == b))
+                turn_over(m, u);
             done[u] = 1, queue[tail++] = u;
         }
     }
@@ -226,10 +237,8 @@ static void face_out(part_mesh *m, const uint32_t *tris, uint32_t count)
                     sum[k] += m->nrm[3 * (size_t)m->wedge[w] + k];
         vote += n[0] * sum[0] + n[1] * sum[1] + n[2] * sum[2];
     }
-    for (uint32_t i = 0; vote < 0 && i < count; i++) {
-        uint32_t *c = m->idx + 3 * (size_t)tris[i], x = c[1];
-        c[1] = c[2], c[2] = x;
-    }
+    for (uint32_t i = 0; vote < 0 && i < count; i++)
+        turn_over(m, tris[i]);
 }
 
 /* The triangles turned so that each edge two of them share is run once each
@@ -295,6 +304,40 @@ static void closest_normal(const part_mesh *m, uint32_t w, const double n[3], in
         q[k] = snorm8((float)(sign * pick[k]));
 }
 
+static void face_normal(const float *a, const float *b, const float *c, double n[3])
+{
+    double e1[3], e2[3];
+    for (int k = 0; k < 3; k++)
+        e1[k] = (double)b[k] - a[k], e2[k] = (double)c[k] - a[k];
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
+/* The unit normal weights w blend from corner normals q (snorm8). */
+static void blend_normal(const int8_t *q[3], const double w[3], double n[3])
+{
+    for (int k = 0; k < 3; k++)
+        n[k] = w[0] * q[0][k] + w[1] * q[1][k] + w[2] * q[2][k];
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int k = 0; k < 3 && len > 0; k++)
+        n[k] /= len;
+}
+
+/* The shading normal of the source (the mesh simplified from) at point
+ * `at` of it: its triangle's corners' normals, each its own surface's. */
+static void source_normal(const part_mesh *m, const sw_mesh_point *at, double n[3])
+{
+    const uint32_t *c = m->corner + 3 * (size_t)at->triangle;
+    for (int k = 0; k < 3; k++)
+        n[k] = at->weights[0] * m->nrm[3 * (size_t)c[0] + k] +
+               at->weights[1] * m->nrm[3 * (size_t)c[1] + k] +
+               at->weights[2] * m->nrm[3 * (size_t)c[2] + k];
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int k = 0; k < 3 && len > 0; k++)
+        n[k] /= len;
+}
+
 /* Output vertex for welded w with normal q (packed snorm8 x, y, z): the one
  * made already, else a new one. UINT32_MAX past one draw's vertices. */
 static uint32_t output_vertex(part_mesh *m, out_arrays *o, uint32_t first, size_t cap,
@@ -318,9 +361,37 @@ static uint32_t output_vertex(part_mesh *m, out_arrays *o, uint32_t first, size_
     return local;
 }
 
+/* The normal corner k of triangle v gets: of those the surfaces meeting
+ * there have, the one closest to the source's normal a little inside the
+ * triangle from that corner, turned to the triangle's side. A corner's own
+ * normals are those of the surfaces it lies on: where the simplifier put
+ * a triangle of one face onto vertices of the faces around it (a flat
+ * side on the rim around it), none of them is that face's, and the face
+ * would be shaded as its rim; it then takes the source's normal there. */
+static void corner_normal(const part_mesh *m, const sw_mesh_grid *source_grid,
+                          const uint32_t v[3], int k, const double fn[3], int8_t q[3])
+{
+    double x[3], ns[3];
+    for (int j = 0; j < 3; j++)
+        x[j] = 0.8 * m->wpos[3 * (size_t)v[k] + j] + 0.1 * m->wpos[3 * (size_t)v[(k + 1) % 3] + j] +
+               0.1 * m->wpos[3 * (size_t)v[(k + 2) % 3] + j];
+    sw_mesh_point at;
+    sw_mesh_grid_nearest(source_grid, x, &at);
+    source_normal(m, &at, ns);
+    if (ns[0] * fn[0] + ns[1] * fn[1] + ns[2] * fn[2] < 0)
+        for (int j = 0; j < 3; j++)
+            ns[j] = -ns[j];
+    closest_normal(m, v[k], ns, q);
+    double qn[3] = { q[0], q[1], q[2] }, len = sqrt(qn[0] * qn[0] + qn[1] * qn[1] + qn[2] * qn[2]);
+    if (!(len > 0) || (qn[0] * ns[0] + qn[1] * ns[1] + qn[2] * ns[2]) / len < SW_PART_LEVEL_CREASE_COS)
+        for (int j = 0; j < 3; j++)
+            q[j] = snorm8((float)ns[j]);
+}
+
 /* The simplified triangles dest[0 .. n) as a level's vertices and indices
  * appended to o; 0 when out of memory, -1 when over one draw. */
-static int emit(part_mesh *m, out_arrays *o, uint32_t n, uint32_t *first_vertex)
+static int emit(part_mesh *m, const sw_mesh_grid *source_grid, out_arrays *o, uint32_t n,
+                uint32_t *first_vertex)
 {
     size_t cap = sw_pow2_at_least(2 * n, 16);
     uint64_t *ks = sw_grow(m->keys, &m->cap_k, cap, sizeof *m->keys);
@@ -339,17 +410,12 @@ static int emit(part_mesh *m, out_arrays *o, uint32_t n, uint32_t *first_vertex)
     memset(m->keys, 0, cap * sizeof *m->keys);
     *first_vertex = o->vertex_count;
     for (uint32_t t = 0; t + 2 < n; t += 3) {
-        const float *a = m->wpos + 3 * (size_t)m->dest[t], *b = m->wpos + 3 * (size_t)m->dest[t + 1],
-                    *c = m->wpos + 3 * (size_t)m->dest[t + 2];
-        double e1[3], e2[3], fn[3];
-        for (int k = 0; k < 3; k++)
-            e1[k] = (double)b[k] - a[k], e2[k] = (double)c[k] - a[k];
-        fn[0] = e1[1] * e2[2] - e1[2] * e2[1];
-        fn[1] = e1[2] * e2[0] - e1[0] * e2[2];
-        fn[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        double fn[3];
+        face_normal(m->wpos + 3 * (size_t)m->dest[t], m->wpos + 3 * (size_t)m->dest[t + 1],
+                    m->wpos + 3 * (size_t)m->dest[t + 2], fn);
         for (int k = 0; k < 3; k++) {
             int8_t q[3];
-            closest_normal(m, m->dest[t + k], fn, q);
+            corner_normal(m, source_grid, m->dest + t, k, fn, q);
             uint32_t v = output_vertex(m, o, *first_vertex, cap, m->dest[t + k], q);
             if (v == UINT32_MAX)
                 return -1;
@@ -357,6 +423,71 @@ static int emit(part_mesh *m, out_arrays *o, uint32_t n, uint32_t *first_vertex)
         }
     }
     return 1;
+}
+
+typedef struct normal_match {
+    const part_mesh *m;
+    double level[3];   /* the level's shading normal at the point */
+    double best;       /* the largest |cos| to a source normal within reach */
+} normal_match;
+
+/* Whether the source's normal at `at` matches the level's (stops the
+ * search). */
+static int match_normal(void *ctx, const sw_mesh_point *at)
+{
+    normal_match *nm = ctx;
+    double ns[3];
+    source_normal(nm->m, at, ns);
+    nm->best = fmax(nm->best, fabs(nm->level[0] * ns[0] + nm->level[1] * ns[1] +
+                                   nm->level[2] * ns[2]));
+    return nm->best >= SW_PART_LEVEL_CREASE_COS;
+}
+
+/* The level l's shading side (sw_part_level): the side of a square
+ * of the area of its triangles whose shading normal lies more than 30
+ * degrees off the source's at every source point within the level's
+ * error (either side: the renderer lights both), sampled at the 10 points
+ * of a barycentric grid of sixths inside each triangle. The level may lie
+ * anywhere within its error of the source, so its shading may too: a
+ * point near a crease matches either face. A level simplified across a
+ * crease blends the two faces' normals over the triangles that span it,
+ * and a triangle whose corners the simplifier took from other faces is
+ * shaded as those; one across a fillet follows the fillet's normals. */
+static double miss_shaded_side(const part_mesh *m, const sw_mesh_grid *source_grid,
+                               const out_arrays *o, const sw_part_level *l)
+{
+    enum { N = 6, INSIDE = (N - 1) * (N - 2) / 2 };
+    double area = 0;
+    for (uint32_t t = 0; t + 2 < l->index_count; t += 3) {
+        const float *p[3];
+        const int8_t *q[3];
+        for (int k = 0; k < 3; k++) {
+            const sw_level_vertex *c =
+                &o->vertices[l->first_vertex + o->indices[l->first_index + t + k]];
+            p[k] = c->p, q[k] = c->normal;
+        }
+        int off = 0;
+        for (int i = 1; i < N; i++)
+            for (int j = 1; i + j < N; j++) {
+                double w[3] = { (double)i / N, (double)j / N, (double)(N - i - j) / N }, x[3];
+                for (int k = 0; k < 3; k++)
+                    x[k] = w[0] * p[0][k] + w[1] * p[1][k] + w[2] * p[2][k];
+                sw_mesh_point at;
+                double near = sw_mesh_grid_nearest(source_grid, x, &at);
+                double reach = fmax(near, l->error);
+                normal_match nm = { m, { 0, 0, 0 }, 0 };
+                blend_normal(q, w, nm.level);
+                /* the nearest first, then close by, then all within reach */
+                off += !match_normal(&nm, &at) &&
+                       !sw_mesh_grid_within(source_grid, x, fmin(reach, 2 * near + reach / 16),
+                                            match_normal, &nm) &&
+                       !sw_mesh_grid_within(source_grid, x, reach, match_normal, &nm);
+            }
+        double n[3];
+        face_normal(p[0], p[1], p[2], n);
+        area += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * off / INSIDE;
+    }
+    return sqrt(area);
 }
 
 /* Part `part`'s levels toward rising bounds, kept as the header says. */
@@ -406,7 +537,7 @@ static sw_status build_part(part_mesh *m, out_arrays *o, uint32_t part,
             continue;
         }
         uint32_t first_vertex = 0, first_index = o->index_count;
-        int made = emit(m, o, (uint32_t)n, &first_vertex);
+        int made = emit(m, source_grid, o, (uint32_t)n, &first_vertex);
         sw_part_level *l = sw_grow(o->levels, &o->cap_l, (size_t)o->level_count + 1, sizeof *l);
         if (made == 0 || !l) {
             sw_mesh_grid_free(source_grid);
@@ -419,9 +550,10 @@ static sw_status build_part(part_mesh *m, out_arrays *o, uint32_t part,
             continue;
         }
         o->index_count += (uint32_t)n;
-        o->levels[o->level_count++] = (sw_part_level){ part, error, first_vertex,
-                                                       o->vertex_count - first_vertex,
-                                                       first_index, (uint32_t)n, { 0, 0 } };
+        sw_part_level *made_level = &o->levels[o->level_count++];
+        *made_level = (sw_part_level){ part, error, first_vertex, o->vertex_count - first_vertex,
+                                       first_index, (uint32_t)n, 0, 0 };
+        made_level->shading_side = (float)miss_shaded_side(m, source_grid, o, made_level);
         r->triangles[kept++] += n / 3;
         r->worst_over_bound = fmax(r->worst_over_bound, error / bound);
         last_error = error, last_indices = (uint32_t)n;
@@ -435,7 +567,7 @@ static sw_status build_part(part_mesh *m, out_arrays *o, uint32_t part,
 
 static void free_part_mesh(part_mesh *m)
 {
-    void *blocks[] = { m->pos, m->nrm, m->weld, m->wpos, m->idx, m->wedge_first, m->wedge,
+    void *blocks[] = { m->pos, m->nrm, m->weld, m->wpos, m->idx, m->corner, m->wedge_first, m->wedge,
                        m->dest, m->keys, m->key_value };
     for (size_t i = 0; i < sizeof blocks / sizeof *blocks; i++)
         free(blocks[i]);
@@ -471,8 +603,9 @@ sw_status sw_part_levels_build(const sw_pack *pack, const sw_levels *levels,
     clock_gettime(CLOCK_MONOTONIC, &t0);
     sw_part_levels_options o = opt ? *opt : (sw_part_levels_options){ 0 };
     o.finest = o.finest > 0 ? o.finest : 1.0 / 512;
-    o.step = o.step > 1 ? o.step : 4.0;
-    o.count = o.count ? (o.count < SW_PART_LEVELS_MAX ? o.count : SW_PART_LEVELS_MAX) : 4;
+    o.step = o.step > 1 ? o.step : 2.0;
+    o.count = o.count ? (o.count < SW_PART_LEVELS_MAX ? o.count : SW_PART_LEVELS_MAX)
+                      : SW_PART_LEVELS_MAX;
     report->parts = pack->meta->part_count;
     sw_part_source src;
     sw_status st = sw_part_source_build(pack, levels, &src, err);

@@ -31,8 +31,8 @@
 
 typedef struct sw_part_levels_options {
     double finest;      /* the finest level's bound over the part's size (0: 1/512) */
-    double step;        /* each level's bound over the one before (0: 4) */
-    uint32_t count;     /* levels tried per part (0: 4; at most SW_PART_LEVELS_MAX) */
+    double step;        /* each level's bound over the one before (0: 2) */
+    uint32_t count;     /* levels tried per part (0 and at most: SW_PART_LEVELS_MAX) */
 } sw_part_levels_options;
 
 typedef struct sw_part_levels_report {

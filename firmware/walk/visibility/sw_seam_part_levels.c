@@ -3,7 +3,9 @@
  * surface. Chosen each frame after culling: the coarsest level whose
  * measured error is within the bound at the part's nearest depth in view
  * (its surfaces' nearest patch boxes), so every surface it stands for is
- * drawn within that surface's own bound. Its surfaces are then neither
+ * drawn within that surface's own bound, and whose area shaded wrong is at
+ * most a square of SHADING_SIDE_PX there: a level's error bounds its
+ * shape, not its normals. Its surfaces are then neither
  * drawn nor given work; out of its levels' reach, the part is drawn by its
  * surfaces again, at once from their static levels where the meshes are
  * not made yet. */
@@ -11,16 +13,23 @@
 
 #include "sw_seam_walk_internal.h"
 
+/* The side, in pixels, of the most area a part level may shade wrong: a
+ * few pixels of a part, where the error bound alone would let a level
+ * shade a face as the faces around it. */
+#define SHADING_SIDE_PX 2.0
+
 static int in_view(uint8_t v)
 {
     return v == 1 || v == SW_SEAM_WALK_TINY || v == SW_SEAM_WALK_AWAY;
 }
 
-/* The coarsest level of part p within bound, UINT32_MAX when none is. */
-static uint32_t coarsest_within(const sw_part_levels *pl, uint32_t p, double bound)
+/* The coarsest level of part p within bound and shading_bound, UINT32_MAX
+ * when none is. */
+static uint32_t coarsest_within(const sw_part_levels *pl, uint32_t p, double bound,
+                                double shading_bound)
 {
     for (uint32_t i = pl->part_levels[p + 1]; i > pl->part_levels[p]; i--)
-        if (pl->levels[i - 1].error <= bound)
+        if (pl->levels[i - 1].error <= bound && pl->levels[i - 1].shading_side <= shading_bound)
             return i - 1;
     return UINT32_MAX;
 }
@@ -45,7 +54,7 @@ void sw_seam_walk_choose_parts(sw_seam_walk *w, const sw_view *view, sw_seam_fra
                            ? INFINITY
                            : sw_view_error_world(view, w->error_px,
                                                  fmax(w->part_depth[p], view->near_z));
-        w->part_level[p] = coarsest_within(pl, p, bound);
+        w->part_level[p] = coarsest_within(pl, p, bound, bound * (SHADING_SIDE_PX / w->error_px));
     }
     for (uint32_t s = 0; s < n; s++)
         if (in_view(w->visible[s]) && w->part_level[w->pack->surfaces[s].part] != UINT32_MAX) {
