@@ -162,8 +162,11 @@ static double triangle_distance2(const double p[3], const double a[3], const dou
     return dot3(d, d);
 }
 
-static double cells_nearest2(const sw_mesh_grid *g, const double p[3], const int a[3],
-                             const int b[3], double best, sw_mesh_point *at)
+/* each(ctx, at, squared distance) for p's nearest point on every triangle
+ * binned in the cells a .. b, until it returns nonzero; returns whether it
+ * did. */
+static int cells_visit(const sw_mesh_grid *g, const double p[3], const int a[3], const int b[3],
+                       int (*each)(void *ctx, const sw_mesh_point *at, double d2), void *ctx)
 {
     const sw_mesh_view *m = g->mesh;
     for (int z = a[2]; z <= b[2]; z++)
@@ -176,15 +179,26 @@ static double cells_nearest2(const sw_mesh_grid *g, const double p[3], const int
                     for (int j = 0; j < 3; j++)
                         for (int k = 0; k < 3; k++)
                             v[j][k] = m->positions[3 * (size_t)t[j] + k];
-                    double w[3], d2 = triangle_distance2(p, v[0], v[1], v[2], w);
-                    if (d2 < best) {
-                        best = d2;
-                        at->triangle = g->tri[i];
-                        memcpy(at->weights, w, sizeof w);
-                    }
+                    sw_mesh_point at = { g->tri[i], { 0, 0, 0 } };
+                    double d2 = triangle_distance2(p, v[0], v[1], v[2], at.weights);
+                    if (each(ctx, &at, d2))
+                        return 1;
                 }
             }
-    return best;
+    return 0;
+}
+
+typedef struct nearest {
+    double d2;
+    sw_mesh_point at;
+} nearest;
+
+static int keep_nearest(void *ctx, const sw_mesh_point *at, double d2)
+{
+    nearest *n = ctx;
+    if (d2 < n->d2)
+        n->d2 = d2, n->at = *at;
+    return 0;
 }
 
 double sw_mesh_grid_distance(const sw_mesh_grid *g, const double p[3])
@@ -198,44 +212,41 @@ double sw_mesh_grid_nearest(const sw_mesh_grid *g, const double p[3], sw_mesh_po
     /* Every triangle within r of p is binned in a cell the box p +- r
      * covers: widen r until the nearest found is within it, or every cell
      * has been looked at. */
-    double best = INFINITY;
-    at->triangle = 0, at->weights[0] = 1, at->weights[1] = at->weights[2] = 0;
+    nearest n = { INFINITY, { 0, { 1, 0, 0 } } };
     for (double r = 0.5 * g->cell;; r *= 2) {
         int a[3], b[3], whole = 1;
         for (int k = 0; k < 3; k++) {
             a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
             whole &= a[k] == 0 && b[k] == g->dim[k] - 1;
         }
-        best = cells_nearest2(g, p, a, b, best, at);
-        if (best <= r * r || whole)
-            return sqrt(best);
+        cells_visit(g, p, a, b, keep_nearest, &n);
+        if (n.d2 <= r * r || whole) {
+            *at = n.at;
+            return sqrt(n.d2);
+        }
     }
+}
+
+typedef struct within {
+    double r2;
+    int (*visit)(void *ctx, const sw_mesh_point *at);
+    void *ctx;
+} within;
+
+static int visit_within(void *ctx, const sw_mesh_point *at, double d2)
+{
+    within *w = ctx;
+    return d2 <= w->r2 && w->visit(w->ctx, at);
 }
 
 int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
                         int (*visit)(void *ctx, const sw_mesh_point *at), void *ctx)
 {
-    const sw_mesh_view *m = g->mesh;
     int a[3], b[3];
     for (int k = 0; k < 3; k++)
         a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
-    for (int z = a[2]; z <= b[2]; z++)
-        for (int y = a[1]; y <= b[1]; y++)
-            for (int x = a[0]; x <= b[0]; x++) {
-                size_t c = cell_index(g, x, y, z);
-                for (uint32_t i = g->first[c]; i < g->first[c + 1]; i++) {
-                    const uint32_t *t = m->indices + 3 * (size_t)g->tri[i];
-                    double v[3][3];
-                    for (int j = 0; j < 3; j++)
-                        for (int k = 0; k < 3; k++)
-                            v[j][k] = m->positions[3 * (size_t)t[j] + k];
-                    sw_mesh_point at = { g->tri[i], { 0, 0, 0 } };
-                    if (triangle_distance2(p, v[0], v[1], v[2], at.weights) <= r * r &&
-                        visit(ctx, &at))
-                        return 1;
-                }
-            }
-    return 0;
+    within w = { r * r, visit, ctx };
+    return cells_visit(g, p, a, b, visit_within, &w);
 }
 
 double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing)
