@@ -212,10 +212,11 @@ static sw_status check_strict(const char *path, const sw_import_report *r, sw_er
                             "--strict is set", path, r->unsupported.total,
                             r->unsupported.kinds ? r->unsupported.kind[0] : "unknown kind",
                             r->unsupported.kinds > 1 ? ", ..." : "");
-    if (r->messages.total > 0)
+    size_t told = sw_import_report_strict_messages(r);
+    if (told > 0)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: %s (%zu message%s about the file, and "
-                            "--strict is set)", path, r->first_message, r->messages.total,
-                            r->messages.total > 1 ? "s" : "");
+                            "--strict is set)", path, r->first_message, told,
+                            told > 1 ? "s" : "");
     return SW_OK;
 }
 
@@ -367,6 +368,50 @@ static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t 
     return SW_OK;
 }
 
+/* The pack as verify reads it: a surface refused at one of its seam states
+ * would be a hole in the walk, so such a pack is not written. The error
+ * names the surface's part and its place there as well as its number. */
+static sw_status verify_before_writing(const uint8_t *bytes, size_t size, const sw_model *model,
+                                       sw_error *err)
+{
+    sw_pack pack;
+    sw_pack_tess_report tess = { .first_failed = UINT32_MAX };
+    sw_status st = sw_pack_open_memory(bytes, size, &pack, err);
+    if (st == SW_OK)
+        st = sw_pack_verify_tessellation(&pack, &tess, err);
+    if (st == SW_OK)
+        return SW_OK;
+    if (tess.first_failed < model->surface_count) {
+        const sw_model_surface *s = &model->surfaces[tess.first_failed];
+        const sw_model_part *part = &model->parts[s->part];
+        sw_error_prefix(err, "not written, verify would refuse the pack: part '%s', its surface "
+                        "%zu of %zu", part->name, tess.first_failed - part->first_surface + 1,
+                        part->surface_count);
+    } else {
+        sw_error_prefix(err, "not written, verify would refuse the pack");
+    }
+    return st;
+}
+
+/* A model with nothing to draw makes a pack the runtime refuses: the build
+ * fails instead, saying what was left out. */
+static sw_status check_not_empty(const build_options *o, const sw_model *model,
+                                 const sw_import_report *reports, sw_error *err)
+{
+    if (model->patch_count > 0)
+        return SW_OK;
+    for (int i = 0; i < o->input_count; i++) {
+        const sw_import_tally *t = &reports[i].unsupported;
+        if (t->total > 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "%s: nothing to draw: every surface was left "
+                                "out (%zu skipped, the first: %s)", o->inputs[i], t->total,
+                                t->kinds ? t->kind[0] : "of a kind not named");
+    }
+    return sw_error_set(err, SW_ERR_FORMAT, "%s%s: nothing to draw: no surface in the input%s",
+                        o->inputs[0], o->input_count > 1 ? " ..." : "",
+                        o->input_count > 1 ? "s" : "");
+}
+
 static sw_status pack_model(const build_options *o, progress_context *pc, sw_model *model,
                             const sw_import_report *reports, seam_summary *seam_summary_out,
                             size_t *bytes_out, sw_error *err)
@@ -406,6 +451,10 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
     sw_seam_host_free(&seams);
     free(notes);
     if (st == SW_OK) {
+        on_progress(pc, "verifying", 0.0);
+        st = verify_before_writing(bytes, *bytes_out, model, err);
+    }
+    if (st == SW_OK) {
         on_progress(pc, "writing", 0.0);
         st = sw_write_file_atomic(o->out_path, bytes, *bytes_out, err); /* names the path */
     }
@@ -431,6 +480,9 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
         sw_progress_clear(&pc.bar); /* a warning must not share the bar's line */
         model->up_axis = sw_up_inputs_choose(o->inputs, up_defaults, o->input_count, o->up_axis,
                                            stderr);
+        st = check_not_empty(o, model, reports, err);
+    }
+    if (st == SW_OK) {
         st = pack_model(o, &pc, model, reports, seams, bytes_out, err);
     }
     free(up_defaults);

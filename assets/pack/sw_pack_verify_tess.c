@@ -188,6 +188,8 @@ static sw_status check_state(verifier *v, double seam_bound, sw_pack_tess_report
         if (st == SW_OK)
             continue;
         out->failed++;
+        if (out->first_failed == UINT32_MAX)
+            out->first_failed = s;
         if (first == SW_OK)
             first = sw_error_set(err, SW_ERR_FORMAT, "surface %u does not tessellate with its "
                                  "seams within %g: %s", (unsigned)s, seam_bound,
@@ -216,6 +218,7 @@ sw_status sw_pack_verify_tessellation(const sw_pack *pack, sw_pack_tess_report *
                                       sw_error *err)
 {
     memset(out, 0, sizeof *out);
+    out->first_failed = UINT32_MAX;
     if (!pack->seam_header || pack->seam.surface_count == 0)
         return SW_OK;
     verifier v;
