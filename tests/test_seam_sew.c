@@ -238,6 +238,91 @@ static void test_dense_sides_shorter_than_tolerance_are_sewn(void)
     sw_seam_host_free(&h);
 }
 
+/* Two dense squares 0.2 apart along x (the shared side sampled at 41 and 29
+ * points), sewn at a tolerance of 0.01 with the given gaps on either side:
+ * counts of the sewing, SW_OK or the error. */
+static sw_status sew_gapped_squares(float gap_left, float gap_right, sw_sew_counts *c,
+                                    sw_error *err)
+{
+    double uv[2 * 128], p[3 * 128];
+    float gap[128];
+    size_t starts[3];
+    uint32_t surf[2];
+    uint8_t outer[2];
+    size_t sloops[3] = {0};
+    sw_seam_polylines pl = {.uv = uv, .p = p, .gap = gap, .loop_start = starts,
+                            .loop_surface = surf, .loop_outer = outer, .surface_loops = sloops,
+                            .surface_count = 2, .tolerance = 0.01};
+    square_loop(&pl, 0, 1, 41);
+    for (size_t v = 0; v < pl.vertex_count; v++)
+        gap[v] = gap_left;
+    size_t first = pl.vertex_count;
+    square_loop(&pl, 1.2, 0, 29);
+    for (size_t v = first; v < pl.vertex_count; v++)
+        gap[v] = gap_right;
+    sw_seam_host h;
+    sw_status st = sw_sew_polylines(&pl, 0.01, &h, c, err);
+    if (st == SW_OK)
+        check_host(&h);
+    sw_seam_host_free(&h);
+    return st;
+}
+
+/* Gaps that add up to the distance sew the sides whichever side has the
+ * wider one, however far past the grid's cells (0.025 here) it reaches:
+ * the wider side finds the other. Gaps that fall short leave them free. */
+static void test_each_side_reaches_by_its_own_gap(void)
+{
+    const float gaps[][2] = {{0.06f, 0.15f}, {0.15f, 0.06f}, {0.11f, 0.11f}, {0.f, 0.25f}};
+    for (size_t i = 0; i < sizeof gaps / sizeof gaps[0]; i++) {
+        sw_sew_counts c;
+        sw_error err = {0};
+        SW_CHECK_MSG(sew_gapped_squares(gaps[i][0], gaps[i][1], &c, &err) == SW_OK, "%s",
+                     err.message);
+        SW_CHECK_MSG(c.seams >= 28, "gaps %g + %g: %zu seams", gaps[i][0], gaps[i][1], c.seams);
+    }
+    sw_sew_counts c;
+    sw_error err = {0};
+    SW_CHECK(sew_gapped_squares(0.05f, 0.05f, &c, &err) == SW_OK);
+    SW_CHECK_MSG(c.seams == 0, "%zu seams", c.seams);
+}
+
+/* Gaps wider than anything the sewing can search (every vertex's reaching
+ * the whole model, as a trim's tolerance of 1e30 would): a clear error,
+ * not the machine's memory. */
+static void test_gaps_too_wide_to_search_fail(void)
+{
+    enum { N = 24000 };
+    double *uv = calloc(2 * N, sizeof *uv), *p = calloc(3 * N, sizeof *p);
+    float *gap = calloc(N, sizeof *gap);
+    size_t starts[3] = {0, N / 2, N};
+    uint32_t surf[2] = {0, 1};
+    uint8_t outer[2] = {1, 1};
+    size_t sloops[3] = {0, 1, 2};
+    SW_CHECK(uv && p && gap);
+    for (size_t v = 0; uv && p && gap && v < N; v++) {
+        double a = 2 * SW_PI * (double)(v % (N / 2)) / (N / 2);
+        p[3 * v] = cos(a), p[3 * v + 1] = sin(a), p[3 * v + 2] = v < N / 2 ? 0 : 1e-3;
+        uv[2 * v] = p[3 * v], uv[2 * v + 1] = p[3 * v + 1];
+        gap[v] = 1e30f;
+    }
+    sw_seam_polylines pl = {.uv = uv, .p = p, .gap = gap, .vertex_count = N,
+                            .loop_start = starts, .loop_surface = surf, .loop_outer = outer,
+                            .loop_count = 2, .surface_loops = sloops, .surface_count = 2,
+                            .tolerance = 1e-3};
+    sw_seam_host h;
+    sw_error err = {0};
+    if (uv && p && gap) {
+        SW_CHECK(sw_sew_polylines(&pl, 1e-3, &h, NULL, &err) == SW_ERR_RANGE);
+        SW_CHECK_MSG(strstr(err.message, "too wide for the sewing to search") != NULL, "%s",
+                     err.message);
+        SW_CHECK(h.vertices == NULL && h.vertex_count == 0);
+    }
+    free(uv);
+    free(p);
+    free(gap);
+}
+
 /* A cylinder's one loop around its domain [0, 2 pi] x [0, 1]: its sides
  * u = 0 and u = 2 pi are one line in space. They are sewn to each other (the
  * loop runs along each of their edges twice), so both are simplified as one;
@@ -777,6 +862,8 @@ int main(int argc, char **argv)
     SW_RUN(test_t_junction_inserts_the_middle_vertex);
     SW_RUN(test_three_faces_on_one_edge_are_nonmanifold);
     SW_RUN(test_dense_sides_shorter_than_tolerance_are_sewn);
+    SW_RUN(test_each_side_reaches_by_its_own_gap);
+    SW_RUN(test_gaps_too_wide_to_search_fail);
     SW_RUN(test_closed_surface_meets_itself);
     SW_RUN(test_hole_and_disc_sewn_all_round);
     SW_RUN(test_teapot_polylines_within_tolerance);
