@@ -14,6 +14,8 @@ writes into OUT_DIR:
                     attached to no entity
   solid_angle.step  one good square, its solid-angle unit written with
                     explicit dimensions, as Spatial InterOp writes it
+  disc_hole.step    a disc with a hole near its rim: simplified, the rim's
+                    chords cut the hole at coarse seam states
   wide_gap.step     a 40 x 40 grid of 1 mm squares beside one square whose
                     edges carry a tolerance of a fifth of the model (shape
                     healing widens them to cover a vertex that far off):
@@ -106,6 +108,30 @@ def write(path, faces_of, file_name_params=7, solid_angle="spec"):
         f.write("ENDSEC;\nEND-ISO-10303-21;\n")
 
 
+def circle_bound(s, centre, radius, outer):
+    """A face bound of one closed edge: a circle in z = 0 (clockwise for a
+    hole, seen from +z)."""
+    axes = s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
+        s.point(centre), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
+    circle = s.add("CIRCLE('',%s,%.9g);" % (axes, radius))
+    start = (centre[0] + radius, centre[1], 0)
+    vertex = s.add("VERTEX_POINT('',%s);" % s.point(start))
+    edge = s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (vertex, vertex, circle))
+    oriented = s.add("ORIENTED_EDGE('',*,*,%s,%s);" % (edge, ".T." if outer else ".F."))
+    loop = s.add("EDGE_LOOP('',(%s));" % oriented)
+    return s.add("%s('',%s,.T.);" % ("FACE_OUTER_BOUND" if outer else "FACE_BOUND", loop))
+
+
+def disc_with_hole(s):
+    """A disc of radius 10 with a hole of radius 1 whose rim passes 0.5 from
+    the disc's: a coarse seam state's chord across the disc's rim cuts it."""
+    outer = circle_bound(s, (0, 0, 0), 10.0, True)
+    hole = circle_bound(s, (8.5, 0, 0), 1.0, False)
+    axes = s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
+        s.point((0, 0, 0)), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
+    return [s.add("ADVANCED_FACE('',(%s,%s),%s,.T.);" % (outer, hole, s.add("PLANE('',%s);" % axes)))]
+
+
 def corners(x, y, size):
     return [(x, y, 0), (x + size, y, 0), (x + size, y + size, 0), (x, y + size, 0)]
 
@@ -136,6 +162,7 @@ def main():
           file_name_params=6)
     write(os.path.join(out, "solid_angle.step"), lambda s: [square(s, corners(0, 0, 10))],
           solid_angle="spatial")
+    write(os.path.join(out, "disc_hole.step"), disc_with_hole)
     write(os.path.join(out, "wide_gap.step"),
           lambda s: grid(s, 40, 1.0) + [off_vertex(s, 50, 0, 10, 8.0)])
 

@@ -33,4 +33,10 @@ typedef struct sw_pack_tess_report {
 sw_status sw_pack_verify_tessellation(const sw_pack *pack, sw_pack_tess_report *out,
                                       sw_error *err);
 
+/* The same, also setting failed[s] to 1 for every surface s refused at one
+ * of the states (failed: pack->seam.surface_count bytes, left as they are
+ * for the others; NULL: none set). */
+sw_status sw_pack_verify_tessellation_marks(const sw_pack *pack, uint8_t *failed,
+                                            sw_pack_tess_report *out, sw_error *err);
+
 #endif
