@@ -14,8 +14,8 @@ writes into OUT_DIR:
                     attached to no entity
   solid_angle.step  one good square, its solid-angle unit written with
                     explicit dimensions, as Spatial InterOp writes it
-  disc_hole.step    a disc with a hole near its rim: simplified, the rim's
-                    chords cut the hole at coarse seam states
+  callout.step      one good square, its shape representation also listing
+                    a PMI callout (an item OCCT does not take there)
   wide_gap.step     a 40 x 40 grid of 1 mm squares beside one square whose
                     edges carry a tolerance of a fifth of the model (shape
                     healing widens them to cover a vertex that far off):
@@ -69,7 +69,7 @@ def square(s, corners, lines=None, drop_edge=False):
     return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, s.add("PLANE('',%s);" % axes)))
 
 
-def write(path, faces_of, file_name_params=7, solid_angle="spec"):
+def write(path, faces_of, file_name_params=7, solid_angle="spec", stray_item=False):
     s = Step()
     faces = faces_of(s)
     shell = s.add("OPEN_SHELL('',(%s));" % ",".join(faces))
@@ -88,8 +88,10 @@ def write(path, faces_of, file_name_params=7, solid_angle="spec"):
     ctx = s.add("(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((%s))"
                 "GLOBAL_UNIT_ASSIGNED_CONTEXT((%s,%s,%s))REPRESENTATION_CONTEXT('',''));"
                 % (unc, mm, rad, sr))
-    rep = s.add("MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',(%s,%s),%s);" % (model, origin, ctx))
     app = s.add("APPLICATION_CONTEXT('automotive design');")
+    items = [model, origin] + ([s.add("LEADER_DIRECTED_CALLOUT('',(%s));" % origin)]
+                               if stray_item else [])
+    rep = s.add("MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',(%s),%s);" % (",".join(items), ctx))
     name = os.path.splitext(os.path.basename(path))[0]
     product = s.add("PRODUCT('%s','%s','',(%s));" % (name, name, s.add(
         "PRODUCT_CONTEXT('',%s,'mechanical');" % app)))
@@ -106,30 +108,6 @@ def write(path, faces_of, file_name_params=7, solid_angle="spec"):
         for i, text in enumerate(s.lines):
             f.write("#%d=%s\n" % (i + 1, text))
         f.write("ENDSEC;\nEND-ISO-10303-21;\n")
-
-
-def circle_bound(s, centre, radius, outer):
-    """A face bound of one closed edge: a circle in z = 0 (clockwise for a
-    hole, seen from +z)."""
-    axes = s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
-        s.point(centre), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
-    circle = s.add("CIRCLE('',%s,%.9g);" % (axes, radius))
-    start = (centre[0] + radius, centre[1], 0)
-    vertex = s.add("VERTEX_POINT('',%s);" % s.point(start))
-    edge = s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (vertex, vertex, circle))
-    oriented = s.add("ORIENTED_EDGE('',*,*,%s,%s);" % (edge, ".T." if outer else ".F."))
-    loop = s.add("EDGE_LOOP('',(%s));" % oriented)
-    return s.add("%s('',%s,.T.);" % ("FACE_OUTER_BOUND" if outer else "FACE_BOUND", loop))
-
-
-def disc_with_hole(s):
-    """A disc of radius 10 with a hole of radius 1 whose rim passes 0.5 from
-    the disc's: a coarse seam state's chord across the disc's rim cuts it."""
-    outer = circle_bound(s, (0, 0, 0), 10.0, True)
-    hole = circle_bound(s, (8.5, 0, 0), 1.0, False)
-    axes = s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
-        s.point((0, 0, 0)), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
-    return [s.add("ADVANCED_FACE('',(%s,%s),%s,.T.);" % (outer, hole, s.add("PLANE('',%s);" % axes)))]
 
 
 def corners(x, y, size):
@@ -162,7 +140,8 @@ def main():
           file_name_params=6)
     write(os.path.join(out, "solid_angle.step"), lambda s: [square(s, corners(0, 0, 10))],
           solid_angle="spatial")
-    write(os.path.join(out, "disc_hole.step"), disc_with_hole)
+    write(os.path.join(out, "callout.step"), lambda s: [square(s, corners(0, 0, 10))],
+          stray_item=True)
     write(os.path.join(out, "wide_gap.step"),
           lambda s: grid(s, 40, 1.0) + [off_vertex(s, 50, 0, 10, 8.0)])
 

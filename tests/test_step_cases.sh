@@ -11,6 +11,8 @@
 # - a STEP check attached to no entity: a message, the file builds;
 # - a solid-angle unit as Spatial InterOp writes it: told, but --strict
 #   builds the file;
+# - a shape representation that also lists a PMI callout: the item is a
+#   message, the face is built;
 # - one face with a gap of 8 mm beside 1,600 faces of 1 mm edges: the
 #   sewing's memory follows each trim's own gap (the build's peak under
 #   300 MB; it took 1 GB when every edge reached as far as the widest gap).
@@ -75,6 +77,12 @@ check "header: --strict refuses it, naming the message" eval '[ "$(code)" -eq 1 
 run build "$cases/solid_angle.step" -o "$work/solid_angle.swpack" --strict
 check "solid angle: --strict builds it, the message still told" eval \
   '[ "$(code)" -eq 0 ] && said "^warning: solid_angle.step: 1 x STEP: Count of Parameters is not 2 for si_unit (read past)$"'
+
+run build "$cases/callout.step" -o "$work/callout.swpack"
+check "callout: an item OCCT does not take in a representation is read past" eval \
+  '[ "$(code)" -eq 0 ] && said "^warning: callout.step: 1 x STEP: Parameter n0.3 (representation_item) : Entity has illegal type (read past)$"'
+run info --json "$work/callout.swpack"
+check "callout: its face is a surface" eval '[ "$(surfaces "$work/out")" -eq 1 ]'
 
 # ---- a file-wide large gap beside fine edges ----------------------------------------------------
 /usr/bin/time -f '%M' -o "$work/peak" "$tool" build "$cases/wide_gap.step" -o "$work/wide_gap.swpack" \
