@@ -26,6 +26,15 @@ import os
 import sys
 
 
+def real(x):
+    """A STEP REAL: a decimal point always, an upper-case exponent."""
+    text = "%.9G" % x
+    mantissa, e, exponent = text.partition("E")
+    if "." not in mantissa:
+        mantissa += "."
+    return mantissa + e + exponent
+
+
 class Step:
     """Entities numbered as they are added."""
 
@@ -37,10 +46,10 @@ class Step:
         return "#%d" % len(self.lines)
 
     def point(self, p):
-        return self.add("CARTESIAN_POINT('',(%s));" % ",".join("%.9g" % c for c in p))
+        return self.add("CARTESIAN_POINT('',(%s));" % ",".join(real(c) for c in p))
 
     def direction(self, d):
-        return self.add("DIRECTION('',(%s));" % ",".join("%.9g" % c for c in d))
+        return self.add("DIRECTION('',(%s));" % ",".join(real(c) for c in d))
 
 
 def line_between(s, a, b):

@@ -21,17 +21,7 @@ tool=$1 walker=$2 src=$3
 export LSAN_OPTIONS="suppressions=$src/tests/occt-lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 work=$(mktemp -d "${TMPDIR:-/tmp}/swstep_cases.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT
-failures=0 checks=0
-
-check() { # check DESCRIPTION CONDITION...
-  local what=$1; shift
-  checks=$((checks + 1))
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; failures=$((failures + 1)); fi
-}
-run() { "$tool" "$@" > "$work/out" 2> "$work/err"; echo $? > "$work/code"; }
-code() { cat "$work/code"; }
-has() { grep -q -- "$2" "$1"; }
-said() { has "$work/err" "$1" || { echo "  stderr: $(cat "$work/err")"; false; }; }
+. "$src/tests/sh_checks.sh"
 surfaces() { python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["surfaces"])' "$1"; }
 
 if ! "$tool" build "$src/tests/fuzz/corpus/step_occt/square.step" -o "$work/probe.swpack" \
@@ -95,5 +85,4 @@ check "wide gap: the build's peak under 300 MB" [ "$peak_kb" -lt 307200 ]
 run verify "$work/wide_gap.swpack"
 check "wide gap: verify passes" [ "$(code)" -eq 0 ]
 
-echo "$checks checks, $failures failed"
-[ "$failures" -eq 0 ]
+checks_done
