@@ -213,10 +213,11 @@ static sw_status check_strict(const char *path, const sw_import_report *r, sw_er
                             "--strict is set", path, r->unsupported.total,
                             r->unsupported.kinds ? r->unsupported.kind[0] : "unknown kind",
                             r->unsupported.kinds > 1 ? ", ..." : "");
-    if (r->messages.total > 0)
+    size_t told = sw_import_report_strict_messages(r);
+    if (told > 0)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: %s (%zu message%s about the file, and "
-                            "--strict is set)", path, r->first_message, r->messages.total,
-                            r->messages.total > 1 ? "s" : "");
+                            "--strict is set)", path, r->first_message, told,
+                            told > 1 ? "s" : "");
     return SW_OK;
 }
 
@@ -261,6 +262,7 @@ typedef struct seam_summary {
     sw_levels_report levels;
     sw_cluster_report clusters;
     sw_part_levels_report part_levels;
+    uint32_t pinned_surfaces;   /* whose seams were kept whole so that they tessellate */
 } seam_summary;
 
 /* The simplifier's view of the exact surfaces (sw_seam_runs.h). */
@@ -278,6 +280,7 @@ static sw_status build_seams(const build_options *o, progress_context *pc, const
                              sw_seam_host *seams, seam_summary *summary, sw_error *err)
 {
     on_progress(pc, "sewing seams", 0.0);
+    memset(summary, 0, sizeof *summary);
     sw_seam_options opt = { .tolerance = o->seam_tolerance };
     sw_status st = sw_seam_sew_model(model, &opt, seams, &summary->sewing, err);
     if (st == SW_OK) {
@@ -368,6 +371,106 @@ static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t 
     return SW_OK;
 }
 
+/* The pack as verify reads it: a surface refused at one of its seam states
+ * would be a hole in the walk, so such a pack is not written. The error
+ * names the surface's part and its place there as well as its number. */
+static sw_status verify_before_writing(const uint8_t *bytes, size_t size, const sw_model *model,
+                                       uint8_t *failed, sw_error *err)
+{
+    sw_pack pack;
+    sw_pack_tess_report tess = { .first_failed = UINT32_MAX };
+    sw_status st = sw_pack_open_memory(bytes, size, &pack, err);
+    if (st == SW_OK)
+        st = sw_pack_verify_tessellation_marks(&pack, failed, &tess, err);
+    if (st == SW_OK)
+        return SW_OK;
+    if (tess.first_failed < model->surface_count) {
+        const sw_model_surface *s = &model->surfaces[tess.first_failed];
+        const sw_model_part *part = &model->parts[s->part];
+        sw_error_prefix(err, "not written, verify would refuse the pack: part '%s', its surface "
+                        "%zu of %zu", part->name, tess.first_failed - part->first_surface + 1,
+                        part->surface_count);
+    } else {
+        sw_error_prefix(err, "not written, verify would refuse the pack");
+    }
+    return st;
+}
+
+/* A model with nothing to draw makes a pack the runtime refuses: the build
+ * fails instead, saying what was left out. */
+static sw_status check_not_empty(const build_options *o, const sw_model *model,
+                                 const sw_import_report *reports, sw_error *err)
+{
+    if (model->patch_count > 0)
+        return SW_OK;
+    for (int i = 0; i < o->input_count; i++) {
+        const sw_import_tally *t = &reports[i].unsupported;
+        if (t->total > 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "%s: nothing to draw: every surface was left "
+                                "out (%zu skipped, the first: %s)", o->inputs[i], t->total,
+                                t->kinds ? t->kind[0] : "of a kind not named");
+    }
+    return sw_error_set(err, SW_ERR_FORMAT, "%s%s: nothing to draw: no surface in the input%s",
+                        o->inputs[0], o->input_count > 1 ? " ..." : "",
+                        o->input_count > 1 ? "s" : "");
+}
+
+/* The pack in *bytes (replacing what is there), with its static levels and
+ * super-surfaces, from contents and the seams as they are now. */
+static sw_status serialize_with_levels(sw_pack_contents *contents, const sw_seam_host *seams,
+                                       progress_context *pc, uint8_t **bytes, size_t *size,
+                                       seam_summary *summary, sw_error *err)
+{
+    sw_seam_graph view = sw_seam_host_view(seams);
+    contents->seam = &view;
+    free(*bytes);
+    *bytes = NULL;
+    on_progress(pc, "serialising", 0.0);
+    sw_status st = sw_pack_serialize(contents, bytes, size, err);
+    if (st == SW_OK) {
+        on_progress(pc, "static levels, super-surfaces", 0.0);
+        st = add_levels(contents, bytes, size, summary, err);
+    }
+    contents->seam = NULL;
+    return st;
+}
+
+enum { REPAIR_ROUNDS = 6 };
+
+/* The pack serialised and verified as `verify` will: a surface refused at
+ * one of its seam states keeps its seams whole (their vertices pinned, the
+ * seams simplified again), round after round while that changes something
+ * (REPAIR_ROUNDS at most); one still refused fails the build. */
+static sw_status pack_verified(progress_context *pc, const sw_model *model,
+                               sw_pack_contents *contents, sw_seam_host *seams,
+                               seam_summary *summary, uint8_t **bytes, size_t *size, sw_error *err)
+{
+    uint8_t *pinned = calloc((size_t)seams->original_count + 1, 1);
+    uint8_t *failed = calloc((size_t)seams->surface_count + 1, 1);
+    sw_status st = pinned && failed ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    const sw_seam_surface_eval eval = { model_point, (void *)model };
+    for (int round = 0; st == SW_OK; round++) {
+        st = serialize_with_levels(contents, seams, pc, bytes, size, summary, err);
+        if (st != SW_OK)
+            break;
+        on_progress(pc, "verifying", 0.0);
+        memset(failed, 0, (size_t)seams->surface_count + 1);
+        st = verify_before_writing(*bytes, *size, model, failed, err);
+        if (st != SW_ERR_FORMAT || round == REPAIR_ROUNDS)
+            break;
+        uint32_t newly = sw_seam_pin_surfaces(seams, failed, pinned);
+        if (newly == 0)
+            break;
+        summary->pinned_surfaces += newly;
+        on_progress(pc, "keeping seams whole", 0.0);
+        st = sw_seam_simplify_pinned(seams, &eval, pinned, err);
+        summary->collapses = seams->collapse_count;
+    }
+    free(pinned);
+    free(failed);
+    return st;
+}
+
 static sw_status pack_model(const build_options *o, progress_context *pc, sw_model *model,
                             const sw_import_report *reports, seam_summary *seam_summary_out,
                             size_t *bytes_out, sw_error *err)
@@ -390,18 +493,12 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
     if (st == SW_OK)
         st = sw_pack_contents_from_model_progress(model, &progress, &contents, err);
     if (st == SW_OK) {
-        sw_seam_graph view = sw_seam_host_view(&seams);
-        contents.seam = &view;
         contents.import_notes = notes;
         contents.import_note_count = note_count;
         const sw_pack_orientation orientation = { .up_axis = model->up_axis };
         contents.orientation = sw_up_axis_valid(model->up_axis) ? &orientation : NULL;
-        on_progress(pc, "serialising", 0.0);
-        st = sw_pack_serialize(&contents, &bytes, bytes_out, err);
-        if (st == SW_OK) {
-            on_progress(pc, "static levels, super-surfaces", 0.0);
-            st = add_levels(&contents, &bytes, bytes_out, seam_summary_out, err);
-        }
+        st = pack_verified(pc, model, &contents, &seams, seam_summary_out, &bytes, bytes_out,
+                           err);
         sw_pack_contents_free(&contents);
     }
     sw_seam_host_free(&seams);
@@ -432,6 +529,9 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
         sw_progress_clear(&pc.bar); /* a warning must not share the bar's line */
         model->up_axis = sw_up_inputs_choose(o->inputs, up_defaults, o->input_count, o->up_axis,
                                            stderr);
+        st = check_not_empty(o, model, reports, err);
+    }
+    if (st == SW_OK) {
         st = pack_model(o, &pc, model, reports, seams, bytes_out, err);
     }
     free(up_defaults);
@@ -477,6 +577,9 @@ static void print_summary(const build_options *o, const sw_model *model,
            "%.2f s\n", r->boundary_vertices, r->boundary_edges, r->seams, r->free_edges,
            r->nonmanifold_edges, r->tolerance, seams->collapses, r->flatten_s + r->sew_s,
            seams->simplify_s);
+    if (seams->pinned_surfaces > 0)
+        printf("seamwalk-pack: seams: kept whole on %" PRIu32 " surfaces that would not "
+               "tessellate simplified\n", seams->pinned_surfaces);
     if (r->clamped > 0)
         printf("seamwalk-pack: seams: %zu trim points outside their surface's domain put on its "
                "border\n", r->clamped);

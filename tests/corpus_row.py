@@ -3,10 +3,15 @@
 """One row of tests/corpus.sh: a JSON object (line 1) and the table line
 (line 2) for a file, from its pack's info, its close-to-far walk's stats and
 OpenCASCADE's sewing of it (each may be missing: an earlier step failed).
-  corpus_row.py row NAME RESULT BUILD_MS PEAK_KB INFO NEAR_FAR OCCT REQUIRE NOTE ALLOW
-The result turns to "fail" when the walk left a surface out or showed a
-crack, and (REQUIRE 1) when the free border is over 1.05x OpenCASCADE's;
-ALLOW lists "FILE:MM" pairs: that file may have up to MM free instead."""
+  corpus_row.py row NAME RESULT REASON BUILD_MS PEAK_KB INFO NEAR_FAR OCCT REQUIRE NOTE ALLOW
+  corpus_row.py summary ROWS.jsonl
+REASON is the step that failed ("" when none did). The result turns to
+"fail" when the walk left a surface out or showed a crack (reason "walk"),
+when the pack has fewer surfaces than OpenCASCADE transferred faces beyond
+the faces the build named as skipped ("faces"), and (REQUIRE 1) when the
+free border is over 1.05x OpenCASCADE's ("sewing"); ALLOW lists "FILE:MM"
+pairs: that file may have up to MM free instead. The summary counts the
+files, those ok, those failed by reason and the faces skipped."""
 import json
 import os
 import sys
@@ -20,14 +25,23 @@ def load(path):
 
 
 def main(argv):
-    name, result, ms, peak_kb, info_p, walk_p, occt_p, require, note, allow = argv[2:12]
+    name, result, reason, ms, peak_kb, info_p, walk_p, occt_p, require, note, allow = argv[2:13]
     allowed = dict((a.rsplit(":", 1)[0], float(a.rsplit(":", 1)[1])) for a in allow.split())
     info, walk, occt = load(info_p), load(walk_p), load(occt_p)
     notes = [note] if note else []
     row = {"file": name, "result": result, "build_s": int(ms) / 1000.0,
            "peak_mb": int(peak_kb) / 1024.0}
+    if reason:
+        row["reason"] = reason
+
+    def fail(why, note_text):
+        if row["result"] == "ok":
+            row["result"], row["reason"] = "fail", why
+        notes.append(note_text)
     if info:
         row["surfaces"] = sum(p["surfaces"] for p in info["parts"])
+        row["skipped_faces"] = sum(n["count"] for n in info.get("import_notes", [])
+                                   if n["kind"] == "skipped" and n["what"].startswith("face "))
         border = info.get("border")
         if border:
             row["free_border"] = border["free_length"]
@@ -38,12 +52,19 @@ def main(argv):
         row["error_px"] = seam["error_px_beyond_sewing_max"]
         row["cracks"] = walk["cracks_max"]
         row["failed_surfaces"] = seam["surfaces_failed_max"]
-        if row["result"] == "ok" and (row["cracks"] or row["failed_surfaces"]):
-            row["result"] = "fail"
-            notes.append("cracks or refused surfaces")
+        if row["cracks"] or row["failed_surfaces"]:
+            fail("walk", "cracks or refused surfaces")
     if occt and occt["faces"] == 0:
         notes.append("OpenCASCADE reads no faces: no sewing to compare")
-    elif occt:
+    if occt and "surfaces" in row:
+        row["occt_faces"] = occt["faces"]
+        missing = occt["faces"] - row["surfaces"]
+        if missing > row["skipped_faces"]:
+            fail("faces", "%d surfaces for OpenCASCADE's %d faces, %d named as skipped"
+                 % (row["surfaces"], occt["faces"], row["skipped_faces"]))
+        elif row["skipped_faces"]:
+            notes.append("%d faces skipped, each named" % row["skipped_faces"])
+    if occt and occt["faces"] > 0:
         row["occt_free_border"] = occt["free_length"]
         row["occt_free_fraction"] = occt["free_length"] / occt["length"] if occt["length"] else 0
         if "free_border" in row:
@@ -55,11 +76,12 @@ def main(argv):
                              "held to %.4g" % (row["free_border"], occt["free_length"],
                                                allowed[name]))
             row["sewing_within_1_05"] = not over
-            if over:
+            if over and require == "1":
+                fail("sewing", "free border %.4g vs OpenCASCADE's %.4g"
+                     % (row["free_border"], occt["free_length"]))
+            elif over:
                 notes.append("free border %.4g vs OpenCASCADE's %.4g"
                              % (row["free_border"], occt["free_length"]))
-                if require == "1" and row["result"] == "ok":
-                    row["result"] = "fail"
     row["note"] = "; ".join(notes)
     print(json.dumps(row))
 
@@ -72,5 +94,22 @@ def main(argv):
         row["note"]))
 
 
+def summary(path):
+    rows = [json.loads(line) for line in open(path) if line.strip()]
+    failed = {}
+    for r in rows:
+        if r["result"] != "ok":
+            failed[r.get("reason", "other")] = failed.get(r.get("reason", "other"), 0) + 1
+    by_reason = ", ".join("%s %d" % (k, failed[k]) for k in sorted(failed))
+    skipped = sum(r.get("skipped_faces", 0) for r in rows)
+    print("%d files, %d ok, %d failed%s; %d faces skipped (named) in %d files" % (
+        len(rows), len(rows) - sum(failed.values()), sum(failed.values()),
+        " (%s)" % by_reason if by_reason else "", skipped,
+        sum(1 for r in rows if r.get("skipped_faces"))))
+
+
 if __name__ == "__main__":
-    main(sys.argv)
+    if sys.argv[1] == "summary":
+        summary(sys.argv[2])
+    else:
+        main(sys.argv)

@@ -239,6 +239,91 @@ static void test_dense_sides_shorter_than_tolerance_are_sewn(void)
     sw_seam_host_free(&h);
 }
 
+/* Two dense squares 0.2 apart along x (the shared side sampled at 41 and 29
+ * points), sewn at a tolerance of 0.01 with the given gaps on either side:
+ * counts of the sewing, SW_OK or the error. */
+static sw_status sew_gapped_squares(float gap_left, float gap_right, sw_sew_counts *c,
+                                    sw_error *err)
+{
+    double uv[2 * 128], p[3 * 128];
+    float gap[128];
+    size_t starts[3];
+    uint32_t surf[2];
+    uint8_t outer[2];
+    size_t sloops[3] = {0};
+    sw_seam_polylines pl = {.uv = uv, .p = p, .gap = gap, .loop_start = starts,
+                            .loop_surface = surf, .loop_outer = outer, .surface_loops = sloops,
+                            .surface_count = 2, .tolerance = 0.01};
+    square_loop(&pl, 0, 1, 41);
+    for (size_t v = 0; v < pl.vertex_count; v++)
+        gap[v] = gap_left;
+    size_t first = pl.vertex_count;
+    square_loop(&pl, 1.2, 0, 29);
+    for (size_t v = first; v < pl.vertex_count; v++)
+        gap[v] = gap_right;
+    sw_seam_host h;
+    sw_status st = sw_sew_polylines(&pl, 0.01, &h, c, err);
+    if (st == SW_OK)
+        check_host(&h);
+    sw_seam_host_free(&h);
+    return st;
+}
+
+/* Gaps that add up to the distance sew the sides whichever side has the
+ * wider one, however far past the grid's cells (0.025 here) it reaches:
+ * the wider side finds the other. Gaps that fall short leave them free. */
+static void test_each_side_reaches_by_its_own_gap(void)
+{
+    const float gaps[][2] = {{0.06f, 0.15f}, {0.15f, 0.06f}, {0.11f, 0.11f}, {0.f, 0.25f}};
+    for (size_t i = 0; i < sizeof gaps / sizeof gaps[0]; i++) {
+        sw_sew_counts c;
+        sw_error err = {0};
+        SW_CHECK_MSG(sew_gapped_squares(gaps[i][0], gaps[i][1], &c, &err) == SW_OK, "%s",
+                     err.message);
+        SW_CHECK_MSG(c.seams >= 28, "gaps %g + %g: %zu seams", gaps[i][0], gaps[i][1], c.seams);
+    }
+    sw_sew_counts c;
+    sw_error err = {0};
+    SW_CHECK(sew_gapped_squares(0.05f, 0.05f, &c, &err) == SW_OK);
+    SW_CHECK_MSG(c.seams == 0, "%zu seams", c.seams);
+}
+
+/* Gaps wider than anything the sewing can search (every vertex's reaching
+ * the whole model, as a trim's tolerance of 1e30 would): a clear error,
+ * not the machine's memory. */
+static void test_gaps_too_wide_to_search_fail(void)
+{
+    enum { N = 24000 };
+    double *uv = calloc(2 * N, sizeof *uv), *p = calloc(3 * N, sizeof *p);
+    float *gap = calloc(N, sizeof *gap);
+    size_t starts[3] = {0, N / 2, N};
+    uint32_t surf[2] = {0, 1};
+    uint8_t outer[2] = {1, 1};
+    size_t sloops[3] = {0, 1, 2};
+    SW_CHECK(uv && p && gap);
+    for (size_t v = 0; uv && p && gap && v < N; v++) {
+        double a = 2 * SW_PI * (double)(v % (N / 2)) / (N / 2);
+        p[3 * v] = cos(a), p[3 * v + 1] = sin(a), p[3 * v + 2] = v < N / 2 ? 0 : 1e-3;
+        uv[2 * v] = p[3 * v], uv[2 * v + 1] = p[3 * v + 1];
+        gap[v] = 1e30f;
+    }
+    sw_seam_polylines pl = {.uv = uv, .p = p, .gap = gap, .vertex_count = N,
+                            .loop_start = starts, .loop_surface = surf, .loop_outer = outer,
+                            .loop_count = 2, .surface_loops = sloops, .surface_count = 2,
+                            .tolerance = 1e-3};
+    sw_seam_host h;
+    sw_error err = {0};
+    if (uv && p && gap) {
+        SW_CHECK(sw_sew_polylines(&pl, 1e-3, &h, NULL, &err) == SW_ERR_RANGE);
+        SW_CHECK_MSG(strstr(err.message, "too wide for the sewing to search") != NULL, "%s",
+                     err.message);
+        SW_CHECK(h.vertices == NULL && h.vertex_count == 0);
+    }
+    free(uv);
+    free(p);
+    free(gap);
+}
+
 /* A cylinder's one loop around its domain [0, 2 pi] x [0, 1]: its sides
  * u = 0 and u = 2 pi are one line in space. They are sewn to each other (the
  * loop runs along each of their edges twice), so both are simplified as one;
@@ -289,6 +374,52 @@ static void test_closed_surface_meets_itself(void)
 }
 
 /* ---- curved trims ------------------------------------------------------- */
+
+/* A loop of the square [0.5, 1.5]^2 whose bottom curve runs 0.003 past the
+ * right side and 0.001 below its start before a straight trim closes the
+ * gap back to it (a p-curve overshooting a corner): flattened, the loop
+ * does not cross itself (no two of its segments cross in (u, v)), and the
+ * fold is gone, the corner where the two sides cross. */
+static void test_a_fold_at_a_corner_is_cut_off(void)
+{
+    shape_plane plane;
+    shape_plane_init(&plane, 1, 1, 1, 2, 2);
+    const double pts[5][2] = {{0.5, 0.5}, {1.503, 0.499}, {1.5, 0.499}, {1.5, 1.5}, {0.5, 1.5}};
+    double knots[4] = {0, 0, 1, 1}, ctrl[5][8];
+    sw_nurbs_curve curves[5];
+    for (int k = 0; k < 5; k++) {
+        const double *a = pts[k], *b = pts[(k + 1) % 5];
+        double c[8] = {a[0], a[1], 0, 1, b[0], b[1], 0, 1};
+        memcpy(ctrl[k], c, sizeof c);
+        curves[k] = (sw_nurbs_curve){1, 2, knots, ctrl[k]};
+    }
+    sw_model_loop_input loop = {curves, NULL, 5, 1, NULL};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, &loop, 1, &err) == SW_OK);
+    sw_seam_polylines pl;
+    SW_CHECK_MSG(sw_seam_flatten_model(&m, 1e-5, &pl, &err) == SW_OK, "%s", err.message);
+    size_t n = pl.loop_start[1] - pl.loop_start[0], crossings = 0, corner = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *a = pl.uv + 2 * i, *b = pl.uv + 2 * ((i + 1) % n);
+        corner += fabs(a[0] - 1.5) < 1e-9 && fabs(a[1] - (0.5 - 0.001 / 1.003)) < 1e-9;
+        for (size_t j = i + 2; j < n; j++) {
+            if ((j + 1) % n == i)
+                continue;
+            const double *c = pl.uv + 2 * j, *d = pl.uv + 2 * ((j + 1) % n);
+            double o1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+            double o2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+            double o3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
+            double o4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
+            crossings += o1 * o2 < 0 && o3 * o4 < 0;
+        }
+    }
+    SW_CHECK_MSG(crossings == 0, "%zu crossings in %zu points", crossings, n);
+    SW_CHECK_MSG(corner == 1, "the corner where the sides cross: %zu", corner);
+    sw_seam_polylines_free(&pl);
+    sw_model_free(&m);
+}
 
 /* The plane z = 0 over [0, 1]^2 with a hole of radius 0.3, and the disc that
  * fills it: the hole and the disc's rim are sewn all the way round. */
@@ -778,7 +909,10 @@ int main(int argc, char **argv)
     SW_RUN(test_t_junction_inserts_the_middle_vertex);
     SW_RUN(test_three_faces_on_one_edge_are_nonmanifold);
     SW_RUN(test_dense_sides_shorter_than_tolerance_are_sewn);
+    SW_RUN(test_each_side_reaches_by_its_own_gap);
+    SW_RUN(test_gaps_too_wide_to_search_fail);
     SW_RUN(test_closed_surface_meets_itself);
+    SW_RUN(test_a_fold_at_a_corner_is_cut_off);
     SW_RUN(test_hole_and_disc_sewn_all_round);
     SW_RUN(test_teapot_polylines_within_tolerance);
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);

@@ -292,6 +292,41 @@ static void test_rejects_a_graph_already_simplified(void)
     SW_CHECK(sw_seam_simplify(NULL, &err) == SW_ERR_ARG);
 }
 
+/* A surface whose seams must stay whole (the build's repair of a pack
+ * verify refuses): its loops' vertices pinned, the graph simplified again
+ * keeps every one of them (no collapse takes or removes one), every loop
+ * of that surface shows all its original vertices at the coarsest state,
+ * and the rest still collapses. Pinning it again changes nothing. */
+static void test_pinned_surface_keeps_its_seams(void)
+{
+    sw_seam_host g = simplified(&grid3);
+    uint32_t unpinned_collapses = g.collapse_count;
+    uint8_t *surfaces = calloc(g.surface_count, 1), *pinned = calloc(g.original_count, 1);
+    surfaces[1] = 1;
+    SW_CHECK(sw_seam_pin_surfaces(&g, surfaces, pinned) == 1);
+    SW_CHECK(sw_seam_pin_surfaces(&g, surfaces, pinned) == 0);
+    uint32_t count = 0;
+    for (uint32_t v = 0; v < g.original_count; v++)
+        count += pinned[v];
+    SW_CHECK(count > 0);
+    sw_error err = {0};
+    SW_CHECK_MSG(sw_seam_simplify_pinned(&g, NULL, pinned, &err) == SW_OK, "%s", err.message);
+    for (uint32_t c = 0; c < g.collapse_count; c++) {
+        const sw_seam_collapse *k = &g.collapses[c];
+        SW_CHECK(!(k->v1 < g.original_count && pinned[k->v1]));
+        SW_CHECK(!(k->v2 < g.original_count && pinned[k->v2]));
+    }
+    for (uint32_t v = 0; v < g.original_count; v++)
+        if (pinned[v])
+            SW_CHECK(g.vertices[v].child == SW_SEAM_NONE);
+    SW_CHECK(g.collapse_count > 0 && g.collapse_count <= unpinned_collapses - (count - 1));
+    sw_seam_graph view = sw_seam_host_view(&g);
+    SW_CHECK_MSG(sw_seam_graph_check(&view, &err) == SW_OK, "%s", err.message);
+    free(surfaces);
+    free(pinned);
+    sw_seam_host_free(&g);
+}
+
 static void test_empty_graph_has_nothing_to_do(void)
 {
     sw_seam_host g = {0};
@@ -311,6 +346,7 @@ int main(void)
     SW_RUN(test_same_input_same_hierarchy);
     SW_RUN(test_rejects_malformed_graphs);
     SW_RUN(test_rejects_a_graph_already_simplified);
+    SW_RUN(test_pinned_surface_keeps_its_seams);
     SW_RUN(test_empty_graph_has_nothing_to_do);
     return sw_test_finish();
 }

@@ -41,6 +41,9 @@ typedef struct sw_import_report {
     /* Messages about the file that did not keep anything out of the model
      * (a malformed unit, a name that is not a string): counted, built on. */
     sw_import_tally messages;
+    /* Of those, the ones no geometry depends on (a solid-angle unit): told
+     * like the others, but --strict reads past them too. */
+    size_t harmless;
     /* The first message in full, with its place ("#1691: Count of ..."), for
      * --strict's error. */
     char first_message[160];
@@ -58,6 +61,13 @@ void sw_import_report_unsupported(sw_import_report *report, const char *kind);
 /* Counts one tolerated message; the first one's full text (with its place)
  * is kept in report->first_message. */
 void sw_import_report_message(sw_import_report *report, const char *kind, const char *full);
+
+/* Counts one tolerated message that --strict tolerates too (no geometry
+ * depends on what it is about); first_message stays for the others. */
+void sw_import_report_harmless(sw_import_report *report, const char *kind);
+
+/* The messages --strict refuses a file for: all but the harmless ones. */
+size_t sw_import_report_strict_messages(const sw_import_report *report);
 
 /* Adds one import's report into a running total (a scene of many files). */
 void sw_import_report_merge(sw_import_report *total, const sw_import_report *one);

@@ -66,6 +66,7 @@ extern "C" {
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Iterator.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 #include <Transfer_TransientProcess.hxx>
 #include <TransferBRep.hxx>
@@ -75,6 +76,7 @@ extern "C" {
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -177,6 +179,7 @@ struct ImportContext {
     sw_import_report *report;
     sw_error *err;
     FilePcurveGaps gaps;
+    FilePcurveGaps face_ids;    /* STEP: each face's #id in the file */
     size_t faces_total = 0, faces_done = 0;
 };
 
@@ -207,6 +210,9 @@ struct Loop {
     std::vector<TrimCurve> curves;
     std::vector<int> computed;
     std::vector<double> gaps;   /* per curve: its edge's tolerance (sw_model_trim_curve.gap) */
+    /* per curve: how far its start and its end may stray in 3D from the
+     * vertex there (the wider of the edge's and the vertex's tolerance) */
+    std::vector<double> reach[2];
     int outer = 0;
 };
 
@@ -221,25 +227,33 @@ TrimCurve segment(const double *from, const double *to)
     return t;
 }
 
+/* "The same (u, v)" follows the loop's own extent in parameter space,
+ * which is an angle on one surface and millimetres on the next. */
+double same_uv(const Loop &loop)
+{
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (const TrimCurve &c : loop.curves)
+        for (size_t k = 0; k + 3 < c.ctrl.size(); k += 4)
+            for (int d = 0; d < 2; d++)
+                lo[d] = std::min(lo[d], c.ctrl[k + d]), hi[d] = std::max(hi[d], c.ctrl[k + d]);
+    return 1e-9 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
+}
+
 /* Closes the loop in (u, v). NurbsConvert re-approximates p-curves, and at a
  * surface's pole (nist_mbe_pmi_4 face 186) the ends of neighbouring curves
- * drift apart in parameter space (0.09 in v there) while meeting in 3D. Such
- * a gap gets a straight trim across it; one that is also a gap in 3D (beyond
- * the edges' tolerance) means the face is broken. */
-const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double tolerance)
+ * drift apart in parameter space (0.09 in v there) while meeting in 3D; and
+ * exporters leave micrometre gaps between trim curves that shape healing
+ * covers by widening the vertex between them. Such a gap gets a straight
+ * trim across it when it is within what the file allows there: both ends
+ * within their vertex's tolerance (twice it apart), or within the file's
+ * or the model's tolerance (floor_mm). Wider, the face is broken. */
+std::string close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double floor_mm)
 {
     std::vector<TrimCurve> closed;
     std::vector<int> computed;
     std::vector<double> gaps;
     size_t n = loop->curves.size();
-    /* "The same (u, v)" follows the loop's own extent in parameter space,
-     * which is an angle on one surface and millimetres on the next. */
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (const TrimCurve &c : loop->curves)
-        for (size_t k = 0; k + 3 < c.ctrl.size(); k += 4)
-            for (int d = 0; d < 2; d++)
-                lo[d] = std::min(lo[d], c.ctrl[k + d]), hi[d] = std::max(hi[d], c.ctrl[k + d]);
-    double same = 1e-9 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
+    double same = same_uv(*loop);
     for (size_t i = 0; i < n; i++) {
         closed.push_back(std::move(loop->curves[i]));
         computed.push_back(loop->computed[i]);
@@ -250,8 +264,14 @@ const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double t
         if (std::hypot(end[0] - start[0], end[1] - start[1]) <= same)
             continue;
         gp_Pnt p = surface->Value(end[0], end[1]), q = surface->Value(start[0], start[1]);
-        if (p.Distance(q) > tolerance)
-            return "trim curves do not meet in 3D";
+        double allowed = std::max(floor_mm, 2.0 * std::max(loop->reach[1][i],
+                                                           loop->reach[0][(i + 1) % n]));
+        if (p.Distance(q) > allowed) {
+            char why[96];
+            std::snprintf(why, sizeof why, "trims %.3g mm apart, over the %.3g mm allowed",
+                          p.Distance(q), allowed);
+            return why;
+        }
         closed.push_back(segment(end, start));
         computed.push_back(1);
         gaps.push_back(p.Distance(q));
@@ -259,18 +279,26 @@ const char *close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double t
     loop->curves = std::move(closed);
     loop->computed = std::move(computed);
     loop->gaps = std::move(gaps);
-    return nullptr;
+    return std::string();
+}
+
+/* The edge's tolerance, widened by its vertex at the start (end = 0) or
+ * the end (end = 1) of its use in the wire. */
+double end_reach(const TopoDS_Edge &edge, double edge_tolerance, int end)
+{
+    TopoDS_Vertex v = end ? TopExp::LastVertex(edge, Standard_True)
+                          : TopExp::FirstVertex(edge, Standard_True);
+    return v.IsNull() ? edge_tolerance : std::max(edge_tolerance, BRep_Tool::Tolerance(v));
 }
 
 /* The loop of one wire: each edge's p-curve on the converted face, in wire
  * order, reversed where the edge runs against its curve. Returns why it
- * failed, or nullptr. */
-const char *loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
+ * failed, or "". */
+std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
                          const BRepBuilderAPI_NurbsConvert &conv, const TopoDS_Face &converted,
-                         int computed, Loop *loop)
+                         int computed, double floor_mm, Loop *loop)
 {
     int edges_in_wire = 0, explored = 0;
-    double tolerance = Precision::Confusion();
     for (TopoDS_Iterator it(wire); it.More(); it.Next())
         edges_in_wire++;
     for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next()) {
@@ -291,14 +319,24 @@ const char *loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
          * faces do not meet): the sewing uses it as the file's own word. */
         double edge_tolerance = std::max(BRep_Tool::Tolerance(edge), BRep_Tool::Tolerance(moved));
         loop->gaps.push_back(edge_tolerance);
-        tolerance = std::max(tolerance, edge_tolerance);
+        for (int end = 0; end < 2; end++)
+            loop->reach[end].push_back(
+                end_reach(edge, std::max(edge_tolerance, Precision::Confusion()), end));
         explored++;
     }
     /* BRepTools_WireExplorer skips edges of wires it cannot chain; a loop
      * missing some would trim wrongly, so that is a failure, not a loop. */
     if (explored != edges_in_wire || explored == 0)
         return "a wire whose edges do not chain";
-    return close_gaps(loop, BRep_Tool::Surface(converted), 2.0 * tolerance);
+    return close_gaps(loop, BRep_Tool::Surface(converted), floor_mm);
+}
+
+/* The widest gap between trim curves any face may close, whatever its
+ * vertices say: the file's stated tolerance or the model's (an earlier
+ * input's), both in millimetres. */
+double gap_floor_mm(const ImportContext *ctx)
+{
+    return std::max(ctx->report->model_tolerance_mm, (double)ctx->model->model_tolerance);
 }
 
 /* Adds one face to the current part. mirrored: the part's placement flips
@@ -331,9 +369,10 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
         Loop loop;
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
-        const char *why = loop_of_wire(wire, forward, conv, converted, computed, &loop);
-        if (why)
-            return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s", why);
+        std::string why = loop_of_wire(wire, forward, conv, converted, computed,
+                                       gap_floor_mm(ctx), &loop);
+        if (!why.empty())
+            return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s", why.c_str());
         loops.push_back(std::move(loop));
     }
 
@@ -352,8 +391,10 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
     return status;
 }
 
-/* A face OCCT cannot convert is skipped and counted (an error when strict):
- * one bad face should not lose a whole assembly. */
+/* A face OCCT cannot convert is skipped, counted and named with its reason
+ * (an error when strict): one bad face should not lose a whole assembly,
+ * nor go unnoticed. The name leads with the face and the reason, so that a
+ * long part name is what the report's kind cuts. */
 sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mirrored,
                            size_t index)
 {
@@ -369,10 +410,19 @@ sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mir
     } catch (const Standard_Failure &e) {
         why = std::string("OCCT: ") + e.GetMessageString();
     }
+    const char *part = ctx->model->part_count ? ctx->model->parts[ctx->model->part_count - 1].name
+                                              : "";
+    /* STEP names the face by its entity, which a user can look up; IGES
+     * faces by their place among the part's. */
+    int id = 0;
+    std::string face_name = ctx->face_ids.Find(face.Located(TopLoc_Location()), id) && id > 0
+                                ? "face #" + std::to_string(id)
+                                : "face " + std::to_string(index + 1);
     if (ctx->options && ctx->options->strict)
-        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: face %zu: %s", ctx->path, index + 1,
-                            why.c_str());
-    sw_import_report_unsupported(ctx->report, "OCCT face");
+        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %s of part '%s': %s (--strict is set)",
+                            ctx->path, face_name.c_str(), part, why.c_str());
+    std::string kind = face_name + ": " + why + " (part " + part + ")";
+    sw_import_report_unsupported(ctx->report, kind.c_str());
     if (ctx->err)
         ctx->err->status = SW_OK;
     return SW_OK;
@@ -478,19 +528,28 @@ sw_status truncated(const ImportContext *ctx, bool step)
                         "%s: truncated: no terminate (T) section at the end", ctx->path);
 }
 
-/* After a successful parse: fails that make the model unreadable, then
- * (strict) the messages fatal_check_failure read on past. */
+/* After a successful parse: fails that make the model unreadable. The
+ * messages it reads on past are counted, and refused under --strict only
+ * after the faces (strict_after_faces): a face that cannot be used is the
+ * reason a user needs to hear first. */
 sw_status check_loaded(ImportContext *ctx, const Handle(XSControl_WorkSession) &ws, bool step,
                        const MessageCapture &messages)
 {
     if (!fatal_check_failure(ws, step, ctx->path, ctx->report).empty())
         return read_failure(ctx, ws, step, true, messages);
-    const sw_import_tally &told = ctx->report->messages;
-    if (ctx->options && ctx->options->strict && told.total > 0)
-        return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %s (%zu message%s about the file, and "
-                            "--strict is set)", ctx->path, ctx->report->first_message,
-                            told.total, told.total > 1 ? "s" : "");
     return SW_OK;
+}
+
+/* --strict, once every face was taken: the messages about the file that
+ * geometry may depend on. */
+sw_status strict_after_faces(const ImportContext *ctx)
+{
+    size_t told = sw_import_report_strict_messages(ctx->report);
+    if (!ctx->options || !ctx->options->strict || told == 0)
+        return SW_OK;
+    return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s: %s (%zu message%s about the file, and "
+                        "--strict is set)", ctx->path, ctx->report->first_message, told,
+                        told > 1 ? "s" : "");
 }
 
 sw_status read_step(ImportContext *ctx, const MessageCapture &messages, std::vector<Leaf> *leaves)
@@ -529,7 +588,7 @@ sw_status read_step(ImportContext *ctx, const MessageCapture &messages, std::vec
     if (leaves->empty() && basic.TransferRoots() > 0)
         for (int i = 1; i <= basic.NbShapes(); i++)
             leaves->push_back({basic.Shape(i), TopLoc_Location(), std::string()});
-    map_step_pcurve_gaps(basic.WS(), &ctx->gaps);
+    map_step_pcurve_gaps(basic.WS(), &ctx->gaps, &ctx->face_ids);
     return SW_OK;
 }
 
@@ -609,7 +668,7 @@ sw_status import_file(ImportContext *ctx)
     if (ctx->report->model_tolerance_mm > (double)ctx->model->model_tolerance)
         ctx->model->model_tolerance = (float)ctx->report->model_tolerance_mm;
     report_progress(ctx->options, "faces", 1.0);
-    return SW_OK;
+    return strict_after_faces(ctx);
 }
 
 }  // namespace
@@ -630,7 +689,7 @@ extern "C" sw_status sw_import_occt_file(const char *path, const sw_import_optio
     std::memset(report, 0, sizeof *report);
     report->units_to_mm = 1.0;
     return guarded(path, err, [&]() {
-        ImportContext ctx{path, options, model, report, err, FilePcurveGaps()};
+        ImportContext ctx{path, options, model, report, err, FilePcurveGaps(), FilePcurveGaps()};
         return import_file(&ctx);
     });
 }

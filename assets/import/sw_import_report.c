@@ -30,9 +30,22 @@ void sw_import_report_message(sw_import_report *report, const char *kind, const 
 {
     if (!report)
         return;
-    if (report->messages.total == 0)
+    if (sw_import_report_strict_messages(report) == 0)
         snprintf(report->first_message, sizeof report->first_message, "%s", full ? full : kind);
     sw_import_tally_add(&report->messages, kind, 1);
+}
+
+void sw_import_report_harmless(sw_import_report *report, const char *kind)
+{
+    if (!report)
+        return;
+    sw_import_tally_add(&report->messages, kind, 1);
+    report->harmless++;
+}
+
+size_t sw_import_report_strict_messages(const sw_import_report *report)
+{
+    return report->messages.total - report->harmless;
 }
 
 static void tally_merge(sw_import_tally *total, const sw_import_tally *one)
@@ -49,10 +62,11 @@ void sw_import_report_merge(sw_import_report *total, const sw_import_report *one
 {
     total->faces += one->faces;
     total->pcurves_computed += one->pcurves_computed;
-    if (total->messages.total == 0 && one->messages.total > 0)
+    if (sw_import_report_strict_messages(total) == 0 && sw_import_report_strict_messages(one) > 0)
         memcpy(total->first_message, one->first_message, sizeof total->first_message);
     tally_merge(&total->unsupported, &one->unsupported);
     tally_merge(&total->messages, &one->messages);
+    total->harmless += one->harmless;
     total->units_to_mm = one->units_to_mm;
     if (one->model_tolerance_mm > total->model_tolerance_mm)
         total->model_tolerance_mm = one->model_tolerance_mm;

@@ -93,8 +93,10 @@ private:
  * that face's surface, so OCCT's reader had to project one. */
 typedef TopTools_DataMapOfShapeInteger FilePcurveGaps;
 
-/* Maps every transferred face to its p-curve gaps in the file. */
-void map_step_pcurve_gaps(const Handle(XSControl_WorkSession) &ws, FilePcurveGaps *gaps);
+/* Maps every transferred face to its p-curve gaps in the file, and to the
+ * #id of its entity there (ids), which is how a user finds it. */
+void map_step_pcurve_gaps(const Handle(XSControl_WorkSession) &ws, FilePcurveGaps *gaps,
+                          FilePcurveGaps *ids);
 
 /* Millimetres per file length unit, from the names OCCT's reader reports. */
 double step_units_to_mm(STEPControl_Reader &reader);

@@ -31,6 +31,7 @@ typedef struct verifier {
     sw_arena scratch;
     void *scratch_block;
     void *select_block;
+    uint8_t *failed;   /* per surface, set when refused (may be NULL) */
 } verifier;
 
 static uint32_t surface_slots(const sw_seam_graph *g, uint32_t s)
@@ -189,6 +190,10 @@ static sw_status check_state(verifier *v, double seam_bound, sw_pack_tess_report
         if (st == SW_OK)
             continue;
         out->failed++;
+        if (v->failed)
+            v->failed[s] = 1;
+        if (out->first_failed == UINT32_MAX)
+            out->first_failed = s;
         if (first == SW_OK)
             first = sw_error_set(err, SW_ERR_FORMAT, "surface %u does not tessellate with its "
                                  "seams within %g: %s", (unsigned)s, seam_bound,
@@ -216,11 +221,19 @@ static sw_status go_to(verifier *v, double bound, sw_error *err)
 sw_status sw_pack_verify_tessellation(const sw_pack *pack, sw_pack_tess_report *out,
                                       sw_error *err)
 {
+    return sw_pack_verify_tessellation_marks(pack, NULL, out, err);
+}
+
+sw_status sw_pack_verify_tessellation_marks(const sw_pack *pack, uint8_t *failed,
+                                            sw_pack_tess_report *out, sw_error *err)
+{
     memset(out, 0, sizeof *out);
+    out->first_failed = UINT32_MAX;
     if (!pack->seam_header || pack->seam.surface_count == 0)
         return SW_OK;
     verifier v;
     sw_status st = verifier_open(&v, pack, err);
+    v.failed = failed;
     sw_status first = SW_OK;
     sw_error why = {0};
     out->surfaces = pack->seam.surface_count;

@@ -21,6 +21,7 @@ typedef struct sw_pack_tess_report {
     uint32_t checks;              /* surface tessellations tried (vanished ones not) */
     uint32_t failed;              /* of them, refused by the tessellator */
     uint32_t holes_filled;        /* drawn without their holes, as the runtime then draws them */
+    uint32_t first_failed;        /* the first surface refused, UINT32_MAX when none was */
 } sw_pack_tess_report;
 
 /* Checks every drawn surface at every state, with the bound the runtime
@@ -32,5 +33,11 @@ typedef struct sw_pack_tess_report {
  * without a Seam Graph has nothing to check (out all zero). */
 sw_status sw_pack_verify_tessellation(const sw_pack *pack, sw_pack_tess_report *out,
                                       sw_error *err);
+
+/* The same, also setting failed[s] to 1 for every surface s refused at one
+ * of the states (failed: pack->seam.surface_count bytes, left as they are
+ * for the others; NULL: none set). */
+sw_status sw_pack_verify_tessellation_marks(const sw_pack *pack, uint8_t *failed,
+                                            sw_pack_tess_report *out, sw_error *err);
 
 #endif

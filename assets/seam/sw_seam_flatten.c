@@ -314,6 +314,61 @@ static void rect_loop_make(rect_loop *r, const double d[4])
     }
 }
 
+/* Where segments a-b and c-d cross properly in (u, v): 1 and *t (along
+ * a-b), else 0. */
+static int uv_cross(const double *a, const double *b, const double *c, const double *d, double *t)
+{
+    double r[2] = {b[0] - a[0], b[1] - a[1]}, s[2] = {d[0] - c[0], d[1] - c[1]};
+    double den = r[0] * s[1] - r[1] * s[0];
+    if (den == 0)
+        return 0;
+    double ac[2] = {c[0] - a[0], c[1] - a[1]};
+    double ta = (ac[0] * s[1] - ac[1] * s[0]) / den, tc = (ac[0] * r[1] - ac[1] * r[0]) / den;
+    *t = ta;
+    return ta > 0 && ta < 1 && tc > 0 && tc < 1;
+}
+
+/* Removes vertex k of the loop [first, count) from the buffer. */
+static void drop_vertex(vbuf *b, size_t k)
+{
+    size_t after = b->count - k - 1;
+    memmove(b->uv + 2 * k, b->uv + 2 * (k + 1), 2 * after * sizeof *b->uv);
+    memmove(b->p + 3 * k, b->p + 3 * (k + 1), 3 * after * sizeof *b->p);
+    memmove(b->pin + k, b->pin + k + 1, after * sizeof *b->pin);
+    memmove(b->gap + k, b->gap + k + 1, after * sizeof *b->gap);
+    b->count--;
+}
+
+/* Folds at corners taken out: where a curve's (u, v) runs a little past
+ * its neighbour's before turning back along it (a p-curve overshooting
+ * the corner, its gap closed by a straight trim), segments i and i + 2
+ * cross and the loop crosses itself there; the tessellator refuses that
+ * wherever its cells are large enough to see it. The two vertices between
+ * become the crossing point, which cuts off the sliver. */
+static void unfold_loop(flat_ctx *c, size_t first)
+{
+    vbuf *b = c->buf;
+    for (size_t i = 0, guard = 0; b->count - first > 3 && i < b->count - first &&
+                                  guard < 4 * (b->count - first); guard++) {
+        size_t n = b->count - first, i1 = first + (i + 1) % n, i2 = first + (i + 2) % n;
+        const double *a = b->uv + 2 * (first + i), *a1 = b->uv + 2 * i1;
+        const double *c2 = b->uv + 2 * i2, *c3 = b->uv + 2 * (first + (i + 3) % n);
+        double t;
+        if (!uv_cross(a, a1, c2, c3, &t)) {
+            i++;
+            continue;
+        }
+        b->uv[2 * i1] = a[0] + t * (a1[0] - a[0]);
+        b->uv[2 * i1 + 1] = a[1] + t * (a1[1] - a[1]);
+        sw_seam_qtree_point(c->qt, b->uv[2 * i1], b->uv[2 * i1 + 1], b->p + 3 * i1);
+        b->gap[i1] = fmaxf(b->gap[i1], b->gap[i2]);
+        b->pin[i1] = 1;
+        drop_vertex(b, i2);
+        if (i2 < i1)
+            i = i > 0 ? i - 1 : 0;   /* the loop's start moved down by one */
+    }
+}
+
 /* One loop: flattened (retried with forced halvings if it came out with
  * fewer than 3 vertices: a loop of one or two short curves), simplified. */
 static sw_status one_loop(flat_ctx *c, const sw_nurbs_curve *curves, const double *gaps,
@@ -332,7 +387,11 @@ static sw_status one_loop(flat_ctx *c, const sw_nurbs_curve *curves, const doubl
         return sw_error_set(c->err, SW_ERR_FORMAT,
                             "the loop has no extent in model space (%zu distinct points)",
                             c->buf->count - first);
-    return st == SW_OK ? simplify_loop(c, first) : st;
+    if (st == SW_OK)
+        st = simplify_loop(c, first);
+    if (st == SW_OK)
+        unfold_loop(c, first);
+    return st;
 }
 
 void sw_seam_polylines_free(sw_seam_polylines *poly)

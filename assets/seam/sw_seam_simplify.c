@@ -61,7 +61,13 @@ typedef struct simp {
     uint32_t *heap, *pos, heap_n;
     uint32_t *mark, stamp;
     uint8_t *bounded; /* cost is a lower bound, target unset: made exact at the top */
+    const uint8_t *pinned; /* original vertices that never collapse (may be NULL) */
 } simp;
+
+static int is_pinned(const simp *S, uint32_t v)
+{
+    return S->pinned && v < S->g->original_count && S->pinned[v];
+}
 
 static sw_vec3 v3f(const float p[3])
 {
@@ -129,6 +135,7 @@ static void heap_remove(simp *S, uint32_t v)
 
 /* Recomputes v's cheapest collapse (5.3) and its place in the heap; with
  * exact 0, a lower bound of it (marked bounded: made exact at the top).
+ * A pinned vertex neither collapses nor takes another's collapse.
  *
  * Beyond the paper, whose epsilon is model space only, epsilon is at least
  * the collapse's parameter-space cost (sw_seam_runs.h): a collapse free in
@@ -144,6 +151,8 @@ static void update_best(simp *S, uint32_t v, int exact)
     S->bounded[v] = !exact;
     for (uint32_t i = 0; i < a->n; i++) {
         uint32_t y = a->v[i];
+        if (is_pinned(S, v) || is_pinned(S, y))
+            continue;
         double runs = exact ? sw_seam_runs_cost(&S->runs, S->g, v, y)
                             : sw_seam_runs_cost_bound(&S->runs, S->g, v, y);
         double e = fmax(a->n == 1 ? seg_dist(vx[v].p, vx[y].p, vx[y].p) : 0.0, runs);
@@ -388,13 +397,21 @@ sw_status sw_seam_simplify(sw_seam_host *g, sw_error *err)
 
 sw_status sw_seam_simplify_on(sw_seam_host *g, const sw_seam_surface_eval *eval, sw_error *err)
 {
+    return sw_seam_simplify_pinned(g, eval, NULL, err);
+}
+
+sw_status sw_seam_simplify_pinned(sw_seam_host *g, const sw_seam_surface_eval *eval,
+                                  const uint8_t *pinned, sw_error *err)
+{
     if (!g)
         return sw_error_set(err, SW_ERR_ARG, "seam simplify: no graph");
+    if (pinned && g->collapse_count)
+        restore(g, g->original_count);
     sw_status st = check_original(g, err);
     if (st != SW_OK || !g->original_count)
         return st;
     size_t cap = (size_t)g->original_count * 2;
-    simp S = {.g = g};
+    simp S = {.g = g, .pinned = pinned};
     S.adj = calloc(cap, sizeof *S.adj);
     S.stored = calloc(cap, sizeof *S.stored);
     S.cost = malloc(cap * sizeof *S.cost);
@@ -431,4 +448,22 @@ sw_status sw_seam_simplify_on(sw_seam_host *g, const sw_seam_surface_eval *eval,
     }
     free_simp(&S, (uint32_t)cap);
     return st;
+}
+
+uint32_t sw_seam_pin_surfaces(const sw_seam_host *g, const uint8_t *surfaces, uint8_t *pinned)
+{
+    uint32_t newly = 0;
+    for (uint32_t s = 0; s < g->surface_count; s++) {
+        if (!surfaces[s])
+            continue;
+        int changed = 0;
+        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+            for (uint32_t i = 0; i < g->loops[l].slot_count; i++) {
+                uint32_t v = g->slots[g->loops[l].first_slot + i].vertex;
+                changed |= !pinned[v];
+                pinned[v] = 1;
+            }
+        newly += (uint32_t)changed;
+    }
+    return newly;
 }

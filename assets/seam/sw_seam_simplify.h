@@ -38,4 +38,17 @@ sw_status sw_seam_simplify(sw_seam_host *graph, sw_error *err);
 sw_status sw_seam_simplify_on(sw_seam_host *graph, const sw_seam_surface_eval *eval,
                               sw_error *err);
 
+/* The same with vertices that never collapse, nor take another's collapse
+ * (pinned: graph->original_count bytes, 1 = pinned; NULL: none): the loops
+ * they are on keep them at every state. A graph that holds collapses from
+ * an earlier run is taken back to its original vertices first. */
+sw_status sw_seam_simplify_pinned(sw_seam_host *graph, const sw_seam_surface_eval *eval,
+                                  const uint8_t *pinned, sw_error *err);
+
+/* Pins (pinned[v] = 1) the vertices of the loops of every surface s with
+ * surfaces[s] set; returns how many of those surfaces had a vertex not
+ * pinned before (0: pinning again changes nothing). */
+uint32_t sw_seam_pin_surfaces(const sw_seam_host *graph, const uint8_t *surfaces,
+                              uint8_t *pinned);
+
 #endif

@@ -2,10 +2,17 @@
 /* Sewing step 1 (sw_sew.h): every vertex projected onto the edges of other
  * loops within the tolerance, candidates from a 3D uniform grid (paper
  * section 4.1, "a 3D grid is used similar to [13]"). Each edge is entered,
- * in pieces no longer than a cell, into every cell its tolerance-grown box
- * touches, so a vertex needs to look into its own cell only. The grid is a
- * sorted array of (cell key, edge): no hash table to size, and a key
- * collision only adds candidates the distance test then drops. */
+ * in pieces no longer than a cell, into every cell its reach (the
+ * tolerance, or twice its own gap) touches; a vertex looks into the cells
+ * within twice its own gap. Of a vertex and an edge whose gaps add up to
+ * their distance, the one with the wider gap reaches the other, so the
+ * grid grows with each trim's own gap, not with the file's widest. An edge
+ * or vertex reaching further than WIDE_CELLS cells is not gridded but tried
+ * against every vertex or edge. The grid is a sorted array of (cell key,
+ * edge): no hash table to size, and a key collision only adds candidates
+ * the distance test then drops. Memory and work are capped (SEW_MAX_BYTES,
+ * SEW_MAX_WIDE_TESTS): a file whose gaps pass them fails with an error that
+ * says so, instead of taking the machine's memory. */
 #include "sw_sew_internal.h"
 
 #include <math.h>
@@ -13,6 +20,12 @@
 #include <string.h>
 
 #include "sw_grow.h"
+
+enum { WIDE_CELLS = 8 };
+/* The most the grid, and the candidate pairs, may each take. */
+#define SEW_MAX_BYTES ((size_t)1 << 30)
+/* The most projections tried for the wide vertices and edges. */
+#define SEW_MAX_WIDE_TESTS 5e8
 
 typedef struct grid_entry {
     uint64_t key;
@@ -23,7 +36,12 @@ typedef struct grid {
     double origin[3], cell;
     grid_entry *entries;
     size_t count, capacity;
+    uint32_t *wide;           /* edges reaching past WIDE_CELLS cells */
+    size_t wide_count, wide_capacity;
 } grid;
+
+/* What failed: memory, or one of the caps. */
+enum { SEW_OOM = -1, SEW_CAPPED = -2 };
 
 static uint64_t cell_key(int64_t x, int64_t y, int64_t z)
 {
@@ -42,9 +60,11 @@ static int64_t cell_of(const grid *g, double x, int axis)
 
 static int grid_add(grid *g, uint64_t key, uint32_t edge)
 {
+    if (g->count + 1 > SEW_MAX_BYTES / sizeof *g->entries)
+        return SEW_CAPPED;
     grid_entry *entries = sw_grow(g->entries, &g->capacity, g->count + 1, sizeof *entries);
     if (!entries)
-        return -1;
+        return SEW_OOM;
     g->entries = entries;
     g->entries[g->count++] = (grid_entry){key, edge};
     return 0;
@@ -67,9 +87,11 @@ static int grid_add_edge(grid *g, const double *a, const double *b, double tol, 
         }
         for (int64_t x = lo[0]; x <= hi[0]; x++)
             for (int64_t y = lo[1]; y <= hi[1]; y++)
-                for (int64_t z = lo[2]; z <= hi[2]; z++)
-                    if (grid_add(g, cell_key(x, y, z), e) != 0)
-                        return -1;
+                for (int64_t z = lo[2]; z <= hi[2]; z++) {
+                    int st = grid_add(g, cell_key(x, y, z), e);
+                    if (st != 0)
+                        return st;
+                }
     }
     return 0;
 }
@@ -82,9 +104,26 @@ static int compare_entries(const void *x, const void *y)
     return (a->edge > b->edge) - (a->edge < b->edge);
 }
 
+/* How far from edge e (to next) a vertex may lie and be found through the
+ * grid: the tolerance, or twice the edge's gap. */
+static double edge_reach(const sw_seam_polylines *poly, double tol, uint32_t e, uint32_t next)
+{
+    return fmax(tol, 2 * fmax(sew_gap(poly, e), sew_gap(poly, next)));
+}
+
+static int add_wide(grid *g, uint32_t e)
+{
+    uint32_t *wide = sw_grow(g->wide, &g->wide_capacity, g->wide_count + 1, sizeof *wide);
+    if (!wide)
+        return SEW_OOM;
+    g->wide = wide;
+    g->wide[g->wide_count++] = e;
+    return 0;
+}
+
 /* Cells as wide as the mean edge (at least twice the tolerance): an edge
  * then touches a few cells and a cell holds a few edges. */
-static int grid_build(grid *g, const sw_seam_polylines *poly, double tol, double max_gap)
+static int grid_build(grid *g, const sw_seam_polylines *poly, double tol)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, total = 0;
     for (size_t v = 0; v < poly->vertex_count; v++)
@@ -102,10 +141,12 @@ static int grid_build(grid *g, const sw_seam_polylines *poly, double tol, double
     for (size_t l = 0; l < poly->loop_count; l++)
         for (size_t v = poly->loop_start[l]; v < poly->loop_start[l + 1]; v++) {
             uint32_t w = sew_next(poly, (uint32_t)l, (uint32_t)v);
-            /* Far enough for a vertex of the largest gap to find it. */
-            double reach = fmax(tol, fmax(sew_gap(poly, (uint32_t)v), sew_gap(poly, w)) + max_gap);
-            if (grid_add_edge(g, poly->p + 3 * v, poly->p + 3 * w, reach, (uint32_t)v) != 0)
-                return -1;
+            double reach = edge_reach(poly, tol, (uint32_t)v, w);
+            int st = reach <= WIDE_CELLS * g->cell
+                         ? grid_add_edge(g, poly->p + 3 * v, poly->p + 3 * w, reach, (uint32_t)v)
+                         : add_wide(g, (uint32_t)v);
+            if (st != 0)
+                return st;
         }
     if (g->count > 1)
         qsort(g->entries, g->count, sizeof *g->entries, compare_entries);
@@ -128,10 +169,12 @@ static size_t grid_find(const grid *g, uint64_t key)
 
 static int add_match(sew_state *s, const sew_match *m)
 {
+    if (s->match_count + 1 > SEW_MAX_BYTES / sizeof *s->matches)
+        return SEW_CAPPED;
     sew_match *matches = sw_grow(s->matches, &s->match_capacity, s->match_count + 1,
                                  sizeof *matches);
     if (!matches)
-        return -1;
+        return SEW_OOM;
     s->matches = matches;
     s->matches[s->match_count++] = *m;
     return 0;
@@ -229,29 +272,85 @@ static int far_along(const sew_state *s, uint32_t v, uint32_t e)
     return 1;
 }
 
+/* Tries edge e for vertex v once (seen[e] == v after), unless e is a
+ * neighbour of v on v's own loop. */
+static int visit(sew_state *s, uint32_t *seen, uint32_t v, uint32_t e)
+{
+    if (seen[e] == v || (s->vertex_loop[e] == s->vertex_loop[v] && !far_along(s, v, e)))
+        return 0;
+    seen[e] = v;
+    return project(s, v, e);
+}
+
+/* Every candidate edge of vertex v: those in the cells within twice its gap
+ * (every edge when that passes WIDE_CELLS cells), and the wide edges. */
+static int query_vertex(sew_state *s, const grid *g, uint32_t *seen, uint32_t v)
+{
+    const double *p = s->poly->p + 3 * (size_t)v;
+    double r = 2 * sew_gap(s->poly, v);
+    int st = 0;
+    if (!(r <= WIDE_CELLS * g->cell)) {
+        for (uint32_t e = 0; st == 0 && e < s->poly->vertex_count; e++)
+            st = visit(s, seen, v, e);
+        return st;
+    }
+    int64_t lo[3], hi[3];
+    for (int i = 0; i < 3; i++)
+        lo[i] = cell_of(g, p[i] - r, i), hi[i] = cell_of(g, p[i] + r, i);
+    for (int64_t x = lo[0]; x <= hi[0]; x++)
+        for (int64_t y = lo[1]; y <= hi[1]; y++)
+            for (int64_t z = lo[2]; z <= hi[2]; z++) {
+                uint64_t key = cell_key(x, y, z);
+                for (size_t k = grid_find(g, key); st == 0 && k < g->count &&
+                                                   g->entries[k].key == key; k++)
+                    st = visit(s, seen, v, g->entries[k].edge);
+            }
+    for (size_t k = 0; st == 0 && k < g->wide_count; k++)
+        st = visit(s, seen, v, g->wide[k]);
+    return st;
+}
+
+/* The projections the wide vertices and edges cost: each is tried against
+ * every edge or vertex. */
+static double wide_tests(const sew_state *s, const grid *g)
+{
+    size_t wide_vertices = 0;
+    for (uint32_t v = 0; v < s->poly->vertex_count; v++)
+        wide_vertices += !(2 * sew_gap(s->poly, v) <= WIDE_CELLS * g->cell);
+    return ((double)wide_vertices + (double)g->wide_count) * (double)s->poly->vertex_count;
+}
+
+static sw_status capped(const sew_state *s, const grid *g, const char *what)
+{
+    return sw_error_set(s->err, SW_ERR_RANGE, "sewing: %s (%zu trim vertices; gaps up to %g "
+                        "beside a mean edge of %g and a tolerance of %g): the trims' gaps are too "
+                        "wide for the sewing to search", what, s->poly->vertex_count, s->max_gap,
+                        g->cell, s->tol);
+}
+
 sw_status sew_project(sew_state *s)
 {
     const sw_seam_polylines *poly = s->poly;
     grid g = {0};
     uint32_t *seen = malloc((poly->vertex_count + 1) * sizeof *seen);
-    int failed = !seen || grid_build(&g, poly, s->tol, s->max_gap) != 0;
+    int st = seen ? grid_build(&g, poly, s->tol) : SEW_OOM;
+    const char *cap = st == SEW_CAPPED ? "a search grid of more than 1 GiB" : NULL;
+    if (st == 0 && wide_tests(s, &g) > SEW_MAX_WIDE_TESTS)
+        st = SEW_CAPPED, cap = "more than 5e8 projections for the widest gaps";
     for (size_t e = 0; seen && e < poly->vertex_count; e++)
         seen[e] = UINT32_MAX;
-    for (uint32_t v = 0; !failed && v < poly->vertex_count; v++) {
-        const double *p = poly->p + 3 * (size_t)v;
-        uint64_t key = cell_key(cell_of(&g, p[0], 0), cell_of(&g, p[1], 1), cell_of(&g, p[2], 2));
-        for (size_t k = grid_find(&g, key); !failed && k < g.count && g.entries[k].key == key; k++) {
-            uint32_t e = g.entries[k].edge;
-            if (seen[e] == v || (s->vertex_loop[e] == s->vertex_loop[v] && !far_along(s, v, e)))
-                continue;
-            seen[e] = v;
-            failed = project(s, v, e) != 0;
-        }
-    }
+    for (uint32_t v = 0; st == 0 && v < poly->vertex_count; v++)
+        st = query_vertex(s, &g, seen, v);
+    if (st == SEW_CAPPED && !cap)
+        cap = "more than 1 GiB of candidate pairs";
+    sw_status out = SW_OK;
+    if (cap)
+        out = capped(s, &g, cap);
+    else if (st != 0)
+        out = sw_error_set(s->err, SW_ERR_NO_MEMORY, "sewing: out of memory projecting %zu "
+                           "vertices", poly->vertex_count);
     free(g.entries);
+    free(g.wide);
     free(seen);
-    if (failed)
-        return sw_error_set(s->err, SW_ERR_NO_MEMORY, "sewing: out of memory projecting %zu vertices",
-                            poly->vertex_count);
-    return SW_OK;
+    return out;
 }

@@ -1,0 +1,159 @@
+#!/usr/bin/env python3
+"""Small STEP files, each carrying one way real exporters' files went wrong:
+    gen_step_cases.py OUT_DIR
+writes into OUT_DIR:
+  gap.step          one square face whose second vertex lies 5 micrometres
+                    off its first edge's line: the trim curves' ends miss
+                    each other by that much, and OCCT's healing widens the
+                    vertex to cover it (its edges keep 1e-7 mm)
+  skipped.step      a good square and one whose loop lacks an edge (a 10 mm
+                    gap no tolerance covers), and a FILE_NAME with a
+                    parameter short: a face to name, and a message
+  empty.step        only the face whose loop lacks an edge
+  header.step       one good square, FILE_NAME a parameter short: a check
+                    attached to no entity
+  solid_angle.step  one good square, its solid-angle unit written with
+                    explicit dimensions, as Spatial InterOp writes it
+  callout.step      one good square, its shape representation also listing
+                    a PMI callout (an item OCCT does not take there)
+  wide_gap.step     a 40 x 40 grid of 1 mm squares beside one square whose
+                    edges carry a tolerance of a fifth of the model (shape
+                    healing widens them to cover a vertex that far off):
+                    one file-wide large gap beside many fine edges
+Each file is an AP214 shell-based surface model in millimetres with a
+stated uncertainty of 1e-7 mm."""
+import os
+import sys
+
+
+def real(x):
+    """A STEP REAL: a decimal point always, an upper-case exponent."""
+    text = "%.9G" % x
+    mantissa, e, exponent = text.partition("E")
+    if "." not in mantissa:
+        mantissa += "."
+    return mantissa + e + exponent
+
+
+class Step:
+    """Entities numbered as they are added."""
+
+    def __init__(self):
+        self.lines = []
+
+    def add(self, text):
+        self.lines.append(text)
+        return "#%d" % len(self.lines)
+
+    def point(self, p):
+        return self.add("CARTESIAN_POINT('',(%s));" % ",".join(real(c) for c in p))
+
+    def direction(self, d):
+        return self.add("DIRECTION('',(%s));" % ",".join(real(c) for c in d))
+
+
+def line_between(s, a, b):
+    d = [b[i] - a[i] for i in range(3)]
+    n = sum(c * c for c in d) ** 0.5
+    return s.add("LINE('',%s,%s);" % (s.point(a), s.add(
+        "VECTOR('',%s,1.);" % s.direction([c / n for c in d]))))
+
+
+def square(s, corners, lines=None, drop_edge=False):
+    """A planar face through four corners (z = 0) bounded by lines; lines[i]
+    (two points) replaces edge i's line, so that a vertex may lie off it."""
+    vertices = [s.add("VERTEX_POINT('',%s);" % s.point(c)) for c in corners]
+    edges = []
+    for i in range(4):
+        a, b = lines[i] if lines and lines[i] else (corners[i], corners[(i + 1) % 4])
+        edge = s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (vertices[i], vertices[(i + 1) % 4],
+                                                      line_between(s, a, b)))
+        edges.append(s.add("ORIENTED_EDGE('',*,*,%s,.T.);" % edge))
+    if drop_edge:
+        edges = edges[:3]
+    loop = s.add("EDGE_LOOP('',(%s));" % ",".join(edges))
+    bound = s.add("FACE_OUTER_BOUND('',%s,.T.);" % loop)
+    axes = s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
+        s.point(corners[0]), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
+    return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, s.add("PLANE('',%s);" % axes)))
+
+
+def write(path, faces_of, file_name_params=7, solid_angle="spec", stray_item=False):
+    s = Step()
+    faces = faces_of(s)
+    shell = s.add("OPEN_SHELL('',(%s));" % ",".join(faces))
+    model = s.add("SHELL_BASED_SURFACE_MODEL('',(%s));" % shell)
+    origin = s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
+        s.point((0, 0, 0)), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
+    mm = s.add("(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));")
+    rad = s.add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));")
+    if solid_angle == "spatial":
+        dims = s.add("DIMENSIONAL_EXPONENTS(0.,0.,0.,0.,0.,0.,0.);")
+        sr = s.add("(NAMED_UNIT(%s)SOLID_ANGLE_UNIT()SI_UNIT($,.STERADIAN.));" % dims)
+    else:
+        sr = s.add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT());")
+    unc = s.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),%s,"
+                "'distance_accuracy_value','');" % mm)
+    ctx = s.add("(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((%s))"
+                "GLOBAL_UNIT_ASSIGNED_CONTEXT((%s,%s,%s))REPRESENTATION_CONTEXT('',''));"
+                % (unc, mm, rad, sr))
+    app = s.add("APPLICATION_CONTEXT('automotive design');")
+    items = [model, origin] + ([s.add("LEADER_DIRECTED_CALLOUT('',(%s));" % origin)]
+                               if stray_item else [])
+    rep = s.add("MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',(%s),%s);" % (",".join(items), ctx))
+    name = os.path.splitext(os.path.basename(path))[0]
+    product = s.add("PRODUCT('%s','%s','',(%s));" % (name, name, s.add(
+        "PRODUCT_CONTEXT('',%s,'mechanical');" % app)))
+    definition = s.add("PRODUCT_DEFINITION('design','',%s,%s);" % (
+        s.add("PRODUCT_DEFINITION_FORMATION('','',%s);" % product),
+        s.add("PRODUCT_DEFINITION_CONTEXT('part definition',%s,'design');" % app)))
+    s.add("SHAPE_DEFINITION_REPRESENTATION(%s,%s);" % (
+        s.add("PRODUCT_DEFINITION_SHAPE('','',%s);" % definition), rep))
+    file_name = ["'%s'" % name, "'2026-01-01T00:00:00'", "('')", "('')", "''", "''", "''"]
+    with open(path, "w") as f:
+        f.write("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\n")
+        f.write("FILE_NAME(%s);\n" % ",".join(file_name[:file_name_params]))
+        f.write("FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n")
+        for i, text in enumerate(s.lines):
+            f.write("#%d=%s\n" % (i + 1, text))
+        f.write("ENDSEC;\nEND-ISO-10303-21;\n")
+
+
+def corners(x, y, size):
+    return [(x, y, 0), (x + size, y, 0), (x + size, y + size, 0), (x, y + size, 0)]
+
+
+def off_vertex(s, x, y, size, off):
+    """A square whose second vertex lies off from its first edge's line."""
+    c = corners(x, y, size)
+    moved = list(c)
+    moved[1] = (x + size, y + off, 0)
+    lines = [(c[0], c[1]), ((x + size, y + off, 0), c[2]), None, None]
+    return square(s, moved, lines)
+
+
+def grid(s, n, size):
+    return [square(s, corners(i * size, j * size, size)) for i in range(n) for j in range(n)]
+
+
+def main():
+    out = sys.argv[1]
+    os.makedirs(out, exist_ok=True)
+    write(os.path.join(out, "gap.step"), lambda s: [off_vertex(s, 0, 0, 10, 0.005)])
+    write(os.path.join(out, "skipped.step"), lambda s: [
+        square(s, corners(0, 0, 10)), square(s, corners(20, 0, 10), drop_edge=True)],
+        file_name_params=6)
+    write(os.path.join(out, "empty.step"),
+          lambda s: [square(s, corners(0, 0, 10), drop_edge=True)])
+    write(os.path.join(out, "header.step"), lambda s: [square(s, corners(0, 0, 10))],
+          file_name_params=6)
+    write(os.path.join(out, "solid_angle.step"), lambda s: [square(s, corners(0, 0, 10))],
+          solid_angle="spatial")
+    write(os.path.join(out, "callout.step"), lambda s: [square(s, corners(0, 0, 10))],
+          stray_item=True)
+    write(os.path.join(out, "wide_gap.step"),
+          lambda s: grid(s, 40, 1.0) + [off_vertex(s, 50, 0, 10, 8.0)])
+
+
+if __name__ == "__main__":
+    main()

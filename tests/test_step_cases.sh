@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Small STEP files made by tests/gen_step_cases.py, each carrying one way
+# real exporters' files went wrong, through seamwalk-pack build, info and
+# verify (and the walk from close to far where a pack is made):
+#   test_step_cases.sh SEAMWALK_PACK SEAMWALK SOURCE_DIR
+# - trim curves micrometres apart, covered by the file's vertex tolerance:
+#   the face is built, not skipped;
+# - a face no tolerance covers: skipped with its #id and reason in build's
+#   warning and info's notes; --strict refuses the file for it before the
+#   file's messages; a file with only that face builds nothing (exit 1);
+# - a STEP check attached to no entity: a message, the file builds;
+# - a solid-angle unit as Spatial InterOp writes it: told, but --strict
+#   builds the file;
+# - a shape representation that also lists a PMI callout: the item is a
+#   message, the face is built;
+# - one face with a gap of 8 mm beside 1,600 faces of 1 mm edges: the
+#   sewing's memory follows each trim's own gap (the build's peak under
+#   300 MB; it took 1 GB when every edge reached as far as the widest gap).
+set -uo pipefail
+tool=$1 walker=$2 src=$3
+export LSAN_OPTIONS="suppressions=$src/tests/occt-lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+work=$(mktemp -d "${TMPDIR:-/tmp}/swstep_cases.XXXXXX") || exit 1
+trap 'rm -rf "$work"' EXIT
+. "$src/tests/sh_checks.sh"
+surfaces() { python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["surfaces"])' "$1"; }
+
+if ! "$tool" build "$src/tests/fuzz/corpus/step_occt/square.step" -o "$work/probe.swpack" \
+    --quiet 2> "$work/probe" && grep -q "without STEP support" "$work/probe"; then
+  echo "skip: built without STEP support"; exit 77
+fi
+python3 "$src/tests/gen_step_cases.py" "$work/cases" || exit 1
+cases=$work/cases
+
+# ---- a micrometre gap between trim curves ---------------------------------------------------
+run build "$cases/gap.step" -o "$work/gap.swpack" --strict
+check "gap: builds under --strict, nothing skipped" eval '[ "$(code)" -eq 0 ] && ! has "$work/err" skipped'
+run info --json "$work/gap.swpack"
+check "gap: its one face is a surface" eval '[ "$(surfaces "$work/out")" -eq 1 ] && has "$work/out" "\"import_notes\": \[\]"'
+run verify "$work/gap.swpack"
+check "gap: verify passes" [ "$(code)" -eq 0 ]
+"$tool" info --json "$work/gap.swpack" > "$work/gap.json"
+check "gap: walks from close to far, no crack, no refused surface" \
+  bash "$src/tests/walk_near_far.sh" "$walker" "$work/gap.swpack" "$work/gap.json" "$work" "$src"
+
+# ---- a face no tolerance covers ---------------------------------------------------------------
+run build "$cases/skipped.step" -o "$work/skipped.swpack"
+check "skipped: builds the good face, warns naming the other by #id and reason" eval \
+  '[ "$(code)" -eq 0 ] && said "^warning: skipped.step: 1 x face #[0-9]*: trims 10 mm apart, over the [0-9.e-]* mm allowed (part skipped) skipped$"'
+run info "$work/skipped.swpack"
+check "skipped: info names the face" has "$work/out" "skipped.step: 1 x face #[0-9]*: trims 10 mm apart"
+run info --json "$work/skipped.swpack"
+check "skipped: info --json has one surface and the note" eval \
+  '[ "$(surfaces "$work/out")" -eq 1 ] && has "$work/out" "\"kind\": \"skipped\", \"what\": \"face #"'
+run build "$cases/skipped.step" -o "$work/skipped.strict.swpack" --strict
+check "skipped: --strict refuses it for the face, not for the header's message" eval \
+  '[ "$(code)" -eq 1 ] && said "skipped.step: face #[0-9]* of part .skipped.: trims 10 mm apart" && [ ! -e "$work/skipped.strict.swpack" ]'
+run build "$cases/empty.step" -o "$work/empty.swpack"
+check "empty: no pack, exit 1, says nothing is left to draw and why" eval \
+  '[ "$(code)" -eq 1 ] && said "empty.step: nothing to draw: every surface was left out (1 skipped, the first: face #[0-9]*: trims 10 mm" && [ ! -e "$work/empty.swpack" ]'
+
+# ---- messages ---------------------------------------------------------------------------------
+run build "$cases/header.step" -o "$work/header.swpack"
+check "header: a check on no entity is read past" eval \
+  '[ "$(code)" -eq 0 ] && said "^warning: header.step: 1 x STEP: Count of Parameters is not 7 for file_name.*(read past)$"'
+run build "$cases/header.step" -o "$work/header.strict.swpack" --strict
+check "header: --strict refuses it, naming the message" eval '[ "$(code)" -eq 1 ] && said "Count of Parameters is not 7 for file_name"'
+run build "$cases/solid_angle.step" -o "$work/solid_angle.swpack" --strict
+check "solid angle: --strict builds it, the message still told" eval \
+  '[ "$(code)" -eq 0 ] && said "^warning: solid_angle.step: 1 x STEP: Count of Parameters is not 2 for si_unit (read past)$"'
+
+run build "$cases/callout.step" -o "$work/callout.swpack"
+check "callout: an item OCCT does not take in a representation is read past" eval \
+  '[ "$(code)" -eq 0 ] && said "^warning: callout.step: 1 x STEP: Parameter n0.3 (representation_item) : Entity has illegal type (read past)$"'
+run info --json "$work/callout.swpack"
+check "callout: its face is a surface" eval '[ "$(surfaces "$work/out")" -eq 1 ]'
+
+# ---- a file-wide large gap beside fine edges ----------------------------------------------------
+/usr/bin/time -f '%M' -o "$work/peak" "$tool" build "$cases/wide_gap.step" -o "$work/wide_gap.swpack" \
+  --quiet > "$work/out" 2> "$work/err"
+echo $? > "$work/code"
+peak_kb=$(tail -n 1 "$work/peak")
+echo "wide gap: build's peak $peak_kb kB"
+check "wide gap: builds every face" eval '[ "$(code)" -eq 0 ] && ! has "$work/err" skipped'
+check "wide gap: the build's peak under 300 MB" [ "$peak_kb" -lt 307200 ]
+run verify "$work/wide_gap.swpack"
+check "wide gap: verify passes" [ "$(code)" -eq 0 ]
+
+checks_done
