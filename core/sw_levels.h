@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Static levels of detail (paper 000, section 4): for each surface, a few
  * meshes made on the host at increasing error, stored in the pack and drawn
  * at run time without tessellating anything. Far away a level stands for

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The static levels' sections (LEVELS, LEVEL_RECORDS, LEVEL_SURFACES,
  * LEVEL_VERTICES, LEVEL_INDICES, LEVEL_CHAINS, LEVEL_CHAIN_POINTS;
  * core/sw_levels.h), checked once at load so that the walk draws a level

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The part levels' sections (PART_LEVELS, PART_LEVEL_RECORDS,
  * PART_LEVEL_PARTS, PART_LEVEL_VERTICES, PART_LEVEL_INDICES;
  * core/sw_part_levels.h), found, mapped and checked once at load, apart

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The super-surfaces' sections (SUPER_SURFACES, SUPER_MEMBERS, SUPER_OF;
  * core/sw_super.h), found, mapped and checked once at load. Kept apart from
  * sw_pack_read.c, as ORIENTATION is: the group has no counts record, its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Part levels: a whole part drawn far away as one simplified mesh, one
  * draw, in place of its surfaces. A surface level (sw_levels.h) cannot go
  * below a few triangles a surface plus the strips to its neighbours; a

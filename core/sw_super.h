@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Super-surfaces (paper 000, section 3): the pack's surfaces grouped into
  * clusters of adjacent surfaces of one part whose normals stay within a
  * cone, so that a cluster can be culled, and later drawn, as one. The

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Small STEP files, each carrying one way real exporters' files went wrong:
     gen_step_cases.py OUT_DIR
 writes into OUT_DIR:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The checks the shell tests share, sourced: check DESCRIPTION COMMAND...
 # runs COMMAND and counts it as passed or failed ("ok" or "FAIL" and the
 # description on a line); checks_done prints the counts and returns 1 when

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """tests/corpus_row.py's verdicts on made-up steps' outputs: a pack with
 fewer surfaces than OpenCASCADE's faces fails unless the build named the
 difference as skipped faces; a failed step keeps its reason; cracks fail

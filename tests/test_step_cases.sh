@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Small STEP files made by tests/gen_step_cases.py, each carrying one way
 # real exporters' files went wrong, through seamwalk-pack build, info and
 # verify (and the walk from close to far where a pack is made):

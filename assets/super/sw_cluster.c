@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Seeded growth and the small clusters' merge (sw_cluster.h). */
 #include "sw_cluster.h"
 

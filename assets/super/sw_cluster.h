@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Clustering a pack's surfaces into super-surfaces (paper 000, section 3;
  * core/sw_super.h for what is stored).
  *

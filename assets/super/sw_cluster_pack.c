@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sw_cluster_pack (sw_cluster.h): a validated pack's surfaces as the
  * clustering's input: each surface's cone from its patches, its size (the
  * diagonal of its patches' boxes), its finest level's triangles and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A level's border chains (sw_levels_border.h). */
 #include "sw_levels_border.h"
 

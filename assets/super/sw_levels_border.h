@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A level's border read back from its mesh (sw_levels_build.h): the mesh's
  * edges used by one triangle only, walked into closed chains, each matched
  * to the loop whose points it runs through and placed along it by slot

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The static levels of a pack's surfaces (sw_levels_build.h): the front
  * moved level by level, every surface tessellated inside its loops there,
  * its border read back as chains, its error measured; then the levels

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The static levels of detail of a pack's surfaces (core/sw_levels.h), made
  * on the host from the pack itself, so they are made from exactly what the
  * runtime reads (patches, domains, the Seam Graph).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A level's measured error (sw_levels_measure.h). */
 #include "sw_levels_measure.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A level's error, measured apart from how it was made: every triangle
  * sampled on a barycentric grid and compared with the exact surface at the
  * same (u, v) (sw_surface_at.h). Host only. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sampled one-sided distance between two meshes (sw_mesh_distance.h). */
 #include "sw_mesh_distance.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* How far one triangle mesh lies from another: the largest distance from
  * points sampled on mesh A's triangles to the nearest point of mesh B (a
  * one-sided Hausdorff distance, sampled). Used to measure a simplified

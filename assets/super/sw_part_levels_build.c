@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Part levels: each part's source welded, simplified toward rising
  * bounds, measured both ways, its normals chosen per corner
  * (sw_part_levels_build.h). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The part levels of a pack (core/sw_part_levels.h), made on the host from
  * its surfaces' finest static levels joined at one front
  * (sw_part_source.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every surface's finest level with its border strips, at one front
  * (sw_part_source.h). */
 #include "sw_part_source.h"

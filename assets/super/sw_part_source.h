@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The mesh a part's levels are simplified from (sw_part_levels_build.h):
  * every surface's finest static level (core/sw_levels.h) joined by its
  * border strips (core/sw_border_strip.h) to one state of the Seam Graph's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Surface adjacency from the Seam Graph (sw_surface_adjacency.h): every
  * original vertex's slots name their loops' surfaces; each pair of distinct
  * surfaces met at one vertex is an edge, kept once after a sort. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Which surfaces of a pack touch: two surfaces are adjacent when one
  * original Seam Graph vertex sits in loops of both (they were sewn there,
  * along a seam or at a corner). The clustering into super-surfaces

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_seam_plan.h"
 
 #include <string.h>

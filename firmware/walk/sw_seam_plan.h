@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A frame's plan: what the GL thread P uploads and draws for one frame of
  * the seam walk, made by whoever runs the walk's visibility side V
  * (sw_seam_walk_plan): the visibility thread when there is one

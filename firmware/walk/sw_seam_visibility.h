@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The visibility thread V of paper 000 section 5 (the pipeline V -> T -> P):
  * V culls, bounds, moves the seams, schedules the workers' tessellation,
  * swaps finished batches in and writes the frame's plan (sw_seam_plan.h)

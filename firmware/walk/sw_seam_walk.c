@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_seam_walk.h"
 
 #include <float.h>

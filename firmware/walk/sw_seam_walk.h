@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The frame work of a walk through the Seam Graph (paper 004, sections 5.5,
  * 6.1, 6.3 and 6.4), what `seamwalk` draws: per surface an error bound from
  * the view (half a pixel at the surface's nearest depth, never below a

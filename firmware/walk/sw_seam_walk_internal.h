@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the files of the seam walk (sw_seam_walk.c: selection, the
  * frame's own tessellation, drawing; sw_seam_walk_threads.c: scheduling
  * for the workers and swapping their batches in); not public. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The seams as drawn: after a frame, the border of every drawn mesh (its
  * edges that only one of its triangles uses, in the positions the GL got)
  * against the borders of the other drawn meshes, with no help from the Seam

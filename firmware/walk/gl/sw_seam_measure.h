@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Measurement of what the seam walk (sw_seam_walk.h) drew, independent of
  * how it was made: each drawn triangle is sampled and compared with the
  * exact surface at the same (u, v), both projected to the screen, in

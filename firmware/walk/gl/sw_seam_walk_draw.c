@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* P's half of the seam walk's frame (sw_seam_walk.h, "Threads"): a plan
  * drawn on the GL thread (uploads, draws, measurement), reading only the
  * plan, the mesh bytes it points at and P's own scratch. */

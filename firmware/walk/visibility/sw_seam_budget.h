@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Per-frame budgets of the threaded walk (paper 004 section 6.4): the
  * weight function that orders the surfaces needing work, and the
  * controller that sets N (new triangles: surfaces tessellated for a new

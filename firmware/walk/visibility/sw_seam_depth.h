@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The depth range a frame of the seam walk (sw_seam_walk.h) draws: the
  * nearest and farthest eye-space depths of the boxes of the surfaces it
  * selected for drawing, so the frame loop can fit near and far to them

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* V's part levels (core/sw_part_levels.h): a part far enough away is
  * drawn whole from one simplified mesh, one draw, instead of surface by
  * surface. Chosen each frame after culling: the coarsest level whose

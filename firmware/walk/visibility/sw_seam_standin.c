@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stand-ins from static levels (sw_seam_standin.h). V's thread. */
 #include "sw_seam_standin.h"
 

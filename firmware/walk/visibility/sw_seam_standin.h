@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stand-ins: a surface in view whose own mesh is not made yet is drawn at
  * once from one of its static levels (core/sw_levels.h), joined by border
  * strips (core/sw_border_strip.h) to the loops its neighbours draw, so it

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* V's half of the seam walk's frame (sw_seam_walk.h, "Threads"): the plan,
  * made after the select: the meshes the frame needs made or swapped in,
  * and every surface to draw, counted. The GL thread P draws it

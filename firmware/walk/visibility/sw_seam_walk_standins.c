@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* V: surfaces in view without a mesh of the walk's own drawn from their
  * static levels (sw_seam_standin.h), joined to what is drawn beside them;
  * the borders they announce to each other, and room made for them in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The threaded side of the seam walk (sw_seam_walk.h, "Threads"): which
  * surfaces get work and in what order, the batch that makes them from one
  * seam state, and the swap that shows the batch whole. Runs on the walk's

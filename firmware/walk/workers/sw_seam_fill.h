@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fill fans over a surface's seam crossings. The tessellator puts a vertex
  * where a cell of its grid crosses a seam segment (SW_TRIM_CROSSING, on the
  * segment's chord); the neighbour across the seam has no vertex there, so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "sw_seam_make.h"
 
 #include <math.h>

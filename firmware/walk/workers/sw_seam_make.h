@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* One surface's tessellation from its current Seam Graph loops, as the walk
  * keeps it (sw_seam_walk.h): the loops the front shows for its seams'
  * share of the bound, the trimmed tessellator at the bound (coarsened x4,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The tessellation workers T of the walk (paper 000 section 5): threads
  * that make surfaces' meshes asynchronously while the GL thread P draws.
  * The walk (the producer, on P's thread) writes a job's bounds into
