@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Part levels: each part's source welded, simplified toward rising
- * bounds, measured both ways, its normals chosen per corner
- * (sw_part_levels_build.h). */
+ * bounds, measured both ways, its normals chosen per corner from the
+ * source's, its area shaded wrong measured (sw_part_levels_build.h). */
 #include "sw_part_levels_build.h"
 
 #include <math.h>

@@ -15,8 +15,12 @@
  *
  * Normals: a welded vertex stands for one vertex of each surface that met
  * there, with that surface's normal; each corner of a simplified triangle
- * takes the one closest to the triangle's own normal, so a crease between
- * two surfaces stays a crease.
+ * takes the one closest to the source's normal a little inside the
+ * triangle from it, or that source normal when none is within 30 degrees
+ * (the simplifier may put a face onto vertices of the faces around it).
+ * The level's area shaded wrong is measured and stored with it
+ * (sw_part_level.shading_side): its error bounds its shape, not its
+ * normals.
  *
  * A part gets none when one of its surfaces has no finest level (that
  * surface would be missing from it); counted. Host only: allocates. */
