@@ -192,6 +192,7 @@ static int cells_visit(const sw_mesh_grid *g, const double p[3], const int a[3],
 typedef struct nearest {
     double d2;
     sw_mesh_point at;
+    double enough2;   /* a triangle this close ends the search */
 } nearest;
 
 static int keep_nearest(void *ctx, const sw_mesh_point *at, double d2)
@@ -199,7 +200,30 @@ static int keep_nearest(void *ctx, const sw_mesh_point *at, double d2)
     nearest *n = ctx;
     if (d2 < n->d2)
         n->d2 = d2, n->at = *at;
-    return 0;
+    return n->d2 <= n->enough2;
+}
+
+/* The distance from p to the grid's mesh and where, or (when something
+ * is within `enough` of p; never when it is negative) the distance to some
+ * triangle within it. */
+static double nearest_within(const sw_mesh_grid *g, const double p[3], double enough,
+                             sw_mesh_point *at)
+{
+    /* Every triangle within r of p is binned in a cell the box p +- r
+     * covers: widen r until the nearest found is within it, or every cell
+     * has been looked at. */
+    nearest n = { INFINITY, { 0, { 1, 0, 0 } }, enough < 0 ? -1 : enough * enough };
+    for (double r = 0.5 * g->cell;; r *= 2) {
+        int a[3], b[3], whole = 1;
+        for (int k = 0; k < 3; k++) {
+            a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
+            whole &= a[k] == 0 && b[k] == g->dim[k] - 1;
+        }
+        if (cells_visit(g, p, a, b, keep_nearest, &n) || n.d2 <= r * r || whole) {
+            *at = n.at;
+            return sqrt(n.d2);
+        }
+    }
 }
 
 double sw_mesh_grid_distance(const sw_mesh_grid *g, const double p[3])
@@ -210,22 +234,16 @@ double sw_mesh_grid_distance(const sw_mesh_grid *g, const double p[3])
 
 double sw_mesh_grid_nearest(const sw_mesh_grid *g, const double p[3], sw_mesh_point *at)
 {
-    /* Every triangle within r of p is binned in a cell the box p +- r
-     * covers: widen r until the nearest found is within it, or every cell
-     * has been looked at. */
-    nearest n = { INFINITY, { 0, { 1, 0, 0 } } };
-    for (double r = 0.5 * g->cell;; r *= 2) {
-        int a[3], b[3], whole = 1;
-        for (int k = 0; k < 3; k++) {
-            a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
-            whole &= a[k] == 0 && b[k] == g->dim[k] - 1;
-        }
-        cells_visit(g, p, a, b, keep_nearest, &n);
-        if (n.d2 <= r * r || whole) {
-            *at = n.at;
-            return sqrt(n.d2);
-        }
-    }
+    return nearest_within(g, p, -1, at);
+}
+
+/* max(worst, the distance from p to the grid's mesh), searching no further
+ * once a triangle within worst is found: most points of a level lie closer
+ * to its source than the largest distance found so far. */
+static double farther(const sw_mesh_grid *g, const double p[3], double worst)
+{
+    sw_mesh_point at;
+    return fmax(worst, nearest_within(g, p, worst, &at));
 }
 
 typedef struct within {
@@ -252,6 +270,9 @@ int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
 
 double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing)
 {
+    /* A triangle sampled at its corners alone shares them with its
+     * neighbours: those vertices are measured once each, afterwards. */
+    uint8_t *corner = calloc((size_t)a->vertex_count + 1, 1);
     double worst = 0;
     for (uint32_t t = 0; t + 2 < a->index_count; t += 3) {
         double v[3][3], longest = 0;
@@ -264,14 +285,26 @@ double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spa
             longest = fmax(longest, sqrt(dot3(d, d)));
         }
         int n = spacing > 0 ? (int)fmin(8, ceil(longest / spacing)) : 1;
+        if (n <= 1 && corner) {
+            for (int j = 0; j < 3; j++)
+                corner[a->indices[t + j]] = 1;
+            continue;
+        }
         n = n < 1 ? 1 : n;
         for (int i = 0; i <= n; i++)
             for (int j = 0; i + j <= n; j++) {
                 double w0 = (double)i / n, w1 = (double)j / n, w2 = 1 - w0 - w1, p[3];
                 for (int k = 0; k < 3; k++)
                     p[k] = w0 * v[0][k] + w1 * v[1][k] + w2 * v[2][k];
-                worst = fmax(worst, sw_mesh_grid_distance(g, p));
+                worst = farther(g, p, worst);
             }
     }
+    for (uint32_t i = 0; corner && i < a->vertex_count; i++)
+        if (corner[i]) {
+            const double p[3] = { a->positions[3 * (size_t)i], a->positions[3 * (size_t)i + 1],
+                                  a->positions[3 * (size_t)i + 2] };
+            worst = farther(g, p, worst);
+        }
+    free(corner);
     return worst;
 }
