@@ -11,21 +11,21 @@
 
 #include "sw_input_backend.h"
 
-enum { LINES_MAX = SW_CONFIG_GPIO_MAX };
+enum { LINES_MAX = SW_GPIO_LINES_MAX };
 
 static struct { struct gpiod_chip *chip; struct gpiod_line *line; } lines[LINES_MAX];
 
-static int bias_flags(sw_config_bias bias)
+static int bias_flags(sw_gpio_bias bias)
 {
     switch (bias) {
-    case SW_BIAS_DISABLE: return GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE;
-    case SW_BIAS_PULL_UP: return GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
-    case SW_BIAS_PULL_DOWN: return GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
+    case SW_GPIO_BIAS_DISABLE: return GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE;
+    case SW_GPIO_BIAS_PULL_UP: return GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
+    case SW_GPIO_BIAS_PULL_DOWN: return GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
     default: return 0;
     }
 }
 
-static int fail(struct gpiod_chip *chip, sw_error *err, const sw_config_gpio *g, const char *what)
+static int fail(struct gpiod_chip *chip, sw_error *err, const sw_gpio_line *g, const char *what)
 {
     if (chip)
         gpiod_chip_close(chip);
@@ -36,7 +36,7 @@ static int fail(struct gpiod_chip *chip, sw_error *err, const sw_config_gpio *g,
     return -1;
 }
 
-static int gpiod_open(void *ctx, const sw_config_gpio *g, int *high, sw_error *err)
+static int gpiod_open(void *ctx, const sw_gpio_line *g, int *high, sw_error *err)
 {
     (void)ctx;
     int slot = -1;

@@ -12,10 +12,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "sw_config.h"
 #include "sw_error.h"
 
-enum { SW_HID_PATH_MAX = 128, SW_PADS_MAX = 4 };
+enum { SW_HID_PATH_MAX = 128, SW_PADS_MAX = 4, SW_GPIO_NAME_MAX = 32, SW_GPIO_LINES_MAX = 16 };
 
 typedef struct sw_hid_info {
     char path[SW_HID_PATH_MAX];   /* hidapi's path (/dev/hidrawN), the device's identity */
@@ -39,6 +38,22 @@ typedef struct sw_hid_backend {
     void (*close)(void *ctx, int handle);
 } sw_hid_backend;
 
+typedef enum sw_gpio_bias {
+    SW_GPIO_BIAS_AS_IS = 0, SW_GPIO_BIAS_DISABLE, SW_GPIO_BIAS_PULL_UP, SW_GPIO_BIAS_PULL_DOWN
+} sw_gpio_bias;
+
+/* A button's line as a backend requests it, filled by the kiosk from the
+ * button's [gpio NAME] section (sw_kiosk.c). A backend holds at most
+ * SW_GPIO_LINES_MAX lines open at once. */
+typedef struct sw_gpio_line {
+    char name[SW_GPIO_NAME_MAX];       /* the button's (NAME); fake lines go by it */
+    char chip[SW_GPIO_NAME_MAX];       /* gpiochip0, a path, a label or a number */
+    char line_name[SW_GPIO_NAME_MAX];  /* the line by name, or empty and: */
+    int line_offset;                   /* the line by offset */
+    int active_low;                    /* pressed pulls it low (fake lines rest high) */
+    sw_gpio_bias bias;
+} sw_gpio_line;
+
 typedef struct sw_gpio_edge {
     int64_t t_ns;                 /* the kernel's event timestamp */
     int high;                     /* the line's level after the edge */
@@ -49,7 +64,7 @@ typedef struct sw_gpio_backend {
     /* Requests the button's line for both-edge events with its bias and
      * fills its present level (physical, not inverted: the debouncer applies
      * active_low). A handle >= 0, or -1 with err (no chip, no line, busy). */
-    int (*open)(void *ctx, const sw_config_gpio *button, int *high, sw_error *err);
+    int (*open)(void *ctx, const sw_gpio_line *line, int *high, sw_error *err);
     /* One pending edge: 1, or 0 when none is pending. */
     int (*read)(void *ctx, int handle, sw_gpio_edge *edge);
     void (*close)(void *ctx, int handle);

@@ -125,7 +125,7 @@ static sw_fake_line *line_named(sw_fake_devices *f, const char *name, int create
     return l;
 }
 
-static int gpio_open(void *ctx, const sw_config_gpio *g, int *high, sw_error *err)
+static int gpio_open(void *ctx, const sw_gpio_line *g, int *high, sw_error *err)
 {
     sw_fake_devices *f = ctx;
     if (!strcmp(g->chip, "missing")) {

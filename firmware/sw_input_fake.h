@@ -30,7 +30,7 @@ typedef struct sw_fake_pad {
 } sw_fake_pad;
 
 typedef struct sw_fake_line {
-    char name[SW_CONFIG_NAME_MAX];
+    char name[SW_GPIO_NAME_MAX];
     int high;
     sw_gpio_edge edges[SW_FAKE_QUEUE];
     int head, count;

@@ -9,6 +9,8 @@
 
 _Static_assert((int)SW_CONFIG_PAD_BUTTONS == (int)SW_PAD_BUTTON_COUNT,
                "a [gamepad] action key per gamepad button");
+_Static_assert((int)SW_CONFIG_GPIO_MAX <= (int)SW_GPIO_LINES_MAX,
+               "a backend can hold every [gpio] button's line");
 
 /* The keyboard's fixed table: development and service use, not showroom
  * configuration, so it is not in the config. */
@@ -54,6 +56,24 @@ static void fire(sw_nav_input *in, int a)
         in->actions |= 1u << a;
 }
 
+/* The line a [gpio NAME] section asks the backend for. */
+static sw_gpio_line gpio_line(const sw_config_gpio *g)
+{
+    sw_gpio_line l = {.line_offset = g->line_offset, .active_low = g->active_low};
+    _Static_assert(sizeof l.name == sizeof g->name && sizeof l.chip == sizeof g->chip &&
+                   sizeof l.line_name == sizeof g->line_name, "names copied whole");
+    memcpy(l.name, g->name, sizeof l.name);
+    memcpy(l.chip, g->chip, sizeof l.chip);
+    memcpy(l.line_name, g->line_name, sizeof l.line_name);
+    switch (g->bias) {
+    case SW_BIAS_DISABLE: l.bias = SW_GPIO_BIAS_DISABLE; break;
+    case SW_BIAS_PULL_UP: l.bias = SW_GPIO_BIAS_PULL_UP; break;
+    case SW_BIAS_PULL_DOWN: l.bias = SW_GPIO_BIAS_PULL_DOWN; break;
+    default: l.bias = SW_GPIO_BIAS_AS_IS; break;
+    }
+    return l;
+}
+
 static void open_buttons(sw_kiosk *k, int64_t now_ns)
 {
     for (int i = 0; i < k->cfg->gpio_count; i++) {
@@ -62,7 +82,8 @@ static void open_buttons(sw_kiosk *k, int64_t now_ns)
         sw_error err = {0};
         int high = 0;
         *b = (sw_kiosk_button){.cfg = g, .handle = -1};
-        b->handle = k->gpio->open(k->gpio->ctx, g, &high, &err);
+        sw_gpio_line line = gpio_line(g);
+        b->handle = k->gpio->open(k->gpio->ctx, &line, &high, &err);
         if (b->handle < 0) {
             fprintf(stderr, "seamwalk: [gpio %s] not used: %s\n", g->name, err.message);
             continue;
