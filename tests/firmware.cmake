@@ -11,7 +11,7 @@ sw_add_test(test_view SOURCES test_view.c LIBS sw_runtime)
 sw_add_test(test_seam_measure SOURCES test_seam_measure.c LIBS sw_runtime)
 sw_add_test(test_seam_fill SOURCES test_seam_fill.c LIBS sw_runtime)
 sw_add_test(test_seam_drawn SOURCES test_seam_drawn.c LIBS sw_runtime)
-sw_add_test(test_cell_filter SOURCES test_cell_filter.c LIBS sw_runtime)
+sw_add_test(test_cell_filter SOURCES test_cell_filter.c LIBS sw_cell_filter)
 sw_add_test(test_alloc_count SOURCES test_alloc_count.c LIBS sw_alloc_count)
 sw_add_fuzz_target(fuzz_camera_path SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_camera_path.c
   LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/camera_path
