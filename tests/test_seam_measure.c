@@ -9,6 +9,7 @@
 
 #include "sw_seam_measure.h"
 #include "sw_test.h"
+#include "sw_view.h"
 
 static const float plane_ctrl[16] = { -40, -40, 0, 1, 40, -40, 0, 1,
                                       -40, 40, 0, 1, 40, 40, 0, 1 };

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "sw_surface_at.h"
+#include "sw_view.h"
 
 /* The point p on screen, in pixels from the viewport's corner; 0 when it is
  * behind the near plane, beyond the far one or outside the viewport (not

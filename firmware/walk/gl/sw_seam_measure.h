@@ -13,7 +13,11 @@
 #include "sw_stats.h"
 #include "sw_tess.h"
 #include "sw_trim_tess.h"
-#include "sw_view.h"
+
+/* The frame's view (sw_view.h), which belongs to the walk's folder, whose
+ * headers include this one: declared here, not included, so the includes
+ * run one way. */
+struct sw_view;
 
 /* One surface's tessellation as drawn: vertices (positions, normals), their
  * (u, v), triangles of local indices. */
@@ -52,7 +56,7 @@ typedef struct sw_seam_error {
  * stats and the worst figures to acc; a zero-area triangle's go to
  * acc->chord_px only. */
 void sw_seam_measure_mesh(const sw_seam_mesh *mesh, const sw_seam_exact *exact,
-                          const sw_view *view, sw_stats *stats, sw_seam_error *acc);
+                          const struct sw_view *view, sw_stats *stats, sw_seam_error *acc);
 
 
 #endif
