@@ -12,7 +12,7 @@ set(SW_UDEV_RULES_DIR lib/udev/rules.d CACHE STRING "udev rules, under the prefi
 set(SW_SYSUSERS_DIR lib/sysusers.d CACHE STRING "sysusers.d files, under the prefix")
 
 set(sw_man ${PROJECT_SOURCE_DIR}/docs/man)
-set(sw_fw ${PROJECT_SOURCE_DIR}/firmware)
+set(sw_fw ${PROJECT_SOURCE_DIR}/firmware/dist)
 
 install(FILES ${sw_fw}/70-seamwalk.rules DESTINATION ${SW_UDEV_RULES_DIR} COMPONENT runtime)
 install(FILES ${sw_fw}/seamwalk.sysusers DESTINATION ${SW_SYSUSERS_DIR}

@@ -21,10 +21,10 @@ packages=(
   libstb-dev                         # stb_image_write (PNG frames), stb_image (tests)
   libinih-dev                        # showroom scene files and the unit's config (INI)
   libmeshoptimizer-dev               # the part levels' simplifier (assets/super/sw_part_levels_build.c)
-  libhidapi-dev                      # gamepads and joysticks (hidapi-hidraw, firmware/sw_hid_hidapi.c)
-  libgpiod-dev                       # GPIO buttons (libgpiod v1, firmware/sw_gpio_gpiod.c)
-  libsystemd-dev                     # sd_notify for the service: READY, WATCHDOG (firmware/sw_notify.c)
-  libevdev-dev                       # the kiosk keyboard, SYN_DROPPED resync (firmware/sw_evdev_keys.c)
+  libhidapi-dev                      # gamepads and joysticks (hidapi-hidraw, platform/input/sw_hid_hidapi.c)
+  libgpiod-dev                       # GPIO buttons (libgpiod v1, platform/input/sw_gpio_gpiod.c)
+  libsystemd-dev                     # sd_notify for the service: READY, WATCHDOG (firmware/program/sw_notify.c)
+  libevdev-dev                       # the kiosk keyboard, SYN_DROPPED resync (platform/input/sw_evdev_keys.c)
   libsodium-dev                      # ed25519 signatures of packs (seamwalk-pack sign, seamwalk-flash)
   libgl-dev libglu1-mesa-dev         # the benchmark's reference: GLU's NURBS tessellator
   python3                            # tests read the stats JSON

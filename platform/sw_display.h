@@ -113,7 +113,7 @@ sw_status sw_display_read_rgba(sw_display *d, uint8_t *rgba, sw_error *err);
  * many. Events arrive as sw_display_present pumps the window system, so an
  * input step calls this after present. Headless and KMS have no window and
  * return 0 (the kiosk's keyboard is evdev, read by the input layer;
- * firmware/sw_window_keys.h hands a window's keys to the same input step). */
+ * platform/input/sw_window_keys.h hands a window's keys to the same input step). */
 int sw_display_poll_keys(sw_display *d, sw_key_event *out, int capacity);
 
 void sw_display_destroy(sw_display *d);

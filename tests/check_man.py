@@ -8,7 +8,7 @@
       --help must exit 0.
   check_man.py config PAGE CONFIG_SOURCE BINARY
       every [section] key of the config table in CONFIG_SOURCE
-      (firmware/sw_config.c) has an entry under its .SS [section] in PAGE,
+      (firmware/program/sw_config.c) has an entry under its .SS [section] in PAGE,
       and every entry there is in the table; every option PAGE mentions is
       in BINARY --help.
 Both also render PAGE with `man --warnings -l` at 80 columns: any warning,

@@ -12,7 +12,7 @@ rm -rf "$dir" && mkdir -p "$dir"
 "$pack" keygen -o "$dir/owner" >/dev/null
 "$pack" keygen -o "$dir/stranger" >/dev/null
 cp "$dir/owner.pub" "$dir/keys"
-# The unit's trust anchor must be root's alone (firmware/STORE.md, "Trusted keys").
+# The unit's trust anchor must be root's alone (firmware/store/STORE.md, "Trusted keys").
 chmod 644 "$dir/keys" "$dir"/*.pub && chmod go-w "$dir"
 # The unit's config, as the service's names its keys.
 printf '[pack]\nkeys = %s\n' "$(cd "$dir" && pwd)/keys" >"$dir/unit.ini"

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # The man pages against the programs (tests/check_man.py): every option and
 # command --help prints has an entry and every option a page names exists,
-# every config key of firmware/sw_config.c's table has an entry in
+# every config key of firmware/program/sw_config.c's table has an entry in
 # seamwalk.ini(5) and the other way round, and `man --warnings -l` renders
 # each page without a warning.
 set(SW_MAN ${PROJECT_SOURCE_DIR}/docs/man)
@@ -13,7 +13,7 @@ add_test(NAME man_seamwalk_flash COMMAND ${SW_CHECK_MAN} program ${SW_MAN}/seamw
 add_test(NAME man_seamwalk_pack COMMAND ${SW_CHECK_MAN} program ${SW_MAN}/seamwalk-pack.1
   $<TARGET_FILE:seamwalk-pack>)
 add_test(NAME man_seamwalk_ini COMMAND ${SW_CHECK_MAN} config ${SW_MAN}/seamwalk.ini.5
-  ${PROJECT_SOURCE_DIR}/firmware/sw_config.c $<TARGET_FILE:seamwalk>)
+  ${PROJECT_SOURCE_DIR}/firmware/program/sw_config.c $<TARGET_FILE:seamwalk>)
 sw_host_only_test(man_seamwalk_pack PROGRAMS seamwalk-pack)
 sw_host_only_test(man_seamwalk_flash PROGRAMS seamwalk-flash)
 

@@ -2,7 +2,7 @@
 # tests of the kiosk pieces of issue 11: configuration and button debouncing.
 sw_add_test(test_debounce SOURCES test_debounce.c LIBS sw_runtime)
 sw_add_test(test_config SOURCES test_config.c LIBS sw_runtime
-  ARGS ${PROJECT_SOURCE_DIR}/firmware/seamwalk.ini)
+  ARGS ${PROJECT_SOURCE_DIR}/firmware/dist/seamwalk.ini)
 sw_add_fuzz_target(fuzz_config SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_config.c
   LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/config
   DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/config.dict)

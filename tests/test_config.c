@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The configuration file (firmware/sw_config.h) and --config in seamwalk's
- * options (firmware/sw_options.h). argv[1]: the example firmware/seamwalk.ini. */
+/* The configuration file (firmware/program/sw_config.h) and --config in seamwalk's
+ * options (firmware/program/sw_options.h). argv[1]: the example firmware/dist/seamwalk.ini. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -505,7 +505,7 @@ static void kiosk_input_keys_have_file_line_errors(void)
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        fprintf(stderr, "usage: %s firmware/seamwalk.ini\n", argv[0]);
+        fprintf(stderr, "usage: %s firmware/dist/seamwalk.ini\n", argv[0]);
         return 2;
     }
     example_path = argv[1];

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The GPIO button debouncer (firmware/sw_debounce.h): scripted edges with
+/* The GPIO button debouncer (firmware/kiosk/sw_debounce.h): scripted edges with
  * exact timestamps in, the exact events out. Times are in microseconds in
  * the scripts for reading; the machine sees nanoseconds. */
 #include <stdint.h>

@@ -50,7 +50,7 @@ grep -q "^seamwalk: display x11 160x120 (auto: DISPLAY is set and EGL offers X11
   "$work/auto.out" || fail "auto did not choose x11: $(cat "$work/auto.out")"
 # --navigate in the window: another client holds Up for 1.5 s, as a
 # developer at the keyboard would; the window's keys drive the input step
-# (firmware/sw_window_keys.c), so the eye walks forward. SIGTERM ends the
+# (platform/input/sw_window_keys.c), so the eye walks forward. SIGTERM ends the
 # walk after the key, through the normal exit. The key waits for the first
 # frame's pose: the window opens while the pack still loads, and a press
 # and release both queued before the first frame walk nowhere (seen under

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The kiosk keyboard on evdev (firmware/sw_evdev_keys.c) through libevdev,
+/* The kiosk keyboard on evdev (platform/input/sw_evdev_keys.c) through libevdev,
  * without /dev/input: the device is a pipe carrying recorded input_events,
  * and the kernel's answers to libevdev's ioctls (its name, the keys it
  * has, the keys down now for a resync) come from ioctl below, which this

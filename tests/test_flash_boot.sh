@@ -10,7 +10,7 @@
 # walk shows nobody anything, so it never marks a pending slot good.
 #   test_flash_boot.sh SEAMWALK SEAMWALK_FLASH FAULT_SHIM FIXTURE WORK
 set -uo pipefail
-if [ "$(id -u)" != 0 ]; then  # the unit's trusted keys must be root's (firmware/STORE.md)
+if [ "$(id -u)" != 0 ]; then  # the unit's trusted keys must be root's (firmware/store/STORE.md)
   echo "skipped: needs root, for trusted keys owned by root"
   exit 77
 fi

@@ -7,7 +7,7 @@
 # rollback, standard input, the lock.
 #   test_flash_cli.sh SEAMWALK_FLASH FAULT_SHIM FIXTURE WORK
 set -uo pipefail
-if [ "$(id -u)" != 0 ]; then  # the unit's trusted keys must be root's (firmware/STORE.md)
+if [ "$(id -u)" != 0 ]; then  # the unit's trusted keys must be root's (firmware/store/STORE.md)
   echo "skipped: needs root, for trusted keys owned by root"
   exit 77
 fi

@@ -124,7 +124,7 @@ check "boot: not for a checksum" bash -c "! grep -q 'slot B does not start: .*ch
 check "boot: the good slot runs" both 0 "starting slot A \('spoon-1' version 1\), good"
 
 # ---- the shipped config ---------------------------------------------------------------
-ini=$(dirname "$0")/../firmware/seamwalk.ini
+ini=$(dirname "$0")/../firmware/dist/seamwalk.ini
 check "the shipped config names /etc/seamwalk/keys" grep -q "^keys = /etc/seamwalk/keys$" "$ini"
 check "the shipped config says pack = runs unsigned" grep -q "pack = FILE RUNS AN UNSIGNED PACK" "$ini"
 

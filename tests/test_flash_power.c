@@ -195,7 +195,7 @@ int main(int argc, char **argv)
                 argv[0]);
         return 2;
     }
-    if (geteuid() != 0) { /* the unit's trusted keys must be root's (firmware/STORE.md) */
+    if (geteuid() != 0) { /* the unit's trusted keys must be root's (firmware/store/STORE.md) */
         printf("skipped: needs root, for trusted keys owned by root\n");
         return 77;
     }

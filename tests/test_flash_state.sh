@@ -8,7 +8,7 @@
 # seamwalk-flash repair rebuilds the state from the slots.
 #   test_flash_state.sh SEAMWALK SEAMWALK_FLASH FIXTURE WORK
 set -uo pipefail
-if [ "$(id -u)" != 0 ]; then  # the unit's trusted keys must be root's (firmware/STORE.md)
+if [ "$(id -u)" != 0 ]; then  # the unit's trusted keys must be root's (firmware/store/STORE.md)
   echo "skipped: needs root, for trusted keys owned by root"
   exit 77
 fi

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # seamwalk runs itself again once with glibc's heap on huge pages
-# (sw_heap_huge_pages, firmware/sw_heap.h), seen from outside: where the
+# (sw_heap_huge_pages, firmware/program/sw_heap.h), seen from outside: where the
 # kernel's THP mode is "madvise", the running walk's [heap] mapping carries
 # the huge-page advice (VmFlags "hg" in /proc/PID/smaps), also when other
 # tunables are set; where it is not, there is none to give; with

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""seamwalk's notifications to systemd (firmware/sw_notify.h, issue 25), read
+"""seamwalk's notifications to systemd (firmware/program/sw_notify.h, issue 25), read
 from a NOTIFY_SOCKET this test binds itself, as systemd would for a
 Type=notify unit: READY=1 exactly once, and only once the first frame is on
 the display (its PNG, written before the frame is presented, exists when

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The pack store's text files and decisions (firmware/sw_store_text.c,
+/* The pack store's text files and decisions (firmware/store/sw_store_text.c,
  * sw_store_boot.c, sw_pack_store.c): round trips, every parser error naming
  * its line, the boot decision (trial, fallback, good slot never counted),
  * mark-good and rollback on a directory, the state's two copies, and the

@@ -73,10 +73,10 @@ unit=$root/usr/lib/systemd/system/seamwalk.service
 check "the unit runs the installed seamwalk with the installed config" \
   grep -q "^ExecStart=/usr/bin/seamwalk --config /etc/seamwalk/seamwalk.ini " "$unit"
 check "the unit is the source's but for ExecStart" bash -c "diff <(grep -v '^ExecStart=' \
-  '$src/firmware/seamwalk.service') <(grep -v '^ExecStart=' '$unit')"
-check "the config is the shipped example" cmp -s "$src/firmware/seamwalk.ini" \
+  '$src/firmware/dist/seamwalk.service') <(grep -v '^ExecStart=' '$unit')"
+check "the config is the shipped example" cmp -s "$src/firmware/dist/seamwalk.ini" \
   "$root/etc/seamwalk/seamwalk.ini"
-check "the udev rule is the source's" cmp -s "$src/firmware/70-seamwalk.rules" \
+check "the udev rule is the source's" cmp -s "$src/firmware/dist/70-seamwalk.rules" \
   "$root/usr/lib/udev/rules.d/70-seamwalk.rules"
 # verify with --root checks the unit where it is installed, ExecStart's
 # /usr/bin/seamwalk included (it is looked up under the root); the units it

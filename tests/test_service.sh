@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The unit and the udev rule as shipped (firmware/seamwalk.service,
-# firmware/70-seamwalk.rules, issue 25): the unit verifies (systemd-analyze
+# The unit and the udev rule as shipped (firmware/dist/seamwalk.service,
+# firmware/dist/70-seamwalk.rules, issue 25): the unit verifies (systemd-analyze
 # verify, on a copy whose ExecStart is this build's seamwalk), rates at most
 # 3.0 in `systemd-analyze security` (offline: no running systemd needed),
 # is Type=notify with a watchdog, and leaves llvmpipe's JIT its writable
@@ -12,7 +12,7 @@
 #   test_service.sh SEAMWALK SOURCE_DIR WORK
 set -uo pipefail
 walker=$1 src=$2 work=$3
-unit=$src/firmware/seamwalk.service rules=$src/firmware/70-seamwalk.rules
+unit=$src/firmware/dist/seamwalk.service rules=$src/firmware/dist/70-seamwalk.rules
 rm -rf "$work" && mkdir -p "$work"
 failures=0 checks=0
 check() { checks=$((checks + 1)); if ! "${@:2}"; then echo "FAIL: $1"; failures=$((failures + 1)); fi; }

@@ -12,7 +12,7 @@ PACK is walked along PATH (a camera path file, or `orbit` for --orbit: the
 whole model in view, where far parts are drawn from their part levels)
 (FRAMES frames, default 120, headless at SIZE,
 default 640x360) twice, each writing every K-th frame's picture (default 10):
-  test       as the kiosk service runs it (firmware/seamwalk.service): the
+  test       as the kiosk service runs it (firmware/dist/seamwalk.service): the
              default workers (the cores less one; --workers N to choose),
              measuring nothing (--measure-every 0), never waiting for the
              work (--sync-work 0: CTest's SEAMWALK_TEST_SYNC_WORK=1 would

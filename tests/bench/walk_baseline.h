@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* The walkthrough benchmark's baselines (tests/bench/walk_bench.sh): the
  * same pack, camera path, viewport, renderer (platform/sw_renderer.h),
- * stats file (firmware/sw_stats.h) and independent measures as seamwalk
+ * stats file (firmware/measure/sw_stats.h) and independent measures as seamwalk
  * (error: firmware/walk/gl/sw_seam_measure.h, every drawn triangle against the
  * exact surface on screen; cracks: firmware/walk/gl/sw_seam_drawn.h, the drawn
  * borders against each other), drawn by
  *   uniform  every visible patch on one uniform grid of S x S segments, the
- *            cells outside its trim mask left out (firmware/sw_cell_filter.h,
+ *            cells outside its trim mask left out (tests/bench/sw_cell_filter.h,
  *            the first walk's way), re-tessellated every frame;
  *   glu      GLU's NURBS tessellator re-tessellating every visible surface
  *            every frame, trimmed by the Seam Graph's loops at full detail,

@@ -3,7 +3,7 @@
 """walk_path.py OUT.path --box X0 Y0 Z0 X1 Y1 Z1 --up y|z [--rect A0 B0 A1 B1]
                 [--eye-mm H] [--seconds S]
 A closed walk for the walkthrough benchmark (tests/bench/walk_bench.sh) in
-seamwalk's camera path format (firmware/sw_camera_path.h): a person H mm
+seamwalk's camera path format (firmware/kiosk/sw_camera_path.h): a person H mm
 tall (default 1700) walks once round the rectangle A0..A1 x B0..B1 on the
 floor (the two horizontal axes: x and z for y up, x and y for z up; by
 default the middle half of the box's floor), corners rounded by the path's

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Fuzz target: the pack store's state file and install journal parsers
- * (firmware/sw_store_text.c). Whatever parses must format back to text that
+ * (firmware/store/sw_store_text.c). Whatever parses must format back to text that
  * parses to the same values; the boot decision on it must stay in range. */
 #include <stddef.h>
 #include <stdint.h>

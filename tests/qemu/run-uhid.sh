@@ -14,8 +14,8 @@ build=$(cd "$1" && pwd) src=$(cd "$2" && pwd)
 . "$src/tests/qemu/qemu_boot.sh"
 sw_qemu_kernel
 work=$build/tests/qemu && rm -rf "$work" && mkdir -p "$work/out"
-cc -O2 -I"$src/core" -I"$src/firmware" -o "$work/uhid_pad" "$src/tests/qemu/uhid_pad.c" \
-  "$src/firmware/sw_input_timeline.c" "$src/core/sw_error.c" "$src/core/sw_hex.c" -lm
+cc -O2 -I"$src/core" -I"$src/firmware/kiosk" -o "$work/uhid_pad" "$src/tests/qemu/uhid_pad.c" \
+  "$src/firmware/kiosk/sw_input_timeline.c" "$src/core/sw_error.c" "$src/core/sw_hex.c" -lm
 [ -f "$build/tests/input_walk/teaset.swpack" ] || { echo "run tests/test_input_walk.sh first"; exit 1; }
 sw_qemu_initrd "$work"
 echo "exec /bin/sh $src/tests/qemu/uhid_guest.sh $build $src" > "$work/out/guest.sh"

@@ -4,7 +4,7 @@
  * run, and how often the pending one was started, and, during an install,
  * a journal. Used by seamwalk-flash (install, status, rollback, mark-good)
  * and by seamwalk at boot (--store). The layout, the state file and the
- * journal are described in firmware/STORE.md.
+ * journal are described in firmware/store/STORE.md.
  *
  * Every change of the state is one atomic step: the new text goes to
  * state.tmp, is fsynced, renamed over state, and the directory is fsynced,

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* seamwalk under systemd (firmware/seamwalk.service, Type=notify): the
+/* seamwalk under systemd (firmware/dist/seamwalk.service, Type=notify): the
  * service manager's notifications through libsystemd's sd_notify. READY=1
  * once the first frame is on the display (so `systemctl start` returns
  * when there is a picture, and the watchdog starts then); WATCHDOG=1 from

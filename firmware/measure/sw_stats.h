@@ -113,7 +113,7 @@ typedef struct sw_stats {
     uint64_t worker_triangles, worker_steals;
     double worker_busy_ms;
 
-    /* With --store (firmware/sw_boot.h): which slot ran and what the boot did. */
+    /* With --store (firmware/store/sw_boot.h): which slot ran and what the boot did. */
     int store;                   /* the fields below are meaningful */
     char store_slot;             /* 'A', 'B', or '-': no slot started, the message screen ran */
     int store_trial;             /* the slot was the pending one on trial */

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* seamwalk-flash: puts signed packs onto a display unit's pack store
- * (sw_pack_store.h, firmware/STORE.md) and looks after its slots.
+ * (sw_pack_store.h, firmware/store/STORE.md) and looks after its slots.
  * Exit status (also in the usage text and docs/flashing.md):
  *   0 done
  *   1 failed (I/O error, damaged store); what the unit boots is unchanged

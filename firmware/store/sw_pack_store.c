@@ -375,7 +375,7 @@ static sw_status root_only(const char *path, const struct stat *st, const char *
         return SW_OK;
     return sw_error_set(err, SW_ERR_ARG, "%s: %s is owned by uid %u with mode %04o; trusted "
                         "keys must be owned by root and writable by no one else, in "
-                        "directories the same (chown root:root, chmod go-w; firmware/STORE.md "
+                        "directories the same (chown root:root, chmod go-w; firmware/store/STORE.md "
                         "\"Trusted keys\")", path, what, (unsigned)st->st_uid,
                         (unsigned)(st->st_mode & 07777));
 }

@@ -4,7 +4,7 @@
  * build passes no line numbers to the handler), checks each [section] header
  * as it passes, so an empty unknown section is an error too, and stops inih at
  * the first error. Keys are described by tables, one row per key, which the
- * example file firmware/seamwalk.ini mirrors. */
+ * example file firmware/dist/seamwalk.ini mirrors. */
 #include "sw_config.h"
 
 #include "sw_gl_pool.h"

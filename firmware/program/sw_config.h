@@ -8,7 +8,7 @@
  * tests and developers are never surprised by a unit's /etc.
  *
  * Every section and key, with its default, is in the example
- * firmware/seamwalk.ini. An unknown section or key, a key given twice, a bad
+ * firmware/dist/seamwalk.ini. An unknown section or key, a key given twice, a bad
  * value (not a number, out of range, an unknown word) or a line that is not
  * [section] or key = value is SW_ERR_FORMAT with "FILE:LINE: [section] key:
  * what was expected". Budgets are read and checked now but used by later

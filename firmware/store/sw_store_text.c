@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The store's two small text files, the state and the install journal
- * (sw_pack_store.h; layout in firmware/STORE.md). Text, so an engineer can
+ * (sw_pack_store.h; layout in firmware/store/STORE.md). Text, so an engineer can
  * read a unit's state with cat; a trailing XXH3 line, so a damaged file is
  * told apart from an old one. The parsers take untrusted bytes (a unit's
  * disk) and have a fuzz target (tests/fuzz/fuzz_store.c). */

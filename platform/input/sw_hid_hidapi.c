@@ -94,7 +94,7 @@ static int hidapi_open(void *ctx, const sw_hid_info *info, uint8_t *desc, size_t
     hid_device *d = hid_open_path(info->path);
     if (!d) {
         sw_error_set(err, SW_ERR_IO, "%s: cannot open it (is the udev rule "
-                     "firmware/70-seamwalk.rules installed?)", info->path);
+                     "firmware/dist/70-seamwalk.rules installed?)", info->path);
         return -1;
     }
     hid_set_nonblocking(d, 1);
