@@ -84,14 +84,16 @@ enum sw_section_type {
     SW_SECTION_SUPER_SURFACES = 32,     /* sw_super_surface[] */
     SW_SECTION_SUPER_MEMBERS = 33,      /* uint32_t[surface_count]: surface indices */
     SW_SECTION_SUPER_OF = 34,           /* uint32_t[surface_count]: each surface's cluster */
-    /* Part levels (core/sw_part_levels.h); optional, all five or none.
+    /* Part levels (core/sw_part_levels.h); optional, all six or none, and
+     * only beside SURFACES (PART_LEVEL_PIECE_OF indexes it).
      * Older readers skip them; absent, every part is drawn by its
      * surfaces. */
     SW_SECTION_PART_LEVELS = 35,        /* one sw_pack_part_levels */
     SW_SECTION_PART_LEVEL_RECORDS = 36, /* sw_part_level[level_count] */
-    SW_SECTION_PART_LEVEL_PARTS = 37,   /* uint32_t[part_count + 1] */
+    SW_SECTION_PART_LEVEL_RANGES = 37,  /* uint32_t[piece_count + 1] */
     SW_SECTION_PART_LEVEL_VERTICES = 38,/* sw_level_vertex[vertex_count] */
     SW_SECTION_PART_LEVEL_INDICES = 39, /* uint16_t[index_count] */
+    SW_SECTION_PART_LEVEL_PIECE_OF = 40,/* uint32_t[surface_count] */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */

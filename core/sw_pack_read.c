@@ -188,9 +188,10 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_SUPER_OF: return "SUPER_OF";
     case SW_SECTION_PART_LEVELS: return "PART_LEVELS";
     case SW_SECTION_PART_LEVEL_RECORDS: return "PART_LEVEL_RECORDS";
-    case SW_SECTION_PART_LEVEL_PARTS: return "PART_LEVEL_PARTS";
+    case SW_SECTION_PART_LEVEL_RANGES: return "PART_LEVEL_RANGES";
     case SW_SECTION_PART_LEVEL_VERTICES: return "PART_LEVEL_VERTICES";
     case SW_SECTION_PART_LEVEL_INDICES: return "PART_LEVEL_INDICES";
+    case SW_SECTION_PART_LEVEL_PIECE_OF: return "PART_LEVEL_PIECE_OF";
     }
     return "unknown";
 }

@@ -59,7 +59,7 @@ sw_status sw_pack_find_group(const sw_pack *pack, const uint32_t *types,
  * rule of PACK_FORMAT.md, "Super-surfaces", allocating nothing. */
 sw_status sw_pack_map_supers(const uint8_t *data, sw_pack *out, sw_error *err);
 
-/* The part levels' five sections (sw_pack_validate_part_levels.c): all or
+/* The part levels' six sections (sw_pack_validate_part_levels.c): all or
  * none, their counts and every rule of PACK_FORMAT.md's "Part levels". */
 sw_status sw_pack_map_part_levels(const uint8_t *data, sw_pack *out, sw_error *err);
 

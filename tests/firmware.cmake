@@ -102,6 +102,16 @@ if(NOT SW_ASAN AND NOT SW_TSAN)
   set_tests_properties(silhouettes PROPERTIES TIMEOUT 300)
 endif()
 
+# A part cut into pieces (tests/test_pieces.sh): a generated courtyard's
+# levels and borders checked, its orbit drawn from its pieces' levels
+# within the picture targets against the reference walk, and the mutant
+# drawing every piece from its coarsest level fails them. Release only.
+if(NOT SW_ASAN AND NOT SW_TSAN)
+  add_test(NAME pieces
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_pieces.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+  set_tests_properties(pieces PROPERTIES TIMEOUT 300)
+endif()
+
 # The corpus command on the shared models (tests/corpus.sh): every file built,
 # verified and walked close to far with no crack and no refused surface, and
 # (IGES, STEP) its free border at most 1.05 times OpenCASCADE's sewing at the

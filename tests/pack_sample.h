@@ -345,11 +345,13 @@ static inline void make_sample_supers(sample_supers *k)
     view_sample_supers(k, 2);
 }
 
-/* Part levels for the sample's two parts: part 0 two levels (a square of
- * two triangles, then one triangle), part 1 none. */
+/* Part levels for the sample's two parts, one piece each (its surface):
+ * part 0 two levels (a square of two triangles, then one triangle), part 1
+ * none. */
 typedef struct sample_part_levels {
     sw_part_level levels[2];
-    uint32_t part_levels[3];
+    uint32_t part_levels[4];      /* 3 used; room for a test's extra piece */
+    uint32_t piece_of[2];
     sw_level_vertex vertices[7];
     uint16_t indices[9];
     sw_part_levels view;
@@ -357,7 +359,8 @@ typedef struct sample_part_levels {
 
 static inline void view_sample_part_levels(sample_part_levels *k)
 {
-    k->view = (sw_part_levels){ k->levels, k->part_levels, k->vertices, k->indices, 2, 7, 9, 2 };
+    k->view = (sw_part_levels){ k->levels, k->part_levels, k->piece_of, k->vertices, k->indices,
+                                2, 7, 9, 2, 2 };
 }
 
 static inline void make_sample_part_levels(sample_part_levels *k)
@@ -370,11 +373,12 @@ static inline void make_sample_part_levels(sample_part_levels *k)
     }
     const uint16_t idx[9] = { 0, 1, 2, 0, 2, 3, 0, 1, 2 };
     memcpy(k->indices, idx, sizeof idx);
-    k->levels[0] = (sw_part_level){ .part = 0, .error = 0.1f, .first_vertex = 0,
+    k->levels[0] = (sw_part_level){ .piece = 0, .error = 0.1f, .first_vertex = 0,
                                     .vertex_count = 4, .first_index = 0, .index_count = 6 };
-    k->levels[1] = (sw_part_level){ .part = 0, .error = 0.4f, .first_vertex = 4,
+    k->levels[1] = (sw_part_level){ .piece = 0, .error = 0.4f, .first_vertex = 4,
                                     .vertex_count = 3, .first_index = 6, .index_count = 3 };
     k->part_levels[0] = 0, k->part_levels[1] = 2, k->part_levels[2] = 2;
+    k->piece_of[0] = 0, k->piece_of[1] = 1;
     view_sample_part_levels(k);
 }
 

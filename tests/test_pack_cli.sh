@@ -172,10 +172,11 @@ assert [s["name"] for s in j["sections"]][4:] == ["ADJACENCY", "SURFACES", "TRIM
   "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS", "ORIENTATION", "LEVELS", "LEVEL_RECORDS",
   "LEVEL_SURFACES", "LEVEL_VERTICES", "LEVEL_INDICES", "LEVEL_CHAINS", "LEVEL_CHAIN_POINTS",
   "SUPER_SURFACES", "SUPER_MEMBERS", "SUPER_OF", "PART_LEVELS", "PART_LEVEL_RECORDS",
-  "PART_LEVEL_PARTS", "PART_LEVEL_VERTICES", "PART_LEVEL_INDICES"]
+  "PART_LEVEL_RANGES", "PART_LEVEL_VERTICES", "PART_LEVEL_INDICES", "PART_LEVEL_PIECE_OF"]
 assert j["levels"]["levels"] > 0, j["levels"]
 pl = j["part_levels"]
-assert pl["parts"] == 3 and pl["levels"] >= 3 and pl["bytes"] > 0, pl
+assert pl["pieces"] == 3 and pl["pieces_with_levels"] == 3 and pl["cut_parts"] == 0, pl
+assert pl["levels"] >= 3 and pl["bytes"] > 0 and all(r["front"] == 0 for r in pl["ranks"]), pl
 t = [r["triangles"] for r in pl["ranks"]]
 assert all(a > b for a, b in zip(t, t[1:])) and all(r["error_max"] > 0 for r in pl["ranks"]), pl
 k = j["super_surfaces"]

@@ -9,21 +9,28 @@
  *   quarter, for the builder's sampling) of the mesh it was simplified
  *   from (the part's finest static levels joined at one front,
  *   sw_part_source.h) plus that mesh's own error;
- * - over a part's levels the triangles fall and the errors rise, and each
- *   level has far fewer triangles than the part's finest static levels;
+ * - over a piece's levels at one front the triangles fall and the errors
+ *   rise, and each level has fewer triangles than the mesh it was
+ *   simplified from (the first level of a cut part's piece at a front is
+ *   that mesh itself);
  * - the area of each level shaded wrong, its normals more than 40 degrees
  *   from every normal of the finest levels within its error (random points,
  *   where the builder took a grid at 30 degrees on its own welded mesh), is
  *   within its stored shading side.
+ * - the pieces of a cut part meet: at each front, the pieces' levels chosen
+ *   at random leave open exactly the edges the pieces' sources leave open
+ *   together (compared as position pairs, bit for bit), so no border moved.
  * Trimmed surfaces are left out of the first check (a random (u, v) may
  * fall in a hole); the second covers them. Takes pack files (CTest passes
- * the built teaset) and fails on one without part levels. */
+ * the built teaset and a courtyard cut into pieces) and fails on one
+ * without part levels; with --cut, also on one without a cut part. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "sw_mesh_distance.h"
+#include "sw_part_pieces.h"
 #include "sw_part_source.h"
 #include "sw_pack.h"
 #include "sw_surface_at.h"
@@ -47,17 +54,16 @@ static mesh level_mesh(const sw_part_levels *pl, const sw_part_level *l)
     return m;
 }
 
-/* Part p's source (sw_part_source.h: its surfaces' finest static levels
- * joined at one front, the mesh its levels were simplified from) as one
- * mesh; *error the largest of its surfaces' errors; *finest_tris its
- * triangles. */
-static mesh finest_mesh(const sw_part_source *src, const sw_pack *pack, uint32_t p,
+/* Piece g's source (sw_part_source.h: its surfaces' static levels joined
+ * at one front, the mesh its levels were simplified from) as one mesh;
+ * *error the largest of its surfaces' errors; *finest_tris its triangles. */
+static mesh finest_mesh(const sw_part_source *src, const sw_part_levels *pl, uint32_t g,
                         double *error, uint32_t *finest_tris)
 {
     mesh m = { NULL, NULL, 0, 0, NULL };
     *error = 0;
     for (uint32_t s = 0; s < src->surface_count; s++) {
-        if (pack->surfaces[s].part != p || isnan(src->error[s]))
+        if (pl->piece_of[s] != g || isnan(src->error[s]))
             continue;
         *error = fmax(*error, src->error[s]);
         uint32_t v0 = src->surface_vertices[s], nv = src->surface_vertices[s + 1] - v0;
@@ -75,16 +81,16 @@ static mesh finest_mesh(const sw_part_source *src, const sw_pack *pack, uint32_t
     return m;
 }
 
-/* The largest distance from random points on part p's untrimmed surfaces
+/* The largest distance from random points on piece g's untrimmed surfaces
  * to grid's mesh. */
-static double surface_to_level(const sw_pack *pack, uint32_t p, const sw_mesh_grid *grid)
+static double surface_to_level(const sw_pack *pack, uint32_t g, const sw_mesh_grid *grid)
 {
     double worst = 0;
     sw_trim_patch patches[4096];
     for (uint32_t s = 0; s < pack->surface_count; s++) {
         const sw_pack_surface *sf = &pack->surfaces[s];
         uint32_t count = 0;
-        if (sf->part != p || sf->loop_count > 0 ||
+        if (pack->part_levels.piece_of[s] != g || sf->loop_count > 0 ||
             sw_trim_patches_from_pack(pack, s, patches, 4096, &count, NULL) != SW_OK)
             continue;
         for (int k = 0; k < 200; k++) {
@@ -185,18 +191,22 @@ static double shaded_wrong_side(const sw_part_levels *pl, const sw_part_level *l
     return sqrt(area);
 }
 
-static void check_part(const sw_pack *pack, const sw_part_source *src, uint32_t p)
+/* Piece g's levels at front f, against src (the source at that front). */
+static void check_piece(const sw_pack *pack, const sw_part_source *src, uint32_t g, uint32_t f,
+                        int cut)
 {
     const sw_part_levels *pl = &pack->part_levels;
     double finest_error = 0;
     uint32_t finest_tris = 0;
-    mesh finest = finest_mesh(src, pack, p, &finest_error, &finest_tris);
+    mesh finest = finest_mesh(src, pl, g, &finest_error, &finest_tris);
     sw_mesh_view fv = { finest.pos, finest.idx, finest.nv, finest.ni };
     sw_mesh_grid *fgrid = sw_mesh_grid_make(&fv);
     SW_CHECK(fgrid != NULL);
-    uint32_t last_tris = finest_tris;
-    for (uint32_t i = pl->part_levels[p]; fgrid && i < pl->part_levels[p + 1]; i++) {
+    uint32_t last_tris = finest_tris + (cut ? 1 : 0);   /* a cut piece's first is its source */
+    for (uint32_t i = pl->piece_levels[g]; fgrid && i < pl->piece_levels[g + 1]; i++) {
         const sw_part_level *l = &pl->levels[i];
+        if (l->front != f)
+            continue;
         mesh m = level_mesh(pl, l);
         sw_mesh_view lv = { m.pos, m.idx, m.nv, m.ni };
         sw_mesh_grid *grid = sw_mesh_grid_make(&lv);
@@ -204,19 +214,19 @@ static void check_part(const sw_pack *pack, const sw_part_source *src, uint32_t 
          * target apart; a peak between its points (the middle of a hole a
          * coarse level covers over) can be missed by up to a quarter. */
         double slack = 1.25 * l->error + 1e-6;
-        double from_surface = surface_to_level(pack, p, grid);
+        double from_surface = surface_to_level(pack, g, grid);
         double from_level = level_to_mesh(&m, fgrid);
-        SW_CHECK_MSG(from_surface <= slack, "part %u level %u: a surface point %g from it, "
-                     "error %g", p, i, from_surface, (double)l->error);
-        SW_CHECK_MSG(from_level <= slack + finest_error, "part %u level %u: a point of it %g "
-                     "from the finest levels (error %g), its error %g", p, i, from_level,
+        SW_CHECK_MSG(from_surface <= slack, "piece %u front %u level %u: a surface point %g from "
+                     "it, error %g", g, f, i, from_surface, (double)l->error);
+        SW_CHECK_MSG(from_level <= slack + finest_error, "piece %u front %u level %u: a point of "
+                     "it %g from its source (error %g), its error %g", g, f, i, from_level,
                      finest_error, (double)l->error);
-        SW_CHECK_MSG(l->index_count / 3 < last_tris, "part %u level %u: %u triangles, not "
-                     "fewer than %u", p, i, l->index_count / 3, last_tris);
+        SW_CHECK_MSG(l->index_count / 3 < last_tris, "piece %u front %u level %u: %u triangles, "
+                     "not fewer than %u", g, f, i, l->index_count / 3, last_tris);
         last_tris = l->index_count / 3;
         double side = shaded_wrong_side(pl, l, &finest, fgrid);
-        SW_CHECK_MSG(side <= 2 * l->shading_side + 0.25 * l->error, "part %u level %u: %g "
-                     "a side shaded wrong, %g stored (error %g)", p, i, side,
+        SW_CHECK_MSG(side <= 2 * l->shading_side + 0.25 * l->error, "piece %u front %u level %u: "
+                     "%g a side shaded wrong, %g stored (error %g)", g, f, i, side,
                      (double)l->shading_side, (double)l->error);
         sw_mesh_grid_free(grid);
         free(m.pos), free(m.idx);
@@ -225,7 +235,131 @@ static void check_part(const sw_pack *pack, const sw_part_source *src, uint32_t 
     free(finest.pos), free(finest.idx), free(finest.nrm);
 }
 
-static void check_pack_file(const char *path)
+/* An edge by its ends' positions, bit for bit, the smaller end first. */
+typedef struct edge_key {
+    float a[3], b[3];
+} edge_key;
+
+static int edge_cmp(const void *x, const void *y)
+{
+    return memcmp(x, y, sizeof(edge_key));
+}
+
+static void add_edges(edge_key **e, size_t *n, const sw_part_levels *pl, const sw_part_level *l)
+{
+    *e = realloc(*e, (*n + l->index_count) * sizeof **e);
+    for (uint32_t t = 0; t < l->index_count; t += 3)
+        for (int k = 0; k < 3; k++) {
+            const float *p = pl->vertices[l->first_vertex +
+                                          pl->indices[l->first_index + t + k]].p;
+            const float *q = pl->vertices[l->first_vertex +
+                                          pl->indices[l->first_index + t + (k + 1) % 3]].p;
+            edge_key k2;
+            int swap = memcmp(p, q, 3 * sizeof(float)) > 0;
+            memcpy(k2.a, swap ? q : p, sizeof k2.a), memcpy(k2.b, swap ? p : q, sizeof k2.b);
+            (*e)[(*n)++] = k2;
+        }
+}
+
+/* The edges used once in e[0 .. n), sorted, moved to its front; their count. */
+static size_t open_edges(edge_key *e, size_t n)
+{
+    qsort(e, n, sizeof *e, edge_cmp);
+    size_t out = 0;
+    for (size_t i = 0, j; i < n; i = j) {
+        for (j = i; j < n && edge_cmp(&e[i], &e[j]) == 0; j++)
+            ;
+        if (j - i == 1)
+            e[out++] = e[i];
+    }
+    return out;
+}
+
+/* Cut part p's pieces [a, b) at front f: their first levels (the sources)
+ * and, five times, a level of each at random leave the same edges open. */
+static void check_borders(const sw_pack *pack, uint32_t a, uint32_t b, uint32_t f)
+{
+    const sw_part_levels *pl = &pack->part_levels;
+    edge_key *ref = NULL;
+    size_t nref = 0;
+    for (uint32_t g = a; g < b; g++)
+        for (uint32_t i = pl->piece_levels[g]; i < pl->piece_levels[g + 1]; i++)
+            if (pl->levels[i].front == f) {
+                add_edges(&ref, &nref, pl, &pl->levels[i]);
+                break;
+            }
+    nref = open_edges(ref, nref);
+    for (int round = 0; round < 5; round++) {
+        edge_key *e = NULL;
+        size_t n = 0;
+        for (uint32_t g = a; g < b; g++) {
+            uint32_t at[SW_PART_LEVELS_MAX], count = 0;
+            for (uint32_t i = pl->piece_levels[g]; i < pl->piece_levels[g + 1]; i++)
+                if (pl->levels[i].front == f && count < SW_PART_LEVELS_MAX)
+                    at[count++] = i;
+            if (count)
+                add_edges(&e, &n, pl, &pl->levels[at[(uint32_t)(sw_test_random() * count) % count]]);
+        }
+        n = open_edges(e, n);
+        SW_CHECK_MSG(n == nref && memcmp(e, ref, n * sizeof *e) == 0, "front %u round %d: %zu "
+                     "open edges with levels at random, %zu with the sources", f, round, n, nref);
+        free(e);
+    }
+    free(ref);
+}
+
+/* Part by part (a run of surfaces [s, *e)): its pieces [*first, *end). */
+static void next_part(const sw_pack *pack, uint32_t s, uint32_t *e, uint32_t *first,
+                      uint32_t *end)
+{
+    const sw_part_levels *pl = &pack->part_levels;
+    *first = pl->piece_of[s], *end = *first + 1;
+    for (*e = s; *e < pack->surface_count && pack->surfaces[*e].part == pack->surfaces[s].part;
+         (*e)++)
+        *end = pl->piece_of[*e] + 1 > *end ? pl->piece_of[*e] + 1 : *end;
+}
+
+/* Every piece's levels at every front, against its source made again
+ * here, and each cut part's borders; the number of cut parts. */
+static int check_pieces(const sw_pack *pack)
+{
+    sw_error err = { 0 };
+    sw_part_source src;
+    SW_CHECK_MSG(sw_part_source_build(pack, &pack->levels, NULL, &src, &err) == SW_OK, "%s",
+                 err.message);
+    int cut_parts = 0;
+    float *diagonal = calloc(pack->surface_count + 1, sizeof *diagonal);
+    for (uint32_t s = 0, e, first, end; s < pack->surface_count; s = e) {
+        next_part(pack, s, &e, &first, &end);
+        double d = sw_part_diagonal(pack, pack->surfaces[s].part);
+        for (uint32_t k = s; end - first > 1 && k < e; k++)
+            diagonal[k] = (float)d;
+        cut_parts += end - first > 1;
+        for (uint32_t g = first; end - first == 1 && g < end; g++)
+            check_piece(pack, &src, g, 0, 0);
+    }
+    sw_part_source_free(&src);
+    float *at = calloc(pack->surface_count + 1, sizeof *at);
+    for (uint32_t f = 0; cut_parts && f < SW_PART_LEVEL_FRONTS; f++) {
+        for (uint32_t s = 0; s < pack->surface_count; s++)
+            at[s] = diagonal[s] > 0 ? (float)sw_part_level_front_bound(diagonal[s], f) : 0.0f;
+        SW_CHECK_MSG(sw_part_source_build(pack, &pack->levels, at, &src, &err) == SW_OK, "%s",
+                     err.message);
+        for (uint32_t s = 0, e, first, end; s < pack->surface_count; s = e) {
+            next_part(pack, s, &e, &first, &end);
+            for (uint32_t g = first; end - first > 1 && g < end; g++)
+                check_piece(pack, &src, g, f, 1);
+            if (end - first > 1)
+                check_borders(pack, first, end, f);
+        }
+        sw_part_source_free(&src);
+    }
+    free(at);
+    free(diagonal);
+    return cut_parts;
+}
+
+static void check_pack_file(const char *path, int want_cut)
 {
     size_t size = 0;
     uint8_t *bytes = sw_test_read_file(path, &size);
@@ -236,19 +370,16 @@ static void check_pack_file(const char *path)
     SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s",
                  err.message);
     SW_CHECK_MSG(pack.part_levels.level_count > 0, "%s: no part levels", path);
-    sw_part_source src;
-    SW_CHECK_MSG(sw_part_source_build(&pack, &pack.levels, &src, &err) == SW_OK, "%s",
-                 err.message);
-    for (uint32_t p = 0; p < pack.part_levels.part_count; p++)
-        check_part(&pack, &src, p);
-    sw_part_source_free(&src);
+    int cut = pack.part_levels.level_count > 0 ? check_pieces(&pack) : 0;
+    SW_CHECK_MSG(!want_cut || cut > 0, "%s: no part cut into pieces", path);
     free(bytes);
 }
 
 int main(int argc, char **argv)
 {
-    SW_CHECK_MSG(argc > 1, "usage: test_part_levels_build PACK...");
-    for (int i = 1; i < argc; i++)
-        check_pack_file(argv[i]);
+    int want_cut = argc > 1 && strcmp(argv[1], "--cut") == 0;
+    SW_CHECK_MSG(argc > 1 + want_cut, "usage: test_part_levels_build [--cut] PACK...");
+    for (int i = 1 + want_cut; i < argc; i++)
+        check_pack_file(argv[i], want_cut);
     return sw_test_finish();
 }

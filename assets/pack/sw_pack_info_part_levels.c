@@ -1,19 +1,44 @@
 /* SPDX-License-Identifier: MIT */
 /* The part levels' part of `seamwalk-pack info` (sw_pack_info.h): how many
- * parts have them, and per rank (finest first) the levels, their
- * triangles, their largest measured error and their largest side shaded
- * wrong. */
+ * pieces have them (and how many parts are cut into pieces), and per front
+ * and rank (finest first) the levels, their triangles, their largest
+ * measured error and their largest side shaded wrong. */
 #include <inttypes.h>
 #include <string.h>
 
 #include "sw_pack_info.h"
 
+enum { ROWS = SW_PART_LEVELS_MAX * SW_PART_LEVEL_FRONTS };
+
 typedef struct part_level_figures {
-    uint32_t parts, levels[SW_PART_LEVELS_MAX];
-    uint64_t triangles[SW_PART_LEVELS_MAX], bytes;
-    double error_max[SW_PART_LEVELS_MAX], shading_side_max[SW_PART_LEVELS_MAX];
-    uint32_t ranks;
+    uint32_t pieces, cut_parts, cut_pieces, levels[ROWS];
+    uint64_t triangles[ROWS], bytes;
+    double error_max[ROWS], shading_side_max[ROWS];
 } part_level_figures;
+
+/* The row of level i of a piece whose levels start at `first`: its
+ * front's block, its rank within the front. */
+static uint32_t row_of(const sw_part_levels *pl, uint32_t first, uint32_t i)
+{
+    uint32_t rank = 0;
+    for (uint32_t k = i; k > first && pl->levels[k - 1].front == pl->levels[i].front; k--)
+        rank++;
+    return pl->levels[i].front * SW_PART_LEVELS_MAX + rank;
+}
+
+/* Parts cut into pieces: part by part (a run of surfaces, as the reader
+ * checked), its pieces first .. end. */
+static void count_cut(const sw_pack *pack, part_level_figures *f)
+{
+    const sw_part_levels *pl = &pack->part_levels;
+    for (uint32_t s = 0, e; s < pl->surface_count; s = e) {
+        uint32_t first = pl->piece_of[s], end = first + 1;
+        for (e = s; e < pl->surface_count && pack->surfaces[e].part == pack->surfaces[s].part; e++)
+            end = pl->piece_of[e] + 1 > end ? pl->piece_of[e] + 1 : end;
+        f->cut_parts += end - first > 1;
+        f->cut_pieces += end - first > 1 ? end - first : 0;
+    }
+}
 
 static part_level_figures gather(const sw_pack *pack)
 {
@@ -22,21 +47,21 @@ static part_level_figures gather(const sw_pack *pack)
     const sw_part_levels *pl = &pack->part_levels;
     for (uint32_t i = 0; i < pack->header->section_count; i++) {
         uint32_t t = pack->sections[i].type;
-        if (t >= SW_SECTION_PART_LEVELS && t <= SW_SECTION_PART_LEVEL_INDICES)
+        if (t >= SW_SECTION_PART_LEVELS && t <= SW_SECTION_PART_LEVEL_PIECE_OF)
             f.bytes += pack->sections[i].size;
     }
-    for (uint32_t p = 0; p < pl->part_count; p++) {
-        uint32_t a = pl->part_levels[p], b = pl->part_levels[p + 1];
-        f.parts += b > a;
+    count_cut(pack, &f);
+    for (uint32_t g = 0; g < pl->piece_count; g++) {
+        uint32_t a = pl->piece_levels[g], b = pl->piece_levels[g + 1];
+        f.pieces += b > a;
         for (uint32_t i = a; i < b; i++) {
-            uint32_t r = i - a;
+            uint32_t r = row_of(pl, a, i);
             f.levels[r]++;
             f.triangles[r] += pl->levels[i].index_count / 3;
             if (pl->levels[i].shading_side > f.shading_side_max[r])
                 f.shading_side_max[r] = pl->levels[i].shading_side;
             f.error_max[r] = pl->levels[i].error > f.error_max[r] ? pl->levels[i].error
                                                                    : f.error_max[r];
-            f.ranks = r + 1 > f.ranks ? r + 1 : f.ranks;
         }
     }
     return f;
@@ -47,13 +72,16 @@ void sw_pack_print_part_levels_text(FILE *out, const sw_pack *pack)
     if (!pack->part_levels.levels)
         return;
     part_level_figures f = gather(pack);
-    fprintf(out, "  %-16s %" PRIu32 " of %" PRIu32 " parts, %" PRIu32 " levels, %" PRIu64
-            " bytes\n", "part levels", f.parts, pack->part_levels.part_count,
+    fprintf(out, "  %-16s %" PRIu32 " of %" PRIu32 " pieces (%" PRIu32 " parts cut into %" PRIu32
+            "), %" PRIu32 " levels, %" PRIu64 " bytes\n", "part levels", f.pieces,
+            pack->part_levels.piece_count, f.cut_parts, f.cut_pieces,
             pack->part_levels.level_count, f.bytes);
-    for (uint32_t r = 0; r < f.ranks; r++)
-        fprintf(out, "    rank %-9" PRIu32 " %" PRIu32 " levels, %" PRIu64 " triangles, error "
-                "max %.6g, shading side max %.6g\n", r, f.levels[r], f.triangles[r],
-                f.error_max[r], f.shading_side_max[r]);
+    for (uint32_t r = 0; r < ROWS; r++)
+        if (f.levels[r])
+            fprintf(out, "    front %" PRIu32 " rank %-2" PRIu32 " %" PRIu32 " levels, %" PRIu64
+                    " triangles, error max %.6g, shading side max %.6g\n",
+                    r / SW_PART_LEVELS_MAX, r % SW_PART_LEVELS_MAX, f.levels[r], f.triangles[r],
+                    f.error_max[r], f.shading_side_max[r]);
 }
 
 void sw_pack_print_part_levels_json(FILE *out, const sw_pack *pack)
@@ -63,12 +91,19 @@ void sw_pack_print_part_levels_json(FILE *out, const sw_pack *pack)
         return;
     }
     part_level_figures f = gather(pack);
-    fprintf(out, "  \"part_levels\": {\"parts\": %" PRIu32 ", \"levels\": %" PRIu32
-            ", \"bytes\": %" PRIu64 ", \"ranks\": [", f.parts, pack->part_levels.level_count,
-            f.bytes);
-    for (uint32_t r = 0; r < f.ranks; r++)
-        fprintf(out, "%s{\"levels\": %" PRIu32 ", \"triangles\": %" PRIu64
-                ", \"error_max\": %.9g, \"shading_side_max\": %.9g}", r ? ", " : "",
-                f.levels[r], f.triangles[r], f.error_max[r], f.shading_side_max[r]);
+    fprintf(out, "  \"part_levels\": {\"pieces\": %" PRIu32 ", \"pieces_with_levels\": %" PRIu32
+            ", \"cut_parts\": %" PRIu32 ", \"cut_pieces\": %" PRIu32 ", \"levels\": %" PRIu32
+            ", \"bytes\": %" PRIu64 ", \"ranks\": [", pack->part_levels.piece_count, f.pieces,
+            f.cut_parts, f.cut_pieces, pack->part_levels.level_count, f.bytes);
+    const char *sep = "";
+    for (uint32_t r = 0; r < ROWS; r++) {
+        if (!f.levels[r])
+            continue;
+        fprintf(out, "%s{\"front\": %" PRIu32 ", \"rank\": %" PRIu32 ", \"levels\": %" PRIu32
+                ", \"triangles\": %" PRIu64 ", \"error_max\": %.9g, \"shading_side_max\": %.9g}",
+                sep, r / SW_PART_LEVELS_MAX, r % SW_PART_LEVELS_MAX, f.levels[r],
+                f.triangles[r], f.error_max[r], f.shading_side_max[r]);
+        sep = ", ";
+    }
     fprintf(out, "]},\n");
 }

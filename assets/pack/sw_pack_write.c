@@ -23,9 +23,9 @@
 
 /* Types 1..13 (the first five always written), then the seam group's eight,
  * then ORIENTATION and IMPORT_NOTES, then the levels' seven, then the
- * super-surfaces' three, then the part levels' five. */
+ * super-surfaces' three, then the part levels' six. */
 enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8, LEVEL_SECTIONS = 7,
-       SUPER_SECTIONS = 3, PART_LEVEL_SECTIONS = 5,
+       SUPER_SECTIONS = 3, PART_LEVEL_SECTIONS = 6,
        MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2 + LEVEL_SECTIONS + SUPER_SECTIONS +
                       PART_LEVEL_SECTIONS,
        HEADER_BYTES = 64, SECTION_BYTES = 32 };
@@ -161,16 +161,18 @@ static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
     if (c->part_levels) {
         const sw_part_levels *pl = c->part_levels;
         *parts_rec = (sw_pack_part_levels){ pl->level_count, pl->vertex_count, pl->index_count,
-                                            pl->part_count };
+                                            pl->piece_count };
         src[n++] = (section_source){ SW_SECTION_PART_LEVELS, parts_rec, sizeof *parts_rec };
         src[n++] = (section_source){ SW_SECTION_PART_LEVEL_RECORDS, pl->levels,
                                      (uint64_t)pl->level_count * sizeof(sw_part_level) };
-        src[n++] = (section_source){ SW_SECTION_PART_LEVEL_PARTS, pl->part_levels,
-                                     ((uint64_t)pl->part_count + 1) * sizeof(uint32_t) };
+        src[n++] = (section_source){ SW_SECTION_PART_LEVEL_RANGES, pl->piece_levels,
+                                     ((uint64_t)pl->piece_count + 1) * sizeof(uint32_t) };
         src[n++] = (section_source){ SW_SECTION_PART_LEVEL_VERTICES, pl->vertices,
                                      (uint64_t)pl->vertex_count * sizeof(sw_level_vertex) };
         src[n++] = (section_source){ SW_SECTION_PART_LEVEL_INDICES, pl->indices,
                                      (uint64_t)pl->index_count * sizeof(uint16_t) };
+        src[n++] = (section_source){ SW_SECTION_PART_LEVEL_PIECE_OF, pl->piece_of,
+                                     (uint64_t)pl->surface_count * sizeof(uint32_t) };
     }
     return n;
 }

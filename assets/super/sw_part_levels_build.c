@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* Part levels: each part's source welded, simplified toward rising
+/* Part levels: each piece's source welded, simplified toward rising
  * bounds, measured both ways, its normals chosen per corner from the
  * source's, its area shaded wrong measured (sw_part_levels_build.h). */
 #include "sw_part_levels_build.h"
 
+#include <float.h>
 #include <math.h>
 #include <meshoptimizer.h>
 #include <stdlib.h>
@@ -12,6 +13,7 @@
 
 #include "sw_grow.h"
 #include "sw_mesh_distance.h"
+#include "sw_part_pieces.h"
 #include "sw_part_source.h"
 #include "sw_pow2.h"
 
@@ -48,14 +50,15 @@ static uint64_t hash64(uint64_t x)
     return x ^ (x >> 33);
 }
 
-/* The part's source vertices and triangles gathered; 0 when out of memory,
- * -1 when a surface of it has no mesh in the source. */
-static int gather_part(part_mesh *m, const sw_pack *pack, const sw_levels *levels,
-                       const sw_part_source *src, uint32_t part)
+/* Piece g's source vertices and triangles gathered from its part's
+ * surfaces [first, end); 0 when out of memory, -1 when a surface of it has
+ * no level. */
+static int gather_piece(part_mesh *m, const sw_levels *levels, const uint32_t *piece_of,
+                        const sw_part_source *src, uint32_t g, uint32_t first, uint32_t end)
 {
     m->count = 0, m->icount = 0, m->error = 0;
-    for (uint32_t s = 0; s < src->surface_count; s++) {
-        if (pack->surfaces[s].part != part)
+    for (uint32_t s = first; s < end; s++) {
+        if (piece_of[s] != g)
             continue;
         if (levels->surface_levels[s] == levels->surface_levels[s + 1])
             return -1;
@@ -491,78 +494,147 @@ static double miss_shaded_side(const part_mesh *m, const sw_mesh_grid *source_gr
     return sqrt(area);
 }
 
-/* Part `part`'s levels toward rising bounds, kept as the header says. */
-static sw_status build_part(part_mesh *m, out_arrays *o, uint32_t part,
-                            const sw_part_levels_options *opt, sw_part_levels_report *r,
-                            sw_error *err)
+/* 1 when a triangle of m->dest[0 .. n) faces against the source around
+ * all three of its corners (each corner's source triangles' summed
+ * normal more than 60 degrees off): a fold. meshoptimizer rejects a
+ * collapse that turns a triangle over, but on flat ground of many pieces
+ * it still folded a triangle over its neighbour (a quarter of a paving
+ * stone, 125 mm, under its measured error). Sliver triangles across a
+ * thin curved part face every way at their corners and are not folds. */
+static int folds(const part_mesh *m, size_t n)
+{
+    double *vn = calloc(3 * (size_t)m->wcount + 3, sizeof *vn);
+    if (!vn)
+        return 1;
+    for (uint32_t t = 0; t < m->icount; t += 3) {
+        double f[3];
+        face_normal(m->wpos + 3 * (size_t)m->idx[t], m->wpos + 3 * (size_t)m->idx[t + 1],
+                    m->wpos + 3 * (size_t)m->idx[t + 2], f);
+        for (int c = 0; c < 3; c++)
+            for (int k = 0; k < 3; k++)
+                vn[3 * (size_t)m->idx[t + c] + k] += f[k];
+    }
+    int fold = 0;
+    for (size_t t = 0; t < n && !fold; t += 3) {
+        double nt[3];
+        face_normal(m->wpos + 3 * (size_t)m->dest[t], m->wpos + 3 * (size_t)m->dest[t + 1],
+                    m->wpos + 3 * (size_t)m->dest[t + 2], nt);
+        double lt = sqrt(nt[0] * nt[0] + nt[1] * nt[1] + nt[2] * nt[2]);
+        int against = 0;
+        for (int c = 0; c < 3 && lt > 0; c++) {
+            const double *v = vn + 3 * (size_t)m->dest[t + c];
+            double lv = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            against += lv > 0 && nt[0] * v[0] + nt[1] * v[1] + nt[2] * v[2] < -0.5 * lt * lv;
+        }
+        fold = against == 3;
+    }
+    free(vn);
+    return fold;
+}
+
+/* One piece's levels at one front, being made. */
+typedef struct piece_job {
+    uint32_t piece, front;
+    int cut;                      /* its part is cut: border locked, source kept first */
+    const sw_part_levels_options *opt;
+    sw_part_levels_report *r;
+    sw_mesh_view source;
+    sw_mesh_grid *source_grid;
+    float last_error;
+    uint32_t last_indices, kept;
+} piece_job;
+
+/* The level in m->dest[0 .. n) with its measured error appended to o as
+ * the job's next level: 1 kept, 0 left out (too large), -1 out of memory. */
+static int keep_level(part_mesh *m, out_arrays *o, piece_job *j, size_t n, float error)
+{
+    uint32_t first_vertex = 0, first_index = o->index_count;
+    int made = emit(m, j->source_grid, o, (uint32_t)n, &first_vertex);
+    sw_part_level *l = sw_grow(o->levels, &o->cap_l, (size_t)o->level_count + 1, sizeof *l);
+    if (made == 0 || !l)
+        return -1;
+    o->levels = l;
+    if (made < 0) {
+        o->vertex_count = first_vertex;
+        j->r->too_large++;
+        return 0;
+    }
+    o->index_count += (uint32_t)n;
+    sw_part_level *kept = &o->levels[o->level_count++];
+    *kept = (sw_part_level){ j->piece, error, first_vertex, o->vertex_count - first_vertex,
+                             first_index, (uint32_t)n, 0, j->front };
+    kept->shading_side = (float)miss_shaded_side(m, j->source_grid, o, kept);
+    j->r->triangles[j->kept++] += n / 3;
+    j->last_error = error, j->last_indices = (uint32_t)n;
+    return 1;
+}
+
+/* The simplification toward bound into m->dest: its index count, 0 when
+ * it is not kept (not a fifth smaller, or folded: counted). */
+static size_t simplify_toward(part_mesh *m, piece_job *j, double bound, double scale)
+{
+    size_t n = meshopt_simplify(m->dest, m->idx, m->icount, m->wpos, m->wcount,
+                                3 * sizeof(float), 0, (float)((bound - m->error) / scale),
+                                j->cut ? meshopt_SimplifyLockBorder : 0, NULL);
+    if (n == 0 || n > 0.8 * j->last_indices) {
+        j->r->not_smaller++;
+        return 0;
+    }
+    if (j->cut && folds(m, n)) {
+        j->r->folded++;
+        return 0;
+    }
+    return n;
+}
+
+/* The job's levels toward rising bounds, kept as the header says. */
+static sw_status build_piece(part_mesh *m, out_arrays *o, piece_job *j, sw_error *err)
 {
     uint32_t *dest = sw_grow(m->dest, &m->cap_d, m->icount + 1, sizeof *m->dest);
     if (!dest)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
     m->dest = dest;
     double size = part_size(m), scale = meshopt_simplifyScale(m->wpos, m->wcount, 12);
-    sw_mesh_view source = { m->wpos, m->idx, m->wcount, m->icount };
-    sw_mesh_grid *source_grid = sw_mesh_grid_make(&source);
-    if (!source_grid)
+    j->source = (sw_mesh_view){ m->wpos, m->idx, m->wcount, m->icount };
+    j->source_grid = sw_mesh_grid_make(&j->source);
+    if (!j->source_grid)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: grid");
-    if (!(scale > 0)) {   /* every vertex at one point: nothing to draw far away */
-        sw_mesh_grid_free(source_grid);
-        return SW_OK;
+    j->last_error = 0, j->last_indices = m->icount, j->kept = 0;
+    int room = 1;
+    if (scale > 0 && j->cut) {   /* the source itself: a level at this front */
+        memcpy(m->dest, m->idx, m->icount * sizeof *m->idx);
+        room = keep_level(m, o, j, m->icount, (float)fmax(m->error, FLT_MIN)) >= 0;
     }
-    float last_error = 0;
-    uint32_t last_indices = m->icount, kept = 0;
-    for (uint32_t k = 0; k < opt->count; k++) {
-        double bound = size * opt->finest * pow(opt->step, k);
+    for (uint32_t k = 0; room && scale > 0 && k < j->opt->count; k++) {
+        double bound = size * j->opt->finest * pow(j->opt->step, k);
         if (bound <= 2 * m->error)
             continue;   /* the source is not that much closer to the surfaces */
-        size_t n = meshopt_simplify(m->dest, m->idx, m->icount, m->wpos, m->wcount,
-                                    3 * sizeof(float), 0, (float)((bound - m->error) / scale),
-                                    0, NULL);
-        if (n == 0 || n > 0.8 * last_indices) {
-            r->not_smaller++;
+        size_t n = simplify_toward(m, j, bound, scale);
+        if (n == 0)
             continue;
-        }
         sw_mesh_view lod = { m->wpos, m->dest, m->wcount, (uint32_t)n };
         sw_mesh_grid *lod_grid = sw_mesh_grid_make(&lod);
         if (!lod_grid) {
-            sw_mesh_grid_free(source_grid);
-            return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: grid");
+            room = 0;
+            break;
         }
         double spacing = 2 * bound;
-        double d = fmax(sw_mesh_distance(&lod, source_grid, spacing),
-                        sw_mesh_distance(&source, lod_grid, spacing));
+        double d = fmax(sw_mesh_distance(&lod, j->source_grid, spacing),
+                        sw_mesh_distance(&j->source, lod_grid, spacing));
         sw_mesh_grid_free(lod_grid);
         float error = (float)(d + m->error);
-        if (!(error > last_error)) {
-            r->not_smaller++;
+        if (!(error > j->last_error)) {
+            j->r->not_smaller++;
             continue;
         }
-        uint32_t first_vertex = 0, first_index = o->index_count;
-        int made = emit(m, source_grid, o, (uint32_t)n, &first_vertex);
-        sw_part_level *l = sw_grow(o->levels, &o->cap_l, (size_t)o->level_count + 1, sizeof *l);
-        if (made == 0 || !l) {
-            sw_mesh_grid_free(source_grid);
-            return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
-        }
-        o->levels = l;
-        if (made < 0) {
-            o->vertex_count = first_vertex;
-            r->too_large++;
-            continue;
-        }
-        o->index_count += (uint32_t)n;
-        sw_part_level *made_level = &o->levels[o->level_count++];
-        *made_level = (sw_part_level){ part, error, first_vertex, o->vertex_count - first_vertex,
-                                       first_index, (uint32_t)n, 0, 0 };
-        made_level->shading_side = (float)miss_shaded_side(m, source_grid, o, made_level);
-        r->triangles[kept++] += n / 3;
-        r->worst_over_bound = fmax(r->worst_over_bound, error / bound);
-        last_error = error, last_indices = (uint32_t)n;
+        room = keep_level(m, o, j, n, error) >= 0;
+        j->r->worst_over_bound = fmax(j->r->worst_over_bound, error / bound);
     }
-    r->source_triangles += kept ? m->icount / 3 : 0;
-    r->with_levels += kept > 0;
-    r->levels += kept;
-    sw_mesh_grid_free(source_grid);
+    sw_mesh_grid_free(j->source_grid);
+    if (!room)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    j->r->source_triangles += j->kept ? m->icount / 3 : 0;
+    j->r->levels += j->kept;
     return SW_OK;
 }
 
@@ -574,23 +646,111 @@ static void free_part_mesh(part_mesh *m)
         free(blocks[i]);
 }
 
-static sw_status build_all(const sw_pack *pack, const sw_levels *levels,
-                           const sw_part_source *src, const sw_part_levels_options *opt,
-                           out_arrays *o, uint32_t *part_levels, sw_part_levels_report *r,
-                           sw_error *err)
+/* The meshes the pieces are simplified from: each surface's finest level at
+ * its own front (for a part not cut: it has no border), and the surfaces
+ * of cut parts at each of the fronts their pieces share. */
+typedef struct piece_sources {
+    sw_part_source finest, front[SW_PART_LEVEL_FRONTS];
+    int cut_any;
+} piece_sources;
+
+static sw_status build_sources(const sw_pack *pack, const sw_levels *levels,
+                               const uint8_t *cut, piece_sources *ps, sw_error *err)
+{
+    memset(ps, 0, sizeof *ps);
+    sw_status st = sw_part_source_build(pack, levels, NULL, &ps->finest, err);
+    uint32_t n = pack->surface_count;
+    for (uint32_t p = 0; p < pack->meta->part_count; p++)
+        ps->cut_any |= cut[p];
+    if (st != SW_OK || !ps->cut_any)
+        return st;
+    float *bound = malloc(((size_t)n + 1) * sizeof *bound);
+    double *diagonal = malloc(((size_t)pack->meta->part_count + 1) * sizeof *diagonal);
+    if (!bound || !diagonal)
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    for (uint32_t p = 0; st == SW_OK && p < pack->meta->part_count; p++)
+        diagonal[p] = cut[p] ? sw_part_diagonal(pack, p) : 0;
+    for (uint32_t f = 0; st == SW_OK && f < SW_PART_LEVEL_FRONTS; f++) {
+        for (uint32_t s = 0; s < n; s++) {
+            uint32_t p = pack->surfaces[s].part;
+            bound[s] = cut[p] ? (float)sw_part_level_front_bound(diagonal[p], f) : 0.0f;
+        }
+        st = sw_part_source_build(pack, levels, bound, &ps->front[f], err);
+    }
+    free(bound);
+    free(diagonal);
+    return st;
+}
+
+static void free_sources(piece_sources *ps)
+{
+    sw_part_source_free(&ps->finest);
+    for (uint32_t f = 0; f < SW_PART_LEVEL_FRONTS; f++)
+        sw_part_source_free(&ps->front[f]);
+}
+
+/* Piece g of the part whose surfaces are [first, end), at every front it
+ * is made at. */
+static sw_status build_one_piece(part_mesh *m, out_arrays *o, const sw_levels *levels,
+                                 const uint32_t *piece_of, const piece_sources *ps, int cut,
+                                 uint32_t g, uint32_t first, uint32_t end,
+                                 const sw_part_levels_options *opt, sw_part_levels_report *r,
+                                 sw_error *err)
+{
+    uint32_t before = o->level_count;
+    sw_status st = SW_OK;
+    for (uint32_t f = 0; st == SW_OK && f < (cut ? SW_PART_LEVEL_FRONTS : 1u); f++) {
+        const sw_part_source *src = cut ? &ps->front[f] : &ps->finest;
+        int got = gather_piece(m, levels, piece_of, src, g, first, end);
+        r->incomplete += got < 0;
+        piece_job j = { .piece = g, .front = f, .cut = cut, .opt = opt, .r = r };
+        if (got == 0 || (got > 0 && (!weld(m) || !orient(m))))
+            st = sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+        else if (got > 0 && m->icount > 0)
+            st = build_piece(m, o, &j, err);
+    }
+    r->with_levels += o->level_count > before;
+    return st;
+}
+
+static sw_status build_all(const sw_pack *pack, const sw_levels *levels, const uint32_t *piece_of,
+                           const uint8_t *cut, const piece_sources *ps,
+                           const sw_part_levels_options *opt, out_arrays *o,
+                           uint32_t *piece_levels, sw_part_levels_report *r, sw_error *err)
 {
     part_mesh m = { 0 };
     sw_status st = SW_OK;
-    for (uint32_t p = 0; st == SW_OK && p < pack->meta->part_count; p++) {
-        int got = gather_part(&m, pack, levels, src, p);
-        r->incomplete += got < 0;
-        if (got == 0 || (got > 0 && (!weld(&m) || !orient(&m))))
-            st = sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
-        else if (got > 0 && m.icount > 0)
-            st = build_part(&m, o, p, opt, r, err);
-        part_levels[p + 1] = o->level_count;
+    /* Part by part (a run of surfaces): its pieces are first .. end. */
+    for (uint32_t s = 0, e; st == SW_OK && s < pack->surface_count; s = e) {
+        uint32_t part = pack->surfaces[s].part, first = piece_of[s], end = first + 1;
+        for (e = s; e < pack->surface_count && pack->surfaces[e].part == part; e++)
+            end = piece_of[e] + 1 > end ? piece_of[e] + 1 : end;
+        for (uint32_t g = first; st == SW_OK && g < end; g++) {
+            st = build_one_piece(&m, o, levels, piece_of, ps, cut[part], g, s, e, opt, r, err);
+            piece_levels[g + 1] = o->level_count;
+        }
     }
     free_part_mesh(&m);
+    return st;
+}
+
+/* The pieces, and which parts are cut (more than one piece). */
+static sw_status cut_parts(const sw_pack *pack, const sw_part_levels_options *opt,
+                           sw_part_levels_built *out, uint8_t **cut, sw_part_levels_report *r,
+                           sw_error *err)
+{
+    out->piece_of = malloc(((size_t)pack->surface_count + 1) * sizeof *out->piece_of);
+    *cut = calloc((size_t)pack->meta->part_count + 1, 1);
+    if (!out->piece_of || !*cut)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    sw_part_pieces_options po = { opt->cut_patches, opt->piece_patches };
+    sw_status st = sw_part_pieces(pack, &po, out->piece_of, &r->pieces, err);
+    for (uint32_t s = 1; st == SW_OK && s < pack->surface_count; s++)
+        if (out->piece_of[s] != out->piece_of[s - 1] &&
+            pack->surfaces[s].part == pack->surfaces[s - 1].part)
+            (*cut)[pack->surfaces[s].part] = 1;
+    for (uint32_t p = 0; st == SW_OK && p < pack->meta->part_count; p++)
+        r->cut_parts += (*cut)[p];
     return st;
 }
 
@@ -608,20 +768,25 @@ sw_status sw_part_levels_build(const sw_pack *pack, const sw_levels *levels,
     o.count = o.count ? (o.count < SW_PART_LEVELS_MAX ? o.count : SW_PART_LEVELS_MAX)
                       : SW_PART_LEVELS_MAX;
     report->parts = pack->meta->part_count;
-    sw_part_source src;
-    sw_status st = sw_part_source_build(pack, levels, &src, err);
-    if (st != SW_OK)
-        return st;
+    uint8_t *cut = NULL;
+    piece_sources ps;
+    memset(&ps, 0, sizeof ps);
+    sw_status st = cut_parts(pack, &o, out, &cut, report, err);
+    if (st == SW_OK)
+        st = build_sources(pack, levels, cut, &ps, err);
     out_arrays arrays = { 0 };
-    out->part_levels = calloc((size_t)pack->meta->part_count + 1, sizeof *out->part_levels);
-    st = out->part_levels ? build_all(pack, levels, &src, &o, &arrays, out->part_levels,
-                                      report, err)
-                          : sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
-    sw_part_source_free(&src);
+    if (st == SW_OK) {
+        out->piece_levels = calloc((size_t)report->pieces + 1, sizeof *out->piece_levels);
+        st = out->piece_levels ? build_all(pack, levels, out->piece_of, cut, &ps, &o, &arrays,
+                                           out->piece_levels, report, err)
+                               : sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    }
+    free_sources(&ps);
+    free(cut);
     out->levels = arrays.levels, out->vertices = arrays.vertices, out->indices = arrays.indices;
-    out->view = (sw_part_levels){ out->levels, out->part_levels, out->vertices, out->indices,
-                                  arrays.level_count, arrays.vertex_count, arrays.index_count,
-                                  pack->meta->part_count };
+    out->view = (sw_part_levels){ out->levels, out->piece_levels, out->piece_of, out->vertices,
+                                  out->indices, arrays.level_count, arrays.vertex_count,
+                                  arrays.index_count, report->pieces, pack->surface_count };
     if (st != SW_OK)
         sw_part_levels_built_free(out);
     clock_gettime(CLOCK_MONOTONIC, &t1);
@@ -632,7 +797,8 @@ sw_status sw_part_levels_build(const sw_pack *pack, const sw_levels *levels,
 void sw_part_levels_built_free(sw_part_levels_built *b)
 {
     free(b->levels);
-    free(b->part_levels);
+    free(b->piece_levels);
+    free(b->piece_of);
     free(b->vertices);
     free(b->indices);
     memset(b, 0, sizeof *b);

@@ -1,12 +1,20 @@
 /* SPDX-License-Identifier: MIT */
 /* The part levels of a pack (core/sw_part_levels.h), made on the host from
- * its surfaces' finest static levels joined at one front
- * (sw_part_source.h).
+ * its surfaces' static levels joined at one front (sw_part_source.h).
  *
- * Each part's source is welded by position (the surfaces meet on shared
- * polyline vertices) and simplified by meshoptimizer (meshopt_simplify,
- * across the surfaces' borders; the part's own open borders stay borders)
- * toward bounds of finest * step^k of the part's size. Each result is
+ * Each piece's source (sw_part_pieces.h: a part, or a piece of a part cut
+ * into pieces) is welded by position (the surfaces meet on shared polyline
+ * vertices) and simplified by meshoptimizer (meshopt_simplify, across the
+ * surfaces' borders; the piece's own open borders stay borders) toward
+ * bounds of finest * step^k of the piece's size. A piece of a cut part is
+ * made at each of SW_PART_LEVEL_FRONTS fronts, 4^f / 4096 of the part's
+ * size: its source joined at that front, its first level that source
+ * itself (so every piece has a level at every front it can be made at),
+ * then simplified with its border locked (meshopt_SimplifyLockBorder), so
+ * it meets the part's other pieces at that front vertex for vertex; a
+ * simplified level with a triangle folded over (facing against the
+ * source around all its corners, which meshoptimizer's own check misses
+ * on flat ground) is left out. Each result is
  * measured, not taken from the simplifier's estimate: the sampled distance
  * both ways between it and the source (sw_mesh_distance.h), plus the
  * source's own measured error. A level is kept when its error rises over
@@ -22,8 +30,9 @@
  * (sw_part_level.shading_side): its error bounds its shape, not its
  * normals.
  *
- * A part gets none when one of its surfaces has no finest level (that
- * surface would be missing from it); counted. Host only: allocates. */
+ * A piece gets no level at a front when one of its surfaces has no level
+ * (that surface would be missing from it); counted. Host only:
+ * allocates. */
 #ifndef SW_PART_LEVELS_BUILD_H
 #define SW_PART_LEVELS_BUILD_H
 
@@ -37,19 +46,25 @@
 typedef struct sw_part_levels_options {
     double finest;      /* the finest level's bound over the part's size (0: 1/512) */
     double step;        /* each level's bound over the one before (0: 2) */
-    uint32_t count;     /* levels tried per part (0 and at most: SW_PART_LEVELS_MAX) */
+    uint32_t count;     /* levels tried per piece and front (0 and at most:
+                           SW_PART_LEVELS_MAX) */
+    uint32_t cut_patches;   /* parts with more patches are cut into pieces (0: 1024) */
+    uint32_t piece_patches; /* patches a piece, at most (0: 256) */
 } sw_part_levels_options;
 
 typedef struct sw_part_levels_report {
     uint32_t parts;               /* of the pack */
-    uint32_t with_levels;         /* parts with at least one level */
+    uint32_t pieces;              /* all, a part not cut being one */
+    uint32_t cut_parts;           /* parts cut into pieces */
+    uint32_t with_levels;         /* pieces with at least one level */
     uint32_t levels;              /* kept */
-    uint32_t incomplete;          /* parts with a surface without a finest level */
+    uint32_t incomplete;          /* pieces (at a front) with a surface without a level */
     uint32_t not_smaller;         /* tried levels left out: not a fifth fewer triangles, or
                                      error not rising */
+    uint32_t folded;              /* tried levels left out for a fold */
     uint32_t too_large;           /* tried levels over 65536 vertices */
-    uint64_t source_triangles;    /* of the parts with levels */
-    uint64_t triangles[SW_PART_LEVELS_MAX];  /* kept, by rank (finest 0) */
+    uint64_t source_triangles;    /* of the pieces with levels, at each front */
+    uint64_t triangles[SW_PART_LEVELS_MAX];  /* kept, by rank at a front (finest 0) */
     double worst_over_bound;      /* the largest measured error over its target bound */
     double seconds;
 } sw_part_levels_report;
@@ -57,7 +72,8 @@ typedef struct sw_part_levels_report {
 typedef struct sw_part_levels_built {
     sw_part_levels view;
     sw_part_level *levels;
-    uint32_t *part_levels;
+    uint32_t *piece_levels;
+    uint32_t *piece_of;
     sw_level_vertex *vertices;
     uint16_t *indices;
 } sw_part_levels_built;

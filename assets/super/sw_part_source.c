@@ -15,6 +15,7 @@
 typedef struct source_builder {
     const sw_pack *pack;
     const sw_levels *levels;
+    const float *front_bound;     /* per surface, or NULL: each surface's finest level's */
     sw_seam_select front;
     void *select_block;
     sw_seam_point *points;        /* one loop's polyline */
@@ -35,6 +36,25 @@ static const sw_level *finest_level(const sw_levels *lv, uint32_t s)
 static float level_bound(const sw_level *l)
 {
     return l->made_bound > 0 ? l->made_bound : l->error;
+}
+
+/* Surface s's level in the source (NULL: none) and the bound its loops are
+ * read at. */
+static const sw_level *source_level(const source_builder *b, uint32_t s, float *bound)
+{
+    const sw_levels *lv = b->levels;
+    const sw_level *l = finest_level(lv, s);
+    if (!b->front_bound) {
+        *bound = l ? level_bound(l) : 0;
+        return l;
+    }
+    *bound = b->front_bound[s];
+    if (!(*bound > 0))
+        return NULL;
+    for (uint32_t i = lv->surface_levels[s + 1]; l && i > lv->surface_levels[s]; i--)
+        if (level_bound(&lv->levels[i - 1]) <= *bound)
+            return &lv->levels[i - 1];
+    return l;
 }
 
 static sw_status open_builder(source_builder *b, sw_error *err)
@@ -72,8 +92,8 @@ static sw_status open_builder(source_builder *b, sw_error *err)
 }
 
 /* The front every surface's finest level was made at (sw_levels_build.c
- * moves it the same way); surfaces without a level leave their seams to
- * their neighbours. */
+ * moves it the same way), or the front bounds'; surfaces without a level
+ * leave their seams to their neighbours. */
 static sw_status move_front(source_builder *b, sw_error *err)
 {
     uint32_t n = b->pack->seam.surface_count;
@@ -81,8 +101,8 @@ static sw_status move_front(source_builder *b, sw_error *err)
     if (!bounds)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part source: out of memory");
     for (uint32_t s = 0; s < n; s++) {
-        const sw_level *l = finest_level(b->levels, s);
-        bounds[s] = l ? (float)(level_bound(l) * SW_SEAM_SHARE) : 1e30f;
+        float at;
+        bounds[s] = source_level(b, s, &at) ? (float)(at * SW_SEAM_SHARE) : 1e30f;
     }
     sw_seam_update_result r;
     sw_status st = sw_seam_select_update(&b->front, bounds, 0, &r, err);
@@ -183,13 +203,14 @@ static void add_strip(source_builder *b, uint32_t loop, uint32_t count, uint32_t
     add_triangles(o, b->tris, tris);
 }
 
-/* Surface s's level `l` and its strips to the front's loops; 0 when out of
- * memory. Its error is NAN when its outer loop vanished at the front. */
-static int add_surface(source_builder *b, uint32_t s, const sw_level *l)
+/* Surface s's level `l` and its strips to the front's loops, read at
+ * bound `at`; 0 when out of memory, -1 when its outer loop vanished at
+ * the front. */
+static int add_surface(source_builder *b, uint32_t s, const sw_level *l, float at)
 {
     const sw_seam_graph *g = &b->pack->seam;
     sw_part_source *o = b->out;
-    float pin = (float)(level_bound(l) * SW_SEAM_SHARE);
+    float pin = (float)(at * SW_SEAM_SHARE);
     uint32_t level_base = o->vertex_count;
     size_t more_v = l->vertex_count, more_i = l->index_count;
     for (uint32_t l2 = g->surface_loops[s]; l2 < g->surface_loops[s + 1]; l2++)
@@ -225,20 +246,21 @@ static int add_surface(source_builder *b, uint32_t s, const sw_level *l)
 }
 
 sw_status sw_part_source_build(const sw_pack *pack, const sw_levels *levels,
-                               sw_part_source *out, sw_error *err)
+                               const float *front_bound, sw_part_source *out, sw_error *err)
 {
     memset(out, 0, sizeof *out);
     if (!pack->seam_header || !levels || !levels->levels ||
         levels->surface_count != pack->seam.surface_count)
         return sw_error_set(err, SW_ERR_ARG, "part source: the pack has no Seam Graph or levels");
-    source_builder b = { .pack = pack, .levels = levels, .out = out };
+    source_builder b = { .pack = pack, .levels = levels, .front_bound = front_bound, .out = out };
     sw_status st = open_builder(&b, err);
     if (st == SW_OK)
         st = move_front(&b, err);
     for (uint32_t s = 0; st == SW_OK && s < pack->seam.surface_count; s++) {
-        const sw_level *l = finest_level(levels, s);
+        float at;
+        const sw_level *l = source_level(&b, s, &at);
         uint32_t v0 = out->vertex_count, i0 = out->index_count;
-        int made = l ? add_surface(&b, s, l) : -1;
+        int made = l ? add_surface(&b, s, l, at) : -1;
         if (made == 0)
             st = sw_error_set(err, SW_ERR_NO_MEMORY, "part source: out of memory");
         if (made < 0)

@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* The mesh a part's levels are simplified from (sw_part_levels_build.h):
- * every surface's finest static level (core/sw_levels.h) joined by its
- * border strips (core/sw_border_strip.h) to one state of the Seam Graph's
- * front, the state the finest levels were made at. Neighbours then end on
+ * every surface's static level (core/sw_levels.h) joined by its border
+ * strips (core/sw_border_strip.h) to one state of the Seam Graph's front:
+ * each surface's finest level at the front the finest levels were made
+ * at, or, for the fronts of a part cut into pieces, each surface's
+ * coarsest level made within a bound at the front moved to that bound. Neighbours then end on
  * the same polyline vertices, so the surfaces of a part meet vertex for
  * vertex, as the walk's stand-ins meet: a part's surfaces welded by
  * position are one mesh with no crack, which a simplifier may then reduce
@@ -33,11 +35,16 @@ typedef struct sw_part_source {
     uint32_t vertex_count, index_count, surface_count;
 } sw_part_source;
 
-/* The source mesh of every surface of pack with levels (its finest one),
- * at the front each surface's finest level's made bound moves it to.
- * SW_ERR_ARG without a Seam Graph or levels; SW_ERR_NO_MEMORY. */
+/* The source mesh of every surface of pack with levels. front_bound NULL:
+ * each surface's finest level, at the front each surface's finest level's
+ * made bound moves it to. Else front_bound[s] > 0 (model units) gives
+ * surface s its coarsest level made within it (its finest when none is)
+ * and its loops at the front every surface's front_bound moves it to, so
+ * surfaces with one bound meet on the same polyline whatever their
+ * levels; front_bound[s] 0 leaves s out of the source (no mesh, error
+ * NAN). SW_ERR_ARG without a Seam Graph or levels; SW_ERR_NO_MEMORY. */
 sw_status sw_part_source_build(const sw_pack *pack, const sw_levels *levels,
-                               sw_part_source *out, sw_error *err);
+                               const float *front_bound, sw_part_source *out, sw_error *err);
 
 void sw_part_source_free(sw_part_source *s);
 

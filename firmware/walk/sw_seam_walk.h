@@ -256,9 +256,12 @@ typedef struct sw_seam_walk {
      * sw_seam_walk_init_frames: */
     const sw_part_levels *part_levels;
     int no_part_levels;
-    int part_levels_coarsest;     /* tests' mutant: each part from its coarsest level */
-    uint32_t *part_level;         /* part_count: the level drawn this frame, UINT32_MAX none */
-    double *part_depth;           /* part_count: its surfaces' nearest depth in view */
+    int part_levels_coarsest;     /* tests' mutant: each piece from its coarsest level */
+    uint32_t *part_level;         /* piece_count: the level drawn this frame, UINT32_MAX none */
+    double *part_depth;           /* piece_count: its surfaces' nearest depth in view */
+    uint32_t *part_pieces;        /* part_count + 1: part p's pieces are
+                                     [part_pieces[p], part_pieces[p + 1]) */
+    uint32_t *piece_part;         /* piece_count: its part */
     int standin_silhouettes;      /* 1: where a silhouette may cross a stand-in its level is
                                      chosen by the bound it was made for
                                      (sw_seam_standin_worth); 0 by its error alone (tests) */

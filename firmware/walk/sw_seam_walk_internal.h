@@ -86,13 +86,18 @@ void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
  * is drawn so. */
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
 
-/* V, after culling: each part in view whose coarsest level within the
- * bound at its surfaces' nearest depth is drawn whole from it; its
- * surfaces in view are marked SW_SEAM_WALK_PART (not drawn, no work)
+/* The part levels' state, from the arena (visibility/sw_seam_part_levels.c):
+ * none when the pack has none or no_part_levels is set. */
+sw_status sw_seam_walk_init_parts(sw_seam_walk *w, sw_arena *arena, sw_error *err);
+
+/* V, after culling: each part in view whose pieces all have a level within
+ * the bound at their surfaces' nearest depth (at one front, when the part
+ * is cut into pieces) is drawn whole from them; its surfaces in view are
+ * marked SW_SEAM_WALK_PART (not drawn, no work)
  * (visibility/sw_seam_part_levels.c). */
 void sw_seam_walk_choose_parts(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame);
 
-/* V, planning: the parts chosen above into the plan, counted. */
+/* V, planning: the pieces chosen above into the plan, counted. */
 void sw_seam_walk_plan_parts(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *frame);
 
 /* V: 1 when surface s's stand-in still serves its target: its level's

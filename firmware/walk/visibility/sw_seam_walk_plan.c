@@ -12,12 +12,14 @@ size_t sw_seam_walk_frame_bytes(const sw_pack *pack, uint32_t workers, int fill)
 {
     uint32_t n = pack->seam.surface_count;
     sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
-    size_t parts = (size_t)pack->part_levels.part_count + 1;
+    size_t pieces = (size_t)pack->part_levels.piece_count + 1;
+    size_t parts = (size_t)pack->meta->part_count + 1;
     size_t bytes = 2 * sw_seam_plan_bytes(n) +
                    sw_arena_worst_case(((size_t)m.patches + 1) * sizeof(sw_trim_patch), 64) +
                    sw_arena_worst_case(((size_t)n + 1) * sizeof(float), 64) +
-                   sw_arena_worst_case(parts * sizeof(uint32_t), 64) +
-                   sw_arena_worst_case(parts * sizeof(double), 64);
+                   2 * sw_arena_worst_case(pieces * sizeof(uint32_t), 64) +
+                   sw_arena_worst_case(pieces * sizeof(double), 64) +
+                   sw_arena_worst_case(parts * sizeof(uint32_t), 64);
     return workers ? bytes + sw_seam_walk_worker_bytes(pack, workers, fill) : bytes;
 }
 
@@ -39,19 +41,7 @@ sw_status sw_seam_walk_init_frames(sw_seam_walk *w, sw_seam_plan plans[2], sw_ar
                             "scratch");
     for (uint32_t s = 0; s < n; s++)
         w->measure_sew_offset[s] = -1;
-    const sw_part_levels *pl = &w->pack->part_levels;
-    w->part_levels = NULL;
-    if (!pl->levels || w->no_part_levels)
-        return SW_OK;
-    w->part_level = sw_arena_alloc(arena, ((size_t)pl->part_count + 1) * sizeof(uint32_t), 64);
-    w->part_depth = sw_arena_alloc(arena, ((size_t)pl->part_count + 1) * sizeof(double), 64);
-    if (!w->part_level || !w->part_depth)
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the part levels' "
-                            "state");
-    for (uint32_t p = 0; p < pl->part_count; p++)
-        w->part_level[p] = UINT32_MAX, w->part_depth[p] = INFINITY;
-    w->part_levels = pl;
-    return SW_OK;
+    return sw_seam_walk_init_parts(w, arena, err);
 }
 
 void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan)
