@@ -11,6 +11,7 @@
 #ifndef SW_PACK_H
 #define SW_PACK_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -286,6 +287,32 @@ typedef struct sw_pack {
      * NULL and every count 0 when the pack has none. */
     sw_part_levels part_levels;
 } sw_pack;
+
+/* The box of patches[first .. first + count)'s control hulls into lo and
+ * hi (lo above hi, empty, when count is 0). */
+static inline void sw_pack_patches_box(const sw_pack_patch *patches, uint32_t first,
+                                       uint32_t count, float lo[3], float hi[3])
+{
+    for (int k = 0; k < 3; k++)
+        lo[k] = 3.4e38f, hi[k] = -3.4e38f;
+    for (uint32_t i = first; i < first + count; i++)
+        for (int k = 0; k < 3; k++) {
+            lo[k] = patches[i].box_min[k] < lo[k] ? patches[i].box_min[k] : lo[k];
+            hi[k] = patches[i].box_max[k] > hi[k] ? patches[i].box_max[k] : hi[k];
+        }
+}
+
+/* The diagonal of that box, 0 when empty. */
+static inline double sw_pack_patches_diagonal(const sw_pack_patch *patches, uint32_t first,
+                                              uint32_t count)
+{
+    float lo[3], hi[3];
+    sw_pack_patches_box(patches, first, count, lo, hi);
+    double d = 0;
+    for (int k = 0; k < 3; k++)
+        d += hi[k] > lo[k] ? ((double)hi[k] - lo[k]) * ((double)hi[k] - lo[k]) : 0;
+    return sqrt(d);
+}
 
 /* runtime_bytes for a pack of total_size bytes and patch_count patches whose
  * walk takes walk_bytes (sw_walk_arena_bytes of its Seam Graph, 0 without

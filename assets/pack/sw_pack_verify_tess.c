@@ -99,20 +99,11 @@ static int gather_loops(verifier *v, uint32_t s, float pin, sw_trim_loops *loops
     return sw_seam_surface_loops(&v->sel, s, pin, &buf, loops, outer);
 }
 
-/* The box diagonal of surface s's patches. */
+/* The diagonal of the box of surface s's patches' control hulls. */
 static double surface_size(const sw_pack *pack, uint32_t s)
 {
-    const sw_pack_surface *sf = &pack->surfaces[s];
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t i = sf->first_patch; i < sf->first_patch + sf->patch_count; i++)
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fminf(lo[k], pack->patches[i].box_min[k]);
-            hi[k] = fmaxf(hi[k], pack->patches[i].box_max[k]);
-        }
-    double d = 0;
-    for (int k = 0; k < 3; k++)
-        d += hi[k] > lo[k] ? ((double)hi[k] - lo[k]) * ((double)hi[k] - lo[k]) : 0;
-    return sqrt(d);
+    return sw_pack_patches_diagonal(pack->patches, pack->surfaces[s].first_patch,
+                                    pack->surfaces[s].patch_count);
 }
 
 static sw_status tessellate(verifier *v, uint32_t s, const sw_trim_loops *loops, double bound,

@@ -26,17 +26,8 @@ sw_status sw_cluster_surface_cones(const sw_pack *pack, sw_normal_cone *cones, s
 /* The diagonal of the box of surface s's patches' control hulls. */
 static double surface_size(const sw_pack *pack, uint32_t s)
 {
-    const sw_pack_surface *ps = &pack->surfaces[s];
-    float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
-    for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++)
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fminf(lo[k], pack->patches[i].box_min[k]);
-            hi[k] = fmaxf(hi[k], pack->patches[i].box_max[k]);
-        }
-    double d2 = 0;
-    for (int k = 0; k < 3; k++)
-        d2 += hi[k] > lo[k] ? ((double)hi[k] - lo[k]) * ((double)hi[k] - lo[k]) : 0;
-    return sqrt(d2);
+    return sw_pack_patches_diagonal(pack->patches, pack->surfaces[s].first_patch,
+                                    pack->surfaces[s].patch_count);
 }
 
 /* Surface s's finest level's triangles, 0 without levels. */

@@ -28,12 +28,8 @@ static int (*const by_axis[3])(const void *, const void *) = { by_axis_0, by_axi
 static centre centre_of(const sw_pack *pack, uint32_t s)
 {
     const sw_pack_surface *su = &pack->surfaces[s];
-    float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
-    for (uint32_t p = su->first_patch; p < su->first_patch + su->patch_count; p++)
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fminf(lo[k], pack->patches[p].box_min[k]);
-            hi[k] = fmaxf(hi[k], pack->patches[p].box_max[k]);
-        }
+    float lo[3], hi[3];
+    sw_pack_patches_box(pack->patches, su->first_patch, su->patch_count, lo, hi);
     centre c = { { 0, 0, 0 }, s };
     for (int k = 0; k < 3 && su->patch_count; k++)
         c.at[k] = 0.5f * (lo[k] + hi[k]);
@@ -116,15 +112,6 @@ sw_status sw_part_pieces(const sw_pack *pack, const sw_part_pieces_options *opt,
 
 double sw_part_diagonal(const sw_pack *pack, uint32_t p)
 {
-    const sw_pack_part *part = &pack->parts[p];
-    double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
-    for (uint32_t i = part->first_patch; i < part->first_patch + part->patch_count; i++)
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fmin(lo[k], pack->patches[i].box_min[k]);
-            hi[k] = fmax(hi[k], pack->patches[i].box_max[k]);
-        }
-    double d = 0;
-    for (int k = 0; k < 3 && part->patch_count; k++)
-        d += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    return sqrt(d);
+    return sw_pack_patches_diagonal(pack->patches, pack->parts[p].first_patch,
+                                    pack->parts[p].patch_count);
 }
