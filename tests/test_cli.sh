@@ -4,7 +4,7 @@
 # --help prints the usage on stdout, nothing on stderr, exit 0; a usage error
 # (unknown option or command, bad value, missing argument) prints nothing on
 # stdout and two lines on stderr, what was wrong and a hint naming --help,
-# with exit 2.
+# with exit 2. seamwalk's test-only options are in --help-test, not --help.
 #   test_cli.sh SEAMWALK SEAMWALK_PACK SEAMWALK_FLASH
 set -uo pipefail
 walker=$1 pack=$2 flash=$3
@@ -42,6 +42,11 @@ refuses() { # refuses NAME FRAGMENT PROGRAM ARGS...: a usage error naming FRAGME
 }
 
 helps seamwalk "$walker"
+check "seamwalk --help: no --test- option" eval '! grep -q -- "--test-" "$work/out"'
+run "$walker" --help-test
+check "seamwalk --help-test: the test options on stdout, exit 0" eval '
+  [ "$(code)" -eq 0 ] && [ ! -s "$work/err" ] &&
+  [ "$(grep -c -- "^  --test-" "$work/out")" -ge 6 ]'
 refuses seamwalk "unknown option '--bogus'" "$walker" --pack x.swpack --orbit --bogus 1
 refuses seamwalk "--frames expects" "$walker" --pack x.swpack --orbit --frames many
 refuses seamwalk "--headless" "$walker" --pack x.swpack --orbit --headless 12x9999

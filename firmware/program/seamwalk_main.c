@@ -447,7 +447,10 @@ int main(int argc, char **argv)
     if (st != SW_OK)
         return sw_usage_error("seamwalk", "%s", err.message);
     if (rt.opt.help) {
-        sw_options_print_usage(stdout, argv[0]);
+        if (rt.opt.help == 2)
+            sw_options_print_test_usage(stdout);
+        else
+            sw_options_print_usage(stdout, argv[0]);
         return fflush(stdout) == 0 ? 0 : 1;
     }
     if (rt.opt.version) {

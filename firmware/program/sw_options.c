@@ -215,6 +215,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             o->help = 1;
             return SW_OK;
+        } else if (!strcmp(a, "--help-test")) {
+            o->help = 2;
+            return SW_OK;
         } else if (!strcmp(a, "--version")) {
             o->version = 1;
             return SW_OK;
@@ -342,7 +345,7 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
 void sw_options_print_usage(FILE *out, const char *argv0)
 {
     fprintf(out,
-            "usage: %s --help | --version\n"
+            "usage: %s --help | --help-test | --version\n"
             "       %s (--pack FILE | --store DIR)\n"
             "          (--path FILE | --orbit | --view NAME | --navigate | --input-timeline FILE)\n"
             "          [--display auto|headless|kms|x11|wayland] [--size WxH] [--headless WxH]\n"
@@ -428,23 +431,10 @@ void sw_options_print_usage(FILE *out, const char *argv0)
             "                      frames as --workers 0 draws them, for the tests' golden\n"
             "                      images (default 0; the test suite sets\n"
             "                      SEAMWALK_TEST_SYNC_WORK=1)\n"
-            "  --test-stall-workers F  from frame F on the workers take no work: frames must\n"
-            "                      go on with the meshes they have (tests)\n"
-            "  --test-standin-silhouettes 0|1  where a silhouette may cross a stand-in, its\n"
-            "                      level is chosen by the bound it was made for (1, default)\n"
-            "                      or by its error (0: the tests' mutant, whose silhouettes\n"
-            "                      leave slits)\n"
-            "  --test-part-levels-coarsest 0|1  every part in view drawn from its coarsest\n"
-            "                      part level whatever the bound (1: the tests' mutant;\n"
-            "                      0, default)\n"
-            "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
-            "                      many frames (tests: no half batch may show)\n"
             "  --batch-tris N      wait for the GL driver after every N triangles drawn\n"
             "                      (default 32768, or [render] batch_tris; 0: only at the\n"
             "                      frame's end): what llvmpipe holds in flight, so resident\n"
             "                      memory, stays bounded\n"
-            "  --test-grow-kb K    K kB more resident memory at each loop's end of a soak,\n"
-            "                      no allocation (tests: the soak must fail on it)\n"
             "  --no-cache          tessellate every visible surface every frame at its exact\n"
             "                      bound, keeping nothing: the baseline the cache is measured\n"
             "                      against (tests/bench/walk_cache_bench.sh), not for units\n"
@@ -478,7 +468,29 @@ void sw_options_print_usage(FILE *out, const char *argv0)
             "  --fill-crossings 0|1  close each seam crossing (a T-junction with the surface\n"
             "                      across) with a zero-area fan (1, default), or not (0:\n"
             "                      single-pixel pinholes open along such seams)\n"
-            "  --test-drop-surface S  never draw surface S: a hole on purpose, for the image\n"
-            "                      tests' mutants\n",
+            "  --help-test         the options only the tests use (mutants, stalls, holes on\n"
+            "                      purpose): never on a unit\n",
             argv0, argv0);
+}
+
+void sw_options_print_test_usage(FILE *out)
+{
+    fputs("seamwalk's options for the tests only: each makes the walk wrong or slow on\n"
+          "purpose, so a test can show that its check catches it.\n"
+          "  --test-stall-workers F  from frame F on the workers take no work: frames must\n"
+          "                      go on with the meshes they have (tests)\n"
+          "  --test-standin-silhouettes 0|1  where a silhouette may cross a stand-in, its\n"
+          "                      level is chosen by the bound it was made for (1, default)\n"
+          "                      or by its error (0: the tests' mutant, whose silhouettes\n"
+          "                      leave slits)\n"
+          "  --test-part-levels-coarsest 0|1  every part in view drawn from its coarsest\n"
+          "                      part level whatever the bound (1: the tests' mutant;\n"
+          "                      0, default)\n"
+          "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
+          "                      many frames (tests: no half batch may show)\n"
+          "  --test-grow-kb K    K kB more resident memory at each loop's end of a soak,\n"
+          "                      no allocation (tests: the soak must fail on it)\n"
+          "  --test-drop-surface S  never draw surface S: a hole on purpose, for the image\n"
+          "                      tests' mutants\n",
+          out);
 }

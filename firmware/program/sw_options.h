@@ -82,7 +82,7 @@ typedef struct sw_options {
                                     driver; default SW_GL_POOL_BATCH_TRIANGLES; 0 frame's end */
     int test_grow_kb;            /* --test-grow-kb K: K kB more resident at each loop's end
                                     (tests: the soak must fail on it); 0 */
-    int help;
+    int help;                    /* --help: 1; --help-test: 2 */
     int version;                 /* --version: print it and exit */
     const char *config_path;     /* --config FILE, or NULL: no file is read */
     /* The file's values. pack_path, store_dir and keys_path may point into
@@ -96,5 +96,9 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *opts, sw_error *er
 
 /* The usage: on stdout for --help, which is asked for. */
 void sw_options_print_usage(FILE *out, const char *argv0);
+
+/* The options only the tests use (--help-test), kept out of --help and
+ * the man page: a unit never needs them. */
+void sw_options_print_test_usage(FILE *out);
 
 #endif
