@@ -66,21 +66,6 @@ static int usage_error(const char *fmt, const char *arg)
     return sw_usage_error("seamwalk-pack", fmt, arg);
 }
 
-/* s with its control bytes as \xNN: the kinds of messages tallied quote
- * OpenCASCADE's words about a file, which may carry the file's bytes, and
- * a binary file's escape sequences must not reach the terminal (an
- * sw_error's message is escaped where it is made, core/sw_error.c). */
-static void put_escaped(FILE *f, const char *s)
-{
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c < 0x20 || c == 0x7f)
-            fprintf(f, "\\x%02x", c);
-        else
-            fputc(c, f);
-    }
-}
-
 static int fail(const sw_error *err)
 {
     fprintf(stderr, "seamwalk-pack: %s\n", err->message);
@@ -545,7 +530,9 @@ static void print_tally(const char *name, const sw_import_tally *t, const char *
     size_t listed = 0;
     for (size_t k = 0; k < t->kinds && k < SW_IMPORT_KINDS; k++) {
         fprintf(stderr, "warning: %s: %zu x ", name, t->count[k]);
-        put_escaped(stderr, t->kind[k]);
+        /* the kinds quote OpenCASCADE's words about a file, which may
+         * carry the file's bytes */
+        sw_fput_escaped(stderr, t->kind[k], SIZE_MAX);
         fprintf(stderr, " %s\n", done);
         listed += t->count[k];
     }

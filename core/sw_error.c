@@ -27,6 +27,17 @@ static void escape_controls(char *msg, size_t cap)
     memcpy(msg, out, n + 1);
 }
 
+void sw_fput_escaped(FILE *out, const char *s, size_t max)
+{
+    for (size_t i = 0; i < max && s[i]; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if (c < 0x20 || c == 0x7f)
+            fprintf(out, "\\x%02x", c);
+        else
+            fputc(c, out);
+    }
+}
+
 sw_status sw_error_set(sw_error *err, sw_status status, const char *fmt, ...)
 {
     if (!err)

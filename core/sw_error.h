@@ -5,6 +5,9 @@
 #ifndef SW_ERROR_H
 #define SW_ERROR_H
 
+#include <stddef.h>
+#include <stdio.h>
+
 typedef enum sw_status {
     SW_OK = 0,
     SW_ERR_ARG,         /* the caller passed something invalid */
@@ -37,6 +40,13 @@ sw_status sw_error_set(sw_error *err, sw_status status, const char *fmt, ...)
 void sw_error_prefix(sw_error *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 const char *sw_status_name(sw_status status);
+
+/* Writes s (up to max bytes or its NUL) to out with its control bytes as
+ * \xNN, as sw_error_set escapes a message: for text from a file printed
+ * outside an sw_error (a pack's part and viewpoint names, a library's
+ * words about a file), whose escape sequences must not reach the
+ * terminal. */
+void sw_fput_escaped(FILE *out, const char *s, size_t max);
 
 /* A command line's usage error as every seamwalk program reports it, on
  * stderr: "PROGRAM: what was wrong" and a line naming PROGRAM --help. The

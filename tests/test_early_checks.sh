@@ -4,8 +4,9 @@
 # lists one face 200,000 times ends at once with its line; the output's
 # folder and name are checked before the build starts; a directory named
 # x.step is called a directory; control bytes from a binary file reach the
-# terminal as \xNN; a full disk (the fault shim's) leaves no partial file,
-# neither a pack nor seamwalk's --stats (an older file stays as it was).
+# terminal as \xNN, and so do a pack's names in seamwalk-pack info; a full
+# disk (the fault shim's) leaves no partial file, neither a pack nor
+# seamwalk's --stats (an older file stays as it was).
 #   test_early_checks.sh SEAMWALK_PACK SEAMWALK FAULT_SHIM SAMPLES WORK
 set -uo pipefail
 pack=$1 walker=$2 shim=$3 samples=$4 work=$5
@@ -159,6 +160,21 @@ echo $? >"$work/rc"
 echo "binary camera path: exit $(cat "$work/rc"): $(cat -v "$work/err")"
 check "binary camera path: refused" [ "$(cat "$work/rc")" != 0 ]
 check "binary camera path: no control byte printed" no_controls "$work/err"
+
+# A pack's names are the file's bytes (here the file name a part is named
+# after; a STEP product's name the same way): seamwalk-pack info shows them
+# escaped in text, and as JSON's \u001b in --json.
+named=$(printf 'sp\033[2Joon.txt')
+cp "$samples/teaspoon.txt" "$work/$named"
+run build "$work/$named" -o "$work/named.swpack" --quiet
+check "a part named with an escape: builds" rc 0
+"$pack" info "$work/named.swpack" >"$work/info" 2>&1
+check "info: exits 0" [ $? = 0 ]
+check "info: the part's name shown as \\x1b" grep -q 'sp\\x1b\[2Joon' "$work/info"
+check "info: no control byte printed" no_controls "$work/info"
+"$pack" info --json "$work/named.swpack" >"$work/info.json" 2>&1
+check "info --json: the name as \\u001b" grep -q '"name": "sp\\u001b\[2Joon"' "$work/info.json"
+check "info --json: no control byte printed" no_controls "$work/info.json"
 
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]

@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Errors as values (core/sw_error.h): a message that quotes a file's bytes
  * never carries a control byte out, however it is built or cut. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "sw_error.h"
@@ -47,10 +50,28 @@ static void a_long_message_is_cut_whole(void)
     SW_CHECK(!has_control(err.message) && strlen(err.message) < SW_ERROR_MESSAGE_MAX);
 }
 
+/* Text printed outside an sw_error (a pack's names): the same escapes, and
+ * no byte past max or the NUL. */
+static void printed_text_is_escaped_within_its_size(void)
+{
+    char *text = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&text, &size);
+    SW_CHECK(f != NULL);
+    const char name[8] = {'a', 0x1b, '[', '2', 'J', 0x7f, 'z', 'q'};   /* no NUL in its 8 */
+    sw_fput_escaped(f, name, 7);
+    fputc('|', f);
+    sw_fput_escaped(f, "b\tc\nd", SIZE_MAX);
+    fclose(f);
+    SW_CHECK_MSG(!strcmp(text, "a\\x1b[2J\\x7fz|b\\x09c\\x0ad"), "%s", text);
+    free(text);
+}
+
 int main(void)
 {
     SW_RUN(control_bytes_become_escapes);
     SW_RUN(a_prefix_is_escaped_and_escaping_twice_changes_nothing);
     SW_RUN(a_long_message_is_cut_whole);
+    SW_RUN(printed_text_is_escaped_within_its_size);
     return sw_test_finish();
 }

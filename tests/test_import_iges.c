@@ -539,6 +539,30 @@ static void test_bad_number(void)
                                  "Hollerith string, found '1.x'");
 }
 
+/* A shell that lists its face twice (it built two coincident copies) and
+ * one that claims more faces than the limit: refused, naming the shell.
+ * A shell of the one face, as in test_brep_face, builds. */
+static void test_shell_faces_listed_once_and_capped(void)
+{
+    iges_text_entity e[] = {
+        {186, 0, 0, 0, "186,3,1,0;"},
+        {514, 1, 0, 1, "514,3,5,1,5,1,5,1;"},
+        {510, 1, 0, 1, "510,7,1,1,9;"},
+        {128, 0, 0, 1, PLANE_128},
+        {508, 1, 0, 1, "508,1,0,11,1,1,0;"},
+        {504, 1, 0, 1, "504,1,15,13,1,13,1;"},
+        {502, 1, 0, 1, "502,1,16.,10.,0.;"},
+        {100, 0, 0, 1, "100,0.,10.,10.,16.,10.,16.,10.;"},
+    };
+    static char buf[16384];
+    size_t len = build(e, 8, buf, sizeof buf);
+    expect_error(buf, len, NULL, "t.igs: D line 3 (type 514): expected each face once in the "
+                 "shell, found the face at D line 5 listed again (faces 1 and 2 of 3)");
+    e[1].params = "514,100001,5,1;";
+    len = build(e, 8, buf, sizeof buf);
+    expect_error(buf, len, NULL, "face count N");
+}
+
 /* 102s naming each other 40 times over three levels would expand to 64 000
  * lines: refused as a whole rather than expanded. */
 static void test_shared_references_bounded(void)
@@ -819,6 +843,7 @@ int main(int argc, char **argv)
     SW_RUN(test_pointer_to_even_line);
     SW_RUN(test_bad_number);
     SW_RUN(test_shared_references_bounded);
+    SW_RUN(test_shell_faces_listed_once_and_capped);
     SW_RUN(test_unsupported_entity);
     SW_RUN(test_trim_fit_tolerance_follows_the_face);
     SW_RUN(test_trim_gap_from_the_model_space_curve);

@@ -5,6 +5,7 @@
  * flag, the face's flag in the shell and any mirroring transform; loops use
  * their parameter-space curves when they have them and compute them from
  * the edges' model-space curves otherwise. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "sw_iges_internal.h"
@@ -143,6 +144,40 @@ static sw_status read_face(iges_reader *r, int e, int flip, iges_faces *out)
     return st;
 }
 
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+/* A face listed twice in one shell would be built twice, coincident copies
+ * that sewing and the walk then fight over; STEP's shells are held to the
+ * same rule (sw_step_scan.c). faces: the shell's n face entities. */
+static sw_status check_faces_once(iges_reader *r, int e, const int *faces, int n)
+{
+    int *sorted = malloc((size_t)(n ? n : 1) * sizeof *sorted);
+    if (!sorted)
+        return iges_fail_entity(r, e, SW_ERR_NO_MEMORY, "out of memory for a shell of %d faces",
+                                n);
+    memcpy(sorted, faces, (size_t)n * sizeof *sorted);
+    qsort(sorted, (size_t)n, sizeof *sorted, cmp_int);
+    int twice = -1;
+    for (int i = 1; i < n && twice < 0; i++)
+        if (sorted[i] == sorted[i - 1])
+            twice = sorted[i];
+    free(sorted);
+    if (twice < 0)
+        return SW_OK;
+    int first = 0, again = 0;
+    while (faces[first] != twice)
+        first++;
+    for (again = first + 1; faces[again] != twice; again++)
+        ;
+    return iges_fail_entity(r, e, SW_ERR_FORMAT, "expected each face once in the shell, found "
+                            "the face at D line %d listed again (faces %d and %d of %d)",
+                            2 * twice + 1, first + 1, again + 1, n);
+}
+
 /* 514: N, then FACE, OF pairs (OF 1: the face's normal is the surface's). */
 static sw_status read_shell(iges_reader *r, int e, int flip, iges_faces *out)
 {
@@ -152,20 +187,26 @@ static sw_status read_shell(iges_reader *r, int e, int flip, iges_faces *out)
     if (st != SW_OK)
         return st;
     iges_params p;
-    int n;
+    int n = 0, *faces = NULL, *flags = NULL;
     st = iges_params_read(r, e, &p);
     if (st == SW_OK)
-        st = iges_param_int(r, &p, 1, "face count N", 1, 10000000, &n);
+        st = iges_param_int(r, &p, 1, "face count N", 1, IGES_MAX_SHELL_FACES, &n);
     if (st == SW_OK)
         st = iges_param_need(r, &p, 2, 2 * n, "faces and orientation flags");
+    if (st == SW_OK && (!(faces = malloc((size_t)n * sizeof *faces)) ||
+                        !(flags = malloc((size_t)n * sizeof *flags))))
+        st = iges_fail_entity(r, e, SW_ERR_NO_MEMORY, "out of memory for a shell of %d faces", n);
     for (int i = 0; st == SW_OK && i < n; i++) {
-        int face, of;
-        st = iges_param_entity(r, &p, 2 + 2 * i, "face", 0, &face);
+        st = iges_param_entity(r, &p, 2 + 2 * i, "face", 0, &faces[i]);
         if (st == SW_OK)
-            st = iges_param_int(r, &p, 3 + 2 * i, "orientation flag OF", 0, 1, &of);
-        if (st == SW_OK)
-            st = read_face(r, face, flip ^ !of, out);
+            st = iges_param_int(r, &p, 3 + 2 * i, "orientation flag OF", 0, 1, &flags[i]);
     }
+    if (st == SW_OK)
+        st = check_faces_once(r, e, faces, n);
+    for (int i = 0; st == SW_OK && i < n; i++)
+        st = read_face(r, faces[i], flip ^ !flags[i], out);
+    free(faces);
+    free(flags);
     r->ents[e].used = 1;
     iges_params_free(&p);
     iges_leave(r, e);

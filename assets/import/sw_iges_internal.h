@@ -42,6 +42,11 @@ typedef struct iges_entity {
  * IGES_VISITS_PER_ENTITY per entity in the file. */
 enum { IGES_MAX_DEPTH = 32, IGES_VISITS_PER_ENTITY = 64 };
 
+/* The most faces one shell (514) may list: as for STEP's shells
+ * (SW_STEP_MAX_SHELL_FACES), far above a real part's and low enough that
+ * a file cannot ask for work out of proportion to what it describes. */
+enum { IGES_MAX_SHELL_FACES = 100000 };
+
 typedef struct iges_reader {
     const char *file;               /* base name, for messages */
     iges_line *all;                 /* every record; the sections point into it */

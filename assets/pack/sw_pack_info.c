@@ -22,8 +22,11 @@ static void print_notes_text(FILE *out, const sw_pack *pack)
 {
     for (uint32_t i = 0; i < pack->import_note_count; i++) {
         const sw_pack_import_note *n = &pack->import_notes[i];
-        fprintf(out, "  %-16s %s: %" PRIu32 " x %s %s\n", i ? "" : "import", n->source, n->count,
-                n->what, sw_pack_note_kind_name(n->kind));
+        fprintf(out, "  %-16s ", i ? "" : "import");
+        sw_fput_escaped(out, n->source, sizeof n->source);
+        fprintf(out, ": %" PRIu32 " x ", n->count);
+        sw_fput_escaped(out, n->what, sizeof n->what);
+        fprintf(out, " %s\n", sw_pack_note_kind_name(n->kind));
     }
 }
 
@@ -242,7 +245,9 @@ static void print_degrees(FILE *out, const sw_pack_part_stats *s)
 static void print_part_text(FILE *out, const sw_pack *pack, uint32_t i, const sw_pack_part_stats *s)
 {
     const char *units = sw_pack_units_name(pack->meta->units);
-    fprintf(out, "  part %" PRIu32 ": %s\n", i, pack->parts[i].name);
+    fprintf(out, "  part %" PRIu32 ": ", i);
+    sw_fput_escaped(out, pack->parts[i].name, sizeof pack->parts[i].name);
+    fputc('\n', out);
     fprintf(out, "    %-16s %" PRIu32 " (%" PRIu32 " trimmed, %" PRIu32 " rational)\n",
             "surfaces", s->surfaces, s->trimmed_surfaces, s->rational_surfaces);
     fprintf(out, "    %-16s %" PRIu32 " (%" PRIu32 " rational)\n", "bezier patches", s->patches,
@@ -332,8 +337,14 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
     fprintf(out, "  %-16s %" PRIu32 "\n", "parts", m->part_count);
     for (uint32_t i = 0; i < m->part_count; i++) {
         const sw_pack_part *p = &pack->parts[i];
-        fprintf(out, "    %-20s %6" PRIu32 " patches  colour %.3f %.3f %.3f %.3f\n", p->name,
-                p->patch_count, p->color[0], p->color[1], p->color[2], p->color[3]);
+        /* names are the file's bytes (a STEP product, a file name): shown
+         * escaped, padded as the other columns */
+        size_t len = strnlen(p->name, sizeof p->name);
+        fputs("    ", out);
+        sw_fput_escaped(out, p->name, sizeof p->name);
+        fprintf(out, "%*s %6" PRIu32 " patches  colour %.3f %.3f %.3f %.3f\n",
+                len < 20 ? (int)(20 - len) : 0, "", p->patch_count, p->color[0], p->color[1],
+                p->color[2], p->color[3]);
     }
     fprintf(out, "  %-16s %" PRIu32 " (%" PRIu32 " trimmed)\n", "surfaces", t->surfaces,
             t->trimmed_surfaces);
@@ -351,7 +362,10 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
     sw_pack_print_part_levels_text(out, pack);
     fprintf(out, "  %-16s %" PRIu32, "viewpoints", pack->viewpoint_count);
     for (uint32_t i = 0; i < pack->viewpoint_count; i++)
-        fprintf(out, "%s%s", i ? ", " : ": ", pack->viewpoints[i].name);
+    {
+        fputs(i ? ", " : ": ", out);
+        sw_fput_escaped(out, pack->viewpoints[i].name, sizeof pack->viewpoints[i].name);
+    }
     fputc('\n', out);
     print_sections_text(out, pack);
     const float *lo = m->box_min, *hi = m->box_max;
