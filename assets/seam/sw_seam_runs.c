@@ -51,7 +51,11 @@ sw_status sw_seam_runs_init(sw_seam_runs *r, const sw_seam_host *g, uint32_t ver
     r->loop_of = malloc(((size_t)g->slot_count + 1) * sizeof *r->loop_of);
     r->first = malloc(((size_t)vertex_cap + 1) * sizeof *r->first);
     r->loop_runs = malloc(((size_t)g->loop_count + 1) * sizeof *r->loop_runs);
-    if (!r->runs || !r->link || !r->loop_of || !r->first || !r->loop_runs) {
+    r->near_cost = malloc(((size_t)vertex_cap + 1) * sizeof *r->near_cost);
+    r->near_runs = malloc(((size_t)vertex_cap + 1) * sizeof *r->near_runs);
+    r->near_stamp = calloc((size_t)vertex_cap + 1, sizeof *r->near_stamp);
+    if (!r->runs || !r->link || !r->loop_of || !r->first || !r->loop_runs || !r->near_cost ||
+        !r->near_runs || !r->near_stamp) {
         sw_seam_runs_free(r);
         return sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
     }
@@ -148,6 +152,45 @@ double sw_seam_runs_cost_bound(const sw_seam_runs *r, const sw_seam_host *g, uin
     return runs_cost(r, g, v1, v2, 1);
 }
 
+/* Counts run n (of the gathered vertex) next to x, at cost c. */
+static void near_add(sw_seam_runs *r, uint32_t x, double c)
+{
+    if (r->near_stamp[x] != r->stamp) {
+        r->near_stamp[x] = r->stamp;
+        r->near_runs[x] = 0;
+        r->near_cost[x] = 0.0;
+    }
+    r->near_runs[x]++;
+    r->near_cost[x] = fmax(r->near_cost[x], c);
+}
+
+void sw_seam_runs_gather(sw_seam_runs *r, const sw_seam_host *g, uint32_t v1, int exact)
+{
+    if (++r->stamp == 0) { /* wrapped: no stale stamp may read as current */
+        for (uint32_t v = 0; v < g->vertex_count; v++)
+            r->near_stamp[v] = 0;
+        r->stamp = 1;
+    }
+    r->gathered_runs = 0;
+    for (uint32_t n = r->first[v1]; n != SW_SEAM_NONE; n = r->link[n]) {
+        uint32_t p = r->runs[r->runs[n].prev].vertex, q = r->runs[r->runs[n].next].vertex;
+        r->gathered_runs++;
+        near_add(r, p, run_cost(r, g, n, p, !exact));
+        if (q != p)
+            near_add(r, q, run_cost(r, g, n, q, !exact));
+    }
+}
+
+double sw_seam_runs_cost_to(const sw_seam_runs *r, const sw_seam_host *g, uint32_t v1,
+                            uint32_t v2)
+{
+    int near = r->near_stamp[v2] == r->stamp;
+    uint32_t next_to = near ? r->near_runs[v2] : 0;
+    /* the runs not next to v2 stay at v1's (u, v) and move by |v1 v2| */
+    double cost = next_to < r->gathered_runs ? dist3(g->vertices[v1].p, g->vertices[v2].p) : 0.0;
+    return near ? fmax(cost, r->near_cost[v2]) : cost;
+}
+
 static void unlink_run(sw_seam_runs *r, uint32_t n)
 {
     sw_seam_run *run = &r->runs[n];
@@ -191,5 +234,8 @@ void sw_seam_runs_free(sw_seam_runs *r)
     free(r->loop_of);
     free(r->first);
     free(r->loop_runs);
+    free(r->near_cost);
+    free(r->near_runs);
+    free(r->near_stamp);
     *r = (sw_seam_runs){0};
 }

@@ -34,6 +34,12 @@ typedef struct sw_seam_runs {
     uint32_t *link;      /* per run: the vertex's next run, SW_SEAM_NONE at the end */
     uint32_t *loop_runs; /* per loop: how many runs are left */
     uint32_t *loop_of;   /* per run: its loop */
+    /* sw_seam_runs_gather's answer, per vertex next to the gathered one:
+     * valid where near_stamp equals stamp */
+    double *near_cost;   /* the largest cost of the runs next to it */
+    uint32_t *near_runs; /* how many of the gathered vertex's runs it is next to */
+    uint32_t *near_stamp;
+    uint32_t stamp, gathered_runs; /* gathered_runs: all runs of the gathered vertex */
 } sw_seam_runs;
 
 /* Runs of graph's original loops: consecutive slots of one vertex are one
@@ -59,6 +65,17 @@ double sw_seam_runs_cost(const sw_seam_runs *r, const sw_seam_host *graph, uint3
  * whose cost would be sampled on the surface. */
 double sw_seam_runs_cost_bound(const sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1,
                                uint32_t v2);
+
+/* sw_seam_runs_cost (exact 1) or sw_seam_runs_cost_bound (exact 0) of
+ * collapsing v1 into each vertex next to one of its runs, in one pass over
+ * v1's runs, read back with sw_seam_runs_cost_to. A vertex of many runs and
+ * many neighbours (a sewn hub) costs its runs once, not once per neighbour. */
+void sw_seam_runs_gather(sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1, int exact);
+
+/* The cost of collapsing the gathered vertex v1 into v2 (the same value as
+ * sw_seam_runs_cost or _bound would give). */
+double sw_seam_runs_cost_to(const sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1,
+                            uint32_t v2);
 
 /* Applies collapse v1 -> v2 into vn (vn's position is v2's). */
 void sw_seam_runs_collapse(sw_seam_runs *r, uint32_t v1, uint32_t v2, uint32_t vn);

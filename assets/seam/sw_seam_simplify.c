@@ -149,14 +149,20 @@ static void update_best(simp *S, uint32_t v, int exact)
     S->cost[v] = INFINITY;
     S->target[v] = UINT32_MAX;
     S->bounded[v] = !exact;
+    if (!is_pinned(S, v))
+        sw_seam_runs_gather(&S->runs, S->g, v, exact);
     for (uint32_t i = 0; i < a->n; i++) {
         uint32_t y = a->v[i];
         if (is_pinned(S, v) || is_pinned(S, y))
             continue;
-        double runs = exact ? sw_seam_runs_cost(&S->runs, S->g, v, y)
-                            : sw_seam_runs_cost_bound(&S->runs, S->g, v, y);
-        double e = fmax(a->n == 1 ? seg_dist(vx[v].p, vx[y].p, vx[y].p) : 0.0, runs);
-        for (uint32_t j = 0; j < a->n; j++)
+        double runs = sw_seam_runs_cost_to(&S->runs, S->g, v, y);
+        double reach = seg_dist(vx[v].p, vx[y].p, vx[y].p);
+        double e = fmax(a->n == 1 ? reach : 0.0, runs);
+        /* No segment from y is farther from v than y itself, so e at reach
+         * is final; and once past the best so far y cannot win (a tie still
+         * can, by its index). A hub of many neighbours, whose runs elsewhere
+         * already cost reach, is spared its pairs. */
+        for (uint32_t j = 0; j < a->n && e < reach && e + S->stored[v] <= S->cost[v]; j++)
             if (j != i)
                 e = fmax(e, seg_dist(vx[v].p, vx[y].p, vx[a->v[j]].p));
         double c = e + S->stored[v];
