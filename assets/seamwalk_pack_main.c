@@ -43,7 +43,7 @@
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
     "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
-    "                           [--up x|y|z|-x|-y|-z]\n"
+    "                           [--up x|y|z|-x|-y|-z] [--cut-patches N]\n"
     "       seamwalk-pack info [--json] PACK\n"
     "       seamwalk-pack verify PACK [--key KEYS.pub]\n"
     "       seamwalk-pack keygen -o PREFIX\n"
@@ -59,7 +59,9 @@ static const char usage_text[] =
     "(default: the file's model tolerance, at least 1e-5 of its smallest part's size\n"
     "and 1e-6 of the whole model's).\n"
     "--up: the model axis that points up (default: z for STEP and IGES, y for .txt\n"
-    "and .bpt, a scene's up_axis or y; inputs that differ: the first's, warned).\n";
+    "and .bpt, a scene's up_axis or y; inputs that differ: the first's, warned).\n"
+    "--cut-patches: parts of more patches are cut into pieces with levels of their\n"
+    "own, drawn apart far away (default 4096; 0: none cut).\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -119,6 +121,7 @@ typedef struct build_options {
     int input_count;
     int quiet, strict, iges_occt;
     double seam_tolerance;      /* 0: sw_seam_default_tolerance */
+    sw_part_levels_options part_levels;   /* --cut-patches */
     int32_t up_axis;            /* --up (sw_up_axis.h); 0: by the inputs (sw_up_inputs.h) */
 } build_options;
 
@@ -300,15 +303,15 @@ typedef struct derived {
     sw_part_levels_built part_levels;
 } derived;
 
-static sw_status build_derived(const sw_pack *pack, derived *d, seam_summary *summary,
-                               sw_error *err)
+static sw_status build_derived(const sw_pack *pack, const sw_part_levels_options *plo, derived *d,
+                               seam_summary *summary, sw_error *err)
 {
     memset(d, 0, sizeof *d);
     sw_status st = sw_levels_build(pack, NULL, &d->levels, &summary->levels, err);
     if (st == SW_OK)
         st = sw_cluster_pack(pack, &d->levels.view, NULL, &d->clusters, &summary->clusters, err);
     if (st == SW_OK)
-        st = sw_part_levels_build(pack, &d->levels.view, NULL, &d->part_levels,
+        st = sw_part_levels_build(pack, &d->levels.view, plo, &d->part_levels,
                                   &summary->part_levels, err);
     if (st != SW_OK) {
         sw_levels_built_free(&d->levels);
@@ -318,7 +321,8 @@ static sw_status build_derived(const sw_pack *pack, derived *d, seam_summary *su
 }
 
 /* The pack in *bytes again, with its static levels and super-surfaces. */
-static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t *size,
+static sw_status add_levels(sw_pack_contents *contents, const sw_part_levels_options *plo,
+                            uint8_t **bytes, size_t *size,
                             seam_summary *summary, sw_error *err)
 {
     sw_pack pack;
@@ -328,7 +332,7 @@ static sw_status add_levels(sw_pack_contents *contents, uint8_t **bytes, size_t 
         return st;
     }
     derived d;
-    st = build_derived(&pack, &d, summary, err);
+    st = build_derived(&pack, plo, &d, summary, err);
     if (st != SW_OK)
         return st;
     uint8_t *with = NULL;
@@ -403,8 +407,9 @@ static sw_status check_not_empty(const build_options *o, const sw_model *model,
 /* The pack in *bytes (replacing what is there), with its static levels and
  * super-surfaces, from contents and the seams as they are now. */
 static sw_status serialize_with_levels(sw_pack_contents *contents, const sw_seam_host *seams,
-                                       progress_context *pc, uint8_t **bytes, size_t *size,
-                                       seam_summary *summary, sw_error *err)
+                                       const sw_part_levels_options *plo, progress_context *pc,
+                                       uint8_t **bytes, size_t *size, seam_summary *summary,
+                                       sw_error *err)
 {
     sw_seam_graph view = sw_seam_host_view(seams);
     contents->seam = &view;
@@ -414,7 +419,7 @@ static sw_status serialize_with_levels(sw_pack_contents *contents, const sw_seam
     sw_status st = sw_pack_serialize(contents, bytes, size, err);
     if (st == SW_OK) {
         on_progress(pc, "static levels, super-surfaces", 0.0);
-        st = add_levels(contents, bytes, size, summary, err);
+        st = add_levels(contents, plo, bytes, size, summary, err);
     }
     contents->seam = NULL;
     return st;
@@ -426,16 +431,18 @@ enum { REPAIR_ROUNDS = 6 };
  * one of its seam states keeps its seams whole (their vertices pinned, the
  * seams simplified again), round after round while that changes something
  * (REPAIR_ROUNDS at most); one still refused fails the build. */
-static sw_status pack_verified(progress_context *pc, const sw_model *model,
-                               sw_pack_contents *contents, sw_seam_host *seams,
-                               seam_summary *summary, uint8_t **bytes, size_t *size, sw_error *err)
+static sw_status pack_verified(const build_options *o, progress_context *pc,
+                               const sw_model *model, sw_pack_contents *contents,
+                               sw_seam_host *seams, seam_summary *summary, uint8_t **bytes,
+                               size_t *size, sw_error *err)
 {
     uint8_t *pinned = calloc((size_t)seams->original_count + 1, 1);
     uint8_t *failed = calloc((size_t)seams->surface_count + 1, 1);
     sw_status st = pinned && failed ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
     const sw_seam_surface_eval eval = { model_point, (void *)model };
     for (int round = 0; st == SW_OK; round++) {
-        st = serialize_with_levels(contents, seams, pc, bytes, size, summary, err);
+        st = serialize_with_levels(contents, seams, &o->part_levels, pc, bytes, size, summary,
+                                   err);
         if (st != SW_OK)
             break;
         on_progress(pc, "verifying", 0.0);
@@ -482,7 +489,7 @@ static sw_status pack_model(const build_options *o, progress_context *pc, sw_mod
         contents.import_note_count = note_count;
         const sw_pack_orientation orientation = { .up_axis = model->up_axis };
         contents.orientation = sw_up_axis_valid(model->up_axis) ? &orientation : NULL;
-        st = pack_verified(pc, model, &contents, &seams, seam_summary_out, &bytes, bytes_out,
+        st = pack_verified(o, pc, model, &contents, &seams, seam_summary_out, &bytes, bytes_out,
                            err);
         sw_pack_contents_free(&contents);
     }
@@ -618,6 +625,14 @@ static int parse_build(int argc, char **argv, build_options *o)
                 !(o->seam_tolerance < 1e30))
                 return usage_error("build: --seam-tolerance takes a length in mm > 0, not '%s'",
                                    t);
+        } else if (strcmp(a, "--cut-patches") == 0) {
+            const char *t = i + 1 < argc ? argv[++i] : "";
+            char *end;
+            unsigned long n = strtoul(t, &end, 10);
+            if (end == t || *end != '\0' || t[0] == '-' || n > UINT32_MAX)
+                return usage_error("build: --cut-patches takes a patch count (0: none cut), "
+                                   "not '%s'", t);
+            o->part_levels.cut_patches = n ? (uint32_t)n : UINT32_MAX;
         } else if (strcmp(a, "--up") == 0) {
             const char *u = i + 1 < argc ? argv[++i] : "";
             if (!sw_up_axis_parse(u, &o->up_axis))

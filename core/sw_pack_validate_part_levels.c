@@ -57,10 +57,19 @@ static sw_status check_group(const sw_pack *pack, const int32_t index[GROUP], sw
     return SW_OK;
 }
 
-/* Level i of piece g (of a part cut into pieces when cut), after the
- * level `prev` of the same piece (NULL for its first): its ranges, front
- * and error. */
-static sw_status check_level(const sw_part_levels *v, uint32_t i, uint32_t g, int cut,
+/* The fronts piece g's levels may have: a part not cut 0; a piece of a cut
+ * part below SW_PART_LEVEL_FRONTS, and its first piece also
+ * SW_PART_LEVEL_WHOLE (the part's levels of itself whole). */
+static int front_allowed(uint32_t front, int cut, int first)
+{
+    return cut ? front < SW_PART_LEVEL_FRONTS || (first && front == SW_PART_LEVEL_WHOLE)
+               : front == 0;
+}
+
+/* Level i of piece g (of a part cut into pieces when cut, its first piece
+ * when first), after the level `prev` of the same piece (NULL for its
+ * first): its ranges, front and error. */
+static sw_status check_level(const sw_part_levels *v, uint32_t i, uint32_t g, int cut, int first,
                              const sw_part_level *prev, sw_error *err)
 {
     const sw_part_level *l = &v->levels[i];
@@ -68,12 +77,14 @@ static sw_status check_level(const sw_part_levels *v, uint32_t i, uint32_t g, in
         return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RECORDS[%u].piece: %u, expected %u "
                             "(PART_LEVEL_RANGES gives it to that piece)", (unsigned)i,
                             (unsigned)l->piece, (unsigned)g);
-    if (l->front >= (cut ? SW_PART_LEVEL_FRONTS : 1) || (prev && l->front < prev->front))
+    if (!front_allowed(l->front, cut, first) || (prev && l->front < prev->front))
         return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RECORDS[%u].front: %u, expected "
                             "below %u (%s) and not below the piece's level before it",
                             (unsigned)i, (unsigned)l->front,
                             cut ? (unsigned)SW_PART_LEVEL_FRONTS : 1u,
-                            cut ? "its part is cut into pieces" : "a part not cut has one");
+                            cut ? (first ? "or 255, its part is cut and this is its first piece"
+                                         : "its part is cut into pieces")
+                                : "a part not cut has one");
     int same = prev && prev->front == l->front;
     if (!isfinite(l->error) || !(l->error > 0) || (same && !(l->error > prev->error)))
         return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RECORDS[%u].error: %g, expected "
@@ -133,18 +144,20 @@ static sw_status check_pieces(const sw_pack *pack, const sw_part_levels *v, sw_e
     return SW_OK;
 }
 
-/* Piece g's levels; cut: its part has other pieces. */
-static sw_status check_piece(const sw_part_levels *v, uint32_t g, int cut, sw_error *err)
+/* Piece g's levels; cut: its part has other pieces; first: g is its
+ * part's first. */
+static sw_status check_piece(const sw_part_levels *v, uint32_t g, int cut, int first,
+                             sw_error *err)
 {
     uint32_t a = v->piece_levels[g], b = v->piece_levels[g + 1];
-    if (b < a || b > v->level_count || b - a > SW_PART_LEVELS_MAX * SW_PART_LEVEL_FRONTS)
+    if (b < a || b > v->level_count || b - a > SW_PART_LEVELS_MAX * (SW_PART_LEVEL_FRONTS + 1))
         return sw_error_set(err, SW_ERR_FORMAT, "PART_LEVEL_RANGES[%u]: %u to %u, expected "
                             "rising by at most %u within the %u levels", (unsigned)g,
                             (unsigned)a, (unsigned)b,
-                            (unsigned)(SW_PART_LEVELS_MAX * SW_PART_LEVEL_FRONTS),
+                            (unsigned)(SW_PART_LEVELS_MAX * (SW_PART_LEVEL_FRONTS + 1)),
                             (unsigned)v->level_count);
     for (uint32_t i = a; i < b; i++) {
-        sw_status st = check_level(v, i, g, cut, i > a ? &v->levels[i - 1] : NULL, err);
+        sw_status st = check_level(v, i, g, cut, first, i > a ? &v->levels[i - 1] : NULL, err);
         if (st != SW_OK)
             return st;
     }
@@ -166,7 +179,7 @@ static sw_status check_records(const sw_pack *pack, const sw_part_levels *v, sw_
         for (e = s; e < v->surface_count && pack->surfaces[e].part == pack->surfaces[s].part; e++)
             end = v->piece_of[e] + 1 > end ? v->piece_of[e] + 1 : end;
         for (uint32_t g = first; st == SW_OK && g < end; g++)
-            st = check_piece(v, g, end - first > 1, err);
+            st = check_piece(v, g, end - first > 1, g == first, err);
     }
     if (st != SW_OK)
         return st;

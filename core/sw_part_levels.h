@@ -37,6 +37,10 @@
 
 #define SW_PART_LEVELS_MAX 8u     /* levels per piece and front */
 #define SW_PART_LEVEL_FRONTS 3u   /* fronts of a cut part (its pieces' borders) */
+/* The front of a cut part's levels of itself whole, kept with its first
+ * piece: far away a whole part has no border to keep, and its pieces'
+ * borders would hold it finer than the bound asks. */
+#define SW_PART_LEVEL_WHOLE 255u
 
 /* Front f of a cut part as a bound (model units): 4^f / 4096 of the
  * diagonal of its patches' boxes. The coarsest front whose levels serve
@@ -67,8 +71,9 @@ typedef struct sw_part_level {    /* 32 bytes */
                                      bounds the shape, not the normals, so the walk holds
                                      this to a bound of its own. */
     uint32_t front;               /* the front its border is locked at, < SW_PART_LEVEL_FRONTS;
-                                     0 for the piece of a part not cut; a piece's levels
-                                     by front, rising */
+                                     0 for the piece of a part not cut; SW_PART_LEVEL_WHOLE:
+                                     a level of the whole cut part, on its first piece; a
+                                     piece's levels by front, rising */
 } sw_part_level;
 
 /* Section PART_LEVELS: the counts. */

@@ -28,9 +28,10 @@ target_include_directories(test_part_levels_build_prog PRIVATE ${CMAKE_CURRENT_S
 sw_apply_warnings(test_part_levels_build_prog)
 add_test(NAME part_levels_teaset COMMAND bash -c
   "$<TARGET_FILE:seamwalk-pack> build ${PROJECT_SOURCE_DIR}/assets/samples/teaset.ini -o ${CMAKE_CURRENT_BINARY_DIR}/part_levels_teaset.swpack --quiet && $<TARGET_FILE:test_part_levels_build_prog> ${CMAKE_CURRENT_BINARY_DIR}/part_levels_teaset.swpack")
-# A part cut into pieces (a generated courtyard of 1,400 patches, one part):
+# A part cut into pieces (a generated courtyard of 1,400 patches, one part,
+# cut past 512 patches):
 # its pieces' levels against its surfaces, and their borders against each
 # other at every front; fails when no part is cut. The pictures of such a
 # part are tests/test_pieces.sh (firmware.cmake).
 add_test(NAME part_levels_courtyard COMMAND bash -c
-  "python3 ${CMAKE_CURRENT_SOURCE_DIR}/gen_soup.py ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.igs --cells 24 > /dev/null && $<TARGET_FILE:seamwalk-pack> build ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.igs -o ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.swpack --quiet && $<TARGET_FILE:test_part_levels_build_prog> --cut ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.swpack")
+  "python3 ${CMAKE_CURRENT_SOURCE_DIR}/gen_soup.py ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.igs --cells 24 > /dev/null && $<TARGET_FILE:seamwalk-pack> build ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.igs -o ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.swpack --cut-patches 512 --quiet && $<TARGET_FILE:test_part_levels_build_prog> --cut ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.swpack")

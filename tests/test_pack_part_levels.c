@@ -94,6 +94,9 @@ static void test_rules(void)
                     SW_ERR_RANGE, "PART_LEVEL_RECORDS[0]: indices 0 + 5");
     expect_rejected((make_sample_part_levels(&k), k.levels[1].index_count = 6, &k),
                     SW_ERR_RANGE, "PART_LEVEL_RECORDS[1]: indices 6 + 6");
+    expect_rejected((make_sample_part_levels(&k), k.levels[1].front = SW_PART_LEVEL_WHOLE, &k),
+                    SW_ERR_FORMAT, "PART_LEVEL_RECORDS[1].front: 255, expected below 1 (a part "
+                    "not cut has one)");
     expect_rejected((make_sample_part_levels(&k), k.levels[1].front = 1, &k),
                     SW_ERR_FORMAT, "PART_LEVEL_RECORDS[1].front: 1, expected below 1 (a part "
                     "not cut has one)");
@@ -105,8 +108,8 @@ static void test_rules(void)
                     "PART_LEVEL_INDICES[8]: 3, expected < 3");
     expect_rejected((make_sample_part_levels(&k), k.part_levels[2] = 1, &k), SW_ERR_FORMAT,
                     "PART_LEVEL_RANGES: runs from 0 to 1, expected 0 to 2");
-    expect_rejected((make_sample_part_levels(&k), k.part_levels[1] = 30, &k), SW_ERR_FORMAT,
-                    "PART_LEVEL_RANGES[0]: 0 to 30, expected rising by at most 24 within the 2");
+    expect_rejected((make_sample_part_levels(&k), k.part_levels[1] = 33, &k), SW_ERR_FORMAT,
+                    "PART_LEVEL_RANGES[0]: 0 to 33, expected rising by at most 32 within the 2");
     expect_rejected((make_sample_part_levels(&k), k.piece_of[1] = 0, &k), SW_ERR_FORMAT,
                     "PART_LEVEL_PIECE_OF[1]: 0, expected 1 to 1 (a part's own pieces");
     expect_rejected((make_sample_part_levels(&k), k.piece_of[0] = 1, &k), SW_ERR_FORMAT,

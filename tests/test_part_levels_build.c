@@ -54,16 +54,25 @@ static mesh level_mesh(const sw_part_levels *pl, const sw_part_level *l)
     return m;
 }
 
-/* Piece g's source (sw_part_source.h: its surfaces' static levels joined
- * at one front, the mesh its levels were simplified from) as one mesh;
- * *error the largest of its surfaces' errors; *finest_tris its triangles. */
-static mesh finest_mesh(const sw_part_source *src, const sw_part_levels *pl, uint32_t g,
-                        double *error, uint32_t *finest_tris)
+/* The surfaces a level stands for: piece g's, or with whole a part number
+ * the whole of that part's (a cut part's levels of itself whole). */
+static int stands_for(const sw_pack *pack, uint32_t s, uint32_t g, uint32_t whole)
+{
+    return whole != UINT32_MAX ? pack->surfaces[s].part == whole
+                               : pack->part_levels.piece_of[s] == g;
+}
+
+/* The source of what a level stands for (sw_part_source.h: the surfaces'
+ * static levels joined at one front, the mesh its levels were simplified
+ * from) as one mesh; *error the largest of its surfaces' errors;
+ * *finest_tris its triangles. */
+static mesh finest_mesh(const sw_part_source *src, const sw_pack *pack, uint32_t g,
+                        uint32_t whole, double *error, uint32_t *finest_tris)
 {
     mesh m = { NULL, NULL, 0, 0, NULL };
     *error = 0;
     for (uint32_t s = 0; s < src->surface_count; s++) {
-        if (pl->piece_of[s] != g || isnan(src->error[s]))
+        if (!stands_for(pack, s, g, whole) || isnan(src->error[s]))
             continue;
         *error = fmax(*error, src->error[s]);
         uint32_t v0 = src->surface_vertices[s], nv = src->surface_vertices[s + 1] - v0;
@@ -81,16 +90,17 @@ static mesh finest_mesh(const sw_part_source *src, const sw_part_levels *pl, uin
     return m;
 }
 
-/* The largest distance from random points on piece g's untrimmed surfaces
- * to grid's mesh. */
-static double surface_to_level(const sw_pack *pack, uint32_t g, const sw_mesh_grid *grid)
+/* The largest distance from random points on the untrimmed surfaces a
+ * level stands for to grid's mesh. */
+static double surface_to_level(const sw_pack *pack, uint32_t g, uint32_t whole,
+                               const sw_mesh_grid *grid)
 {
     double worst = 0;
     sw_trim_patch patches[4096];
     for (uint32_t s = 0; s < pack->surface_count; s++) {
         const sw_pack_surface *sf = &pack->surfaces[s];
         uint32_t count = 0;
-        if (pack->part_levels.piece_of[s] != g || sf->loop_count > 0 ||
+        if (!stands_for(pack, s, g, whole) || sf->loop_count > 0 ||
             sw_trim_patches_from_pack(pack, s, patches, 4096, &count, NULL) != SW_OK)
             continue;
         for (int k = 0; k < 200; k++) {
@@ -191,14 +201,17 @@ static double shaded_wrong_side(const sw_part_levels *pl, const sw_part_level *l
     return sqrt(area);
 }
 
-/* Piece g's levels at front f, against src (the source at that front). */
+/* Piece g's levels at front f, against src (the source at that front);
+ * for f SW_PART_LEVEL_WHOLE, its part's levels of itself whole. */
 static void check_piece(const sw_pack *pack, const sw_part_source *src, uint32_t g, uint32_t f,
                         int cut)
 {
     const sw_part_levels *pl = &pack->part_levels;
     double finest_error = 0;
-    uint32_t finest_tris = 0;
-    mesh finest = finest_mesh(src, pl, g, &finest_error, &finest_tris);
+    uint32_t finest_tris = 0, whole = UINT32_MAX;
+    for (uint32_t s = 0; f == SW_PART_LEVEL_WHOLE && s < pack->surface_count; s++)
+        whole = pl->piece_of[s] == g ? pack->surfaces[s].part : whole;
+    mesh finest = finest_mesh(src, pack, g, whole, &finest_error, &finest_tris);
     sw_mesh_view fv = { finest.pos, finest.idx, finest.nv, finest.ni };
     sw_mesh_grid *fgrid = sw_mesh_grid_make(&fv);
     SW_CHECK(fgrid != NULL);
@@ -214,7 +227,7 @@ static void check_piece(const sw_pack *pack, const sw_part_source *src, uint32_t
          * target apart; a peak between its points (the middle of a hole a
          * coarse level covers over) can be missed by up to a quarter. */
         double slack = 1.25 * l->error + 1e-6;
-        double from_surface = surface_to_level(pack, g, grid);
+        double from_surface = surface_to_level(pack, g, whole, grid);
         double from_level = level_to_mesh(&m, fgrid);
         SW_CHECK_MSG(from_surface <= slack, "piece %u front %u level %u: a surface point %g from "
                      "it, error %g", g, f, i, from_surface, (double)l->error);
@@ -337,6 +350,8 @@ static int check_pieces(const sw_pack *pack)
         cut_parts += end - first > 1;
         for (uint32_t g = first; end - first == 1 && g < end; g++)
             check_piece(pack, &src, g, 0, 0);
+        if (end - first > 1)   /* the cut part's levels of itself whole, on its first piece */
+            check_piece(pack, &src, first, SW_PART_LEVEL_WHOLE, 0);
     }
     sw_part_source_free(&src);
     float *at = calloc(pack->surface_count + 1, sizeof *at);

@@ -3,10 +3,10 @@
 # A part cut into pieces, drawn far away from its pieces' levels:
 #   test_pieces.sh BUILD_DIR SOURCE_DIR
 # A courtyard of 40 x 40 cells (tests/gen_soup.py: one part of 3,800
-# patches, more than the 1,024 past which a part is cut):
+# patches, cut past 1,024 with --cut-patches; the default is 4,096):
 # - its pack's part levels against what they stand for, and its pieces'
-#   borders against each other at every front (test_part_levels_build
-#   --cut: fails on a pack with no part cut);
+#   borders against each other at every front, and its levels of itself
+#   whole (test_part_levels_build --cut: fails on a pack with no part cut);
 # - the whole courtyard in view (--orbit, 16 frames at 1280x720) as the
 #   kiosk service walks it, against the reference walk (--workers 0
 #   --part-levels 0), every 5th frame: no interior background pixel, at
@@ -23,7 +23,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 python3 "$src/tests/gen_soup.py" "$work/court.igs" --cells 40 > "$work/gen.log" 2>&1 \
   || fail "gen_soup: $(tail -n 3 "$work/gen.log")"
-"$tool" build "$work/court.igs" -o "$work/court.swpack" > "$work/build.log" 2>&1 \
+"$tool" build "$work/court.igs" -o "$work/court.swpack" --cut-patches 1024 > "$work/build.log" 2>&1 \
   || fail "build: $(tail -n 3 "$work/build.log")"
 grep "part levels" "$work/build.log"
 "$build/tests/test_part_levels_build_prog" --cut "$work/court.swpack" > "$work/levels.log" 2>&1 \

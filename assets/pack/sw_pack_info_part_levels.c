@@ -8,7 +8,8 @@
 
 #include "sw_pack_info.h"
 
-enum { ROWS = SW_PART_LEVELS_MAX * SW_PART_LEVEL_FRONTS };
+/* Rows by front and rank; the cut parts' levels of themselves whole last. */
+enum { ROWS = SW_PART_LEVELS_MAX * (SW_PART_LEVEL_FRONTS + 1) };
 
 typedef struct part_level_figures {
     uint32_t pieces, cut_parts, cut_pieces, levels[ROWS];
@@ -23,7 +24,9 @@ static uint32_t row_of(const sw_part_levels *pl, uint32_t first, uint32_t i)
     uint32_t rank = 0;
     for (uint32_t k = i; k > first && pl->levels[k - 1].front == pl->levels[i].front; k--)
         rank++;
-    return pl->levels[i].front * SW_PART_LEVELS_MAX + rank;
+    uint32_t f = pl->levels[i].front == SW_PART_LEVEL_WHOLE ? SW_PART_LEVEL_FRONTS
+                                                             : pl->levels[i].front;
+    return f * SW_PART_LEVELS_MAX + rank;
 }
 
 /* Parts cut into pieces: part by part (a run of surfaces, as the reader
@@ -76,12 +79,16 @@ void sw_pack_print_part_levels_text(FILE *out, const sw_pack *pack)
             "), %" PRIu32 " levels, %" PRIu64 " bytes\n", "part levels", f.pieces,
             pack->part_levels.piece_count, f.cut_parts, f.cut_pieces,
             pack->part_levels.level_count, f.bytes);
-    for (uint32_t r = 0; r < ROWS; r++)
-        if (f.levels[r])
-            fprintf(out, "    front %" PRIu32 " rank %-2" PRIu32 " %" PRIu32 " levels, %" PRIu64
-                    " triangles, error max %.6g, shading side max %.6g\n",
-                    r / SW_PART_LEVELS_MAX, r % SW_PART_LEVELS_MAX, f.levels[r], f.triangles[r],
-                    f.error_max[r], f.shading_side_max[r]);
+    for (uint32_t r = 0; r < ROWS; r++) {
+        if (!f.levels[r])
+            continue;
+        char front[16] = "whole";
+        if (r / SW_PART_LEVELS_MAX < SW_PART_LEVEL_FRONTS)
+            snprintf(front, sizeof front, "front %u", (unsigned)(r / SW_PART_LEVELS_MAX));
+        fprintf(out, "    %-7s rank %-2" PRIu32 " %" PRIu32 " levels, %" PRIu64 " triangles, "
+                "error max %.6g, shading side max %.6g\n", front, r % SW_PART_LEVELS_MAX,
+                f.levels[r], f.triangles[r], f.error_max[r], f.shading_side_max[r]);
+    }
 }
 
 void sw_pack_print_part_levels_json(FILE *out, const sw_pack *pack)
@@ -101,7 +108,9 @@ void sw_pack_print_part_levels_json(FILE *out, const sw_pack *pack)
             continue;
         fprintf(out, "%s{\"front\": %" PRIu32 ", \"rank\": %" PRIu32 ", \"levels\": %" PRIu32
                 ", \"triangles\": %" PRIu64 ", \"error_max\": %.9g, \"shading_side_max\": %.9g}",
-                sep, r / SW_PART_LEVELS_MAX, r % SW_PART_LEVELS_MAX, f.levels[r],
+                sep, r / SW_PART_LEVELS_MAX < SW_PART_LEVEL_FRONTS ? r / SW_PART_LEVELS_MAX
+                                                                  : SW_PART_LEVEL_WHOLE,
+                r % SW_PART_LEVELS_MAX, f.levels[r],
                 f.triangles[r], f.error_max[r], f.shading_side_max[r]);
         sep = ", ";
     }

@@ -59,6 +59,7 @@ static int folds(const sw_part_mesh *m, size_t n)
 typedef struct piece_job {
     uint32_t piece, front;
     int cut;                      /* its part is cut: border locked, source kept first */
+    double min_bound;             /* no level made for a finer bound (its front's) */
     const sw_part_levels_options *opt;
     sw_part_levels_report *r;
     sw_mesh_view source;
@@ -130,8 +131,9 @@ static sw_status build_piece(sw_part_mesh *m, sw_part_level_arrays *o, piece_job
     }
     for (uint32_t k = 0; room && scale > 0 && k < j->opt->count; k++) {
         double bound = size * j->opt->finest * pow(j->opt->step, k);
-        if (bound <= 2 * m->error)
-            continue;   /* the source is not that much closer to the surfaces */
+        if (bound <= 2 * m->error || bound < j->min_bound)
+            continue;   /* the source is not that much closer to the surfaces, or the
+                           front's border holds the level coarser than that anyway */
         size_t n = simplify_toward(m, j, bound, scale);
         if (n == 0)
             continue;
@@ -205,20 +207,32 @@ static void free_sources(piece_sources *ps)
 }
 
 /* Piece g of the part whose surfaces are [first, end), at every front it
- * is made at. */
+ * is made at; cut_diagonal: the part's diagonal when it is cut, else -1. A
+ * cut part's first piece also keeps the part's levels of itself whole. */
 static sw_status build_one_piece(sw_part_mesh *m, sw_part_level_arrays *o, const sw_levels *levels,
-                                 const uint32_t *piece_of, const piece_sources *ps, int cut,
-                                 uint32_t g, uint32_t first, uint32_t end,
+                                 const uint32_t *piece_of, const piece_sources *ps,
+                                 double cut_diagonal, uint32_t g, uint32_t first, uint32_t end,
                                  const sw_part_levels_options *opt, sw_part_levels_report *r,
                                  sw_error *err)
 {
     uint32_t before = o->level_count;
+    int cut = cut_diagonal >= 0;
     sw_status st = SW_OK;
     for (uint32_t f = 0; st == SW_OK && f < (cut ? SW_PART_LEVEL_FRONTS : 1u); f++) {
         const sw_part_source *src = cut ? &ps->front[f] : &ps->finest;
         int got = sw_part_mesh_gather(m, levels, piece_of, src, g, first, end);
         r->incomplete += got < 0;
-        piece_job j = { .piece = g, .front = f, .cut = cut, .opt = opt, .r = r };
+        piece_job j = { .piece = g, .front = f, .cut = cut, .opt = opt, .r = r,
+                        .min_bound = f ? sw_part_level_front_bound(cut_diagonal, f) : 0 };
+        if (got == 0 || (got > 0 && (!sw_part_mesh_weld(m) || !sw_part_mesh_orient(m))))
+            st = sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+        else if (got > 0 && m->icount > 0)
+            st = build_piece(m, o, &j, err);
+    }
+    if (st == SW_OK && cut && g == piece_of[first]) {   /* the whole part, far away */
+        int got = sw_part_mesh_gather(m, levels, piece_of, &ps->finest, SW_PART_MESH_ALL, first,
+                                      end);
+        piece_job j = { .piece = g, .front = SW_PART_LEVEL_WHOLE, .opt = opt, .r = r };
         if (got == 0 || (got > 0 && (!sw_part_mesh_weld(m) || !sw_part_mesh_orient(m))))
             st = sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
         else if (got > 0 && m->icount > 0)
@@ -241,7 +255,8 @@ static sw_status build_all(const sw_pack *pack, const sw_levels *levels, const u
         for (e = s; e < pack->surface_count && pack->surfaces[e].part == part; e++)
             end = piece_of[e] + 1 > end ? piece_of[e] + 1 : end;
         for (uint32_t g = first; st == SW_OK && g < end; g++) {
-            st = build_one_piece(&m, o, levels, piece_of, ps, cut[part], g, s, e, opt, r, err);
+            double diagonal = cut[part] ? sw_part_diagonal(pack, part) : -1;
+            st = build_one_piece(&m, o, levels, piece_of, ps, diagonal, g, s, e, opt, r, err);
             piece_levels[g + 1] = o->level_count;
         }
     }

@@ -48,7 +48,8 @@ typedef struct sw_part_levels_options {
     double step;        /* each level's bound over the one before (0: 2) */
     uint32_t count;     /* levels tried per piece and front (0 and at most:
                            SW_PART_LEVELS_MAX) */
-    uint32_t cut_patches;   /* parts with more patches are cut into pieces (0: 1024) */
+    uint32_t cut_patches;   /* parts with more patches are cut into pieces (0:
+                               SW_PART_CUT_PATCHES, sw_part_pieces.h) */
     uint32_t piece_patches; /* patches a piece, at most (0: 256) */
 } sw_part_levels_options;
 

@@ -15,7 +15,7 @@ int sw_part_mesh_gather(sw_part_mesh *m, const sw_levels *levels, const uint32_t
 {
     m->count = 0, m->icount = 0, m->error = 0;
     for (uint32_t s = first; s < end; s++) {
-        if (piece_of[s] != g)
+        if (g != SW_PART_MESH_ALL && piece_of[s] != g)
             continue;
         if (levels->surface_levels[s] == levels->surface_levels[s + 1])
             return -1;

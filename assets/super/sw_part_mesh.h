@@ -61,9 +61,12 @@ static inline void sw_part_face_normal(const float *a, const float *b, const flo
     n[2] = e1[0] * e2[1] - e1[1] * e2[0];
 }
 
+/* Every surface of the range, for sw_part_mesh_gather. */
+#define SW_PART_MESH_ALL UINT32_MAX
+
 /* Piece g's source vertices and triangles gathered from its part's
- * surfaces [first, end); 0 when out of memory, -1 when a surface of it has
- * no level. */
+ * surfaces [first, end) (all of them for g SW_PART_MESH_ALL); 0 when out
+ * of memory, -1 when a surface of it has no level. */
 int sw_part_mesh_gather(sw_part_mesh *m, const sw_levels *levels, const uint32_t *piece_of,
                         const sw_part_source *src, uint32_t g, uint32_t first, uint32_t end);
 

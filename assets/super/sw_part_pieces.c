@@ -80,7 +80,7 @@ static void renumber(uint32_t *piece_of, uint32_t first, uint32_t end, uint32_t 
 sw_status sw_part_pieces(const sw_pack *pack, const sw_part_pieces_options *opt,
                          uint32_t *piece_of, uint32_t *piece_count, sw_error *err)
 {
-    uint32_t cut = opt && opt->cut_patches ? opt->cut_patches : 1024;
+    uint32_t cut = opt && opt->cut_patches ? opt->cut_patches : SW_PART_CUT_PATCHES;
     uint32_t most = opt && opt->piece_patches ? opt->piece_patches : 256;
     uint32_t n = pack->surface_count;
     *piece_count = 0;

@@ -7,10 +7,11 @@
  * surface it stands for is drawn within that surface's own bound, and
  * whose area shaded wrong is at most a square of SHADING_SIDE_PX there: a
  * level's error bounds its shape, not its normals. A part cut into pieces
- * is drawn from its pieces' levels only when every piece of it in view has
- * one at the same front (their borders then meet vertex for vertex), the
- * coarsest such front; else, as a part none of whose levels is within
- * reach, by its surfaces again, at once from their static levels where
+ * is drawn whole from a level of its own when one is within the bound at
+ * its nearest depth; else from its pieces' levels when every piece of it
+ * in view has one at the same front (their borders then meet vertex for
+ * vertex), the coarsest such front; else, as a part none of whose levels
+ * is within reach, by its surfaces again, at once from their static levels where
  * the meshes are not made yet. The surfaces a piece stands for are neither
  * drawn nor given work. */
 #include <math.h>
@@ -21,6 +22,10 @@
  * few pixels of a part, where the error bound alone would let a level
  * shade a face as the faces around it. */
 #define SHADING_SIDE_PX 2.0
+
+/* part_level of a piece drawn by its part's level of itself whole: covered,
+ * not drawn on its own (above every level index). */
+#define SW_SEAM_PIECE_COVERED (UINT32_MAX - 1)
 
 static int in_view(uint8_t v)
 {
@@ -72,25 +77,48 @@ static uint32_t coarsest_within(const sw_part_levels *pl, uint32_t g, uint32_t f
     return UINT32_MAX;
 }
 
+/* Piece g's coarsest level at front f within the bound at depth. */
+static uint32_t level_at(const sw_seam_walk *w, const sw_view *view, uint32_t g, uint32_t f,
+                         double depth)
+{
+    double bound = w->part_levels_coarsest
+                       ? INFINITY
+                       : sw_view_error_world(view, w->error_px, fmax(depth, view->near_z));
+    return coarsest_within(w->part_levels, g, f, bound, bound * (SHADING_SIDE_PX / w->error_px));
+}
+
+/* Cut part p (pieces [a, b)) whole from a level of its own, kept with its
+ * first piece, the other pieces marked covered by it; 0 when none is
+ * within the bound at its nearest depth in view. */
+static int choose_whole(sw_seam_walk *w, const sw_view *view, uint32_t a, uint32_t b)
+{
+    double depth = INFINITY;
+    for (uint32_t g = a; g < b; g++)
+        depth = fmin(depth, w->part_depth[g]);
+    uint32_t l = isfinite(depth) ? level_at(w, view, a, SW_PART_LEVEL_WHOLE, depth) : UINT32_MAX;
+    if (l == UINT32_MAX)
+        return 0;
+    for (uint32_t g = a; g < b; g++)
+        w->part_level[g] = SW_SEAM_PIECE_COVERED;
+    w->part_level[a] = l, w->part_depth[a] = depth;
+    return 1;
+}
+
 /* Part p's pieces in view, each from its coarsest level within its bound
  * at one front, the coarsest front that serves them all; none when no
- * front does. */
+ * front does. A cut part whole first, where a level of its own serves. */
 static void choose_part(sw_seam_walk *w, const sw_view *view, uint32_t p)
 {
-    const sw_part_levels *pl = w->part_levels;
     uint32_t a = w->part_pieces[p], b = w->part_pieces[p + 1];
+    if (b - a > 1 && choose_whole(w, view, a, b))
+        return;
     uint32_t fronts = b - a > 1 ? SW_PART_LEVEL_FRONTS : 1;
     for (uint32_t f = fronts; f-- > 0;) {
         int all = 1, any = 0;
         for (uint32_t g = a; g < b && all; g++) {
             if (!isfinite(w->part_depth[g]))
                 continue;
-            double bound = w->part_levels_coarsest
-                               ? INFINITY
-                               : sw_view_error_world(view, w->error_px,
-                                                     fmax(w->part_depth[g], view->near_z));
-            w->part_level[g] = coarsest_within(pl, g, f, bound,
-                                               bound * (SHADING_SIDE_PX / w->error_px));
+            w->part_level[g] = level_at(w, view, g, f, w->part_depth[g]);
             all = w->part_level[g] != UINT32_MAX, any = 1;
         }
         if (any && all)
@@ -128,8 +156,8 @@ void sw_seam_walk_plan_parts(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame 
     const sw_part_levels *pl = w->part_levels;
     frame->drawn_surfaces += frame->covered_surfaces;   /* drawn, through their pieces */
     for (uint32_t g = 0; pl && g < pl->piece_count; g++) {
-        if (w->part_level[g] == UINT32_MAX)
-            continue;
+        if (w->part_level[g] >= SW_SEAM_PIECE_COVERED)
+            continue;   /* none, or drawn by its part's level of itself whole */
         const sw_part_level *l = &pl->levels[w->part_level[g]];
         const sw_seam_draw_item item = {
             .surface = UINT32_MAX, .part = w->piece_part[g], .first_vertex = l->first_vertex,
