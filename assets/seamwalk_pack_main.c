@@ -18,27 +18,22 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "sw_cluster.h"
 #include "sw_gen_showroom.h"
 #include "sw_import.h"
 #include "sw_import_iges.h"
 #include "sw_import_occt.h"
-#include "sw_levels_build.h"
-#include "sw_part_levels_build.h"
 #include "sw_model.h"
 #include "sw_pack.h"
-#include "sw_pack_import_notes.h"
 #include "sw_pack_info.h"
 #include "sw_pack_sign.h"
 #include "sw_pack_verify_tess.h"
-#include "sw_pack_write.h"
 #include "sw_progress.h"
 #include "sw_scene.h"
-#include "sw_seam_sew.h"
-#include "sw_seam_simplify.h"
 #include "sw_text_scan.h"
 #include "sw_up_axis.h"
 #include "sw_up_inputs.h"
+
+#include "seamwalk_pack_build.h"
 
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
@@ -74,7 +69,7 @@ static int fail(const sw_error *err)
     return 1;
 }
 
-static double now_s(void)
+double sw_pack_tool_now_s(void)
 {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
@@ -85,7 +80,7 @@ static double now_s(void)
 
 enum input_kind { INPUT_SCENE, INPUT_IGES, INPUT_STEP, INPUT_OTHER };
 
-static const char *base_name(const char *path)
+const char *sw_pack_tool_base_name(const char *path)
 {
     const char *slash = strrchr(path, '/');
     return slash ? slash + 1 : path;
@@ -93,7 +88,7 @@ static const char *base_name(const char *path)
 
 static enum input_kind kind_of(const char *path)
 {
-    const char *dot = strrchr(base_name(path), '.');
+    const char *dot = strrchr(sw_pack_tool_base_name(path), '.');
     if (sw_scene_is_scene_path(path))
         return INPUT_SCENE;
     if (dot && (strcasecmp(dot, ".igs") == 0 || strcasecmp(dot, ".iges") == 0))
@@ -106,7 +101,7 @@ static enum input_kind kind_of(const char *path)
 /* The part name for a model file: its base name without the extension. */
 static void part_name_for(const char *path, char name[56])
 {
-    const char *base = base_name(path);
+    const char *base = sw_pack_tool_base_name(path);
     const char *dot = strrchr(base, '.');
     size_t len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
     if (len > 55)
@@ -115,28 +110,7 @@ static void part_name_for(const char *path, char name[56])
     name[len] = '\0';
 }
 
-typedef struct build_options {
-    const char *out_path;
-    const char **inputs;
-    int input_count;
-    int quiet, strict, iges_occt;
-    double seam_tolerance;      /* 0: sw_seam_default_tolerance */
-    sw_part_levels_options part_levels;   /* --cut-patches */
-    int32_t up_axis;            /* --up (sw_up_axis.h); 0: by the inputs (sw_up_inputs.h) */
-} build_options;
-
-/* What the progress callbacks need to label a stage and count its rate:
- * faces are the surfaces the importer added so far, patches the fraction of
- * the model's. */
-typedef struct progress_context {
-    sw_progress bar;
-    const sw_model *model;
-    char prefix[80];            /* "importing hammer.iges" or "packing" */
-    size_t surfaces_before;
-    int importing;
-} progress_context;
-
-static void on_progress(void *user, const char *stage, double fraction)
+void sw_pack_tool_progress(void *user, const char *stage, double fraction)
 {
     progress_context *c = user;
     char label[160];
@@ -214,9 +188,9 @@ static sw_status add_input(const build_options *o, int i, progress_context *pc, 
 {
     const char *path = o->inputs[i];
     enum input_kind kind = kind_of(path);
-    sw_import_options opts = { .strict = o->strict, .progress = on_progress,
+    sw_import_options opts = { .strict = o->strict, .progress = sw_pack_tool_progress,
                                .progress_user = pc };
-    snprintf(pc->prefix, sizeof pc->prefix, "importing %s", base_name(path));
+    snprintf(pc->prefix, sizeof pc->prefix, "importing %s", sw_pack_tool_base_name(path));
     pc->surfaces_before = model->surface_count;
     pc->importing = 1;
     sw_status st;
@@ -241,268 +215,6 @@ static sw_status add_input(const build_options *o, int i, progress_context *pc, 
     return st;
 }
 
-/* The Seam Graph (paper 004, sections 4-5): the trims flattened and sewn
- * across surfaces, then the collapse hierarchy over the seams. */
-typedef struct seam_summary {
-    sw_seam_report sewing;
-    uint32_t collapses;
-    double simplify_s;
-    sw_levels_report levels;
-    sw_cluster_report clusters;
-    sw_part_levels_report part_levels;
-    uint32_t pinned_surfaces;   /* whose seams were kept whole so that they tessellate */
-} seam_summary;
-
-/* The simplifier's view of the exact surfaces (sw_seam_runs.h). */
-static void model_point(void *ctx, uint32_t surface, double u, double v, double out[3])
-{
-    const sw_model *model = ctx;
-    sw_nurbs_surface view = sw_model_surface_view(&model->surfaces[surface]);
-    u = fmin(fmax(u, view.knots_u[view.degree_u]), view.knots_u[view.count_u]);
-    v = fmin(fmax(v, view.knots_v[view.degree_v]), view.knots_v[view.count_v]);
-    sw_vec3 p = sw_nurbs_surface_point(&view, u, v);
-    out[0] = p.x, out[1] = p.y, out[2] = p.z;
-}
-
-static sw_status build_seams(const build_options *o, progress_context *pc, const sw_model *model,
-                             sw_seam_host *seams, seam_summary *summary, sw_error *err)
-{
-    on_progress(pc, "sewing seams", 0.0);
-    memset(summary, 0, sizeof *summary);
-    sw_seam_options opt = { .tolerance = o->seam_tolerance };
-    sw_status st = sw_seam_sew_model(model, &opt, seams, &summary->sewing, err);
-    if (st == SW_OK) {
-        on_progress(pc, "simplifying seams", 0.0);
-        double t0 = now_s();
-        const sw_seam_surface_eval eval = { model_point, (void *)model };
-        st = sw_seam_simplify_on(seams, &eval, err);
-        summary->simplify_s = now_s() - t0;
-        summary->collapses = seams->collapse_count;
-    }
-    if (st != SW_OK)
-        sw_error_prefix(err, "seam graph");
-    return st;
-}
-
-/* The inputs' file names (no folders) for the import notes; NULL when out
- * of memory. */
-static const char **input_names(const build_options *o)
-{
-    const char **names = calloc((size_t)o->input_count + 1, sizeof *names);
-    for (int i = 0; names && i < o->input_count; i++)
-        names[i] = base_name(o->inputs[i]);
-    return names;
-}
-
-/* The static levels and the super-surfaces of a pack (sw_levels_build.h,
- * sw_cluster.h), made from the pack as the runtime reads it; the clusters
- * are capped by the levels' triangles, so they come second. */
-typedef struct derived {
-    sw_levels_built levels;
-    sw_clusters_built clusters;
-    sw_part_levels_built part_levels;
-} derived;
-
-static sw_status build_derived(const sw_pack *pack, const sw_part_levels_options *plo, derived *d,
-                               seam_summary *summary, sw_error *err)
-{
-    memset(d, 0, sizeof *d);
-    sw_status st = sw_levels_build(pack, NULL, &d->levels, &summary->levels, err);
-    if (st == SW_OK)
-        st = sw_cluster_pack(pack, &d->levels.view, NULL, &d->clusters, &summary->clusters, err);
-    if (st == SW_OK)
-        st = sw_part_levels_build(pack, &d->levels.view, plo, &d->part_levels,
-                                  &summary->part_levels, err);
-    if (st != SW_OK) {
-        sw_levels_built_free(&d->levels);
-        sw_clusters_built_free(&d->clusters);
-    }
-    return st;
-}
-
-/* The pack in *bytes again, with its static levels and super-surfaces. */
-static sw_status add_levels(sw_pack_contents *contents, const sw_part_levels_options *plo,
-                            uint8_t **bytes, size_t *size,
-                            seam_summary *summary, sw_error *err)
-{
-    sw_pack pack;
-    sw_status st = sw_pack_open_memory(*bytes, *size, &pack, err);
-    if (st != SW_OK) {
-        sw_error_prefix(err, "the pack as written");
-        return st;
-    }
-    derived d;
-    st = build_derived(&pack, plo, &d, summary, err);
-    if (st != SW_OK)
-        return st;
-    uint8_t *with = NULL;
-    size_t with_size = 0;
-    contents->levels = &d.levels.view;
-    contents->supers = &d.clusters.view;
-    contents->part_levels = &d.part_levels.view;
-    st = sw_pack_serialize(contents, &with, &with_size, err);
-    contents->levels = NULL;
-    contents->supers = NULL;
-    contents->part_levels = NULL;
-    sw_levels_built_free(&d.levels);
-    sw_clusters_built_free(&d.clusters);
-    sw_part_levels_built_free(&d.part_levels);
-    /* Read back as the runtime will: a pack the reader refuses is not
-     * written. */
-    if (st == SW_OK && (st = sw_pack_open_memory(with, with_size, &pack, err)) != SW_OK)
-        sw_error_prefix(err, "the pack with its static levels and super-surfaces");
-    if (st != SW_OK) {
-        free(with);
-        return st;
-    }
-    free(*bytes);
-    *bytes = with, *size = with_size;
-    return SW_OK;
-}
-
-/* The pack as verify reads it: a surface refused at one of its seam states
- * would be a hole in the walk, so such a pack is not written. The error
- * names the surface's part and its place there as well as its number. */
-static sw_status verify_before_writing(const uint8_t *bytes, size_t size, const sw_model *model,
-                                       uint8_t *failed, sw_error *err)
-{
-    sw_pack pack;
-    sw_pack_tess_report tess = { .first_failed = UINT32_MAX };
-    sw_status st = sw_pack_open_memory(bytes, size, &pack, err);
-    if (st == SW_OK)
-        st = sw_pack_verify_tessellation_marks(&pack, failed, &tess, err);
-    if (st == SW_OK)
-        return SW_OK;
-    if (tess.first_failed < model->surface_count) {
-        const sw_model_surface *s = &model->surfaces[tess.first_failed];
-        const sw_model_part *part = &model->parts[s->part];
-        sw_error_prefix(err, "not written, verify would refuse the pack: part '%s', its surface "
-                        "%zu of %zu", part->name, tess.first_failed - part->first_surface + 1,
-                        part->surface_count);
-    } else {
-        sw_error_prefix(err, "not written, verify would refuse the pack");
-    }
-    return st;
-}
-
-/* A model with nothing to draw makes a pack the runtime refuses: the build
- * fails instead, saying what was left out. */
-static sw_status check_not_empty(const build_options *o, const sw_model *model,
-                                 const sw_import_report *reports, sw_error *err)
-{
-    if (model->patch_count > 0)
-        return SW_OK;
-    for (int i = 0; i < o->input_count; i++) {
-        const sw_import_tally *t = &reports[i].unsupported;
-        if (t->total > 0)
-            return sw_error_set(err, SW_ERR_FORMAT, "%s: nothing to draw: every surface was left "
-                                "out (%zu skipped, the first: %s)", o->inputs[i], t->total,
-                                t->kinds ? t->kind[0] : "of a kind not named");
-    }
-    return sw_error_set(err, SW_ERR_FORMAT, "%s%s: nothing to draw: no surface in the input%s",
-                        o->inputs[0], o->input_count > 1 ? " ..." : "",
-                        o->input_count > 1 ? "s" : "");
-}
-
-/* The pack in *bytes (replacing what is there), with its static levels and
- * super-surfaces, from contents and the seams as they are now. */
-static sw_status serialize_with_levels(sw_pack_contents *contents, const sw_seam_host *seams,
-                                       const sw_part_levels_options *plo, progress_context *pc,
-                                       uint8_t **bytes, size_t *size, seam_summary *summary,
-                                       sw_error *err)
-{
-    sw_seam_graph view = sw_seam_host_view(seams);
-    contents->seam = &view;
-    free(*bytes);
-    *bytes = NULL;
-    on_progress(pc, "serialising", 0.0);
-    sw_status st = sw_pack_serialize(contents, bytes, size, err);
-    if (st == SW_OK) {
-        on_progress(pc, "static levels, super-surfaces", 0.0);
-        st = add_levels(contents, plo, bytes, size, summary, err);
-    }
-    contents->seam = NULL;
-    return st;
-}
-
-enum { REPAIR_ROUNDS = 6 };
-
-/* The pack serialised and verified as `verify` will: a surface refused at
- * one of its seam states keeps its seams whole (their vertices pinned, the
- * seams simplified again), round after round while that changes something
- * (REPAIR_ROUNDS at most); one still refused fails the build. */
-static sw_status pack_verified(const build_options *o, progress_context *pc,
-                               const sw_model *model, sw_pack_contents *contents,
-                               sw_seam_host *seams, seam_summary *summary, uint8_t **bytes,
-                               size_t *size, sw_error *err)
-{
-    uint8_t *pinned = calloc((size_t)seams->original_count + 1, 1);
-    uint8_t *failed = calloc((size_t)seams->surface_count + 1, 1);
-    sw_status st = pinned && failed ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
-    const sw_seam_surface_eval eval = { model_point, (void *)model };
-    for (int round = 0; st == SW_OK; round++) {
-        st = serialize_with_levels(contents, seams, &o->part_levels, pc, bytes, size, summary,
-                                   err);
-        if (st != SW_OK)
-            break;
-        on_progress(pc, "verifying", 0.0);
-        memset(failed, 0, (size_t)seams->surface_count + 1);
-        st = verify_before_writing(*bytes, *size, model, failed, err);
-        if (st != SW_ERR_FORMAT || round == REPAIR_ROUNDS)
-            break;
-        uint32_t newly = sw_seam_pin_surfaces(seams, failed, pinned);
-        if (newly == 0)
-            break;
-        summary->pinned_surfaces += newly;
-        on_progress(pc, "keeping seams whole", 0.0);
-        st = sw_seam_simplify_pinned(seams, &eval, pinned, err);
-        summary->collapses = seams->collapse_count;
-    }
-    free(pinned);
-    free(failed);
-    return st;
-}
-
-static sw_status pack_model(const build_options *o, progress_context *pc, sw_model *model,
-                            const sw_import_report *reports, seam_summary *seam_summary_out,
-                            size_t *bytes_out, sw_error *err)
-{
-    snprintf(pc->prefix, sizeof pc->prefix, "packing");
-    pc->importing = 0;
-    sw_pack_progress progress = { on_progress, pc };
-    sw_pack_contents contents;
-    sw_seam_host seams = { 0 };
-    uint8_t *bytes = NULL;
-    sw_pack_import_note *notes = NULL;
-    uint32_t note_count = 0;
-    const char **names = input_names(o);
-    sw_status st = names ? sw_pack_notes_from_reports(names, reports, (size_t)o->input_count,
-                                                      &notes, &note_count, err)
-                         : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
-    free(names);
-    if (st == SW_OK)
-        st = build_seams(o, pc, model, &seams, seam_summary_out, err);
-    if (st == SW_OK)
-        st = sw_pack_contents_from_model_progress(model, &progress, &contents, err);
-    if (st == SW_OK) {
-        contents.import_notes = notes;
-        contents.import_note_count = note_count;
-        const sw_pack_orientation orientation = { .up_axis = model->up_axis };
-        contents.orientation = sw_up_axis_valid(model->up_axis) ? &orientation : NULL;
-        st = pack_verified(o, pc, model, &contents, &seams, seam_summary_out, &bytes, bytes_out,
-                           err);
-        sw_pack_contents_free(&contents);
-    }
-    sw_seam_host_free(&seams);
-    free(notes);
-    if (st == SW_OK) {
-        on_progress(pc, "writing", 0.0);
-        st = sw_write_file_atomic(o->out_path, bytes, *bytes_out, err); /* names the path */
-    }
-    free(bytes);
-    return st;
-}
-
 static sw_status build_pack(const build_options *o, sw_model *model, sw_import_report *reports,
                             seam_summary *seams, size_t *bytes_out, sw_error *err)
 {
@@ -521,10 +233,10 @@ static sw_status build_pack(const build_options *o, sw_model *model, sw_import_r
         sw_progress_clear(&pc.bar); /* a warning must not share the bar's line */
         model->up_axis = sw_up_inputs_choose(o->inputs, up_defaults, o->input_count, o->up_axis,
                                            stderr);
-        st = check_not_empty(o, model, reports, err);
+        st = sw_pack_tool_check_not_empty(o, model, reports, err);
     }
     if (st == SW_OK) {
-        st = pack_model(o, &pc, model, reports, seams, bytes_out, err);
+        st = sw_pack_tool_pack(o, &pc, model, reports, seams, bytes_out, err);
     }
     free(up_defaults);
     sw_progress_clear(&pc.bar);
@@ -551,7 +263,7 @@ static void print_tally(const char *name, const sw_import_tally *t, const char *
 static void print_warnings(const build_options *o, const sw_import_report *reports)
 {
     for (int i = 0; i < o->input_count; i++) {
-        const char *name = base_name(o->inputs[i]);
+        const char *name = sw_pack_tool_base_name(o->inputs[i]);
         print_tally(name, &reports[i].unsupported, "skipped");
         print_tally(name, &reports[i].messages, "(read past)");
     }
@@ -564,7 +276,7 @@ static void print_summary(const build_options *o, const sw_model *model,
     for (int i = 0; i < o->input_count; i++)
         if (reports[i].pcurves_computed > 0)
             printf("seamwalk-pack: %s: %zu parameter curves computed from model-space curves\n",
-                   base_name(o->inputs[i]), reports[i].pcurves_computed);
+                   sw_pack_tool_base_name(o->inputs[i]), reports[i].pcurves_computed);
     const sw_seam_report *r = &seams->sewing;
     printf("seamwalk-pack: seams: %zu boundary vertices, %zu edges (%zu sewn, %zu free, %zu "
            "non-manifold), tolerance %g; %" PRIu32 " collapses; sewing %.2f s, simplifying "
@@ -696,13 +408,13 @@ static int cmd_build(int argc, char **argv)
         sw_model_init(&model);
         sw_error err = {0};
         size_t bytes = 0;
-        double t0 = now_s();
+        double t0 = sw_pack_tool_now_s();
         seam_summary seams = { 0 };
         sw_status st = build_pack(&o, &model, reports, &seams, &bytes, &err);
         if (st == SW_OK) {
             print_warnings(&o, reports);
             if (!o.quiet)
-                print_summary(&o, &model, reports, &seams, bytes, now_s() - t0);
+                print_summary(&o, &model, reports, &seams, bytes, sw_pack_tool_now_s() - t0);
         }
         rc = st == SW_OK ? 0 : fail(&err);
         sw_model_free(&model);

@@ -1,0 +1,79 @@
+/* SPDX-License-Identifier: MIT */
+/* seamwalk-pack build, from the imported model to a verified pack on disk
+ * (seamwalk_pack_build.c): the trims sewn and the seams simplified, the
+ * pack serialised with its static levels, super-surfaces and part levels,
+ * verified as `verify` will (a surface refused keeps its seams whole,
+ * round after round), then written atomically. The command line, the
+ * importing and the summary are seamwalk_pack_main.c's. Host only:
+ * allocates. */
+#ifndef SEAMWALK_PACK_BUILD_H
+#define SEAMWALK_PACK_BUILD_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sw_cluster.h"
+#include "sw_error.h"
+#include "sw_import.h"
+#include "sw_levels_build.h"
+#include "sw_model.h"
+#include "sw_part_levels_build.h"
+#include "sw_progress.h"
+#include "sw_seam_sew.h"
+
+typedef struct build_options {
+    const char *out_path;
+    const char **inputs;
+    int input_count;
+    int quiet, strict, iges_occt;
+    double seam_tolerance;      /* 0: sw_seam_default_tolerance */
+    sw_part_levels_options part_levels;   /* --cut-patches */
+    int32_t up_axis;            /* --up (sw_up_axis.h); 0: by the inputs (sw_up_inputs.h) */
+} build_options;
+
+/* What the progress callbacks need to label a stage and count its rate:
+ * faces are the surfaces the importer added so far, patches the fraction of
+ * the model's. */
+typedef struct progress_context {
+    sw_progress bar;
+    const sw_model *model;
+    char prefix[80];            /* "importing hammer.iges" or "packing" */
+    size_t surfaces_before;
+    int importing;
+} progress_context;
+
+/* The Seam Graph (paper 004, sections 4-5): the trims flattened and sewn
+ * across surfaces, then the collapse hierarchy over the seams. */
+typedef struct seam_summary {
+    sw_seam_report sewing;
+    uint32_t collapses;
+    double simplify_s;
+    sw_levels_report levels;
+    sw_cluster_report clusters;
+    sw_part_levels_report part_levels;
+    uint32_t pinned_surfaces;   /* whose seams were kept whole so that they tessellate */
+} seam_summary;
+
+/* The build's progress line (a sw_progress callback; user: a
+ * progress_context). */
+void sw_pack_tool_progress(void *user, const char *stage, double fraction);
+
+/* Seconds on a monotonic clock. */
+double sw_pack_tool_now_s(void);
+
+/* The file name of path without its folders. */
+const char *sw_pack_tool_base_name(const char *path);
+
+/* A model with nothing to draw makes a pack the runtime refuses: the build
+ * fails instead, saying what was left out (SW_ERR_FORMAT). */
+sw_status sw_pack_tool_check_not_empty(const build_options *o, const sw_model *model,
+                                       const sw_import_report *reports, sw_error *err);
+
+/* The model packed, verified and written to o->out_path, the sewing,
+ * levels and repairs counted in *summary, the bytes written in
+ * *bytes_out. */
+sw_status sw_pack_tool_pack(const build_options *o, progress_context *pc, sw_model *model,
+                            const sw_import_report *reports, seam_summary *summary,
+                            size_t *bytes_out, sw_error *err);
+
+#endif
