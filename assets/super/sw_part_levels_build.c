@@ -24,24 +24,13 @@
  * it still folded a triangle over its neighbour (a quarter of a paving
  * stone, 125 mm, under its measured error). Sliver triangles across a
  * thin curved part face every way at their corners and are not folds. */
-static int folds(const sw_part_mesh *m, size_t n)
+static int folds(const sw_part_mesh *m, const double *vn, size_t n)
 {
-    double *vn = calloc(3 * (size_t)m->wcount + 3, sizeof *vn);
-    if (!vn)
-        return 1;
-    for (uint32_t t = 0; t < m->icount; t += 3) {
-        double f[3];
-        sw_part_face_normal(m->wpos + 3 * (size_t)m->idx[t], m->wpos + 3 * (size_t)m->idx[t + 1],
-                    m->wpos + 3 * (size_t)m->idx[t + 2], f);
-        for (int c = 0; c < 3; c++)
-            for (int k = 0; k < 3; k++)
-                vn[3 * (size_t)m->idx[t + c] + k] += f[k];
-    }
     int fold = 0;
     for (size_t t = 0; t < n && !fold; t += 3) {
         double nt[3];
         sw_part_face_normal(m->wpos + 3 * (size_t)m->dest[t], m->wpos + 3 * (size_t)m->dest[t + 1],
-                    m->wpos + 3 * (size_t)m->dest[t + 2], nt);
+                            m->wpos + 3 * (size_t)m->dest[t + 2], nt);
         double lt = sqrt(nt[0] * nt[0] + nt[1] * nt[1] + nt[2] * nt[2]);
         int against = 0;
         for (int c = 0; c < 3 && lt > 0; c++) {
@@ -51,8 +40,23 @@ static int folds(const sw_part_mesh *m, size_t n)
         }
         fold = against == 3;
     }
-    free(vn);
     return fold;
+}
+
+/* Per welded vertex, the summed normals (by area) of the source triangles
+ * around it, for folds(); NULL when out of memory. */
+static double *source_vertex_normals(const sw_part_mesh *m)
+{
+    double *vn = calloc(3 * (size_t)m->wcount + 3, sizeof *vn);
+    for (uint32_t t = 0; vn && t < m->icount; t += 3) {
+        double f[3];
+        sw_part_face_normal(m->wpos + 3 * (size_t)m->idx[t], m->wpos + 3 * (size_t)m->idx[t + 1],
+                            m->wpos + 3 * (size_t)m->idx[t + 2], f);
+        for (int c = 0; c < 3; c++)
+            for (int k = 0; k < 3; k++)
+                vn[3 * (size_t)m->idx[t + c] + k] += f[k];
+    }
+    return vn;
 }
 
 /* One piece's levels at one front, being made. */
@@ -60,6 +64,7 @@ typedef struct piece_job {
     uint32_t piece, front;
     int cut;                      /* its part is cut: border locked, source kept first */
     double min_bound;             /* no level made for a finer bound (its front's) */
+    double *vertex_normals;       /* cut: source_vertex_normals, made once a piece */
     const sw_part_levels_options *opt;
     sw_part_levels_report *r;
     sw_mesh_view source;
@@ -104,7 +109,7 @@ static size_t simplify_toward(sw_part_mesh *m, piece_job *j, double bound, doubl
         j->r->not_smaller++;
         return 0;
     }
-    if (j->cut && folds(m, n)) {
+    if (j->cut && (!j->vertex_normals || folds(m, j->vertex_normals, n))) {
         j->r->folded++;
         return 0;
     }
@@ -123,6 +128,7 @@ static sw_status build_piece(sw_part_mesh *m, sw_part_level_arrays *o, piece_job
     j->source_grid = sw_mesh_grid_make(&j->source);
     if (!j->source_grid)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: grid");
+    j->vertex_normals = j->cut ? source_vertex_normals(m) : NULL;
     j->last_error = 0, j->last_indices = m->icount, j->kept = 0;
     int room = 1;
     if (scale > 0 && j->cut) {   /* the source itself: a level at this front */
@@ -156,6 +162,7 @@ static sw_status build_piece(sw_part_mesh *m, sw_part_level_arrays *o, piece_job
         j->r->worst_over_bound = fmax(j->r->worst_over_bound, error / bound);
     }
     sw_mesh_grid_free(j->source_grid);
+    free(j->vertex_normals);
     if (!room)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
     j->r->source_triangles += j->kept ? m->icount / 3 : 0;
