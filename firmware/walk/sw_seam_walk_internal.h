@@ -83,7 +83,10 @@ void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
 
 /* V: surface s (with no mesh) stood in for by a static level, joined to
  * its loops as drawn, uploaded in the plan (sw_seam_standin.h); 1 when it
- * is drawn so. */
+ * is drawn so, SW_SEAM_WALK_MET when its loops are gone at the front its
+ * neighbours show (they meet across it, coarser than its bound asks:
+ * counted behind, by how far), 0 when it waits (counted by the caller). */
+#define SW_SEAM_WALK_MET 2
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
 
 /* The part levels' state, from the arena (visibility/sw_seam_part_levels.c):

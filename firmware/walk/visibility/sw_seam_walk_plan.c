@@ -85,8 +85,9 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
         frame->vanished_surfaces++;
         return;
     }
-    if (e->state == SW_SEAM_EMPTY && w->standins)
-        sw_seam_walk_stand_in(w, s, plan, frame);
+    if (e->state == SW_SEAM_EMPTY && w->standins &&
+        sw_seam_walk_stand_in(w, s, plan, frame) == SW_SEAM_WALK_MET)
+        return;
     if (e->state == SW_SEAM_GONE) {
         frame->vanished_surfaces++;
         return;

@@ -235,24 +235,23 @@ static int make_room(sw_seam_walk *w, sw_seam_frame *frame)
     return gone > 0;
 }
 
-/* 1 when the front s's stand-in was joined to (w->mixed_shown, at s's
- * originals) shows every vertex within the seams' share of s's own bound
- * this frame (w->want): gone in those loops, s then vanishes within its
- * bound, as the walk's own mesh made in the frame would. (The select's
- * front is moved for the targets, which may be finer than the bound: a
- * mesh is made for a level at or below it, and, coming closer, for the
- * bound a few frames on.) */
-static int joined_within_bound(const sw_seam_walk *w, uint32_t s)
+/* The largest error of the vertices the front s's stand-in was joined to
+ * (w->mixed_shown, at s's originals) shows, over the seams' share of s's
+ * own bound this frame (w->want): at most 1 when, gone in those loops, s
+ * vanishes within its bound, as the walk's own mesh made in the frame
+ * would. (The select's front is moved for the targets, which may be finer
+ * than the bound: a mesh is made for a level at or below it, and, coming
+ * closer, for the bound a few frames on.) */
+static double joined_over_bound(const sw_seam_walk *w, uint32_t s)
 {
     const sw_seam_graph *g = &w->pack->seam;
-    float within = (float)SW_SEAM_SHARE * w->want[s];
+    double within = SW_SEAM_SHARE * w->want[s], worst = 0;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
-            if (g->vertices[w->mixed_shown[w->select.leaf_lo[o]]].error > within)
-                return 0;
+            worst = fmax(worst, g->vertices[w->mixed_shown[w->select.leaf_lo[o]]].error);
         }
-    return 1;
+    return worst > within ? worst / within : 0.0;
 }
 
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame)
@@ -274,17 +273,28 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
         return 0;   /* it waits, undrawn and counted */
     }
     /* Gone in the loops it was made in (its neighbours' meshes show its
-     * seams coarser) is not gone at the surface's own bound: it waits,
-     * undrawn and counted, for its mesh, as one too large for a draw does.
-     * Gone at the front its own bound moved too: it vanishes within the
-     * bound, as the walk's own mesh would (the paper's vanishing patch),
-     * until its mesh is made. */
+     * seams coarser) is not gone at the surface's own bound: its
+     * neighbours meet across it, coarser than the bound, until its mesh is
+     * made; counted behind, by how far. Gone at the front its own bound
+     * moved too: it vanishes within the bound, as the walk's own mesh would
+     * (the paper's vanishing patch), until its mesh is made. */
+    double over = e->state == SW_SEAM_GONE ? joined_over_bound(w, s) : 0;
     int vanished = e->state == SW_SEAM_GONE &&
-                   (joined_within_bound(w, s) ||
-                    sw_seam_standin_vanishes(w->standins, &w->select, s));
+                   (over <= 1 || sw_seam_standin_vanishes(w->standins, &w->select, s));
     if (e->state != SW_SEAM_READY && !vanished)
         memset(e, 0, sizeof *e);
     e->last_frame = last;
+    if (e->state == SW_SEAM_EMPTY && over > 1) {
+        /* Its neighbours' meshes meet across it, where its loops are gone:
+         * the area is drawn, by them, coarser than its bound asks. */
+        frame->behind_surfaces++;
+        frame->behind_ratio = fmax(frame->behind_ratio, over);
+        if (w->need_since[s] == UINT32_MAX)
+            w->need_since[s] = w->frame - 1;
+        if (w->frame - 1 - w->need_since[s] > frame->frames_behind)
+            frame->frames_behind = w->frame - 1 - w->need_since[s];
+        return SW_SEAM_WALK_MET;
+    }
     if (e->state != SW_SEAM_READY)
         return 0;
     w->standin[s] = 1;
