@@ -305,11 +305,12 @@ static void print_summary(const build_options *o, const sw_model *model,
     printf("seamwalk-pack: part levels: %" PRIu32 " of %" PRIu32 " pieces (%" PRIu32 " parts, %"
            PRIu32 " cut into pieces), %" PRIu32 " levels from %" PRIu64 " source triangles, "
            "triangles by rank %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 "; left out: %" PRIu32
-           " pieces with a surface without a level, %" PRIu32 " levels not smaller, %" PRIu32
-           " folded, %" PRIu32 " over 65536 vertices; worst error over bound %.2f; %.2f s\n",
+           " pieces with a surface without a level, %" PRIu32 " bounds with nothing found within, %" PRIu32
+           " tries not smaller, %" PRIu32 " folded, %" PRIu32 " over 65536 vertices; worst error "
+           "over bound %.2f; %.2f s\n",
            pl->with_levels, pl->pieces, pl->parts, pl->cut_parts, pl->levels,
            pl->source_triangles, pl->triangles[0], pl->triangles[1], pl->triangles[2],
-           pl->triangles[3], pl->incomplete, pl->not_smaller, pl->folded, pl->too_large,
+           pl->triangles[3], pl->incomplete, pl->over_bound, pl->not_smaller, pl->folded, pl->too_large,
            pl->worst_over_bound, pl->seconds);
     printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
            model->patch_count, bytes, o->out_path, seconds);

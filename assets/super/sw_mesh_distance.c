@@ -56,6 +56,23 @@ static void bin(sw_mesh_grid *g, uint32_t t, int pass, uint32_t *fill)
             }
 }
 
+static double mesh_area(const sw_mesh_view *m)
+{
+    double area = 0;
+    for (uint32_t t = 0; t + 2 < m->index_count; t += 3) {
+        double e[2][3];
+        const float *a = m->positions + 3 * (size_t)m->indices[t];
+        for (int j = 0; j < 2; j++)
+            for (int k = 0; k < 3; k++)
+                e[j][k] = (double)m->positions[3 * (size_t)m->indices[t + 1 + j] + k] - a[k];
+        double c[3] = { e[0][1] * e[1][2] - e[0][2] * e[1][1],
+                        e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                        e[0][0] * e[1][1] - e[0][1] * e[1][0] };
+        area += 0.5 * sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    }
+    return area;
+}
+
 sw_mesh_grid *sw_mesh_grid_make(const sw_mesh_view *b)
 {
     uint32_t n = b->index_count / 3;
@@ -76,11 +93,10 @@ sw_mesh_grid *sw_mesh_grid_make(const sw_mesh_view *b)
     }
     for (int k = 0; k < 3; k++)
         extent = fmax(extent, hi[k] - g->lo[k]);
-    /* About a triangle a cell over the mesh's box, at most 96 a side. */
-    double volume = 1;
-    for (int k = 0; k < 3; k++)
-        volume *= fmax(hi[k] - g->lo[k], extent * 1e-3) + 1e-30;
-    g->cell = fmax(cbrt(volume / n), extent / 96.0) + 1e-30;
+    /* Cells about as wide as a triangle (a mesh is a surface: cells sized
+     * by the box's volume over the triangles held tens of them each, most
+     * of the time spent measuring), at most 96 a side. */
+    g->cell = fmax(sqrt(2.0 * mesh_area(b) / n), extent / 96.0) + 1e-30;
     size_t cells = 1;
     for (int k = 0; k < 3; k++) {
         g->dim[k] = (int)fmin(96, floor((hi[k] - g->lo[k]) / g->cell) + 1);
@@ -270,6 +286,12 @@ int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
 
 double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing)
 {
+    return sw_mesh_distance_until(a, g, spacing, INFINITY);
+}
+
+double sw_mesh_distance_until(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing,
+                              double limit)
+{
     /* A triangle sampled at its corners alone shares them with its
      * neighbours: those vertices are measured once each, afterwards. */
     uint8_t *corner = calloc((size_t)a->vertex_count + 1, 1);
@@ -291,15 +313,17 @@ double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spa
             continue;
         }
         n = n < 1 ? 1 : n;
-        for (int i = 0; i <= n; i++)
-            for (int j = 0; i + j <= n; j++) {
+        for (int i = 0; i <= n && worst <= limit; i++)
+            for (int j = 0; i + j <= n && worst <= limit; j++) {
                 double w0 = (double)i / n, w1 = (double)j / n, w2 = 1 - w0 - w1, p[3];
                 for (int k = 0; k < 3; k++)
                     p[k] = w0 * v[0][k] + w1 * v[1][k] + w2 * v[2][k];
                 worst = farther(g, p, worst);
             }
+        if (worst > limit)
+            break;
     }
-    for (uint32_t i = 0; corner && i < a->vertex_count; i++)
+    for (uint32_t i = 0; corner && i < a->vertex_count && worst <= limit; i++)
         if (corner[i]) {
             const double p[3] = { a->positions[3 * (size_t)i], a->positions[3 * (size_t)i + 1],
                                   a->positions[3 * (size_t)i + 2] };

@@ -163,7 +163,9 @@ static int match_normal(void *ctx, const sw_mesh_point *at)
 double sw_part_level_shaded_side(const sw_part_mesh *m, const sw_mesh_grid *source_grid,
                                const sw_part_level_arrays *o, const sw_part_level *l)
 {
-    enum { N = 6, INSIDE = (N - 1) * (N - 2) / 2 };
+    /* The corners take the source's normals; between them, on the edges
+     * too, the blend may match no face (two walls at a right angle). */
+    enum { N = 4, POINTS = (N + 1) * (N + 2) / 2 - 3 };
     double area = 0;
     for (uint32_t t = 0; t + 2 < l->index_count; t += 3) {
         const float *p[3];
@@ -174,8 +176,10 @@ double sw_part_level_shaded_side(const sw_part_mesh *m, const sw_mesh_grid *sour
             p[k] = c->p, q[k] = c->normal;
         }
         int off = 0;
-        for (int i = 1; i < N; i++)
-            for (int j = 1; i + j < N; j++) {
+        for (int i = 0; i <= N; i++)
+            for (int j = 0; i + j <= N; j++) {
+                if (i == N || j == N || i + j == 0)
+                    continue;
                 double w[3] = { (double)i / N, (double)j / N, (double)(N - i - j) / N }, x[3];
                 for (int k = 0; k < 3; k++)
                     x[k] = w[0] * p[0][k] + w[1] * p[1][k] + w[2] * p[2][k];
@@ -192,7 +196,7 @@ double sw_part_level_shaded_side(const sw_part_mesh *m, const sw_mesh_grid *sour
             }
         double n[3];
         sw_part_face_normal(p[0], p[1], p[2], n);
-        area += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * off / INSIDE;
+        area += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * off / POINTS;
     }
     return sqrt(area);
 }

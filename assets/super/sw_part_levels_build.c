@@ -98,13 +98,25 @@ static int keep_level(sw_part_mesh *m, sw_part_level_arrays *o, piece_job *j, si
     return 1;
 }
 
-/* The simplification toward bound into m->dest: its index count, 0 when
- * it is not kept (not a fifth smaller, or folded: counted). */
-static size_t simplify_toward(sw_part_mesh *m, piece_job *j, double bound, double scale)
+/* What the simplifier keeps of a piece's borders: a cut part's are locked
+ * whole (its pieces meet there); another's rim may move, or have its
+ * corners held (sw_part_rim.h). */
+typedef enum { KEEP_NONE, KEEP_CORNERS } border_keep;
+
+/* One simplification into m->dest: toward target_error (meshoptimizer's
+ * relative units), stopping at target_indices (0: as far as the error
+ * allows), keeping the border as asked. Its index count; 0 when it is not
+ * a fifth smaller than the last level, or folds (counted). */
+static size_t simplify_once(sw_part_mesh *m, piece_job *j, size_t target_indices,
+                            float target_error, border_keep keep)
 {
-    size_t n = meshopt_simplify(m->dest, m->idx, m->icount, m->wpos, m->wcount,
-                                3 * sizeof(float), 0, (float)((bound - m->error) / scale),
-                                j->cut ? meshopt_SimplifyLockBorder : 0, NULL);
+    const sw_part_rim *rim = &m->rim;
+    int held = keep == KEEP_CORNERS && !j->cut;
+    unsigned lock = j->cut ? meshopt_SimplifyLockBorder : 0;
+    size_t n = meshopt_simplify(m->dest, held ? rim->idx : m->idx, m->icount,
+                                held ? rim->pos : m->wpos, held ? rim->vertex_count : m->wcount,
+                                3 * sizeof(float), target_indices, target_error, lock, NULL);
+    sw_part_rim_unmap(rim, m->wcount, m->dest, held ? n : 0);
     if (n == 0 || n > 0.8 * j->last_indices) {
         j->r->not_smaller++;
         return 0;
@@ -116,19 +128,151 @@ static size_t simplify_toward(sw_part_mesh *m, piece_job *j, double bound, doubl
     return n;
 }
 
+/* The measured error of m->dest[0 .. n) (above), sampled at a spacing
+ * fine enough for bound; or, once it is found over limit, some error over
+ * it; negative when out of memory. */
+static double measured_until(sw_part_mesh *m, piece_job *j, size_t n, double bound, double limit)
+{
+    sw_mesh_view lod = { m->wpos, m->dest, m->wcount, (uint32_t)n };
+    double spacing = 2 * bound, d = sw_mesh_distance_until(&lod, j->source_grid, spacing,
+                                                           limit - m->error);
+    if (d + m->error <= limit) {
+        sw_mesh_grid *lod_grid = sw_mesh_grid_make(&lod);
+        if (!lod_grid)
+            return -1;
+        d = fmax(d, sw_mesh_distance_until(&j->source, lod_grid, spacing, limit - m->error));
+        sw_mesh_grid_free(lod_grid);
+    }
+    return d + m->error;
+}
+
+static double measured_error(sw_part_mesh *m, piece_job *j, size_t n, double bound)
+{
+    return measured_until(m, j, n, bound, INFINITY);
+}
+
+/* A rim vertex is held where the rim turns by more than 45 degrees. */
+#define RIM_CORNER_COS 0.70710678
+
+/* Tries of index counts searched for the coarsest simplification within
+ * a bound, after meshoptimizer's own stop. */
+#define CALIBRATION_STEPS 4
+
+/* The coarsest simplification found within bound keeping the border as
+ * asked, in m->best: its index count (0: none; -1 out of memory), its
+ * error in *error. From meshoptimizer's own stop at the bound, index counts
+ * are searched for the coarsest within it: meshoptimizer's error is an
+ * estimate (well under the distance it makes in places, over it in
+ * others), so a level made by it alone lands anywhere about its bound, and the walk, which keeps to the measured error, would then draw
+ * a finer level than the view needs. Should none be within, the stop's own
+ * is returned, over the bound. */
+static long long search_within(sw_part_mesh *m, piece_job *j, double bound, double scale,
+                               border_keep keep, double *error)
+{
+    size_t n = simplify_once(m, j, 0, (float)((bound - m->error) / scale), keep);
+    double e = n ? measured_error(m, j, n, bound) : 0;
+    if (e < 0)
+        return -1;
+    /* Index counts: coarse over the bound (or none), fine the finest tried
+     * within it (or the most a level may have); the best kept so far. */
+    size_t coarse = 0, fine = (size_t)(0.8 * j->last_indices), best = 0;
+    double guess = 0.5 * (double)fine;
+    *error = e;
+    if (n) {
+        memcpy(m->best, m->dest, n * sizeof *m->dest);
+        best = n;
+        *(e <= bound ? &fine : &coarse) = n;
+        guess = (double)n * e / bound;
+    }
+    /* First where triangles inversely as the error would put it (a curved
+     * surface's), then halving the interval, to within a quarter. */
+    for (int step = 0; step < CALIBRATION_STEPS && fine > coarse + coarse / 4 + 3; step++) {
+        double at = step ? 0.5 * (double)(coarse + fine) : guess;
+        size_t mid = (size_t)fmin(fmax(at, (double)coarse + 3), (double)fine) / 3 * 3;
+        n = simplify_once(m, j, mid > 3 ? mid : 3, FLT_MAX, keep);
+        e = n ? measured_until(m, j, n, bound, bound) : 0;
+        if (e < 0)
+            return -1;
+        if (n && e <= bound) {
+            memcpy(m->best, m->dest, n * sizeof *m->dest);
+            best = n, *error = e, fine = n;
+        } else {
+            coarse = mid;
+        }
+    }
+    return (long long)best;
+}
+
+/* The level for bound into m->dest: its index count (0: none; -1 out of
+ * memory), its error in *error. A part's open rim (a sheet's edge, a hole
+ * in it) is where meshoptimizer's estimate fails most: moving a rim vertex
+ * along the rim cuts a corner off, tens of times the bound. When nothing
+ * is within, the search is made again with the rim's corners held; when
+ * still none is, the first search's result is kept, over the bound, as a
+ * level for coarser views. (Locking the whole border found nothing more
+ * within on the showroom's parts.) */
+static long long simplify_within(sw_part_mesh *m, piece_job *j, double bound, double scale,
+                                 double *error)
+{
+    long long n = search_within(m, j, bound, scale, KEEP_NONE, error);
+    if (n > 0 && *error > bound && !j->cut) {
+        double e = 0;
+        long long k = search_within(m, j, bound, scale, KEEP_CORNERS, &e);
+        if (k < 0)
+            return -1;
+        if (k > 0 && e <= bound)
+            n = k, *error = e;
+        else   /* none within: the first search's, made again */
+            n = search_within(m, j, bound, scale, KEEP_NONE, error);
+    }
+    if (n > 0) {
+        j->r->over_bound += *error > bound;
+        memcpy(m->dest, m->best, (size_t)n * sizeof *m->dest);
+    }
+    return n;
+}
+
+/* A piece of a few triangles (asked with no bound on the error, fewer can
+ * come out as none at all: a sheet collapses to nothing). */
+#define COARSEST_INDICES 24
+
+/* The coarsest simplification of a few triangles, kept as the last level
+ * when it is a fifth smaller than the last and its error rises: for views
+ * where the whole piece spans a few pixels, past the last bound. 0 when out
+ * of memory. */
+static int keep_coarsest(sw_part_mesh *m, sw_part_level_arrays *o, piece_job *j, double bound)
+{
+    size_t n = simplify_once(m, j, COARSEST_INDICES, FLT_MAX, KEEP_NONE);
+    double e = n ? measured_error(m, j, n, bound) : 0;
+    if (e < 0)
+        return 0;
+    if (n == 0 || !((float)e > j->last_error))
+        return 1;
+    return keep_level(m, o, j, n, (float)e) >= 0;
+}
+
 /* The job's levels toward rising bounds, kept as the header says. */
 static sw_status build_piece(sw_part_mesh *m, sw_part_level_arrays *o, piece_job *j, sw_error *err)
 {
     uint32_t *dest = sw_grow(m->dest, &m->cap_d, m->icount + 1, sizeof *m->dest);
-    if (!dest)
+    if (dest)
+        m->dest = dest;
+    uint32_t *best = sw_grow(m->best, &m->cap_b, m->icount + 1, sizeof *m->best);
+    if (best)
+        m->best = best;
+    if (!dest || !best)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
-    m->dest = dest;
     double size = sw_part_mesh_size(m), scale = meshopt_simplifyScale(m->wpos, m->wcount, 12);
     j->source = (sw_mesh_view){ m->wpos, m->idx, m->wcount, m->icount };
     j->source_grid = sw_mesh_grid_make(&j->source);
     if (!j->source_grid)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: grid");
     j->vertex_normals = j->cut ? source_vertex_normals(m) : NULL;
+    const sw_part_tris tris = { m->wpos, m->idx, m->wcount, m->icount };
+    if (!j->cut && !sw_part_rim_hold_corners(&m->rim, &tris, RIM_CORNER_COS)) {
+        sw_mesh_grid_free(j->source_grid);
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    }
     j->last_error = 0, j->last_indices = m->icount, j->kept = 0;
     int room = 1;
     if (scale > 0 && j->cut) {   /* the source itself: a level at this front */
@@ -140,27 +284,24 @@ static sw_status build_piece(sw_part_mesh *m, sw_part_level_arrays *o, piece_job
         if (bound <= 2 * m->error || bound < j->min_bound)
             continue;   /* the source is not that much closer to the surfaces, or the
                            front's border holds the level coarser than that anyway */
-        size_t n = simplify_toward(m, j, bound, scale);
-        if (n == 0)
-            continue;
-        sw_mesh_view lod = { m->wpos, m->dest, m->wcount, (uint32_t)n };
-        sw_mesh_grid *lod_grid = sw_mesh_grid_make(&lod);
-        if (!lod_grid) {
+        double measured = 0;
+        long long n = simplify_within(m, j, bound, scale, &measured);
+        if (n < 0) {
             room = 0;
             break;
         }
-        double spacing = 2 * bound;
-        double d = fmax(sw_mesh_distance(&lod, j->source_grid, spacing),
-                        sw_mesh_distance(&j->source, lod_grid, spacing));
-        sw_mesh_grid_free(lod_grid);
-        float error = (float)(d + m->error);
+        if (n == 0)
+            continue;
+        float error = (float)measured;
         if (!(error > j->last_error)) {
             j->r->not_smaller++;
             continue;
         }
-        room = keep_level(m, o, j, n, error) >= 0;
+        room = keep_level(m, o, j, (size_t)n, error) >= 0;
         j->r->worst_over_bound = fmax(j->r->worst_over_bound, error / bound);
     }
+    if (room && scale > 0 && j->kept > 0)
+        room = keep_coarsest(m, o, j, size * j->opt->finest * pow(j->opt->step, j->opt->count));
     sw_mesh_grid_free(j->source_grid);
     free(j->vertex_normals);
     if (!room)

@@ -17,7 +17,14 @@
  * on flat ground) is left out. Each result is
  * measured, not taken from the simplifier's estimate: the sampled distance
  * both ways between it and the source (sw_mesh_distance.h), plus the
- * source's own measured error. A level is kept when its error rises over
+ * source's own measured error. From the simplifier's own stop at each
+ * bound, index counts are searched for the coarsest simplification within
+ * it (its estimate runs under the measure and over it), so levels step by
+ * their bounds; a part's open rim is where the estimate fails most, so
+ * when none is within, the search is made again with the rim's corners
+ * held (sw_part_rim.h); found none, the simplifier's own serves coarser
+ * views. Past the last bound, a level of a
+ * few triangles, for a piece a few pixels across. A level is kept when its error rises over
  * the one before and it has fewer triangles by at least a fifth, and it
  * fits one draw (65536 vertices).
  *
@@ -63,6 +70,8 @@ typedef struct sw_part_levels_report {
     uint32_t not_smaller;         /* tried levels left out: not a fifth fewer triangles, or
                                      error not rising */
     uint32_t folded;              /* tried levels left out for a fold */
+    uint32_t over_bound;          /* bounds no simplification was found within (the
+                                     simplifier's own result kept) */
     uint32_t too_large;           /* tried levels over 65536 vertices */
     uint64_t source_triangles;    /* of the pieces with levels, at each front */
     uint64_t triangles[SW_PART_LEVELS_MAX];  /* kept, by rank at a front (finest 0) */

@@ -14,6 +14,7 @@
 #include "sw_levels.h"
 #include "sw_mesh_distance.h"
 #include "sw_part_levels.h"
+#include "sw_part_rim.h"
 #include "sw_part_source.h"
 
 /* One piece's source, welded (reused from piece to piece). */
@@ -25,9 +26,11 @@ typedef struct sw_part_mesh {
     uint32_t *corner;             /* the source vertex of each of idx's corners */
     uint32_t *wedge_first, *wedge;/* welded vertex -> its source vertices */
     uint32_t *dest;               /* simplified triangles */
+    uint32_t *best;               /* the best simplification kept while searching */
+    sw_part_rim rim;              /* the simplifier's input, rim corners held */
     uint64_t *keys;               /* output vertex hash: (welded << 32 | source) + 1 */
     uint32_t *key_value;
-    size_t cap_v, cap_i, cap_c, cap_w, cap_d, cap_k, cap_kv, cap_n, cap_p, cap_wf, cap_wd, cap_x;
+    size_t cap_v, cap_i, cap_c, cap_w, cap_d, cap_k, cap_kv, cap_n, cap_p, cap_wf, cap_wd, cap_x, cap_b;
     uint32_t count, wcount, icount;
     double error;                 /* the source's measured error */
 } sw_part_mesh;
@@ -96,12 +99,12 @@ int sw_part_level_emit(sw_part_mesh *m, const sw_mesh_grid *source_grid, sw_part
 
 /* Level l's shading side (sw_part_level): the side of a square of the area
  * of its triangles whose shading normal lies more than 30 degrees off the
- * source's at every source point within the level's error (either side:
- * the renderer lights both), sampled at the 10 points of a barycentric
- * grid of sixths inside each triangle. The level may lie anywhere within
- * its error of the source, so its shading may too: a point near a crease
- * matches either face. A level simplified across a crease blends the two
- * faces' normals over the triangles that span it, and a triangle whose
+ * source's at every source point within the level's error (either side: the
+ * renderer lights both), sampled at the 12 points of a barycentric grid of
+ * quarters on each triangle but its corners. The level may lie anywhere
+ * within its error of the source, so its shading may too: a point near a
+ * crease matches either face. A level simplified across a crease blends the
+ * two faces' normals over the triangles that span it, and a triangle whose
  * corners the simplifier took from other faces is shaded as those; one
  * across a fillet follows the fillet's normals. */
 double sw_part_level_shaded_side(const sw_part_mesh *m, const sw_mesh_grid *source_grid,

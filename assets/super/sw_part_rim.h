@@ -3,10 +3,9 @@
  * sheet's rim (a rail's feet and ends, a plate's edge) is a border
  * meshoptimizer keeps as a border, but it moves border vertices along it,
  * and a vertex at a corner of the rim moved along one side cuts the corner
- * off: on a rail 1.3 m long the first level came out 67 mm off where its
- * bound was 5 mm. meshoptimizer 0.18 has no per-vertex lock (0.21 added
- * one), but it moves a vertex on an attribute seam (two vertices at one
- * position) only onto another seam vertex; each corner is given a copy at
+ * off, far past the error it estimates. meshoptimizer 0.18 has no
+ * per-vertex lock (0.21 added one), but it moves a vertex on an attribute
+ * seam (two vertices at one position) only onto another seam vertex; each corner is given a copy at
  * its very position, used by one of its triangles, which makes it such a
  * seam with nowhere along it to go. The copies are mapped back after
  * simplifying, so nothing downstream sees them. Host only: allocates. */
