@@ -177,6 +177,18 @@ static void a_release_lost_in_a_drop_comes_back(void)
     kb.close(kb.ctx);
 }
 
+/* Whether the kernel answers an evdev ioctl on a file that is no device
+ * at all: Linux says ENOTTY; qemu-user (the arm64 cross build's tests,
+ * tests/cross/arm64.sh) passes no evdev ioctl on and says ENOSYS. */
+static int kernel_knows_evdev_ioctls(void)
+{
+    int fd = open("/dev/null", O_RDONLY | O_CLOEXEC), version = 0;
+    long rc = syscall(SYS_ioctl, fd, EVIOCGVERSION, &version);
+    int known = !(rc < 0 && errno == ENOSYS);
+    close(fd);
+    return known;
+}
+
 static void a_path_that_is_no_device_is_refused(void)
 {
     sw_key_backend kb = sw_evdev_key_backend();
@@ -184,6 +196,10 @@ static void a_path_that_is_no_device_is_refused(void)
     SW_CHECK(kb.open(kb.ctx, "/no/such/event0", &err) == -1);
     SW_CHECK_MSG(strstr(err.message, "/no/such/event0: No such file") != NULL, "%s", err.message);
     SW_CHECK(kb.open(kb.ctx, "/dev/null", &err) == -1);
+    if (!kernel_knows_evdev_ioctls()) {
+        printf("skip /dev/null's wording: this kernel answers evdev ioctls with ENOSYS\n");
+        return;
+    }
     SW_CHECK_MSG(strstr(err.message, "/dev/null: not an evdev device") != NULL, "%s", err.message);
 }
 
