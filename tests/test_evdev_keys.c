@@ -20,6 +20,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include "sw_config.h"
 #include "sw_input_backend.h"
 #include "sw_input_fake.h"
 #include "sw_kiosk.h"
@@ -212,14 +213,14 @@ static void the_kiosk_stops_walking_after_the_drop(void)
     static sw_config cfg;
     sw_key_backend kb = open_fake();
     sw_config_defaults(&cfg);
-    cfg.attract_timeout_s = 0;
-    cfg.gamepad_enabled = 0;
+    cfg.kiosk.attract_timeout_s = 0;
+    cfg.kiosk.gamepad_enabled = 0;
     sw_fake_init(&fake);
     sw_kiosk_devices dev = {NULL, NULL, &kb, fake_path()};
-    sw_nav_params np = sw_kiosk_nav_params(&cfg, 0.8, 1.5, 0);
+    sw_nav_params np = sw_kiosk_nav_params(&cfg.kiosk, 0.8, 1.5, 0);
     sw_camera_frame f = sw_camera_frame_for_up(sw_v3(0, 0, 1));
     sw_box box = {sw_v3(-1000, -1000, 0), sw_v3(1000, 1000, 2000)};
-    sw_kiosk_init(&kiosk, &cfg, &dev, NULL, &np, &f, &box, NULL, 0, 0);
+    sw_kiosk_init(&kiosk, &cfg.kiosk, &dev, NULL, &np, &f, &box, NULL, 0, 0);
     SW_CHECK(kiosk.keys_on);
     key(KEY_UP, 1);
     sw_kiosk_step(&kiosk, 0, 0.01);
