@@ -41,8 +41,9 @@ endforeach()
 add_test(NAME seam_drawn_walk
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_seam_drawn_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
 
-# The includes run one way: no header circle, and the walk's folders
-# (firmware/walk/ and its thread folders) never include each other both ways.
+# The includes run one way: no header circle, the walk's folders
+# (firmware/walk/ and its thread folders) never include each other both
+# ways, and firmware's jobs and platform's folders include round no circle.
 add_test(NAME include_graph
   COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/check_includes.py ${PROJECT_SOURCE_DIR})
 
