@@ -30,4 +30,5 @@ arm64=(
 )
 # install-deps.sh runs apt-get update when something is missing, which also
 # fetches the arm64 package lists the first time.
-exec bash "$top/cmake/install-deps.sh" gcc-aarch64-linux-gnu qemu-user "${arm64[@]/%/:arm64}"
+# file: arm64.sh checks that every program built is aarch64.
+exec bash "$top/cmake/install-deps.sh" gcc-aarch64-linux-gnu qemu-user file "${arm64[@]/%/:arm64}"
