@@ -55,4 +55,7 @@ sudo_cmd=()
 [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# --no-remove: a package that conflicts with an installed one stops the
+# install instead of replacing it (arm64 libraries go in beside the amd64
+# ones: tests/cross/arm64_deps.sh).
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends --no-remove "${missing[@]}" >/dev/null

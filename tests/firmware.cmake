@@ -4,18 +4,26 @@ sw_add_test(test_arena SOURCES test_arena.c LIBS sw_core)
 sw_add_test(test_buddy SOURCES test_buddy.c LIBS sw_core)
 sw_add_test(test_steal_queue SOURCES test_steal_queue.c LIBS sw_core)
 sw_add_test(test_handoff SOURCES test_handoff.c LIBS sw_core)
-sw_add_test(test_parts_threads SOURCES test_parts_threads.c LIBS sw_runtime sw_assets)
 sw_add_test(test_camera_path SOURCES test_camera_path.c LIBS sw_runtime)
 sw_add_test(test_stats SOURCES test_stats.c LIBS sw_runtime)
 sw_add_test(test_view SOURCES test_view.c LIBS sw_runtime)
 sw_add_test(test_seam_measure SOURCES test_seam_measure.c LIBS sw_runtime)
 sw_add_test(test_seam_fill SOURCES test_seam_fill.c LIBS sw_runtime)
 sw_add_test(test_seam_drawn SOURCES test_seam_drawn.c LIBS sw_runtime)
-sw_add_test(test_cell_filter SOURCES test_cell_filter.c LIBS sw_cell_filter)
 sw_add_test(test_alloc_count SOURCES test_alloc_count.c LIBS sw_alloc_count)
 sw_add_fuzz_target(fuzz_camera_path SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_camera_path.c
   LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/camera_path
   DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/camera_path.dict)
+# The tessellation cache, and runtime_bytes holding the pack and the walk.
+sw_add_test(test_seam_cache SOURCES test_seam_cache.c LIBS sw_runtime
+            ARGS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack/seed-seam-graph)
+# A runtime-only build stops here (tests/CMakeLists.txt): the tests below
+# need seamwalk-pack, the assets library or the benchmarks' baselines.
+if(NOT SW_BUILD_PACK_TOOL)
+  return()
+endif()
+sw_add_test(test_parts_threads SOURCES test_parts_threads.c LIBS sw_runtime sw_assets)
+sw_add_test(test_cell_filter SOURCES test_cell_filter.c LIBS sw_cell_filter)
 
 # The whole programs, end to end (tests/test_walk.sh).
 add_executable(image_compare image_compare.c)
@@ -33,8 +41,9 @@ endforeach()
 add_test(NAME seam_drawn_walk
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_seam_drawn_walk.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
 
-# The includes run one way: no header circle, and the walk's folders
-# (firmware/walk/ and its thread folders) never include each other both ways.
+# The includes run one way: no header circle, the walk's folders
+# (firmware/walk/ and its thread folders) never include each other both
+# ways, and firmware's jobs and platform's folders include round no circle.
 add_test(NAME include_graph
   COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/check_includes.py ${PROJECT_SOURCE_DIR})
 
@@ -145,10 +154,6 @@ if(NOT SW_ASAN AND NOT SW_TSAN)
             $<TARGET_FILE:seamwalk> $<TARGET_FILE:process_alloc_shim> ${SW_SAMPLES}
     WORKING_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
 endif()
-
-# The tessellation cache, and runtime_bytes holding the pack and the walk.
-sw_add_test(test_seam_cache SOURCES test_seam_cache.c LIBS sw_runtime
-            ARGS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack/seed-seam-graph)
 
 # Culling end to end (tests/test_cull_walk.sh): the tree against every patch
 # box, walks with --cull tree and brute picture for picture, and cone culling

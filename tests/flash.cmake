@@ -1,8 +1,19 @@
 # SPDX-License-Identifier: MIT
 # tests of signed packs and the unit's pack store (issue 12): signing and its
 # check (test_pack_sign), the key file and store state parsers' fuzz targets.
-sw_add_test(test_pack_sign SOURCES test_pack_sign.c LIBS sw_assets sw_core)
 sw_add_test(test_pack_store SOURCES test_pack_store.c LIBS sw_runtime)
+# The screen a unit with no valid pack shows, read back from the framebuffer.
+sw_add_test(test_message_screen SOURCES test_message_screen.c LIBS sw_platform sw_core)
+# The parsers of the store's state file and journal.
+sw_add_fuzz_target(fuzz_store SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_store.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store
+  DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/store.dict)
+# A runtime-only build stops here (tests/CMakeLists.txt): the tests below
+# need signed packs that seamwalk-pack builds.
+if(NOT SW_BUILD_PACK_TOOL)
+  return()
+endif()
+sw_add_test(test_pack_sign SOURCES test_pack_sign.c LIBS sw_assets sw_core)
 
 # The store tests' packs and keys (tests/flash_fixture.sh), made once.
 set(SW_FLASH_FIXTURE ${CMAKE_CURRENT_BINARY_DIR}/flash_fixture)
@@ -44,9 +55,6 @@ add_test(NAME test_flash_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_flash
 set_tests_properties(test_flash_cli PROPERTIES FIXTURES_REQUIRED flash_packs SKIP_RETURN_CODE 77)
 sw_host_only_test(test_flash_cli PROGRAMS seamwalk-flash flash_fault_shim)
 
-# The screen a unit with no valid pack shows, read back from the framebuffer.
-sw_add_test(test_message_screen SOURCES test_message_screen.c LIBS sw_platform sw_core)
-
 # The boot side: seamwalk --store (trial, mark-good, fallback after K boots,
 # power cuts while a boot is recorded, the message screen read back).
 # Its display is an X11 window on Xvfb: a headless walk never marks a slot good.
@@ -59,10 +67,7 @@ else()
   sw_test_not_built(SW_WITH_X11 test_flash_boot)
 endif()
 
-# The parsers of the store's state file and journal, and of key files.
-sw_add_fuzz_target(fuzz_store SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_store.c
-  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/store
-  DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/store.dict)
+# The parser of key files.
 sw_add_fuzz_target(fuzz_keys SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_keys.c
   LIBS sw_assets sw_core CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/keys
   DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/keys.dict)

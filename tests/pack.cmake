@@ -1,12 +1,21 @@
 # SPDX-License-Identifier: MIT
-# tests of the pack area: the reader (test_pack; test_pack_trim for the optional
-# sections), the writer (test_pack_write)
-# and the reader's fuzz target with its seed packs.
+# tests of the pack area: the reader's fuzz targets replaying their seed
+# packs, then the reader (test_pack; test_pack_trim for the optional
+# sections) and the writer (test_pack_write).
+sw_add_fuzz_target(fuzz_pack SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pack.c LIBS sw_core
+  CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack)
+# The runtime's threaded loader: helper threads check the parts, and the
+# answer must be the serial reader's (tests/fuzz/fuzz_pack_load.c).
+sw_add_fuzz_target(fuzz_pack_load SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pack_load.c
+  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack)
+# A runtime-only build stops here (tests/CMakeLists.txt): the tests below
+# need the assets library's pack writer.
+if(NOT SW_BUILD_PACK_TOOL)
+  return()
+endif()
 sw_add_test(test_pack SOURCES test_pack.c LIBS sw_assets sw_core)
 sw_add_test(test_pack_trim SOURCES test_pack_trim.c LIBS sw_assets sw_core)
 sw_add_test(test_pack_write SOURCES test_pack_write.c LIBS sw_assets sw_core)
-sw_add_fuzz_target(fuzz_pack SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pack.c LIBS sw_core
-  CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack)
 # seamwalk-pack's progress line (a pseudo-terminal stands in for the user's).
 sw_add_test(test_progress SOURCES test_progress.c LIBS sw_assets sw_core)
 # The up axis: names, the ORIENTATION section, each input's default, the
@@ -33,7 +42,3 @@ sw_add_test(test_pack_levels SOURCES test_pack_levels.c LIBS sw_assets sw_core)
 # written by test_pack_write --write-corpus (pack_sample.h).
 sw_add_test(test_pack_super SOURCES test_pack_super.c LIBS sw_assets sw_core)
 sw_add_test(test_pack_part_levels SOURCES test_pack_part_levels.c LIBS sw_assets sw_core)
-# The runtime's threaded loader: helper threads check the parts, and the
-# answer must be the serial reader's (tests/fuzz/fuzz_pack_load.c).
-sw_add_fuzz_target(fuzz_pack_load SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_pack_load.c
-  LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/pack)

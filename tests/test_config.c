@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "sw_config.h"
+#include "sw_kiosk.h"
 #include "sw_options.h"
 #include "sw_test.h"
 
@@ -53,7 +54,7 @@ static void example_loads_and_is_the_defaults_but_store_and_kms(void)
         SW_CHECK_MSG(sw_config_key_line(&cfg, keys[i]) > 0, "%s not in the example", keys[i]);
     SW_CHECK(sw_config_key_line(&cfg, "display.size") == 0);
     SW_CHECK(sw_config_key_line(&cfg, "display.nonsense") == 0);
-    SW_CHECK(cfg.gpio_count == 0);
+    SW_CHECK(cfg.kiosk.gpio_count == 0);
 }
 
 static char *read_file(const char *path)
@@ -89,14 +90,14 @@ static void example_gpio_block_uncommented_is_the_gpio_defaults(void)
     sw_error err = {0};
     sw_status st = sw_config_load_memory(out, n, "gpio.ini", &cfg, &err);
     SW_CHECK_MSG(st == SW_OK, "%s", err.message);
-    SW_CHECK(cfg.gpio_count == 1);
-    const sw_config_gpio *g = &cfg.gpio[0];
+    SW_CHECK(cfg.kiosk.gpio_count == 1);
+    const sw_kiosk_gpio *g = &cfg.kiosk.gpio[0];
     SW_CHECK(!strcmp(g->name, "next") && !strcmp(g->chip, "gpiochip0"));
     SW_CHECK(g->line_offset == 17 && g->line_name[0] == '\0');
     SW_CHECK(g->active_low == 0 && g->bias == SW_BIAS_AS_IS);
     SW_CHECK(g->debounce_ms == 10 && g->min_press_ms == 2 && g->long_press_ms == 800);
     SW_CHECK(g->action == SW_ACTION_NONE && g->long_action == SW_ACTION_NONE);
-    sw_debounce_params p = sw_config_gpio_debounce(g);
+    sw_debounce_params p = sw_kiosk_gpio_debounce(g);
     SW_CHECK(p.debounce_ns == 10000000 && p.min_press_ns == 2000000);
     SW_CHECK(p.long_press_ns == 800000000 && p.active_low == 0);
     sw_debounce d;
@@ -158,12 +159,12 @@ static void values_are_read(void)
     SW_CHECK(cfg.width == 640 && cfg.height == 480);
     SW_CHECK(!strcmp(cfg.store, "/data/packs") && cfg.pack[0] == '\0');
     SW_CHECK(cfg.memory_mb == 96.5);
-    SW_CHECK(cfg.gamepad_enabled == 0);
-    SW_CHECK(!strcmp(cfg.gamepad_mapping, "/etc/seamwalk/gamecontrollerdb.txt"));
-    SW_CHECK(cfg.nav_mode == SW_NAV_ORBIT && cfg.attract_timeout_s == 0);
+    SW_CHECK(cfg.kiosk.gamepad_enabled == 0);
+    SW_CHECK(!strcmp(cfg.kiosk.gamepad_mapping, "/etc/seamwalk/gamecontrollerdb.txt"));
+    SW_CHECK(cfg.kiosk.nav_mode == SW_NAV_ORBIT && cfg.kiosk.attract_timeout_s == 0);
     SW_CHECK(sw_config_key_line(&cfg, "display.size") == 3);
-    SW_CHECK(cfg.gpio_count == 2);
-    const sw_config_gpio *a = &cfg.gpio[0], *b = &cfg.gpio[1];
+    SW_CHECK(cfg.kiosk.gpio_count == 2);
+    const sw_kiosk_gpio *a = &cfg.kiosk.gpio[0], *b = &cfg.kiosk.gpio[1];
     SW_CHECK(!strcmp(a->line_name, "BUTTON_NEXT") && a->line_offset == -1);
     SW_CHECK(a->active_low == 1 && a->bias == SW_BIAS_PULL_UP && a->debounce_ms == 20);
     SW_CHECK(a->long_press_ms == 0 && a->action == SW_ACTION_NEXT_VIEW && a->line == 14);
@@ -422,10 +423,11 @@ static void without_a_file_the_config_has_its_defaults(void)
     sw_status st = parse(&o, &err, 6, argv);
     SW_CHECK_MSG(st == SW_OK, "%s", err.message);
     SW_CHECK(o.navigate && o.config_path == NULL);
-    SW_CHECK(o.config.keyboard_enabled && o.config.gamepad_enabled);
-    SW_CHECK(o.config.walk_speed_mm_s == want.walk_speed_mm_s && want.walk_speed_mm_s > 0);
-    SW_CHECK(o.config.attract_timeout_s == want.attract_timeout_s);
-    SW_CHECK(!strcmp(o.config.keyboard_device, "auto"));
+    SW_CHECK(o.config.kiosk.keyboard_enabled && o.config.kiosk.gamepad_enabled);
+    SW_CHECK(o.config.kiosk.walk_speed_mm_s == want.kiosk.walk_speed_mm_s &&
+             want.kiosk.walk_speed_mm_s > 0);
+    SW_CHECK(o.config.kiosk.attract_timeout_s == want.kiosk.attract_timeout_s);
+    SW_CHECK(!strcmp(o.config.kiosk.keyboard_device, "auto"));
 }
 
 static void an_unknown_display_word_is_refused(void)
@@ -497,9 +499,9 @@ static void kiosk_input_keys_have_file_line_errors(void)
     sw_config cfg;
     sw_error err = {0};
     SW_CHECK(sw_config_load_memory(good, sizeof good - 1, "x.ini", &cfg, &err) == SW_OK);
-    SW_CHECK(cfg.gamepad_action[0] == SW_ACTION_HOME && cfg.gamepad_action[11] ==
-             SW_ACTION_LOOK_UP && !strcmp(cfg.keyboard_device, "/dev/input/event3") &&
-             cfg.accel_s == 1 && cfg.gamepad_action[1] == SW_ACTION_PREV_VIEW);
+    SW_CHECK(cfg.kiosk.gamepad_action[0] == SW_ACTION_HOME && cfg.kiosk.gamepad_action[11] ==
+             SW_ACTION_LOOK_UP && !strcmp(cfg.kiosk.keyboard_device, "/dev/input/event3") &&
+             cfg.kiosk.accel_s == 1 && cfg.kiosk.gamepad_action[1] == SW_ACTION_PREV_VIEW);
 }
 
 int main(int argc, char **argv)

@@ -43,8 +43,15 @@ set(SW_TEST_COSTS_TSAN
     walk_threads_bench_smoke 13 walk_cache_bench_smoke 13 walk_threads 90 walk_teapot 10
     flash_fixture 8)
 
+# The unit tests under qemu-user (the arm64 cross build, tests/cross/arm64.sh),
+# where emulation makes the arithmetic-heavy ones the long ones.
+set(SW_TEST_COSTS_EMULATED
+    test_trim_tess 67 test_png 19 test_bezier 14 test_normal_cone 10 test_cull_tree 8 test_nurbs 8)
+
 function(sw_apply_test_costs)
-  if(SW_ASAN)
+  if(CMAKE_CROSSCOMPILING_EMULATOR)
+    set(costs ${SW_TEST_COSTS_EMULATED})
+  elseif(SW_ASAN)
     set(costs ${SW_TEST_COSTS_ASAN})
   elseif(SW_TSAN)
     set(costs ${SW_TEST_COSTS_TSAN})

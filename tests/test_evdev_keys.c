@@ -20,6 +20,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include "sw_config.h"
 #include "sw_input_backend.h"
 #include "sw_input_fake.h"
 #include "sw_kiosk.h"
@@ -177,6 +178,18 @@ static void a_release_lost_in_a_drop_comes_back(void)
     kb.close(kb.ctx);
 }
 
+/* Whether the kernel answers an evdev ioctl on a file that is no device
+ * at all: Linux says ENOTTY; qemu-user (the arm64 cross build's tests,
+ * tests/cross/arm64.sh) passes no evdev ioctl on and says ENOSYS. */
+static int kernel_knows_evdev_ioctls(void)
+{
+    int fd = open("/dev/null", O_RDONLY | O_CLOEXEC), version = 0;
+    long rc = syscall(SYS_ioctl, fd, EVIOCGVERSION, &version);
+    int known = !(rc < 0 && errno == ENOSYS);
+    close(fd);
+    return known;
+}
+
 static void a_path_that_is_no_device_is_refused(void)
 {
     sw_key_backend kb = sw_evdev_key_backend();
@@ -184,6 +197,10 @@ static void a_path_that_is_no_device_is_refused(void)
     SW_CHECK(kb.open(kb.ctx, "/no/such/event0", &err) == -1);
     SW_CHECK_MSG(strstr(err.message, "/no/such/event0: No such file") != NULL, "%s", err.message);
     SW_CHECK(kb.open(kb.ctx, "/dev/null", &err) == -1);
+    if (!kernel_knows_evdev_ioctls()) {
+        printf("skip /dev/null's wording: this kernel answers evdev ioctls with ENOSYS\n");
+        return;
+    }
     SW_CHECK_MSG(strstr(err.message, "/dev/null: not an evdev device") != NULL, "%s", err.message);
 }
 
@@ -196,14 +213,14 @@ static void the_kiosk_stops_walking_after_the_drop(void)
     static sw_config cfg;
     sw_key_backend kb = open_fake();
     sw_config_defaults(&cfg);
-    cfg.attract_timeout_s = 0;
-    cfg.gamepad_enabled = 0;
+    cfg.kiosk.attract_timeout_s = 0;
+    cfg.kiosk.gamepad_enabled = 0;
     sw_fake_init(&fake);
     sw_kiosk_devices dev = {NULL, NULL, &kb, fake_path()};
-    sw_nav_params np = sw_kiosk_nav_params(&cfg, 0.8, 1.5, 0);
+    sw_nav_params np = sw_kiosk_nav_params(&cfg.kiosk, 0.8, 1.5, 0);
     sw_camera_frame f = sw_camera_frame_for_up(sw_v3(0, 0, 1));
     sw_box box = {sw_v3(-1000, -1000, 0), sw_v3(1000, 1000, 2000)};
-    sw_kiosk_init(&kiosk, &cfg, &dev, NULL, &np, &f, &box, NULL, 0, 0);
+    sw_kiosk_init(&kiosk, &cfg.kiosk, &dev, NULL, &np, &f, &box, NULL, 0, 0);
     SW_CHECK(kiosk.keys_on);
     key(KEY_UP, 1);
     sw_kiosk_step(&kiosk, 0, 0.01);

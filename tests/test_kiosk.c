@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "hid_fixture.h"
+#include "sw_config.h"
 #include "sw_input_fake.h"
 #include "sw_kiosk.h"
 #include "sw_test.h"
@@ -22,10 +23,10 @@ static sw_key_backend keys;
 
 static const int64_t ms = 1000000;
 
-static void add_button(const char *name, const char *chip, sw_config_action a,
-                       sw_config_action la)
+static void add_button(const char *name, const char *chip, sw_kiosk_action a,
+                       sw_kiosk_action la)
 {
-    sw_config_gpio *g = &cfg.gpio[cfg.gpio_count++];
+    sw_kiosk_gpio *g = &cfg.kiosk.gpio[cfg.kiosk.gpio_count++];
     memset(g, 0, sizeof *g);
     snprintf(g->name, sizeof g->name, "%s", name);
     snprintf(g->chip, sizeof g->chip, "%s", chip);
@@ -43,7 +44,7 @@ static void add_button(const char *name, const char *chip, sw_config_action a,
 static void start_keys(const sw_key_backend *key_backend)
 {
     sw_config_defaults(&cfg);
-    cfg.attract_timeout_s = 0;
+    cfg.kiosk.attract_timeout_s = 0;
     add_button("next", "gpiochip0", SW_ACTION_NEXT_VIEW, SW_ACTION_NONE);
     add_button("home", "gpiochip0", SW_ACTION_HOME, SW_ACTION_ATTRACT);
     add_button("walk", "gpiochip0", SW_ACTION_FORWARD, SW_ACTION_NONE);
@@ -53,16 +54,16 @@ static void start_keys(const sw_key_backend *key_backend)
     gpio = sw_fake_gpio_backend(&fake);
     keys = key_backend ? *key_backend : sw_fake_key_backend(&fake);
     sw_kiosk_devices dev = {&hid, &gpio, &keys, "auto"};
-    sw_nav_params np = sw_kiosk_nav_params(&cfg, 0.8, 1.5, 0);
+    sw_nav_params np = sw_kiosk_nav_params(&cfg.kiosk, 0.8, 1.5, 0);
     sw_camera_frame f = sw_camera_frame_for_up(sw_v3(0, 0, 1));
     sw_box box = {sw_v3(-1000, -1000, 0), sw_v3(1000, 1000, 2000)};
-    sw_kiosk_init(&kiosk, &cfg, &dev, NULL, &np, &f, &box, NULL, 0, 0);
+    sw_kiosk_init(&kiosk, &cfg.kiosk, &dev, NULL, &np, &f, &box, NULL, 0, 0);
 }
 
 static void start(void) { start_keys(NULL); }
 
 /* Steps frames of 10 ms from t0 to t1, counting actions a. */
-static int count_actions(int64_t t0, int64_t t1, sw_config_action a)
+static int count_actions(int64_t t0, int64_t t1, sw_kiosk_action a)
 {
     int n = 0;
     for (int64_t t = t0; t <= t1; t += 10 * ms) {
@@ -194,7 +195,7 @@ static void gamepad_buttons_fire_once_and_sticks_steer(void)
     uint8_t rep[8] = {0xFF, 0x80, 0x80, 0x80, 0x08 | 0x10, 0, 0, 0}; /* x right, button 1 */
     sw_fake_report(&fake, 0, rep, 8);
     sw_kiosk_step(&kiosk, 0, 0.01);
-    SW_CHECK(kiosk.last.actions == 1u << cfg.gamepad_action[SW_PAD_A]);
+    SW_CHECK(kiosk.last.actions == 1u << cfg.kiosk.gamepad_action[SW_PAD_A]);
     SW_CHECK_NEAR(kiosk.last.turn, 1, 1e-4);
     sw_kiosk_step(&kiosk, 10 * ms, 0.01);  /* still held: no second action */
     SW_CHECK(kiosk.last.actions == 0 && kiosk.last.activity);

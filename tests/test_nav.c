@@ -50,7 +50,7 @@ static void near_v(sw_vec3 a, double x, double y, double z, double tol)
     SW_CHECK_NEAR(a.z, z, tol);
 }
 
-static uint32_t act(sw_config_action a) { return 1u << a; }
+static uint32_t act(sw_kiosk_action a) { return 1u << a; }
 
 static void walk_ramps_up_and_glides_to_a_stop(void)
 {

@@ -7,9 +7,9 @@
 #include <stdio.h>
 #include <string.h>
 
-_Static_assert((int)SW_CONFIG_PAD_BUTTONS == (int)SW_PAD_BUTTON_COUNT,
+_Static_assert((int)SW_KIOSK_PAD_BUTTONS == (int)SW_PAD_BUTTON_COUNT,
                "a [gamepad] action key per gamepad button");
-_Static_assert((int)SW_CONFIG_GPIO_MAX <= (int)SW_GPIO_LINES_MAX,
+_Static_assert((int)SW_KIOSK_GPIO_MAX <= (int)SW_GPIO_LINES_MAX,
                "a backend can hold every [gpio] button's line");
 
 /* The keyboard's fixed table: development and service use, not showroom
@@ -57,7 +57,7 @@ static void fire(sw_nav_input *in, int a)
 }
 
 /* The line a [gpio NAME] section asks the backend for. */
-static sw_gpio_line gpio_line(const sw_config_gpio *g)
+static sw_gpio_line gpio_line(const sw_kiosk_gpio *g)
 {
     sw_gpio_line l = {.line_offset = g->line_offset, .active_low = g->active_low};
     _Static_assert(sizeof l.name == sizeof g->name && sizeof l.chip == sizeof g->chip &&
@@ -78,7 +78,7 @@ static void open_buttons(sw_kiosk *k, int64_t now_ns)
 {
     for (int i = 0; i < k->cfg->gpio_count; i++) {
         sw_kiosk_button *b = &k->buttons[k->button_count];
-        const sw_config_gpio *g = &k->cfg->gpio[i];
+        const sw_kiosk_gpio *g = &k->cfg->gpio[i];
         sw_error err = {0};
         int high = 0;
         *b = (sw_kiosk_button){.cfg = g, .handle = -1};
@@ -88,13 +88,13 @@ static void open_buttons(sw_kiosk *k, int64_t now_ns)
             fprintf(stderr, "seamwalk: [gpio %s] not used: %s\n", g->name, err.message);
             continue;
         }
-        sw_debounce_params dp = sw_config_gpio_debounce(g);
+        sw_debounce_params dp = sw_kiosk_gpio_debounce(g);
         sw_debounce_init(&b->debounce, &dp, now_ns, high); /* the config checked dp */
         k->button_count++;
     }
 }
 
-void sw_kiosk_init(sw_kiosk *k, const sw_config *cfg, const sw_kiosk_devices *dev,
+void sw_kiosk_init(sw_kiosk *k, const sw_kiosk_config *cfg, const sw_kiosk_devices *dev,
                    const sw_pad_mapping_db *db, const sw_nav_params *nav,
                    const sw_camera_frame *frame, const sw_box *box,
                    const sw_pack_viewpoint *views, uint32_t view_count, int64_t now_ns)
@@ -251,7 +251,7 @@ void sw_kiosk_close(sw_kiosk *k)
     k->pads_on = k->button_count = k->keys_on = 0;
 }
 
-sw_nav_params sw_kiosk_nav_params(const sw_config *cfg, double fovy_rad, double aspect,
+sw_nav_params sw_kiosk_nav_params(const sw_kiosk_config *cfg, double fovy_rad, double aspect,
                                   int start_orbit)
 {
     return (sw_nav_params){
@@ -266,5 +266,16 @@ sw_nav_params sw_kiosk_nav_params(const sw_config *cfg, double fovy_rad, double 
         .fovy_rad = fovy_rad,
         .aspect = aspect,
         .start_orbit = start_orbit,
+    };
+}
+
+sw_debounce_params sw_kiosk_gpio_debounce(const sw_kiosk_gpio *gpio)
+{
+    const int64_t ms = 1000000;
+    return (sw_debounce_params){
+        .debounce_ns = gpio->debounce_ms * ms,
+        .min_press_ns = gpio->min_press_ms * ms,
+        .long_press_ns = gpio->long_press_ms * ms,
+        .active_low = gpio->active_low,
     };
 }

@@ -30,9 +30,9 @@
 
 #include <stdint.h>
 
-#include "sw_config.h"
 #include "sw_debounce.h"
 #include "sw_input_backend.h"
+#include "sw_kiosk_config.h"
 #include "sw_nav.h"
 #include "sw_pads.h"
 
@@ -44,7 +44,7 @@ typedef struct sw_kiosk_devices {
 } sw_kiosk_devices;
 
 typedef struct sw_kiosk_button {
-    const sw_config_gpio *cfg;
+    const sw_kiosk_gpio *cfg;
     int handle;                   /* -1: its line could not be requested */
     sw_debounce debounce;
     int held, long_held;
@@ -53,11 +53,11 @@ typedef struct sw_kiosk_button {
 enum { SW_KIOSK_KEYS = 20 };
 
 typedef struct sw_kiosk {
-    const sw_config *cfg;
+    const sw_kiosk_config *cfg;
     sw_pads pads;
     int pads_on;
     const sw_gpio_backend *gpio;
-    sw_kiosk_button buttons[SW_CONFIG_GPIO_MAX];
+    sw_kiosk_button buttons[SW_KIOSK_GPIO_MAX];
     int button_count;
     const sw_key_backend *keys;
     int keys_on;
@@ -69,7 +69,7 @@ typedef struct sw_kiosk {
 
 /* Opens the devices the config asks for (logging what is missing) and
  * starts the navigation. now_ns: the clock the devices' timestamps use. */
-void sw_kiosk_init(sw_kiosk *k, const sw_config *cfg, const sw_kiosk_devices *dev,
+void sw_kiosk_init(sw_kiosk *k, const sw_kiosk_config *cfg, const sw_kiosk_devices *dev,
                    const sw_pad_mapping_db *db, const sw_nav_params *nav,
                    const sw_camera_frame *frame, const sw_box *box,
                    const sw_pack_viewpoint *views, uint32_t view_count, int64_t now_ns);
@@ -80,7 +80,11 @@ sw_camera_pose sw_kiosk_step(sw_kiosk *k, int64_t now_ns, double dt_s);
 void sw_kiosk_close(sw_kiosk *k);
 
 /* The navigation parameters from the config (fovy, aspect from the caller). */
-sw_nav_params sw_kiosk_nav_params(const sw_config *cfg, double fovy_rad, double aspect,
+sw_nav_params sw_kiosk_nav_params(const sw_kiosk_config *cfg, double fovy_rad, double aspect,
                                   int start_orbit);
+
+/* A button's debounce parameters in nanoseconds. Every [gpio] section the
+ * config's parser accepts gives parameters sw_debounce_init accepts. */
+sw_debounce_params sw_kiosk_gpio_debounce(const sw_kiosk_gpio *gpio);
 
 #endif

@@ -93,21 +93,21 @@ static sw_status open_pose_log(sw_kiosk_run *r, const char *path, sw_error *err)
     return SW_OK;
 }
 
-sw_status sw_kiosk_run_start(sw_kiosk_run *r, const sw_options *opt, sw_display *display,
-                             const sw_camera_frame *frame,
-                             const sw_box *box, const sw_pack_viewpoint *views,
-                             uint32_t view_count, double fovy_rad, double aspect, sw_error *err)
+sw_status sw_kiosk_run_start(sw_kiosk_run *r, const sw_kiosk_run_desc *desc,
+                             sw_display *display, const sw_camera_frame *frame, const sw_box *box,
+                             const sw_pack_viewpoint *views, uint32_t view_count,
+                             double fovy_rad, double aspect, sw_error *err)
 {
-    const sw_config *cfg = &opt->config;
+    const sw_kiosk_config *cfg = desc->config;
     sw_status st = SW_OK;
     if (cfg->gamepad_mapping[0] &&
         (st = sw_pad_mapping_db_load(cfg->gamepad_mapping, &r->db, err)) != SW_OK)
         return st;
-    if (opt->pose_log && (st = open_pose_log(r, opt->pose_log, err)) != SW_OK)
+    if (desc->pose_log && (st = open_pose_log(r, desc->pose_log, err)) != SW_OK)
         return st;
-    r->simulated = opt->input_timeline != NULL;
+    r->simulated = desc->input_timeline != NULL;
     if (r->simulated) {
-        if ((st = load_timeline(r, opt->input_timeline, err)) != SW_OK)
+        if ((st = load_timeline(r, desc->input_timeline, err)) != SW_OK)
             return st;
         sw_fake_init(&r->fake);
         r->hid = sw_fake_hid_backend(&r->fake);

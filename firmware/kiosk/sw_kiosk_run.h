@@ -15,9 +15,15 @@
 #include "sw_display.h"
 #include "sw_input_fake.h"
 #include "sw_kiosk.h"
-#include "sw_options.h"
 
 #define SW_KIOSK_TIMELINE_HZ 30.0
+
+/* What seamwalk's options ask of the kiosk (sw_options.h fills them). */
+typedef struct sw_kiosk_run_desc {
+    const sw_kiosk_config *config;
+    const char *input_timeline;      /* a timeline drives fake devices; NULL: the real ones */
+    const char *pose_log;            /* each frame's camera pose goes there; NULL: nowhere */
+} sw_kiosk_run_desc;
 
 typedef struct sw_kiosk_run {
     sw_kiosk kiosk;
@@ -40,8 +46,8 @@ typedef struct sw_kiosk_run {
 /* Start-up: may allocate. fovy/aspect for the orbit's distance. display:
  * with --navigate, a window's keyboard is read from it (else evdev); may be
  * NULL. */
-sw_status sw_kiosk_run_start(sw_kiosk_run *run, const sw_options *opt, sw_display *display,
-                             const sw_camera_frame *frame, const sw_box *box,
+sw_status sw_kiosk_run_start(sw_kiosk_run *run, const sw_kiosk_run_desc *desc,
+                             sw_display *display, const sw_camera_frame *frame, const sw_box *box,
                              const sw_pack_viewpoint *views, uint32_t view_count,
                              double fovy_rad, double aspect, sw_error *err);
 

@@ -9,7 +9,7 @@
 
 #define DEG (SW_PI / 180.0)
 
-static uint32_t bit(sw_config_action a) { return 1u << a; }
+static uint32_t bit(sw_kiosk_action a) { return 1u << a; }
 
 static sw_vec3 direction(const sw_nav *n, double yaw, double pitch)
 {

@@ -29,7 +29,7 @@
 #include <stdint.h>
 
 #include "sw_camera_path.h"
-#include "sw_config.h"
+#include "sw_kiosk_config.h"
 #include "sw_pack.h"
 
 typedef struct sw_nav_params {
@@ -44,7 +44,7 @@ typedef struct sw_nav_params {
 } sw_nav_params;
 
 /* One frame's input. Axes in [-1, 1]: move forward +, strafe right +, turn
- * right +, look up +. actions: bit (1u << sw_config_action) for each
+ * right +, look up +. actions: bit (1u << sw_kiosk_action) for each
  * discrete action fired this frame (next_view, prev_view, home,
  * toggle_mode, attract). activity: any device saw any input this frame. */
 typedef struct sw_nav_input {

@@ -421,7 +421,8 @@ static sw_status take_readback(sw_program *rt, int always, sw_error *err)
 static sw_status start_kiosk(sw_program *rt, sw_error *err)
 {
     rt->kiosk_up = 1;
-    return sw_kiosk_run_start(&rt->kiosk, &rt->opt, rt->display, &rt->frame, &rt->model_box,
+    sw_kiosk_run_desc desc = {&rt->opt.config.kiosk, rt->opt.input_timeline, rt->opt.pose_log};
+    return sw_kiosk_run_start(&rt->kiosk, &desc, rt->display, &rt->frame, &rt->model_box,
                               rt->pack.viewpoints, rt->pack.viewpoint_count,
                               rt->opt.fov_deg * SW_PI / 180.0,
                               (double)rt->opt.width / rt->opt.height, err);

@@ -42,7 +42,8 @@ static const char *const action_words[] = {"none", "forward", "back", "turn_left
                                            "strafe_left", "strafe_right", NULL};
 
 #define C(field) offsetof(sw_config, field)
-#define G(field) offsetof(sw_config_gpio, field)
+#define K(field) offsetof(sw_config, kiosk.field)
+#define G(field) offsetof(sw_kiosk_gpio, field)
 
 static const key_desc config_keys[] = {
     {"display", "display", K_ENUM, C(display), 0, 0, 0, display_words},
@@ -58,27 +59,27 @@ static const key_desc config_keys[] = {
     {"render", "batch_tris", K_INT, C(render_batch_tris), 0, 0, 1 << 24, NULL},
     {"budgets", "frame_ms", K_REAL, C(budget_frame_ms), 0, 1, SW_CONFIG_MAX_FRAME_MS, NULL},
     {"budgets", "workers", K_INT, C(budget_workers), 0, -1, SW_CONFIG_MAX_WORKERS, NULL},
-    {"gamepad", "enabled", K_BOOL, C(gamepad_enabled), 0, 0, 0, NULL},
-    {"gamepad", "mapping", K_PATH, C(gamepad_mapping), 0, 0, 0, NULL},
-    {"gamepad", "dead_zone", K_REAL, C(gamepad_dead_zone), 0, 0, 0.95, NULL},
-#define PAD_BUTTON(name, i) {"gamepad", name, K_ENUM, C(gamepad_action[i]), 0, 0, 0, action_words}
+    {"gamepad", "enabled", K_BOOL, K(gamepad_enabled), 0, 0, 0, NULL},
+    {"gamepad", "mapping", K_PATH, K(gamepad_mapping), 0, 0, 0, NULL},
+    {"gamepad", "dead_zone", K_REAL, K(gamepad_dead_zone), 0, 0, 0.95, NULL},
+#define PAD_BUTTON(name, i) {"gamepad", name, K_ENUM, K(gamepad_action[i]), 0, 0, 0, action_words}
     PAD_BUTTON("a", 0), PAD_BUTTON("b", 1), PAD_BUTTON("x", 2), PAD_BUTTON("y", 3),
     PAD_BUTTON("back", 4), PAD_BUTTON("guide", 5), PAD_BUTTON("start", 6),
     PAD_BUTTON("leftstick", 7), PAD_BUTTON("rightstick", 8), PAD_BUTTON("leftshoulder", 9),
     PAD_BUTTON("rightshoulder", 10), PAD_BUTTON("dpup", 11), PAD_BUTTON("dpdown", 12),
     PAD_BUTTON("dpleft", 13), PAD_BUTTON("dpright", 14),
 #undef PAD_BUTTON
-    {"keyboard", "enabled", K_BOOL, C(keyboard_enabled), 0, 0, 0, NULL},
-    {"keyboard", "device", K_PATH, C(keyboard_device), 0, 0, 0, NULL},
-    {"navigation", "mode", K_ENUM, C(nav_mode), 0, 0, 0, nav_words},
-    {"navigation", "walk_speed_mm_s", K_REAL, C(walk_speed_mm_s), 0, 0, 1e6, NULL},
-    {"navigation", "turn_speed_deg_s", K_REAL, C(turn_speed_deg_s), 0, 0, 3600, NULL},
-    {"navigation", "orbit_speed_deg_s", K_REAL, C(orbit_speed_deg_s), 0, 0, 3600, NULL},
-    {"navigation", "accel_s", K_REAL, C(accel_s), 0, 0.01, 10, NULL},
-    {"navigation", "eye_height_mm", K_REAL, C(eye_height_mm), 0, 0, 1e6, NULL},
-    {"navigation", "transition_s", K_REAL, C(transition_s), 0, 0.05, 60, NULL},
-    {"navigation", "attract_hold_s", K_REAL, C(attract_hold_s), 0, 0.5, 3600, NULL},
-    {"navigation", "attract_timeout_s", K_REAL, C(attract_timeout_s), 0, 0, 86400, NULL},
+    {"keyboard", "enabled", K_BOOL, K(keyboard_enabled), 0, 0, 0, NULL},
+    {"keyboard", "device", K_PATH, K(keyboard_device), 0, 0, 0, NULL},
+    {"navigation", "mode", K_ENUM, K(nav_mode), 0, 0, 0, nav_words},
+    {"navigation", "walk_speed_mm_s", K_REAL, K(walk_speed_mm_s), 0, 0, 1e6, NULL},
+    {"navigation", "turn_speed_deg_s", K_REAL, K(turn_speed_deg_s), 0, 0, 3600, NULL},
+    {"navigation", "orbit_speed_deg_s", K_REAL, K(orbit_speed_deg_s), 0, 0, 3600, NULL},
+    {"navigation", "accel_s", K_REAL, K(accel_s), 0, 0.01, 10, NULL},
+    {"navigation", "eye_height_mm", K_REAL, K(eye_height_mm), 0, 0, 1e6, NULL},
+    {"navigation", "transition_s", K_REAL, K(transition_s), 0, 0.05, 60, NULL},
+    {"navigation", "attract_hold_s", K_REAL, K(attract_hold_s), 0, 0.5, 3600, NULL},
+    {"navigation", "attract_timeout_s", K_REAL, K(attract_timeout_s), 0, 0, 86400, NULL},
 };
 enum { CONFIG_KEY_COUNT = sizeof config_keys / sizeof config_keys[0] };
 _Static_assert(CONFIG_KEY_COUNT <= sizeof(((sw_config *)0)->key_line) / sizeof(long),
@@ -115,28 +116,28 @@ void sw_config_defaults(sw_config *cfg)
     cfg->render_batch_tris = SW_GL_POOL_BATCH_TRIANGLES;
     cfg->budget_frame_ms = 16.7;
     cfg->budget_workers = -1;
-    cfg->gamepad_enabled = 1;
-    cfg->gamepad_dead_zone = 0.15;
-    static const sw_config_action pad_actions[SW_CONFIG_PAD_BUTTONS] = {
+    cfg->kiosk.gamepad_enabled = 1;
+    cfg->kiosk.gamepad_dead_zone = 0.15;
+    static const sw_kiosk_action pad_actions[SW_KIOSK_PAD_BUTTONS] = {
         SW_ACTION_NEXT_VIEW, SW_ACTION_PREV_VIEW, SW_ACTION_TOGGLE_MODE, SW_ACTION_HOME,
         SW_ACTION_NONE, SW_ACTION_HOME, SW_ACTION_ATTRACT, SW_ACTION_NONE, SW_ACTION_NONE,
         SW_ACTION_PREV_VIEW, SW_ACTION_NEXT_VIEW, SW_ACTION_FORWARD, SW_ACTION_BACK,
         SW_ACTION_TURN_LEFT, SW_ACTION_TURN_RIGHT};
-    memcpy(cfg->gamepad_action, pad_actions, sizeof pad_actions);
-    cfg->keyboard_enabled = 1;
-    memcpy(cfg->keyboard_device, "auto", 5);
-    cfg->accel_s = 0.4;
-    cfg->eye_height_mm = 1600;
-    cfg->transition_s = 1.5;
-    cfg->attract_hold_s = 8;
-    cfg->nav_mode = SW_NAV_WALK;
-    cfg->walk_speed_mm_s = 1500;
-    cfg->turn_speed_deg_s = 90;
-    cfg->orbit_speed_deg_s = 30;
-    cfg->attract_timeout_s = 120;
+    memcpy(cfg->kiosk.gamepad_action, pad_actions, sizeof pad_actions);
+    cfg->kiosk.keyboard_enabled = 1;
+    memcpy(cfg->kiosk.keyboard_device, "auto", 5);
+    cfg->kiosk.accel_s = 0.4;
+    cfg->kiosk.eye_height_mm = 1600;
+    cfg->kiosk.transition_s = 1.5;
+    cfg->kiosk.attract_hold_s = 8;
+    cfg->kiosk.nav_mode = SW_NAV_WALK;
+    cfg->kiosk.walk_speed_mm_s = 1500;
+    cfg->kiosk.turn_speed_deg_s = 90;
+    cfg->kiosk.orbit_speed_deg_s = 30;
+    cfg->kiosk.attract_timeout_s = 120;
 }
 
-static void gpio_defaults(sw_config_gpio *g)
+static void gpio_defaults(sw_kiosk_gpio *g)
 {
     memset(g, 0, sizeof *g);
     g->line_offset = -1;
@@ -156,7 +157,7 @@ typedef struct config_parse {
     sw_error *err;
     int section;                    /* index into section_words, or SECTION_* */
     char section_name[48];          /* as written, for messages */
-    sw_config_gpio *gpio;           /* with SECTION_GPIO */
+    sw_kiosk_gpio *gpio;           /* with SECTION_GPIO */
     long gpio_line[GPIO_KEY_COUNT]; /* where the gpio section's keys were given */
 } config_parse;
 
@@ -329,7 +330,7 @@ static long later(long a, long b) { return a > b ? a : b; }
 /* The checks that need the whole [gpio NAME] section. */
 static int end_gpio_section(config_parse *ps)
 {
-    sw_config_gpio *g = ps->gpio;
+    sw_kiosk_gpio *g = ps->gpio;
     const long *at = ps->gpio_line;
     ps->gpio = NULL;
     if (!g)
@@ -359,14 +360,14 @@ static int begin_gpio_section(config_parse *ps, const char *name)
         return fail_at(ps, ps->line, "[%s]: expected [gpio NAME], NAME of 1..%d letters, digits, "
                        "'_' or '-'", ps->section_name, SW_CONFIG_NAME_MAX - 1);
     sw_config *cfg = ps->cfg;
-    for (int i = 0; i < cfg->gpio_count; i++)
-        if (!strcmp(cfg->gpio[i].name, name))
+    for (int i = 0; i < cfg->kiosk.gpio_count; i++)
+        if (!strcmp(cfg->kiosk.gpio[i].name, name))
             return fail_at(ps, ps->line, "[%s]: expected a new button name, [gpio %s] is on line "
-                           "%ld", ps->section_name, name, cfg->gpio[i].line);
-    if (cfg->gpio_count == SW_CONFIG_GPIO_MAX)
+                           "%ld", ps->section_name, name, cfg->kiosk.gpio[i].line);
+    if (cfg->kiosk.gpio_count == SW_CONFIG_GPIO_MAX)
         return fail_at(ps, ps->line, "[%s]: expected at most %d [gpio] sections",
                        ps->section_name, SW_CONFIG_GPIO_MAX);
-    sw_config_gpio *g = &cfg->gpio[cfg->gpio_count++];
+    sw_kiosk_gpio *g = &cfg->kiosk.gpio[cfg->kiosk.gpio_count++];
     gpio_defaults(g);
     memcpy(g->name, name, len + 1);
     g->line = ps->line;
@@ -590,15 +591,4 @@ long sw_config_key_line(const sw_config *cfg, const char *section_dot_key)
 const char *sw_config_display_name(sw_config_display display)
 {
     return (unsigned)display < 5 ? display_words[display] : "?";
-}
-
-sw_debounce_params sw_config_gpio_debounce(const sw_config_gpio *gpio)
-{
-    const int64_t ms = 1000000;
-    return (sw_debounce_params){
-        .debounce_ns = gpio->debounce_ms * ms,
-        .min_press_ns = gpio->min_press_ms * ms,
-        .long_press_ns = gpio->long_press_ms * ms,
-        .active_low = gpio->active_low,
-    };
 }

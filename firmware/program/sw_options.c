@@ -133,7 +133,7 @@ static void apply_config(sw_options *o)
     o->batch_tris = c->render_batch_tris;
     o->target_ms = c->budget_frame_ms;
     o->workers = c->budget_workers;
-    o->orbit = c->nav_mode == SW_NAV_ORBIT;
+    o->orbit = c->kiosk.nav_mode == SW_NAV_ORBIT;
 }
 
 /* --config FILE anywhere on the command line; the main loop checks it again. */
@@ -191,10 +191,10 @@ static sw_status check_complete(const sw_options *o, sw_error *err)
 static sw_status check_built(const sw_options *o, sw_error *err)
 {
     sw_status st = sw_display_kind_check_built(o->display, err);
-    if (st != SW_OK || SW_HAVE_GPIOD || !o->navigate || o->config.gpio_count == 0)
+    if (st != SW_OK || SW_HAVE_GPIOD || !o->navigate || o->config.kiosk.gpio_count == 0)
         return st;
     return sw_error_set(err, SW_ERR_ARG, "[gpio %s]: built without libgpiod (SW_WITH_GPIOD=OFF)",
-                        o->config.gpio[0].name);
+                        o->config.kiosk.gpio[0].name);
 }
 
 sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)

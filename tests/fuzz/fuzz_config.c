@@ -8,13 +8,14 @@
 #include <string.h>
 
 #include "sw_config.h"
+#include "sw_kiosk.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-static int gpio_ok(const sw_config_gpio *g)
+static int gpio_ok(const sw_kiosk_gpio *g)
 {
     sw_debounce d;
-    sw_debounce_params p = sw_config_gpio_debounce(g);
+    sw_debounce_params p = sw_kiosk_gpio_debounce(g);
     return sw_debounce_init(&d, &p, 0, 0) == 0 && g->name[0] && g->chip[0] &&
            (g->line_name[0] != '\0') != (g->line_offset >= 0);
 }
@@ -30,10 +31,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             abort();
         return 0;
     }
-    if (cfg.gpio_count < 0 || cfg.gpio_count > SW_CONFIG_GPIO_MAX)
+    if (cfg.kiosk.gpio_count < 0 || cfg.kiosk.gpio_count > SW_CONFIG_GPIO_MAX)
         abort();
-    for (int i = 0; i < cfg.gpio_count; i++)
-        if (!gpio_ok(&cfg.gpio[i]))
+    for (int i = 0; i < cfg.kiosk.gpio_count; i++)
+        if (!gpio_ok(&cfg.kiosk.gpio[i]))
             abort();
     if (cfg.pack[0] && cfg.store[0])
         abort();
