@@ -156,7 +156,7 @@ static double measured_error(sw_part_mesh *m, piece_job *j, size_t n, double bou
 
 /* Tries of index counts searched for the coarsest simplification within
  * a bound, after meshoptimizer's own stop. */
-#define CALIBRATION_STEPS 4
+#define CALIBRATION_STEPS 5
 
 /* The coarsest simplification found within bound keeping the border as
  * asked, in m->best: its index count (0: none; -1 out of memory), its
@@ -185,8 +185,8 @@ static long long search_within(sw_part_mesh *m, piece_job *j, double bound, doub
         guess = (double)n * e / bound;
     }
     /* First where triangles inversely as the error would put it (a curved
-     * surface's), then halving the interval, to within a quarter. */
-    for (int step = 0; step < CALIBRATION_STEPS && fine > coarse + coarse / 4 + 3; step++) {
+     * surface's), then halving the interval, to within an eighth. */
+    for (int step = 0; step < CALIBRATION_STEPS && fine > coarse + coarse / 8 + 3; step++) {
         double at = step ? 0.5 * (double)(coarse + fine) : guess;
         size_t mid = (size_t)fmin(fmax(at, (double)coarse + 3), (double)fine) / 3 * 3;
         n = simplify_once(m, j, mid > 3 ? mid : 3, FLT_MAX, keep);
@@ -216,14 +216,15 @@ static long long simplify_within(sw_part_mesh *m, piece_job *j, double bound, do
 {
     long long n = search_within(m, j, bound, scale, KEEP_NONE, error);
     if (n > 0 && *error > bound && !j->cut) {
+        memcpy(m->aside, m->best, (size_t)n * sizeof *m->best);   /* the first, kept */
         double e = 0;
         long long k = search_within(m, j, bound, scale, KEEP_CORNERS, &e);
         if (k < 0)
             return -1;
         if (k > 0 && e <= bound)
             n = k, *error = e;
-        else   /* none within: the first search's, made again */
-            n = search_within(m, j, bound, scale, KEEP_NONE, error);
+        else   /* none within: the first search's */
+            memcpy(m->best, m->aside, (size_t)n * sizeof *m->best);
     }
     if (n > 0) {
         j->r->over_bound += *error > bound;
@@ -260,7 +261,10 @@ static sw_status build_piece(sw_part_mesh *m, sw_part_level_arrays *o, piece_job
     uint32_t *best = sw_grow(m->best, &m->cap_b, m->icount + 1, sizeof *m->best);
     if (best)
         m->best = best;
-    if (!dest || !best)
+    uint32_t *aside = sw_grow(m->aside, &m->cap_a, m->icount + 1, sizeof *m->aside);
+    if (aside)
+        m->aside = aside;
+    if (!dest || !best || !aside)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
     double size = sw_part_mesh_size(m), scale = meshopt_simplifyScale(m->wpos, m->wcount, 12);
     j->source = (sw_mesh_view){ m->wpos, m->idx, m->wcount, m->icount };
