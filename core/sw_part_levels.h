@@ -35,7 +35,9 @@
 
 #include "sw_levels.h"
 
-#define SW_PART_LEVELS_MAX 8u     /* levels per piece and front */
+/* Levels per piece and front: a cut piece's source, one for each bound
+ * the builder tries (at most 8), and a last of a few triangles. */
+#define SW_PART_LEVELS_MAX 10u
 #define SW_PART_LEVEL_FRONTS 3u   /* fronts of a cut part (its pieces' borders) */
 /* The front of a cut part's levels of itself whole, kept with its first
  * piece: far away a whole part has no border to keep, and its pieces'

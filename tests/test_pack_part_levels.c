@@ -108,8 +108,8 @@ static void test_rules(void)
                     "PART_LEVEL_INDICES[8]: 3, expected < 3");
     expect_rejected((make_sample_part_levels(&k), k.part_levels[2] = 1, &k), SW_ERR_FORMAT,
                     "PART_LEVEL_RANGES: runs from 0 to 1, expected 0 to 2");
-    expect_rejected((make_sample_part_levels(&k), k.part_levels[1] = 33, &k), SW_ERR_FORMAT,
-                    "PART_LEVEL_RANGES[0]: 0 to 33, expected rising by at most 32 within the 2");
+    expect_rejected((make_sample_part_levels(&k), k.part_levels[1] = 41, &k), SW_ERR_FORMAT,
+                    "PART_LEVEL_RANGES[0]: 0 to 41, expected rising by at most 40 within the 2");
     expect_rejected((make_sample_part_levels(&k), k.piece_of[1] = 0, &k), SW_ERR_FORMAT,
                     "PART_LEVEL_PIECE_OF[1]: 0, expected 1 to 1 (a part's own pieces");
     expect_rejected((make_sample_part_levels(&k), k.piece_of[0] = 1, &k), SW_ERR_FORMAT,

@@ -447,8 +447,8 @@ sw_status sw_part_levels_build(const sw_pack *pack, const sw_levels *levels,
     sw_part_levels_options o = opt ? *opt : (sw_part_levels_options){ 0 };
     o.finest = o.finest > 0 ? o.finest : 1.0 / 512;
     o.step = o.step > 1 ? o.step : 2.0;
-    o.count = o.count ? (o.count < SW_PART_LEVELS_MAX ? o.count : SW_PART_LEVELS_MAX)
-                      : SW_PART_LEVELS_MAX;
+    o.count = o.count ? (o.count < SW_PART_LEVELS_MAX - 2 ? o.count : SW_PART_LEVELS_MAX - 2)
+                      : 8;
     report->parts = pack->meta->part_count;
     uint8_t *cut = NULL;
     piece_sources ps;

@@ -53,8 +53,8 @@
 typedef struct sw_part_levels_options {
     double finest;      /* the finest level's bound over the part's size (0: 1/512) */
     double step;        /* each level's bound over the one before (0: 2) */
-    uint32_t count;     /* levels tried per piece and front (0 and at most:
-                           SW_PART_LEVELS_MAX) */
+    uint32_t count;     /* bounds tried per piece and front (0: 8; at most
+                           SW_PART_LEVELS_MAX - 2) */
     uint32_t cut_patches;   /* parts with more patches are cut into pieces (0:
                                SW_PART_CUT_PATCHES, sw_part_pieces.h) */
     uint32_t piece_patches; /* patches a piece, at most (0: 256) */
