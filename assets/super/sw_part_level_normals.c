@@ -165,7 +165,7 @@ double sw_part_level_shaded_side(const sw_part_mesh *m, const sw_mesh_grid *sour
 {
     /* The corners take the source's normals; between them, on the edges
      * too, the blend may match no face (two walls at a right angle). */
-    enum { N = 4, POINTS = (N + 1) * (N + 2) / 2 - 3 };
+    enum { N = 6, POINTS = (N + 1) * (N + 2) / 2 - 3 };
     double area = 0;
     for (uint32_t t = 0; t + 2 < l->index_count; t += 3) {
         const float *p[3];

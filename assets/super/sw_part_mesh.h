@@ -101,8 +101,8 @@ int sw_part_level_emit(sw_part_mesh *m, const sw_mesh_grid *source_grid, sw_part
 /* Level l's shading side (sw_part_level): the side of a square of the area
  * of its triangles whose shading normal lies more than 30 degrees off the
  * source's at every source point within the level's error (either side: the
- * renderer lights both), sampled at the 12 points of a barycentric grid of
- * quarters on each triangle but its corners. The level may lie anywhere
+ * renderer lights both), sampled at the 25 points of a barycentric grid of
+ * sixths on each triangle but its corners. The level may lie anywhere
  * within its error of the source, so its shading may too: a point near a
  * crease matches either face. A level simplified across a crease blends the
  * two faces' normals over the triangles that span it, and a triangle whose
