@@ -286,12 +286,6 @@ int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
 
 double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing)
 {
-    return sw_mesh_distance_until(a, g, spacing, INFINITY);
-}
-
-double sw_mesh_distance_until(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing,
-                              double limit)
-{
     /* A triangle sampled at its corners alone shares them with its
      * neighbours: those vertices are measured once each, afterwards. */
     uint8_t *corner = calloc((size_t)a->vertex_count + 1, 1);
@@ -313,17 +307,15 @@ double sw_mesh_distance_until(const sw_mesh_view *a, const sw_mesh_grid *g, doub
             continue;
         }
         n = n < 1 ? 1 : n;
-        for (int i = 0; i <= n && worst <= limit; i++)
-            for (int j = 0; i + j <= n && worst <= limit; j++) {
+        for (int i = 0; i <= n; i++)
+            for (int j = 0; i + j <= n; j++) {
                 double w0 = (double)i / n, w1 = (double)j / n, w2 = 1 - w0 - w1, p[3];
                 for (int k = 0; k < 3; k++)
                     p[k] = w0 * v[0][k] + w1 * v[1][k] + w2 * v[2][k];
                 worst = farther(g, p, worst);
             }
-        if (worst > limit)
-            break;
     }
-    for (uint32_t i = 0; corner && i < a->vertex_count && worst <= limit; i++)
+    for (uint32_t i = 0; corner && i < a->vertex_count; i++)
         if (corner[i]) {
             const double p[3] = { a->positions[3 * (size_t)i], a->positions[3 * (size_t)i + 1],
                                   a->positions[3 * (size_t)i + 2] };

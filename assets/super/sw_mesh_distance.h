@@ -46,10 +46,4 @@ int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
  * are at most `spacing` apart (at most 8 a side), its corners included. */
 double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing);
 
-/* The same, stopping at the first sample found farther than limit: that
- * sample's distance, over limit (where only whether the distance is
- * within a bound is asked, a mesh far off is told apart at once). */
-double sw_mesh_distance_until(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing,
-                              double limit);
-
 #endif

@@ -17,14 +17,12 @@
  * on flat ground) is left out. Each result is
  * measured, not taken from the simplifier's estimate: the sampled distance
  * both ways between it and the source (sw_mesh_distance.h), plus the
- * source's own measured error. From the simplifier's own stop at each
- * bound, index counts are searched for the coarsest simplification within
- * it (its estimate runs under the measure and over it), so levels step by
- * their bounds; a part's open rim is where the estimate fails most, so
- * when none is within, the search is made again with the rim's corners
- * held (sw_part_rim.h); found none, the simplifier's own serves coarser
- * views. Past the last bound, a level of a
- * few triangles, for a piece a few pixels across. A level is kept when its error rises over
+ * source's own measured error. A part's open rim is where the
+ * simplifier's estimate fails most, so a simplification over its bound is
+ * made again with the rim's corners held (sw_part_rim.h); not within
+ * either, the first serves coarser views. Past the last bound, a level of a
+ * few triangles, for a piece a few pixels across. A level is kept when
+ * its error rises over
  * the one before and it has fewer triangles by at least a fifth, and it
  * fits one draw (65536 vertices).
  *
