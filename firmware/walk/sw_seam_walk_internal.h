@@ -87,6 +87,11 @@ void sw_seam_walk_refresh(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
  * neighbours show (they meet across it, coarser than its bound asks:
  * counted behind, by how far), 0 when it waits (counted by the caller). */
 #define SW_SEAM_WALK_MET 2
+
+/* V: surface s counted as drawn ratio times coarser than the view asks
+ * (when over 1), and for how many frames since it was first needed. */
+void sw_seam_walk_count_behind(const sw_seam_walk *w, uint32_t s, double ratio,
+                               sw_seam_frame *frame);
 int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_seam_frame *frame);
 
 /* The part levels' state, from the arena (visibility/sw_seam_part_levels.c):

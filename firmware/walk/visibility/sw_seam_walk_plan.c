@@ -64,10 +64,9 @@ static double behind_ratio(const sw_seam_walk *w, uint32_t s, const sw_seam_entr
     return e->made_bound / want;
 }
 
-static void count_behind(const sw_seam_walk *w, uint32_t s, const sw_seam_entry *e,
-                         sw_seam_frame *frame)
+void sw_seam_walk_count_behind(const sw_seam_walk *w, uint32_t s, double ratio,
+                               sw_seam_frame *frame)
 {
-    double ratio = behind_ratio(w, s, e);
     if (ratio > 1) {
         frame->behind_surfaces++;
         frame->behind_ratio = fmax(frame->behind_ratio, ratio);
@@ -124,7 +123,7 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
     frame->capped_surfaces += e->capped;
     frame->holes_filled += e->holes_filled;
     if (w->workers)
-        count_behind(w, s, e, frame);
+        sw_seam_walk_count_behind(w, s, behind_ratio(w, s, e), frame);
 }
 
 void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,

@@ -287,12 +287,9 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     if (e->state == SW_SEAM_EMPTY && over > 1) {
         /* Its neighbours' meshes meet across it, where its loops are gone:
          * the area is drawn, by them, coarser than its bound asks. */
-        frame->behind_surfaces++;
-        frame->behind_ratio = fmax(frame->behind_ratio, over);
         if (w->need_since[s] == UINT32_MAX)
             w->need_since[s] = w->frame - 1;
-        if (w->frame - 1 - w->need_since[s] > frame->frames_behind)
-            frame->frames_behind = w->frame - 1 - w->need_since[s];
+        sw_seam_walk_count_behind(w, s, over, frame);
         return SW_SEAM_WALK_MET;
     }
     if (e->state != SW_SEAM_READY)
