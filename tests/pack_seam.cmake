@@ -30,6 +30,10 @@ target_include_directories(test_part_levels_build_prog PRIVATE ${CMAKE_CURRENT_S
 sw_apply_warnings(test_part_levels_build_prog)
 add_test(NAME part_levels_teaset COMMAND bash -c
   "$<TARGET_FILE:seamwalk-pack> build ${PROJECT_SOURCE_DIR}/assets/samples/teaset.ini -o ${CMAKE_CURRENT_BINARY_DIR}/part_levels_teaset.swpack --quiet && $<TARGET_FILE:test_part_levels_build_prog> ${CMAKE_CURRENT_BINARY_DIR}/part_levels_teaset.swpack")
+# Thin sheets (plates with holes, arched rails with slots): each piece's
+# finest level is one a view can use.
+add_test(NAME part_levels_sheets COMMAND bash -c
+  "$<TARGET_FILE:seamwalk-pack> build ${CMAKE_CURRENT_SOURCE_DIR}/part_levels_sheets.ini -o ${CMAKE_CURRENT_BINARY_DIR}/part_levels_sheets.swpack --quiet && $<TARGET_FILE:test_part_levels_build_prog> ${CMAKE_CURRENT_BINARY_DIR}/part_levels_sheets.swpack")
 # A part cut into pieces (a generated courtyard of 1,400 patches, one part,
 # cut past 512 patches):
 # its pieces' levels against its surfaces, and their borders against each

@@ -20,6 +20,11 @@
  * - the pieces of a cut part meet: at each front, the pieces' levels chosen
  *   at random leave open exactly the edges the pieces' sources leave open
  *   together (compared as position pairs, bit for bit), so no border moved.
+ * - a piece's finest level (of a part not cut) is within a quarter of the
+ *   piece's size, the coarsest bound the builder aims at by default: a
+ *   finest level past it is one no view can use (a flat plate's first try
+ *   cut a corner off, half its size), and the piece is drawn surface by
+ *   surface however far away it is.
  * Trimmed surfaces are left out of the first check (a random (u, v) may
  * fall in a hole); the second covers them. Takes pack files (CTest passes
  * the built teaset and a courtyard cut into pieces) and fails on one
@@ -188,6 +193,7 @@ static double shaded_wrong_side(const sw_part_levels *pl, const sw_part_level *l
             blend(q, w, bc.normal);
             sw_mesh_point at;
             double reach = fmax(sw_mesh_grid_nearest(fgrid, x, &at), l->error);
+            visit(&bc, &at);   /* the nearest itself: at reach it may round out of it */
             sw_mesh_grid_within(fgrid, x, reach, visit, &bc);
             off += bc.best < cos(40.0 / 180.0 * 3.14159265358979);
         }
@@ -199,6 +205,18 @@ static double shaded_wrong_side(const sw_part_levels *pl, const sw_part_level *l
         area += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * off / 8;
     }
     return sqrt(area);
+}
+
+static double mesh_diagonal(const mesh *m)
+{
+    double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+    for (uint32_t v = 0; v < m->nv; v++)
+        for (int k = 0; k < 3; k++)
+            lo[k] = fmin(lo[k], m->pos[3 * v + k]), hi[k] = fmax(hi[k], m->pos[3 * v + k]);
+    double d = 0;
+    for (int k = 0; m->nv > 0 && k < 3; k++)
+        d += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    return sqrt(d);
 }
 
 /* Piece g's levels at front f, against src (the source at that front);
@@ -216,10 +234,15 @@ static void check_piece(const sw_pack *pack, const sw_part_source *src, uint32_t
     sw_mesh_grid *fgrid = sw_mesh_grid_make(&fv);
     SW_CHECK(fgrid != NULL);
     uint32_t last_tris = finest_tris + (cut ? 1 : 0);   /* a cut piece's first is its source */
+    int first = !cut && f == 0;
     for (uint32_t i = pl->piece_levels[g]; fgrid && i < pl->piece_levels[g + 1]; i++) {
         const sw_part_level *l = &pl->levels[i];
         if (l->front != f)
             continue;
+        SW_CHECK_MSG(!first || l->error <= 0.25 * mesh_diagonal(&finest), "piece %u: its finest "
+                     "level's error %g, past a quarter of its size %g", g, (double)l->error,
+                     mesh_diagonal(&finest));
+        first = 0;
         mesh m = level_mesh(pl, l);
         sw_mesh_view lv = { m.pos, m.idx, m.nv, m.ni };
         sw_mesh_grid *grid = sw_mesh_grid_make(&lv);

@@ -166,8 +166,10 @@ static long long simplify_toward(sw_part_mesh *m, piece_job *j, double bound, do
  * in it) is where meshoptimizer's estimate fails most: moving a rim vertex
  * along the rim cuts a corner off, tens of times the bound. When the
  * simplification is not within the bound, it is made again with the rim's
- * corners held; when that is not within either, the first is kept, over
- * the bound, as a level for coarser views. (Searching the index count for
+ * corners held; when neither is within, the one nearer the bound is kept,
+ * over it, as a level for coarser views (a flat plate's first cut a corner
+ * off, hundreds of times the bound, where the held one was 1.5 times it;
+ * keeping the first left the plate no level a view could use). (Searching the index count for
  * the coarsest level within each bound was tried: levels then spend the
  * whole bound, and the showroom walk's pictures differed from the
  * reference's past their limit at fewer triangles. Locking the whole
@@ -182,9 +184,9 @@ static long long simplify_within(sw_part_mesh *m, piece_job *j, double bound, do
         long long k = simplify_toward(m, j, bound, scale, KEEP_CORNERS, &e);
         if (k < 0)
             return -1;
-        if (k > 0 && e <= bound)
+        if (k > 0 && (e <= bound || e < *error))
             n = k, *error = e;
-        else   /* none within: the first */
+        else   /* the first is nearer */
             memcpy(m->best, m->aside, (size_t)n * sizeof *m->best);
     }
     if (n > 0) {
