@@ -99,7 +99,19 @@ sw_status sw_pack_signature_record_check(const sw_pack_signature *sig, sw_error 
     if (!memchr(sig->name, '\0', sizeof sig->name))
         return sw_error_set(err, SW_ERR_FORMAT, "SIGNATURE.name: not NUL-terminated within "
                             "%d bytes", SW_PACK_NAME_BYTES);
+    long at = sw_pack_name_control_at(sig->name, sizeof sig->name);
+    if (at >= 0)
+        return sw_error_set(err, SW_ERR_FORMAT, "SIGNATURE.name: a control byte (0x%02x) at "
+                            "byte %ld", (unsigned)(unsigned char)sig->name[at], at);
     return SW_OK;
+}
+
+long sw_pack_name_control_at(const char *name, size_t cap)
+{
+    for (size_t i = 0; i < cap && name[i]; i++)
+        if ((unsigned char)name[i] < 0x20 || name[i] == 0x7f)
+            return (long)i;
+    return -1;
 }
 
 sw_status sw_pack_signature_locate(const uint8_t *head, size_t head_size, uint64_t file_size,

@@ -72,8 +72,15 @@ sw_status sw_pack_signature_locate(const uint8_t *head, size_t head_size, uint64
                                    uint32_t *index, uint64_t *offset, uint64_t *table_bytes,
                                    sw_error *err);
 
-/* A SIGNATURE record's own fields: format 1, flags 0, a NUL in the name. */
+/* A SIGNATURE record's own fields: format 1, flags 0, a NUL in the name
+ * and no control byte before it. */
 sw_status sw_pack_signature_record_check(const sw_pack_signature *sig, sw_error *err);
+
+/* The index of the first control byte (below 0x20, or 0x7f) among the
+ * first cap bytes of name, up to its NUL; -1 if none. A pack's name is
+ * printed on terminals and in the journal, whoever signed the pack, so
+ * one with an escape sequence in it is neither signed nor accepted. */
+long sw_pack_name_control_at(const char *name, size_t cap);
 
 /* The signature of raw, unvalidated bytes: located from the header and the
  * table (sw_pack_signature_locate), by one of keys, valid over the bytes.

@@ -374,6 +374,55 @@ static void display_comes_from_the_file_unless_the_command_line_names_one(void)
     SW_CHECK(o.display == SW_DISPLAY_KIND_X11 && o.width == 800 && o.height == 600);
 }
 
+/* The service as shipped: the unit's own ExecStart arguments (from
+ * seamwalk.service beside the example) with the shipped config in place of
+ * /etc/seamwalk/seamwalk.ini. A config with neither pack nor store made
+ * every start a usage error (exit 2), restarted every RestartSec for ever;
+ * this start must parse, to the store, the root-owned keys and KMS. */
+static void the_units_command_line_with_the_shipped_config_parses(void)
+{
+    char unit_path[1024], line[1024] = "";
+    const char *slash = strrchr(example_path, '/');
+    int dir = slash ? (int)(slash - example_path) + 1 : 0;
+    snprintf(unit_path, sizeof unit_path, "%.*sseamwalk.service", dir, example_path);
+    FILE *f = fopen(unit_path, "r");
+    SW_CHECK_MSG(f != NULL, "%s", unit_path);
+    if (!f)
+        return;
+    while (fgets(line, sizeof line, f) && strncmp(line, "ExecStart=", 10) != 0)
+        line[0] = '\0';
+    fclose(f);
+    char *argv[32];
+    int argc = 0;
+    for (char *w = strtok(line + 10, " \n"); w && argc < 32; w = strtok(NULL, " \n"))
+        argv[argc++] = w;
+    SW_CHECK_MSG(argc > 2 && strstr(argv[0], "seamwalk") != NULL, "ExecStart: %d words", argc);
+    int config_at = 0;
+    for (int i = 1; i + 1 < argc; i++)
+        if (!strcmp(argv[i], "--config") && !strcmp(argv[i + 1], "/etc/seamwalk/seamwalk.ini"))
+            config_at = i + 1;
+    SW_CHECK_MSG(config_at > 0, "ExecStart passes no --config /etc/seamwalk/seamwalk.ini");
+    if (!config_at)
+        return;
+    argv[config_at] = (char *)example_path;
+    static sw_options o;
+    sw_error err = {0};
+    sw_status st = parse(&o, &err, argc, argv);
+    if (!SW_HAVE_KMS) {   /* the shipped display is kms: a build without it refuses it */
+        SW_CHECK_MSG(st == SW_ERR_ARG && strstr(err.message, "built without KMS"), "%s",
+                     err.message);
+        return;
+    }
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
+    SW_CHECK(o.display == SW_DISPLAY_KIND_KMS);
+    SW_CHECK(o.pack_path == NULL);
+    SW_CHECK_MSG(o.store_dir && !strcmp(o.store_dir, "/var/lib/seamwalk/store"), "%s",
+                 o.store_dir ? o.store_dir : "(none)");
+    SW_CHECK_MSG(o.keys_path && !strcmp(o.keys_path, "/etc/seamwalk/keys"), "%s",
+                 o.keys_path ? o.keys_path : "(none)");
+    SW_CHECK(o.navigate == 1 && o.measure_every == 0 && o.duration_s > 1e6);
+}
+
 /* [budgets] sets the workers and the frame time the budgets hold; the
  * command line wins. */
 static void budgets_come_from_the_file(void)
@@ -524,6 +573,7 @@ int main(int argc, char **argv)
     SW_RUN(config_fills_what_the_command_line_leaves_out);
     SW_RUN(command_line_choice_replaces_the_files);
     SW_RUN(display_comes_from_the_file_unless_the_command_line_names_one);
+    SW_RUN(the_units_command_line_with_the_shipped_config_parses);
     SW_RUN(without_a_file_the_config_has_its_defaults);
     SW_RUN(budgets_come_from_the_file);
     SW_RUN(an_unknown_display_word_is_refused);

@@ -35,6 +35,7 @@ boot() {  # boot ARGS...: one boot of the unit; its exit code in $work/rc, its l
   echo $? >"$work/rc"
 }
 rc() { [ "$(cat "$work/rc")" = "$1" ]; }
+not_rc() { [ "$(cat "$work/rc")" != "$1" ]; }
 logged() { grep -q -- "$1" "$work/log"; }
 not_logged() { ! grep -q -- "$1" "$work/log"; }
 stat_is() { python3 -c "import json,sys; s=json.load(open('$work/stats.json'))['store']; \
@@ -93,6 +94,18 @@ check "headless: says why it stays pending" logged "slot A stays pending: the di
 check "headless: not marked good" not_logged "ran healthy for .* s: marked good"
 check "headless: the stats say not marked" stat_is marked_good 0
 check "headless: the state still says pending" state "pending: A (1 boots so far)"
+
+# ---- a display that does not come up: no boot attempt spent -------------------------
+# (a DRM device that comes up late at boot: the run fails and the service
+# starts it again; those runs must not use up the pending slot's boots)
+[ -e /tmp/.X11-unix/X9999 ] && { echo "FAIL: an X server on :9999, the test's missing display"; exit 1; }
+for k in 1 2 3; do
+  DISPLAY=:9999 boot --good-after-s 0
+  check "no display $k: fails" not_rc 0
+  check "no display $k: says why" logged "cannot open the X display ':9999'"
+  check "no display $k: no slot started" not_logged "starting slot"
+done
+check "no display: no boot attempt spent" state "pending: A (1 boots so far)"
 
 # ---- a pending slot is marked good after healthy frames ----------------------------
 boot --good-after-s 0

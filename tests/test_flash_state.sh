@@ -130,5 +130,24 @@ check "no state beside slots: said" both 0 "no state file beside the slot files"
 rm -rf "$unit" && mkdir -p "$unit"
 fl boot-check; check "an empty store: no slot" both 6 "^boot: no valid slot"
 
+# A slot file whose signed name holds an escape sequence (put there by
+# hand, never signed by the owner): refused for it, and status, repair and
+# the boot print no control byte of it.
+no_controls() { ! LC_ALL=C grep -q "$(printf '[\001-\010\013-\037\177]')" "$work/out"; }
+make_unit; rm -f "$unit/state" "$unit/state.copy"
+python3 -c "import sys; p=sys.argv[1]; b=open(p,'rb').read(); i=b.index(b'spoon-1\0')
+open(p,'wb').write(b[:i] + b'sp\x1b[2Jn' + b[i+7:])" "$unit/slot-a.swpack"
+fl status
+check "escape in a slot's name: status says why" \
+  said "^slot A file: .*slot-a.swpack: SIGNATURE.name: a control byte \(0x1b\) at byte 2"
+check "escape in a slot's name: status prints no control byte" no_controls
+fl repair
+check "escape in a slot's name: repair leaves A empty" said "repair: slot A: .*a control byte"
+check "escape in a slot's name: repair prints no control byte" no_controls
+rm -f "$unit/state" "$unit/state.copy"
+boot
+check "escape in a slot's name: the boot starts B" both 0 "starting slot B \('cup-2' version 2\)"
+check "escape in a slot's name: the boot prints no control byte" no_controls
+
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]

@@ -62,7 +62,7 @@ fault() {
     --good-after-s 1e9 >"$work/log" 2>&1
   local boot_rc=$?
   # boot-check: "boot: MESSAGE" lines, then "boot: slot X 'NAME' version N (KIND), verified".
-  local last msg slot name_ version kind
+  local last msg slot name_= version= kind
   last=$(tail -n 1 "$work/check")
   msg=$(head -n -1 "$work/check" | sed 's/^boot: //')
   if [[ $last =~ ^boot:\ slot\ ([AB])\ \'([^\']*)\'\ version\ ([0-9]+)\ \((.*)\),\ verified$ ]]; then

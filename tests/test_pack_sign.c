@@ -285,6 +285,42 @@ static void test_raw_check_names_the_key_before_a_checksum(void)
     free(bytes);
 }
 
+/* A name is printed on terminals and in the journal: one with a control
+ * byte is not signed, and a record holding one (a stranger's pack in a
+ * slot, say) is refused before its name could be shown or its key looked
+ * at. */
+static void test_a_name_with_a_control_byte_is_refused(void)
+{
+    sample s;
+    make_sample(&s);
+    size_t plain_size, size;
+    uint8_t *plain = serialize_sample(&s, &plain_size);
+    sw_sign_request req = { owner_sk, 1, "show\033[2Jroom" };
+    uint8_t *out = NULL;
+    sw_error err = { 0 };
+    SW_CHECK(sw_pack_sign_bytes(plain, plain_size, &req, &out, &size, &err) == SW_ERR_ARG);
+    SW_CHECK_MSG(!strcmp(err.message, "pack name 'show\\x1b[2Jroom': a control byte at byte 4 "
+                         "(a name is shown on terminals and in the journal)"), "%s", err.message);
+    free(plain);
+    free(out);
+    uint8_t *bytes = signed_sample(1, other_sk, &size);
+    uint32_t last = header_of(bytes)->section_count - 1;
+    sw_pack_signature *sig = (sw_pack_signature *)(bytes + table_of(bytes)[last].offset);
+    sig->name[2] = '\a';
+    sw_trusted_keys keys = owner_keys();
+    sw_pack_signature got;
+    SW_CHECK(sw_pack_check_signature_raw(bytes, size, &keys, &got, &err) == SW_ERR_FORMAT);
+    SW_CHECK_MSG(strstr(err.message, "SIGNATURE.name: a control byte (0x07) at byte 2") != NULL,
+                 "%s", err.message);
+    sig->name[2] = 0x7f;
+    table_of(bytes)[last].checksum = XXH3_64bits(sig, sizeof *sig);
+    reseal(bytes);
+    SW_CHECK(check_bytes(bytes, size, &keys, &err) == SW_ERR_FORMAT);
+    SW_CHECK_MSG(strstr(err.message, "a control byte (0x7f) at byte 2") != NULL, "%s",
+                 err.message);
+    free(bytes);
+}
+
 /* Located from the header and table: too few bytes for the table says how
  * many are needed. */
 static void test_locate_asks_for_the_whole_table(void)
@@ -319,6 +355,7 @@ int main(void)
     SW_RUN(test_every_truncation_is_refused);
     SW_RUN(test_raw_check_refuses_flips_before_parsing);
     SW_RUN(test_raw_check_names_the_key_before_a_checksum);
+    SW_RUN(test_a_name_with_a_control_byte_is_refused);
     SW_RUN(test_locate_asks_for_the_whole_table);
     SW_RUN(test_public_key_file_parses_keys_and_comments);
     SW_RUN(test_public_key_file_errors_name_the_line);

@@ -3,7 +3,9 @@
  * (sw_input_fake.h): plugged controllers are found by the next periodic
  * enumeration, a read of -1 closes them, a replug is found again, a
  * descriptor that is no controller is a log line. Argument: tests/hid. */
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hid_fixture.h"
 #include "sw_input_fake.h"
@@ -88,6 +90,37 @@ static void a_mouse_is_a_log_line(void)
     SW_CHECK(pads.plugs == 0 && !pads.pads[0].open && !fake.pads[0].opened);
 }
 
+/* A controller names itself (its USB product string, whatever device is
+ * plugged into the kiosk): its log line shows the name's control bytes as
+ * \xNN, never raw on the terminal or in the journal. */
+static void a_name_with_an_escape_sequence_is_logged_escaped(void)
+{
+    start();
+    size_t n = hid_fixture("logitech_f310_dinput.hex", desc, sizeof desc);
+    sw_hid_info info = {.bus = 3, .vendor = 0x046D, .product = 0xC216};
+    strcpy(info.name, "F\033]0;owned\aX");
+    sw_fake_plug(&fake, 0, &info, desc, n);
+    FILE *log = tmpfile();
+    int saved = dup(2);
+    fflush(stderr);
+    dup2(fileno(log), 2);
+    sw_pads_poll(&pads, 0);
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    char text[512];
+    rewind(log);
+    size_t got = fread(text, 1, sizeof text - 1, log);
+    text[got] = '\0';
+    fclose(log);
+    SW_CHECK(pads.plugs == 1);
+    SW_CHECK_MSG(strstr(text, "(046d:c216 F\\x1b]0;owned\\x07X): 4 axes") != NULL, "%s", text);
+    size_t controls = 0;
+    for (size_t i = 0; i < got; i++)
+        controls += text[i] != '\n' && ((unsigned char)text[i] < 0x20 || text[i] == 0x7f);
+    SW_CHECK_MSG(controls == 0, "%zu control bytes in: %s", controls, text);
+}
+
 static void ds4_takes_its_known_layout_and_a_file_mapping_wins(void)
 {
     static sw_pad_mapping_db db;
@@ -118,6 +151,7 @@ int main(int argc, char **argv)
     SW_RUN(reports_move_the_mapped_state);
     SW_RUN(unplug_closes_and_replug_reopens);
     SW_RUN(a_mouse_is_a_log_line);
+    SW_RUN(a_name_with_an_escape_sequence_is_logged_escaped);
     SW_RUN(ds4_takes_its_known_layout_and_a_file_mapping_wins);
     return sw_test_finish();
 }

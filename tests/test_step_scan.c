@@ -82,6 +82,37 @@ static void a_shell_of_200000_listings_ends_fast(void)
     free(text);
 }
 
+/* Entity instances past the limit end the pass at the first one over,
+ * with its line (the default, 20 million, only with other limits: a file
+ * that long would not be a unit test). Up to the limit, and a shell's
+ * faces up to its own, the file passes. */
+static void entities_past_the_limit_are_refused_with_the_line(void)
+{
+    char text[1024];
+    snprintf(text, sizeof text, "%s#1=ADVANCED_FACE('',(#9),#8,.T.);\n"
+             "#2=ADVANCED_FACE('',(#9),#8,.T.);\n"
+             "#3=CLOSED_SHELL('',(#1,#2));\n"
+             "#4=MANIFOLD_SOLID_BREP('',#3);\nENDSEC;\n", head);
+    sw_step_scan_result r;
+    sw_error err = {0};
+    sw_step_scan_limits four = {.entities = 4, .shell_faces = 2};
+    SW_CHECK_MSG(sw_step_scan_within(text, strlen(text), "t.step", &four, &r, &err) == SW_OK,
+                 "%s", err.message);
+    SW_CHECK(r.entities == 4 && r.faces_max == 2);
+    sw_step_scan_limits three = {.entities = 3};
+    SW_CHECK(sw_step_scan_within(text, strlen(text), "t.step", &three, &r, &err) ==
+             SW_ERR_RANGE);
+    SW_CHECK_MSG(!strcmp(err.message, "t.step:9: more than 3 entity instances (the limit)"),
+                 "%s", err.message);
+    sw_step_scan_limits one_face = {.shell_faces = 1};
+    SW_CHECK(sw_step_scan_within(text, strlen(text), "t.step", &one_face, &r, &err) ==
+             SW_ERR_RANGE);
+    SW_CHECK_MSG(!strcmp(err.message, "t.step:8: #3 CLOSED_SHELL lists more than 1 faces "
+                         "(the limit)"), "%s", err.message);
+    /* No limits given: the defaults. */
+    SW_CHECK(sw_step_scan_within(text, strlen(text), "t.step", NULL, &r, &err) == SW_OK);
+}
+
 /* Shapes the pass does not know are left to OpenCASCADE, never misread:
  * an unterminated string or comment, a shell without a list. */
 static void odd_shapes_pass_through(void)
@@ -101,6 +132,7 @@ int main(void)
     SW_RUN(counts_instances_and_shells);
     SW_RUN(a_face_listed_twice_is_refused_with_its_line);
     SW_RUN(a_shell_of_200000_listings_ends_fast);
+    SW_RUN(entities_past_the_limit_are_refused_with_the_line);
     SW_RUN(odd_shapes_pass_through);
     return sw_test_finish();
 }

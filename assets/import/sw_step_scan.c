@@ -15,6 +15,7 @@ typedef struct step_reader {
     long line;
     long *ids;           /* a shell's list */
     size_t ids_cap;
+    long max_entities, max_faces;
 } step_reader;
 
 /* Skips blanks, newlines and comments. */
@@ -160,9 +161,9 @@ static sw_status read_shell(step_reader *r, long id, const char *kw, long line,
         return SW_OK;
     long n = 0;
     for (long ref; (ref = take_ref(r)) >= 0;) {
-        if (n >= SW_STEP_MAX_SHELL_FACES)
+        if (n >= r->max_faces)
             return sw_error_set(err, SW_ERR_RANGE, "%s:%ld: #%ld %s lists more than %ld faces "
-                                "(the limit)", r->file, line, id, kw, SW_STEP_MAX_SHELL_FACES);
+                                "(the limit)", r->file, line, id, kw, r->max_faces);
         if ((size_t)n * 2 + 2 > r->ids_cap) {
             size_t cap = r->ids_cap ? r->ids_cap * 2 : 1024;
             long *ids = realloc(r->ids, cap * sizeof *ids);
@@ -187,9 +188,9 @@ static sw_status read_statements(step_reader *r, sw_step_scan_result *out, sw_er
         skip_space(r);
         long line = r->line, id = take_ref(r);
         if (id >= 0 && take(r, '=')) {
-            if (++out->entities > SW_STEP_MAX_ENTITIES)
+            if (++out->entities > r->max_entities)
                 return sw_error_set(err, SW_ERR_RANGE, "%s:%ld: more than %ld entity instances "
-                                    "(the limit)", r->file, line, SW_STEP_MAX_ENTITIES);
+                                    "(the limit)", r->file, line, r->max_entities);
             char kw[32];
             take_keyword(r, kw, sizeof kw);
             if (!strcmp(kw, "CLOSED_SHELL") || !strcmp(kw, "OPEN_SHELL")) {
@@ -203,14 +204,26 @@ static sw_status read_statements(step_reader *r, sw_step_scan_result *out, sw_er
     return SW_OK;
 }
 
-sw_status sw_step_scan(const char *text, size_t size, const char *file,
-                       sw_step_scan_result *out, sw_error *err)
+sw_status sw_step_scan_within(const char *text, size_t size, const char *file,
+                              const sw_step_scan_limits *limits, sw_step_scan_result *out,
+                              sw_error *err)
 {
     memset(out, 0, sizeof *out);
-    step_reader r = {text, text + size, file ? file : "<memory>", 1, NULL, 0};
+    step_reader r = {text, text + size, file ? file : "<memory>", 1, NULL, 0,
+                     SW_STEP_MAX_ENTITIES, SW_STEP_MAX_SHELL_FACES};
+    if (limits && limits->entities > 0)
+        r.max_entities = limits->entities;
+    if (limits && limits->shell_faces > 0)
+        r.max_faces = limits->shell_faces;
     sw_status st = read_statements(&r, out, err);
     free(r.ids);
     return st;
+}
+
+sw_status sw_step_scan(const char *text, size_t size, const char *file,
+                       sw_step_scan_result *out, sw_error *err)
+{
+    return sw_step_scan_within(text, size, file, NULL, out, err);
 }
 
 sw_status sw_step_scan_file(const char *path, sw_step_scan_result *out, sw_error *err)

@@ -31,11 +31,23 @@ typedef struct sw_step_scan_result {
     long faces_max;      /* the most faces one shell lists */
 } sw_step_scan_result;
 
+/* Limits other than the defaults; a field of 0 keeps its default. Small
+ * ones let a test or a fuzzer reach a limit without millions of lines. */
+typedef struct sw_step_scan_limits {
+    long entities;       /* default SW_STEP_MAX_ENTITIES */
+    long shell_faces;    /* default SW_STEP_MAX_SHELL_FACES */
+} sw_step_scan_limits;
+
 /* SW_ERR_RANGE past a limit, SW_ERR_FORMAT for a shell that lists a face
  * twice, with "file:line: #N CLOSED_SHELL ..." in err. SW_OK otherwise,
  * whatever else the file holds. */
 sw_status sw_step_scan(const char *text, size_t size, const char *file,
                        sw_step_scan_result *out, sw_error *err);
+
+/* The same within other limits (NULL: the defaults). */
+sw_status sw_step_scan_within(const char *text, size_t size, const char *file,
+                              const sw_step_scan_limits *limits, sw_step_scan_result *out,
+                              sw_error *err);
 
 /* The same on a file read whole (SW_ERR_IO when it cannot be). */
 sw_status sw_step_scan_file(const char *path, sw_step_scan_result *out, sw_error *err);

@@ -177,6 +177,10 @@ static sw_status check_request(const sw_pack *in, uint32_t kept, const sw_sign_r
     if (!req->name || strlen(req->name) >= SW_PACK_NAME_BYTES)
         return sw_error_set(err, SW_ERR_ARG, "pack name: expected 1..%d bytes",
                             SW_PACK_NAME_BYTES - 1);
+    long at = sw_pack_name_control_at(req->name, SW_PACK_NAME_BYTES);
+    if (at >= 0)
+        return sw_error_set(err, SW_ERR_ARG, "pack name '%s': a control byte at byte %ld "
+                            "(a name is shown on terminals and in the journal)", req->name, at);
     if (kept + 1 > SW_PACK_MAX_SECTIONS)
         return sw_error_set(err, SW_ERR_RANGE, "the pack has %u sections: no room for a "
                             "SIGNATURE (at most %u)", (unsigned)in->header->section_count,

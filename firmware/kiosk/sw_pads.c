@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "sw_error.h"
 #include "sw_hid_known.h"
 
 void sw_pads_init(sw_pads *p, sw_hid_backend backend, const sw_pad_mapping_db *db,
@@ -76,8 +77,11 @@ static void plug(sw_pads *p, const sw_hid_info *info)
     sw_hid_state_reset(&pad->raw);
     pad->open = 1;
     p->plugs++;
-    fprintf(stderr, "seamwalk: gamepad %s (%04x:%04x %s): %d axes, %d buttons, %d hats\n",
-            info->path, info->vendor, info->product, info->name, pad->layout.axis_count,
+    /* The name is the device's own (its USB product string): whatever
+     * control bytes it holds reach the log as \xNN, not the terminal. */
+    fprintf(stderr, "seamwalk: gamepad %s (%04x:%04x ", info->path, info->vendor, info->product);
+    sw_fput_escaped(stderr, info->name, sizeof info->name);
+    fprintf(stderr, "): %d axes, %d buttons, %d hats\n", pad->layout.axis_count,
             pad->layout.button_count, pad->layout.hat_count);
 }
 
