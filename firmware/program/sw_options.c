@@ -1,4 +1,7 @@
 /* SPDX-License-Identifier: MIT */
+/* seamwalk's command line into sw_options (sw_options.h): the config file
+ * first, then each argument found in the option table (sw_option_table.c)
+ * and read as its row's kind says, within its row's range. */
 #include "sw_options.h"
 
 #include <errno.h>
@@ -196,7 +199,7 @@ static sw_status set_value(const sw_option_desc *d, const char *v, sw_options *o
     case SW_OPTION_SIZE:
         return read_size(d, v, field_of(o, d), err);
     case SW_OPTION_DISPLAY:
-        return sw_display_kind_parse(v, &o->display, err);
+        return sw_display_kind_parse(v, (sw_display_kind *)field_of(o, d), err);
     case SW_OPTION_RGB:
         o->background_set = 1;
         return read_rgb(d, v, field_of(o, d), err);
