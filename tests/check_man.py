@@ -11,7 +11,13 @@
       (firmware/program/sw_config.c) has an entry under its .SS [section] in PAGE,
       and every entry there is in the table; every option PAGE mentions is
       in BINARY --help.
-Both also render PAGE with `man --warnings -l` at 80 columns: any warning,
+  check_man.py table PAGE INI_PAGE DUMP
+      seamwalk's option table (DUMP: tests/option_table_dump.c's program)
+      against seamwalk(1) PAGE and seamwalk.ini(5) INI_PAGE: every option
+      but the tests' has an entry tagged with its name and argument, which
+      states its range and "default D" as the table has them; every config
+      key an option names states the same range and default in its entry.
+All also render PAGE with `man --warnings -l` at 80 columns: any warning,
 or a non-zero exit, fails. Exit 0 when all holds, 1 naming each difference.
 """
 import os
@@ -49,6 +55,80 @@ def read_page(path):
             tags.append((section, subsection, plain(tag).strip()))
         text.append(plain(re.sub(r"^\.[A-Z]+\s*", "", line)))
     return tags, "\n".join(text)
+
+
+def read_entries(path):
+    """{(section, subsection, first word of the tag): (tag, body)}: each .TP
+    entry's plain tag and its text up to the next entry or heading, blanks
+    run together."""
+    entries, section, subsection = {}, "", ""
+    lines = open(path, encoding="utf-8").read().split("\n")
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        if line.startswith(".SH "):
+            section, subsection = plain(line[4:]).strip(), ""
+        elif line.startswith(".SS "):
+            subsection = plain(line[4:]).strip()
+        elif line.strip() == ".TP" and i + 1 < len(lines):
+            tag = plain(re.sub(r"^\.(B|I|BI|IB|BR|RB|IR|RI)\s+", "", lines[i + 1])).split()
+            body, i = [], i + 2
+            while i < len(lines) and not re.match(r"\.(TP|SS|SH|PP|IP)\b", lines[i]):
+                if not lines[i].startswith('.\\"'):
+                    body.append(plain(re.sub(r"^\.[A-Z]+\s*", "", lines[i])))
+                i += 1
+            if tag:
+                entries[(section, subsection, tag[0])] = (tag, " ".join(" ".join(body).split()))
+            continue
+        i += 1
+    return entries
+
+
+def read_table(dump):
+    """The option table's rows as dicts, from option_table_dump."""
+    out = subprocess.run([dump], capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"FAIL: {dump} exited {out.returncode}: {out.stderr.strip()}")
+    fields = ("name", "arg", "range", "default", "section", "key", "kind")
+    rows = [dict(zip(fields, [None if f == "-" else f for f in line.split("\t")]))
+            for line in out.stdout.splitlines()]
+    if len(rows) < 20 or any(len(r) != len(fields) for r in rows):
+        sys.exit(f"FAIL: {dump}: {len(rows)} rows, not the table's form")
+    return rows
+
+
+def states(where, body, row):
+    """What the entry's text lacks of the row's range and default."""
+    fails = []
+    if row["range"] and row["range"] not in body:
+        fails.append(f"FAIL: {where}: no range {row['range']} (the option table's)")
+    if row["default"] and f"default {row['default']}" not in body:
+        fails.append(f"FAIL: {where}: no 'default {row['default']}' (the option table's)")
+    return fails
+
+
+def check_table(page, ini_page, dump):
+    options = {(s, t): e for (s, _, t), e in read_entries(page).items() if s == "OPTIONS"}
+    keys = {(sub, t): e for (s, sub, t), e in read_entries(ini_page).items() if s == "SECTIONS"}
+    rows = [r for r in read_table(dump) if r["kind"] is None]
+    fails = []
+    for row in rows:
+        entry = options.get(("OPTIONS", row["name"]))
+        if not entry:
+            fails.append(f"FAIL: {page}: no entry for {row['name']}")
+            continue
+        tag, body = entry
+        arg = " ".join(tag[1:]) or None
+        if arg != row["arg"]:
+            fails.append(f"FAIL: {page}: {row['name']} takes '{arg}', the table '{row['arg']}'")
+        fails += states(f"{page}: {row['name']}", body, row)
+        if not row["key"]:
+            continue
+        entry = keys.get((f"[{row['section']}]", row["key"]))
+        where = f"{ini_page}: [{row['section']}] {row['key']}"
+        fails += [f"FAIL: {where}: no entry"] if not entry else states(where, entry[1], row)
+    fails += check_render(ini_page)
+    return fails, len(rows)
 
 
 def run_help(binary):
@@ -136,13 +216,15 @@ def main(argv):
         fails, count = check_program(argv[2], argv[3])
     elif len(argv) == 5 and argv[1] == "config":
         fails, count = check_config(argv[2], argv[3], argv[4])
+    elif len(argv) == 5 and argv[1] == "table":
+        fails, count = check_table(argv[2], argv[3], argv[4])
     else:
         sys.exit(__doc__)
     fails += check_render(argv[2])
     for f in fails:
         print(f)
-    print(f"{os.path.basename(argv[2])}: {count} entries checked both ways, "
-          f"{len(fails)} differences")
+    checked = "options held to the table" if argv[1] == "table" else "entries checked both ways"
+    print(f"{os.path.basename(argv[2])}: {count} {checked}, {len(fails)} differences")
     return 1 if fails else 0
 
 

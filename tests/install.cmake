@@ -14,6 +14,13 @@ add_test(NAME man_seamwalk_pack COMMAND ${SW_CHECK_MAN} program ${SW_MAN}/seamwa
   $<TARGET_FILE:seamwalk-pack>)
 add_test(NAME man_seamwalk_ini COMMAND ${SW_CHECK_MAN} config ${SW_MAN}/seamwalk.ini.5
   ${PROJECT_SOURCE_DIR}/firmware/program/sw_config.c $<TARGET_FILE:seamwalk>)
+# seamwalk's option table against both pages: each option's argument, range
+# and default, and those of the config key it shares (tests/option_table_dump.c).
+add_executable(option_table_dump option_table_dump.c)
+target_link_libraries(option_table_dump PRIVATE sw_runtime)
+sw_apply_warnings(option_table_dump)
+add_test(NAME man_option_table COMMAND ${SW_CHECK_MAN} table ${SW_MAN}/seamwalk.1
+  ${SW_MAN}/seamwalk.ini.5 $<TARGET_FILE:option_table_dump>)
 sw_host_only_test(man_seamwalk_pack PROGRAMS seamwalk-pack)
 sw_host_only_test(man_seamwalk_flash PROGRAMS seamwalk-flash)
 

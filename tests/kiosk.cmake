@@ -3,6 +3,9 @@
 sw_add_test(test_debounce SOURCES test_debounce.c LIBS sw_runtime)
 sw_add_test(test_config SOURCES test_config.c LIBS sw_runtime
   ARGS ${PROJECT_SOURCE_DIR}/firmware/dist/seamwalk.ini)
+# seamwalk's option table: the command line, --help and the config keys
+# take each range and default from its rows (tests/test_options.c).
+sw_add_test(test_options SOURCES test_options.c LIBS sw_runtime)
 sw_add_fuzz_target(fuzz_config SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/fuzz_config.c
   LIBS sw_runtime CORPUS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/config
   DICT ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/dict/config.dict)

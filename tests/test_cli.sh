@@ -65,6 +65,9 @@ refuses seamwalk-flash "missing command" "$flash"
 refuses seamwalk-flash "unknown command 'frobnicate'" "$flash" frobnicate --store "$work/unit"
 refuses seamwalk-flash "--chunk-kb takes" "$flash" install --store "$work/unit" --chunk-kb 0 p.swpack
 refuses seamwalk-flash "unexpected '--bogus'" "$flash" status --store "$work/unit" --bogus
+# boot-check's --attempts takes the range of seamwalk's --boot-attempts
+# (firmware/program/sw_option_table.c).
+refuses seamwalk-flash "--attempts takes 1..1000" "$flash" boot-check --store "$work/unit" --attempts 1001
 
 [ "$failures" -eq 0 ] || { echo "test_cli: $failures failed"; exit 1; }
 echo "test_cli: passed"

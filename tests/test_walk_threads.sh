@@ -171,7 +171,10 @@ assert j["error_px"]["max"] <= j["error_px"]["bound"], j["error_px"]
 assert j["seam_drawn"]["gaps_max"] == 0 and j["seam_drawn"]["t_vertices_max"] == 0
 PY
 
-for bad in "--workers -1" "--workers 17" "--workers x" "--target-ms 0" "--sync-work 2" \
+# -1 is the default, the cores less one, on the command line as in the
+# config's [budgets] workers; -2 is out of the range they share.
+walk --frames 2 --workers -1 > /dev/null 2>&1 || fail "--workers -1 (the cores less one): refused"
+for bad in "--workers -2" "--workers 17" "--workers x" "--target-ms 0" "--sync-work 2" \
            "--visibility-thread 2"; do
   out=$(walk --frames 2 $bad 2>&1)
   [ $? -eq 2 ] || fail "$bad: exit status"

@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "sw_config.h"
+#include "sw_option_table.h"
 #include "sw_pack_store.h"
 #include "sw_store_install.h"
 
@@ -79,6 +80,18 @@ static int parse_long(const char *s, long lo, long hi, long *out)
     return end != s && *end == '\0' && errno == 0 && *out >= lo && *out <= hi;
 }
 
+/* --attempts K in the range of seamwalk's --boot-attempts and [pack]
+ * boot_attempts, their row of the option table: 0, or a usage error. */
+static int read_attempts(const char *v, long *out)
+{
+    const sw_option_desc *d = sw_option_for_key("pack", "boot_attempts");
+    char range[80];
+    sw_option_format_range(d, range, sizeof range);
+    if (parse_long(v, (long)d->min, (long)d->max, out))
+        return 0;
+    return sw_usage_error("seamwalk-flash", "--attempts takes %s, not '%s'", range, v ? v : "");
+}
+
 static int parse_args(int argc, char **argv, args *a)
 {
     for (int i = 0; i < argc; i++) {
@@ -94,8 +107,9 @@ static int parse_args(int argc, char **argv, args *a)
                 return usage("--chunk-kb takes 1..1048576, not '%s'", v ? v : "");
             i++;
         } else if (strcmp(o, "--attempts") == 0) {
-            if (!parse_long(v, 1, 1000, &a->attempts))
-                return usage("--attempts takes 1..1000, not '%s'", v ? v : "");
+            int bad = read_attempts(v, &a->attempts);
+            if (bad)
+                return bad;
             i++;
         } else if (strcmp(o, "--allow-downgrade") == 0)
             a->allow_downgrade = 1;

@@ -446,8 +446,8 @@ int main(int argc, char **argv)
     sw_status st = sw_options_parse(argc, argv, &rt.opt, &err);
     if (st != SW_OK)
         return sw_usage_error("seamwalk", "%s", err.message);
-    if (rt.opt.help) {
-        if (rt.opt.help == 2)
+    if (rt.opt.help || rt.opt.help_test) {
+        if (rt.opt.help_test)
             sw_options_print_test_usage(stdout);
         else
             sw_options_print_usage(stdout, argv[0]);

@@ -4,12 +4,14 @@
  * build passes no line numbers to the handler), checks each [section] header
  * as it passes, so an empty unknown section is an error too, and stops inih at
  * the first error. Keys are described by tables, one row per key, which the
- * example file firmware/dist/seamwalk.ini mirrors. */
+ * example file firmware/dist/seamwalk.ini mirrors. A key that sets what a
+ * command-line option sets takes that option's range and default from the
+ * option table (sw_option_table.c), so the two cannot take different values. */
 #include "sw_config.h"
 
-#include "sw_gl_pool.h"
-#include "sw_pack_store.h"
+#include "sw_option_table.h"
 
+#include <assert.h>
 #include <ctype.h>
 #include <errno.h>
 #include <ini.h>
@@ -33,6 +35,10 @@ typedef struct key_desc {
     const char *const *words;
 } key_desc;
 
+/* min and max of a key that sets what an option sets: its range, and its
+ * default, are the option's (sw_option_for_key). */
+#define OF_OPTION NAN, NAN
+
 static const char *const display_words[] = {"auto", "headless", "kms", "x11", "wayland", NULL};
 static const char *const nav_words[] = {"walk", "orbit", NULL};
 static const char *const bias_words[] = {"as-is", "disable", "pull-up", "pull-down", NULL};
@@ -46,19 +52,19 @@ static const char *const action_words[] = {"none", "forward", "back", "turn_left
 #define G(field) offsetof(sw_kiosk_gpio, field)
 
 static const key_desc config_keys[] = {
-    {"display", "display", K_ENUM, C(display), 0, 0, 0, display_words},
-    {"display", "size", K_SIZE, C(width), C(height), 16, 8192, NULL},
-    {"display", "fov_deg", K_REAL, C(fov_deg), 0, 5, 150, NULL},
-    {"pack", "pack", K_PATH, C(pack), 0, 0, 0, NULL},
-    {"pack", "store", K_PATH, C(store), 0, 0, 0, NULL},
-    {"pack", "keys", K_PATH, C(keys), 0, 0, 0, NULL},
-    {"pack", "boot_attempts", K_INT, C(boot_attempts), 0, 1, 1000, NULL},
-    {"pack", "good_after_s", K_REAL, C(good_after_s), 0, 0, 1e9, NULL},
-    {"render", "memory_mb", K_REAL, C(memory_mb), 0, 1, 1 << 20, NULL},
-    {"render", "max_error_px", K_REAL, C(max_error_px), 0, 0.01, 100, NULL},
-    {"render", "batch_tris", K_INT, C(render_batch_tris), 0, 0, 1 << 24, NULL},
-    {"budgets", "frame_ms", K_REAL, C(budget_frame_ms), 0, 1, SW_CONFIG_MAX_FRAME_MS, NULL},
-    {"budgets", "workers", K_INT, C(budget_workers), 0, -1, SW_CONFIG_MAX_WORKERS, NULL},
+    {"display", "display", K_ENUM, C(display), 0, OF_OPTION, display_words},
+    {"display", "size", K_SIZE, C(width), C(height), OF_OPTION, NULL},
+    {"display", "fov_deg", K_REAL, C(fov_deg), 0, OF_OPTION, NULL},
+    {"pack", "pack", K_PATH, C(pack), 0, OF_OPTION, NULL},
+    {"pack", "store", K_PATH, C(store), 0, OF_OPTION, NULL},
+    {"pack", "keys", K_PATH, C(keys), 0, OF_OPTION, NULL},
+    {"pack", "boot_attempts", K_INT, C(boot_attempts), 0, OF_OPTION, NULL},
+    {"pack", "good_after_s", K_REAL, C(good_after_s), 0, OF_OPTION, NULL},
+    {"render", "memory_mb", K_REAL, C(memory_mb), 0, OF_OPTION, NULL},
+    {"render", "max_error_px", K_REAL, C(max_error_px), 0, OF_OPTION, NULL},
+    {"render", "batch_tris", K_INT, C(render_batch_tris), 0, OF_OPTION, NULL},
+    {"budgets", "frame_ms", K_REAL, C(budget_frame_ms), 0, OF_OPTION, NULL},
+    {"budgets", "workers", K_INT, C(budget_workers), 0, OF_OPTION, NULL},
     {"gamepad", "enabled", K_BOOL, K(gamepad_enabled), 0, 0, 0, NULL},
     {"gamepad", "mapping", K_PATH, K(gamepad_mapping), 0, 0, 0, NULL},
     {"gamepad", "dead_zone", K_REAL, K(gamepad_dead_zone), 0, 0, 0.95, NULL},
@@ -103,19 +109,40 @@ static const char *const section_words[] = {"display", "pack", "render", "budget
                                             "gamepad", "keyboard", "navigation", NULL};
 enum { SECTION_NONE = -1, SECTION_GPIO = 100 };
 
+/* The range a key takes: its own, or with OF_OPTION its option's. An
+ * OF_OPTION key no option names keeps NaN, which no value is within, so the
+ * example file's test (tests/test_config.c) fails on it. */
+static void key_range(const key_desc *k, double *min, double *max)
+{
+    const sw_option_desc *o = isnan(k->min) ? sw_option_for_key(k->section, k->key) : NULL;
+    assert(o || !isnan(k->min));
+    *min = o ? o->min : k->min;
+    *max = o ? o->max : k->max;
+}
+
+/* The keys an option sets too start at its default. */
+static void option_defaults(sw_config *cfg)
+{
+    for (size_t i = 0; i < CONFIG_KEY_COUNT; i++) {
+        const key_desc *k = &config_keys[i];
+        const sw_option_desc *o = isnan(k->min) ? sw_option_for_key(k->section, k->key) : NULL;
+        char *at = (char *)cfg + k->offset;
+        int whole = o ? (int)o->def : 0;
+        if (!o)
+            continue;
+        if (k->kind == K_REAL)
+            memcpy(at, &o->def, sizeof o->def);
+        else if (k->kind == K_INT || k->kind == K_ENUM)
+            memcpy(at, &whole, sizeof whole);
+        else if (k->kind == K_PATH && o->def_text)
+            snprintf(at, SW_CONFIG_PATH_MAX, "%s", o->def_text);
+    }
+}
+
 void sw_config_defaults(sw_config *cfg)
 {
     memset(cfg, 0, sizeof *cfg);
-    cfg->display = SW_DISPLAY_AUTO;
-    cfg->fov_deg = 45;
-    memcpy(cfg->keys, SW_STORE_DEFAULT_KEYS, sizeof SW_STORE_DEFAULT_KEYS);
-    cfg->boot_attempts = 3;
-    cfg->good_after_s = 30;
-    cfg->memory_mb = 256;
-    cfg->max_error_px = 0.5;
-    cfg->render_batch_tris = SW_GL_POOL_BATCH_TRIANGLES;
-    cfg->budget_frame_ms = 16.7;
-    cfg->budget_workers = -1;
+    option_defaults(cfg);
     cfg->kiosk.gamepad_enabled = 1;
     cfg->kiosk.gamepad_dead_zone = 0.15;
     static const sw_kiosk_action pad_actions[SW_KIOSK_PAD_BUTTONS] = {
@@ -222,21 +249,33 @@ static int set_text(config_parse *ps, const key_desc *k, char *dst, size_t cap, 
     return 1;
 }
 
+/* "LO..HI" for messages, numbers as the options write them. */
+static void format_range(double min, double max, char *out, size_t size)
+{
+    char lo[32], hi[32];
+    sw_option_format_number(min, lo, sizeof lo);
+    sw_option_format_number(max, hi, sizeof hi);
+    snprintf(out, size, "%s..%s", lo, hi);
+}
+
 static int set_size(config_parse *ps, const key_desc *k, char *base, const char *v)
 {
     const char *x = strchr(v, 'x');
-    char w[16];
+    char w[16], range[80];
     long wv = 0, hv = 0;
+    double min, max;
+    key_range(k, &min, &max);
     int ok = x && (size_t)(x - v) < sizeof w;
     if (ok) {
         memcpy(w, v, (size_t)(x - v));
         w[x - v] = '\0';
-        ok = parse_long(w, &wv) && parse_long(x + 1, &hv) && wv >= k->min && wv <= k->max &&
-             hv >= k->min && hv <= k->max;
+        ok = parse_long(w, &wv) && parse_long(x + 1, &hv) && wv >= min && wv <= max &&
+             hv >= min && hv <= max;
     }
+    format_range(min, max, range, sizeof range);
     if (!ok)
-        return fail_at(ps, ps->line, "[%s] %s: expected WIDTHxHEIGHT, each %g..%g, got '%s'",
-                       ps->section_name, k->key, k->min, k->max, v);
+        return fail_at(ps, ps->line, "[%s] %s: expected WIDTHxHEIGHT, each %s, got '%s'",
+                       ps->section_name, k->key, range, v);
     int wi = (int)wv, hi = (int)hv;
     memcpy(base + k->offset, &wi, sizeof wi);
     memcpy(base + k->offset2, &hi, sizeof hi);
@@ -250,9 +289,11 @@ static int set_line(config_parse *ps, const key_desc *k, char *base, const char 
     char *name = base + k->offset;
     if (isdigit((unsigned char)v[0])) {
         long offset;
+        char most[32];
+        sw_option_format_number(k->max, most, sizeof most);
         if (!parse_long(v, &offset) || offset > k->max)
-            return fail_at(ps, ps->line, "[%s] %s: expected a line offset 0..%g or a line name, "
-                           "got '%s'", ps->section_name, k->key, k->max, v);
+            return fail_at(ps, ps->line, "[%s] %s: expected a line offset 0..%s or a line name, "
+                           "got '%s'", ps->section_name, k->key, most, v);
         off = (int)offset;
         name[0] = '\0';
     } else if (!set_text(ps, k, name, SW_CONFIG_NAME_MAX, v)) {
@@ -273,9 +314,13 @@ static int set_number(config_parse *ps, const key_desc *k, char *base, const cha
     if (!is_number)
         return fail_at(ps, ps->line, "[%s] %s: expected %s, got '%s'", ps->section_name, k->key,
                        k->kind == K_INT ? "an integer" : "a number", v);
-    if (d < k->min || d > k->max)
-        return fail_at(ps, ps->line, "[%s] %s: expected %g..%g, got %s", ps->section_name,
-                       k->key, k->min, k->max, v);
+    double min, max;
+    char range[80];
+    key_range(k, &min, &max);
+    format_range(min, max, range, sizeof range);
+    if (!(d >= min && d <= max))
+        return fail_at(ps, ps->line, "[%s] %s: expected %s, got %s", ps->section_name, k->key,
+                       range, v);
     if (k->kind == K_INT) {
         int i = (int)d;
         memcpy(base + k->offset, &i, sizeof i);

@@ -10,7 +10,8 @@
  * unit's store and keys.
  *
  * Every section and key, with its default, is in the example
- * firmware/dist/seamwalk.ini. An unknown section or key, a key given twice, a bad
+ * firmware/dist/seamwalk.ini. The keys that set what a command-line option
+ * sets take its range and default from the option table (sw_option_table.h). An unknown section or key, a key given twice, a bad
  * value (not a number, out of range, an unknown word) or a line that is not
  * [section] or key = value is SW_ERR_FORMAT with "FILE:LINE: [section] key:
  * what was expected". [gamepad], [keyboard], [navigation] and [gpio NAME]
@@ -25,11 +26,6 @@
 #include "sw_kiosk_config.h"
 
 #define SW_CONFIG_DEFAULT_PATH "/etc/seamwalk/seamwalk.ini"
-
-/* The ranges a setting shares with its command-line option
- * (sw_options.h), so a value one takes the other takes too. */
-#define SW_CONFIG_MAX_WORKERS 16          /* [budgets] workers, --workers */
-#define SW_CONFIG_MAX_FRAME_MS 10000.0    /* [budgets] frame_ms, --target-ms */
 
 /* inih reads lines of at most 200 bytes, so paths stay below that; the
  * kiosk's sections (sw_kiosk_config.h) hold theirs to the same limits. */

@@ -1,51 +1,122 @@
 /* SPDX-License-Identifier: MIT */
+/* seamwalk's command line into sw_options (sw_options.h): the config file
+ * first, then each argument found in the option table (sw_option_table.c)
+ * and read as its row's kind says, within its row's range. */
 #include "sw_options.h"
 
 #include <errno.h>
-#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static sw_status parse_int(const char *opt, const char *text, int min, int max, int *out,
-                           sw_error *err)
+/* ---- values ------------------------------------------------------------- */
+
+static sw_status read_integer(const char *opt, const char *text, double min, double max,
+                              long *out, sw_error *err)
 {
     char *end;
     errno = 0;
     long v = text ? strtol(text, &end, 10) : 0;
-    if (!text || *end != '\0' || end == text || errno || v < min || v > max)
-        return sw_error_set(err, SW_ERR_ARG, "%s expects an integer in %d..%d, got '%s'", opt, min,
-                            max, text ? text : "");
-    *out = (int)v;
-    return SW_OK;
-}
-
-static sw_status parse_real(const char *opt, const char *text, double min, double max,
-                            double *out, sw_error *err)
-{
-    char *end;
-    double v = text ? strtod(text, &end) : 0;
-    if (!text || *end != '\0' || end == text || !isfinite(v) || v < min || v > max)
-        return sw_error_set(err, SW_ERR_ARG, "%s expects a number in %g..%g, got '%s'", opt, min,
-                            max, text ? text : "");
+    if (!text || *end != '\0' || end == text || errno || v < min || v > max) {
+        char lo[32], hi[32];
+        sw_option_format_number(min, lo, sizeof lo);
+        sw_option_format_number(max, hi, sizeof hi);
+        return sw_error_set(err, SW_ERR_ARG, "%s expects an integer in %s..%s, got '%s'", opt,
+                            lo, hi, text ? text : "");
+    }
     *out = v;
     return SW_OK;
 }
 
-static sw_status parse_size(const char *opt, const char *text, int *w, int *h, sw_error *err)
+static sw_status read_real(const sw_option_desc *d, const char *text, double *out,
+                           sw_error *err)
+{
+    char *end;
+    double v = text ? strtod(text, &end) : 0;
+    if (!text || *end != '\0' || end == text || !isfinite(v) || v < d->min || v > d->max) {
+        char range[80];
+        sw_option_format_range(d, range, sizeof range);
+        return sw_error_set(err, SW_ERR_ARG, "%s expects a number in %s, got '%s'", d->name,
+                            range, text ? text : "");
+    }
+    *out = v;
+    return SW_OK;
+}
+
+/* WIDTHxHEIGHT, each side in the row's range, into width and the height
+ * after it (sw_option_table.c). */
+static sw_status read_size(const sw_option_desc *d, const char *text, int *size, sw_error *err)
 {
     const char *x = text ? strchr(text, 'x') : NULL;
-    char width[16], what[32];
+    char width[16], what[48];
     if (!x || (size_t)(x - text) >= sizeof width)
-        return sw_error_set(err, SW_ERR_ARG, "%s expects WIDTHxHEIGHT, got '%s'", opt,
+        return sw_error_set(err, SW_ERR_ARG, "%s expects WIDTHxHEIGHT, got '%s'", d->name,
                             text ? text : "");
     memcpy(width, text, (size_t)(x - text));
     width[x - text] = '\0';
-    snprintf(what, sizeof what, "%s width", opt);
-    sw_status st = parse_int(what, width, 16, 8192, w, err);
-    snprintf(what, sizeof what, "%s height", opt);
-    return st != SW_OK ? st : parse_int(what, x + 1, 16, 8192, h, err);
+    long w, h;
+    snprintf(what, sizeof what, "%s width", d->name);
+    sw_status st = read_integer(what, width, d->min, d->max, &w, err);
+    snprintf(what, sizeof what, "%s height", d->name);
+    if (st == SW_OK)
+        st = read_integer(what, x + 1, d->min, d->max, &h, err);
+    if (st == SW_OK) {
+        size[0] = (int)w;
+        size[1] = (int)h;
+    }
+    return st;
+}
+
+/* R,G,B: three levels in the row's range, as 0..1. */
+static sw_status read_rgb(const sw_option_desc *d, const char *text, float rgb[3],
+                          sw_error *err)
+{
+    int level[3], used = 0, ok = sscanf(text, "%d,%d,%d%n", &level[0], &level[1], &level[2],
+                                        &used) == 3 && text[used] == '\0';
+    for (int c = 0; ok && c < 3; c++)
+        ok = level[c] >= d->min && level[c] <= d->max;
+    if (!ok) {
+        char range[80];
+        sw_option_format_range(d, range, sizeof range);
+        return sw_error_set(err, SW_ERR_ARG, "%s expects R,G,B (%s each), got '%s'", d->name,
+                            range, text);
+    }
+    for (int c = 0; c < 3; c++)
+        rgb[c] = (float)level[c] / (float)d->max;
+    return SW_OK;
+}
+
+/* A row's words, "tree|brute", as "tree or brute" ("a, b or c"). */
+static void list_words(const char *words, char *out, size_t size)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    for (const char *w = words; w && used < size;) {
+        size_t n = strcspn(w, "|");
+        const char *sep = w == words ? "" : w[n] ? ", " : " or ";
+        int k = snprintf(out + used, size - used, "%s%.*s", sep, (int)n, w);
+        used += k > 0 ? (size_t)k : 0;
+        w = w[n] ? w + n + 1 : NULL;
+    }
+}
+
+/* One of the row's words: its index. */
+static sw_status read_word(const sw_option_desc *d, const char *text, int *out, sw_error *err)
+{
+    size_t len = strlen(text);
+    int i = 0;
+    for (const char *w = d->arg; w; i++) {
+        size_t n = strcspn(w, "|");
+        if (n == len && !strncmp(w, text, n)) {
+            *out = i;
+            return SW_OK;
+        }
+        w = w[n] ? w + n + 1 : NULL;
+    }
+    char words[128];
+    list_words(d->arg, words, sizeof words);
+    return sw_error_set(err, SW_ERR_ARG, "%s expects %s, got '%s'", d->name, words, text);
 }
 
 /* The config's words are in sw_display_kind's order (sw_config.h). */
@@ -60,54 +131,103 @@ static sw_display_kind display_of(sw_config_display d)
     }
 }
 
-/* --background R,G,B (and --back-faces): three levels 0..255. */
-static sw_status parse_rgb(const char *opt, const char *text, float rgb[3], sw_error *err)
+/* ---- one option ----------------------------------------------------------- */
+
+static void *field_of(sw_options *o, const sw_option_desc *d)
 {
-    int level[3], used = 0;
-    if (sscanf(text, "%d,%d,%d%n", &level[0], &level[1], &level[2], &used) != 3 ||
-        text[used] != '\0')
-        return sw_error_set(err, SW_ERR_ARG, "%s expects R,G,B (0..255 each), got '%s'", opt,
-                            text);
-    for (int c = 0; c < 3; c++) {
-        if (level[c] < 0 || level[c] > 255)
-            return sw_error_set(err, SW_ERR_ARG, "%s expects R,G,B (0..255 each), got '%s'", opt,
-                                text);
-        rgb[c] = (float)level[c] / 255.0f;
-    }
-    return SW_OK;
+    return (char *)o + d->field;
 }
 
-/* The defaults the config file also has come from it (sw_config_defaults),
- * so the two cannot drift apart; the rest are the command line's own.
- * Without --config the config keeps those defaults too: --navigate reads its
- * devices, mapping and speeds from it. */
+/* An integer into the row's field, an int or a long. */
+static void store_integer(sw_options *o, const sw_option_desc *d, long v)
+{
+    if (d->field_size == sizeof(long)) {
+        memcpy(field_of(o, d), &v, sizeof v);
+    } else {
+        int i = (int)v;
+        memcpy(field_of(o, d), &i, sizeof i);
+    }
+}
+
+/* lit, hidden or R,G,B: back faces shaded, not drawn, or flat in a colour. */
+static sw_status read_back_faces(const sw_option_desc *d, const char *v, sw_options *o,
+                                 sw_error *err)
+{
+    o->back_hidden = !strcmp(v, "hidden");
+    o->back_flat = strcmp(v, "lit") != 0 && !o->back_hidden;
+    return o->back_flat ? read_rgb(d, v, o->back_color, err) : SW_OK;
+}
+
+static sw_status read_depth_bits(const sw_option_desc *d, const char *v, sw_options *o,
+                                 sw_error *err)
+{
+    long bits;
+    sw_status st = read_integer(d->name, v, d->min, d->max, &bits, err);
+    if (st == SW_OK && bits != d->min && bits != d->max) {
+        char words[64];
+        list_words(d->arg, words, sizeof words);
+        return sw_error_set(err, SW_ERR_ARG, "%s expects %s, got '%s'", d->name, words, v);
+    }
+    if (st == SW_OK)
+        o->depth_bits = (int)bits;
+    return st;
+}
+
+/* The row's value v (NULL for a flag) into its field. */
+static sw_status set_value(const sw_option_desc *d, const char *v, sw_options *o, sw_error *err)
+{
+    long n = 1;
+    sw_status st = SW_OK;
+    switch (d->kind) {
+    case SW_OPTION_TEXT:
+        memcpy(field_of(o, d), &v, sizeof v);
+        return SW_OK;
+    case SW_OPTION_FLAG:
+        store_integer(o, d, 1);
+        return SW_OK;
+    case SW_OPTION_INT:
+        if ((st = read_integer(d->name, v, d->min, d->max, &n, err)) == SW_OK)
+            store_integer(o, d, n);
+        return st;
+    case SW_OPTION_REAL:
+        return read_real(d, v, field_of(o, d), err);
+    case SW_OPTION_WORD:
+        return read_word(d, v, field_of(o, d), err);
+    case SW_OPTION_HEADLESS:
+        o->display = SW_DISPLAY_KIND_HEADLESS;
+        return read_size(d, v, field_of(o, d), err);
+    case SW_OPTION_SIZE:
+        return read_size(d, v, field_of(o, d), err);
+    case SW_OPTION_DISPLAY:
+        return sw_display_kind_parse(v, (sw_display_kind *)field_of(o, d), err);
+    case SW_OPTION_RGB:
+        o->background_set = 1;
+        return read_rgb(d, v, field_of(o, d), err);
+    case SW_OPTION_BACK_FACES:
+        return read_back_faces(d, v, o, err);
+    case SW_OPTION_DEPTH_BITS:
+        return read_depth_bits(d, v, o, err);
+    }
+    return sw_error_set(err, SW_ERR_ARG, "%s: no parser for its kind", d->name);
+}
+
+/* ---- the whole line ------------------------------------------------------- */
+
+/* Every default is the table's, the config's as well (sw_config_defaults
+ * takes its keys' from the same rows). Without --config the config keeps its
+ * defaults too: --navigate reads its devices, mapping and speeds from it. */
 static void set_defaults(sw_options *o)
 {
     memset(o, 0, sizeof *o);
     sw_config_defaults(&o->config);
-    const sw_config *c = &o->config;
-    o->frames = 120;
-    o->png_every = 1;
-    o->measure_every = 4;
-    o->memory_mb = c->memory_mb;
-    o->max_error_px = c->max_error_px;
-    o->batch_tris = c->render_batch_tris;
-    o->fov_deg = c->fov_deg;
-    o->boot_attempts = c->boot_attempts;
-    o->good_after_s = c->good_after_s;
-    o->depth_bits = 24;
-    o->depth_fit = 1;
-    o->fill_crossings = 1;
-    o->static_levels = 1;
-    o->part_levels = 1;
-    o->leaner_standins = 1;
-    o->cone_cull = 1;
-    o->drop_surface = -1;
-    o->workers = c->budget_workers;   /* -1: cores - 1, at least 1, decided in main */
-    o->target_ms = c->budget_frame_ms;
-    o->stall_workers_at = -1;
-    o->standin_silhouettes = 1;
-    o->visibility_thread = 1;
+    for (size_t i = 0; i < sw_option_count; i++) {
+        const sw_option_desc *d = &sw_option_table[i];
+        if (d->kind == SW_OPTION_REAL)
+            memcpy(field_of(o, d), &d->def, sizeof d->def);
+        else if (d->kind == SW_OPTION_INT || d->kind == SW_OPTION_WORD ||
+                 d->kind == SW_OPTION_DEPTH_BITS)
+            store_integer(o, d, (long)d->def);
+    }
     /* The test suite's deterministic frames (tests/CMakeLists.txt sets it
      * for every test); the command line's --sync-work wins. */
     const char *sync = getenv("SEAMWALK_TEST_SYNC_WORK");
@@ -145,6 +265,28 @@ static const char *find_config(int argc, char **argv)
     return NULL;
 }
 
+/* How many of a group's rows (SW_OPTION_PACK, SW_OPTION_CAMERA) are set. */
+static int given(const sw_options *o, unsigned group)
+{
+    int count = 0;
+    for (size_t i = 0; i < sw_option_count; i++) {
+        const sw_option_desc *d = &sw_option_table[i];
+        const void *at = (const char *)o + d->field;
+        const char *text;
+        int flag;
+        if (!(d->flags & group))
+            continue;
+        if (d->kind == SW_OPTION_TEXT) {
+            memcpy(&text, at, sizeof text);
+            count += text != NULL;
+        } else {
+            memcpy(&flag, at, sizeof flag);
+            count += flag != 0;
+        }
+    }
+    return count;
+}
+
 /* What the file chose in groups where the command line's choice replaces it
  * as a whole (--pack or --store; --path, --orbit or --view; the size). */
 typedef struct config_choice {
@@ -162,11 +304,11 @@ static config_choice take_choice(sw_options *o)
 
 static void merge_choice(sw_options *o, const config_choice *c)
 {
-    if (!o->pack_path && !o->store_dir) {
+    if (!given(o, SW_OPTION_PACK)) {
         o->pack_path = c->pack_path;
         o->store_dir = c->store_dir;
     }
-    if (!o->orbit && !o->path_file && !o->view_name && !o->navigate && !o->input_timeline)
+    if (!given(o, SW_OPTION_CAMERA))
         o->orbit = c->orbit;
     if (o->width)
         return;
@@ -174,14 +316,27 @@ static void merge_choice(sw_options *o, const config_choice *c)
     o->height = c->height;
 }
 
-static sw_status check_complete(const sw_options *o, sw_error *err)
+/* "give exactly one of --pack FILE and --store DIR" unless one is given. */
+static sw_status check_one_of(const sw_options *o, unsigned group, sw_error *err)
 {
-    if (!o->pack_path == !o->store_dir)
-        return sw_error_set(err, SW_ERR_ARG, "give exactly one of --pack FILE and --store DIR");
-    if (!!o->orbit + !!o->path_file + !!o->view_name + !!o->navigate + !!o->input_timeline != 1)
-        return sw_error_set(err, SW_ERR_ARG, "give exactly one of --path FILE, --orbit, --view "
-                            "NAME, --navigate and --input-timeline FILE");
-    return SW_OK;
+    if (given(o, group) == 1)
+        return SW_OK;
+    char list[256];
+    size_t used = 0;
+    int left = 0;
+    for (size_t i = 0; i < sw_option_count; i++)
+        left += (sw_option_table[i].flags & group) != 0;
+    for (size_t i = 0; i < sw_option_count && used < sizeof list; i++) {
+        const sw_option_desc *d = &sw_option_table[i];
+        if (!(d->flags & group))
+            continue;
+        left--;
+        const char *sep = used == 0 ? "" : left == 0 ? " and " : ", ";
+        int n = snprintf(list + used, sizeof list - used, "%s%s%s%s", sep, d->name,
+                         d->arg ? " " : "", d->arg ? d->arg : "");
+        used += n > 0 ? (size_t)n : 0;
+    }
+    return sw_error_set(err, SW_ERR_ARG, "give exactly one of %s", list);
 }
 
 /* What this build was made without is a usage error when the walk would
@@ -209,288 +364,26 @@ sw_status sw_options_parse(int argc, char **argv, sw_options *o, sw_error *err)
     }
     config_choice choice = take_choice(o);
     for (int i = 1; i < argc && st == SW_OK; i++) {
-        const char *a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes_value = 1;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            o->help = 1;
-            return SW_OK;
-        } else if (!strcmp(a, "--help-test")) {
-            o->help = 2;
-            return SW_OK;
-        } else if (!strcmp(a, "--version")) {
-            o->version = 1;
-            return SW_OK;
-        } else if (!strcmp(a, "--orbit")) {
-            o->orbit = 1;
-            takes_value = 0;
-        } else if (!strcmp(a, "--navigate")) {
-            o->navigate = 1;
-            takes_value = 0;
-        } else if (!strcmp(a, "--no-cache")) {
-            o->no_cache = 1;
-            takes_value = 0;
-        } else if (!v) {
-            return sw_error_set(err, SW_ERR_ARG, "%s: unknown option or missing value", a);
-        } else if (!strcmp(a, "--config")) {
+        const sw_option_desc *d = sw_option_find(argv[i]);
+        const char *v = d && d->arg && i + 1 < argc ? argv[++i] : NULL;
+        if (!d)
+            return sw_error_set(err, SW_ERR_ARG, "unknown option '%s'", argv[i]);
+        if (d->arg && !v)
+            return sw_error_set(err, SW_ERR_ARG, "%s: missing its value (%s)", d->name, d->arg);
+        if (d->flags & SW_OPTION_READ_FIRST) {
             if (v != o->config_path)
-                return sw_error_set(err, SW_ERR_ARG, "--config given twice");
-        } else if (!strcmp(a, "--pack")) {
-            o->pack_path = v;
-        } else if (!strcmp(a, "--headless")) {
-            o->display = SW_DISPLAY_KIND_HEADLESS;
-            st = parse_size(a, v, &o->width, &o->height, err);
-        } else if (!strcmp(a, "--size")) {
-            st = parse_size(a, v, &o->width, &o->height, err);
-        } else if (!strcmp(a, "--display")) {
-            st = sw_display_kind_parse(v, &o->display, err);
-        } else if (!strcmp(a, "--path")) {
-            o->path_file = v;
-        } else if (!strcmp(a, "--view")) {
-            o->view_name = v;
-        } else if (!strcmp(a, "--input-timeline")) {
-            o->input_timeline = v;
-        } else if (!strcmp(a, "--pose-log")) {
-            o->pose_log = v;
-        } else if (!strcmp(a, "--frames")) {
-            st = parse_int(a, v, 1, 10000000, &o->frames, err);
-        } else if (!strcmp(a, "--duration")) {
-            st = parse_real(a, v, 0.001, 1e7, &o->duration_s, err);
-        } else if (!strcmp(a, "--png-dir")) {
-            o->png_dir = v;
-        } else if (!strcmp(a, "--png-every")) {
-            st = parse_int(a, v, 1, INT_MAX, &o->png_every, err);
-        } else if (!strcmp(a, "--stats")) {
-            o->stats_path = v;
-        } else if (!strcmp(a, "--memory-mb")) {
-            st = parse_real(a, v, 1, 1 << 20, &o->memory_mb, err);
-        } else if (!strcmp(a, "--max-error-px")) {
-            st = parse_real(a, v, 0.01, 100, &o->max_error_px, err);
-        } else if (!strcmp(a, "--measure-every")) {
-            st = parse_int(a, v, 0, INT_MAX, &o->measure_every, err);
-        } else if (!strcmp(a, "--store")) {
-            o->store_dir = v;
-        } else if (!strcmp(a, "--keys")) {
-            o->keys_path = v;
-        } else if (!strcmp(a, "--boot-attempts")) {
-            st = parse_int(a, v, 1, 1000, &o->boot_attempts, err);
-        } else if (!strcmp(a, "--good-after-s")) {
-            st = parse_real(a, v, 0, 1e9, &o->good_after_s, err);
-        } else if (!strcmp(a, "--background")) {
-            o->background_set = 1;
-            st = parse_rgb(a, v, o->background, err);
-        } else if (!strcmp(a, "--back-faces")) {
-            o->back_hidden = !strcmp(v, "hidden");
-            o->back_flat = strcmp(v, "lit") != 0 && !o->back_hidden;
-            if (o->back_flat)
-                st = parse_rgb(a, v, o->back_color, err);
-        } else if (!strcmp(a, "--cone-cull")) {
-            st = parse_int(a, v, 0, 1, &o->cone_cull, err);
-        } else if (!strcmp(a, "--cull")) {
-            o->cull_brute = !strcmp(v, "brute");
-            if (!o->cull_brute && strcmp(v, "tree"))
-                st = sw_error_set(err, SW_ERR_ARG, "--cull expects tree or brute, got '%s'", v);
-        } else if (!strcmp(a, "--depth-bits")) {
-            st = parse_int(a, v, 16, 24, &o->depth_bits, err);
-            if (st == SW_OK && o->depth_bits != 16 && o->depth_bits != 24)
-                st = sw_error_set(err, SW_ERR_ARG, "--depth-bits expects 16 or 24, got '%s'", v);
-        } else if (!strcmp(a, "--depth-fit")) {
-            st = parse_int(a, v, 0, 1, &o->depth_fit, err);
-        } else if (!strcmp(a, "--static-levels")) {
-            st = parse_int(a, v, 0, 1, &o->static_levels, err);
-        } else if (!strcmp(a, "--part-levels")) {
-            st = parse_int(a, v, 0, 1, &o->part_levels, err);
-        } else if (!strcmp(a, "--leaner-standins")) {
-            st = parse_int(a, v, 0, 1, &o->leaner_standins, err);
-        } else if (!strcmp(a, "--fill-crossings")) {
-            st = parse_int(a, v, 0, 1, &o->fill_crossings, err);
-        } else if (!strcmp(a, "--test-drop-surface")) {
-            int s = 0;
-            st = parse_int(a, v, 0, INT_MAX, &s, err);
-            o->drop_surface = s;
-        } else if (!strcmp(a, "--workers")) {
-            st = parse_int(a, v, 0, SW_OPTIONS_MAX_WORKERS, &o->workers, err);
-        } else if (!strcmp(a, "--target-ms")) {
-            st = parse_real(a, v, 1, SW_CONFIG_MAX_FRAME_MS, &o->target_ms, err);
-        } else if (!strcmp(a, "--visibility-thread")) {
-            st = parse_int(a, v, 0, 1, &o->visibility_thread, err);
-        } else if (!strcmp(a, "--sync-work")) {
-            st = parse_int(a, v, 0, 1, &o->sync_work, err);
-        } else if (!strcmp(a, "--batch-tris")) {
-            st = parse_int(a, v, 0, 1 << 24, &o->batch_tris, err);
-        } else if (!strcmp(a, "--test-grow-kb")) {
-            st = parse_int(a, v, 0, 1 << 20, &o->test_grow_kb, err);
-        } else if (!strcmp(a, "--test-slow-workers")) {
-            st = parse_int(a, v, 0, 10000, &o->slow_workers_ms, err);
-        } else if (!strcmp(a, "--test-standin-silhouettes")) {
-            st = parse_int(a, v, 0, 1, &o->standin_silhouettes, err);
-        } else if (!strcmp(a, "--test-part-levels-coarsest")) {
-            st = parse_int(a, v, 0, 1, &o->part_levels_coarsest, err);
-        } else if (!strcmp(a, "--test-stall-workers")) {
-            st = parse_int(a, v, 0, INT_MAX, &o->stall_workers_at, err);
-        } else if (!strcmp(a, "--fov-deg")) {
-            st = parse_real(a, v, 5, 150, &o->fov_deg, err);
-        } else {
-            return sw_error_set(err, SW_ERR_ARG, "unknown option '%s'", a);
+                return sw_error_set(err, SW_ERR_ARG, "%s given twice", d->name);
+            continue;
         }
-        i += takes_value;
+        st = set_value(d, v, o, err);
+        if (d->flags & SW_OPTION_STOPS)
+            return st;
     }
     if (st == SW_OK)
         merge_choice(o, &choice);
     if (st == SW_OK)
-        st = check_complete(o, err);
+        st = check_one_of(o, SW_OPTION_PACK, err);
+    if (st == SW_OK)
+        st = check_one_of(o, SW_OPTION_CAMERA, err);
     return st != SW_OK ? st : check_built(o, err);
-}
-
-void sw_options_print_usage(FILE *out, const char *argv0)
-{
-    fprintf(out,
-            "usage: %s --help | --help-test | --version\n"
-            "       %s (--pack FILE | --store DIR)\n"
-            "          (--path FILE | --orbit | --view NAME | --navigate | --input-timeline FILE)\n"
-            "          [--display auto|headless|kms|x11|wayland] [--size WxH] [--headless WxH]\n"
-            "          [--frames N] [--duration S] [--png-dir DIR] [--png-every K]\n"
-            "          [--stats FILE.json]\n"
-            "          [--memory-mb M] [--max-error-px E] [--measure-every K] [--fov-deg DEG]\n"
-            "          [--config FILE] [--pose-log FILE] [--no-cache] [--background R,G,B]\n"
-            "          [--back-faces lit|hidden|R,G,B] [--depth-bits 16|24] [--depth-fit 0|1]\n"
-            "          [--fill-crossings 0|1] [--static-levels 0|1] [--part-levels 0|1]\n"
-            "          [--leaner-standins 0|1]\n"
-            "          [--cone-cull 0|1]\n"
-            "          [--cull tree|brute]\n"
-            "          [--workers N] [--target-ms MS] [--visibility-thread 0|1]\n"
-            "          [--batch-tris N]\n"
-            "Walks a seamwalk pack and shows it on a display. --pack runs the file unsigned\n"
-            "(no signature checked); --store runs only packs its trusted keys signed.\n"
-            "  --display NAME      where to draw (default auto, or [display] display):\n"
-            "                        headless  EGL surfaceless, offscreen; needs a size (CI)\n"
-            "                        kms       full screen on /dev/dri/card*, no X or Wayland\n"
-            "                                  (libdrm + GBM; needs DRM master: nothing else\n"
-            "                                  showing on it)\n"
-            "                        x11       a window on $DISPLAY (EGL on X11)\n"
-            "                        wayland   a window on $WAYLAND_DISPLAY (EGL on Wayland)\n"
-            "                        auto      wayland if WAYLAND_DISPLAY is set, else x11 if\n"
-            "                                  DISPLAY is set, else kms if a /dev/dri/card*\n"
-            "                                  exists, each only if EGL offers it; else headless\n"
-            "                      the summary line says which ran and why; a display that\n"
-            "                      cannot open is one error line, exit 1\n"
-            "  --size WxH          headless: the picture; window: its size (default 1280x720);\n"
-            "                      kms: that mode if the connector has it, else its preferred\n"
-            "                      mode, else its largest\n"
-            "  --headless WxH      --display headless --size WxH\n"
-            "  --config FILE       read the unit's configuration (example, every key and its\n"
-            "                      default: firmware/dist/seamwalk.ini); its values fill what\n"
-            "                      the command line does not give; without it no file is read\n"
-            "  --path FILE         follow a camera path (format:\n"
-            "                      firmware/kiosk/sw_camera_path.h)\n"
-            "  --orbit             circle the model around the pack's up axis\n"
-            "  --view NAME         stand at one of the pack's named viewpoints\n"
-            "  --navigate          the unit's inputs drive the camera: gamepads (hidapi,\n"
-            "                      hot-plugged), [gpio] buttons (libgpiod), the keyboard\n"
-            "                      (evdev); walk, orbit, viewpoints, home, attract tour\n"
-            "                      (docs/kiosk.md, \"Inputs and navigation\"; keys:\n"
-            "                      [keyboard], [navigation], [gpio NAME] in the config)\n"
-            "  --input-timeline FILE  the same navigation driven by a recorded input timeline\n"
-            "                      (format: firmware/kiosk/sw_input_timeline.h) through fake\n"
-            "                      devices on a simulated 30 Hz clock: replays exactly\n"
-            "  --pose-log FILE     write each frame's camera pose (frame t eye target up)\n"
-            "  --frames N          frames to render (default 120); closing the window,\n"
-            "                      SIGTERM or Ctrl-C end the walk sooner, stats written\n"
-            "  --duration S        the soak: walk for S seconds, the path (or orbit) taken\n"
-            "                      as a loop of --frames frames, again and again; the stats\n"
-            "                      keep the last loop's frames and add resident memory at\n"
-            "                      start, after the first loop and at the end, and the\n"
-            "                      worst frame of all\n"
-            "  --png-dir DIR       write frame_NNNNN.png every --png-every frames\n"
-            "  --stats FILE.json   write the walk's statistics\n"
-            "  --memory-mb M       refuse to start if the arena needs more (default 256)\n"
-            "  --max-error-px E    screen-space tessellation error bound (default 0.5)\n"
-            "  --measure-every K   measure error and cracks every K-th frame, frame 0 first\n"
-            "                      (default 4); 0: never, as a kiosk runs (on the\n"
-            "                      40,000-patch showroom a measured frame takes ~0.35 s more)\n"
-            "  --store DIR         start the unit's pack store's slot\n"
-            "                      (firmware/store/STORE.md): the pending one on trial, else\n"
-            "                      the good one; none valid: a message screen, exit 3\n"
-            "  --keys FILE         trusted public keys for --store (default\n"
-            "                      /etc/seamwalk/keys; root's, writable by no one else)\n"
-            "  --boot-attempts K   boots a pending slot gets before falling back (default 3)\n"
-            "  --good-after-s S    walk time of healthy frames before a pending slot is\n"
-            "                      marked good (default 30)\n"
-            "  --workers N         tessellation threads beside the drawing one (default: the\n"
-            "                      cores less one, at least 1); 0: tessellate in the frame,\n"
-            "                      single-threaded. With workers the frame draws the meshes\n"
-            "                      it has and swaps new ones in as they are done, never\n"
-            "                      waiting for them (the first frame excepted)\n"
-            "  --target-ms MS      the frame time the work budgets hold with workers (default\n"
-            "                      16.7): the triangles made a frame follow from it\n"
-            "  --visibility-thread 0|1  with workers, 1 (default): culling, bounds, seams\n"
-            "                      and scheduling for the next frame run on their own\n"
-            "                      thread while this one is drawn (the input then shows\n"
-            "                      a frame later); 0: on the drawing thread, in turn\n"
-            "  --sync-work 0|1     1: each frame waits for the work it asked for, no budget:\n"
-            "                      frames as --workers 0 draws them, for the tests' golden\n"
-            "                      images (default 0; the test suite sets\n"
-            "                      SEAMWALK_TEST_SYNC_WORK=1)\n"
-            "  --batch-tris N      wait for the GL driver after every N triangles drawn\n"
-            "                      (default 32768, or [render] batch_tris; 0: only at the\n"
-            "                      frame's end): what llvmpipe holds in flight, so resident\n"
-            "                      memory, stays bounded\n"
-            "  --no-cache          tessellate every visible surface every frame at its exact\n"
-            "                      bound, keeping nothing: the baseline the cache is measured\n"
-            "                      against (tests/bench/walk_cache_bench.sh), not for units\n"
-            "  --background R,G,B  clear to this colour, levels 0..255 (default 237,240,245);\n"
-            "                      one the model never has shows holes (tests/image_holes.c)\n"
-            "  --back-faces M      lit (default: both sides shaded) or R,G,B: back faces flat\n"
-            "                      in that colour, so the inside of a solid showing through\n"
-            "                      a crack can be told from its outside; or hidden: back\n"
-            "                      faces not drawn (for closed solids whose faces point out;\n"
-            "                      an open shell seen from behind shows nothing there)\n"
-            "  --cone-cull 0|1     with --back-faces hidden: surfaces whose normal cone faces\n"
-            "                      away from the eye over their whole box are not drawn at\n"
-            "                      all (1, default); with back faces drawn it is always off\n"
-            "  --cull tree|brute   frustum culling through the hierarchy (tree, default) or\n"
-            "                      every patch box every frame (brute: the same answers, the\n"
-            "                      baseline tests/bench/cull_bench.sh measures against)\n"
-            "  --depth-bits B      at most B bits of depth, 16 or 24 (default 24: 24 where\n"
-            "                      GL_OES_depth24 is offered, else 16; the stats say which)\n"
-            "  --depth-fit 0|1     fit near and far to the surfaces drawn each frame (1,\n"
-            "                      default) or to the model's box (0)\n"
-            "  --static-levels 0|1  with workers, a surface in view whose mesh is not made\n"
-            "                      yet is drawn from the pack's static levels (1, default)\n"
-            "                      or waits, undrawn (0)\n"
-            "  --part-levels 0|1   a part far enough away is drawn whole from one of the\n"
-            "                      pack's part levels, within the bound (1, default), or\n"
-            "                      surface by surface (0)\n"
-            "  --leaner-standins 0|1  with workers, a stand-in within its bound but made for\n"
-            "                      one 1.6 times finer or more gets the walk's own mesh\n"
-            "                      when the workers have budget left (1, default: fewer\n"
-            "                      triangles to draw), or stays (0)\n"
-            "  --fill-crossings 0|1  close each seam crossing (a T-junction with the surface\n"
-            "                      across) with a zero-area fan (1, default), or not (0:\n"
-            "                      single-pixel pinholes open along such seams)\n"
-            "  --help-test         the options only the tests use (mutants, stalls, holes on\n"
-            "                      purpose): never on a unit\n",
-            argv0, argv0);
-}
-
-void sw_options_print_test_usage(FILE *out)
-{
-    fputs("seamwalk's options for the tests only: each makes the walk wrong or slow on\n"
-          "purpose, so a test can show that its check catches it.\n"
-          "  --test-stall-workers F  from frame F on the workers take no work: frames must\n"
-          "                      go on with the meshes they have (tests)\n"
-          "  --test-standin-silhouettes 0|1  where a silhouette may cross a stand-in, its\n"
-          "                      level is chosen by the bound it was made for (1, default)\n"
-          "                      or by its error (0: the tests' mutant, whose silhouettes\n"
-          "                      leave slits)\n"
-          "  --test-part-levels-coarsest 0|1  every part in view drawn from its coarsest\n"
-          "                      part level whatever the bound (1: the tests' mutant;\n"
-          "                      0, default)\n"
-          "  --test-slow-workers MS  each job is published MS late, so a batch takes\n"
-          "                      many frames (tests: no half batch may show)\n"
-          "  --test-grow-kb K    K kB more resident memory at each loop's end of a soak,\n"
-          "                      no allocation (tests: the soak must fail on it)\n"
-          "  --test-drop-surface S  never draw surface S: a hole on purpose, for the image\n"
-          "                      tests' mutants\n",
-          out);
 }
