@@ -2,7 +2,7 @@
 /* Work cut into independent parts, for the checks a start waits on (the
  * pack's section checksums, the Seam Graph's rules). The core starts no
  * thread of its own: a caller with cores to spare (the runtime's loader,
- * firmware/program/sw_parts_threads.h) passes a runner that may run parts at once on
+ * core/sw_parts_threads.h) passes a runner that may run parts at once on
  * other threads; without one (NULL: the host tool, the tests, the fuzzers)
  * they run in order on the calling thread. Either way every part runs, and
  * the caller reduces their results in part order, so the outcome and the

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The loader's parts runner (firmware/program/sw_parts_threads.h): every part runs
+/* The loader's parts runner (core/sw_parts_threads.h): every part runs
  * exactly once whatever the helpers and the count; with a helper, two parts
  * do run at the same time; and a pack's checks give the same result and
  * message with it as in order on one thread (under TSan, without a race). */
