@@ -369,9 +369,10 @@ typedef struct piece_worker {
 } piece_worker;
 
 /* The pieces made by workers (sw_parts_take_items, as many as the runner
- * runs at once), each piece's levels into arrays of its own, made[task],
- * joined in piece order after the run: the bytes are the same whichever
- * worker made which piece, and when. */
+ * runs at once). One worker appends each piece's levels to the output in
+ * turn; more make each piece's into arrays of its own, made[task], joined
+ * in piece order after the run: the bytes are the same whichever worker
+ * made which piece, and when (build_threads compares the two ways). */
 typedef struct pieces_run {
     const sw_pack *pack;
     const sw_levels *levels;
@@ -380,7 +381,9 @@ typedef struct pieces_run {
     const piece_sources *ps;
     const sw_part_levels_options *opt;
     const piece_task *tasks;
-    sw_part_level_arrays *made;
+    sw_part_level_arrays *out;
+    sw_part_level_arrays *made;   /* NULL: one worker, straight into out */
+    uint32_t *kept;               /* levels kept per task */
     piece_worker *workers;
     uint32_t task_count, worker_count;
 } pieces_run;
@@ -390,9 +393,12 @@ static int make_piece(void *arg, uint32_t worker, uint32_t t)
     pieces_run *run = arg;
     piece_worker *w = &run->workers[worker];
     const piece_task *k = &run->tasks[t];
+    sw_part_level_arrays *into = run->made ? &run->made[t] : run->out;
+    uint32_t before = into->level_count;
     double diagonal = run->cut[k->part] ? sw_part_diagonal(run->pack, k->part) : -1;
-    sw_status st = build_one_piece(&w->m, &run->made[t], run->levels, run->piece_of, run->ps,
-                                   diagonal, k->g, k->first, k->end, run->opt, &w->r, &w->err);
+    sw_status st = build_one_piece(&w->m, into, run->levels, run->piece_of, run->ps, diagonal,
+                                   k->g, k->first, k->end, run->opt, &w->r, &w->err);
+    run->kept[t] = into->level_count - before;
     w->failed = st == SW_OK ? w->failed : t;
     return st == SW_OK;
 }
@@ -444,15 +450,17 @@ static sw_status build_all(const sw_pack *pack, const sw_levels *levels, const u
                            const sw_part_levels_options *opt, sw_part_level_arrays *o,
                            uint32_t *piece_levels, sw_part_levels_report *r, sw_error *err)
 {
-    pieces_run run = { pack, levels, piece_of, cut, ps, opt, NULL, NULL, NULL, 0, 0 };
+    pieces_run run = { pack, levels, piece_of, cut, ps, opt, NULL, o, NULL, NULL, NULL, 0, 0 };
     piece_task *tasks = list_pieces(pack, piece_of, r->pieces, &run.task_count);
     run.tasks = tasks;
     run.worker_count = sw_parts_at_once(opt->runner);
     if (run.worker_count > run.task_count)
         run.worker_count = run.task_count ? run.task_count : 1;
-    run.made = calloc((size_t)run.task_count + 1, sizeof *run.made);
+    if (run.worker_count > 1)
+        run.made = calloc((size_t)run.task_count + 1, sizeof *run.made);
+    run.kept = calloc((size_t)run.task_count + 1, sizeof *run.kept);
     run.workers = calloc(run.worker_count, sizeof *run.workers);
-    sw_status st = tasks && run.made && run.workers
+    sw_status st = tasks && run.kept && run.workers && (run.made || run.worker_count == 1)
                        ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
     for (uint32_t w = 0; st == SW_OK && w < run.worker_count; w++)
         run.workers[w].failed = UINT32_MAX;
@@ -462,14 +470,15 @@ static sw_status build_all(const sw_pack *pack, const sw_levels *levels, const u
     }
     uint32_t made = 0;   /* levels of the pieces so far */
     for (uint32_t t = 0; st == SW_OK && t < run.task_count; t++) {
-        made += run.made[t].level_count;
+        made += run.kept[t];
         piece_levels[tasks[t].g + 1] = made;
     }
-    if (st == SW_OK && !sw_part_level_arrays_join(o, run.made, run.task_count))
+    if (st == SW_OK && run.made && !sw_part_level_arrays_join(o, run.made, run.task_count))
         st = sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
     for (uint32_t t = 0; run.made && t < run.task_count; t++)
         sw_part_level_arrays_free(&run.made[t]);
     free(run.made);
+    free(run.kept);
     free(run.workers);
     free(tasks);
     return st;
