@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# seamwalk-pack build makes the same pack, byte for byte, whatever
+# --threads says: a generated showroom of many parts, and a courtyard of
+# one part cut into pieces, each built with --threads 1 and --threads 4 and
+# compared with cmp; the summary names the threads it used; --threads takes
+# a count and nothing else.
+#   test_build_threads.sh SEAMWALK_PACK SOURCE_DIR
+set -uo pipefail
+pack=$1 src=$2
+work=$(mktemp -d "${TMPDIR:-/tmp}/sw_build_threads.XXXXXX") || exit 1
+trap 'rm -rf "$work"' EXIT
+failures=0 checks=0
+
+check() { # check DESCRIPTION COMMAND...
+  local what=$1; shift
+  checks=$((checks + 1))
+  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; failures=$((failures + 1)); fi
+}
+
+# built INPUT NAME THREADS [ARGS...]: NAME-THREADS.swpack, its summary
+# naming THREADS threads.
+built() {
+  local input=$1 name=$2 threads=$3; shift 3
+  local out=$work/$name-$threads
+  "$pack" build "$input" -o "$out.swpack" --threads "$threads" "$@" > "$out.log" 2>&1 &&
+    grep -q ", $threads threads\?)$" "$out.log" || { tail -5 "$out.log"; false; }
+}
+
+same_bytes() { # same_bytes NAME: NAME-1.swpack and NAME-4.swpack
+  cmp "$work/$1-1.swpack" "$work/$1-4.swpack"
+}
+
+usage_error() { # usage_error VALUE: --threads VALUE exits 2 naming it
+  "$pack" build "$work/court.igs" -o "$work/bad.swpack" --threads "$1" > /dev/null 2> "$work/err"
+  local got=$?
+  [ "$got" -eq 2 ] && grep -q -- "--threads takes a thread count, not '$1'" "$work/err" &&
+    [ ! -e "$work/bad.swpack" ] || { echo "  exit $got: $(head -c 300 "$work/err")"; false; }
+}
+
+"$pack" gen showroom --patches 2000 -o "$work/showroom.ini" > /dev/null &&
+  python3 "$src/tests/gen_soup.py" "$work/court.igs" --cells 24 > /dev/null ||
+  { echo "FAIL the inputs could not be made"; exit 1; }
+check "the showroom builds on 1 thread" built "$work/showroom.ini" showroom 1
+check "the showroom builds on 4 threads" built "$work/showroom.ini" showroom 4
+check "the showroom's packs are the same bytes" same_bytes showroom
+check "the cut courtyard builds on 1 thread" built "$work/court.igs" court 1 --cut-patches 512
+check "the cut courtyard builds on 4 threads" built "$work/court.igs" court 4 --cut-patches 512
+check "the courtyard's packs are the same bytes" same_bytes court
+check "--threads x is a usage error" usage_error x
+check "--threads -2 is a usage error" usage_error -2
+echo "$checks checks, $failures failed"
+[ "$checks" -gt 0 ] && [ "$failures" -eq 0 ]
