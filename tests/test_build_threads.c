@@ -18,64 +18,9 @@
 #include "sw_part_levels_build.h"
 #include "sw_parts_threads.h"
 #include "sw_test.h"
+#include "pack_file.h"
 
 enum { HELPERS = 3 };
-
-/* 1 when a[0 .. count) and b[0 .. count) of size bytes each are equal. */
-static int same(const void *a, const void *b, size_t count, size_t size)
-{
-    return count == 0 || memcmp(a, b, count * size) == 0;
-}
-
-static void check_levels(const char *path, const sw_levels_built *a, const sw_levels_built *b,
-                         sw_levels_report ra, sw_levels_report rb)
-{
-    const sw_levels *x = &a->view, *y = &b->view;
-    int counts = x->level_count == y->level_count && x->vertex_count == y->vertex_count &&
-                 x->index_count == y->index_count && x->chain_count == y->chain_count &&
-                 x->chain_point_count == y->chain_point_count;
-    SW_CHECK_MSG(counts, "%s: static levels %u/%u, vertices %u/%u, indices %u/%u in "
-                 "order/threaded", path, x->level_count, y->level_count, x->vertex_count,
-                 y->vertex_count, x->index_count, y->index_count);
-    if (!counts)
-        return;
-    SW_CHECK_MSG(same(x->levels, y->levels, x->level_count, sizeof *x->levels) &&
-                 same(x->surface_levels, y->surface_levels, x->surface_count + 1u,
-                      sizeof *x->surface_levels) &&
-                 same(x->vertices, y->vertices, x->vertex_count, sizeof *x->vertices) &&
-                 same(a->uvs, b->uvs, 2u * x->vertex_count, sizeof *a->uvs) &&
-                 same(x->indices, y->indices, x->index_count, sizeof *x->indices) &&
-                 same(x->chains, y->chains, x->chain_count, sizeof *x->chains) &&
-                 same(x->chain_points, y->chain_points, x->chain_point_count,
-                      sizeof *x->chain_points),
-                 "%s: the static levels' arrays differ", path);
-    ra.seconds = rb.seconds = 0;
-    SW_CHECK_MSG(memcmp(&ra, &rb, sizeof ra) == 0, "%s: the static levels' counts differ", path);
-}
-
-static void check_part_levels(const char *path, const sw_part_levels_built *a,
-                              const sw_part_levels_built *b, sw_part_levels_report ra,
-                              sw_part_levels_report rb)
-{
-    const sw_part_levels *x = &a->view, *y = &b->view;
-    SW_CHECK_MSG(x->level_count > 0, "%s: no part levels", path);
-    int counts = x->level_count == y->level_count && x->vertex_count == y->vertex_count &&
-                 x->index_count == y->index_count && x->piece_count == y->piece_count;
-    SW_CHECK_MSG(counts, "%s: part levels %u/%u, vertices %u/%u, indices %u/%u in "
-                 "order/threaded", path, x->level_count, y->level_count, x->vertex_count,
-                 y->vertex_count, x->index_count, y->index_count);
-    if (!counts)
-        return;
-    SW_CHECK_MSG(same(x->levels, y->levels, x->level_count, sizeof *x->levels) &&
-                 same(x->piece_levels, y->piece_levels, x->piece_count + 1u,
-                      sizeof *x->piece_levels) &&
-                 same(x->piece_of, y->piece_of, x->surface_count, sizeof *x->piece_of) &&
-                 same(x->vertices, y->vertices, x->vertex_count, sizeof *x->vertices) &&
-                 same(x->indices, y->indices, x->index_count, sizeof *x->indices),
-                 "%s: the part levels' arrays differ", path);
-    ra.seconds = rb.seconds = 0;
-    SW_CHECK_MSG(memcmp(&ra, &rb, sizeof ra) == 0, "%s: the part levels' counts differ", path);
-}
 
 /* Both levels of pack made with runner (NULL: in order here). */
 typedef struct made {
@@ -84,6 +29,76 @@ typedef struct made {
     sw_part_levels_built parts;
     sw_part_levels_report parts_report;
 } made;
+
+/* One array as made in order (a) and on threads (b): count items of size
+ * bytes each. */
+typedef struct array_pair {
+    const char *name;
+    const void *a, *b;
+    uint32_t count_a, count_b;
+    size_t size;
+} array_pair;
+
+/* Every pair the same length and the same bytes, each difference named. */
+static void check_same(const char *path, const array_pair *pairs, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        const array_pair *p = &pairs[i];
+        SW_CHECK_MSG(p->count_a == p->count_b, "%s: %s: %u in order, %u on threads", path,
+                     p->name, p->count_a, p->count_b);
+        SW_CHECK_MSG(p->count_a != p->count_b || p->count_a == 0 ||
+                         memcmp(p->a, p->b, p->count_a * p->size) == 0,
+                     "%s: %s: the bytes differ", path, p->name);
+    }
+}
+
+/* The pair of arrays x->array and y->array of x->count and y->count items. */
+#define PAIR(name, array, count) \
+    { name, x->array, y->array, x->count, y->count, sizeof *x->array }
+
+static void check_levels(const char *path, const sw_levels_built *a, const sw_levels_built *b)
+{
+    const sw_levels *x = &a->view, *y = &b->view;
+    const array_pair pairs[] = {
+        PAIR("static levels", levels, level_count),
+        { "surface levels", x->surface_levels, y->surface_levels, x->surface_count + 1u,
+          y->surface_count + 1u, sizeof *x->surface_levels },
+        PAIR("vertices", vertices, vertex_count),
+        { "uvs", a->uvs, b->uvs, 2u * x->vertex_count, 2u * y->vertex_count, sizeof *a->uvs },
+        PAIR("indices", indices, index_count),
+        PAIR("chains", chains, chain_count),
+        PAIR("chain points", chain_points, chain_point_count),
+    };
+    check_same(path, pairs, sizeof pairs / sizeof *pairs);
+}
+
+static void check_part_levels(const char *path, const sw_part_levels_built *a,
+                              const sw_part_levels_built *b)
+{
+    const sw_part_levels *x = &a->view, *y = &b->view;
+    SW_CHECK_MSG(x->level_count > 0, "%s: no part levels", path);
+    const array_pair pairs[] = {
+        PAIR("part levels", levels, level_count),
+        { "piece levels", x->piece_levels, y->piece_levels, x->piece_count + 1u,
+          y->piece_count + 1u, sizeof *x->piece_levels },
+        PAIR("pieces", piece_of, surface_count),
+        PAIR("part vertices", vertices, vertex_count),
+        PAIR("part indices", indices, index_count),
+    };
+    check_same(path, pairs, sizeof pairs / sizeof *pairs);
+}
+
+/* The reports' counts the same (the seconds aside). */
+static void check_reports(const char *path, made *a, made *b)
+{
+    a->levels_report.seconds = b->levels_report.seconds = 0;
+    a->parts_report.seconds = b->parts_report.seconds = 0;
+    SW_CHECK_MSG(memcmp(&a->levels_report, &b->levels_report, sizeof a->levels_report) == 0,
+                 "%s: the static levels' counts differ", path);
+    SW_CHECK_MSG(memcmp(&a->parts_report, &b->parts_report, sizeof a->parts_report) == 0,
+                 "%s: the part levels' counts differ", path);
+}
+
 
 static int make(const sw_pack *pack, const sw_parts_runner *runner, uint32_t cut_patches,
                 made *m)
@@ -103,21 +118,17 @@ static int make(const sw_pack *pack, const sw_parts_runner *runner, uint32_t cut
 
 static void check_pack_file(const char *path, uint32_t cut_patches)
 {
-    size_t size = 0;
-    uint8_t *bytes = sw_test_read_file(path, &size);
+    sw_pack pack;
+    uint8_t *bytes = sw_test_open_pack_file(path, &pack);
     if (!bytes)
         return;
-    sw_pack pack;
-    sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
     sw_parts_threads threads;
     const sw_parts_runner runner = sw_parts_threads_runner(&threads, HELPERS);
     made in_order = { 0 }, threaded = { 0 };
     if (make(&pack, NULL, cut_patches, &in_order) && make(&pack, &runner, cut_patches, &threaded)) {
-        check_levels(path, &in_order.levels, &threaded.levels, in_order.levels_report,
-                     threaded.levels_report);
-        check_part_levels(path, &in_order.parts, &threaded.parts, in_order.parts_report,
-                          threaded.parts_report);
+        check_levels(path, &in_order.levels, &threaded.levels);
+        check_part_levels(path, &in_order.parts, &threaded.parts);
+        check_reports(path, &in_order, &threaded);
     }
     made *both[] = { &in_order, &threaded };
     for (int i = 0; i < 2; i++) {

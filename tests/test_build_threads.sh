@@ -10,13 +10,7 @@ set -uo pipefail
 pack=$1 src=$2
 work=$(mktemp -d "${TMPDIR:-/tmp}/sw_build_threads.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT
-failures=0 checks=0
-
-check() { # check DESCRIPTION COMMAND...
-  local what=$1; shift
-  checks=$((checks + 1))
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; failures=$((failures + 1)); fi
-}
+. "$src/tests/sh_checks.sh"
 
 # built INPUT NAME THREADS [ARGS...]: NAME-THREADS.swpack, its summary
 # naming THREADS threads.
@@ -49,5 +43,4 @@ check "the cut courtyard builds on 4 threads" built "$work/court.igs" court 4 --
 check "the courtyard's packs are the same bytes" same_bytes court
 check "--threads x is a usage error" usage_error x
 check "--threads -2 is a usage error" usage_error -2
-echo "$checks checks, $failures failed"
-[ "$checks" -gt 0 ] && [ "$failures" -eq 0 ]
+checks_done
