@@ -49,5 +49,5 @@ add_executable(test_build_threads test_build_threads.c)
 target_link_libraries(test_build_threads PRIVATE sw_assets sw_threads sw_core)
 target_include_directories(test_build_threads PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 sw_apply_warnings(test_build_threads)
-add_test(NAME build_threads_levels COMMAND bash -c
-  "$<TARGET_FILE:seamwalk-pack> gen showroom --patches 600 -o ${CMAKE_CURRENT_BINARY_DIR}/build_threads.ini > /dev/null && $<TARGET_FILE:seamwalk-pack> build ${CMAKE_CURRENT_BINARY_DIR}/build_threads.ini -o ${CMAKE_CURRENT_BINARY_DIR}/build_threads.swpack --quiet && python3 ${CMAKE_CURRENT_SOURCE_DIR}/gen_soup.py ${CMAKE_CURRENT_BINARY_DIR}/build_threads_court.igs --cells 24 > /dev/null && $<TARGET_FILE:seamwalk-pack> build ${CMAKE_CURRENT_BINARY_DIR}/build_threads_court.igs -o ${CMAKE_CURRENT_BINARY_DIR}/build_threads_court.swpack --cut-patches 512 --quiet && $<TARGET_FILE:test_build_threads> ${CMAKE_CURRENT_BINARY_DIR}/build_threads.swpack && $<TARGET_FILE:test_build_threads> --cut-patches 512 ${CMAKE_CURRENT_BINARY_DIR}/build_threads_court.swpack")
+add_test(NAME build_threads_levels COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_build_threads.sh
+  $<TARGET_FILE:seamwalk-pack> ${PROJECT_SOURCE_DIR} $<TARGET_FILE:test_build_threads>)

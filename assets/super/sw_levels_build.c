@@ -376,10 +376,8 @@ static sw_status keep(level_worker *w, uint32_t s, uint32_t rank, float error,
     const sw_seam_graph *g = &b->pack->seam;
     uint32_t loop_count = g->surface_loops[s + 1] - g->surface_loops[s];
     made_level m = { s, rank, w->index, error, (float)level_bound(b, s, rank),
-                     (uint32_t)w->vertices.count,
-                     t->vertex_count,
-                     (uint32_t)w->index_data.count, t->index_count, (uint32_t)w->chains.count,
-                     loop_count };
+                     (uint32_t)w->vertices.count, t->vertex_count, (uint32_t)w->index_data.count,
+                     t->index_count, (uint32_t)w->chains.count, loop_count };
     uint32_t chain_total = w->chain_first[loops->loop_count];
     made_level *mp = grow_by(&w->made, 1);
     sw_level_vertex *v = grow_by(&w->vertices, t->vertex_count);
