@@ -12,6 +12,7 @@
 #include "sw_pack_import_notes.h"
 #include "sw_pack_verify_tess.h"
 #include "sw_pack_write.h"
+#include "sw_parts_threads.h"
 #include "sw_seam_simplify.h"
 #include "sw_up_axis.h"
 
@@ -69,7 +70,8 @@ static sw_status build_derived(const sw_pack *pack, const sw_part_levels_options
                                seam_summary *summary, sw_error *err)
 {
     memset(d, 0, sizeof *d);
-    sw_status st = sw_levels_build(pack, NULL, &d->levels, &summary->levels, err);
+    const sw_levels_options lo = { .runner = plo->runner };
+    sw_status st = sw_levels_build(pack, &lo, &d->levels, &summary->levels, err);
     if (st == SW_OK)
         st = sw_cluster_pack(pack, &d->levels.view, NULL, &d->clusters, &summary->clusters, err);
     if (st == SW_OK)
@@ -235,6 +237,11 @@ sw_status sw_pack_tool_pack(const build_options *o, progress_context *pc, sw_mod
     uint8_t *bytes = NULL;
     sw_pack_import_note *notes = NULL;
     uint32_t note_count = 0;
+    /* The levels made on o->threads (sw_levels_options, sw_part_levels_options). */
+    sw_parts_threads threads;
+    sw_parts_runner runner = sw_parts_threads_runner(&threads, o->threads > 1 ? o->threads - 1 : 0);
+    build_options with = *o;
+    with.part_levels.runner = o->threads > 1 ? &runner : NULL;
     const char **names = input_names(o);
     sw_status st = names ? sw_pack_notes_from_reports(names, reports, (size_t)o->input_count,
                                                       &notes, &note_count, err)
@@ -249,8 +256,8 @@ sw_status sw_pack_tool_pack(const build_options *o, progress_context *pc, sw_mod
         contents.import_note_count = note_count;
         const sw_pack_orientation orientation = { .up_axis = model->up_axis };
         contents.orientation = sw_up_axis_valid(model->up_axis) ? &orientation : NULL;
-        st = pack_verified(o, pc, model, &contents, &seams, seam_summary_out, &bytes, bytes_out,
-                           err);
+        st = pack_verified(&with, pc, model, &contents, &seams, seam_summary_out, &bytes,
+                           bytes_out, err);
         sw_pack_contents_free(&contents);
     }
     sw_seam_host_free(&seams);

@@ -28,6 +28,7 @@ typedef struct build_options {
     int quiet, strict, iges_occt;
     double seam_tolerance;      /* 0: sw_seam_default_tolerance */
     sw_part_levels_options part_levels;   /* --cut-patches */
+    uint32_t threads;           /* --threads: make the levels on (0 or 1: this one alone) */
     int32_t up_axis;            /* --up (sw_up_axis.h); 0: by the inputs (sw_up_inputs.h) */
 } build_options;
 

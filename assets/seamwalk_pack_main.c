@@ -38,7 +38,7 @@
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
     "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
-    "                           [--up x|y|z|-x|-y|-z] [--cut-patches N]\n"
+    "                           [--up x|y|z|-x|-y|-z] [--cut-patches N] [--threads N]\n"
     "       seamwalk-pack info [--json] PACK\n"
     "       seamwalk-pack verify PACK [--key KEYS.pub]\n"
     "       seamwalk-pack keygen -o PREFIX\n"
@@ -56,7 +56,10 @@ static const char usage_text[] =
     "--up: the model axis that points up (default: z for STEP and IGES, y for .txt\n"
     "and .bpt, a scene's up_axis or y; inputs that differ: the first's, warned).\n"
     "--cut-patches: parts of more patches are cut into pieces with levels of their\n"
-    "own, drawn apart far away (default 4096; 0: none cut).\n";
+    "own, drawn apart far away (default 4096; 0: none cut).\n"
+    "--threads: threads that make the static and part levels (default: the\n"
+    "machine's cores; 0 or 1: none besides the tool's own; at most 64). The pack's\n"
+    "bytes are the same whatever the count.\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -312,13 +315,22 @@ static void print_summary(const build_options *o, const sw_model *model,
            pl->source_triangles, pl->triangles[0], pl->triangles[1], pl->triangles[2],
            pl->triangles[3], pl->incomplete, pl->over_bound, pl->not_smaller, pl->folded, pl->too_large,
            pl->worst_over_bound, pl->seconds);
-    printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s)\n", model->part_count,
-           model->patch_count, bytes, o->out_path, seconds);
+    printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s, %" PRIu32
+           " thread%s)\n", model->part_count, model->patch_count, bytes, o->out_path, seconds,
+           o->threads > 1 ? o->threads : 1, o->threads > 1 ? "s" : "");
+}
+
+/* --threads' default: the machine's cores. */
+static uint32_t online_cores(void)
+{
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    return cores > 1 ? (uint32_t)(cores < 64 ? cores : 64) : 1;
 }
 
 /* Parses build's arguments into o; returns 0 or the usage exit status. */
 static int parse_build(int argc, char **argv, build_options *o)
 {
+    o->threads = online_cores();
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "-o") == 0) {
@@ -346,6 +358,13 @@ static int parse_build(int argc, char **argv, build_options *o)
                 return usage_error("build: --cut-patches takes a patch count (0: none cut), "
                                    "not '%s'", t);
             o->part_levels.cut_patches = n ? (uint32_t)n : UINT32_MAX;
+        } else if (strcmp(a, "--threads") == 0) {
+            const char *t = i + 1 < argc ? argv[++i] : "";
+            char *end;
+            unsigned long n = strtoul(t, &end, 10);
+            if (end == t || *end != '\0' || t[0] == '-')
+                return usage_error("build: --threads takes a thread count, not '%s'", t);
+            o->threads = n < 64 ? (uint32_t)n : 64;
         } else if (strcmp(a, "--up") == 0) {
             const char *u = i + 1 < argc ? argv[++i] : "";
             if (!sw_up_axis_parse(u, &o->up_axis))

@@ -41,3 +41,17 @@ add_test(NAME part_levels_sheets COMMAND bash -c
 # part are tests/test_pieces.sh (firmware.cmake).
 add_test(NAME part_levels_courtyard COMMAND bash -c
   "python3 ${CMAKE_CURRENT_SOURCE_DIR}/gen_soup.py ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.igs --cells 24 > /dev/null && $<TARGET_FILE:seamwalk-pack> build ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.igs -o ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.swpack --cut-patches 512 --quiet && $<TARGET_FILE:test_part_levels_build_prog> --cut ${CMAKE_CURRENT_BINARY_DIR}/pieces_court.swpack")
+# The levels made on threads (seamwalk-pack build --threads): the same pack
+# bytes with 1 and 4 threads, a showroom of many parts and a courtyard cut
+# into pieces (build_threads: the tool as it is, so under TSan it runs
+# uninstrumented); the same levels, made in a test program whose workers
+# TSan checks (build_threads_levels, tests/run-tsan.sh --threaded).
+add_test(NAME build_threads COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_build_threads.sh
+  $<TARGET_FILE:seamwalk-pack> ${PROJECT_SOURCE_DIR})
+sw_host_only_test(build_threads PROGRAMS seamwalk-pack)
+add_executable(test_build_threads test_build_threads.c)
+target_link_libraries(test_build_threads PRIVATE sw_assets sw_threads sw_core)
+target_include_directories(test_build_threads PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+sw_apply_warnings(test_build_threads)
+add_test(NAME build_threads_levels COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_build_threads.sh
+  $<TARGET_FILE:seamwalk-pack> ${PROJECT_SOURCE_DIR} $<TARGET_FILE:test_build_threads>)

@@ -9,17 +9,20 @@
 # installer seamwalk-flash and the test programs that link only
 # sw_core/sw_assets and start no thread are built without TSan
 # (cmake/SwSanitizers.cmake, sw_without_tsan): TSan reports races between
-# threads and has nothing to check in them. The tests that run nothing
-# else (label host_only, sw_host_only_test in tests/CMakeLists.txt) are
-# left out: they would run the same uninstrumented code as the Release
-# step. A report fails the test (TSan exits 66).
+# threads and has nothing to check in them (the host tool's own threads,
+# the levels' workers, run instrumented in test_build_threads). The tests
+# that run nothing else (label host_only, sw_host_only_test in
+# tests/CMakeLists.txt) are left out: they would run the same
+# uninstrumented code as the Release step. A report fails the test (TSan
+# exits 66).
 #   run-tsan.sh [--threaded] [BUILD_DIR]   (default build-tsan)
 # --threaded runs only the threaded tests, a few minutes: the lock-free
 # primitives (test_steal_queue, test_handoff), the threaded walk end to end
 # (walk_threads: stalled, slow and starved workers, two workers, the
-# visibility thread on and off, --sync-work) and three walks whose frames
+# visibility thread on and off, --sync-work), three walks whose frames
 # all run through the visibility thread and the workers in lockstep
-# (walk_teaset, seam_drawn_walk, walk_input_timeline).
+# (walk_teaset, seam_drawn_walk, walk_input_timeline), and the pack
+# builder's levels made on four threads (build_threads_levels).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # New build folders use Ninja, as in run-tests.sh.
@@ -36,6 +39,6 @@ if [ $threaded = 0 ]; then
   exit
 fi
 cmake --build "$dir" -j"$jobs" --target seamwalk seamwalk-pack image_compare test_steal_queue \
-  test_handoff
+  test_handoff test_build_threads
 ctest --test-dir "$dir" --output-on-failure -j"$jobs" \
-  -R '^(test_steal_queue|test_handoff|walk_threads|walk_teaset|seam_drawn_walk|walk_input_timeline)$'
+  -R '^(test_steal_queue|test_handoff|walk_threads|walk_teaset|seam_drawn_walk|walk_input_timeline|build_threads_levels)$'

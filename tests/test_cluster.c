@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "sw_test.h"
+#include "pack_file.h"
 #include "sw_bezier.h"
 #include "sw_cluster.h"
 #include "sw_surface_cone.h"
@@ -383,13 +384,11 @@ static uint64_t check_sampled_normals(const sw_pack *pack)
 
 static void test_pack(const char *path)
 {
-    size_t size = 0;
-    uint8_t *bytes = sw_test_read_file(path, &size);
+    sw_pack pack;
+    uint8_t *bytes = sw_test_open_pack_file(path, &pack);
     if (!bytes)
         return;
-    sw_pack pack;
     sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
     SW_CHECK_MSG(pack.supers.supers && pack.supers.super_count > 0, "%s has no super-surfaces",
                  path);
     uint32_t n = pack.surface_count;

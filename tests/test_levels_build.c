@@ -28,6 +28,7 @@
 #include "sw_seam_simplify.h"
 #include "sw_surface_at.h"
 #include "sw_test.h"
+#include "pack_file.h"
 
 /* Border edges of a level: 1 when directed edge a-b is used once and its
  * reverse not at all. */
@@ -170,14 +171,10 @@ static void check_pack(const sw_pack *pack, const char *path, totals *tp, sw_lev
 
 static void check_pack_file(const char *path)
 {
-    size_t size = 0;
-    uint8_t *bytes = sw_test_read_file(path, &size);
+    sw_pack pack;
+    uint8_t *bytes = sw_test_open_pack_file(path, &pack);
     if (!bytes)
         return;
-    sw_pack pack;
-    sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s",
-                 err.message);
     totals t = { 0 };
     sw_levels_report r;
     check_pack(&pack, path, &t, &r);

@@ -40,6 +40,7 @@
 #include "sw_pack.h"
 #include "sw_surface_at.h"
 #include "sw_test.h"
+#include "pack_file.h"
 #include "sw_trim_tess.h"
 
 typedef struct mesh {
@@ -399,14 +400,10 @@ static int check_pieces(const sw_pack *pack)
 
 static void check_pack_file(const char *path, int want_cut)
 {
-    size_t size = 0;
-    uint8_t *bytes = sw_test_read_file(path, &size);
+    sw_pack pack;
+    uint8_t *bytes = sw_test_open_pack_file(path, &pack);
     if (!bytes)
         return;
-    sw_pack pack;
-    sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s",
-                 err.message);
     SW_CHECK_MSG(pack.part_levels.level_count > 0, "%s: no part levels", path);
     int cut = pack.part_levels.level_count > 0 ? check_pieces(&pack) : 0;
     SW_CHECK_MSG(!want_cut || cut > 0, "%s: no part cut into pieces", path);

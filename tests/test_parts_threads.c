@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* The loader's parts runner (firmware/program/sw_parts_threads.h): every part runs
+/* The parts runner on threads (core/sw_parts_threads.h): every part runs
  * exactly once whatever the helpers and the count; with a helper, two parts
- * do run at the same time; and a pack's checks give the same result and
+ * do run at the same time; items handed to workers (sw_parts_take_items)
+ * are each taken once, by one worker, in rising order on each, and a
+ * failed one stops the taking; and a pack's checks give the same result and
  * message with it as in order on one thread (under TSan, without a race). */
 #include <pthread.h>
 #include <stdatomic.h>
@@ -109,6 +111,65 @@ static void bad_edge(sample_seam *g) { g->edges[3].b = 10; }
 static void bad_vertex_and_edge(sample_seam *g) { bad_vertex(g), bad_edge(g); }
 static void bad_ref_and_collapse(sample_seam *g) { bad_ref(g), bad_collapse(g); }
 
+/* Items taken by workers (sw_parts_take_items): who took each, and in
+ * which order each worker took its own. */
+enum { MAX_ITEMS = 500, MAX_WORKERS = 8 };
+
+typedef struct takings {
+    _Atomic int taken[MAX_ITEMS];
+    uint32_t by[MAX_ITEMS];
+    uint32_t last[MAX_WORKERS];     /* each worker's last item + 1 */
+    _Atomic int out_of_order;       /* a worker took an item below its last */
+    uint32_t fail_at;               /* the item whose call returns 0 */
+} takings;
+
+static int take_item(void *arg, uint32_t worker, uint32_t item)
+{
+    takings *t = arg;
+    atomic_fetch_add(&t->taken[item], 1);
+    t->by[item] = worker;
+    if (worker >= MAX_WORKERS || item + 1 <= t->last[worker])
+        atomic_store(&t->out_of_order, 1);
+    if (worker < MAX_WORKERS)
+        t->last[worker] = item + 1;
+    return item != t->fail_at;
+}
+
+static void test_every_item_taken_once_by_a_worker(void)
+{
+    static const uint32_t counts[] = { 0, 1, 3, 50, MAX_ITEMS };
+    for (uint32_t helpers = 0; helpers <= 3; helpers++)
+        for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+            static takings t;
+            memset(&t, 0, sizeof t);
+            t.fail_at = UINT32_MAX;
+            sw_parts_threads threads;
+            sw_parts_runner r = sw_parts_threads_runner(&threads, helpers);
+            SW_CHECK(sw_parts_at_once(&r) == helpers + 1);
+            sw_parts_take_items(&r, helpers + 1, take_item, &t, counts[c]);
+            SW_CHECK_MSG(!atomic_load(&t.out_of_order), "helpers %u, %u items", helpers, counts[c]);
+            for (uint32_t i = 0; i < MAX_ITEMS; i++)
+                SW_CHECK_MSG(atomic_load(&t.taken[i]) == (i < counts[c]) &&
+                             (i >= counts[c] || t.by[i] <= helpers),
+                             "helpers %u, %u items: item %u taken %d times, by %u", helpers,
+                             counts[c], i, atomic_load(&t.taken[i]), t.by[i]);
+        }
+    SW_CHECK(sw_parts_at_once(NULL) == 1);
+}
+
+/* In order on this thread (no runner), worker 0 takes every item in turn
+ * and the first that fails is the last taken. */
+static void test_a_failed_item_stops_the_taking(void)
+{
+    static takings t;
+    memset(&t, 0, sizeof t);
+    t.fail_at = 7;
+    sw_parts_take_items(NULL, 4, take_item, &t, 20);
+    for (uint32_t i = 0; i < 20; i++)
+        SW_CHECK_MSG(atomic_load(&t.taken[i]) == (i <= 7) && t.by[i] == 0,
+                     "item %u taken %d times, by %u", i, atomic_load(&t.taken[i]), t.by[i]);
+}
+
 static void test_checks_agree_with_threads(void)
 {
     expect_same_with_threads(NULL, NULL);
@@ -126,6 +187,8 @@ int main(void)
 {
     SW_RUN(test_every_part_runs_once);
     SW_RUN(test_a_helper_runs_parts_at_once);
+    SW_RUN(test_every_item_taken_once_by_a_worker);
+    SW_RUN(test_a_failed_item_stops_the_taking);
     SW_RUN(test_checks_agree_with_threads);
     return sw_test_finish();
 }

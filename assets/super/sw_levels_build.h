@@ -36,12 +36,16 @@
 #include "sw_error.h"
 #include "sw_levels.h"
 #include "sw_pack.h"
+#include "sw_parts.h"
 
 typedef struct sw_levels_options {
     double finest;        /* the finest level's bound over the surface's size (0: 4e-3) */
     double step;          /* each level's bound over the one before (0: 4) */
     uint32_t count;       /* levels tried per surface (0: 4; at most SW_LEVELS_MAX) */
     uint32_t samples;     /* measuring grid: points per triangle side - 1 (0: 4) */
+    const sw_parts_runner *runner;   /* makes each rank's surfaces (sw_parts.h), with
+                                        scratch for each made at once; NULL: in order
+                                        here. The same levels either way */
 } sw_levels_options;
 
 typedef struct sw_levels_report {

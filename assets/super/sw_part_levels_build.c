@@ -357,25 +357,132 @@ static sw_status build_one_piece(sw_part_mesh *m, sw_part_level_arrays *o, const
     return st;
 }
 
+/* One piece to make: piece g of the part whose surfaces are [first, end). */
+typedef struct piece_task {
+    uint32_t part, g, first, end;
+} piece_task;
+
+/* A worker's own: the mesh it simplifies in, its counts, its failure. */
+typedef struct piece_worker {
+    sw_part_mesh m;
+    sw_part_levels_report r;
+    uint32_t failed;   /* the task that failed (UINT32_MAX: none) */
+    sw_error err;
+} piece_worker;
+
+/* The pieces made by workers (sw_parts_take_items, as many as the runner
+ * runs at once). One worker appends each piece's levels to the output in
+ * turn; more make each piece's into arrays of its own, made[task], joined
+ * in piece order after the run: the bytes are the same whichever worker
+ * made which piece, and when (build_threads compares the two ways). */
+typedef struct pieces_run {
+    const sw_pack *pack;
+    const sw_levels *levels;
+    const uint32_t *piece_of;
+    const uint8_t *cut;
+    const piece_sources *ps;
+    const sw_part_levels_options *opt;
+    const piece_task *tasks;
+    sw_part_level_arrays *out;
+    sw_part_level_arrays *made;   /* NULL: one worker, straight into out */
+    uint32_t *kept;               /* levels kept per task */
+    piece_worker *workers;
+    uint32_t task_count, worker_count;
+} pieces_run;
+
+static int make_piece(void *arg, uint32_t worker, uint32_t t)
+{
+    pieces_run *run = arg;
+    piece_worker *w = &run->workers[worker];
+    const piece_task *k = &run->tasks[t];
+    sw_part_level_arrays *into = run->made ? &run->made[t] : run->out;
+    uint32_t before = into->level_count;
+    double diagonal = run->cut[k->part] ? sw_part_diagonal(run->pack, k->part) : -1;
+    sw_status st = build_one_piece(&w->m, into, run->levels, run->piece_of, run->ps, diagonal,
+                                   k->g, k->first, k->end, run->opt, &w->r, &w->err);
+    run->kept[t] = into->level_count - before;
+    w->failed = st == SW_OK ? w->failed : t;
+    return st == SW_OK;
+}
+
+/* Part by part (a run of surfaces), its pieces first .. end, at most
+ * `pieces` in all; NULL when out of memory. */
+static piece_task *list_pieces(const sw_pack *pack, const uint32_t *piece_of, uint32_t pieces,
+                               uint32_t *count)
+{
+    piece_task *tasks = malloc(((size_t)pieces + 1) * sizeof *tasks);
+    *count = 0;
+    for (uint32_t s = 0, e; tasks && s < pack->surface_count; s = e) {
+        uint32_t part = pack->surfaces[s].part, first = piece_of[s], end = first + 1;
+        for (e = s; e < pack->surface_count && pack->surfaces[e].part == part; e++)
+            end = piece_of[e] + 1 > end ? piece_of[e] + 1 : end;
+        for (uint32_t g = first; g < end && *count < pieces; g++)
+            tasks[(*count)++] = (piece_task){ part, g, s, e };
+    }
+    return tasks;
+}
+
+static void add_report(sw_part_levels_report *to, const sw_part_levels_report *r)
+{
+    to->with_levels += r->with_levels, to->levels += r->levels, to->incomplete += r->incomplete;
+    to->not_smaller += r->not_smaller, to->folded += r->folded, to->over_bound += r->over_bound;
+    to->too_large += r->too_large, to->source_triangles += r->source_triangles;
+    for (uint32_t k = 0; k < SW_PART_LEVELS_MAX; k++)
+        to->triangles[k] += r->triangles[k];
+    to->worst_over_bound = fmax(to->worst_over_bound, r->worst_over_bound);
+}
+
+/* The workers' counts added to r; the error of the first piece that
+ * failed, whichever worker made it. */
+static sw_status end_run(pieces_run *run, sw_part_levels_report *r, sw_error *err)
+{
+    uint32_t failed = UINT32_MAX;
+    for (uint32_t w = 0; w < run->worker_count; w++) {
+        piece_worker *k = &run->workers[w];
+        if (k->failed < failed)
+            failed = k->failed, *err = k->err;
+        add_report(r, &k->r);
+        sw_part_mesh_free(&k->m);
+    }
+    return failed == UINT32_MAX ? SW_OK : err->status;
+}
+
 static sw_status build_all(const sw_pack *pack, const sw_levels *levels, const uint32_t *piece_of,
                            const uint8_t *cut, const piece_sources *ps,
                            const sw_part_levels_options *opt, sw_part_level_arrays *o,
                            uint32_t *piece_levels, sw_part_levels_report *r, sw_error *err)
 {
-    sw_part_mesh m = { 0 };
-    sw_status st = SW_OK;
-    /* Part by part (a run of surfaces): its pieces are first .. end. */
-    for (uint32_t s = 0, e; st == SW_OK && s < pack->surface_count; s = e) {
-        uint32_t part = pack->surfaces[s].part, first = piece_of[s], end = first + 1;
-        for (e = s; e < pack->surface_count && pack->surfaces[e].part == part; e++)
-            end = piece_of[e] + 1 > end ? piece_of[e] + 1 : end;
-        for (uint32_t g = first; st == SW_OK && g < end; g++) {
-            double diagonal = cut[part] ? sw_part_diagonal(pack, part) : -1;
-            st = build_one_piece(&m, o, levels, piece_of, ps, diagonal, g, s, e, opt, r, err);
-            piece_levels[g + 1] = o->level_count;
-        }
+    pieces_run run = { pack, levels, piece_of, cut, ps, opt, NULL, o, NULL, NULL, NULL, 0, 0 };
+    piece_task *tasks = list_pieces(pack, piece_of, r->pieces, &run.task_count);
+    run.tasks = tasks;
+    run.worker_count = sw_parts_at_once(opt->runner);
+    if (run.worker_count > run.task_count)
+        run.worker_count = run.task_count ? run.task_count : 1;
+    if (run.worker_count > 1)
+        run.made = calloc((size_t)run.task_count + 1, sizeof *run.made);
+    run.kept = calloc((size_t)run.task_count + 1, sizeof *run.kept);
+    run.workers = calloc(run.worker_count, sizeof *run.workers);
+    sw_status st = tasks && run.kept && run.workers && (run.made || run.worker_count == 1)
+                       ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    for (uint32_t w = 0; st == SW_OK && w < run.worker_count; w++)
+        run.workers[w].failed = UINT32_MAX;
+    if (st == SW_OK) {
+        sw_parts_take_items(opt->runner, run.worker_count, make_piece, &run, run.task_count);
+        st = end_run(&run, r, err);
     }
-    sw_part_mesh_free(&m);
+    uint32_t made = 0;   /* levels of the pieces so far */
+    for (uint32_t t = 0; st == SW_OK && t < run.task_count; t++) {
+        made += run.kept[t];
+        piece_levels[tasks[t].g + 1] = made;
+    }
+    if (st == SW_OK && run.made && !sw_part_level_arrays_join(o, run.made, run.task_count))
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
+    for (uint32_t t = 0; run.made && t < run.task_count; t++)
+        sw_part_level_arrays_free(&run.made[t]);
+    free(run.made);
+    free(run.kept);
+    free(run.workers);
+    free(tasks);
     return st;
 }
 

@@ -47,6 +47,7 @@
 #include "sw_levels.h"
 #include "sw_pack.h"
 #include "sw_part_levels.h"
+#include "sw_parts.h"
 
 typedef struct sw_part_levels_options {
     double finest;      /* the finest level's bound over the part's size (0: 1/512) */
@@ -56,6 +57,9 @@ typedef struct sw_part_levels_options {
     uint32_t cut_patches;   /* parts with more patches are cut into pieces (0:
                                SW_PART_CUT_PATCHES, sw_part_pieces.h) */
     uint32_t piece_patches; /* patches a piece, at most (0: 256) */
+    const sw_parts_runner *runner;   /* makes the pieces (sw_parts.h), a mesh each piece
+                                        made at once; NULL: in order here. The same
+                                        levels either way */
 } sw_part_levels_options;
 
 typedef struct sw_part_levels_report {

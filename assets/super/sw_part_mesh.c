@@ -241,3 +241,46 @@ void sw_part_mesh_free(sw_part_mesh *m)
         free(blocks[i]);
     sw_part_rim_free(&m->rim);
 }
+
+int sw_part_level_arrays_join(sw_part_level_arrays *o, sw_part_level_arrays *pieces,
+                              uint32_t count)
+{
+    size_t levels = o->level_count, vertices = o->vertex_count, indices = o->index_count;
+    for (uint32_t i = 0; i < count; i++)
+        levels += pieces[i].level_count, vertices += pieces[i].vertex_count,
+            indices += pieces[i].index_count;
+    if (levels > UINT32_MAX || vertices > UINT32_MAX || indices > UINT32_MAX)
+        return 0;
+    sw_part_level *l = sw_grow(o->levels, &o->cap_l, levels + 1, sizeof *l);
+    o->levels = l ? l : o->levels;
+    sw_level_vertex *v = sw_grow(o->vertices, &o->cap_v, vertices + 1, sizeof *v);
+    o->vertices = v ? v : o->vertices;
+    uint16_t *x = sw_grow(o->indices, &o->cap_i, indices + 1, sizeof *x);
+    o->indices = x ? x : o->indices;
+    if (!l || !v || !x)
+        return 0;
+    for (uint32_t i = 0; i < count; i++) {
+        sw_part_level_arrays *p = &pieces[i];
+        for (uint32_t k = 0; k < p->level_count; k++) {
+            sw_part_level *to = &o->levels[o->level_count + k];
+            *to = p->levels[k];
+            to->first_vertex += o->vertex_count, to->first_index += o->index_count;
+        }
+        if (p->vertex_count)   /* a piece without levels has no arrays */
+            memcpy(o->vertices + o->vertex_count, p->vertices, p->vertex_count * sizeof *v);
+        if (p->index_count)
+            memcpy(o->indices + o->index_count, p->indices, p->index_count * sizeof *x);
+        o->level_count += p->level_count, o->vertex_count += p->vertex_count;
+        o->index_count += p->index_count;
+        sw_part_level_arrays_free(p);
+    }
+    return 1;
+}
+
+void sw_part_level_arrays_free(sw_part_level_arrays *a)
+{
+    free(a->levels);
+    free(a->vertices);
+    free(a->indices);
+    memset(a, 0, sizeof *a);
+}

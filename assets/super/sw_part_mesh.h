@@ -45,6 +45,15 @@ typedef struct sw_part_level_arrays {
     uint32_t level_count, vertex_count, index_count;
 } sw_part_level_arrays;
 
+/* pieces[0 .. count) appended to o in that order, each level's first
+ * vertex and first index moved past what comes before it; each piece's
+ * arrays are freed once copied. 0 when out of memory (what is left in o
+ * and pieces is still to be freed). */
+int sw_part_level_arrays_join(sw_part_level_arrays *o, sw_part_level_arrays *pieces,
+                              uint32_t count);
+
+void sw_part_level_arrays_free(sw_part_level_arrays *a);
+
 static inline uint64_t sw_part_hash64(uint64_t x)
 {
     x ^= x >> 33;

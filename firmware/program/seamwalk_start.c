@@ -272,12 +272,13 @@ static sw_status find_view(sw_program *rt, sw_error *err)
 }
 
 /* Threads beside the loader for the pack's checks (sw_parts_threads.h): a
- * core each, less the GL thread's, at least one; the GL thread is idle once
- * its shaders are warm, before the Seam Graph's checks begin. */
+ * core each, less the GL thread's, at least one and at most three (the
+ * Seam Graph's rules are nine parts); the GL thread is idle once its
+ * shaders are warm, before the Seam Graph's checks begin. */
 static long load_helpers(void)
 {
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    return cores > 2 ? cores - 2 : 1;
+    return cores > 5 ? 3 : cores > 2 ? cores - 2 : 1;
 }
 
 /* --store: a slot's signature, on its raw bytes, before any is parsed. */

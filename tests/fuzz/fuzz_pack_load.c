@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Fuzz target: the runtime's threaded loader. seamwalk checks a pack on
  * its loader thread with helper threads taking the checks' parts
- * (firmware/program/sw_parts_threads.h, sw_pack_open_memory_with); whatever order
+ * (core/sw_parts_threads.h, sw_pack_open_memory_with); whatever order
  * the threads finish in, the answer must be the serial reader's, status
  * and message alike. Each input is tried as it is and resealed
  * (fuzz_reseal.h), so the Seam Graph's and the levels' parts run too. */

@@ -49,5 +49,5 @@ static void run_parts(void *ctx, sw_part_fn fn, void *arg, uint32_t count)
 sw_parts_runner sw_parts_threads_runner(sw_parts_threads *threads, uint32_t helpers)
 {
     threads->helpers = helpers < SW_PARTS_MAX_HELPERS ? helpers : SW_PARTS_MAX_HELPERS;
-    return (sw_parts_runner){.run = run_parts, .ctx = threads};
+    return (sw_parts_runner){.run = run_parts, .ctx = threads, .at_once = threads->helpers + 1};
 }
