@@ -42,7 +42,7 @@ typedef struct sw_levels_options {
     double finest;        /* the finest level's bound over the surface's size (0: 4e-3) */
     double step;          /* each level's bound over the one before (0: 4) */
     uint32_t count;       /* levels tried per surface (0: 4; at most SW_LEVELS_MAX) */
-    uint32_t samples;     /* measuring grid: points per triangle side - 1 (0: 4) */
+    uint32_t samples;     /* measuring grid: points per triangle side - 1 (0: 8) */
     const sw_parts_runner *runner;   /* makes each rank's surfaces (sw_parts.h), with
                                         scratch for each made at once; NULL: in order
                                         here. The same levels either way */
