@@ -147,8 +147,8 @@ static double measured_error(sw_part_mesh *m, piece_job *j, size_t n, double bou
 #define RIM_CORNER_COS 0.70710678
 
 /* meshoptimizer's simplification toward bound keeping the border as
- * asked, in m->dest and m->best: its index count (0: none; -1 out of
- * memory), its measured error in *error, within the bound or not. */
+ * asked, in m->dest: its index count (0: none; -1 out of memory), its
+ * measured error in *error, within the bound or not. */
 static long long simplify_toward(sw_part_mesh *m, piece_job *j, double bound, double scale,
                                  border_keep keep, double *error)
 {
@@ -157,7 +157,6 @@ static long long simplify_toward(sw_part_mesh *m, piece_job *j, double bound, do
     if (e < 0)
         return -1;
     *error = e;
-    memcpy(m->best, m->dest, n * sizeof *m->dest);
     return (long long)n;
 }
 
@@ -169,17 +168,17 @@ static long long simplify_toward(sw_part_mesh *m, piece_job *j, double bound, do
  * corners held; when neither is within, the one nearer the bound is kept,
  * over it, as a level for coarser views (a flat plate's first cut a corner
  * off, hundreds of times the bound, where the held one was 1.5 times it;
- * keeping the first left the plate no level a view could use). (Searching the index count for
- * the coarsest level within each bound was tried: levels then spend the
- * whole bound, and the showroom walk's pictures differed from the
- * reference's past their limit at fewer triangles. Locking the whole
- * border found nothing more within.) */
+ * keeping the first left the plate no level a view could use). (Searching
+ * the index count for the coarsest level within each bound was tried:
+ * levels then spend the whole bound, and the showroom walk's pictures
+ * differed from the reference's past their limit at fewer triangles.
+ * Locking the whole border found nothing more within.) */
 static long long simplify_within(sw_part_mesh *m, piece_job *j, double bound, double scale,
                                  double *error)
 {
     long long n = simplify_toward(m, j, bound, scale, KEEP_NONE, error);
     if (n > 0 && *error > bound && !j->cut) {
-        memcpy(m->aside, m->best, (size_t)n * sizeof *m->best);   /* the first, kept */
+        memcpy(m->aside, m->dest, (size_t)n * sizeof *m->dest);   /* the first, kept */
         double e = 0;
         long long k = simplify_toward(m, j, bound, scale, KEEP_CORNERS, &e);
         if (k < 0)
@@ -187,12 +186,9 @@ static long long simplify_within(sw_part_mesh *m, piece_job *j, double bound, do
         if (k > 0 && (e <= bound || e < *error))
             n = k, *error = e;
         else   /* the first is nearer */
-            memcpy(m->best, m->aside, (size_t)n * sizeof *m->best);
+            memcpy(m->dest, m->aside, (size_t)n * sizeof *m->dest);
     }
-    if (n > 0) {
-        j->r->over_bound += *error > bound;
-        memcpy(m->dest, m->best, (size_t)n * sizeof *m->dest);
-    }
+    j->r->over_bound += n > 0 && *error > bound;
     return n;
 }
 
@@ -221,13 +217,10 @@ static sw_status build_piece(sw_part_mesh *m, sw_part_level_arrays *o, piece_job
     uint32_t *dest = sw_grow(m->dest, &m->cap_d, m->icount + 1, sizeof *m->dest);
     if (dest)
         m->dest = dest;
-    uint32_t *best = sw_grow(m->best, &m->cap_b, m->icount + 1, sizeof *m->best);
-    if (best)
-        m->best = best;
     uint32_t *aside = sw_grow(m->aside, &m->cap_a, m->icount + 1, sizeof *m->aside);
     if (aside)
         m->aside = aside;
-    if (!dest || !best || !aside)
+    if (!dest || !aside)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "part levels: out of memory");
     double size = sw_part_mesh_size(m), scale = meshopt_simplifyScale(m->wpos, m->wcount, 12);
     j->source = (sw_mesh_view){ m->wpos, m->idx, m->wcount, m->icount };

@@ -236,7 +236,7 @@ double sw_part_mesh_size(const sw_part_mesh *m)
 void sw_part_mesh_free(sw_part_mesh *m)
 {
     void *blocks[] = { m->pos, m->nrm, m->weld, m->wpos, m->idx, m->corner, m->wedge_first, m->wedge,
-                       m->dest, m->best, m->aside, m->keys, m->key_value };
+                       m->dest, m->aside, m->keys, m->key_value };
     for (size_t i = 0; i < sizeof blocks / sizeof *blocks; i++)
         free(blocks[i]);
     sw_part_rim_free(&m->rim);

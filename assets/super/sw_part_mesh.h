@@ -26,12 +26,11 @@ typedef struct sw_part_mesh {
     uint32_t *corner;             /* the source vertex of each of idx's corners */
     uint32_t *wedge_first, *wedge;/* welded vertex -> its source vertices */
     uint32_t *dest;               /* simplified triangles */
-    uint32_t *best;               /* the best simplification kept while searching */
-    uint32_t *aside;              /* a search's best, kept while another is made */
+    uint32_t *aside;              /* a simplification kept while another is made */
     sw_part_rim rim;              /* the simplifier's input, rim corners held */
     uint64_t *keys;               /* output vertex hash: (welded << 32 | source) + 1 */
     uint32_t *key_value;
-    size_t cap_v, cap_i, cap_c, cap_w, cap_d, cap_k, cap_kv, cap_n, cap_p, cap_wf, cap_wd, cap_x, cap_b, cap_a;
+    size_t cap_v, cap_i, cap_c, cap_w, cap_d, cap_k, cap_kv, cap_n, cap_p, cap_wf, cap_wd, cap_x, cap_a;
     uint32_t count, wcount, icount;
     double error;                 /* the source's measured error */
 } sw_part_mesh;
