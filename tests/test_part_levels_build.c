@@ -27,7 +27,7 @@
  *   surface however far away it is.
  * Trimmed surfaces are left out of the first check (a random (u, v) may
  * fall in a hole); the second covers them. Takes pack files (CTest passes
- * the built teaset and a courtyard cut into pieces) and fails on one
+ * the built teaset, thin sheets and a courtyard cut into pieces) and fails on one
  * without part levels; with --cut, also on one without a cut part. */
 #include <math.h>
 #include <stdio.h>
@@ -236,13 +236,13 @@ static void check_piece(const sw_pack *pack, const sw_part_source *src, uint32_t
     SW_CHECK(fgrid != NULL);
     uint32_t last_tris = finest_tris + (cut ? 1 : 0);   /* a cut piece's first is its source */
     int first = !cut && f == 0;
+    double size = mesh_diagonal(&finest);
     for (uint32_t i = pl->piece_levels[g]; fgrid && i < pl->piece_levels[g + 1]; i++) {
         const sw_part_level *l = &pl->levels[i];
         if (l->front != f)
             continue;
-        SW_CHECK_MSG(!first || l->error <= 0.25 * mesh_diagonal(&finest), "piece %u: its finest "
-                     "level's error %g, past a quarter of its size %g", g, (double)l->error,
-                     mesh_diagonal(&finest));
+        SW_CHECK_MSG(!first || l->error <= 0.25 * size, "piece %u: its finest level's error %g, "
+                     "past a quarter of its size %g", g, (double)l->error, size);
         first = 0;
         mesh m = level_mesh(pl, l);
         sw_mesh_view lv = { m.pos, m.idx, m.nv, m.ni };
