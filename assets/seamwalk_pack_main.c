@@ -509,9 +509,9 @@ static int cmd_verify(int argc, char **argv)
     if (st == SW_OK)
         printf("%s: ok (%" PRIu32 " patches, %" PRIu64 " bytes; %" PRIu32 " surfaces tessellate "
                "at %" PRIu32 " seam states from the finest to the coarsest drawn, %" PRIu32
-               " tessellations, %" PRIu32 " without their holes)\n", argv[0],
-               pack.meta->patch_count, pack.header->total_size, tess.surfaces, tess.states,
-               tess.checks, tess.holes_filled);
+               " tessellations, %" PRIu32 " without their holes, %" PRIu32 " with slits cut)\n",
+               argv[0], pack.meta->patch_count, pack.header->total_size, tess.surfaces,
+               tess.states, tess.checks, tess.holes_filled, tess.untangled);
     free(bytes);
     return st == SW_OK ? 0 : fail(&err);
 }

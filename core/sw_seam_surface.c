@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "sw_seam_surface.h"
 
+#include <math.h>
 #include <string.h>
 
 sw_trim_tess_options sw_seam_surface_tess_options(void)
@@ -45,4 +46,85 @@ int sw_seam_surface_loops(const sw_seam_select *state, uint32_t surface, float p
     }
     *loops = (sw_trim_loops){ buf->points, buf->loop_first, k };
     return k > 0;
+}
+
+/* ---- untangling --------------------------------------------------------- */
+
+/* Is the excursion from points[a] out and back to points[b] (a < b, the
+ * same vertex) thin: chord and area small against its reach? */
+static int thin_excursion(const sw_trim_point *pt, uint32_t a, uint32_t b)
+{
+    double u0 = pt[a].uv[0], v0 = pt[a].uv[1], reach = 0, area = 0;
+    for (uint32_t k = a + 1; k <= b; k++) {
+        double du = pt[k].uv[0] - u0, dv = pt[k].uv[1] - v0;
+        reach = fmax(reach, sqrt(du * du + dv * dv));
+        double pu = pt[k - 1].uv[0] - u0, pv = pt[k - 1].uv[1] - v0;
+        area += pu * dv - pv * du;
+    }
+    double cu = pt[b].uv[0] - u0, cv = pt[b].uv[1] - v0;
+    double chord = sqrt(cu * cu + cv * cv);
+    return reach > 0 && chord <= SW_SEAM_THIN * reach &&
+           fabs(0.5 * area) <= SW_SEAM_THIN * reach * reach;
+}
+
+/* Loop [first, first + n): marks drop[k] for the points of thin excursions,
+ * found through an open-addressing table of each vertex's last position. */
+static uint32_t mark_loop(const sw_trim_point *pt, uint32_t first, uint32_t n, uint8_t *drop,
+                          uint32_t *table, uint32_t mask)
+{
+    uint32_t marked = 0;
+    for (uint32_t i = 0; i <= mask; i++)
+        table[i] = UINT32_MAX;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t id = pt[first + i].id, h = (id * 2654435761u) & mask;
+        while (table[h] != UINT32_MAX && pt[first + table[h]].id != id)
+            h = (h + 1) & mask;
+        uint32_t last = table[h];
+        table[h] = i;
+        if (last == UINT32_MAX || i - last < 2 || drop[first + last] ||
+            !thin_excursion(pt, first + last, first + i))
+            continue;
+        for (uint32_t k = last + 1; k <= i; k++)
+            marked += !drop[first + k], drop[first + k] = 1;
+        table[h] = last;   /* the vertex stands where it first stood */
+    }
+    return marked;
+}
+
+uint32_t sw_seam_surface_untangle(sw_trim_loops *loops, sw_trim_point *points,
+                                  uint32_t *loop_first, uint32_t *outer, sw_arena *scratch)
+{
+    uint32_t total = loop_first[loops->loop_count], mask = 1;
+    for (uint32_t l = 0; l < loops->loop_count; l++)
+        while (mask < 2 * (loop_first[l + 1] - loop_first[l]))
+            mask <<= 1;
+    size_t mark = sw_arena_mark(scratch);
+    uint8_t *drop = sw_arena_alloc(scratch, (size_t)total + 1, 1);
+    uint32_t *table = sw_arena_alloc(scratch, sizeof *table * (size_t)mask, 4);
+    uint32_t dropped = 0;
+    if (drop && table) {
+        memset(drop, 0, (size_t)total + 1);
+        for (uint32_t l = 0; l < loops->loop_count; l++)
+            dropped += mark_loop(points, loop_first[l], loop_first[l + 1] - loop_first[l], drop,
+                                 table, mask - 1);
+    }
+    if (dropped > 0) {
+        uint32_t out = 0, k = 0, outer_kept = 0;
+        for (uint32_t l = 0; l < loops->loop_count; l++) {
+            uint32_t start = out;
+            for (uint32_t i = loop_first[l]; i < loop_first[l + 1]; i++)
+                if (!drop[i])
+                    points[out++] = points[i];
+            if (out - start < 3) {
+                out = start;   /* nothing left to bound */
+                continue;
+            }
+            loop_first[++k] = out;
+            outer_kept += l < *outer;
+        }
+        loops->loop_count = k;
+        *outer = outer_kept;
+    }
+    sw_arena_reset_to(scratch, mark);
+    return dropped;
 }

@@ -9,6 +9,7 @@
 
 #include <stdint.h>
 
+#include "sw_arena.h"
 #include "sw_seam_select.h"
 #include "sw_trim_tess.h"
 
@@ -45,5 +46,23 @@ typedef struct sw_seam_surface_buffers {
 int sw_seam_surface_loops(const sw_seam_select *state, uint32_t surface, float pin,
                           const sw_seam_surface_buffers *buf, sw_trim_loops *loops,
                           uint32_t *outer);
+
+/* Cuts thin excursions out of loops the tessellator refused for crossing:
+ * where a loop comes back to a vertex it showed before, and the way out and
+ * back encloses next to nothing in (u, v) (the closing chord under
+ * SW_SEAM_THIN of the excursion's reach from the vertex, its area under
+ * SW_SEAM_THIN of the reach squared), the points after the vertex up to its
+ * return are dropped. Such an excursion is a slit: both sides are the same
+ * seam vertices (sewn across a slot narrower than the sewing tolerance),
+ * and their two (u, v) polylines, a few micrometres apart, cross. A
+ * periodic seam also brings a loop back to its vertices, but a period away
+ * in (u, v): never thin. loops views points and loop_first, which are
+ * compacted in place; loop_count may drop (a loop left with fewer than
+ * three points goes; *outer, the outer loops first in loops, follows).
+ * scratch lends 5 bytes a point and is given back.
+ * Returns the points dropped (0 also when scratch is too small). */
+#define SW_SEAM_THIN 0.05
+uint32_t sw_seam_surface_untangle(sw_trim_loops *loops, sw_trim_point *points,
+                                  uint32_t *loop_first, uint32_t *outer, sw_arena *scratch);
 
 #endif

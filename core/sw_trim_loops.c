@@ -156,6 +156,22 @@ static uint32_t remove_spikes(const sw_trim_point *in, sw_tt_point *p, uint32_t 
     return count;
 }
 
+/* x within near of a side (lo or hi) of the domain, or of 0, moved onto it.
+ * Floats near 0 resolve far finer than the domain's own rounding: a loop
+ * point 1e-30 off a patch border at u = 0 (where an exporter wrote its
+ * trim a hair off the seam) or 1e-15 inside a domain side at 1.3e-15 sits
+ * off the grid line by less than the clipping's crossings there can tell
+ * apart, and the walk around that cell went wrong ("loops cross"). Only
+ * rounding is taken back: near is 1e-12 of the domain. */
+static double onto_line(double x, double lo, double hi, double near)
+{
+    if (fabs(x - lo) <= near)
+        return lo;
+    if (fabs(x - hi) <= near)
+        return hi;
+    return fabs(x) <= near ? 0.0 : x;
+}
+
 /* Copies the distinct points of the loops with area, clamped to the domain,
  * without spike tips and points within 1e-6 of the domain of the last kept. */
 static void copy_loops(tt_ctx *c, const double dom[4])
@@ -164,6 +180,7 @@ static void copy_loops(tt_ctx *c, const double dom[4])
     /* Points closer than this to the previous kept one are dropped: float
      * (u, v) of tiny trim curves zig-zag at the float step and would cross. */
     double eps = 1e-6 * fmax(dom[1] - dom[0], dom[3] - dom[2]);
+    double near = SW_TT_ONTO_LINE * fmax(dom[1] - dom[0], dom[3] - dom[2]);
     uint32_t n = 0, m = 0;
     for (uint32_t k = 0; k < l->loop_count; k++) {
         uint32_t count = distinct_points(l, k), first = n;
@@ -177,8 +194,8 @@ static void copy_loops(tt_ctx *c, const double dom[4])
             end--;
         for (uint32_t i = l->loop_first[k]; i < end; i++) {
             double u = l->points[i].uv[0], v = l->points[i].uv[1]; /* checked finite */
-            u = u < dom[0] ? dom[0] : u > dom[1] ? dom[1] : u;
-            v = v < dom[2] ? dom[2] : v > dom[3] ? dom[3] : v;
+            u = onto_line(u < dom[0] ? dom[0] : u > dom[1] ? dom[1] : u, dom[0], dom[1], near);
+            v = onto_line(v < dom[2] ? dom[2] : v > dom[3] ? dom[3] : v, dom[2], dom[3], near);
             if (n > first && fabs(u - c->pts[n - 1].u) + fabs(v - c->pts[n - 1].v) < eps) {
                 if (!same_uv(&l->points[i], &l->points[i - 1]))
                     count_drop(c->res, l->points, i, c->pts[n - 1].src, c->pts[n - 1].src);

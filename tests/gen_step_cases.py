@@ -23,6 +23,7 @@ writes into OUT_DIR:
                     one file-wide large gap beside many fine edges
 Each file is an AP214 shell-based surface model in millimetres with a
 stated uncertainty of 1e-7 mm."""
+import math
 import os
 import sys
 
@@ -120,6 +121,59 @@ def write(path, faces_of, file_name_params=7, solid_angle="spec", stray_item=Fal
         f.write("ENDSEC;\nEND-ISO-10303-21;\n")
 
 
+def band(s, radius, height):
+    """One cylinder face closed on itself: two circles and the seam line
+    between them, used twice (once each way), as exporters write a
+    periodic surface's side."""
+    axes = lambda z: s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
+        s.point((0, 0, z)), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
+    low = s.add("VERTEX_POINT('',%s);" % s.point((radius, 0, 0)))
+    high = s.add("VERTEX_POINT('',%s);" % s.point((radius, 0, height)))
+    circle = lambda v, z: s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (
+        v, v, s.add("CIRCLE('',%s,%s);" % (axes(z), real(radius)))))
+    seam = s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (
+        low, high, line_between(s, (radius, 0, 0), (radius, 0, height))))
+    edges = [s.add("ORIENTED_EDGE('',*,*,%s,%s);" % (e, sense))
+             for e, sense in ((circle(low, 0), ".T."), (seam, ".T."),
+                              (circle(high, height), ".F."), (seam, ".F."))]
+    loop = s.add("EDGE_LOOP('',(%s));" % ",".join(edges))
+    bound = s.add("FACE_OUTER_BOUND('',%s,.T.);" % loop)
+    surface = s.add("CYLINDRICAL_SURFACE('',%s,%s);" % (axes(0), real(radius)))
+    return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, surface))
+
+
+def polygon(s, points):
+    """A planar face (z = 0) bounded by lines through points in order."""
+    vertices = [s.add("VERTEX_POINT('',%s);" % s.point(c)) for c in points]
+    n = len(points)
+    edges = [s.add("ORIENTED_EDGE('',*,*,%s,.T.);" % s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (
+        vertices[i], vertices[(i + 1) % n], line_between(s, points[i], points[(i + 1) % n]))))
+        for i in range(n)]
+    loop = s.add("EDGE_LOOP('',(%s));" % ",".join(edges))
+    bound = s.add("FACE_OUTER_BOUND('',%s,.T.);" % loop)
+    axes = s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
+        s.point((0, 0, 0)), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
+    return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, s.add("PLANE('',%s);" % axes)))
+
+
+def notch(s, size, width, amplitude, waves, steps):
+    """A square with a narrow notch from its bottom side to its centre, the
+    notch's sides waving across it by amplitude (many times its width) and
+    their vertices a half step apart: each side simplified on its own cuts
+    the waves' crests at other places, and at coarse states the two cross
+    in (u, v), as fetched printer parts' narrow slots did."""
+    half, depth = size / 2, size / 2
+
+    def side(offset, shift):
+        ys = [depth * min(1.0, max(0.0, (i + shift) / steps)) for i in range(steps + 1)]
+        ys = sorted(set(ys))
+        return [(half + offset + amplitude * math.sin(2 * math.pi * waves * y / depth), y, 0)
+                for y in ys]
+    up = side(width / 2, 0.0)
+    down = side(-width / 2, 0.5)[::-1]
+    return polygon(s, up + down + [(0, 0, 0), (0, size, 0), (size, size, 0), (size, 0, 0)][::-1])
+
+
 def corners(x, y, size):
     return [(x, y, 0), (x + size, y, 0), (x + size, y + size, 0), (x, y + size, 0)]
 
@@ -154,6 +208,8 @@ def main():
           stray_item=True)
     write(os.path.join(out, "wide_gap.step"),
           lambda s: grid(s, 40, 1.0) + [off_vertex(s, 50, 0, 10, 8.0)])
+    write(os.path.join(out, "band.step"), lambda s: [band(s, 10.0, 4.0)])
+    write(os.path.join(out, "notch.step"), lambda s: [notch(s, 10.0, 0.05, 0.6, 3, 60)])
 
 
 if __name__ == "__main__":

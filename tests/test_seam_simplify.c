@@ -377,6 +377,72 @@ static void test_empty_graph_has_nothing_to_do(void)
     SW_CHECK(g.collapse_count == 0);
 }
 
+/* Runs of vertex v in loop l, each original slot showing rep[its vertex]:
+ * maximal stretches of the cycle showing v. */
+static uint32_t runs_in_loop(const sw_seam_host *g, const uint32_t *rep, uint32_t l, uint32_t v)
+{
+    const sw_seam_loop *lp = &g->loops[l];
+    uint32_t runs = 0, n = lp->slot_count;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t here = rep[g->slots[lp->first_slot + i].vertex];
+        uint32_t before = rep[g->slots[lp->first_slot + (i + n - 1) % n].vertex];
+        runs += here == v && before != v;
+    }
+    return runs;
+}
+
+/* Collapses, replayed in order, that leave their new vertex with more runs
+ * in some loop than either of its two had there. */
+static uint32_t pinching_collapses(const sw_seam_host *g)
+{
+    uint32_t *rep = malloc(sizeof *rep * g->original_count), pinches = 0;
+    for (uint32_t v = 0; v < g->original_count; v++)
+        rep[v] = v;
+    for (uint32_t k = 0; k < g->collapse_count; k++) {
+        uint32_t v1 = g->collapses[k].v1, v2 = g->collapses[k].v2, vn = g->original_count + k;
+        uint32_t before1[8], before2[8];
+        for (uint32_t l = 0; l < g->loop_count && l < 8; l++)
+            before1[l] = runs_in_loop(g, rep, l, v1), before2[l] = runs_in_loop(g, rep, l, v2);
+        for (uint32_t v = 0; v < g->original_count; v++)
+            rep[v] = rep[v] == v1 || rep[v] == v2 ? vn : rep[v];
+        for (uint32_t l = 0; l < g->loop_count && l < 8; l++) {
+            uint32_t most = before1[l] > before2[l] ? before1[l] : before2[l];
+            pinches += runs_in_loop(g, rep, l, vn) > most;
+        }
+    }
+    free(rep);
+    return pinches;
+}
+
+/* A thin face x a y b whose two near corners x and y (0.01 apart) are one
+ * short edge of a neighbouring triangle x y c: collapsing x into y along
+ * that edge would leave the thin face meeting itself at one vertex (its
+ * (u, v) polyline folded there at every coarser state). No collapse
+ * pinches a loop; the hierarchy still ends at one vertex. */
+static void test_no_collapse_pinches_a_loop(void)
+{
+    sw_seam_host g = {0};
+    gen_buf b = {.g = &g, .rng = 1};
+    uint32_t x = gen_vertex(&b, 0, 0, 0), a = gen_vertex(&b, 10, 0.005, 0);
+    uint32_t y = gen_vertex(&b, 0, 0.01, 0), w = gen_vertex(&b, -10, 0.005, 0);
+    uint32_t c = gen_vertex(&b, 0, 0.005, -5);
+    gen_begin_loop(&b, 0, SW_SEAM_LOOP_OUTER);
+    gen_slot(&b, x, 0, 0);
+    gen_slot(&b, a, 10, 0.005);
+    gen_slot(&b, y, 0, 0.01);
+    gen_slot(&b, w, -10, 0.005);
+    gen_begin_loop(&b, 1, SW_SEAM_LOOP_OUTER);
+    gen_slot(&b, x, 0, 0);
+    gen_slot(&b, y, 1, 0);
+    gen_slot(&b, c, 0.5, 1);
+    gen_finish(&b, 2);
+    SW_CHECK(sw_seam_simplify(&g, NULL) == SW_OK);
+    SW_CHECK_MSG(pinching_collapses(&g) == 0, "%u collapses pinch a loop",
+                 pinching_collapses(&g));
+    SW_CHECK(g.collapse_count == 4);
+    sw_seam_host_free(&g);
+}
+
 int main(void)
 {
     SW_RUN(test_collapses_to_one_vertex_per_connected_part);
@@ -390,5 +456,6 @@ int main(void)
     SW_RUN(test_pinned_surface_keeps_its_seams);
     SW_RUN(test_a_hub_of_many_petals_simplifies_fast);
     SW_RUN(test_empty_graph_has_nothing_to_do);
+    SW_RUN(test_no_collapse_pinches_a_loop);
     return sw_test_finish();
 }

@@ -402,6 +402,41 @@ static sw_status run_runtime(const surface *s, const loops *l, double err, mesh 
     return st;
 }
 
+/* A loop along the domain's border with points within rounding of the knot
+ * line at u = 0 (1.7e-30 right of it on one side, 2.5e-15 left on the
+ * other, as an exporter's trims came): tiles the domain at every bound.
+ * Off the line by less than the clipping's crossings can tell apart, they
+ * made the walk around the cell fail ("loops cross"). */
+static void test_points_within_rounding_of_a_knot_line(void)
+{
+    static surface s;
+    static loops l;
+    make_bump(&s, 2);
+    for (uint32_t i = 0; i < s.count; i++)   /* knot line at u = 0 */
+        s.patches[i].domain[0] -= 0.5f, s.patches[i].domain[1] -= 0.5f;
+    begin_loops(&l);
+    const double bottom[] = {-0.5, -0.25, -0.00229, 1.7e-30, 0.0733, 0.25};
+    const double top[] = {0.5, 0.25, 0.00229, -2.48e-15, -0.25};
+    for (int k = 0; k < 6; k++)
+        add_point(&l, &s, bottom[k], 0);
+    add_point(&l, &s, 0.5, 0);
+    add_point(&l, &s, 0.5, 0.5);
+    for (int k = 0; k < 5; k++)
+        add_point(&l, &s, top[k], 1);
+    add_point(&l, &s, -0.5, 1);
+    add_point(&l, &s, -0.5, 0.5);
+    end_loop(&l);
+    const double bounds[] = {1e-4, 1e-3, 1e-2, 0.1, 1, 10};
+    for (int b = 0; b < 6; b++) {
+        mesh m;
+        sw_status st = run_runtime(&s, &l, bounds[b], &m);
+        SW_CHECK_MSG(st == SW_OK, "bound %g: status %d", bounds[b], (int)st);
+        int negative;
+        if (st == SW_OK)
+            SW_CHECK_NEAR(total_area(&m, &negative), 1.0, 1e-6);
+    }
+}
+
 static uint32_t triangles_outside(const loops *l, const mesh *m)
 {
     uint32_t outside = 0;
@@ -623,6 +658,7 @@ int main(void)
     SW_RUN(test_disc_with_hole);
     SW_RUN(test_cylinder_quarter);
     SW_RUN(test_trim_along_knot_line);
+    SW_RUN(test_points_within_rounding_of_a_knot_line);
     SW_RUN(test_hole_inside_one_cell);
     SW_RUN(test_many_points_in_one_cell);
     SW_RUN(test_loops_on_grid_lines);

@@ -2,9 +2,10 @@
 /* Every surface tessellated at every seam state from the finest to the
  * coarsest drawn (sw_pack_verify_tess.h), as firmware/walk/sw_seam_walk.c draws
  * it: its loops from sw_seam_surface_loops (a surface whose outer loop
- * vanished is not drawn); a surface the clipping refuses for a crossing
- * hole is tried without its holes; one that needs too many vertices is
- * tried at four times the bound, three times. */
+ * vanished is not drawn); a surface the clipping refuses for crossing loops
+ * is tried with its slits cut out (sw_seam_surface_untangle), then without
+ * its holes; one that needs too many vertices is tried at four times the
+ * bound, three times. */
 #include "sw_pack_verify_tess.h"
 
 #include <math.h>
@@ -143,6 +144,11 @@ static sw_status check_surface(verifier *v, uint32_t s, double seam_bound,
     if (!(bound > 0))
         bound = 1.0;
     sw_status st = tessellate(v, s, &loops, bound, err);
+    if (st == SW_ERR_FORMAT &&
+        sw_seam_surface_untangle(&loops, v->points, v->loop_first, &outer, &v->scratch) > 0) {
+        out->untangled++;
+        st = tessellate(v, s, &loops, bound, err);
+    }
     if (st == SW_ERR_FORMAT && outer < loops.loop_count) {
         loops.loop_count = outer;
         st = tessellate(v, s, &loops, bound, err);

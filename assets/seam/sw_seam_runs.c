@@ -54,11 +54,16 @@ sw_status sw_seam_runs_init(sw_seam_runs *r, const sw_seam_host *g, uint32_t ver
     r->near_cost = malloc(((size_t)vertex_cap + 1) * sizeof *r->near_cost);
     r->near_runs = malloc(((size_t)vertex_cap + 1) * sizeof *r->near_runs);
     r->near_stamp = calloc((size_t)vertex_cap + 1, sizeof *r->near_stamp);
+    r->loop_stamp = calloc((size_t)g->loop_count + 1, sizeof *r->loop_stamp);
+    r->loop_n1 = malloc(((size_t)g->loop_count + 1) * 3 * sizeof *r->loop_n1);
     if (!r->runs || !r->link || !r->loop_of || !r->first || !r->loop_runs || !r->near_cost ||
-        !r->near_runs || !r->near_stamp) {
+        !r->near_runs || !r->near_stamp || !r->loop_stamp || !r->loop_n1) {
         sw_seam_runs_free(r);
         return sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
     }
+    r->loop_n2 = r->loop_n1 + g->loop_count + 1;
+    r->loop_adj = r->loop_n2 + g->loop_count + 1;
+    r->loop_count = g->loop_count;
     for (uint32_t v = 0; v < vertex_cap; v++)
         r->first[v] = SW_SEAM_NONE;
     for (uint32_t l = 0, at = 0; l < g->loop_count; l++)
@@ -191,6 +196,39 @@ double sw_seam_runs_cost_to(const sw_seam_runs *r, const sw_seam_host *g, uint32
     return near ? fmax(cost, r->near_cost[v2]) : cost;
 }
 
+int sw_seam_runs_pinch(sw_seam_runs *r, uint32_t v1, uint32_t v2)
+{
+    if (++r->pinch_stamp == 0) { /* wrapped: no stale stamp may read as current */
+        for (uint32_t l = 0; l < r->loop_count; l++)
+            r->loop_stamp[l] = 0;
+        r->pinch_stamp = 1;
+    }
+    const uint32_t s = r->pinch_stamp;
+    for (uint32_t n = r->first[v1]; n != SW_SEAM_NONE; n = r->link[n]) {
+        uint32_t l = r->loop_of[n];
+        if (r->loop_stamp[l] != s)
+            r->loop_stamp[l] = s, r->loop_n1[l] = r->loop_n2[l] = r->loop_adj[l] = 0;
+        r->loop_n1[l]++;
+    }
+    for (uint32_t m = r->first[v2]; m != SW_SEAM_NONE; m = r->link[m]) {
+        uint32_t l = r->loop_of[m], p = r->runs[m].prev, q = r->runs[m].next;
+        if (r->loop_stamp[l] != s)
+            continue;   /* v1 is not in this loop: nothing to meet */
+        r->loop_n2[l]++;
+        r->loop_adj[l] += (r->runs[p].vertex == v1) + (q != p && r->runs[q].vertex == v1);
+    }
+    for (uint32_t m = r->first[v2]; m != SW_SEAM_NONE; m = r->link[m]) {
+        uint32_t l = r->loop_of[m];
+        if (r->loop_stamp[l] != s)
+            continue;
+        uint32_t n1 = r->loop_n1[l], n2 = r->loop_n2[l], adj = r->loop_adj[l];
+        uint32_t after = n1 + n2 > adj ? n1 + n2 - adj : 0;
+        if (after > (n1 > n2 ? n1 : n2))
+            return 1;
+    }
+    return 0;
+}
+
 static void unlink_run(sw_seam_runs *r, uint32_t n)
 {
     sw_seam_run *run = &r->runs[n];
@@ -237,5 +275,7 @@ void sw_seam_runs_free(sw_seam_runs *r)
     free(r->near_cost);
     free(r->near_runs);
     free(r->near_stamp);
+    free(r->loop_stamp);
+    free(r->loop_n1);
     *r = (sw_seam_runs){0};
 }

@@ -40,6 +40,9 @@ typedef struct sw_seam_runs {
     uint32_t *near_runs; /* how many of the gathered vertex's runs it is next to */
     uint32_t *near_stamp;
     uint32_t stamp, gathered_runs; /* gathered_runs: all runs of the gathered vertex */
+    /* sw_seam_runs_pinch's counts, per loop: valid where loop_stamp is pinch_stamp */
+    uint32_t *loop_stamp, *loop_n1, *loop_n2, *loop_adj;
+    uint32_t pinch_stamp, loop_count;
 } sw_seam_runs;
 
 /* Runs of graph's original loops: consecutive slots of one vertex are one
@@ -76,6 +79,15 @@ void sw_seam_runs_gather(sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1
  * sw_seam_runs_cost or _bound would give). */
 double sw_seam_runs_cost_to(const sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1,
                             uint32_t v2);
+
+/* Would collapsing v1 into v2 pinch a loop: leave the new vertex with more
+ * runs in some loop than v1 or v2 had there? Two stretches of the loop
+ * would meet at one vertex, and the loop's (u, v) polyline, which keeps
+ * each run's own (u, v), would fold or cross there at every coarser state
+ * (a thin face's two sides, sewn across its width through a neighbour).
+ * A vertex that already stood twice in a loop (a periodic seam, a slit)
+ * may go on doing so. O(runs of v1 and v2). */
+int sw_seam_runs_pinch(sw_seam_runs *r, uint32_t v1, uint32_t v2);
 
 /* Applies collapse v1 -> v2 into vn (vn's position is v2's). */
 void sw_seam_runs_collapse(sw_seam_runs *r, uint32_t v1, uint32_t v2, uint32_t vn);

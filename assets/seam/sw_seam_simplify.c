@@ -61,6 +61,7 @@ typedef struct simp {
     uint32_t *heap, *pos, heap_n;
     uint32_t *mark, stamp;
     uint8_t *bounded; /* cost is a lower bound, target unset: made exact at the top */
+    uint32_t *barred, barred_stamp; /* targets that would pinch a loop (exact updates) */
     const uint8_t *pinned; /* original vertices that never collapse (may be NULL) */
 } simp;
 
@@ -142,18 +143,15 @@ static void heap_remove(simp *S, uint32_t v)
  * space (v on a straight line) can still bend the border in (u, v), or move
  * a point of a loop where y is not next to v by |v y|, and the tessellation
  * would follow (OCCT hammer: 7.4 px of a 0.5 px bound, the screw 2.8). */
-static void update_best(simp *S, uint32_t v, int exact)
+static void choose_best(simp *S, uint32_t v)
 {
     const nbrs *a = &S->adj[v];
     const sw_seam_vertex *vx = S->g->vertices;
     S->cost[v] = INFINITY;
     S->target[v] = UINT32_MAX;
-    S->bounded[v] = !exact;
-    if (!is_pinned(S, v))
-        sw_seam_runs_gather(&S->runs, S->g, v, exact);
     for (uint32_t i = 0; i < a->n; i++) {
         uint32_t y = a->v[i];
-        if (is_pinned(S, v) || is_pinned(S, y))
+        if (is_pinned(S, v) || is_pinned(S, y) || S->barred[y] == S->barred_stamp)
             continue;
         double runs = sw_seam_runs_cost_to(&S->runs, S->g, v, y);
         double reach = seg_dist(vx[v].p, vx[y].p, vx[y].p);
@@ -171,6 +169,28 @@ static void update_best(simp *S, uint32_t v, int exact)
             S->eps[v] = e;
             S->target[v] = y;
         }
+    }
+}
+
+/* v's cheapest collapse into S->target[v]; exact, a target that would
+ * pinch a loop (sw_seam_runs_pinch) is passed over for the next. Only the
+ * exact update at the heap's top pays for that check: the lower bounds
+ * only order the heap, and a pinch changes only when v or its target
+ * collapses, which updates v again. */
+static void update_best(simp *S, uint32_t v, int exact)
+{
+    S->bounded[v] = !exact;
+    if (!is_pinned(S, v))
+        sw_seam_runs_gather(&S->runs, S->g, v, exact);
+    if (++S->barred_stamp == 0) {
+        memset(S->barred, 0, (size_t)S->g->original_count * 2 * sizeof *S->barred);
+        S->barred_stamp = 1;
+    }
+    choose_best(S, v);
+    while (exact && S->target[v] != UINT32_MAX &&
+           sw_seam_runs_pinch(&S->runs, v, S->target[v])) {
+        S->barred[S->target[v]] = S->barred_stamp;
+        choose_best(S, v);
     }
     if (S->target[v] == UINT32_MAX) {
         heap_remove(S, v);
@@ -372,6 +392,7 @@ static void free_simp(simp *S, uint32_t vertices)
     free(S->pos);
     free(S->mark);
     free(S->bounded);
+    free(S->barred);
 }
 
 static sw_status grow_host(sw_seam_host *g, size_t cap, sw_error *err)
@@ -427,8 +448,9 @@ sw_status sw_seam_simplify_pinned(sw_seam_host *g, const sw_seam_surface_eval *e
     S.pos = malloc(cap * sizeof *S.pos);
     S.mark = calloc(cap, sizeof *S.mark);
     S.bounded = calloc(cap, sizeof *S.bounded);
+    S.barred = calloc(cap, sizeof *S.barred);
     if (!S.adj || !S.stored || !S.cost || !S.eps || !S.target || !S.heap || !S.pos || !S.mark ||
-        !S.bounded)
+        !S.bounded || !S.barred)
         st = sw_error_set(err, SW_ERR_NO_MEMORY, "seam simplify: out of memory");
     if (st == SW_OK)
         st = build_adjacency(&S, err);

@@ -46,6 +46,7 @@ typedef struct sw_stats {
     uint64_t capped_patches_max; /* patches whose grid hit SW_TESS_MAX_SEGMENTS */
     uint32_t seam_active_min, seam_active_max;       /* active seam vertices per frame */
     uint32_t surfaces_vanished_max, surfaces_failed_max, surfaces_holes_filled_max;
+    uint32_t surfaces_untangled_max;
     uint64_t seam_crossings_max;  /* T-vertices on seam segments, per frame */
     uint64_t seam_arena_bytes, seam_arena_peak_bytes; /* the seam walk's share of the arena:
                                                          its bound, and what it took */

@@ -129,6 +129,8 @@ static sw_status seam_frame(sw_program *rt, int measuring, uint64_t *triangles, 
         s->surfaces_failed_max = f.failed_surfaces;
     if (f.holes_filled > s->surfaces_holes_filled_max)
         s->surfaces_holes_filled_max = f.holes_filled;
+    if (f.untangled > s->surfaces_untangled_max)
+        s->surfaces_untangled_max = f.untangled;
     if (f.cracks > s->cracks_max)   /* counted every frame: a refused surface is one */
         s->cracks_max = f.cracks;
     if (f.fill_triangles > s->fill_triangles_max)

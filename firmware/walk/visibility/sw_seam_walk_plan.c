@@ -122,6 +122,7 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
     frame->crossings += e->crossings;
     frame->capped_surfaces += e->capped;
     frame->holes_filled += e->holes_filled;
+    frame->untangled += e->untangled;
     if (w->workers)
         sw_seam_walk_count_behind(w, s, behind_ratio(w, s, e), frame);
 }

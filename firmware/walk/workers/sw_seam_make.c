@@ -121,20 +121,25 @@ static void copy_out(const sw_seam_maker *k, sw_seam_cache *c, const sw_seam_ent
     memcpy(c->index_data + i0, k->indices, sizeof(uint16_t) * e->index_count);
 }
 
-/* One attempt at bound: tessellate (without the holes when a hole's coarse
- * polyline crosses another loop), fans, a place in the cache. SW_OK with
+/* One attempt at bound: tessellate (with slits cut out, then without the
+ * holes, when the loops cross), fans, a place in the cache. SW_OK with
  * *placed 0 when there is no room. */
-static sw_status attempt(sw_seam_maker *k, uint32_t s, sw_trim_loops *loops, uint32_t outer,
+static sw_status attempt(sw_seam_maker *k, uint32_t s, sw_trim_loops *loops, uint32_t *outer,
                          double bound, sw_seam_cache *c, sw_seam_place_fn place, void *ctx,
                          sw_seam_entry *e, sw_trim_tess_result *t, int *placed)
 {
     int capped = 0;
     sw_status st = tessellate(k, s, loops, bound, t, &capped);
-    if (st == SW_ERR_FORMAT && outer < loops->loop_count) {
+    if (st == SW_ERR_FORMAT &&
+        sw_seam_surface_untangle(loops, k->points, k->loop_first, outer, &k->scratch) > 0) {
+        e->untangled = 1;
+        st = tessellate(k, s, loops, bound, t, &capped);
+    }
+    if (st == SW_ERR_FORMAT && *outer < loops->loop_count) {
         /* A hole's coarse polyline crosses another loop (both are within
          * the bound of where they belong, and so of each other): drawn
          * without its holes rather than not at all. */
-        loops->loop_count = outer;
+        loops->loop_count = *outer;
         st = tessellate(k, s, loops, bound, t, &capped);
         e->holes_filled = st == SW_OK;
     }
@@ -178,7 +183,7 @@ uint64_t sw_seam_make(sw_seam_maker *k, uint32_t s, float bound, float seam_boun
         sw_trim_tess_result t;
         int placed = 0;
         double b = bound * (double)(1u << (2 * coarser));
-        if (attempt(k, s, &loops, outer, b, c, place, place_ctx, e, &t, &placed) != SW_OK)
+        if (attempt(k, s, &loops, &outer, b, c, place, place_ctx, e, &t, &placed) != SW_OK)
             break;
         if (placed) {
             e->error_bound = (float)t.error_bound;
