@@ -148,17 +148,43 @@ static void name_occt_parts(sw_model *model, size_t first, const char *path)
     }
 }
 
+/* The native IGES reader's read of path into a part of its own; *again set
+ * (with why) when it left out every surface, of kinds it does not take (IGES
+ * 108 bounded planes), and OpenCASCADE's reader, built in, may take them:
+ * the empty part is dropped for that read. */
+static sw_status import_iges_native(const char *path, const char *name, const float color[4],
+                                    const sw_import_options *opts, sw_model *model,
+                                    sw_import_report *report, int *again, char *why,
+                                    size_t why_size, sw_error *err)
+{
+    size_t surfaces = model->surface_count;
+    sw_status st = sw_model_begin_part(model, name, color, err);
+    if (st == SW_OK)
+        st = sw_import_iges_file(path, opts, model, report, err);
+    *again = st == SW_OK && model->surface_count == surfaces && report->unsupported.total > 0 &&
+             sw_import_occt_available();
+    if (*again) {
+        snprintf(why, why_size, "read by OpenCASCADE: no surface natively (%.24s)",
+                 report->unsupported.kinds ? report->unsupported.kind[0] : "");
+        model->part_count--;
+    }
+    return st;
+}
+
 static sw_status import_cad(const build_options *o, const char *path, enum input_kind kind,
                             const sw_import_options *opts, sw_model *model,
                             sw_import_report *report, sw_error *err)
 {
-    char name[56];
+    char name[56], why[SW_IMPORT_KIND_CHARS] = "";
     float color[4];
     part_name_for(path, name);
     sw_scene_default_color(model->part_count, color);
+    int again = 0;
     if (kind == INPUT_IGES && !o->iges_occt) {
-        sw_status st = sw_model_begin_part(model, name, color, err);
-        return st != SW_OK ? st : sw_import_iges_file(path, opts, model, report, err);
+        sw_status st = import_iges_native(path, name, color, opts, model, report, &again, why,
+                                          sizeof why, err);
+        if (!again)
+            return st;
     }
     size_t first = model->part_count;
     sw_status st = sw_import_occt_file(path, opts, model, report, err);
@@ -166,6 +192,8 @@ static sw_status import_cad(const build_options *o, const char *path, enum input
         st = sw_model_begin_part(model, name, color, err);
     if (st == SW_OK)
         name_occt_parts(model, first, path);
+    if (again)
+        sw_import_report_harmless(report, why);   /* told, not a reason to refuse */
     return st;
 }
 

@@ -23,10 +23,12 @@ def fmt(x):
 
 class Iges:
     def __init__(self):
-        self.entities = []  # (type, params text)
+        self.entities = []  # (type, params text, form)
 
-    def add(self, etype, params):
-        self.entities.append((etype, "%d,%s;" % (etype, ",".join(params))))
+    def add(self, etype, params, form=0):
+        """Adds an entity; returns its directory entry's pointer (DE)."""
+        self.entities.append((etype, "%d,%s;" % (etype, ",".join(params)), form))
+        return 2 * len(self.entities) - 1
 
     def surface_128(self, deg_u, deg_v, knots_u, knots_v, weights, points):
         nu, nv = len(knots_u) - deg_u - 1, len(knots_v) - deg_v - 1
@@ -61,7 +63,7 @@ class Iges:
         s_lines = ["seamwalk patch soup (tests/gen_soup.py)"]
         g_lines = self.lines(g, 72)
         d_lines, p_lines = [], []
-        for i, (etype, params) in enumerate(self.entities):
+        for i, (etype, params, form) in enumerate(self.entities):
             de = 2 * i + 1
             body = self.lines(params, 64)
             first = len(p_lines) + 1
@@ -69,7 +71,7 @@ class Iges:
                 p_lines.append("%-64s %7d" % (b, de))
             d_lines.append("%8d%8d%8d%8d%8d%8d%8d%8d%8s" % (etype, first, 0, 0, 0, 0, 0, 0,
                                                             "00000000"))
-            d_lines.append("%8d%8d%8d%8d%8d%8s%8s%8s%8d" % (etype, 0, 0, len(body), 0, "", "",
+            d_lines.append("%8d%8d%8d%8d%8d%8s%8s%8s%8d" % (etype, 0, 0, len(body), form, "", "",
                                                             "", 0))
         with open(path, "w") as f:
             for sec, lines in (("S", s_lines), ("G", g_lines), ("D", d_lines), ("P", p_lines)):

@@ -21,9 +21,14 @@ writes into OUT_DIR:
                     edges carry a tolerance of a fifth of the model (shape
                     healing widens them to cover a vertex that far off):
                     one file-wide large gap beside many fine edges
+  planes.igs        two bounded planes (IGES 108, form 1: a plane and the
+                    closed curve that bounds it), a kind the native IGES
+                    reader does not take and OpenCASCADE's does
+  band.step         one cylinder face closed on itself (two circles and
+                    the seam line between them, used once each way): a
+                    one-face periodic band
 Each file is an AP214 shell-based surface model in millimetres with a
 stated uncertainty of 1e-7 mm."""
-import math
 import os
 import sys
 
@@ -142,36 +147,18 @@ def band(s, radius, height):
     return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, surface))
 
 
-def polygon(s, points):
-    """A planar face (z = 0) bounded by lines through points in order."""
-    vertices = [s.add("VERTEX_POINT('',%s);" % s.point(c)) for c in points]
-    n = len(points)
-    edges = [s.add("ORIENTED_EDGE('',*,*,%s,.T.);" % s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (
-        vertices[i], vertices[(i + 1) % n], line_between(s, points[i], points[(i + 1) % n]))))
-        for i in range(n)]
-    loop = s.add("EDGE_LOOP('',(%s));" % ",".join(edges))
-    bound = s.add("FACE_OUTER_BOUND('',%s,.T.);" % loop)
-    axes = s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
-        s.point((0, 0, 0)), s.direction((0, 0, 1)), s.direction((1, 0, 0))))
-    return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, s.add("PLANE('',%s);" % axes)))
-
-
-def notch(s, size, width, amplitude, waves, steps):
-    """A square with a narrow notch from its bottom side to its centre, the
-    notch's sides waving across it by amplitude (many times its width) and
-    their vertices a half step apart: each side simplified on its own cuts
-    the waves' crests at other places, and at coarse states the two cross
-    in (u, v), as fetched printer parts' narrow slots did."""
-    half, depth = size / 2, size / 2
-
-    def side(offset, shift):
-        ys = [depth * min(1.0, max(0.0, (i + shift) / steps)) for i in range(steps + 1)]
-        ys = sorted(set(ys))
-        return [(half + offset + amplitude * math.sin(2 * math.pi * waves * y / depth), y, 0)
-                for y in ys]
-    up = side(width / 2, 0.0)
-    down = side(-width / 2, 0.5)[::-1]
-    return polygon(s, up + down + [(0, 0, 0), (0, size, 0), (size, size, 0), (size, 0, 0)][::-1])
+def bounded_planes(path):
+    """Two squares as IGES 108 bounded planes, each bounded by a composite
+    curve (102) of four lines (110)."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from gen_soup import Iges, fmt
+    out = Iges()
+    for x0 in (0.0, 20.0):
+        c = corners(x0, 0, 10)
+        lines = [out.add(110, [fmt(v) for v in c[i] + c[(i + 1) % 4]]) for i in range(4)]
+        boundary = out.add(102, ["4"] + [str(d) for d in lines])
+        out.add(108, ["0.", "0.", "1.", "0.", str(boundary), fmt(x0 + 5), "5.", "0.", "1."], 1)
+    out.write(path, 1e-4)
 
 
 def corners(x, y, size):
@@ -209,7 +196,7 @@ def main():
     write(os.path.join(out, "wide_gap.step"),
           lambda s: grid(s, 40, 1.0) + [off_vertex(s, 50, 0, 10, 8.0)])
     write(os.path.join(out, "band.step"), lambda s: [band(s, 10.0, 4.0)])
-    write(os.path.join(out, "notch.step"), lambda s: [notch(s, 10.0, 0.05, 0.6, 3, 60)])
+    bounded_planes(os.path.join(out, "planes.igs"))
 
 
 if __name__ == "__main__":

@@ -16,7 +16,11 @@
 #   message, the face is built;
 # - one face with a gap of 8 mm beside 1,600 faces of 1 mm edges: the
 #   sewing's memory follows each trim's own gap (the build's peak under
-#   300 MB; it took 1 GB when every edge reached as far as the widest gap).
+#   300 MB; it took 1 GB when every edge reached as far as the widest gap);
+#   it walks from close to far without a crack;
+# - a one-face periodic band: its seam sewn to itself, verified, walked;
+# - an IGES file of bounded planes (108), which the native reader does not
+#   take: read by OpenCASCADE instead, and said.
 set -uo pipefail
 tool=$1 walker=$2 src=$3
 export LSAN_OPTIONS="suppressions=$src/tests/occt-lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
@@ -88,5 +92,31 @@ check "wide gap: builds every face" eval '[ "$(code)" -eq 0 ] && ! has "$work/er
 check "wide gap: the build's peak under $cap_mb MB" [ "$peak_kb" -lt $((cap_mb * 1024)) ]
 run verify "$work/wide_gap.swpack"
 check "wide gap: verify passes" [ "$(code)" -eq 0 ]
+
+run verify "$work/wide_gap.swpack"
+"$tool" info --json "$work/wide_gap.swpack" > "$work/wide_gap.json"
+check "wide gap: walks from close to far, no crack, no refused surface" \
+  bash "$src/tests/walk_near_far.sh" "$walker" "$work/wide_gap.swpack" "$work/wide_gap.json" "$work" "$src"
+
+# ---- a one-face periodic band ------------------------------------------------------------------
+run build "$cases/band.step" -o "$work/band.swpack" --strict
+check "band: builds under --strict, nothing skipped" eval '[ "$(code)" -eq 0 ] && ! has "$work/err" skipped'
+run info --json "$work/band.swpack"
+check "band: its one face is a surface, its seam sewn (free border: the two circles)" eval \
+  '[ "$(surfaces "$work/out")" -eq 1 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); f=d[\"border\"][\"free_length\"]; sys.exit(0 if abs(f - 4*3.14159265*10) < 0.05 else 1)" "$work/out"'
+run verify "$work/band.swpack"
+check "band: verify passes" [ "$(code)" -eq 0 ]
+"$tool" info --json "$work/band.swpack" > "$work/band.json"
+check "band: walks from close to far, no crack, no refused surface" \
+  bash "$src/tests/walk_near_far.sh" "$walker" "$work/band.swpack" "$work/band.json" "$work" "$src"
+
+# ---- an IGES file of surfaces the native reader does not take -----------------------------------
+run build "$cases/planes.igs" -o "$work/planes.swpack"
+check "planes: read by OpenCASCADE when the native reader takes none of its surfaces, and said" eval \
+  '[ "$(code)" -eq 0 ] && said "^warning: planes.igs: 1 x read by OpenCASCADE: no surface natively (IGES 108) (read past)$"'
+run info --json "$work/planes.swpack"
+check "planes: both bounded planes are surfaces" eval '[ "$(surfaces "$work/out")" -eq 2 ]'
+run verify "$work/planes.swpack"
+check "planes: verify passes" [ "$(code)" -eq 0 ]
 
 checks_done

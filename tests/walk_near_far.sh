@@ -12,7 +12,7 @@
 # 0.8 model sizes at 320x240, leaving nothing measured (part levels are
 # measured on the host, tests/test_part_levels_build.c, and in pictures).
 # The far end alone, with part levels as a unit draws it: fewer triangles
-# than patches.
+# than patches (or at most 32).
 # Prints what it checked; exit 1 on a failure.
 set -uo pipefail
 walker=$1 pack=$2 info=$3 work=$4 src=$5
@@ -38,7 +38,9 @@ print("  seams, close to far: %d..%d triangles, %d..%d active seam vertices, up 
          near["frame_ms"]["p50"]))
 print("  seams, at the far end: %d triangles for %d patches, %d surfaces vanished, cracks %d"
       % (tris, patches, seam["surfaces_vanished_max"], far["cracks_max"]))
-assert tris < patches and far["cracks_max"] == 0
+# A small model's coarsest level may not get under its patch count (a box's
+# six faces are twelve triangles): 32 triangles at half a pixel pass too.
+assert (tris < patches or tris <= 32) and far["cracks_max"] == 0
 PY
 # --measure-every 0 (a kiosk's setting): the same walk, no frame measured.
 "$walker" --pack "$pack" --headless 320x240 --path "$work/near_far.path" --frames 6 \

@@ -172,6 +172,11 @@ static void choose_best(simp *S, uint32_t v)
     }
 }
 
+/* Targets an exact update tries before v waits for a neighbour's collapse:
+ * a hub of thousands of neighbours that all pinch would otherwise pay for
+ * every one at every update. */
+enum { PINCH_TRIES = 4 };
+
 /* v's cheapest collapse into S->target[v]; exact, a target that would
  * pinch a loop (sw_seam_runs_pinch) is passed over for the next. Only the
  * exact update at the heap's top pays for that check: the lower bounds
@@ -187,9 +192,13 @@ static void update_best(simp *S, uint32_t v, int exact)
         S->barred_stamp = 1;
     }
     choose_best(S, v);
-    while (exact && S->target[v] != UINT32_MAX &&
-           sw_seam_runs_pinch(&S->runs, v, S->target[v])) {
+    for (int tries = 0; exact && S->target[v] != UINT32_MAX &&
+                        sw_seam_runs_pinch(&S->runs, v, S->target[v]); tries++) {
         S->barred[S->target[v]] = S->barred_stamp;
+        if (tries + 1 == PINCH_TRIES) {
+            S->target[v] = UINT32_MAX;   /* back in the heap when a neighbour collapses */
+            break;
+        }
         choose_best(S, v);
     }
     if (S->target[v] == UINT32_MAX) {
