@@ -94,18 +94,33 @@ static uint32_t *slot_surfaces(const sw_seam_graph *g)
     return of;
 }
 
-/* The pairs of distinct surfaces met at original vertex v. */
-static int pairs_at(const sw_seam_graph *g, const uint32_t *surface_of, uint32_t v, pair_list *l)
+static int compare_u32(const void *x, const void *y)
+{
+    uint32_t a = *(const uint32_t *)x, b = *(const uint32_t *)y;
+    return (a > b) - (a < b);
+}
+
+/* The pairs of distinct surfaces met at original vertex v, each once: a
+ * vertex may stand in thousands of slots of a few surfaces (a printer
+ * bed's outline sewn 54 slots to a vertex), and a pair per two slots ran
+ * out of memory. seen: scratch for the vertex's slots. */
+static int pairs_at(const sw_seam_graph *g, const uint32_t *surface_of, uint32_t v, pair_list *l,
+                    uint32_t *seen)
 {
     const sw_seam_vertex *vx = &g->vertices[v];
-    for (uint32_t i = 0; i < vx->slot_ref_count; i++) {
-        uint32_t a = surface_of[g->slot_refs[vx->first_slot_ref + i]];
-        for (uint32_t j = i + 1; j < vx->slot_ref_count; j++) {
-            uint32_t b = surface_of[g->slot_refs[vx->first_slot_ref + j]];
-            if (a != b && !push_pair(l, a, b))
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < vx->slot_ref_count; i++)
+        seen[n++] = surface_of[g->slot_refs[vx->first_slot_ref + i]];
+    if (n > 1)
+        qsort(seen, n, sizeof *seen, compare_u32);
+    uint32_t distinct = 0;
+    for (uint32_t i = 0; i < n; i++)
+        if (i == 0 || seen[i] != seen[i - 1])
+            seen[distinct++] = seen[i];
+    for (uint32_t i = 0; i < distinct; i++)
+        for (uint32_t j = i + 1; j < distinct; j++)
+            if (!push_pair(l, seen[i], seen[j]))
                 return 0;
-        }
-    }
     return 1;
 }
 
@@ -114,11 +129,16 @@ sw_status sw_surface_adjacency_build(const sw_seam_graph *g, sw_surface_adjacenc
 {
     memset(out, 0, sizeof *out);
     uint32_t *surface_of = slot_surfaces(g);
+    uint32_t most = 0;
+    for (uint32_t v = 0; v < g->original_count; v++)
+        most = g->vertices[v].slot_ref_count > most ? g->vertices[v].slot_ref_count : most;
+    uint32_t *seen = malloc(((size_t)most + 1) * sizeof *seen);
     pair_list l = { 0 };
-    int ok = surface_of != NULL;
+    int ok = surface_of != NULL && seen != NULL;
     for (uint32_t v = 0; ok && v < g->original_count; v++)
-        ok = pairs_at(g, surface_of, v, &l);
+        ok = pairs_at(g, surface_of, v, &l, seen);
     free(surface_of);
+    free(seen);
     sw_status st = ok ? rows_from_keys(&l, g->surface_count, out, err)
                       : sw_error_set(err, SW_ERR_NO_MEMORY, "surface adjacency: out of memory");
     free(l.keys);
