@@ -56,10 +56,15 @@ int sw_seam_surface_loops(const sw_seam_select *state, uint32_t surface, float p
  * seam vertices (sewn across a slot narrower than the sewing tolerance),
  * and their two (u, v) polylines, a few micrometres apart, cross. A
  * periodic seam also brings a loop back to its vertices, but a period away
- * in (u, v): never thin. loops views points and loop_first, which are
+ * in (u, v): never thin. Then, where two of a loop's segments cross and
+ * the lobe between them encloses under SW_SEAM_THIN of the loop's area (a
+ * needle whose two sides cross short of its tip), the lobe's points go
+ * (loops of up to 2048 points, four lobes each). loops views points and
+ * loop_first, which are
  * compacted in place; loop_count may drop (a loop left with fewer than
  * three points goes; *outer, the outer loops first in loops, follows).
- * scratch lends 5 bytes a point and is given back.
+ * scratch lends at most 21 bytes a point and is given back. Work is bounded: at
+ * most 64 points read per point of a loop (excursions past that are left).
  * Returns the points dropped (0 also when scratch is too small). */
 #define SW_SEAM_THIN 0.05
 uint32_t sw_seam_surface_untangle(sw_trim_loops *loops, sw_trim_point *points,

@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* sw_seam_surface_untangle (core/sw_seam_surface.h): a slit (a loop out
  * and back along the same seam vertices, its two (u, v) sides crossing) is
- * cut and the loop tessellates; a spike (A B A) whose tip encloses nothing
- * goes; a periodic seam's vertices, met again a period away, stay; a hole
- * left with fewer than three points goes and the outer count follows; the
- * arena is given back. */
+ * cut back to where it left; a spike (A B A) whose tip encloses nothing
+ * goes; a needle's tip beyond where its two sides cross goes; a periodic
+ * seam's vertices, met again a period away, stay; a hole left with fewer
+ * than three points goes and the outer count follows; the arena is given
+ * back. */
 #include <string.h>
 
 #include "sw_seam_surface.h"
@@ -109,6 +110,29 @@ static void test_periodic_seam_stays(void)
     SW_CHECK(l.loop_count == 1 && l.loop_first[1] == 8);
 }
 
+/* A needle down from the top side whose two sides, distinct vertices, cross
+ * short of its tip (5 and 6): the tip's lobe goes, the needle stays. */
+static void test_needle_tip_lobe_goes(void)
+{
+    fixture f = {.first = {0}};
+    add(&f, 0, 0, 0);
+    add(&f, 10, 0, 1);
+    add(&f, 10, 10, 2);
+    add(&f, 5.2, 10, 3);
+    add(&f, 5.001, 4, 4);
+    add(&f, 5.0, 2, 5);
+    add(&f, 5.0005, 2, 6);
+    add(&f, 4.999, 4, 7);
+    add(&f, 4.8, 10, 8);
+    add(&f, 0, 10, 9);
+    end_loop(&f);
+    uint32_t outer = 1;
+    sw_trim_loops l;
+    SW_CHECK(untangle(&f, &outer, &l) == 2);
+    SW_CHECK(l.loop_first[1] == 8 && !has_id(&l, 5) && !has_id(&l, 6));
+    SW_CHECK(has_id(&l, 4) && has_id(&l, 7));
+}
+
 /* A hole that is only a slit (A B A plus nothing) has nothing left: it goes,
  * the outer loop stays, the outer count with it. */
 static void test_hole_left_empty_goes(void)
@@ -134,6 +158,7 @@ int main(void)
     SW_RUN(test_slit_is_cut);
     SW_RUN(test_thin_spike_goes);
     SW_RUN(test_periodic_seam_stays);
+    SW_RUN(test_needle_tip_lobe_goes);
     SW_RUN(test_hole_left_empty_goes);
     return sw_test_finish();
 }
