@@ -320,6 +320,9 @@ static void print_summary(const build_options *o, const sw_model *model,
     if (r->clamped > 0)
         printf("seamwalk-pack: seams: %zu trim points outside their surface's domain put on its "
                "border\n", r->clamped);
+    if (r->gaps_held > 0)
+        printf("seamwalk-pack: seams: %zu trim vertices sewn within %g of the model's size, not "
+               "their edges' wider tolerance\n", r->gaps_held, SW_SEAM_GAP_CAP);
     const sw_levels_report *l = &seams->levels;
     printf("seamwalk-pack: static levels: %" PRIu32 " of %" PRIu32 " surfaces, %" PRIu32
            " levels, triangles by rank %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64

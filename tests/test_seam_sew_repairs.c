@@ -162,9 +162,20 @@ static void test_trim_gaps_widen_the_tolerance(void)
     SW_CHECK(seams_between_halves(0.5e-3, 0) >= 1);      /* within the tolerance alone */
 }
 
+/* A trim's gap is held to SW_SEAM_GAP_CAP of the model (its box is 1.41
+ * across: 0.0141): borders 0.05 apart whose edges claim 0.05 each stay
+ * apart (a sloppy edge's tolerance of 6 mm on a 41 mm part sewed its
+ * vertices into every border within it); 0.02 apart they still meet. */
+static void test_gaps_are_held_to_the_model(void)
+{
+    SW_CHECK(seams_between_halves(0.05, 0.05) == 0);
+    SW_CHECK(seams_between_halves(0.02, 0.02) >= 1);
+}
+
 int main(void)
 {
     SW_RUN(test_trim_gaps_widen_the_tolerance);
+    SW_RUN(test_gaps_are_held_to_the_model);
     SW_RUN(test_trim_past_the_domain_is_put_on_it);
     SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
     SW_RUN(test_tjunction_step_merges_a_spike_tip_into_its_neighbour);

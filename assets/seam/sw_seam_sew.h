@@ -34,6 +34,10 @@ typedef struct sw_seam_options {
     double tolerance;
 } sw_seam_options;
 
+/* The widest a trim's own gap (its edge's tolerance) may reach when sewn,
+ * as a fraction of the model's box (sw_seam_sew.c, hold_gaps). */
+#define SW_SEAM_GAP_CAP 1e-2
+
 typedef struct sw_seam_report {
     size_t loops;
     size_t boundary_vertices;   /* vertex_count */
@@ -44,6 +48,7 @@ typedef struct sw_seam_report {
     double tolerance;           /* the tolerance used */
     size_t unproven_pieces;     /* trim pieces the flattener could not prove (sw_seam_flatten.h) */
     size_t clamped;             /* trim points outside their domain put on its border */
+    size_t gaps_held;           /* trim vertices whose gap was held to SW_SEAM_GAP_CAP */
     size_t inserted;            /* points inserted into edges by sewing */
     double flatten_s, sew_s;    /* wall time of the two stages */
 } sw_seam_report;
