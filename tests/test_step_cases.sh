@@ -36,16 +36,22 @@ fi
 python3 "$src/tests/gen_step_cases.py" "$work/cases" || exit 1
 cases=$work/cases
 
+# verified_and_walked NAME PACK: verify passes; the walk from close to far
+# shows no crack and no refused surface.
+verified_and_walked() {
+  run verify "$2"
+  check "$1: verify passes" [ "$(code)" -eq 0 ]
+  "$tool" info --json "$2" > "$work/$1.json"
+  check "$1: walks from close to far, no crack, no refused surface" \
+    bash "$src/tests/walk_near_far.sh" "$walker" "$2" "$work/$1.json" "$work" "$src"
+}
+
 # ---- a micrometre gap between trim curves ---------------------------------------------------
 run build "$cases/gap.step" -o "$work/gap.swpack" --strict
 check "gap: builds under --strict, nothing skipped" eval '[ "$(code)" -eq 0 ] && ! has "$work/err" skipped'
 run info --json "$work/gap.swpack"
 check "gap: its one face is a surface" eval '[ "$(surfaces "$work/out")" -eq 1 ] && has "$work/out" "\"import_notes\": \[\]"'
-run verify "$work/gap.swpack"
-check "gap: verify passes" [ "$(code)" -eq 0 ]
-"$tool" info --json "$work/gap.swpack" > "$work/gap.json"
-check "gap: walks from close to far, no crack, no refused surface" \
-  bash "$src/tests/walk_near_far.sh" "$walker" "$work/gap.swpack" "$work/gap.json" "$work" "$src"
+verified_and_walked gap "$work/gap.swpack"
 
 # ---- a face no tolerance covers ---------------------------------------------------------------
 run build "$cases/skipped.step" -o "$work/skipped.swpack"
@@ -90,13 +96,7 @@ cap_mb=${SW_STEP_CASES_PEAK_MB:-300}
 echo "wide gap: build's peak $peak_kb kB (cap $cap_mb MB)"
 check "wide gap: builds every face" eval '[ "$(code)" -eq 0 ] && ! has "$work/err" skipped'
 check "wide gap: the build's peak under $cap_mb MB" [ "$peak_kb" -lt $((cap_mb * 1024)) ]
-run verify "$work/wide_gap.swpack"
-check "wide gap: verify passes" [ "$(code)" -eq 0 ]
-
-run verify "$work/wide_gap.swpack"
-"$tool" info --json "$work/wide_gap.swpack" > "$work/wide_gap.json"
-check "wide gap: walks from close to far, no crack, no refused surface" \
-  bash "$src/tests/walk_near_far.sh" "$walker" "$work/wide_gap.swpack" "$work/wide_gap.json" "$work" "$src"
+verified_and_walked "wide gap" "$work/wide_gap.swpack"
 
 # ---- a one-face periodic band ------------------------------------------------------------------
 run build "$cases/band.step" -o "$work/band.swpack" --strict
@@ -104,11 +104,7 @@ check "band: builds under --strict, nothing skipped" eval '[ "$(code)" -eq 0 ] &
 run info --json "$work/band.swpack"
 check "band: its one face is a surface, its seam sewn (free border: the two circles)" eval \
   '[ "$(surfaces "$work/out")" -eq 1 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); f=d[\"border\"][\"free_length\"]; sys.exit(0 if abs(f - 4*3.14159265*10) < 0.05 else 1)" "$work/out"'
-run verify "$work/band.swpack"
-check "band: verify passes" [ "$(code)" -eq 0 ]
-"$tool" info --json "$work/band.swpack" > "$work/band.json"
-check "band: walks from close to far, no crack, no refused surface" \
-  bash "$src/tests/walk_near_far.sh" "$walker" "$work/band.swpack" "$work/band.json" "$work" "$src"
+verified_and_walked band "$work/band.swpack"
 
 # ---- an IGES file of surfaces the native reader does not take -----------------------------------
 run build "$cases/planes.igs" -o "$work/planes.swpack"
@@ -116,7 +112,6 @@ check "planes: read by OpenCASCADE when the native reader takes none of its surf
   '[ "$(code)" -eq 0 ] && said "^warning: planes.igs: 1 x read by OpenCASCADE: no surface natively (IGES 108) (read past)$"'
 run info --json "$work/planes.swpack"
 check "planes: both bounded planes are surfaces" eval '[ "$(surfaces "$work/out")" -eq 2 ]'
-run verify "$work/planes.swpack"
-check "planes: verify passes" [ "$(code)" -eq 0 ]
+verified_and_walked planes "$work/planes.swpack"
 
 checks_done
