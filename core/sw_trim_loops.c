@@ -158,11 +158,13 @@ static uint32_t remove_spikes(const sw_trim_point *in, sw_tt_point *p, uint32_t 
 
 /* x within near of a side (lo or hi) of the domain, or of 0, moved onto it.
  * Floats near 0 resolve far finer than the domain's own rounding: a loop
- * point 1e-30 off a patch border at u = 0 (where an exporter wrote its
+ * point 1.7e-30 off a patch border at u = 0 (where an exporter wrote its
  * trim a hair off the seam) or 1e-15 inside a domain side at 1.3e-15 sits
  * off the grid line by less than the clipping's crossings there can tell
- * apart, and the walk around that cell went wrong ("loops cross"). Only
- * rounding is taken back: near is 1e-12 of the domain. */
+ * apart, and the walk around that cell went wrong ("loops cross", or area
+ * left out). Only rounding is taken back: near is a few ulps of the
+ * domain's size. (At 1e-12 of it, a point 4e-13 off a knot line 5e-11 from
+ * a side was moved onto the line and tripped the clipping the same way.) */
 static double onto_line(double x, double lo, double hi, double near)
 {
     if (fabs(x - lo) <= near)
@@ -180,7 +182,9 @@ static void copy_loops(tt_ctx *c, const double dom[4])
     /* Points closer than this to the previous kept one are dropped: float
      * (u, v) of tiny trim curves zig-zag at the float step and would cross. */
     double eps = 1e-6 * fmax(dom[1] - dom[0], dom[3] - dom[2]);
-    double near = SW_TT_ONTO_LINE * fmax(dom[1] - dom[0], dom[3] - dom[2]);
+    double near = SW_TT_ONTO_LINE_ULPS * DBL_EPSILON *
+                  fmax(fmax(dom[1] - dom[0], dom[3] - dom[2]),
+                       fmax(fmax(fabs(dom[0]), fabs(dom[1])), fmax(fabs(dom[2]), fabs(dom[3]))));
     uint32_t n = 0, m = 0;
     for (uint32_t k = 0; k < l->loop_count; k++) {
         uint32_t count = distinct_points(l, k), first = n;

@@ -24,7 +24,8 @@ enum {
     SW_TT_MAX_DEPTH = 40,
 };
 #define SW_TT_SHRINK_REL 1e-9 /* of the domain: how far loop points move into the region */
-#define SW_TT_ONTO_LINE 1e-12 /* of the domain: a loop point this near a side or 0 is on it */
+#define SW_TT_ONTO_LINE_ULPS 8 /* ulps of the domain's size: a loop point this near a side
+                                  or 0 is on it */
 
 /* A loop segment (by its start point) meeting grid cell (col, row), closed. */
 typedef struct tt_pair {
