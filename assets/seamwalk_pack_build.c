@@ -166,12 +166,12 @@ sw_status sw_pack_tool_check_not_empty(const build_options *o, const sw_model *m
                         o->input_count > 1 ? "s" : "");
 }
 
-/* The pack in *bytes (replacing what is there), with its static levels and
- * super-surfaces, from contents and the seams as they are now. */
-static sw_status serialize_with_levels(sw_pack_contents *contents, const sw_seam_host *seams,
-                                       const sw_part_levels_options *plo, progress_context *pc,
-                                       uint8_t **bytes, size_t *size, seam_summary *summary,
-                                       sw_error *err)
+/* The pack in *bytes (replacing what is there) from contents and the seams
+ * as they are now; with_levels adds the static levels, super-surfaces and
+ * part levels to it. */
+static sw_status serialize_seams(sw_pack_contents *contents, const sw_seam_host *seams,
+                                 progress_context *pc, uint8_t **bytes, size_t *size,
+                                 sw_error *err)
 {
     sw_seam_graph view = sw_seam_host_view(seams);
     contents->seam = &view;
@@ -179,10 +179,18 @@ static sw_status serialize_with_levels(sw_pack_contents *contents, const sw_seam
     *bytes = NULL;
     sw_pack_tool_progress(pc, "serialising", 0.0);
     sw_status st = sw_pack_serialize(contents, bytes, size, err);
-    if (st == SW_OK) {
-        sw_pack_tool_progress(pc, "static levels, super-surfaces", 0.0);
-        st = add_levels(contents, plo, bytes, size, summary, err);
-    }
+    contents->seam = NULL;
+    return st;
+}
+
+static sw_status with_levels(sw_pack_contents *contents, const sw_seam_host *seams,
+                             const sw_part_levels_options *plo, progress_context *pc,
+                             uint8_t **bytes, size_t *size, seam_summary *summary, sw_error *err)
+{
+    sw_seam_graph view = sw_seam_host_view(seams);
+    contents->seam = &view;
+    sw_pack_tool_progress(pc, "static levels, super-surfaces", 0.0);
+    sw_status st = add_levels(contents, plo, bytes, size, summary, err);
     contents->seam = NULL;
     return st;
 }
@@ -192,7 +200,10 @@ enum { REPAIR_ROUNDS = 6 };
 /* The pack serialised and verified as `verify` will: a surface refused at
  * one of its seam states keeps its seams whole (their vertices pinned, the
  * seams simplified again), round after round while that changes something
- * (REPAIR_ROUNDS at most); one still refused fails the build. */
+ * (REPAIR_ROUNDS at most); one still refused fails the build. The levels,
+ * most of a build's time and no part of what verify tessellates, are made
+ * once, on the seams that verified (each round made them again: a fetched
+ * arm part took past 300 s in six rounds of them). */
 static sw_status pack_verified(const build_options *o, progress_context *pc,
                                const sw_model *model, sw_pack_contents *contents,
                                sw_seam_host *seams, seam_summary *summary, uint8_t **bytes,
@@ -203,8 +214,7 @@ static sw_status pack_verified(const build_options *o, progress_context *pc,
     sw_status st = pinned && failed ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
     const sw_seam_surface_eval eval = { model_point, (void *)model };
     for (int round = 0; st == SW_OK; round++) {
-        st = serialize_with_levels(contents, seams, &o->part_levels, pc, bytes, size, summary,
-                                   err);
+        st = serialize_seams(contents, seams, pc, bytes, size, err);
         if (st != SW_OK)
             break;
         sw_pack_tool_progress(pc, "verifying", 0.0);
@@ -220,6 +230,8 @@ static sw_status pack_verified(const build_options *o, progress_context *pc,
         st = sw_seam_simplify_pinned(seams, &eval, pinned, err);
         summary->collapses = seams->collapse_count;
     }
+    if (st == SW_OK)
+        st = with_levels(contents, seams, &o->part_levels, pc, bytes, size, summary, err);
     free(pinned);
     free(failed);
     return st;
