@@ -73,11 +73,16 @@ static int thin_excursion(const sw_trim_point *pt, uint32_t a, uint32_t b)
 #define EXCURSION_READS 64u
 
 /* Loop [first, first + n): marks drop[k] for the points of thin excursions,
- * found through an open-addressing table of each vertex's last position. */
+ * found through an open-addressing table of each vertex's last position
+ * (table: at least 2n entries; the loop's own power of two of them is
+ * used, so a surface of many small holes clears little of it). */
 static uint32_t mark_loop(const sw_trim_point *pt, uint32_t first, uint32_t n, uint8_t *drop,
-                          uint32_t *table, uint32_t mask)
+                          uint32_t *table)
 {
-    uint32_t marked = 0;
+    uint32_t marked = 0, mask = 1;
+    while (mask < 2 * n)
+        mask <<= 1;
+    mask -= 1;
     uint64_t reads = 0, budget = (uint64_t)EXCURSION_READS * n;
     for (uint32_t i = 0; i <= mask; i++)
         table[i] = UINT32_MAX;
@@ -170,20 +175,20 @@ static uint32_t mark_lobes(const sw_trim_point *pt, uint32_t first, uint32_t n, 
 uint32_t sw_seam_surface_untangle(sw_trim_loops *loops, sw_trim_point *points,
                                   uint32_t *loop_first, uint32_t *outer, sw_arena *scratch)
 {
-    uint32_t total = loop_first[loops->loop_count], mask = 1;
+    uint32_t total = loop_first[loops->loop_count], table_size = 1;   /* the largest loop's */
     for (uint32_t l = 0; l < loops->loop_count; l++)
-        while (mask < 2 * (loop_first[l + 1] - loop_first[l]))
-            mask <<= 1;
+        while (table_size < 2 * (loop_first[l + 1] - loop_first[l]))
+            table_size <<= 1;
     size_t mark = sw_arena_mark(scratch);
     uint8_t *drop = sw_arena_alloc(scratch, (size_t)total + 1, 1);
-    uint32_t *table = sw_arena_alloc(scratch, sizeof *table * (size_t)mask, 4);
+    uint32_t *table = sw_arena_alloc(scratch, sizeof *table * (size_t)table_size, 4);
     uint32_t *idx = sw_arena_alloc(scratch, sizeof *idx * ((size_t)total + 1), 4);
     uint32_t dropped = 0;
     if (drop && table && idx) {
         memset(drop, 0, (size_t)total + 1);
         for (uint32_t l = 0; l < loops->loop_count; l++) {
             uint32_t first = loop_first[l], n = loop_first[l + 1] - first;
-            dropped += mark_loop(points, first, n, drop, table, mask - 1);
+            dropped += mark_loop(points, first, n, drop, table);
             dropped += mark_lobes(points, first, n, drop, idx);
         }
     }
