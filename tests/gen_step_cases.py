@@ -24,6 +24,9 @@ writes into OUT_DIR:
   planes.igs        two bounded planes (IGES 108, form 1: a plane and the
                     closed curve that bounds it), a kind the native IGES
                     reader does not take and OpenCASCADE's does
+  appended.step     one good square, a mesher's script appended after
+                    END-ISO-10303-21; (more than the tail the trailer is
+                    looked for in)
   band.step         one cylinder face closed on itself (two circles and
                     the seam line between them, used once each way): a
                     one-face periodic band
@@ -85,7 +88,8 @@ def square(s, corners, lines=None, drop_edge=False):
     return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, s.add("PLANE('',%s);" % axes)))
 
 
-def write(path, faces_of, file_name_params=7, solid_angle="spec", stray_item=False):
+def write(path, faces_of, file_name_params=7, solid_angle="spec", stray_item=False,
+          appended=""):
     s = Step()
     faces = faces_of(s)
     shell = s.add("OPEN_SHELL('',(%s));" % ",".join(faces))
@@ -124,6 +128,7 @@ def write(path, faces_of, file_name_params=7, solid_angle="spec", stray_item=Fal
         for i, text in enumerate(s.lines):
             f.write("#%d=%s\n" % (i + 1, text))
         f.write("ENDSEC;\nEND-ISO-10303-21;\n")
+        f.write(appended)
 
 
 def band(s, radius, height):
@@ -195,6 +200,8 @@ def main():
           stray_item=True)
     write(os.path.join(out, "wide_gap.step"),
           lambda s: grid(s, 40, 1.0) + [off_vertex(s, 50, 0, 10, 8.0)])
+    write(os.path.join(out, "appended.step"), lambda s: [square(s, corners(0, 0, 10))],
+          appended="".join("//+\nPhysical Surface(%d) = {%d};\n" % (i, i) for i in range(40)))
     write(os.path.join(out, "band.step"), lambda s: [band(s, 10.0, 4.0)])
     bounded_planes(os.path.join(out, "planes.igs"))
 

@@ -14,6 +14,7 @@
 #   builds the file;
 # - a shape representation that also lists a PMI callout: the item is a
 #   message, the face is built;
+# - text appended after END-ISO-10303-21; a message, not a truncation;
 # - one face with a gap of 8 mm beside 1,600 faces of 1 mm edges: the
 #   sewing's memory follows each trim's own gap (the build's peak under
 #   300 MB; it took 1 GB when every edge reached as far as the widest gap);
@@ -84,6 +85,13 @@ check "callout: an item OCCT does not take in a representation is read past" eva
   '[ "$(code)" -eq 0 ] && said "^warning: callout.step: 1 x STEP: Parameter n0.3 (representation_item) : Entity has illegal type (read past)$"'
 run info --json "$work/callout.swpack"
 check "callout: its face is a surface" eval '[ "$(surfaces "$work/out")" -eq 1 ]'
+
+run build "$cases/appended.step" -o "$work/appended.swpack"
+check "appended: text after the trailer is a message, not a truncation" eval \
+  '[ "$(code)" -eq 0 ] && said "^warning: appended.step: 1 x STEP: text after END-ISO-10303-21; (not read) (read past)$"'
+run build "$cases/appended.step" -o "$work/appended.strict.swpack" --strict
+check "appended: --strict refuses it, naming the line" eval \
+  '[ "$(code)" -eq 1 ] && said "appended.step: line [0-9]*: text after END-ISO-10303-21; (not read)"'
 
 # ---- a file-wide large gap beside fine edges ----------------------------------------------------
 /usr/bin/time -f '%M' -o "$work/peak" "$tool" build "$cases/wide_gap.step" -o "$work/wide_gap.swpack" \

@@ -634,8 +634,15 @@ sw_status import_file(ImportContext *ctx)
     if (!f)
         return sw_error_set(ctx->err, SW_ERR_IO, "%s: %s", ctx->path, std::strerror(errno));
     std::fclose(f);
-    if (!file_tail_has(ctx->path, step))
-        return truncated(ctx, step);
+    if (!file_tail_has(ctx->path, step)) {
+        long after = step ? step_text_after_trailer(ctx->path) : -1;
+        if (after < 0)
+            return truncated(ctx, step);
+        /* OCCT's parser stops at the trailer; what follows is not STEP. */
+        char full[96];
+        std::snprintf(full, sizeof full, "line %ld: text after END-ISO-10303-21; (not read)", after);
+        sw_import_report_message(ctx->report, "STEP: text after END-ISO-10303-21; (not read)", full);
+    }
     /* Limits OpenCASCADE does not have: a shell listing a face many times
      * kept it busy for minutes (sw_step_scan.h). */
     sw_step_scan_result scan;

@@ -113,6 +113,10 @@ std::string check_place(const Handle(Interface_InterfaceModel) &model, int numbe
  * the T record), checked before OCCT parses anything. */
 bool file_tail_has(const char *path, bool step);
 
+/* The line where text after a STEP file's last END-ISO-10303-21; starts, 0
+ * when only spaces follow it, -1 when it has none (read whole). */
+long step_text_after_trailer(const char *path);
+
 /* The #id of the last entity whose text ends (its ';' outside a string):
  * where a truncated file was cut. 0 when none is complete. */
 int last_complete_step_entity(const char *path);

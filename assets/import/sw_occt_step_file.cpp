@@ -285,6 +285,41 @@ bool file_tail_has(const char *path, bool step)
     return last.size() >= 73 && last[72] == 'T';
 }
 
+/* A STEP file whose trailer is not at its end: the line where text after
+ * its last END-ISO-10303-21; starts (an editor or a mesher appended a
+ * script), 0 when only spaces follow it, -1 when the file has no trailer.
+ * Reads the whole file: only for one whose tail lacks the trailer. */
+long step_text_after_trailer(const char *path)
+{
+    static const char trailer[] = "END-ISO-10303-21;";
+    const size_t trailer_len = sizeof trailer - 1;
+    FILE *f = std::fopen(path, "rb");
+    if (!f)
+        return 0;
+    long line = 1, after = 0;
+    bool found = false;
+    size_t matched = 0;  /* of the trailer, from the line's first non-space */
+    bool leading = true; /* still in the line's leading spaces or the trailer */
+    for (int c; (c = std::fgetc(f)) != EOF;) {
+        if (c == '\n') {
+            line++, matched = 0, leading = true;
+            continue;
+        }
+        if (leading && matched < trailer_len && c == trailer[matched]) {
+            if (++matched == trailer_len)
+                found = true, after = 0, leading = false;
+            continue;
+        }
+        if (leading && matched == 0 && std::isspace(c))
+            continue;
+        leading = false;
+        if (found && after == 0 && !std::isspace(c) && matched != trailer_len)
+            after = line;
+    }
+    std::fclose(f);
+    return found ? after : -1;
+}
+
 /* The #id of the last entity whose text ends (its ';' outside a string):
  * where a truncated file was cut. 0 when none is complete. */
 int last_complete_step_entity(const char *path)
