@@ -10,7 +10,9 @@
 #include "seam_graph_gen.h"
 #include "sw_math.h"
 #include "sw_seam_check.h"
+#include "sw_seam_select.h"
 #include "sw_seam_simplify.h"
+#include "sw_seam_surface.h"
 #include "sw_test.h"
 
 /* Connected parts of the original graph, by union-find over loop-consecutive
@@ -443,6 +445,143 @@ static void test_no_collapse_pinches_a_loop(void)
     sw_seam_host_free(&g);
 }
 
+
+/* Do segments a-b and c-d cross or touch (collinear overlap included)? */
+static int segments_meet(const float a[2], const float b[2], const float c[2], const float d[2])
+{
+    double d1 = ((double)b[0] - a[0]) * ((double)c[1] - a[1]) - ((double)b[1] - a[1]) * ((double)c[0] - a[0]);
+    double d2 = ((double)b[0] - a[0]) * ((double)d[1] - a[1]) - ((double)b[1] - a[1]) * ((double)d[0] - a[0]);
+    double d3 = ((double)d[0] - c[0]) * ((double)a[1] - c[1]) - ((double)d[1] - c[1]) * ((double)a[0] - c[0]);
+    double d4 = ((double)d[0] - c[0]) * ((double)b[1] - c[1]) - ((double)d[1] - c[1]) * ((double)b[0] - c[0]);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+        return 1;
+    for (int k = 0; k < 4; k++) {   /* an end on the other segment */
+        const float *p = k == 0 ? c : k == 1 ? d : k == 2 ? a : b;
+        const float *s0 = k < 2 ? a : c, *s1 = k < 2 ? b : d;
+        double o = k == 0 ? d1 : k == 1 ? d2 : k == 2 ? d3 : d4;
+        if (o == 0 && p[0] >= fminf(s0[0], s1[0]) && p[0] <= fmaxf(s0[0], s1[0]) &&
+            p[1] >= fminf(s0[1], s1[1]) && p[1] <= fmaxf(s0[1], s1[1]))
+            return 1;
+    }
+    return 0;
+}
+
+/* Pairs of segments of the loops (their (u, v) polylines) that cross or
+ * touch, neighbours along a loop not counted; all pairs compared. */
+static uint32_t loop_crossings(const sw_trim_loops *loops)
+{
+    uint32_t meets = 0, total = loops->loop_first[loops->loop_count];
+    for (uint32_t l = 0; l < loops->loop_count; l++)
+        for (uint32_t i = loops->loop_first[l]; i < loops->loop_first[l + 1]; i++) {
+            uint32_t n = loops->loop_first[l + 1] - loops->loop_first[l];
+            uint32_t i1 = i + 1 < loops->loop_first[l + 1] ? i + 1 : loops->loop_first[l];
+            for (uint32_t m = 0; m < loops->loop_count; m++)
+                for (uint32_t j = loops->loop_first[m]; j < loops->loop_first[m + 1]; j++) {
+                    uint32_t j1 = j + 1 < loops->loop_first[m + 1] ? j + 1 : loops->loop_first[m];
+                    if (j <= i && m == l)
+                        continue;
+                    if (m == l && (j == i1 || j1 == i || n <= 3))
+                        continue;
+                    meets += segments_meet(loops->points[i].uv, loops->points[i1].uv,
+                                           loops->points[j].uv, loops->points[j1].uv);
+                }
+        }
+    (void)total;
+    return meets;
+}
+
+/* A serpentine strip of width 1 (legs 10 long, 1 apart), outlined by
+ * points 0.25 apart, as the flat spring of a public STEP file: its corners,
+ * simplified, cut across the next leg. The loops as the runtime reads them
+ * (sw_seam_select, sw_seam_surface_loops) at bounds from the finest to past
+ * the strip's size: no state where they cross or touch. Each leg is the
+ * strip's only surface, so the check of one surface's loops is all. */
+static void test_no_collapse_crosses_a_loop(void)
+{
+    enum { LEGS = 5, MAXP = 2048 };
+    float line[2 * (LEGS * 2 + 2)][2];
+    int n = 0;
+    line[n][0] = 0.5f, line[n][1] = 0.0f, n++;
+    for (int k = 0; k < LEGS; k++) {
+        float x = 0.5f + 2.0f * k, y = k % 2 ? -0.5f : 10.5f;
+        if (k + 1 == LEGS) {   /* the last leg ends square, like the first */
+            line[n][0] = x, line[n][1] = k % 2 ? 0.0f : 10.0f, n++;
+            break;
+        }
+        line[n][0] = x, line[n][1] = y, n++;
+        line[n][0] = x + 2.0f, line[n][1] = y, n++;
+    }
+    /* outline: the centre line offset by 0.5 to its left, then back on its right */
+    float outline[4 * (LEGS * 2 + 2)][2];
+    int m = 0;
+    for (int side = 0; side < 2; side++)
+        for (int i = 0; i < n; i++) {
+            int c = side ? n - 1 - i : i, dir = side ? -1 : 1;
+            int pi = c - dir, ni = c + dir;
+            float dx0 = 0, dy0 = 0, dx1 = 0, dy1 = 0;
+            if (pi >= 0 && pi < n)
+                dx0 = line[c][0] - line[pi][0], dy0 = line[c][1] - line[pi][1];
+            if (ni >= 0 && ni < n)
+                dx1 = line[ni][0] - line[c][0], dy1 = line[ni][1] - line[c][1];
+            float l0 = hypotf(dx0, dy0), l1 = hypotf(dx1, dy1);
+            float nx = 0, ny = 0;   /* left normals, summed: the corner's offset */
+            if (l0 > 0)
+                nx += -dy0 / l0, ny += dx0 / l0;
+            if (l1 > 0)
+                nx += -dy1 / l1, ny += dx1 / l1;
+            float len = l0 > 0 && l1 > 0 ? 1.0f : hypotf(nx, ny);
+            outline[m][0] = line[c][0] + 0.5f * nx / len, outline[m][1] = line[c][1] + 0.5f * ny / len;
+            m++;
+        }
+    sw_seam_host g = {0};
+    gen_buf b = {.g = &g, .rng = 1};
+    float pts[MAXP][2];
+    uint32_t np = 0;
+    for (int i = 0; i < m; i++) {
+        const float *a = outline[i], *c = outline[(i + 1) % m];
+        int steps = (int)ceilf(hypotf(c[0] - a[0], c[1] - a[1]) / 0.25f);
+        for (int k = 0; k < steps && np < MAXP; k++, np++)
+            pts[np][0] = a[0] + (c[0] - a[0]) * k / steps, pts[np][1] = a[1] + (c[1] - a[1]) * k / steps;
+    }
+    for (uint32_t i = 0; i < np; i++)
+        gen_vertex(&b, pts[i][0], pts[i][1], 0.0);
+    gen_begin_loop(&b, 0, SW_SEAM_LOOP_OUTER);
+    for (uint32_t i = 0; i < np; i++)
+        gen_slot(&b, i, pts[i][0], pts[i][1]);
+    gen_finish(&b, 1);
+    sw_error err = {0};
+    SW_CHECK_MSG(sw_seam_simplify(&g, &err) == SW_OK, "%s", err.message);
+    sw_seam_graph view = sw_seam_host_view(&g);
+    size_t bytes = sw_seam_select_arena_bytes(&view);
+    void *block = malloc(bytes);
+    sw_arena arena;
+    sw_arena_init(&arena, block, bytes);
+    sw_seam_select sel;
+    SW_CHECK_MSG(sw_seam_select_init(&sel, &view, &arena, &err) == SW_OK, "%s", err.message);
+    sw_seam_point *seam_points = malloc(sizeof *seam_points * (np + 1));
+    sw_trim_point *points = malloc(sizeof *points * (np + 1));
+    uint32_t loop_first[4];
+    const sw_seam_surface_buffers buf = {seam_points, points, loop_first, np};
+    uint32_t states = 0;
+    for (float bound = 100.0f; bound > 1e-3f; bound /= 2.0f) {
+        sw_seam_update_result r;
+        SW_CHECK(sw_seam_select_update(&sel, &bound, 0, &r, &err) == SW_OK);
+        sw_trim_loops loops;
+        uint32_t outer = 0;
+        if (!sw_seam_surface_loops(&sel, 0, 0.0f, &buf, &loops, &outer))
+            continue;
+        states++;
+        uint32_t meets = loop_crossings(&loops);
+        SW_CHECK_MSG(meets == 0, "at bound %g (%u points): %u pairs of segments cross or touch",
+                     (double)bound, loops.loop_first[loops.loop_count], meets);
+    }
+    SW_CHECK(states > 10);
+    free(seam_points);
+    free(points);
+    free(block);
+    sw_seam_host_free(&g);
+}
+
 int main(void)
 {
     SW_RUN(test_collapses_to_one_vertex_per_connected_part);
@@ -457,5 +596,6 @@ int main(void)
     SW_RUN(test_a_hub_of_many_petals_simplifies_fast);
     SW_RUN(test_empty_graph_has_nothing_to_do);
     SW_RUN(test_no_collapse_pinches_a_loop);
+    SW_RUN(test_no_collapse_crosses_a_loop);
     return sw_test_finish();
 }

@@ -66,9 +66,13 @@ sw_status sw_seam_runs_init(sw_seam_runs *r, const sw_seam_host *g, uint32_t ver
     r->loop_count = g->loop_count;
     for (uint32_t v = 0; v < vertex_cap; v++)
         r->first[v] = SW_SEAM_NONE;
-    for (uint32_t l = 0, at = 0; l < g->loop_count; l++)
+    uint32_t at = 0;
+    for (uint32_t l = 0; l < g->loop_count; l++)
         at += loop_runs(r, g, l, at);
-    return SW_OK;
+    sw_status st = sw_seam_runs_grid_init(r, g, at, err);
+    if (st != SW_OK)
+        sw_seam_runs_free(r);
+    return st;
 }
 
 static double dist3(const float a[3], const float b[3])
@@ -277,5 +281,8 @@ void sw_seam_runs_free(sw_seam_runs *r)
     free(r->near_stamp);
     free(r->loop_stamp);
     free(r->loop_n1);
+    free(r->grids);
+    free(r->cell_start);
+    free(r->cell_runs);
     *r = (sw_seam_runs){0};
 }

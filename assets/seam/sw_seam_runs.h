@@ -27,6 +27,14 @@ typedef struct sw_seam_surface_eval {
     void *ctx;
 } sw_seam_surface_eval;
 
+/* One surface's grid of run points in (u, v) (sw_seam_runs_crosses). */
+typedef struct sw_seam_uv_grid {
+    double box[4];       /* u0, u1, v0, v1 of its runs */
+    uint32_t side;       /* cells a side */
+    uint32_t first_cell; /* its cells in cell_start */
+    uint32_t points;     /* its runs */
+} sw_seam_uv_grid;
+
 typedef struct sw_seam_runs {
     const sw_seam_surface_eval *eval; /* NULL: the cost is estimated (below) */
     sw_seam_run *runs;   /* at most one per slot */
@@ -43,6 +51,10 @@ typedef struct sw_seam_runs {
     /* sw_seam_runs_pinch's counts, per loop: valid where loop_stamp is pinch_stamp */
     uint32_t *loop_stamp, *loop_n1, *loop_n2, *loop_adj;
     uint32_t pinch_stamp, loop_count;
+    /* per surface, its run points by grid cell: runs cell_runs[cell_start[c]
+     * .. cell_start[c + 1]) (dead ones included) */
+    sw_seam_uv_grid *grids;
+    uint32_t *cell_start, *cell_runs;
 } sw_seam_runs;
 
 /* Runs of graph's original loops: consecutive slots of one vertex are one
@@ -88,6 +100,21 @@ double sw_seam_runs_cost_to(const sw_seam_runs *r, const sw_seam_host *graph, ui
  * A vertex that already stood twice in a loop (a periodic seam, a slit)
  * may go on doing so. O(runs of v1 and v2). */
 int sw_seam_runs_pinch(sw_seam_runs *r, uint32_t v1, uint32_t v2);
+
+/* Would collapsing v1 into v2 make a loop of some surface cross or touch
+ * itself or another of the surface's loops in (u, v)? Where a run of v1
+ * merges into v2's, the triangle its point leaves must hold no other run
+ * point of the surface (sw_seam_runs_cross.c says why that suffices when
+ * nothing crossed before). The runtime tessellates inside these polylines
+ * and refuses loops that cross: a zigzag border, simplified, cut across a
+ * thin face's other side at every coarser state. */
+int sw_seam_runs_crosses(const sw_seam_runs *r, const sw_seam_host *graph, uint32_t v1,
+                         uint32_t v2);
+
+/* The grids sw_seam_runs_crosses reads, over the first run_count runs
+ * (sw_seam_runs_init calls it). SW_ERR_NO_MEMORY. */
+sw_status sw_seam_runs_grid_init(sw_seam_runs *r, const sw_seam_host *graph, uint32_t run_count,
+                                 sw_error *err);
 
 /* Applies collapse v1 -> v2 into vn (vn's position is v2's). */
 void sw_seam_runs_collapse(sw_seam_runs *r, uint32_t v1, uint32_t v2, uint32_t vn);

@@ -61,7 +61,7 @@ typedef struct simp {
     uint32_t *heap, *pos, heap_n;
     uint32_t *mark, stamp;
     uint8_t *bounded; /* cost is a lower bound, target unset: made exact at the top */
-    uint32_t *barred, barred_stamp; /* targets that would pinch a loop (exact updates) */
+    uint32_t *barred, barred_stamp; /* targets that would fold a loop (exact updates) */
     const uint8_t *pinned; /* original vertices that never collapse (may be NULL) */
 } simp;
 
@@ -173,15 +173,24 @@ static void choose_best(simp *S, uint32_t v)
 }
 
 /* Targets an exact update tries before v waits for a neighbour's collapse:
- * a hub of thousands of neighbours that all pinch would otherwise pay for
- * every one at every update. */
-enum { PINCH_TRIES = 4 };
+ * a hub of thousands of neighbours that all fold a loop would otherwise
+ * pay for every one at every update. */
+enum { FOLD_TRIES = 4 };
 
-/* v's cheapest collapse into S->target[v]; exact, a target that would
- * pinch a loop (sw_seam_runs_pinch) is passed over for the next. Only the
- * exact update at the heap's top pays for that check: the lower bounds
- * only order the heap, and a pinch changes only when v or its target
- * collapses, which updates v again. */
+/* Would collapsing v into y fold a loop in (u, v): pinch it (meet itself
+ * at one vertex) or make it cross a loop of its surface? */
+static int folds(simp *S, uint32_t v, uint32_t y)
+{
+    return sw_seam_runs_pinch(&S->runs, v, y) || sw_seam_runs_crosses(&S->runs, S->g, v, y);
+}
+
+/* v's cheapest collapse into S->target[v]; exact, a target that would fold
+ * a loop (folds) is passed over for the next. Only the exact update at the
+ * heap's top pays for that check: the lower bounds only order the heap. A
+ * pinch changes only when v or its target collapses, which updates v again;
+ * a crossing also when a point in the way collapses, which v does not hear
+ * of: it then keeps waiting for a collapse of its own neighbours (a
+ * collapse lost, never a crossing made). */
 static void update_best(simp *S, uint32_t v, int exact)
 {
     S->bounded[v] = !exact;
@@ -193,9 +202,9 @@ static void update_best(simp *S, uint32_t v, int exact)
     }
     choose_best(S, v);
     for (int tries = 0; exact && S->target[v] != UINT32_MAX &&
-                        sw_seam_runs_pinch(&S->runs, v, S->target[v]); tries++) {
+                        folds(S, v, S->target[v]); tries++) {
         S->barred[S->target[v]] = S->barred_stamp;
-        if (tries + 1 == PINCH_TRIES) {
+        if (tries + 1 == FOLD_TRIES) {
             S->target[v] = UINT32_MAX;   /* back in the heap when a neighbour collapses */
             break;
         }
