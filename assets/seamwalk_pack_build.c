@@ -27,13 +27,34 @@ static void model_point(void *ctx, uint32_t surface, double u, double v, double 
     out[0] = p.x, out[1] = p.y, out[2] = p.z;
 }
 
-static sw_status build_seams(const build_options *o, progress_context *pc, const sw_model *model,
+/* The sewn seams of model; a surface whose loops are too long for one draw
+ * is cut into pieces in model (sw_seam_split.h) and the model sewn again. */
+static sw_status sew(const build_options *o, sw_model *model, sw_seam_host *seams,
+                     seam_summary *summary, sw_error *err)
+{
+    sw_seam_options opt = { .tolerance = o->seam_tolerance };
+    sw_status st = sw_seam_sew_model(model, &opt, seams, &summary->sewing, err);
+    if (st != SW_OK)
+        return st;
+    sw_model split;
+    sw_model_init(&split);
+    st = sw_seam_split_long(model, seams, &split, &summary->split, err);
+    if (st == SW_OK && summary->split.cut > 0) {
+        sw_model_free(model);
+        *model = split;
+        sw_seam_host_free(seams);
+        return sw_seam_sew_model(model, &opt, seams, &summary->sewing, err);
+    }
+    sw_model_free(&split);
+    return st;
+}
+
+static sw_status build_seams(const build_options *o, progress_context *pc, sw_model *model,
                              sw_seam_host *seams, seam_summary *summary, sw_error *err)
 {
     sw_pack_tool_progress(pc, "sewing seams", 0.0);
     memset(summary, 0, sizeof *summary);
-    sw_seam_options opt = { .tolerance = o->seam_tolerance };
-    sw_status st = sw_seam_sew_model(model, &opt, seams, &summary->sewing, err);
+    sw_status st = sew(o, model, seams, summary, err);
     if (st == SW_OK) {
         sw_pack_tool_progress(pc, "simplifying seams", 0.0);
         double t0 = sw_pack_tool_now_s();
@@ -222,6 +243,7 @@ static sw_status pack_verified(const build_options *o, progress_context *pc,
         st = verify_before_writing(*bytes, *size, model, failed, err);
         if (st != SW_ERR_FORMAT || round == REPAIR_ROUNDS)
             break;
+        fprintf(stderr, "ROUND %d vertices %u collapses %u: %s\n", round, seams->original_count, seams->collapse_count, err->message); /*DBG*/
         uint32_t newly = sw_seam_pin_surfaces(seams, failed, pinned);
         if (newly == 0)
             break;

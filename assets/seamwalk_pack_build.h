@@ -20,6 +20,7 @@
 #include "sw_part_levels_build.h"
 #include "sw_progress.h"
 #include "sw_seam_sew.h"
+#include "sw_seam_split.h"
 
 typedef struct build_options {
     const char *out_path;
@@ -53,6 +54,7 @@ typedef struct seam_summary {
     sw_cluster_report clusters;
     sw_part_levels_report part_levels;
     uint32_t pinned_surfaces;   /* whose seams were kept whole so that they tessellate */
+    sw_seam_split_report split; /* surfaces cut: their loops too long for one draw */
 } seam_summary;
 
 /* The build's progress line (a sw_progress callback; user: a

@@ -314,6 +314,11 @@ static void print_summary(const build_options *o, const sw_model *model,
            "%.2f s\n", r->boundary_vertices, r->boundary_edges, r->seams, r->free_edges,
            r->nonmanifold_edges, r->tolerance, seams->collapses, r->flatten_s + r->sew_s,
            seams->simplify_s);
+    if (seams->split.cut > 0 || seams->split.uncut > 0)
+        printf("seamwalk-pack: seams: %" PRIu32 " surfaces cut into %" PRIu32 " pieces, %" PRIu32
+               " left whole: their loops held more than %d points (one draw shows 65536 "
+               "vertices)\n", seams->split.cut, seams->split.pieces, seams->split.uncut,
+               SW_SEAM_SPLIT_POINTS);
     if (seams->pinned_surfaces > 0)
         printf("seamwalk-pack: seams: kept whole on %" PRIu32 " surfaces that would not "
                "tessellate simplified\n", seams->pinned_surfaces);

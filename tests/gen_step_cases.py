@@ -27,6 +27,9 @@ writes into OUT_DIR:
   appended.step     one good square, a mesher's script appended after
                     END-ISO-10303-21; (more than the tail the trailer is
                     looked for in)
+  spring.step       a wire swept along a helix of 30 turns: one B-spline
+                    face whose seam, sewn at the model's tolerance, has
+                    more points than one draw's 65536 vertices
   band.step         one cylinder face closed on itself (two circles and
                     the seam line between them, used once each way): a
                     one-face periodic band
@@ -152,6 +155,74 @@ def band(s, radius, height):
     return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, surface))
 
 
+def helical_sweep(s, turns, coil_radius=10.0, pitch=3.0, wire_radius=1.0, per_turn=8):
+    """A wire swept along a helix, as a spring is drawn: one rational
+    B-spline face, a circle (rational quadratic, nine points) around the
+    wire and a cubic along the helix (per_turn spans a turn), bounded by
+    the circles at its ends and the seam along the wire, used once each
+    way. Not exactly a helix (the cubic runs through its control points'
+    frames), which no test needs."""
+    import math
+    spans = turns * per_turn
+    count_v = spans + 3
+    h = 1.0 / math.sqrt(2.0)
+    square = [(1, 0, 1), (1, 1, h), (0, 1, 1), (-1, 1, h), (-1, 0, 1), (-1, -1, h), (0, -1, 1),
+              (1, -1, h), (1, 0, 1)]
+
+    def frame(t):
+        c = (coil_radius * math.cos(t), coil_radius * math.sin(t), pitch * t / (2 * math.pi))
+        tangent = (-coil_radius * math.sin(t), coil_radius * math.cos(t), pitch / (2 * math.pi))
+        n = math.sqrt(sum(x * x for x in tangent))
+        tangent = [x / n for x in tangent]
+        normal = (-math.cos(t), -math.sin(t), 0.0)
+        binormal = (tangent[1] * normal[2] - tangent[2] * normal[1],
+                    tangent[2] * normal[0] - tangent[0] * normal[2],
+                    tangent[0] * normal[1] - tangent[1] * normal[0])
+        return c, normal, binormal
+
+    # control points' parameters along the helix: the Greville abscissae
+    knots_v = [0.0] * 4 + [float(k) for k in range(1, spans)] + [float(spans)] * 4
+    greville = [sum(knots_v[j + 1:j + 4]) / 3.0 for j in range(count_v)]
+    grid = []
+    for a, b, w in square:
+        row = []
+        for g in greville:
+            c, n, bn = frame(2 * math.pi * turns * g / spans)
+            row.append(tuple(c[i] + wire_radius * (a * n[i] + b * bn[i]) for i in range(3)))
+        grid.append(row)
+    ids = [[s.point(p) for p in row] for row in grid]
+    weights = "(%s)" % ",".join("(%s)" % ",".join(real(w) for _ in range(count_v))
+                                for _, _, w in square)
+    mult_v = "(4,%s4)" % ("1," * (spans - 1))
+    knots_v_text = "(%s)" % ",".join(real(k) for k in range(spans + 1))
+    surface = s.add(
+        "(BOUNDED_SURFACE()B_SPLINE_SURFACE(2,3,(%s),.UNSPECIFIED.,.T.,.F.,.F.)"
+        "B_SPLINE_SURFACE_WITH_KNOTS((3,2,2,2,3),%s,(0.,1.,2.,3.,4.),%s,.UNSPECIFIED.)"
+        "GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_SURFACE(%s)REPRESENTATION_ITEM('')"
+        "SURFACE());" % (",".join("(%s)" % ",".join(r) for r in ids), mult_v, knots_v_text,
+                         weights))
+
+    def circle(j):
+        return s.add(
+            "(BOUNDED_CURVE()B_SPLINE_CURVE(2,(%s),.UNSPECIFIED.,.T.,.F.)"
+            "B_SPLINE_CURVE_WITH_KNOTS((3,2,2,2,3),(0.,1.,2.,3.,4.),.UNSPECIFIED.)CURVE()"
+            "GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_CURVE((%s))"
+            "REPRESENTATION_ITEM(''));" % (",".join(ids[i][j] for i in range(9)),
+                                            ",".join(real(w) for _, _, w in square)))
+    seam_curve = s.add("B_SPLINE_CURVE_WITH_KNOTS('',3,(%s),.UNSPECIFIED.,.F.,.F.,%s,%s,"
+                       ".UNSPECIFIED.);" % (",".join(ids[0]), mult_v, knots_v_text))
+    start = s.add("VERTEX_POINT('',%s);" % ids[0][0])
+    end = s.add("VERTEX_POINT('',%s);" % ids[0][-1])
+    seam = s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (start, end, seam_curve))
+    low = s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (start, start, circle(0)))
+    high = s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (end, end, circle(count_v - 1)))
+    edges = [s.add("ORIENTED_EDGE('',*,*,%s,%s);" % (e, sense))
+             for e, sense in ((low, ".T."), (seam, ".T."), (high, ".F."), (seam, ".F."))]
+    loop = s.add("EDGE_LOOP('',(%s));" % ",".join(edges))
+    bound = s.add("FACE_OUTER_BOUND('',%s,.T.);" % loop)
+    return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, surface))
+
+
 def bounded_planes(path):
     """Two squares as IGES 108 bounded planes, each bounded by a composite
     curve (102) of four lines (110)."""
@@ -204,6 +275,7 @@ def main():
           appended="".join("//+\nPhysical Surface(%d) = {%d};\n" % (i, i) for i in range(40)))
     write(os.path.join(out, "band.step"), lambda s: [band(s, 10.0, 4.0)])
     bounded_planes(os.path.join(out, "planes.igs"))
+    write(os.path.join(out, "spring.step"), lambda s: [helical_sweep(s, 30)])
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "sw_scene.h"
+#include "sw_model_split.h"
 #include "sw_scene_internal.h"
 
 void scene_cache_free(scene_cache *cache)
@@ -58,55 +59,6 @@ static sw_status cache_entry(scene_cache *cache, const char *path,
     return SW_OK;
 }
 
-/* A surface as sw_model_add_patch makes it: untrimmed, one span on [0,1]^2. */
-static int is_bezier_input(const sw_model_surface *s)
-{
-    return s->loop_count == 0 && s->count_u == s->degree_u + 1 &&
-           s->count_v == s->degree_v + 1 && s->knots_u[0] == 0.0 && s->knots_v[0] == 0.0 &&
-           s->knots_u[s->count_u] == 1.0 && s->knots_v[s->count_v] == 1.0;
-}
-
-static sw_status copy_surface(const sw_model *from, const sw_model_surface *s, sw_model *to,
-                              sw_error *err)
-{
-    if (is_bezier_input(s))
-        return sw_model_add_patch(to, s->degree_u, s->degree_v, s->rational, s->ctrl, err);
-    const sw_model_loop *loops = from->loops + s->first_loop;
-    size_t curves = 0;
-    for (size_t l = 0; l < s->loop_count; l++)
-        curves += loops[l].curve_count;
-    sw_model_loop_input *in = calloc(s->loop_count + 1, sizeof *in);
-    sw_nurbs_curve *views = calloc(curves + 1, sizeof *views);
-    int *computed = calloc(curves + 1, sizeof *computed);
-    double *gaps = calloc(curves + 1, sizeof *gaps);
-    sw_status st = SW_OK;
-    if (!in || !views || !computed || !gaps)
-        st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory copying a surface");
-    for (size_t l = 0, k = 0; st == SW_OK && l < s->loop_count; l++) {
-        in[l] = (sw_model_loop_input){.curves = views + k, .computed = computed + k,
-                                      .curve_count = loops[l].curve_count, .outer = loops[l].outer,
-                                      .gaps = gaps + k};
-        for (size_t c = 0; c < loops[l].curve_count; c++, k++) {
-            const sw_model_trim_curve *curve = &from->curves[loops[l].first_curve + c];
-            views[k] = sw_model_curve_view(curve);
-            computed[k] = curve->computed;
-            gaps[k] = curve->gap;
-        }
-    }
-    if (st == SW_OK) {
-        sw_nurbs_surface view = sw_model_surface_view(s);
-        /* Already oriented: the stored surface is the reparameterised one. */
-        st = sw_model_add_surface(to, &view, 0, in, s->loop_count, err);
-    }
-    if (st == SW_OK)
-        to->surfaces[to->surface_count - 1].reversed = s->reversed;
-    free(in);
-    free(views);
-    free(computed);
-    free(gaps);
-    return st;
-}
-
 sw_status scene_cache_place(scene_cache *cache, const char *path, const char *name,
                             const float color[4], const sw_import_options *options,
                             sw_import_report *report, sw_model *model, sw_error *err)
@@ -128,7 +80,7 @@ sw_status scene_cache_place(scene_cache *cache, const char *path, const char *na
             snprintf(full, sizeof full, "%.27s/%.27s", name, part->name);
         st = sw_model_begin_part(model, named ? full : name, color, err);
         for (size_t s = 0; st == SW_OK && s < part->surface_count; s++)
-            st = copy_surface(from, &from->surfaces[part->first_surface + s], model, err);
+            st = sw_model_copy_surface(from, part->first_surface + s, model, err);
     }
     if (from->model_tolerance > model->model_tolerance)
         model->model_tolerance = from->model_tolerance;
