@@ -20,6 +20,9 @@
 #   300 MB; it took 1 GB when every edge reached as far as the widest gap);
 #   it walks from close to far without a crack;
 # - a one-face periodic band: its seam sewn to itself, verified, walked;
+# - a wire swept along a helix of 30 turns, its one face's loops longer
+#   than one draw holds: cut into pieces sewn to each other, verified,
+#   walked;
 # - an IGES file of bounded planes (108), which the native reader does not
 #   take: read by OpenCASCADE instead, and said.
 set -uo pipefail
@@ -113,6 +116,15 @@ run info --json "$work/band.swpack"
 check "band: its one face is a surface, its seam sewn (free border: the two circles)" eval \
   '[ "$(surfaces "$work/out")" -eq 1 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); f=d[\"border\"][\"free_length\"]; sys.exit(0 if abs(f - 4*3.14159265*10) < 0.05 else 1)" "$work/out"'
 verified_and_walked band "$work/band.swpack"
+
+# ---- a helical sweep: one face whose loops hold more points than a draw ----------------------
+run build "$cases/spring.step" -o "$work/spring.swpack" --strict
+check "spring: builds under --strict, its face cut into pieces, and said" eval \
+  '[ "$(code)" -eq 0 ] && has "$work/out" "^seamwalk-pack: seams: 1 surfaces cut into [0-9]* pieces, 0 left whole"'
+run info --json "$work/spring.swpack"
+check "spring: the pieces are surfaces sewn to each other (free border: the two end circles)" eval \
+  '[ "$(surfaces "$work/out")" -ge 2 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); f=d[\"border\"][\"free_length\"]; sys.exit(0 if abs(f - 4*3.14159265) < 0.05 else 1)" "$work/out"'
+verified_and_walked spring "$work/spring.swpack"
 
 # ---- an IGES file of surfaces the native reader does not take -----------------------------------
 run build "$cases/planes.igs" -o "$work/planes.swpack"

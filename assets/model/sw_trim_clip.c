@@ -328,6 +328,14 @@ static sw_status add_crossing(cutter *k, const sw_model_trim_curve *c, double t,
     return SW_OK;
 }
 
+/* Coordinate axis of c at t, less the line's. */
+static double coord(const cutter *k, const sw_model_trim_curve *c, double t)
+{
+    double uv[2];
+    curve_uv(c, t, uv);
+    return uv[k->axis] - k->at;
+}
+
 /* Where c crosses the line, ascending, into ts (at most cap); SW_ERR_RANGE
  * where it comes within tol of the line without a clean crossing. */
 static sw_status find_crossings(const cutter *k, const sw_model_trim_curve *c, double *ts,
@@ -340,21 +348,29 @@ static sw_status find_crossings(const cutter *k, const sw_model_trim_curve *c, d
         if (!(t1 > t0))
             continue;
         for (int s = span == c->degree ? 0 : 1; s <= SAMPLES_PER_SPAN; s++) {
-            double t = t0 + (t1 - t0) * s / SAMPLES_PER_SPAN, uv[2];
-            curve_uv(c, t, uv);
-            double f = uv[k->axis] - k->at;
-            if (fabs(f) <= k->tol)
-                return sw_error_set(err, SW_ERR_RANGE, "trim cut: a curve runs within %g of "
-                                    "the cut at %g", k->tol, k->at);
+            double t = t0 + (t1 - t0) * s / SAMPLES_PER_SPAN;
+            double f = coord(k, c, t);
+            if (fabs(f) <= k->tol) {
+                /* On the line: a crossing only where the curve passes from
+                 * one side to the other there (sampled just after it) */
+                double h = (t1 - t0) / (SAMPLES_PER_SPAN * 64.0);
+                int end = (span == c->degree && s == 0) ||
+                          (span + 1 == c->count && s == SAMPLES_PER_SPAN);
+                double before = end ? 0 : coord(k, c, t - h), after = end ? 0 : coord(k, c, t + h);
+                if (end || fabs(before) <= k->tol || fabs(after) <= k->tol ||
+                    (before > 0) == (after > 0))
+                    return sw_error_set(err, SW_ERR_RANGE, "trim cut: a curve %s the cut at %g",
+                                        end ? "ends on" : "touches", k->at);
+                t += h, f = after;
+            }
             if (!(span == c->degree && s == 0) && (f > 0) != (prev_f > 0)) {
                 if (*count == cap)
                     return sw_error_set(err, SW_ERR_RANGE, "trim cut: a curve crosses the cut "
                                         "more than %d times", cap);
                 double lo = prev_t, hi = t;
                 for (int b = 0; b < BISECTIONS && hi - lo > 0; b++) {
-                    double mid = 0.5 * (lo + hi), m[2];
-                    curve_uv(c, mid, m);
-                    if ((m[k->axis] - k->at > 0) == (prev_f > 0))
+                    double mid = 0.5 * (lo + hi);
+                    if ((coord(k, c, mid) > 0) == (prev_f > 0))
                         lo = mid;
                     else
                         hi = mid;
