@@ -243,7 +243,6 @@ static sw_status pack_verified(const build_options *o, progress_context *pc,
         st = verify_before_writing(*bytes, *size, model, failed, err);
         if (st != SW_ERR_FORMAT || round == REPAIR_ROUNDS)
             break;
-        fprintf(stderr, "ROUND %d vertices %u collapses %u: %s\n", round, seams->original_count, seams->collapse_count, err->message); /*DBG*/
         uint32_t newly = sw_seam_pin_surfaces(seams, failed, pinned);
         if (newly == 0)
             break;
