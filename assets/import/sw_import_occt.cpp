@@ -291,6 +291,26 @@ double end_reach(const TopoDS_Edge &edge, double edge_tolerance, int end)
     return v.IsNull() ? edge_tolerance : std::max(edge_tolerance, BRep_Tool::Tolerance(v));
 }
 
+/* How far the trim's image on the surface ends from the edge's vertices
+ * (the larger of its two ends): a p-curve the face's own conversion
+ * re-approximated, or one the file gave loosely, ends micrometres from the
+ * vertex its neighbour face's trim ends at, and only this distance, not
+ * the edge's tolerance, says so. */
+double ends_off(const TopoDS_Edge &edge, const TopoDS_Face &converted, const TrimCurve &trim)
+{
+    Handle(Geom_Surface) surface = BRep_Tool::Surface(converted);
+    double off = 0;
+    for (int end = 0; end < 2; end++) {
+        TopoDS_Vertex v = end ? TopExp::LastVertex(edge, Standard_True)
+                              : TopExp::FirstVertex(edge, Standard_True);
+        if (v.IsNull())
+            continue;
+        const double *uv = end ? &trim.ctrl[trim.ctrl.size() - 4] : &trim.ctrl[0];
+        off = std::max(off, surface->Value(uv[0], uv[1]).Distance(BRep_Tool::Pnt(v)));
+    }
+    return off;
+}
+
 /* The loop of one wire: each edge's p-curve on the converted face, in wire
  * order, reversed where the edge runs against its curve. Returns why it
  * failed, or "". */
@@ -318,7 +338,7 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
          * strays from the edge (shape healing widens it where the file's
          * faces do not meet): the sewing uses it as the file's own word. */
         double edge_tolerance = std::max(BRep_Tool::Tolerance(edge), BRep_Tool::Tolerance(moved));
-        loop->gaps.push_back(edge_tolerance);
+        loop->gaps.push_back(std::max(edge_tolerance, ends_off(edge, converted, loop->curves.back())));
         for (int end = 0; end < 2; end++)
             loop->reach[end].push_back(
                 end_reach(edge, std::max(edge_tolerance, Precision::Confusion()), end));
@@ -337,6 +357,31 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
 double gap_floor_mm(const ImportContext *ctx)
 {
     return std::max(ctx->report->model_tolerance_mm, (double)ctx->model->model_tolerance);
+}
+
+/* A plane whose conversion does not hold the face's trims is made again
+ * over them (plane_over), a thousandth wider each way; the trims keep
+ * their parameters. */
+void widen_plane(const TopoDS_Face &face, const TopoDS_Face &converted,
+                 const std::vector<Loop> &loops, Surface *surface)
+{
+    std::vector<const TrimCurve *> curves;
+    for (const Loop &loop : loops)
+        for (const TrimCurve &c : loop.curves)
+            curves.push_back(&c);
+    double box[4];
+    trims_box(curves, box);
+    double u0 = surface->knots_u.front(), u1 = surface->knots_u.back();
+    double v0 = surface->knots_v.front(), v1 = surface->knots_v.back();
+    if (box[0] >= u0 && box[1] <= u1 && box[2] >= v0 && box[3] <= v1)
+        return;
+    double du = 1e-3 * (box[1] - box[0]), dv = 1e-3 * (box[3] - box[2]);
+    const double wider[4] = {std::fmin(box[0] - du, u0), std::fmax(box[1] + du, u1),
+                             std::fmin(box[2] - dv, v0), std::fmax(box[3] + dv, v1)};
+    Handle(Geom_BSplineSurface) b = plane_over(BRep_Tool::Surface(face),
+                                               bspline_surface_of(converted), wider);
+    if (!b.IsNull())
+        fill_surface(b, surface);
 }
 
 /* Adds one face to the current part. mirrored: the part's placement flips
@@ -376,6 +421,7 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
         loops.push_back(std::move(loop));
     }
 
+    widen_plane(forward, converted, loops, &surface);
     std::vector<std::vector<sw_nurbs_curve>> views(loops.size());
     std::vector<sw_model_loop_input> inputs(loops.size());
     for (size_t i = 0; i < loops.size(); i++) {

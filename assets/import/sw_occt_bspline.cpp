@@ -6,6 +6,9 @@
 #include <Geom2dConvert.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <GeomConvert.hxx>
+#include <Geom_Plane.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TColStd_Array1OfReal.hxx>
 
 #include <cmath>
@@ -115,6 +118,43 @@ void fill_surface(const Handle(Geom_BSplineSurface) &b, Surface *out)
     out->view.knots_u = out->knots_u.data();
     out->view.knots_v = out->knots_v.data();
     out->view.ctrl = out->ctrl.data();
+}
+
+void trims_box(const std::vector<const TrimCurve *> &curves, double box[4])
+{
+    box[0] = box[2] = HUGE_VAL, box[1] = box[3] = -HUGE_VAL;
+    for (const TrimCurve *c : curves)
+        for (size_t i = 0; i + 3 < c->ctrl.size(); i += 4)
+            for (int a = 0; a < 2; a++)
+                box[2 * a] = std::fmin(box[2 * a], c->ctrl[i + a]),
+                box[2 * a + 1] = std::fmax(box[2 * a + 1], c->ctrl[i + a]);
+}
+
+Handle(Geom_BSplineSurface) plane_over(const Handle(Geom_Surface) &basis,
+                                       const Handle(Geom_BSplineSurface) &b, const double box[4])
+{
+    Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(basis);
+    if (plane.IsNull() || !(box[1] > box[0]) || !(box[3] > box[2]))
+        return Handle(Geom_BSplineSurface)();
+    double u0, u1, v0, v1;
+    b->Bounds(u0, u1, v0, v1);
+    /* Same parameters: the conversion and the plane agree at its corners
+     * and centre, within a billionth of its size. */
+    double size = b->Value(u0, v0).Distance(b->Value(u1, v1));
+    const double at[5][2] = {{u0, v0}, {u1, v0}, {u0, v1}, {u1, v1},
+                             {0.5 * (u0 + u1), 0.5 * (v0 + v1)}};
+    for (const auto &p : at)
+        if (b->Value(p[0], p[1]).Distance(plane->Value(p[0], p[1])) > 1e-9 * size + 1e-12)
+            return Handle(Geom_BSplineSurface)();
+    TColgp_Array2OfPnt poles(1, 2, 1, 2);
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            poles(i + 1, j + 1) = plane->Value(box[i], box[2 + j]);
+    TColStd_Array1OfReal ku(1, 2), kv(1, 2);
+    TColStd_Array1OfInteger mu(1, 2), mv(1, 2);
+    ku(1) = box[0], ku(2) = box[1], kv(1) = box[2], kv(2) = box[3];
+    mu(1) = mu(2) = mv(1) = mv(2) = 2;
+    return new Geom_BSplineSurface(poles, ku, kv, mu, mv, 1, 1);
 }
 
 }  // namespace sw_occt

@@ -41,6 +41,19 @@ TrimCurve trim_curve_of(const Handle(Geom2d_BSplineCurve) &b);
 Handle(Geom_BSplineSurface) bspline_surface_of(const TopoDS_Face &face);
 void fill_surface(const Handle(Geom_BSplineSurface) &b, Surface *out);
 
+/* The box (u0, u1, v0, v1) of the loops' control points: it holds the
+ * curves (convex hull, positive weights). */
+void trims_box(const std::vector<const TrimCurve *> &curves, double box[4]);
+
+/* The face's plane as a bilinear B-spline over box, when b (the face's
+ * conversion) is that plane in the same parameters; null otherwise (not a
+ * plane, or parameterised otherwise). A plane's conversion covers the
+ * face's own bounds, which need not hold its trims (a fetched lock body:
+ * trims 2 mm past a 16 mm plate's conversion, drawn clamped to its border
+ * and left unsewn). */
+Handle(Geom_BSplineSurface) plane_over(const Handle(Geom_Surface) &basis,
+                                       const Handle(Geom_BSplineSurface) &b, const double box[4]);
+
 }  // namespace sw_occt
 
 #endif
