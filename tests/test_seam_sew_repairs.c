@@ -162,6 +162,50 @@ static void test_trim_gaps_widen_the_tolerance(void)
     SW_CHECK(seams_between_halves(0.5e-3, 0) >= 1);      /* within the tolerance alone */
 }
 
+/* Two small halves (0.1 across: [0, 0.05] and [0.05 + gap, 0.1] by [0,
+ * 0.1]) beside a plane 100 times their size, tolerance 1e-4, each trim
+ * claiming curve_gap: how many edges are seams? */
+static size_t seams_between_small_halves(double gap, double curve_gap)
+{
+    shape_plane small, big;
+    shape_plane_init(&small, 3, 2, 2, 0.1, 0.1);
+    shape_plane_init(&big, 1, 1, 1, 10, 10);
+    shape_rect left, right, whole;
+    shape_rect_init(&left, 0, 0.05, 0, 0.1);
+    shape_rect_init(&right, 0.05 + gap, 0.1, 0, 0.1);
+    shape_rect_init(&whole, 0, 10, 0, 10);
+    const double gaps[4] = {curve_gap, curve_gap, curve_gap, curve_gap};
+    sw_model_loop_input a[1] = {{left.curves, NULL, 4, 1, gaps}};
+    sw_model_loop_input b[1] = {{right.curves, NULL, 4, 1, gaps}};
+    sw_model_loop_input c[1] = {{whole.curves, NULL, 4, 1, NULL}};
+    for (int i = 0; i < big.surface.count_u * big.surface.count_v; i++)
+        big.ctrl[4 * i + 2] += 20;   /* apart from the halves */
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &small.surface, 0, a, 1, &err) == SW_OK);
+    SW_CHECK(sw_model_add_surface(&m, &small.surface, 0, b, 1, &err) == SW_OK);
+    SW_CHECK(sw_model_add_surface(&m, &big.surface, 0, c, 1, &err) == SW_OK);
+    sw_seam_host h;
+    sw_seam_report r = {0};
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){1e-4}, &h, &r, &err) == SW_OK);
+    check_host(&h);
+    sw_seam_host_free(&h);
+    sw_model_free(&m);
+    return r.seams;
+}
+
+/* A trim's gap is also held to SW_SEAM_GAP_CAP of its own surface's loops
+ * (0.11 across: 1.1e-3), not only of the model (28 across): halves 5e-3
+ * apart whose edges claim 5e-3 each stay apart (a threaded hole in a 350
+ * mm bed had its helix sewn across its turns by such edges); 1e-3 apart,
+ * within both held gaps, they meet. */
+static void test_gaps_are_held_to_their_surface(void)
+{
+    SW_CHECK(seams_between_small_halves(5e-3, 5e-3) == 0);
+    SW_CHECK(seams_between_small_halves(1e-3, 1e-3) >= 1);
+}
+
 /* A trim's gap is held to SW_SEAM_GAP_CAP of the model (its box is 1.41
  * across: 0.0141): borders 0.05 apart whose edges claim 0.05 each stay
  * apart (a sloppy edge's tolerance of 6 mm on a 41 mm part sewed its
@@ -176,6 +220,7 @@ int main(void)
 {
     SW_RUN(test_trim_gaps_widen_the_tolerance);
     SW_RUN(test_gaps_are_held_to_the_model);
+    SW_RUN(test_gaps_are_held_to_their_surface);
     SW_RUN(test_trim_past_the_domain_is_put_on_it);
     SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
     SW_RUN(test_tjunction_step_merges_a_spike_tip_into_its_neighbour);

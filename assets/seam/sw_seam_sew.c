@@ -63,30 +63,45 @@ double sw_seam_default_tolerance(const sw_model *model, const sw_seam_options *o
     return floor > 0 ? floor : 1e-3;
 }
 
-/* Trim gaps held to SW_SEAM_GAP_CAP of the trims' box: a file's edge
- * tolerance says how far the edge may stray from the faces, and a border
- * is sewn within it; but shape healing left edges of printer parts at 3.4
- * and 6 mm on 70 and 41 mm parts, and their vertices were sewn into every
- * border within that (one into a circle 390 times, 3.7 mm off), folding
- * the faces' loops. OpenCASCADE sews those files at the pack's tolerance.
- * The cap keeps what real files need (the boxed sphere's gaps reach 3.4e-3
- * of its size, and it sews shut only with them). Returns the vertices
- * held. */
+/* The diagonal of the box of vertices [from, to) of poly. */
+static double box_size(const sw_seam_polylines *poly, size_t from, size_t to)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t v = from; v < to; v++)
+        for (int i = 0; i < 3; i++)
+            lo[i] = fmin(lo[i], poly->p[3 * v + i]), hi[i] = fmax(hi[i], poly->p[3 * v + i]);
+    if (to <= from)
+        return 0;
+    return sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+/* Trim gaps held to SW_SEAM_GAP_CAP of the model's box and of their own
+ * surface's loops' box: a file's edge tolerance says how far the edge may
+ * stray from the faces, and a border is sewn within it; but shape healing
+ * left edges of printer parts at 3.4 and 6 mm on 70 and 41 mm parts, and
+ * their vertices were sewn into every border within that (one into a
+ * circle 390 times, 3.7 mm off), folding the faces' loops; and a threaded
+ * hole 3 mm across in a 350 mm printer bed, its edges that loose, had its
+ * helix sewn onto itself across the turns (816 points of its loop onto one
+ * vertex), which the model's cap alone allowed. OpenCASCADE sews those
+ * files at the pack's tolerance. The caps keep what real files need (the
+ * boxed sphere's gaps reach 3.4e-3 of its size, and it sews shut only with
+ * them). Loops are stored surface by surface. Returns the vertices held. */
 static size_t hold_gaps(sw_seam_polylines *poly)
 {
     if (!poly->gap || poly->vertex_count == 0)
         return 0;
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (size_t v = 0; v < poly->vertex_count; v++)
-        for (int i = 0; i < 3; i++)
-            lo[i] = fmin(lo[i], poly->p[3 * v + i]), hi[i] = fmax(hi[i], poly->p[3 * v + i]);
-    double size = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                       (hi[2] - lo[2]) * (hi[2] - lo[2]));
-    float cap = (float)(SW_SEAM_GAP_CAP * size);
+    double model_cap = SW_SEAM_GAP_CAP * box_size(poly, 0, poly->vertex_count);
     size_t held = 0;
-    for (size_t v = 0; v < poly->vertex_count; v++)
-        if (poly->gap[v] > cap)
-            poly->gap[v] = cap, held++;
+    for (size_t s = 0; s < poly->surface_count; s++) {
+        size_t from = poly->loop_start[poly->surface_loops[s]];
+        size_t to = poly->loop_start[poly->surface_loops[s + 1]];
+        float cap = (float)fmin(model_cap, SW_SEAM_GAP_CAP * box_size(poly, from, to));
+        for (size_t v = from; v < to; v++)
+            if (poly->gap[v] > cap)
+                poly->gap[v] = cap, held++;
+    }
     return held;
 }
 
