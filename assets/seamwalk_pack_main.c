@@ -304,10 +304,15 @@ static void print_summary(const build_options *o, const sw_model *model,
                           const sw_import_report *reports, const seam_summary *seams,
                           size_t bytes, double seconds)
 {
-    for (int i = 0; i < o->input_count; i++)
+    for (int i = 0; i < o->input_count; i++) {
+        if (reports[i].pcurves_reprojected > 0)
+            printf("seamwalk-pack: %s: %zu parameter curves projected again from their edges "
+                   "(the conversion's strayed)\n", sw_pack_tool_base_name(o->inputs[i]),
+                   reports[i].pcurves_reprojected);
         if (reports[i].pcurves_computed > 0)
             printf("seamwalk-pack: %s: %zu parameter curves computed from model-space curves\n",
                    sw_pack_tool_base_name(o->inputs[i]), reports[i].pcurves_computed);
+    }
     const sw_seam_report *r = &seams->sewing;
     printf("seamwalk-pack: seams: %zu boundary vertices, %zu edges (%zu sewn, %zu free, %zu "
            "non-manifold), tolerance %g; %" PRIu32 " collapses; sewing %.2f s, simplifying "

@@ -18,6 +18,24 @@ if(SW_OCCT_FOUND)
   sw_host_only_test(test_import_occt_truncations PROGRAMS test_import_occt)
 endif()
 
+# The importer's p-curve check (assets/import/sw_occt_pcurve.h), in C++
+# against OCCT: C++ gets its own warnings (sw_apply_warnings' are C's).
+if(SW_OCCT_FOUND)
+  add_executable(test_occt_pcurve test_occt_pcurve.cpp)
+  target_include_directories(test_occt_pcurve PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
+    ${PROJECT_SOURCE_DIR}/assets/import)
+  target_include_directories(test_occt_pcurve SYSTEM PRIVATE ${OpenCASCADE_INCLUDE_DIR})
+  target_link_libraries(test_occt_pcurve PRIVATE sw_assets sw_core ${SW_OCCT_LIBRARIES})
+  target_compile_options(test_occt_pcurve PRIVATE -Wall -Wextra -Wshadow)
+  if(SW_WERROR)
+    target_compile_options(test_occt_pcurve PRIVATE -Werror)
+  endif()
+  add_test(NAME test_occt_pcurve COMMAND test_occt_pcurve)
+  set_tests_properties(test_occt_pcurve PROPERTIES LABELS unit ENVIRONMENT
+    "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/occt-lsan.supp:print_suppressions=0")
+  sw_host_only_test(test_occt_pcurve PROGRAMS test_occt_pcurve)
+endif()
+
 # A STEP file through the OpenCASCADE importer, in-process (its time and
 # memory capped by run-fuzzers.sh). OCCT's singletons never freed: leaks
 # are not checked here (occt-lsan.supp covers the tests').

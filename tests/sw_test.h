@@ -71,7 +71,7 @@ static inline unsigned char *sw_test_read_file(const char *path, size_t *size)
     fseek(f, 0, SEEK_END);
     long n = ftell(f);
     fseek(f, 0, SEEK_SET);
-    unsigned char *bytes = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    unsigned char *bytes = n >= 0 ? (unsigned char *)malloc((size_t)n + 1) : NULL;
     int read = bytes && fread(bytes, 1, (size_t)n, f) == (size_t)n;
     fclose(f);
     SW_CHECK_MSG(read, "cannot read %s", path);

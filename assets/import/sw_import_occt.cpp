@@ -26,6 +26,7 @@ extern "C" {
 }
 #include "sw_occt_bspline.h"
 #include "sw_occt_internal.h"
+#include "sw_occt_pcurve.h"
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
@@ -316,7 +317,7 @@ double ends_off(const TopoDS_Edge &edge, const TopoDS_Face &converted, const Tri
  * failed, or "". */
 std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
                          const BRepBuilderAPI_NurbsConvert &conv, const TopoDS_Face &converted,
-                         int computed, double floor_mm, Loop *loop)
+                         int computed, double floor_mm, Loop *loop, int *reprojected)
 {
     int edges_in_wire = 0, explored = 0;
     for (TopoDS_Iterator it(wire); it.More(); it.Next())
@@ -329,6 +330,13 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
         Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(moved, converted, f, l);
         if (c.IsNull())
             return "an edge without a parameter curve";
+        /* Ten times the file's edge tolerance (not the converted edge's,
+         * which the conversion widens to cover its own approximation). */
+        bool projected = false;
+        c = faithful_pcurve(moved, converted, c, f, l,
+                            10.0 * std::max(BRep_Tool::Tolerance(edge), Precision::Confusion()),
+                            &projected);
+        *reprojected += projected;
         Handle(Geom2d_BSplineCurve) b = clamped_pcurve(c, f, l);
         if (edge.Orientation() == TopAbs_REVERSED)
             b->Reverse();
@@ -414,8 +422,10 @@ sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
         Loop loop;
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
+        int reprojected = 0;
         std::string why = loop_of_wire(wire, forward, conv, converted, computed,
-                                       gap_floor_mm(ctx), &loop);
+                                       gap_floor_mm(ctx), &loop, &reprojected);
+        ctx->report->pcurves_reprojected += (size_t)reprojected;
         if (!why.empty())
             return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s", why.c_str());
         loops.push_back(std::move(loop));

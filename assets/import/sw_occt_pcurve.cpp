@@ -1,0 +1,136 @@
+/* SPDX-License-Identifier: MIT */
+/* P-curves checked against their edges (sw_occt_pcurve.h). */
+#include "sw_occt_pcurve.h"
+
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <GeomProjLib.hxx>
+#include <Precision.hxx>
+#include <ShapeConstruct_ProjectCurveOnSurface.hxx>
+#include <Geom_Curve.hxx>
+#include <Geom_Surface.hxx>
+#include <Standard_Failure.hxx>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sw_occt {
+
+/* Samples along the curve: enough to see a swing of a fraction of it. */
+static const int kSamples = 65;
+
+static double stray_of(const Handle(Geom2d_Curve) &c, const Handle(Geom_Surface) &s,
+                       const Handle(Geom_Curve) &c3d, double first, double last)
+{
+    double worst = 0;
+    for (int i = 0; i < kSamples; i++) {
+        double t = first + (last - first) * i / (kSamples - 1);
+        gp_Pnt2d uv = c->Value(t);
+        worst = std::max(worst, s->Value(uv.X(), uv.Y()).Distance(c3d->Value(t)));
+    }
+    return worst;
+}
+
+/* The same, measured to the nearest point of the 3D curve, not the point
+ * at the same parameter: a converted edge need not keep its p-curve's
+ * parameters in step with its 3D curve's, and where it does not, the curve
+ * may still lie on the edge. */
+static double distance_off(const Handle(Geom2d_Curve) &c, const Handle(Geom_Surface) &s,
+                           const Handle(Geom_Curve) &c3d, double first, double last)
+{
+    double worst = 0;
+    for (int i = 0; i < kSamples; i++) {
+        gp_Pnt2d uv = c->Value(first + (last - first) * i / (kSamples - 1));
+        gp_Pnt q = s->Value(uv.X(), uv.Y());
+        GeomAPI_ProjectPointOnCurve onto(q, c3d, first, last);
+        double d = std::min(q.Distance(c3d->Value(first)), q.Distance(c3d->Value(last)));
+        if (onto.NbPoints() > 0)
+            d = std::min(d, onto.LowerDistance());
+        worst = std::max(worst, d);
+    }
+    return worst;
+}
+
+double pcurve_stray(const TopoDS_Edge &edge, const TopoDS_Face &face,
+                    const Handle(Geom2d_Curve) &c, double first, double last)
+{
+    Standard_Real f3, l3;
+    Handle(Geom_Curve) c3d = BRep_Tool::Curve(edge, f3, l3);
+    Handle(Geom_Surface) s = BRep_Tool::Surface(face);
+    if (c3d.IsNull() || s.IsNull() || c.IsNull())
+        return -1;
+    return stray_of(c, s, c3d, first, last);
+}
+
+/* The edge's 3D curve projected onto s over [first, last]: OCCT's
+ * projection, else shape healing's (which keeps the parameters); null when
+ * both fail. */
+static Handle(Geom2d_Curve) projected_curve(Handle(Geom_Curve) c3d, const Handle(Geom_Surface) &s,
+                                            double first, double last, double *stray)
+{
+    Handle(Geom2d_Curve) best;
+    *stray = HUGE_VAL;
+    for (int way = 0; way < 2; way++) {
+        Handle(Geom2d_Curve) c;
+        try {
+            if (way == 0) {
+                c = GeomProjLib::Curve2d(c3d, first, last, s);
+            } else {
+                Handle(ShapeConstruct_ProjectCurveOnSurface) proj =
+                    new ShapeConstruct_ProjectCurveOnSurface;
+                proj->Init(s, Precision::Confusion());
+                if (!proj->Perform(c3d, first, last, c))
+                    c.Nullify();
+            }
+        } catch (const Standard_Failure &) {
+            c.Nullify();
+        }
+        double d = c.IsNull() ? HUGE_VAL : distance_off(c, s, c3d, first, last);
+        if (d < *stray)
+            best = c, *stray = d;
+    }
+    return best;
+}
+
+/* Do the curves start and end at the same (u, v), within tol? A
+ * projection may land a period away on a closed surface, the same points
+ * in space and the wrong side of the seam. */
+static bool same_ends(const Handle(Geom2d_Curve) &a, const Handle(Geom2d_Curve) &b, double first,
+                      double last, double tol)
+{
+    return a->Value(first).Distance(b->Value(first)) <= tol &&
+           a->Value(last).Distance(b->Value(last)) <= tol;
+}
+
+Handle(Geom2d_Curve) faithful_pcurve(const TopoDS_Edge &edge, const TopoDS_Face &face,
+                                     const Handle(Geom2d_Curve) &c, double first, double last,
+                                     double allowed, bool *projected)
+{
+    *projected = false;
+    double stray = pcurve_stray(edge, face, c, first, last);
+    if (stray <= allowed)
+        return c;
+    Standard_Real f3, l3;
+    Handle(Geom_Curve) c3d = BRep_Tool::Curve(edge, f3, l3);
+    Handle(Geom_Surface) s = BRep_Tool::Surface(face);
+    /* A stray under a ten-thousandth of the edge is left alone: no one
+     * sees it, and projecting costs. */
+    double length = 0;
+    for (int i = 1; i < kSamples; i++)
+        length += c3d->Value(first + (last - first) * (i - 1) / (kSamples - 1))
+                      .Distance(c3d->Value(first + (last - first) * i / (kSamples - 1)));
+    double off = distance_off(c, s, c3d, first, last);
+    if (off <= std::max(allowed, 1e-4 * length))
+        return c;
+    double again_off;
+    Handle(Geom2d_Curve) again = projected_curve(c3d, s, first, last, &again_off);
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    double span = std::max(std::fabs(u1 - u0), std::fabs(v1 - v0));
+    if (again.IsNull() || !(again_off < off) || !same_ends(c, again, first, last, 1e-4 * span))
+        return c;
+    *projected = true;
+    return again;
+}
+
+}  // namespace sw_occt

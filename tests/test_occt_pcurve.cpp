@@ -1,0 +1,95 @@
+/* SPDX-License-Identifier: MIT */
+/* sw_occt::faithful_pcurve (assets/import/sw_occt_pcurve.h): a p-curve that
+ * strays from its edge is projected again from the edge's 3D curve; one
+ * that follows it, or strays by less than a ten-thousandth of the edge, is
+ * kept. On a cylinder made here, with its top circle's true p-curve and
+ * with lines moved off it. */
+#include "sw_occt_pcurve.h"
+#include "sw_test.h"
+
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAbs_SurfaceType.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+/* The cylinder's side and an edge of it that is not its seam (a circle). */
+static bool side_and_circle(TopoDS_Face *face, TopoDS_Edge *edge)
+{
+    static TopoDS_Shape shape = BRepPrimAPI_MakeCylinder(5.0, 10.0).Shape();
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+        TopoDS_Face side = TopoDS::Face(f.Current());
+        if (BRepAdaptor_Surface(side).GetType() != GeomAbs_Cylinder)
+            continue;
+        for (TopExp_Explorer e(side, TopAbs_EDGE); e.More(); e.Next()) {
+            TopoDS_Edge circle = TopoDS::Edge(e.Current());
+            if (BRep_Tool::IsClosed(circle, side))
+                continue;   /* the seam */
+            *face = side, *edge = circle;
+            return true;
+        }
+    }
+    return false;
+}
+
+/* The edge's own p-curve, moved by dv in v. */
+static Handle(Geom2d_Curve) moved_by(const TopoDS_Edge &edge, const TopoDS_Face &face, double dv,
+                                     double *first, double *last)
+{
+    Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(edge, face, *first, *last);
+    Handle(Geom2d_Curve) copy = Handle(Geom2d_Curve)::DownCast(c->Copy());
+    copy->Translate(gp_Vec2d(0.0, dv));
+    return copy;
+}
+
+static void test_a_true_pcurve_is_kept(void)
+{
+    TopoDS_Face face;
+    TopoDS_Edge edge;
+    SW_CHECK(side_and_circle(&face, &edge));
+    double f = 0, l = 0;
+    Handle(Geom2d_Curve) c = moved_by(edge, face, 0.0, &f, &l);
+    bool projected = true;
+    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, &projected);
+    SW_CHECK(!projected && out == c);
+    SW_CHECK(sw_occt::pcurve_stray(edge, face, c, f, l) < 1e-9);
+}
+
+static void test_a_stray_pcurve_is_projected_again(void)
+{
+    TopoDS_Face face;
+    TopoDS_Edge edge;
+    SW_CHECK(side_and_circle(&face, &edge));
+    double f = 0, l = 0;
+    Handle(Geom2d_Curve) c = moved_by(edge, face, -3.0, &f, &l);
+    SW_CHECK_NEAR(sw_occt::pcurve_stray(edge, face, c, f, l), 3.0, 1e-9);
+    bool projected = false;
+    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, &projected);
+    SW_CHECK(projected);
+    double stray = sw_occt::pcurve_stray(edge, face, out, f, l);
+    SW_CHECK_MSG(stray < 1e-6, "projected again, it strays %g", stray);
+}
+
+/* Off by 1e-3 mm on a circle 31.4 mm long: under a ten-thousandth of it. */
+static void test_a_small_stray_is_left_alone(void)
+{
+    TopoDS_Face face;
+    TopoDS_Edge edge;
+    SW_CHECK(side_and_circle(&face, &edge));
+    double f = 0, l = 0;
+    Handle(Geom2d_Curve) c = moved_by(edge, face, 1e-3, &f, &l);
+    bool projected = true;
+    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, &projected);
+    SW_CHECK(!projected && out == c);
+}
+
+int main()
+{
+    SW_RUN(test_a_true_pcurve_is_kept);
+    SW_RUN(test_a_stray_pcurve_is_projected_again);
+    SW_RUN(test_a_small_stray_is_left_alone);
+    return sw_test_finish();
+}
