@@ -14,32 +14,45 @@
 #include "sw_sew_internal.h"
 #include "sw_test.h"
 
-/* Two trimmed halves of the plane z = 0, [0, 0.5] and [0.5 + gap, 1] by
- * [0, 1], each trim curve with the gap the file would give it (its edge
- * tolerance): sewn at tolerance 1e-3, how many edges are seams? */
-static size_t seams_between_halves(double gap, double curve_gap)
+/* Two trimmed halves of the plane z = 0, [0, size / 2] and [size / 2 +
+ * gap, size] by [0, size], each trim curve with the gap the file would
+ * give it (its edge tolerance), with far (1) a plane 100 times their size
+ * beside them: sewn at tol, how many edges are seams? */
+static size_t seams_between(double size, double gap, double curve_gap, double tol, int far)
 {
-    shape_plane plane;
-    shape_plane_init(&plane, 3, 2, 2, 1, 1);
-    shape_rect left, right;
-    shape_rect_init(&left, 0, 0.5, 0, 1);
-    shape_rect_init(&right, 0.5 + gap, 1, 0, 1);
+    shape_plane plane, big;
+    shape_plane_init(&plane, 3, 2, 2, size, size);
+    shape_plane_init(&big, 1, 1, 1, 100 * size, 100 * size);
+    for (int i = 0; i < big.surface.count_u * big.surface.count_v; i++)
+        big.ctrl[4 * i + 2] += 200 * size;   /* apart from the halves */
+    shape_rect left, right, whole;
+    shape_rect_init(&left, 0, size / 2, 0, size);
+    shape_rect_init(&right, size / 2 + gap, size, 0, size);
+    shape_rect_init(&whole, 0, 100 * size, 0, 100 * size);
     const double gaps[4] = {curve_gap, curve_gap, curve_gap, curve_gap};
     sw_model_loop_input a[1] = {{left.curves, NULL, 4, 1, gaps}};
     sw_model_loop_input b[1] = {{right.curves, NULL, 4, 1, gaps}};
+    sw_model_loop_input c[1] = {{whole.curves, NULL, 4, 1, NULL}};
     sw_model m;
     sw_model_init(&m);
     sw_error err;
     SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, a, 1, &err) == SW_OK);
     SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, b, 1, &err) == SW_OK);
-    SW_CHECK(m.surface_count == 2 && m.curves[0].gap == curve_gap);
+    SW_CHECK(!far || sw_model_add_surface(&m, &big.surface, 0, c, 1, &err) == SW_OK);
+    SW_CHECK(m.surface_count == 2u + (far != 0) && m.curves[0].gap == curve_gap);
     sw_seam_host h;
     sw_seam_report r = {0};
-    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){1e-3}, &h, &r, &err) == SW_OK);
+    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){tol}, &h, &r, &err) == SW_OK);
     check_host(&h);
     sw_seam_host_free(&h);
     sw_model_free(&m);
     return r.seams;
+}
+
+/* The halves 1 across, sewn at 1e-3, alone. */
+static size_t seams_between_halves(double gap, double curve_gap)
+{
+    return seams_between(1.0, gap, curve_gap, 1e-3, 0);
 }
 
 /* Step 3b on its own (sw_sew_tjunctions.c): one loop runs a, x, b, another
@@ -162,48 +175,16 @@ static void test_trim_gaps_widen_the_tolerance(void)
     SW_CHECK(seams_between_halves(0.5e-3, 0) >= 1);      /* within the tolerance alone */
 }
 
-/* Two small halves (0.1 across: [0, 0.05] and [0.05 + gap, 0.1] by [0,
- * 0.1]) beside a plane 100 times their size, tolerance 1e-4, each trim
- * claiming curve_gap: how many edges are seams? */
-static size_t seams_between_small_halves(double gap, double curve_gap)
-{
-    shape_plane small, big;
-    shape_plane_init(&small, 3, 2, 2, 0.1, 0.1);
-    shape_plane_init(&big, 1, 1, 1, 10, 10);
-    shape_rect left, right, whole;
-    shape_rect_init(&left, 0, 0.05, 0, 0.1);
-    shape_rect_init(&right, 0.05 + gap, 0.1, 0, 0.1);
-    shape_rect_init(&whole, 0, 10, 0, 10);
-    const double gaps[4] = {curve_gap, curve_gap, curve_gap, curve_gap};
-    sw_model_loop_input a[1] = {{left.curves, NULL, 4, 1, gaps}};
-    sw_model_loop_input b[1] = {{right.curves, NULL, 4, 1, gaps}};
-    sw_model_loop_input c[1] = {{whole.curves, NULL, 4, 1, NULL}};
-    for (int i = 0; i < big.surface.count_u * big.surface.count_v; i++)
-        big.ctrl[4 * i + 2] += 20;   /* apart from the halves */
-    sw_model m;
-    sw_model_init(&m);
-    sw_error err;
-    SW_CHECK(sw_model_add_surface(&m, &small.surface, 0, a, 1, &err) == SW_OK);
-    SW_CHECK(sw_model_add_surface(&m, &small.surface, 0, b, 1, &err) == SW_OK);
-    SW_CHECK(sw_model_add_surface(&m, &big.surface, 0, c, 1, &err) == SW_OK);
-    sw_seam_host h;
-    sw_seam_report r = {0};
-    SW_CHECK(sw_seam_sew_model(&m, &(sw_seam_options){1e-4}, &h, &r, &err) == SW_OK);
-    check_host(&h);
-    sw_seam_host_free(&h);
-    sw_model_free(&m);
-    return r.seams;
-}
-
 /* A trim's gap is also held to SW_SEAM_GAP_CAP of its own surface's loops
- * (0.11 across: 1.1e-3), not only of the model (28 across): halves 5e-3
+ * (0.11 across: 1.1e-3), not only of the model (over 20 across): halves
+ * 0.1 across beside a plane 10 across, sewn at 1e-4, 5e-3
  * apart whose edges claim 5e-3 each stay apart (a threaded hole in a 350
  * mm bed had its helix sewn across its turns by such edges); 1e-3 apart,
  * within both held gaps, they meet. */
 static void test_gaps_are_held_to_their_surface(void)
 {
-    SW_CHECK(seams_between_small_halves(5e-3, 5e-3) == 0);
-    SW_CHECK(seams_between_small_halves(1e-3, 1e-3) >= 1);
+    SW_CHECK(seams_between(0.1, 5e-3, 5e-3, 1e-4, 1) == 0);
+    SW_CHECK(seams_between(0.1, 1e-3, 1e-3, 1e-4, 1) >= 1);
 }
 
 /* A trim's gap is held to SW_SEAM_GAP_CAP of the model (its box is 1.41
