@@ -25,7 +25,12 @@ if(SW_OCCT_FOUND)
   target_include_directories(test_occt_pcurve PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
     ${PROJECT_SOURCE_DIR}/assets/import)
   target_include_directories(test_occt_pcurve SYSTEM PRIVATE ${OpenCASCADE_INCLUDE_DIR})
-  target_link_libraries(test_occt_pcurve PRIVATE sw_assets sw_core ${SW_OCCT_LIBRARIES})
+  # Under TSan, the uninstrumented libraries, as sw_add_test links them.
+  sw_test_libraries(pcurve_libs "sw_assets;sw_core" "")
+  target_link_libraries(test_occt_pcurve PRIVATE ${pcurve_libs} ${SW_OCCT_LIBRARIES})
+  if(SW_TSAN)
+    sw_without_tsan(test_occt_pcurve)
+  endif()
   target_compile_options(test_occt_pcurve PRIVATE -Wall -Wextra -Wshadow)
   if(SW_WERROR)
     target_compile_options(test_occt_pcurve PRIVATE -Werror)
