@@ -30,6 +30,12 @@ writes into OUT_DIR:
   spring.step       a wire swept along a helix of 30 turns: one B-spline
                     face whose seam, sewn at the model's tolerance, has
                     more points than one draw's 65536 vertices
+  zigzag.step       a flat spring: a strip 1 mm wide with round turns
+                    running up and down 20 times, 14 mm long and 2 mm
+                    apart, 3 mm thick (its top and bottom planes bounded
+                    by the whole outline, a side face per segment):
+                    simplified freely, a turn's chord cuts across the next
+                    leg in (u, v), and verify refused the top
   band.step         one cylinder face closed on itself (two circles and
                     the seam line between them, used once each way): a
                     one-face periodic band
@@ -223,6 +229,97 @@ def helical_sweep(s, turns, coil_radius=10.0, pitch=3.0, wire_radius=1.0, per_tu
     return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, surface))
 
 
+def serpentine_outline(legs, length=10.0, width=1.0, gap=1.0):
+    """The border of a strip width wide running up and down legs times,
+    legs length long and gap apart, its turns half circles: the centre
+    line offset by half the width to either side, closed by a line at each
+    end. Segments ('line', p, q) or ('arc', centre, radius, p, q, ccw)."""
+    pitch, h = width + gap, width / 2
+    left, right = [], []
+    for k in range(legs):
+        x, up = k * pitch, k % 2 == 0
+        y0, y1 = (0.0, length) if up else (length, 0.0)
+        side = -h if up else h          # the walker's left on this leg
+        left.append(("line", (x + side, y0), (x + side, y1)))
+        right.append(("line", (x - side, y0), (x - side, y1)))
+        if k + 1 < legs:
+            c = (x + pitch / 2, y1)
+            outer, inner = pitch / 2 + h, pitch / 2 - h
+            # at the top the strip turns clockwise (its left side outer), at
+            # the bottom anticlockwise (its left side inner)
+            rl, rr = (outer, inner) if up else (inner, outer)
+            left.append(("arc", c, rl, (c[0] - rl, c[1]), (c[0] + rl, c[1]), not up))
+            right.append(("arc", c, rr, (c[0] - rr, c[1]), (c[0] + rr, c[1]), not up))
+
+    def reverse(g):
+        return ("line", g[2], g[1]) if g[0] == "line" else ("arc", g[1], g[2], g[4], g[3], not g[5])
+
+    segments = left + [("line", left[-1][2], right[-1][2])]
+    segments += [reverse(g) for g in reversed(right)]
+    return segments + [("line", right[0][1], left[0][1])]
+
+
+def slab(s, segments, thickness):
+    """The solid the outline sweeps from z = 0 to z = thickness, as its
+    faces: bottom, top, and a side face per segment (planes, cylinders),
+    each edge written once and used by both its faces."""
+    ends = lambda g: (g[1], g[2]) if g[0] == "line" else (g[3], g[4])
+    vertices = {}
+
+    def vertex(p, z):
+        key = (round(p[0], 9), round(p[1], 9), z)
+        if key not in vertices:
+            vertices[key] = s.add("VERTEX_POINT('',%s);" % s.point((p[0], p[1], z)))
+        return vertices[key]
+
+    def placement(origin, axis, ref):
+        return s.add("AXIS2_PLACEMENT_3D('',%s,%s,%s);" % (
+            s.point(origin), s.direction(axis), s.direction(ref)))
+
+    def edge_at(g, z):
+        a, b = ends(g)
+        if g[0] == "line":
+            curve, sense = line_between(s, (a[0], a[1], z), (b[0], b[1], z)), ".T."
+        else:
+            c, r, ccw = g[1], g[2], g[5]
+            curve = s.add("CIRCLE('',%s,%s);" % (placement((c[0], c[1], z), (0, 0, 1),
+                                                             (1, 0, 0)), real(r)))
+            sense = ".T." if ccw else ".F."
+        return s.add("EDGE_CURVE('',%s,%s,%s,%s);" % (vertex(a, z), vertex(b, z), curve, sense))
+
+    bottom = [edge_at(g, 0.0) for g in segments]
+    top = [edge_at(g, thickness) for g in segments]
+    uprights = [s.add("EDGE_CURVE('',%s,%s,%s,.T.);" % (
+        vertex(ends(g)[0], 0.0), vertex(ends(g)[0], thickness),
+        line_between(s, (ends(g)[0][0], ends(g)[0][1], 0.0),
+                     (ends(g)[0][0], ends(g)[0][1], thickness)))) for g in segments]
+    used = lambda e, sense: s.add("ORIENTED_EDGE('',*,*,%s,%s);" % (e, sense))
+
+    def face(edges, surface):
+        loop = s.add("EDGE_LOOP('',(%s));" % ",".join(edges))
+        bound = s.add("FACE_OUTER_BOUND('',%s,.T.);" % loop)
+        return s.add("ADVANCED_FACE('',(%s),%s,.T.);" % (bound, surface))
+
+    faces = [face([used(e, ".F.") for e in reversed(bottom)],
+                  s.add("PLANE('',%s);" % placement((0, 0, 0), (0, 0, -1), (1, 0, 0)))),
+             face([used(e, ".T.") for e in top],
+                  s.add("PLANE('',%s);" % placement((0, 0, thickness), (0, 0, 1), (1, 0, 0))))]
+    n = len(segments)
+    for i, g in enumerate(segments):
+        a, b = ends(g)
+        if g[0] == "line":
+            d = (b[0] - a[0], b[1] - a[1])
+            length = (d[0] ** 2 + d[1] ** 2) ** 0.5
+            surface = s.add("PLANE('',%s);" % placement(
+                (a[0], a[1], 0.0), (d[1] / length, -d[0] / length, 0), (d[0] / length, d[1] / length, 0)))
+        else:
+            surface = s.add("CYLINDRICAL_SURFACE('',%s,%s);" % (
+                placement((g[1][0], g[1][1], 0.0), (0, 0, 1), (1, 0, 0)), real(g[2])))
+        faces.append(face([used(bottom[i], ".T."), used(uprights[(i + 1) % n], ".T."),
+                           used(top[i], ".F."), used(uprights[i], ".F.")], surface))
+    return faces
+
+
 def bounded_planes(path):
     """Two squares as IGES 108 bounded planes, each bounded by a composite
     curve (102) of four lines (110)."""
@@ -276,6 +373,8 @@ def main():
     write(os.path.join(out, "band.step"), lambda s: [band(s, 10.0, 4.0)])
     bounded_planes(os.path.join(out, "planes.igs"))
     write(os.path.join(out, "spring.step"), lambda s: [helical_sweep(s, 30)])
+    write(os.path.join(out, "zigzag.step"),
+          lambda s: slab(s, serpentine_outline(20, length=14.0, gap=2.0), 3.0))
 
 
 if __name__ == "__main__":

@@ -23,6 +23,9 @@
 # - a wire swept along a helix of 30 turns, its one face's loops longer
 #   than one draw holds: cut into pieces sewn to each other, verified,
 #   walked;
+# - a flat spring, whose outline simplified freely crosses itself in
+#   (u, v): no face's seams kept whole (the build pinned the top's before
+#   the seam simplification checked for crossings), verified, walked;
 # - an IGES file of bounded planes (108), which the native reader does not
 #   take: read by OpenCASCADE instead, and said.
 set -uo pipefail
@@ -125,6 +128,12 @@ run info --json "$work/spring.swpack"
 check "spring: the pieces are surfaces sewn to each other (free border: the two end circles)" eval \
   '[ "$(surfaces "$work/out")" -ge 2 ] && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); f=d[\"border\"][\"free_length\"]; sys.exit(0 if abs(f - 4*3.14159265) < 0.05 else 1)" "$work/out"'
 verified_and_walked spring "$work/spring.swpack"
+
+# ---- a flat spring: loops that would cross at coarse seam states ------------------------------
+run build "$cases/zigzag.step" -o "$work/zigzag.swpack" --strict
+check "zigzag: builds under --strict, no face's seams kept whole (its loops cross nowhere simplified)" \
+  eval '[ "$(code)" -eq 0 ] && ! has "$work/out" "kept whole" && has "$work/out" "; [0-9]* collapses;"'
+verified_and_walked zigzag "$work/zigzag.swpack"
 
 # ---- an IGES file of surfaces the native reader does not take -----------------------------------
 run build "$cases/planes.igs" -o "$work/planes.swpack"
