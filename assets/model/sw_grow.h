@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Growing a malloc'd array on the host: the one doubling rule the sewing
- * code's append functions share. Host only. */
+/* Growing a malloc'd array on the host: the one doubling rule the model's
+ * and the sewing code's append functions share. Host only. */
 #ifndef SW_GROW_H
 #define SW_GROW_H
 

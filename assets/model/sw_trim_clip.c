@@ -17,6 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_grow.h"
+
 /* Samples a knot span when looking for crossings; halvings that place one. */
 enum { SAMPLES_PER_SPAN = 16, BISECTIONS = 80 };
 
@@ -39,29 +41,24 @@ static sw_status oom(sw_error *err)
 /* Appends c, taking its arrays (freed here when the append fails). */
 static sw_status push_curve(sw_trim_set *s, sw_model_trim_curve c, sw_error *err)
 {
-    if (s->curve_count == s->curve_capacity) {
-        size_t cap = s->curve_capacity ? 2 * s->curve_capacity : 16;
-        sw_model_trim_curve *grown = realloc(s->curves, cap * sizeof *grown);
-        if (!grown) {
-            free(c.knots);
-            free(c.ctrl);
-            return oom(err);
-        }
-        s->curves = grown, s->curve_capacity = cap;
+    sw_model_trim_curve *grown = sw_grow(s->curves, &s->curve_capacity, s->curve_count + 1,
+                                         sizeof *grown);
+    if (!grown) {
+        free(c.knots);
+        free(c.ctrl);
+        return oom(err);
     }
+    s->curves = grown;
     s->curves[s->curve_count++] = c;
     return SW_OK;
 }
 
 static sw_status push_loop(sw_trim_set *s, size_t first, int outer, sw_error *err)
 {
-    if (s->loop_count == s->loop_capacity) {
-        size_t cap = s->loop_capacity ? 2 * s->loop_capacity : 8;
-        sw_model_loop *grown = realloc(s->loops, cap * sizeof *grown);
-        if (!grown)
-            return oom(err);
-        s->loops = grown, s->loop_capacity = cap;
-    }
+    sw_model_loop *grown = sw_grow(s->loops, &s->loop_capacity, s->loop_count + 1, sizeof *grown);
+    if (!grown)
+        return oom(err);
+    s->loops = grown;
     s->loops[s->loop_count++] = (sw_model_loop){first, s->curve_count - first, outer};
     return SW_OK;
 }
@@ -295,16 +292,13 @@ typedef struct cutter {
 
 static sw_status add_piece(cutter *k, sw_model_trim_curve c, int outer, sw_error *err)
 {
-    if (k->piece_count == k->piece_capacity) {
-        size_t cap = k->piece_capacity ? 2 * k->piece_capacity : 32;
-        piece *grown = realloc(k->pieces, cap * sizeof *grown);
-        if (!grown) {
-            free(c.knots);
-            free(c.ctrl);
-            return oom(err);
-        }
-        k->pieces = grown, k->piece_capacity = cap;
+    piece *grown = sw_grow(k->pieces, &k->piece_capacity, k->piece_count + 1, sizeof *grown);
+    if (!grown) {
+        free(c.knots);
+        free(c.ctrl);
+        return oom(err);
     }
+    k->pieces = grown;
     double uv[2];
     curve_uv(&c, 0.5 * (t_start(&c) + t_end(&c)), uv);
     k->pieces[k->piece_count++] = (piece){c, uv[k->axis] > k->at, -1, outer, 0};
@@ -313,13 +307,11 @@ static sw_status add_piece(cutter *k, sw_model_trim_curve c, int outer, sw_error
 
 static sw_status add_crossing(cutter *k, const sw_model_trim_curve *c, double t, sw_error *err)
 {
-    if (k->crossing_count == k->crossing_capacity) {
-        size_t cap = k->crossing_capacity ? 2 * k->crossing_capacity : 16;
-        crossing *grown = realloc(k->crossings, cap * sizeof *grown);
-        if (!grown)
-            return oom(err);
-        k->crossings = grown, k->crossing_capacity = cap;
-    }
+    crossing *grown = sw_grow(k->crossings, &k->crossing_capacity, k->crossing_count + 1,
+                              sizeof *grown);
+    if (!grown)
+        return oom(err);
+    k->crossings = grown;
     crossing *x = &k->crossings[k->crossing_count];
     curve_uv(c, t, x->uv);
     x->uv[k->axis] = k->at;
