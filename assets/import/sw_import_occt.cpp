@@ -292,26 +292,6 @@ double end_reach(const TopoDS_Edge &edge, double edge_tolerance, int end)
     return v.IsNull() ? edge_tolerance : std::max(edge_tolerance, BRep_Tool::Tolerance(v));
 }
 
-/* How far the trim's image on the surface ends from the edge's vertices
- * (the larger of its two ends): a p-curve the face's own conversion
- * re-approximated, or one the file gave loosely, ends micrometres from the
- * vertex its neighbour face's trim ends at, and only this distance, not
- * the edge's tolerance, says so. */
-double ends_off(const TopoDS_Edge &edge, const TopoDS_Face &converted, const TrimCurve &trim)
-{
-    Handle(Geom_Surface) surface = BRep_Tool::Surface(converted);
-    double off = 0;
-    for (int end = 0; end < 2; end++) {
-        TopoDS_Vertex v = end ? TopExp::LastVertex(edge, Standard_True)
-                              : TopExp::FirstVertex(edge, Standard_True);
-        if (v.IsNull())
-            continue;
-        const double *uv = end ? &trim.ctrl[trim.ctrl.size() - 4] : &trim.ctrl[0];
-        off = std::max(off, surface->Value(uv[0], uv[1]).Distance(BRep_Tool::Pnt(v)));
-    }
-    return off;
-}
-
 /* The loop of one wire: each edge's p-curve on the converted face, in wire
  * order, reversed where the edge runs against its curve. Returns why it
  * failed, or "". */
@@ -346,7 +326,7 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
          * strays from the edge (shape healing widens it where the file's
          * faces do not meet): the sewing uses it as the file's own word. */
         double edge_tolerance = std::max(BRep_Tool::Tolerance(edge), BRep_Tool::Tolerance(moved));
-        loop->gaps.push_back(std::max(edge_tolerance, ends_off(edge, converted, loop->curves.back())));
+        loop->gaps.push_back(edge_tolerance);
         for (int end = 0; end < 2; end++)
             loop->reach[end].push_back(
                 end_reach(edge, std::max(edge_tolerance, Precision::Confusion()), end));
