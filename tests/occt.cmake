@@ -18,27 +18,28 @@ if(SW_OCCT_FOUND)
   sw_host_only_test(test_import_occt_truncations PROGRAMS test_import_occt)
 endif()
 
-# The importer's p-curve check (assets/import/sw_occt_pcurve.h), in C++
-# against OCCT: C++ gets its own warnings (sw_apply_warnings' are C's).
+# The importer's geometry repairs (assets/import/sw_occt_pcurve.h, the
+# plane's in sw_occt_bspline.h), in C++ against OCCT: C++ gets its own
+# warnings (sw_apply_warnings' are C's).
 if(SW_OCCT_FOUND)
-  add_executable(test_occt_pcurve test_occt_pcurve.cpp)
-  target_include_directories(test_occt_pcurve PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
+  add_executable(test_occt_geometry test_occt_geometry.cpp)
+  target_include_directories(test_occt_geometry PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
     ${PROJECT_SOURCE_DIR}/assets/import)
-  target_include_directories(test_occt_pcurve SYSTEM PRIVATE ${OpenCASCADE_INCLUDE_DIR})
+  target_include_directories(test_occt_geometry SYSTEM PRIVATE ${OpenCASCADE_INCLUDE_DIR})
   # Under TSan, the uninstrumented libraries, as sw_add_test links them.
   sw_test_libraries(pcurve_libs "sw_assets;sw_core" "")
-  target_link_libraries(test_occt_pcurve PRIVATE ${pcurve_libs} ${SW_OCCT_LIBRARIES})
+  target_link_libraries(test_occt_geometry PRIVATE ${pcurve_libs} ${SW_OCCT_LIBRARIES})
   if(SW_TSAN)
-    sw_without_tsan(test_occt_pcurve)
+    sw_without_tsan(test_occt_geometry)
   endif()
-  target_compile_options(test_occt_pcurve PRIVATE -Wall -Wextra -Wshadow)
+  target_compile_options(test_occt_geometry PRIVATE -Wall -Wextra -Wshadow)
   if(SW_WERROR)
-    target_compile_options(test_occt_pcurve PRIVATE -Werror)
+    target_compile_options(test_occt_geometry PRIVATE -Werror)
   endif()
-  add_test(NAME test_occt_pcurve COMMAND test_occt_pcurve)
-  set_tests_properties(test_occt_pcurve PROPERTIES LABELS unit ENVIRONMENT
+  add_test(NAME test_occt_geometry COMMAND test_occt_geometry)
+  set_tests_properties(test_occt_geometry PROPERTIES LABELS unit ENVIRONMENT
     "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/occt-lsan.supp:print_suppressions=0")
-  sw_host_only_test(test_occt_pcurve PROGRAMS test_occt_pcurve)
+  sw_host_only_test(test_occt_geometry PROGRAMS test_occt_geometry)
 endif()
 
 # A STEP file through the OpenCASCADE importer, in-process (its time and

@@ -470,7 +470,7 @@ static int segments_meet(const float a[2], const float b[2], const float c[2], c
  * touch, neighbours along a loop not counted; all pairs compared. */
 static uint32_t loop_crossings(const sw_trim_loops *loops)
 {
-    uint32_t meets = 0, total = loops->loop_first[loops->loop_count];
+    uint32_t meets = 0;
     for (uint32_t l = 0; l < loops->loop_count; l++)
         for (uint32_t i = loops->loop_first[l]; i < loops->loop_first[l + 1]; i++) {
             uint32_t n = loops->loop_first[l + 1] - loops->loop_first[l];
@@ -486,7 +486,6 @@ static uint32_t loop_crossings(const sw_trim_loops *loops)
                                            loops->points[j].uv, loops->points[j1].uv);
                 }
         }
-    (void)total;
     return meets;
 }
 

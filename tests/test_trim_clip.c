@@ -70,7 +70,7 @@ static int loops_closed(const sw_trim_set *s)
     return 1;
 }
 
-static sw_status add_line(sw_trim_set *s, double x0, double y0, double x1, double y1)
+static void add_line(sw_trim_set *s, double x0, double y0, double x1, double y1)
 {
     static const double knots[4] = {0, 0, 1, 1};
     sw_model_trim_curve c = {1, 2, malloc(sizeof knots), malloc(8 * sizeof(double)), 0, 0.0};
@@ -79,7 +79,6 @@ static sw_status add_line(sw_trim_set *s, double x0, double y0, double x1, doubl
     memcpy(c.ctrl, ctrl, sizeof ctrl);
     s->curves = realloc(s->curves, (s->curve_count + 1) * sizeof *s->curves);
     s->curves[s->curve_count++] = c;
-    return SW_OK;
 }
 
 /* A full circle as one rational quadratic (nine points), clockwise when

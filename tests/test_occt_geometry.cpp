@@ -1,11 +1,21 @@
 /* SPDX-License-Identifier: MIT */
-/* sw_occt::faithful_pcurve (assets/import/sw_occt_pcurve.h): a p-curve that
- * strays from its edge is projected again from the edge's 3D curve; one
- * that follows it, or strays by less than a ten-thousandth of the edge, is
- * kept. On a cylinder made here, with its top circle's true p-curve and
- * with lines moved off it. */
+/* The importer's geometry repairs, against OCCT:
+ * - sw_occt::faithful_pcurve (assets/import/sw_occt_pcurve.h): a p-curve
+ *   that strays from its edge is projected again from the edge's 3D curve;
+ *   one that follows it, or strays by less than a ten-thousandth of the
+ *   edge, is kept. On a cylinder made here, with its top circle's true
+ *   p-curve and with copies moved off it.
+ * - sw_occt::plane_over (assets/import/sw_occt_bspline.h): a plane's
+ *   conversion made again over a wider box, only where it is that plane in
+ *   the same parameters. */
+#include "sw_occt_bspline.h"
 #include "sw_occt_pcurve.h"
 #include "sw_test.h"
+
+#include <GeomConvert.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Tool.hxx>
@@ -86,10 +96,52 @@ static void test_a_small_stray_is_left_alone(void)
     SW_CHECK(!projected && out == c);
 }
 
+/* A plane's conversion over the unit square, made again over a box that
+ * reaches past it: the box is its domain and every point the plane's. */
+static void test_a_plane_is_made_again_over_a_wider_box(void)
+{
+    Handle(Geom_Plane) plane = new Geom_Plane(gp_Ax3(gp_Pnt(1, 2, 3), gp_Dir(0, 0, 1),
+                                                     gp_Dir(1, 0, 0)));
+    Handle(Geom_BSplineSurface) conv = GeomConvert::SurfaceToBSplineSurface(
+        new Geom_RectangularTrimmedSurface(plane, 0.0, 1.0, 0.0, 1.0));
+    const double box[4] = {-2.0, 5.0, -1.0, 4.0};
+    Handle(Geom_BSplineSurface) wide = sw_occt::plane_over(plane, conv, box);
+    SW_CHECK(!wide.IsNull());
+    if (wide.IsNull())
+        return;
+    double u0, u1, v0, v1;
+    wide->Bounds(u0, u1, v0, v1);
+    SW_CHECK(u0 == box[0] && u1 == box[1] && v0 == box[2] && v1 == box[3]);
+    const double at[3][2] = {{-2.0, -1.0}, {5.0, 4.0}, {1.5, 0.3}};
+    for (const auto &p : at)
+        SW_CHECK(wide->Value(p[0], p[1]).Distance(plane->Value(p[0], p[1])) < 1e-12);
+}
+
+/* Not the plane in its own parameters (the same plane, its origin moved
+ * along it), or not a plane: nothing made. */
+static void test_other_surfaces_are_not_made_again(void)
+{
+    Handle(Geom_Plane) plane = new Geom_Plane(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1),
+                                                     gp_Dir(1, 0, 0)));
+    Handle(Geom_Plane) moved = new Geom_Plane(gp_Ax3(gp_Pnt(0.5, 0, 0), gp_Dir(0, 0, 1),
+                                                     gp_Dir(1, 0, 0)));
+    Handle(Geom_BSplineSurface) shifted = GeomConvert::SurfaceToBSplineSurface(
+        new Geom_RectangularTrimmedSurface(moved, 0.0, 1.0, 0.0, 1.0));
+    const double box[4] = {-1.0, 2.0, -1.0, 2.0};
+    SW_CHECK(sw_occt::plane_over(plane, shifted, box).IsNull());
+    Handle(Geom_CylindricalSurface) cylinder =
+        new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), 5.0);
+    Handle(Geom_BSplineSurface) conv = GeomConvert::SurfaceToBSplineSurface(
+        new Geom_RectangularTrimmedSurface(cylinder, 0.0, 1.0, 0.0, 1.0));
+    SW_CHECK(sw_occt::plane_over(cylinder, conv, box).IsNull());
+}
+
 int main()
 {
     SW_RUN(test_a_true_pcurve_is_kept);
     SW_RUN(test_a_stray_pcurve_is_projected_again);
     SW_RUN(test_a_small_stray_is_left_alone);
+    SW_RUN(test_a_plane_is_made_again_over_a_wider_box);
+    SW_RUN(test_other_surfaces_are_not_made_again);
     return sw_test_finish();
 }
