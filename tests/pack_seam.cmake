@@ -15,6 +15,8 @@ sw_add_test(test_pack_verify_tess SOURCES test_pack_verify_tess.c LIBS sw_assets
 sw_add_test(test_levels_build SOURCES test_levels_build.c LIBS sw_assets sw_core)
 sw_add_test(test_part_rim SOURCES test_part_rim.c
   LIBS sw_assets sw_core meshoptimizer::meshoptimizer)
+# The distance from points to a mesh, which measures the part levels.
+sw_add_test(test_mesh_distance SOURCES test_mesh_distance.c LIBS sw_assets sw_core)
 # ... and on the teaset sample as the pack tool builds it.
 add_test(NAME levels_teaset COMMAND bash -c
   "$<TARGET_FILE:seamwalk-pack> build ${PROJECT_SOURCE_DIR}/assets/samples/teaset.ini -o ${CMAKE_CURRENT_BINARY_DIR}/levels_teaset.swpack --quiet && $<TARGET_FILE:test_levels_build> ${CMAKE_CURRENT_BINARY_DIR}/levels_teaset.swpack")

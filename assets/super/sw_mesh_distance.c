@@ -12,6 +12,7 @@ struct sw_mesh_grid {
     int dim[3];
     uint32_t *first;    /* cells + 1: cell c's triangles are tri[first[c] .. first[c + 1]) */
     uint32_t *tri;      /* triangle numbers */
+    float *box;         /* per triangle: its box's low corner, then its high one */
 };
 
 static void triangle_box(const sw_mesh_view *m, uint32_t t, double lo[3], double hi[3])
@@ -85,11 +86,18 @@ sw_mesh_grid *sw_mesh_grid_make(const sw_mesh_view *b)
     double hi[3] = { -INFINITY, -INFINITY, -INFINITY }, extent = 0;
     for (int k = 0; k < 3; k++)
         g->lo[k] = INFINITY;
+    g->box = malloc(6 * (size_t)n * sizeof *g->box);
+    if (!g->box) {
+        sw_mesh_grid_free(g);
+        return NULL;
+    }
     for (uint32_t t = 0; t < n; t++) {
         double tl[3], th[3];
         triangle_box(b, t, tl, th);
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 3; k++) {
             g->lo[k] = fmin(g->lo[k], tl[k]), hi[k] = fmax(hi[k], th[k]);
+            g->box[6 * (size_t)t + k] = (float)tl[k], g->box[6 * (size_t)t + 3 + k] = (float)th[k];
+        }
     }
     for (int k = 0; k < 3; k++)
         extent = fmax(extent, hi[k] - g->lo[k]);
@@ -132,6 +140,7 @@ void sw_mesh_grid_free(sw_mesh_grid *g)
         return;
     free(g->first);
     free(g->tri);
+    free(g->box);
     free(g);
 }
 
@@ -179,29 +188,56 @@ static double triangle_distance2(const double p[3], const double a[3], const dou
     return dot3(d, d);
 }
 
+/* The squared distance from p to the box lo .. hi. */
+static double box_distance2(const double p[3], const float lo[3], const float hi[3])
+{
+    double d2 = 0;
+    for (int k = 0; k < 3; k++) {
+        double d = p[k] < lo[k] ? lo[k] - p[k] : p[k] > hi[k] ? p[k] - hi[k] : 0;
+        d2 += d * d;
+    }
+    return d2;
+}
+
+/* The squared distance from p to cell (x, y, z) of the grid. */
+static double cell_distance2(const sw_mesh_grid *g, const double p[3], const int c[3])
+{
+    float lo[3], hi[3];
+    for (int k = 0; k < 3; k++) {
+        /* a box a little larger than the cell: triangles' boxes are
+         * rounded to float, and cell_of clamps what lies outside */
+        double a = g->lo[k] + c[k] * g->cell, b = a + g->cell;
+        lo[k] = c[k] == 0 ? -INFINITY : (float)(a - 1e-6 * g->cell);
+        hi[k] = c[k] == g->dim[k] - 1 ? INFINITY : (float)(b + 1e-6 * g->cell);
+    }
+    return box_distance2(p, lo, hi);
+}
+
 /* each(ctx, at, squared distance) for p's nearest point on every triangle
- * binned in the cells a .. b, until it returns nonzero; returns whether it
- * did. */
-static int cells_visit(const sw_mesh_grid *g, const double p[3], const int a[3], const int b[3],
-                       int (*each)(void *ctx, const sw_mesh_point *at, double d2), void *ctx)
+ * binned in cell c whose box lies within sqrt(*reach2) of p, until it
+ * returns nonzero; returns whether it did. *reach2 is read again after
+ * each call: the nearest search narrows it. */
+static int cell_visit(const sw_mesh_grid *g, const double p[3], const int c[3],
+                      const double *reach2,
+                      int (*each)(void *ctx, const sw_mesh_point *at, double d2), void *ctx)
 {
     const sw_mesh_view *m = g->mesh;
-    for (int z = a[2]; z <= b[2]; z++)
-        for (int y = a[1]; y <= b[1]; y++)
-            for (int x = a[0]; x <= b[0]; x++) {
-                size_t c = cell_index(g, x, y, z);
-                for (uint32_t i = g->first[c]; i < g->first[c + 1]; i++) {
-                    const uint32_t *t = m->indices + 3 * (size_t)g->tri[i];
-                    double v[3][3];
-                    for (int j = 0; j < 3; j++)
-                        for (int k = 0; k < 3; k++)
-                            v[j][k] = m->positions[3 * (size_t)t[j] + k];
-                    sw_mesh_point at = { g->tri[i], { 0, 0, 0 } };
-                    double d2 = triangle_distance2(p, v[0], v[1], v[2], at.weights);
-                    if (each(ctx, &at, d2))
-                        return 1;
-                }
-            }
+    size_t cell = cell_index(g, c[0], c[1], c[2]);
+    for (uint32_t i = g->first[cell]; i < g->first[cell + 1]; i++) {
+        uint32_t tri = g->tri[i];
+        const float *box = g->box + 6 * (size_t)tri;
+        if (box_distance2(p, box, box + 3) > *reach2)
+            continue;
+        const uint32_t *t = m->indices + 3 * (size_t)tri;
+        double v[3][3];
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++)
+                v[j][k] = m->positions[3 * (size_t)t[j] + k];
+        sw_mesh_point at = { tri, { 0, 0, 0 } };
+        double d2 = triangle_distance2(p, v[0], v[1], v[2], at.weights);
+        if (each(ctx, &at, d2))
+            return 1;
+    }
     return 0;
 }
 
@@ -211,12 +247,52 @@ typedef struct nearest {
     double enough2;   /* a triangle this close ends the search */
 } nearest;
 
+/* Keeps the nearest, the lowest-numbered of equals: the answer does not
+ * depend on the order cells are visited in. */
 static int keep_nearest(void *ctx, const sw_mesh_point *at, double d2)
 {
     nearest *n = ctx;
-    if (d2 < n->d2)
+    if (d2 < n->d2 || (d2 == n->d2 && at->triangle < n->at.triangle))
         n->d2 = d2, n->at = *at;
     return n->d2 <= n->enough2;
+}
+
+/* A lower bound on the distance from p to any cell k or more cells from
+ * its own cell c (in the largest of the three index differences); INFINITY
+ * when there is no such cell. */
+static double ring_distance(const sw_mesh_grid *g, const double p[3], const int c[3], int k)
+{
+    double d = INFINITY;
+    for (int a = 0; a < 3; a++) {
+        if (c[a] - k >= 0)   /* the far side of cell c - k + 1 */
+            d = fmin(d, fmax(0, p[a] - (g->lo[a] + (c[a] - k + 1) * g->cell)));
+        if (c[a] + k < g->dim[a])
+            d = fmin(d, fmax(0, g->lo[a] + (c[a] + k) * g->cell - p[a]));
+    }
+    return d;
+}
+
+/* Visits ring k of cells around c (those whose largest index difference
+ * from c is k) that lie within the nearest found, as cell_visit; returns
+ * whether a visit ended the search. */
+static int ring_visit(const sw_mesh_grid *g, const double p[3], const int c[3], int k, nearest *n)
+{
+    int lo[3], hi[3], q[3];
+    for (int a = 0; a < 3; a++)
+        lo[a] = c[a] - k < 0 ? 0 : c[a] - k, hi[a] = c[a] + k >= g->dim[a] ? g->dim[a] - 1 : c[a] + k;
+    for (q[2] = lo[2]; q[2] <= hi[2]; q[2]++)
+        for (q[1] = lo[1]; q[1] <= hi[1]; q[1]++) {
+            int edge = abs(q[2] - c[2]) == k || abs(q[1] - c[1]) == k;
+            /* inside the ring's faces in y and z, only its two x sides */
+            int step = edge || k == 0 ? 1 : 2 * k;
+            for (q[0] = edge || k == 0 ? lo[0] : c[0] - k; q[0] <= hi[0]; q[0] += step) {
+                if (q[0] < 0 || cell_distance2(g, p, q) > n->d2)
+                    continue;
+                if (cell_visit(g, p, q, &n->d2, keep_nearest, n))
+                    return 1;
+            }
+        }
+    return 0;
 }
 
 /* The distance from p to the grid's mesh and where, or (when something
@@ -225,21 +301,20 @@ static int keep_nearest(void *ctx, const sw_mesh_point *at, double d2)
 static double nearest_within(const sw_mesh_grid *g, const double p[3], double enough,
                              sw_mesh_point *at)
 {
-    /* Every triangle within r of p is binned in a cell the box p +- r
-     * covers: widen r until the nearest found is within it, or every cell
-     * has been looked at. */
-    nearest n = { INFINITY, { 0, { 1, 0, 0 } }, enough < 0 ? -1 : enough * enough };
-    for (double r = 0.5 * g->cell;; r *= 2) {
-        int a[3], b[3], whole = 1;
-        for (int k = 0; k < 3; k++) {
-            a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
-            whole &= a[k] == 0 && b[k] == g->dim[k] - 1;
-        }
-        if (cells_visit(g, p, a, b, keep_nearest, &n) || n.d2 <= r * r || whole) {
-            *at = n.at;
-            return sqrt(n.d2);
-        }
+    /* Rings of cells outward from p's, until the next ring lies farther
+     * than the nearest found. */
+    nearest n = { INFINITY, { UINT32_MAX, { 1, 0, 0 } }, enough < 0 ? -1 : enough * enough };
+    int c[3];
+    for (int k = 0; k < 3; k++)
+        c[k] = cell_of(g, p[k], k);
+    for (int k = 0;; k++) {
+        double r = ring_distance(g, p, c, k);
+        if (r == INFINITY || r * r > n.d2 || ring_visit(g, p, c, k, &n))
+            break;
     }
+    n.at.triangle = n.at.triangle == UINT32_MAX ? 0 : n.at.triangle;
+    *at = n.at;
+    return sqrt(n.d2);
 }
 
 double sw_mesh_grid_distance(const sw_mesh_grid *g, const double p[3])
@@ -277,11 +352,17 @@ static int visit_within(void *ctx, const sw_mesh_point *at, double d2)
 int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
                         int (*visit)(void *ctx, const sw_mesh_point *at), void *ctx)
 {
-    int a[3], b[3];
+    int a[3], b[3], q[3];
     for (int k = 0; k < 3; k++)
         a[k] = cell_of(g, p[k] - r, k), b[k] = cell_of(g, p[k] + r, k);
     within w = { r * r, visit, ctx };
-    return cells_visit(g, p, a, b, visit_within, &w);
+    for (q[2] = a[2]; q[2] <= b[2]; q[2]++)
+        for (q[1] = a[1]; q[1] <= b[1]; q[1]++)
+            for (q[0] = a[0]; q[0] <= b[0]; q[0]++)
+                if (cell_distance2(g, p, q) <= w.r2 &&
+                    cell_visit(g, p, q, &w.r2, visit_within, &w))
+                    return 1;
+    return 0;
 }
 
 double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing)
