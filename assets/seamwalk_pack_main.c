@@ -27,6 +27,7 @@
 #include "sw_pack_info.h"
 #include "sw_pack_sign.h"
 #include "sw_pack_verify_tess.h"
+#include "sw_parts_threads.h"
 #include "sw_progress.h"
 #include "sw_scene.h"
 #include "sw_text_scan.h"
@@ -57,9 +58,9 @@ static const char usage_text[] =
     "and .bpt, a scene's up_axis or y; inputs that differ: the first's, warned).\n"
     "--cut-patches: parts of more patches are cut into pieces with levels of their\n"
     "own, drawn apart far away (default 4096; 0: none cut).\n"
-    "--threads: threads that make the static and part levels (default: the\n"
-    "machine's cores; 0 or 1: none besides the tool's own; at most 64). The pack's\n"
-    "bytes are the same whatever the count.\n";
+    "--threads: threads that convert STEP and IGES faces and make the static and\n"
+    "part levels (default: the machine's cores; 0 or 1: none besides the tool's\n"
+    "own; at most 64). The pack's bytes are the same whatever the count.\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -219,8 +220,11 @@ static sw_status add_input(const build_options *o, int i, progress_context *pc, 
 {
     const char *path = o->inputs[i];
     enum input_kind kind = kind_of(path);
+    /* OpenCASCADE's faces converted on o->threads, as the levels are made. */
+    sw_parts_threads threads;
+    sw_parts_runner runner = sw_parts_threads_runner(&threads, o->threads > 1 ? o->threads - 1 : 0);
     sw_import_options opts = { .strict = o->strict, .progress = sw_pack_tool_progress,
-                               .progress_user = pc };
+                               .progress_user = pc, .runner = o->threads > 1 ? &runner : NULL };
     snprintf(pc->prefix, sizeof pc->prefix, "importing %s", sw_pack_tool_base_name(path));
     pc->surfaces_before = model->surface_count;
     pc->importing = 1;

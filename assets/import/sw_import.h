@@ -18,6 +18,9 @@ typedef struct sw_import_options {
     sw_progress_fn progress;    /* may be NULL */
     void *progress_user;
     double tolerance_mm;        /* 0: the file's model tolerance (or 0.01 mm if it has none) */
+    /* OpenCASCADE's faces are converted on it (sw_parts.h); NULL: in order
+     * here. The model is the same either way. */
+    const struct sw_parts_runner *runner;
 } sw_import_options;
 
 enum { SW_IMPORT_KINDS = 16, SW_IMPORT_KIND_CHARS = 72 };

@@ -27,6 +27,9 @@ extern "C" {
 #include "sw_occt_bspline.h"
 #include "sw_occt_internal.h"
 #include "sw_occt_pcurve.h"
+extern "C" {
+#include "sw_parts.h"
+}
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
@@ -372,86 +375,114 @@ void widen_plane(const TopoDS_Face &face, const TopoDS_Face &converted,
         fill_surface(b, surface);
 }
 
-/* Adds one face to the current part. mirrored: the part's placement flips
- * handedness, which flips the face's normal once more. */
-sw_status add_face(ImportContext *ctx, const TopoDS_Face &face, bool mirrored)
-{
-    TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
-    int reversed = (face.Orientation() == TopAbs_REVERSED) != mirrored;
-    if (face.Location().Transformation().IsNegative())
-        reversed = !reversed;
-
-    int file_gaps = 0;
-    ctx->gaps.Find(forward.Located(TopLoc_Location()), file_gaps);
-    int missing = 0;
-    for (TopoDS_Iterator it(forward); it.More(); it.Next())
-        if (it.Value().ShapeType() == TopAbs_WIRE)
-            missing += fix_missing_pcurves(TopoDS::Wire(it.Value()), forward);
-    int computed = missing > 0 || file_gaps > 0;
-
-    BRepBuilderAPI_NurbsConvert conv(forward, Standard_True);
-    TopoDS_Face converted = TopoDS::Face(conv.Shape().Oriented(TopAbs_FORWARD));
+/* One face on its way into the model: read from the file's shape in
+ * order (prepare_face), converted possibly at the same time as others
+ * (convert_face), added in order (add_face). */
+struct FaceWork {
+    TopoDS_Face face, forward;
+    int reversed = 0;
+    int missing = 0, file_gaps = 0;   /* p-curves the file lacked (made by ShapeFix) */
     Surface surface;
-    fill_surface(bspline_surface_of(converted), &surface);
-
-    TopoDS_Wire outer = BRepTools::OuterWire(forward);
     std::vector<Loop> loops;
-    for (TopoDS_Iterator it(forward); it.More(); it.Next()) {
+    int reprojected = 0;
+    std::string why;                  /* "" once converted */
+    sw_status failed = SW_OK;         /* out of memory: the import stops */
+};
+
+/* The face's orientation, and the p-curves it lacks made. ShapeFix writes
+ * them into edges the face shares with its neighbours, so this runs in
+ * order, before any conversion. mirrored: the part's placement flips
+ * handedness, which flips the face's normal once more. */
+void prepare_face(const ImportContext *ctx, const TopoDS_Face &face, bool mirrored, FaceWork *w)
+{
+    w->face = face;
+    w->forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+    w->reversed = (face.Orientation() == TopAbs_REVERSED) != mirrored;
+    if (face.Location().Transformation().IsNegative())
+        w->reversed = !w->reversed;
+    ctx->gaps.Find(w->forward.Located(TopLoc_Location()), w->file_gaps);
+    for (TopoDS_Iterator it(w->forward); it.More(); it.Next())
+        if (it.Value().ShapeType() == TopAbs_WIRE)
+            w->missing += fix_missing_pcurves(TopoDS::Wire(it.Value()), w->forward);
+}
+
+/* The face as a B-spline surface and its loops, or why it cannot be used.
+ * It reads the shared shape and writes only w: faces are converted at the
+ * same time on the build's threads. */
+void convert_face_unguarded(FaceWork *w, double floor_mm)
+{
+    int computed = w->missing > 0 || w->file_gaps > 0;
+    BRepBuilderAPI_NurbsConvert conv(w->forward, Standard_True);
+    TopoDS_Face converted = TopoDS::Face(conv.Shape().Oriented(TopAbs_FORWARD));
+    fill_surface(bspline_surface_of(converted), &w->surface);
+    TopoDS_Wire outer = BRepTools::OuterWire(w->forward);
+    for (TopoDS_Iterator it(w->forward); it.More(); it.Next()) {
         if (it.Value().ShapeType() != TopAbs_WIRE)
             continue;
         Loop loop;
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
-        int reprojected = 0;
-        std::string why = loop_of_wire(wire, forward, conv, converted, computed,
-                                       gap_floor_mm(ctx), &loop, &reprojected);
-        ctx->report->pcurves_reprojected += (size_t)reprojected;
-        if (!why.empty())
-            return sw_error_set(ctx->err, SW_ERR_FORMAT, "%s", why.c_str());
-        loops.push_back(std::move(loop));
+        w->why = loop_of_wire(wire, w->forward, conv, converted, computed, floor_mm, &loop,
+                              &w->reprojected);
+        if (!w->why.empty())
+            return;
+        w->loops.push_back(std::move(loop));
     }
-
-    widen_plane(forward, converted, loops, &surface);
-    std::vector<std::vector<sw_nurbs_curve>> views(loops.size());
-    std::vector<sw_model_loop_input> inputs(loops.size());
-    for (size_t i = 0; i < loops.size(); i++) {
-        for (const TrimCurve &t : loops[i].curves)
-            views[i].push_back({t.degree, t.count, t.knots.data(), t.ctrl.data()});
-        inputs[i] = {views[i].data(), loops[i].computed.data(), views[i].size(),
-                     loops[i].outer, loops[i].gaps.data()};
-    }
-    sw_status status = sw_model_add_surface(ctx->model, &surface.view, reversed, inputs.data(),
-                                            inputs.size(), ctx->err);
-    if (status == SW_OK)
-        ctx->report->pcurves_computed += (size_t)std::max(missing, file_gaps);
-    return status;
+    widen_plane(w->forward, converted, w->loops, &w->surface);
 }
 
-/* A face OCCT cannot convert is skipped, counted and named with its reason
- * (an error when strict): one bad face should not lose a whole assembly,
- * nor go unnoticed. The name leads with the face and the reason, so that a
- * long part name is what the report's kind cuts. */
-sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mirrored,
-                           size_t index)
+/* No exception leaves a thread: each becomes the face's reason, or a stop. */
+void convert_face(FaceWork *w, double floor_mm)
 {
-    sw_status status;
-    std::string why;
     try {
-        status = add_face(ctx, face, mirrored);
+        convert_face_unguarded(w, floor_mm);
+    } catch (const Standard_Failure &e) {
+        w->why = std::string("OCCT: ") + e.GetMessageString();
+    } catch (const std::bad_alloc &) {
+        w->failed = SW_ERR_NO_MEMORY;
+    } catch (const std::exception &e) {
+        w->why = e.what();
+    } catch (...) {
+        w->why = "unknown exception in OCCT";
+    }
+}
+
+/* Adds a converted face to the current part; a face that cannot be used
+ * is skipped, counted and named with its reason (an error when strict): one
+ * bad face should not lose a whole assembly, nor go unnoticed. The name
+ * leads with the face and the reason, so that a long part name is what the
+ * report's kind cuts. */
+sw_status add_face(ImportContext *ctx, const FaceWork &w, size_t index)
+{
+    if (w.failed != SW_OK)
+        return sw_error_set(ctx->err, w.failed, "%s: out of memory", ctx->path);
+    std::string why = w.why;
+    if (why.empty()) {
+        std::vector<std::vector<sw_nurbs_curve>> views(w.loops.size());
+        std::vector<sw_model_loop_input> inputs(w.loops.size());
+        for (size_t i = 0; i < w.loops.size(); i++) {
+            const Loop &l = w.loops[i];
+            for (const TrimCurve &t : l.curves)
+                views[i].push_back({t.degree, t.count, t.knots.data(), t.ctrl.data()});
+            inputs[i] = {views[i].data(), l.computed.data(), views[i].size(), l.outer,
+                         l.gaps.data()};
+        }
+        sw_status status = sw_model_add_surface(ctx->model, &w.surface.view, w.reversed,
+                                                inputs.data(), inputs.size(), ctx->err);
         if (status == SW_OK) {
             ctx->report->faces++;
+            ctx->report->pcurves_computed += (size_t)std::max(w.missing, w.file_gaps);
+            ctx->report->pcurves_reprojected += (size_t)w.reprojected;
             return SW_OK;
         }
         why = ctx->err ? ctx->err->message : sw_status_name(status);
-    } catch (const Standard_Failure &e) {
-        why = std::string("OCCT: ") + e.GetMessageString();
     }
     const char *part = ctx->model->part_count ? ctx->model->parts[ctx->model->part_count - 1].name
                                               : "";
     /* STEP names the face by its entity, which a user can look up; IGES
      * faces by their place among the part's. */
     int id = 0;
-    std::string face_name = ctx->face_ids.Find(face.Located(TopLoc_Location()), id) && id > 0
+    std::string face_name = ctx->face_ids.Find(w.face.Located(TopLoc_Location()), id) && id > 0
                                 ? "face #" + std::to_string(id)
                                 : "face " + std::to_string(index + 1);
     if (ctx->options && ctx->options->strict)
@@ -462,6 +493,21 @@ sw_status add_face_guarded(ImportContext *ctx, const TopoDS_Face &face, bool mir
     if (ctx->err)
         ctx->err->status = SW_OK;
     return SW_OK;
+}
+
+/* Faces converted at once, then added: the progress moves, and the
+ * converted surfaces waiting to be added stay few. */
+const size_t FACES_AT_ONCE = 64;
+
+struct ConvertRun {
+    FaceWork *work;
+    double floor_mm;
+};
+
+extern "C" void convert_part(void *arg, uint32_t i)
+{
+    ConvertRun *run = static_cast<ConvertRun *>(arg);
+    convert_face(&run->work[i], run->floor_mm);
 }
 
 /* One part per leaf: its faces in its own frame, then the placement applied
@@ -476,12 +522,26 @@ sw_status add_part(ImportContext *ctx, const TopoDS_Shape &shape, const TopLoc_L
     TopLoc_Location total = placement * shape.Location();
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(shape.Located(TopLoc_Location()), TopAbs_FACE, faces);
-    for (int i = 1; i <= faces.Extent(); i++) {
-        status = add_face_guarded(ctx, TopoDS::Face(faces(i)), total.Transformation().IsNegative(), (size_t)i - 1);
-        if (status != SW_OK)
-            return status;
-        ctx->faces_done++;
-        if (ctx->faces_done % 16 == 0 && ctx->faces_total > 0)
+    std::vector<FaceWork> work((size_t)faces.Extent());
+    for (int i = 1; i <= faces.Extent(); i++)
+        prepare_face(ctx, TopoDS::Face(faces(i)), total.Transformation().IsNegative(),
+                     &work[(size_t)i - 1]);
+    /* The conversion is most of an import (a cylinder's p-curves are
+     * approximated again on its B-spline); faces go in order whatever ran
+     * at once, so the model is the same on any runner. */
+    for (size_t first = 0; first < work.size(); first += FACES_AT_ONCE) {
+        size_t n = std::min(work.size() - first, FACES_AT_ONCE);
+        ConvertRun run = {&work[first], gap_floor_mm(ctx)};
+        sw_parts_run(ctx->options ? ctx->options->runner : nullptr, convert_part, &run,
+                     (uint32_t)n);
+        for (size_t i = first; i < first + n; i++) {
+            status = add_face(ctx, work[i], i);
+            work[i] = FaceWork();   /* in the model now */
+            if (status != SW_OK)
+                return status;
+        }
+        ctx->faces_done += n;
+        if (ctx->faces_total > 0)
             report_progress(ctx->options, "faces", (double)ctx->faces_done / (double)ctx->faces_total);
     }
     sw_mat4 m = matrix_of(total.Transformation());

@@ -27,6 +27,7 @@ extern "C" {
 
 #include <exception>
 #include <new>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -40,11 +41,16 @@ public:
     mutable std::vector<std::string> lines;
 
 protected:
+    /* Faces are converted on several threads, any of which may speak. */
     void send(const TCollection_AsciiString &text, const Message_Gravity gravity) const override
     {
+        std::lock_guard<std::mutex> hold(lock_);
         if (gravity >= Message_Alarm && lines.size() < 16)
             lines.emplace_back(text.ToCString());
     }
+
+private:
+    mutable std::mutex lock_;
 };
 
 /* Replaces the default messenger's printers for the lifetime of one call. */
