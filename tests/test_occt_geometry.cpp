@@ -3,8 +3,9 @@
  * - sw_occt::faithful_pcurve (assets/import/sw_occt_pcurve.h): a p-curve
  *   that strays from its edge is projected again from the edge's 3D curve;
  *   one that follows it, or strays by less than a ten-thousandth of the
- *   edge, is kept. On a cylinder made here, with its top circle's true
- *   p-curve and with copies moved off it.
+ *   edge, is kept; one a period away, past a closed face's seam, is
+ *   projected again to the ends the face had. On a cylinder made here,
+ *   with its top circle's true p-curve and with copies moved off it.
  * - sw_occt::plane_over (assets/import/sw_occt_bspline.h): a plane's
  *   conversion made again over a wider box, only where it is that plane in
  *   the same parameters. */
@@ -63,7 +64,7 @@ static void test_a_true_pcurve_is_kept(void)
     double f = 0, l = 0;
     Handle(Geom2d_Curve) c = moved_by(edge, face, 0.0, &f, &l);
     bool projected = true;
-    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, &projected);
+    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, nullptr, &projected);
     SW_CHECK(!projected && out == c);
     SW_CHECK(sw_occt::pcurve_stray(edge, face, c, f, l) < 1e-9);
 }
@@ -77,7 +78,7 @@ static void test_a_stray_pcurve_is_projected_again(void)
     Handle(Geom2d_Curve) c = moved_by(edge, face, -3.0, &f, &l);
     SW_CHECK_NEAR(sw_occt::pcurve_stray(edge, face, c, f, l), 3.0, 1e-9);
     bool projected = false;
-    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, &projected);
+    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, nullptr, &projected);
     SW_CHECK(projected);
     double stray = sw_occt::pcurve_stray(edge, face, out, f, l);
     SW_CHECK_MSG(stray < 1e-6, "projected again, it strays %g", stray);
@@ -92,8 +93,37 @@ static void test_a_small_stray_is_left_alone(void)
     double f = 0, l = 0;
     Handle(Geom2d_Curve) c = moved_by(edge, face, 1e-3, &f, &l);
     bool projected = true;
-    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, &projected);
+    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, nullptr, &projected);
     SW_CHECK(!projected && out == c);
+}
+
+/* A p-curve a period away, past the seam of the closed face: the same
+ * points in space (it strays by nothing), and a loop that jumps across the
+ * whole face to reach it. Kept when nothing says where it should be; with
+ * the ends the face had before conversion, projected again to them. */
+static void test_a_pcurve_a_period_away_is_projected_again(void)
+{
+    TopoDS_Face face;
+    TopoDS_Edge edge;
+    SW_CHECK(side_and_circle(&face, &edge));
+    double f = 0, l = 0;
+    Handle(Geom2d_Curve) c = moved_by(edge, face, 0.0, &f, &l);
+    c->Translate(gp_Vec2d(2.0 * M_PI, 0.0));
+    SW_CHECK(sw_occt::pcurve_stray(edge, face, c, f, l) < 1e-9);
+    bool projected = true;
+    SW_CHECK(sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, nullptr, &projected) == c);
+    SW_CHECK(!projected);
+    sw_occt::PcurveEnds ends;
+    SW_CHECK(sw_occt::pcurve_ends(edge, face, &ends));
+    SW_CHECK_NEAR(ends.reach[0], 0.5 * M_PI, 1e-12);
+    Handle(Geom2d_Curve) out = sw_occt::faithful_pcurve(edge, face, c, f, l, 1e-6, &ends, &projected);
+    SW_CHECK(projected);
+    for (int e = 0; e < 2; e++) {
+        gp_Pnt2d p = out->Value(e ? l : f);
+        SW_CHECK_MSG(p.Distance(ends.at[e]) < 1e-6, "end %d at (%g, %g), not (%g, %g)", e, p.X(),
+                     p.Y(), ends.at[e].X(), ends.at[e].Y());
+    }
+    SW_CHECK(sw_occt::pcurve_stray(edge, face, out, f, l) < 1e-6);
 }
 
 /* A plane's conversion over the unit square, made again over a box that
@@ -141,6 +171,7 @@ int main()
     SW_RUN(test_a_true_pcurve_is_kept);
     SW_RUN(test_a_stray_pcurve_is_projected_again);
     SW_RUN(test_a_small_stray_is_left_alone);
+    SW_RUN(test_a_pcurve_a_period_away_is_projected_again);
     SW_RUN(test_a_plane_is_made_again_over_a_wider_box);
     SW_RUN(test_other_surfaces_are_not_made_again);
     return sw_test_finish();

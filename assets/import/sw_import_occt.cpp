@@ -316,9 +316,10 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
         /* Ten times the file's edge tolerance (not the converted edge's,
          * which the conversion widens to cover its own approximation). */
         bool projected = false;
+        PcurveEnds ends;
         c = faithful_pcurve(moved, converted, c, f, l,
                             10.0 * std::max(BRep_Tool::Tolerance(edge), Precision::Confusion()),
-                            &projected);
+                            pcurve_ends(edge, face, &ends) ? &ends : nullptr, &projected);
         *reprojected += projected;
         Handle(Geom2d_BSplineCurve) b = clamped_pcurve(c, f, l);
         if (edge.Orientation() == TopAbs_REVERSED)

@@ -102,13 +102,39 @@ static bool same_ends(const Handle(Geom2d_Curve) &a, const Handle(Geom2d_Curve) 
            a->Value(last).Distance(b->Value(last)) <= tol;
 }
 
+bool pcurve_ends(const TopoDS_Edge &edge, const TopoDS_Face &face, PcurveEnds *ends)
+{
+    Standard_Real f, l;
+    Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(edge, face, f, l);
+    Handle(Geom_Surface) s = BRep_Tool::Surface(face);
+    if (c.IsNull() || s.IsNull())
+        return false;
+    ends->at[0] = c->Value(f), ends->at[1] = c->Value(l);
+    ends->reach[0] = s->IsUPeriodic() ? 0.25 * s->UPeriod() : HUGE_VAL;
+    ends->reach[1] = s->IsVPeriodic() ? 0.25 * s->VPeriod() : HUGE_VAL;
+    return true;
+}
+
+static bool ends_within(const Handle(Geom2d_Curve) &c, double first, double last,
+                        const PcurveEnds &ends)
+{
+    for (int e = 0; e < 2; e++) {
+        gp_Pnt2d p = c->Value(e ? last : first);
+        if (!(std::fabs(p.X() - ends.at[e].X()) <= ends.reach[0] &&
+              std::fabs(p.Y() - ends.at[e].Y()) <= ends.reach[1]))
+            return false;
+    }
+    return true;
+}
+
 Handle(Geom2d_Curve) faithful_pcurve(const TopoDS_Edge &edge, const TopoDS_Face &face,
                                      const Handle(Geom2d_Curve) &c, double first, double last,
-                                     double allowed, bool *projected)
+                                     double allowed, const PcurveEnds *ends, bool *projected)
 {
     *projected = false;
+    bool astray = ends && !ends_within(c, first, last, *ends);
     double stray = pcurve_stray(edge, face, c, first, last);
-    if (stray <= allowed)
+    if (stray <= allowed && !astray)
         return c;
     Standard_Real f3, l3;
     Handle(Geom_Curve) c3d = BRep_Tool::Curve(edge, f3, l3);
@@ -119,15 +145,22 @@ Handle(Geom2d_Curve) faithful_pcurve(const TopoDS_Edge &edge, const TopoDS_Face 
     for (int i = 1; i < kSamples; i++)
         length += c3d->Value(first + (last - first) * (i - 1) / (kSamples - 1))
                       .Distance(c3d->Value(first + (last - first) * i / (kSamples - 1)));
-    double off = distance_off(c, s, c3d, first, last);
-    if (off <= std::max(allowed, 1e-4 * length))
+    double off = distance_off(c, s, c3d, first, last), enough = std::max(allowed, 1e-4 * length);
+    if (off <= enough && !astray)
         return c;
     double again_off;
     Handle(Geom2d_Curve) again = projected_curve(c3d, s, first, last, &again_off);
+    if (again.IsNull())
+        return c;
     double u0, u1, v0, v1;
     s->Bounds(u0, u1, v0, v1);
     double span = std::max(std::fabs(u1 - u0), std::fabs(v1 - v0));
-    if (again.IsNull() || !(again_off < off) || !same_ends(c, again, first, last, 1e-4 * span))
+    /* Out of reach, c's samples may all lie on the edge while it jumps
+     * across the face between two of them: the projection need only be
+     * as close and end within reach. */
+    bool better = astray ? again_off <= std::max(off, enough) && ends_within(again, first, last, *ends)
+                         : again_off < off && same_ends(c, again, first, last, 1e-4 * span);
+    if (!better)
         return c;
     *projected = true;
     return again;

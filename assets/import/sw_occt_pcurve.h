@@ -9,6 +9,7 @@
 #define SW_OCCT_PCURVE_H
 
 #include <Geom2d_Curve.hxx>
+#include <gp_Pnt2d.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 
@@ -20,14 +21,29 @@ namespace sw_occt {
 double pcurve_stray(const TopoDS_Edge &edge, const TopoDS_Face &face,
                     const Handle(Geom2d_Curve) &c, double first, double last);
 
+/* Where a converted p-curve must start and end: near the ends of the
+ * edge's p-curve on the face before conversion. The conversion moves a
+ * parameter within an arc of a circle, never by a period; a curve that
+ * starts a period away (on the other side of a closed face's seam) is the
+ * same points in space and a loop that jumps across the whole face. */
+struct PcurveEnds {
+    gp_Pnt2d at[2];     /* at first, at last */
+    double reach[2];    /* in u, in v: a quarter of the surface's period there, or infinite */
+};
+
+/* The ends of the edge's p-curve on face (not converted), reaching a
+ * quarter period where its surface is periodic; false when it has none. */
+bool pcurve_ends(const TopoDS_Edge &edge, const TopoDS_Face &face, PcurveEnds *ends);
+
 /* c when it strays at most allowed, or a ten-thousandth of the edge's
- * length, from the edge; else the edge's 3D curve projected onto the face's
- * surface over [first, last] (GeomProjLib, or shape healing's projection
- * where that fails) when that strays less, c otherwise. *projected says
- * which. */
+ * length, from the edge, and starts and ends within reach of ends (when
+ * given); else the edge's 3D curve projected onto the face's surface over
+ * [first, last] (GeomProjLib, or shape healing's projection where that
+ * fails) when that strays less and ends where c does (or, c ending out of
+ * reach, ends within reach), c otherwise. *projected says which. */
 Handle(Geom2d_Curve) faithful_pcurve(const TopoDS_Edge &edge, const TopoDS_Face &face,
                                      const Handle(Geom2d_Curve) &c, double first, double last,
-                                     double allowed, bool *projected);
+                                     double allowed, const PcurveEnds *ends, bool *projected);
 
 }  // namespace sw_occt
 
