@@ -129,26 +129,29 @@ static int flat(const sw_trim_point *in, uint32_t d, uint32_t a, uint32_t b)
     return sqrt(x * x + y * y + z * z) / longest <= tol; /* the height over the longest side */
 }
 
-/* Counts dropped point d (between kept a and b) into result. */
-static void count_drop(sw_trim_tess_result *res, const sw_trim_point *in, uint32_t d, uint32_t a,
-                       uint32_t b)
+/* Counts dropped point d (between kept a and b) into c's result, and lists
+ * it where the caller asked (sw_trim_tess_buffers.dropped). */
+static void count_drop(tt_ctx *c, uint32_t d, uint32_t a, uint32_t b)
 {
+    const sw_trim_point *in = c->in_loops->points;
+    sw_trim_tess_result *res = c->res;
     if (!lost(in, d, a, b))
         return;
+    if (c->out && c->out->dropped && res->dropped_points < c->out->dropped_capacity)
+        c->out->dropped[res->dropped_points] = d;
     res->dropped_points++;
     res->dropped_flat += (uint32_t)flat(in, d, a, b);
 }
 
 /* Drops spike tips until none is left; returns the new count. */
-static uint32_t remove_spikes(const sw_trim_point *in, sw_tt_point *p, uint32_t count,
-                              sw_trim_tess_result *res)
+static uint32_t remove_spikes(tt_ctx *c, sw_tt_point *p, uint32_t count)
 {
     for (uint32_t i = 0; count >= 3 && i < count;) {
         if (!spike(&p[(i + count - 1) % count], &p[i], &p[(i + 1) % count])) {
             i++;
             continue;
         }
-        count_drop(res, in, p[i].src, p[(i + count - 1) % count].src, p[(i + 1) % count].src);
+        count_drop(c, p[i].src, p[(i + count - 1) % count].src, p[(i + 1) % count].src);
         memmove(&p[i], &p[i + 1], sizeof *p * (count - i - 1));
         count--;
         i = i > 0 ? i - 1 : 0; /* the point before may have become a tip */
@@ -202,7 +205,7 @@ static void copy_loops(tt_ctx *c, const double dom[4])
             v = onto_line(v < dom[2] ? dom[2] : v > dom[3] ? dom[3] : v, dom[2], dom[3], near);
             if (n > first && fabs(u - c->pts[n - 1].u) + fabs(v - c->pts[n - 1].v) < eps) {
                 if (!same_uv(&l->points[i], &l->points[i - 1]))
-                    count_drop(c->res, l->points, i, c->pts[n - 1].src, c->pts[n - 1].src);
+                    count_drop(c, i, c->pts[n - 1].src, c->pts[n - 1].src);
                 continue;
             }
             sw_tt_point *p = &c->pts[n++];
@@ -211,9 +214,9 @@ static void copy_loops(tt_ctx *c, const double dom[4])
         while (n - first > 1 && fabs(c->pts[n - 1].u - c->pts[first].u) +
                                         fabs(c->pts[n - 1].v - c->pts[first].v) < eps) {
             n--;
-            count_drop(c->res, l->points, c->pts[n].src, c->pts[n - 1].src, c->pts[first].src);
+            count_drop(c, c->pts[n].src, c->pts[n - 1].src, c->pts[first].src);
         }
-        count = remove_spikes(l->points, c->pts + first, n - first, c->res);
+        count = remove_spikes(c, c->pts + first, n - first);
         n = first + count;
         if (count < 3 || loop_area(c->pts, first, count) == 0) {
             n = first;

@@ -167,6 +167,11 @@ typedef struct sw_trim_tess_buffers {
     uint16_t *indices;
     uint32_t vertex_capacity, index_capacity;
     uint32_t base_vertex;
+    /* Optional (NULL: not listed): the caller's loop points (indices into
+     * loops->points) counted in result->dropped_points, the first
+     * dropped_capacity of them. */
+    uint32_t *dropped;
+    uint32_t dropped_capacity;
 } sw_trim_tess_buffers;
 
 typedef struct sw_trim_tess_result {

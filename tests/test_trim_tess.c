@@ -394,7 +394,7 @@ static sw_status run_runtime(const surface *s, const loops *l, double err, mesh 
     sw_arena a;
     sw_arena_init(&a, g_block, sizeof g_block);
     sw_trim_loops lv = view(l);
-    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0};
+    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0, NULL, 0};
     const sw_trim_tess_options opt = {.crossing_on_segment = 1, .border_fraction = 0.65};
     sw_status st = sw_trim_tess(s->patches, s->count, &lv, err, &opt, &a, &b, &m->res, NULL);
     m->nv = m->res.vertex_count, m->ni = m->res.index_count;
@@ -558,7 +558,7 @@ static void test_sizes_and_determinism(void)
     SW_CHECK(memcmp(pos2, g_pos, sizeof(float) * 3 * m.nv) == 0);
     SW_CHECK(memcmp(idx2, g_idx, sizeof(uint16_t) * m.ni) == 0);
     /* base_vertex shifts every index. */
-    sw_trim_tess_buffers b = {g_pos, g_nrm, NULL, NULL, g_idx, MAXV, MAXI, 1000};
+    sw_trim_tess_buffers b = {g_pos, g_nrm, NULL, NULL, g_idx, MAXV, MAXI, 1000, NULL, 0};
     SW_CHECK(sw_trim_tess(s.patches, s.count, &lv, 1e-3, NULL, &a, &b, &res, &e) == SW_OK);
     uint32_t shifted = 0;
     for (uint32_t i = 0; i < m.ni; i++)
@@ -591,7 +591,7 @@ static void test_small_buffers(void)
     for (int k = 0; k < 5; k++) {
         memset(g_pos, 0xAB, sizeof(float) * 3 * (full.nv + 4));
         memset(g_idx, 0xCD, sizeof(uint16_t) * (full.ni + 4));
-        sw_trim_tess_buffers b = {g_pos, g_nrm, NULL, NULL, g_idx, vcaps[k], icaps[k], 0};
+        sw_trim_tess_buffers b = {g_pos, g_nrm, NULL, NULL, g_idx, vcaps[k], icaps[k], 0, NULL, 0};
         sw_trim_tess_result res;
         sw_error e = {0};
         SW_CHECK(sw_trim_tess(s.patches, s.count, &lv, 1e-3, NULL, &a, &b, &res, &e) ==

@@ -7,7 +7,7 @@
 static sw_status call(const surface *s, const loops *l, double err, sw_arena *a, uint32_t *tris)
 {
     sw_trim_loops lv = view(l);
-    sw_trim_tess_buffers b = {g_pos, g_nrm, NULL, NULL, g_idx, MAXV, MAXI, 0};
+    sw_trim_tess_buffers b = {g_pos, g_nrm, NULL, NULL, g_idx, MAXV, MAXI, 0, NULL, 0};
     sw_trim_tess_result res;
     sw_error e = {0};
     sw_status st = sw_trim_tess(s->patches, s->count, &lv, err, NULL, a, &b, &res, &e);
@@ -65,7 +65,7 @@ static void test_bad_inputs(void)
     sw_trim_loops lv = {l.pts, l.first, 1};
     uint32_t bad_first[2] = {5, 2};
     lv.loop_first = bad_first;
-    sw_trim_tess_buffers b = {g_pos, g_nrm, NULL, NULL, g_idx, MAXV, MAXI, 0};
+    sw_trim_tess_buffers b = {g_pos, g_nrm, NULL, NULL, g_idx, MAXV, MAXI, 0, NULL, 0};
     sw_error e = {0};
     SW_CHECK(sw_trim_tess(s.patches, 1, &lv, 1e-3, NULL, &a, &b, NULL, &e) == SW_ERR_ARG);
     /* NULL pointers, no patches, no buffers. */
@@ -77,7 +77,7 @@ static void test_bad_inputs(void)
     SW_CHECK(sw_trim_tess(s.patches, 1, NULL, 1e-3, NULL, &a, &b, NULL, &e) == SW_ERR_ARG);
     SW_CHECK(sw_trim_tess(s.patches, 1, &lv, 1e-3, NULL, NULL, &b, NULL, &e) == SW_ERR_ARG);
     SW_CHECK(sw_trim_tess(s.patches, 1, &lv, 1e-3, NULL, &a, NULL, NULL, &e) == SW_ERR_ARG);
-    sw_trim_tess_buffers nobuf = {NULL, NULL, NULL, NULL, NULL, 10, 10, 0};
+    sw_trim_tess_buffers nobuf = {NULL, NULL, NULL, NULL, NULL, 10, 10, 0, NULL, 0};
     SW_CHECK(sw_trim_tess(s.patches, 1, &lv, 1e-3, NULL, &a, &nobuf, NULL, &e) == SW_ERR_ARG);
     /* A bad degree, a bad domain, a non-finite control point. */
     static surface bad;

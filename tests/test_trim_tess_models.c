@@ -208,7 +208,7 @@ static void check_surface(const sw_pack *pack, uint32_t s, double err,
     sw_trim_loops loops = {g_pts, g_first, loop_count};
     sw_arena a;
     sw_arena_init(&a, block, bytes);
-    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0};
+    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0, NULL, 0};
     sw_trim_tess_result r;
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);

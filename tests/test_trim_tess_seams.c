@@ -98,7 +98,7 @@ static void test_crossings_on_their_segment(void)
     sw_arena a;
     sw_arena_init(&a, g_block, sizeof g_block);
     sw_trim_loops lv = view(&l);
-    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0};
+    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0, NULL, 0};
     const sw_trim_tess_options opt = {.crossing_on_segment = 1};
     sw_error e = {0};
     SW_CHECK(sw_trim_tess(s.patches, s.count, &lv, 2e-3, &opt, &a, &b, &seg.res, &e) == SW_OK);
@@ -131,7 +131,7 @@ static double border_worst(const surface *s, const loops *l, double error, doubl
     sw_arena a;
     sw_arena_init(&a, g_block, sizeof g_block);
     sw_trim_loops lv = view(l);
-    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0};
+    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0, NULL, 0};
     const sw_trim_tess_options opt = {.crossing_on_segment = 1, .border_fraction = fraction};
     SW_CHECK(sw_trim_tess(s->patches, s->count, &lv, error, &opt, &a, &b, &m->res, NULL) == SW_OK);
     m->nv = m->res.vertex_count, m->ni = m->res.index_count;

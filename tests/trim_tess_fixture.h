@@ -123,7 +123,7 @@ static inline sw_status run(const surface *s, const loops *l, double err, mesh *
     sw_arena a;
     sw_arena_init(&a, g_block, sizeof g_block);
     sw_trim_loops lv = view(l);
-    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0};
+    sw_trim_tess_buffers b = {g_pos, g_nrm, g_uv, g_ids, g_idx, MAXV, MAXI, 0, NULL, 0};
     sw_error e = {0};
     sw_status st = sw_trim_tess(s->patches, s->count, &lv, err, NULL, &a, &b, &m->res, &e);
     if (st != SW_OK)

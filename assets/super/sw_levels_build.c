@@ -341,7 +341,7 @@ static sw_status tessellate(level_worker *w, uint32_t s, double bound, int drop_
     uint32_t count = 0;
     sw_trim_patches_from_pack(b->pack, s, w->patches, b->max_patches, &count, NULL);
     sw_trim_tess_buffers out = { w->positions, w->normals, w->uvs, w->out_ids, w->indices,
-                                 SW_WALK_VERTICES, SW_WALK_INDICES, 0 };
+                                 SW_WALK_VERTICES, SW_WALK_INDICES, 0, NULL, 0 };
     const sw_trim_tess_options opt = sw_seam_surface_tess_options();
     *loops = tess_loops(w, s, 1);
     sw_status st = sw_trim_tess(w->patches, count, loops, bound, &opt, &w->scratch, &out, t,

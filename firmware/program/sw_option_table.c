@@ -177,7 +177,8 @@ const sw_option_desc sw_option_table[] = {
              "triangles to draw), or stays (0)"},
     {.name = "--fill-crossings", ON_OFF, .def = 1, F(fill_crossings),
      .help = "close each seam crossing (a T-junction with the surface across) with a "
-             "zero-area fan (1), or not (0: single-pixel pinholes open along such seams)"},
+             "zero-area fan, and give each loop point the tessellator dropped its vertex "
+             "and a fan (1), or not (0: single-pixel pinholes open along such seams)"},
     /* ---- help ---- */
     {.name = "--help", .kind = SW_OPTION_FLAG, F(help), .flags = SW_OPTION_STOPS,
      .help = "this, on standard output"},

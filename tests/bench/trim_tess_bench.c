@@ -217,7 +217,7 @@ static sw_status trim_once(const surface *s, const trims *t, double tol, buffers
     sw_arena a;
     sw_arena_init(&a, b->scratch, b->scratch_bytes);
     sw_trim_tess_buffers out = {b->pos, b->nrm, uvs ? b->uvs : NULL, NULL, b->idx,
-                                65536, 6 * 65536, 0};
+                                65536, 6 * 65536, 0, NULL, 0};
     /* The runtime's options (crossings on their seam segment, border cells at
      * the error the seams leave): with the defaults' nearest-point crossings
      * the measured error reached 4-5x the bound here. */

@@ -128,3 +128,143 @@ uint32_t sw_seam_fill_crossings(sw_seam_fill *f, const uint32_t *ids, uint32_t v
     *crossings_left = crossings - filled;
     return triangles;
 }
+
+uint32_t *sw_seam_fill_drop_list(sw_seam_fill *f, uint32_t *capacity)
+{
+    /* next[] is the crossings' alone, and sw_seam_fill_drops (which reads
+     * the list) runs before them. */
+    *capacity = f->max_vertices;
+    return f->next;
+}
+
+/* The table slot of key (id + 1) in the first size slots of keys. */
+static uint32_t id_slot(const sw_seam_fill *f, uint32_t size, uint32_t key)
+{
+    uint32_t i = (key * 2654435761u) & (size - 1);
+    while (f->keys[i] && f->keys[i] != key)
+        i = (i + 1) & (size - 1);
+    return i;
+}
+
+/* The mesh vertex of seam vertex id, UNSET when it has none. */
+static uint32_t vertex_of(const sw_seam_fill *f, uint32_t size, uint32_t id)
+{
+    uint32_t i = id_slot(f, size, id + 1);
+    return f->keys[i] ? f->uses[i] : UNSET;
+}
+
+/* Appends the vertex of loop point p, at a's normal; UNSET when there is
+ * no room. */
+static uint32_t add_vertex(sw_seam_fill_mesh *m, const sw_trim_point *p, uint32_t a)
+{
+    if (m->vertex_count >= m->vertex_capacity)
+        return UNSET;
+    uint32_t v = m->vertex_count++;
+    memcpy(m->positions + 3 * (size_t)v, p->p, 3 * sizeof(float));
+    memcpy(m->normals + 3 * (size_t)v, m->normals + 3 * (size_t)a, 3 * sizeof(float));
+    if (m->uvs)
+        memcpy(m->uvs + 2 * (size_t)v, p->uv, 2 * sizeof(float));
+    m->ids[v] = p->id;
+    return v;
+}
+
+static int add_triangle(sw_seam_fill_mesh *m, uint32_t a, uint32_t b, uint32_t c)
+{
+    if (a == b || b == c || c == a)
+        return 1;   /* a run that came back to a: nothing to cover there */
+    if (m->index_count + 3 > m->index_capacity)
+        return 0;
+    m->indices[m->index_count++] = (uint16_t)a;
+    m->indices[m->index_count++] = (uint16_t)b;
+    m->indices[m->index_count++] = (uint16_t)c;
+    return 1;
+}
+
+/* The drops, sorted (insertion: a surface drops a handful). */
+static void sort_drops(uint32_t *d, uint32_t n)
+{
+    for (uint32_t i = 1; i < n; i++)
+        for (uint32_t j = i; j > 0 && d[j - 1] > d[j]; j--) {
+            uint32_t t = d[j];
+            d[j] = d[j - 1], d[j - 1] = t;
+        }
+}
+
+static int is_dropped(const sw_seam_drop_list *drops, uint32_t point)
+{
+    uint32_t lo = 0, hi = drops->count;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (drops->points[mid] < point)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < drops->count && drops->points[lo] == point;
+}
+
+/* The mesh vertex of loop point i: UNSET when it was dropped or its seam
+ * vertex is not in the mesh. */
+static uint32_t kept_vertex(const sw_seam_fill *f, uint32_t size, const sw_trim_loops *loops,
+                            const sw_seam_drop_list *drops, uint32_t i)
+{
+    return is_dropped(drops, i) ? UNSET : vertex_of(f, size, loops->points[i].id);
+}
+
+/* The fan over the missing points of loop l from its point `from` on
+ * (kept, mesh vertex a), once round. */
+static void fill_loop(const sw_seam_fill *f, uint32_t size, const sw_trim_loops *loops,
+                      const sw_seam_drop_list *drops, uint32_t l, uint32_t from, uint32_t a,
+                      sw_seam_fill_mesh *m, uint32_t *filled, uint32_t *left)
+{
+    uint32_t first = loops->loop_first[l], n = loops->loop_first[l + 1] - first;
+    uint32_t last = a;   /* the fan's last vertex: a, or the last missing point's */
+    for (uint32_t j = 1; j <= n; j++) {
+        uint32_t i = first + (from + j) % n;
+        const sw_trim_point *p = &loops->points[i];
+        uint32_t v = kept_vertex(f, size, loops, drops, i);
+        if (v != UNSET) {   /* kept: the run ends here */
+            if (last != a && !add_triangle(m, a, last, v))
+                (*left)++;
+            a = last = v;
+            continue;
+        }
+        if (m->ids[last] == p->id)
+            continue;   /* the same seam vertex again */
+        uint32_t d = add_vertex(m, p, a);
+        if (d == UNSET || (last != a && !add_triangle(m, a, last, d))) {
+            (*left)++;
+            continue;
+        }
+        (*filled)++;
+        last = d;
+    }
+}
+
+uint32_t sw_seam_fill_drops(sw_seam_fill *f, const sw_trim_loops *loops, sw_seam_drop_list *drops,
+                            sw_seam_fill_mesh *m, uint32_t *filled, uint32_t *left)
+{
+    *filled = *left = 0;
+    uint32_t size = sw_pow2_at_least(2 * m->vertex_count + 16, 16);
+    if (size > f->table)
+        return 0;
+    sort_drops(drops->points, drops->count);
+    memset(f->keys, 0, size * sizeof(uint32_t));
+    for (uint32_t v = 0; v < m->vertex_count; v++) {
+        if (m->ids[v] == SW_TRIM_INTERIOR || m->ids[v] == SW_TRIM_CROSSING)
+            continue;
+        uint32_t i = id_slot(f, size, m->ids[v] + 1);
+        if (!f->keys[i])
+            f->keys[i] = m->ids[v] + 1, f->uses[i] = v;
+    }
+    uint32_t before = m->index_count;
+    for (uint32_t l = 0; l < loops->loop_count; l++) {
+        uint32_t first = loops->loop_first[l], n = loops->loop_first[l + 1] - first, from = 0;
+        while (from < n && kept_vertex(f, size, loops, drops, first + from) == UNSET)
+            from++;
+        if (from < n)
+            fill_loop(f, size, loops, drops, l, from,
+                      kept_vertex(f, size, loops, drops, first + from), m, filled, left);
+    }
+    return (m->index_count - before) / 3;
+}

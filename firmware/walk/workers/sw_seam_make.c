@@ -66,7 +66,9 @@ static sw_status tessellate(sw_seam_maker *k, uint32_t s, const sw_trim_loops *l
     if (st != SW_OK)
         return st;
     sw_trim_tess_buffers out = { k->positions, k->normals, k->uvs, k->ids, k->indices,
-                                 SW_WALK_VERTICES, SW_WALK_INDICES, 0 };
+                                 SW_WALK_VERTICES, SW_WALK_INDICES, 0, NULL, 0 };
+    if (k->fill)
+        out.dropped = sw_seam_fill_drop_list(k->fill, &out.dropped_capacity);
     const sw_trim_tess_options opt = sw_seam_surface_tess_options();
     *capped = 0;
     for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
@@ -85,16 +87,25 @@ static int8_t snorm8(float x)
     return (int8_t)lrintf(c * 127.0f);
 }
 
+/* Loop points the tessellator dropped and sw_seam_fill_drops gave a
+ * vertex and a fan (filled), or could not (left). */
+typedef struct sw_seam_drops {
+    uint32_t filled, left;
+} sw_seam_drops;
+
 /* Border vertices must be their seam vertex's position bit for bit (the
  * neighbour across the seam draws the same float), and every loop point must
- * be in the mesh: each violation is a crack. A dropped point whose triangle
- * with its kept neighbours is flat in space leaves no gap, only a T-vertex
+ * be in the mesh: each violation is a crack. With the fill, dropped points
+ * are given their vertex (sw_seam_fill_drops): those it could not give one
+ * are cracks. Without it, a dropped point whose triangle with its kept
+ * neighbours is flat in space leaves no gap, only a T-vertex
  * (sw_trim_tess_result.dropped_flat): counted with the crossings. */
 static uint32_t count_cracks(const sw_seam_maker *k, const sw_trim_tess_result *t,
-                             uint32_t *crossings)
+                             const sw_seam_drops *drops, uint32_t *crossings)
 {
-    uint32_t cracks = t->dropped_points - t->dropped_flat;
-    *crossings += t->dropped_flat;
+    /* Dropped points given a vertex and a fan are neither. */
+    uint32_t cracks = drops->filled ? drops->left : t->dropped_points - t->dropped_flat;
+    *crossings += drops->filled ? 0 : t->dropped_flat;
     for (uint32_t i = 0; i < t->vertex_count; i++) {
         *crossings += k->ids[i] == SW_TRIM_CROSSING;
         if (k->ids[i] == SW_TRIM_INTERIOR || k->ids[i] == SW_TRIM_CROSSING)
@@ -126,7 +137,8 @@ static void copy_out(const sw_seam_maker *k, sw_seam_cache *c, const sw_seam_ent
  * *placed 0 when there is no room. */
 static sw_status attempt(sw_seam_maker *k, uint32_t s, sw_trim_loops *loops, uint32_t *outer,
                          double bound, sw_seam_cache *c, sw_seam_place_fn place, void *ctx,
-                         sw_seam_entry *e, sw_trim_tess_result *t, int *placed)
+                         sw_seam_entry *e, sw_trim_tess_result *t, sw_seam_drops *drops,
+                         int *placed)
 {
     int capped = 0;
     sw_status st = tessellate(k, s, loops, bound, t, &capped);
@@ -146,10 +158,26 @@ static sw_status attempt(sw_seam_maker *k, uint32_t s, sw_trim_loops *loops, uin
     if (st != SW_OK)
         return st;
     e->fill_triangles = 0;
+    *drops = (sw_seam_drops){ 0, 0 };
+    /* The drops first: their list lies where the crossings' fill links the
+     * border. */
+    if (k->fill && t->dropped_points > 0) {
+        sw_seam_fill_mesh m = { k->positions, k->normals, k->uvs, k->ids, k->indices,
+                                t->vertex_count, t->index_count, SW_WALK_VERTICES,
+                                SW_WALK_INDICES };
+        uint32_t capacity = 0;
+        uint32_t *listed = sw_seam_fill_drop_list(k->fill, &capacity);
+        sw_seam_drop_list list = { listed, t->dropped_points < capacity ? t->dropped_points
+                                                                        : capacity };
+        e->fill_triangles += sw_seam_fill_drops(k->fill, loops, &list, &m, &drops->filled,
+                                                &drops->left);
+        drops->left += t->dropped_points - list.count;
+        t->vertex_count = m.vertex_count, t->index_count = m.index_count;
+    }
     if (k->fill) {
         uint32_t left = 0;
-        e->fill_triangles = sw_seam_fill_crossings(k->fill, k->ids, t->vertex_count, k->indices,
-                                                   &t->index_count, SW_WALK_INDICES, &left);
+        e->fill_triangles += sw_seam_fill_crossings(k->fill, k->ids, t->vertex_count, k->indices,
+                                                    &t->index_count, SW_WALK_INDICES, &left);
     }
     *placed = place(ctx, s, t->vertex_count, t->index_count, e);
     if (*placed) {
@@ -181,15 +209,16 @@ uint64_t sw_seam_make(sw_seam_maker *k, uint32_t s, float bound, float seam_boun
      * as capped; its border stays the seams'. */
     for (int coarser = 0; coarser < 4; coarser++) {
         sw_trim_tess_result t;
+        sw_seam_drops drops;
         int placed = 0;
         double b = bound * (double)(1u << (2 * coarser));
-        if (attempt(k, s, &loops, &outer, b, c, place, place_ctx, e, &t, &placed) != SW_OK)
+        if (attempt(k, s, &loops, &outer, b, c, place, place_ctx, e, &t, &drops, &placed) != SW_OK)
             break;
         if (placed) {
             e->error_bound = (float)t.error_bound;
             e->capped = (uint8_t)(e->capped || coarser > 0);
             uint32_t crossings = 0;
-            e->cracks = count_cracks(k, &t, &crossings);
+            e->cracks = count_cracks(k, &t, &drops, &crossings);
             e->crossings = crossings;
             *no_room = 0;   /* placed coarser: drawn, not retried */
             return t.index_count / 3 - e->fill_triangles;

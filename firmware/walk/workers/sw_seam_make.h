@@ -38,7 +38,7 @@ typedef struct sw_seam_maker {
     float *positions, *normals, *uvs;
     uint32_t *ids;
     uint16_t *indices;            /* one surface's, as the tessellator writes it */
-    sw_seam_fill *fill;           /* fans over crossings; NULL: none */
+    sw_seam_fill *fill;           /* fans over crossings and drops; NULL: none */
 } sw_seam_maker;
 
 /* Arena bytes of one maker for the largest surface m (fill not included:
