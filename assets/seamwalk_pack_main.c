@@ -316,6 +316,10 @@ static void print_summary(const build_options *o, const sw_model *model,
         if (reports[i].pcurves_computed > 0)
             printf("seamwalk-pack: %s: %zu parameter curves computed from model-space curves\n",
                    sw_pack_tool_base_name(o->inputs[i]), reports[i].pcurves_computed);
+        if (reports[i].faces_moved > 0)
+            printf("seamwalk-pack: %s: %zu closed faces converted a period along (OpenCASCADE's "
+                   "conversion failed where they were)\n", sw_pack_tool_base_name(o->inputs[i]),
+                   reports[i].faces_moved);
     }
     const sw_seam_report *r = &seams->sewing;
     printf("seamwalk-pack: seams: %zu boundary vertices, %zu edges (%zu sewn, %zu free, %zu "

@@ -18,8 +18,8 @@ if(SW_OCCT_FOUND)
   sw_host_only_test(test_import_occt_truncations PROGRAMS test_import_occt)
 endif()
 
-# The importer's geometry repairs (assets/import/sw_occt_pcurve.h, the
-# plane's in sw_occt_bspline.h), in C++ against OCCT: C++ gets its own
+# The importer's geometry repairs (assets/import/sw_occt_pcurve.h,
+# sw_occt_convert.h, the plane's in sw_occt_bspline.h), in C++ against OCCT: C++ gets its own
 # warnings (sw_apply_warnings' are C's).
 if(SW_OCCT_FOUND)
   add_executable(test_occt_geometry test_occt_geometry.cpp)

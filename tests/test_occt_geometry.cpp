@@ -6,15 +6,24 @@
  *   edge, is kept; one a period away, past a closed face's seam, is
  *   projected again to the ends the face had. On a cylinder made here,
  *   with its top circle's true p-curve and with copies moved off it.
+ * - sw_occt::converted_moving (assets/import/sw_occt_convert.h): a torus
+ *   band over a whole turn that OCCT cannot convert, converted a period
+ *   along.
  * - sw_occt::plane_over (assets/import/sw_occt_bspline.h): a plane's
  *   conversion made again over a wider box, only where it is that plane in
  *   the same parameters. */
 #include "sw_occt_bspline.h"
+#include "sw_occt_convert.h"
 #include "sw_occt_pcurve.h"
 #include "sw_test.h"
 
 #include <GeomConvert.hxx>
 #include <Geom_CylindricalSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Standard_Failure.hxx>
+#include <cmath>
+#include <memory>
 #include <Geom_Plane.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 
@@ -126,6 +135,51 @@ static void test_a_pcurve_a_period_away_is_projected_again(void)
     SW_CHECK(sw_occt::pcurve_stray(edge, face, out, f, l) < 1e-6);
 }
 
+/* A torus band over a whole turn in v and 1.5e-14 more, from a hair
+ * under pi (a fetched hotend mount's fillets, these very numbers): OCCT's
+ * conversion throws (the range, rounded, is over 2 pi); moved a period
+ * along, it converts, and the conversion is the torus where its loops
+ * run. */
+static void test_a_face_over_a_period_converts_moved_along(void)
+{
+    gp_Torus torus(gp_Ax3(gp::XOY()), 0.6, 0.175);
+    double v0 = 3.141592653589778, v1 = 9.4247779607693793;
+    TopoDS_Face face = BRepBuilderAPI_MakeFace(new Geom_ToroidalSurface(torus), 0.0, 1.5, v0, v1,
+                                               1e-7);
+    bool threw = false;
+    try {
+        BRepBuilderAPI_NurbsConvert plain(face, Standard_True);
+    } catch (const Standard_Failure &) {
+        threw = true;
+    }
+    SW_CHECK_MSG(threw, "OCCT converted it: this test no longer shows the failure it is about");
+    TopoDS_Face moved = face;
+    bool was_moved = false;
+    std::unique_ptr<BRepBuilderAPI_NurbsConvert> conv;
+    try {
+        conv = sw_occt::converted_moving(&moved, &was_moved);
+    } catch (const Standard_Failure &e) {
+        SW_CHECK_MSG(false, "not converted moved either: %s", e.GetMessageString());
+        return;
+    }
+    SW_CHECK(was_moved && !moved.IsSame(face));
+    TopoDS_Face converted = TopoDS::Face(conv->Shape());
+    Handle(Geom_Surface) s = BRep_Tool::Surface(converted);
+    int off = 0, samples = 0;
+    for (TopExp_Explorer e(converted, TopAbs_EDGE); e.More(); e.Next()) {
+        Standard_Real f, l;
+        Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), converted, f, l);
+        for (int i = 0; !c.IsNull() && i <= 8; i++, samples++) {
+            gp_Pnt2d uv = c->Value(f + (l - f) * i / 8);
+            gp_Pnt p = s->Value(uv.X(), uv.Y());
+            double ru = std::hypot(p.X(), p.Y()) - 0.6;   /* off the tube's circle */
+            off += std::fabs(std::hypot(ru, p.Z()) - 0.175) > 1e-6;
+        }
+    }
+    SW_CHECK(samples > 0);
+    SW_CHECK_MSG(off == 0, "%d of %d points of the loops off the torus", off, samples);
+}
+
 /* A plane's conversion over the unit square, made again over a box that
  * reaches past it: the box is its domain and every point the plane's. */
 static void test_a_plane_is_made_again_over_a_wider_box(void)
@@ -172,6 +226,7 @@ int main()
     SW_RUN(test_a_stray_pcurve_is_projected_again);
     SW_RUN(test_a_small_stray_is_left_alone);
     SW_RUN(test_a_pcurve_a_period_away_is_projected_again);
+    SW_RUN(test_a_face_over_a_period_converts_moved_along);
     SW_RUN(test_a_plane_is_made_again_over_a_wider_box);
     SW_RUN(test_other_surfaces_are_not_made_again);
     return sw_test_finish();

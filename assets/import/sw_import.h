@@ -40,6 +40,8 @@ typedef struct sw_import_report {
     size_t pcurves_computed;    /* trims made by point inversion from model-space curves */
     size_t pcurves_reprojected; /* converted p-curves that strayed from their edge, projected
                                    again from its model-space curve */
+    size_t faces_moved;         /* closed faces converted a period along: OpenCASCADE's
+                                   conversion failed where they were */
     /* Entities that could not be used and were left out (a face and what
      * it needs): the model lacks them. */
     sw_import_tally unsupported;

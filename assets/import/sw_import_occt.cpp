@@ -25,6 +25,7 @@ extern "C" {
 #include "sw_occt_measure.h"
 }
 #include "sw_occt_bspline.h"
+#include "sw_occt_convert.h"
 #include "sw_occt_internal.h"
 #include "sw_occt_pcurve.h"
 extern "C" {
@@ -89,6 +90,7 @@ extern "C" {
 #include <cstring>
 #include <sys/stat.h>
 #include <exception>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -386,6 +388,7 @@ struct FaceWork {
     Surface surface;
     std::vector<Loop> loops;
     int reprojected = 0;
+    bool moved = false;               /* converted a period along (sw_occt_convert.h) */
     std::string why;                  /* "" once converted */
     sw_status failed = SW_OK;         /* out of memory: the import stops */
 };
@@ -413,23 +416,26 @@ void prepare_face(const ImportContext *ctx, const TopoDS_Face &face, bool mirror
 void convert_face_unguarded(FaceWork *w, double floor_mm)
 {
     int computed = w->missing > 0 || w->file_gaps > 0;
-    BRepBuilderAPI_NurbsConvert conv(w->forward, Standard_True);
-    TopoDS_Face converted = TopoDS::Face(conv.Shape().Oriented(TopAbs_FORWARD));
+    TopoDS_Face face = w->forward;   /* or its copy a period along */
+    bool moved = false;
+    std::unique_ptr<BRepBuilderAPI_NurbsConvert> conv = converted_moving(&face, &moved);
+    w->moved = moved;
+    TopoDS_Face converted = TopoDS::Face(conv->Shape().Oriented(TopAbs_FORWARD));
     fill_surface(bspline_surface_of(converted), &w->surface);
-    TopoDS_Wire outer = BRepTools::OuterWire(w->forward);
-    for (TopoDS_Iterator it(w->forward); it.More(); it.Next()) {
+    TopoDS_Wire outer = BRepTools::OuterWire(face);
+    for (TopoDS_Iterator it(face); it.More(); it.Next()) {
         if (it.Value().ShapeType() != TopAbs_WIRE)
             continue;
         Loop loop;
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
-        w->why = loop_of_wire(wire, w->forward, conv, converted, computed, floor_mm, &loop,
+        w->why = loop_of_wire(wire, face, *conv, converted, computed, floor_mm, &loop,
                               &w->reprojected);
         if (!w->why.empty())
             return;
         w->loops.push_back(std::move(loop));
     }
-    widen_plane(w->forward, converted, w->loops, &w->surface);
+    widen_plane(face, converted, w->loops, &w->surface);
 }
 
 /* No exception leaves a thread: each becomes the face's reason, or a stop. */
@@ -474,6 +480,7 @@ sw_status add_face(ImportContext *ctx, const FaceWork &w, size_t index)
             ctx->report->faces++;
             ctx->report->pcurves_computed += (size_t)std::max(w.missing, w.file_gaps);
             ctx->report->pcurves_reprojected += (size_t)w.reprojected;
+            ctx->report->faces_moved += w.moved;
             return SW_OK;
         }
         why = ctx->err ? ctx->err->message : sw_status_name(status);

@@ -63,6 +63,7 @@ void sw_import_report_merge(sw_import_report *total, const sw_import_report *one
     total->faces += one->faces;
     total->pcurves_computed += one->pcurves_computed;
     total->pcurves_reprojected += one->pcurves_reprojected;
+    total->faces_moved += one->faces_moved;
     if (sw_import_report_strict_messages(total) == 0 && sw_import_report_strict_messages(one) > 0)
         memcpy(total->first_message, one->first_message, sizeof total->first_message);
     tally_merge(&total->unsupported, &one->unsupported);
