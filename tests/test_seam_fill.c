@@ -169,15 +169,24 @@ static void test_a_listed_drop_whose_vertex_is_kept_elsewhere(void)
     SW_CHECK(fill_drops(&s, pts, 9, &filled, &left) == 0 && filled == 0);
 }
 
-static void test_a_dropped_point_gets_its_vertex_and_a_fan(void)
+/* The strip's fill with the seam vertices `missing` (0 ends the list; none
+ * of them in the mesh) after loop point `after`: the fans' triangles. */
+static uint32_t fill_missing(strip_mesh *s, uint32_t vertex_capacity, sw_trim_point *pts,
+                             int after, const uint32_t *missing, uint32_t *filled,
+                             uint32_t *left)
 {
     init();
+    make_strip_mesh(s, vertex_capacity);
+    return fill_drops(s, pts, strip_loop(pts, after, missing), filled, left);
+}
+
+static void test_a_dropped_point_gets_its_vertex_and_a_fan(void)
+{
     strip_mesh s;
-    make_strip_mesh(&s, 16);
     sw_trim_point pts[16];
-    const uint32_t dropped[] = { 30, 0 };
-    uint32_t n = strip_loop(pts, 1, dropped), filled = 0, left = 9;
-    SW_CHECK(fill_drops(&s, pts, n, &filled, &left) == 1);
+    const uint32_t missing[] = { 30, 0 };
+    uint32_t filled = 0, left = 9;
+    SW_CHECK(fill_missing(&s, 16, pts, 1, missing, &filled, &left) == 1);
     SW_CHECK(filled == 1 && left == 0 && s.m.vertex_count == V + 1);
     /* at its seam vertex's position, with its kept neighbour's normal */
     SW_CHECK(s.ids[V] == 30 && memcmp(s.positions + 3 * V, pts[2].p, sizeof pts[2].p) == 0);
@@ -188,13 +197,11 @@ static void test_a_dropped_point_gets_its_vertex_and_a_fan(void)
 
 static void test_a_run_of_dropped_points_is_one_fan(void)
 {
-    init();
     strip_mesh s;
-    make_strip_mesh(&s, 16);
     sw_trim_point pts[16];
-    const uint32_t dropped[] = { 30, 30, 31, 0 };   /* 30 twice in a row: one vertex */
-    uint32_t n = strip_loop(pts, 1, dropped), filled = 0, left = 9;
-    SW_CHECK(fill_drops(&s, pts, n, &filled, &left) == 2);
+    const uint32_t missing[] = { 30, 30, 31, 0 };   /* 30 twice in a row: one vertex */
+    uint32_t filled = 0, left = 9;
+    SW_CHECK(fill_missing(&s, 16, pts, 1, missing, &filled, &left) == 2);
     SW_CHECK(filled == 2 && left == 0 && s.m.vertex_count == V + 2);
     SW_CHECK(has_triangle(&s, 1, V, V + 1) && has_triangle(&s, 1, V + 1, 2));
 }
@@ -202,25 +209,21 @@ static void test_a_run_of_dropped_points_is_one_fan(void)
 /* Dropped after the loop's last point: the run wraps round to its first. */
 static void test_a_run_across_the_loops_start(void)
 {
-    init();
     strip_mesh s;
-    make_strip_mesh(&s, 16);
     sw_trim_point pts[16];
-    const uint32_t dropped[] = { 30, 0 };
-    uint32_t n = strip_loop(pts, 7, dropped), filled = 0, left = 9;
-    SW_CHECK(fill_drops(&s, pts, n, &filled, &left) == 1);
+    const uint32_t missing[] = { 30, 0 };
+    uint32_t filled = 0, left = 9;
+    SW_CHECK(fill_missing(&s, 16, pts, 7, missing, &filled, &left) == 1);
     SW_CHECK(has_triangle(&s, 4, V, 0));   /* from 12 (vertex 4) to 10 (vertex 0) */
 }
 
 static void test_drops_without_room_are_told(void)
 {
-    init();
     strip_mesh s;
-    make_strip_mesh(&s, V);   /* no room for a vertex */
     sw_trim_point pts[16];
-    const uint32_t dropped[] = { 30, 0 };
-    uint32_t n = strip_loop(pts, 1, dropped), filled = 9, left = 0;
-    SW_CHECK(fill_drops(&s, pts, n, &filled, &left) == 0);
+    const uint32_t missing[] = { 30, 0 };
+    uint32_t filled = 9, left = 0;
+    SW_CHECK(fill_missing(&s, V, pts, 1, missing, &filled, &left) == 0);   /* no room */
     SW_CHECK(filled == 0 && left == 1 && s.m.vertex_count == V && s.m.index_count == STRIP);
 }
 
