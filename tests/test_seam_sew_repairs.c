@@ -84,14 +84,53 @@ static void test_tjunction_step_inserts_the_vertex_the_intervals_missed(void)
         SW_CHECK(h.slots[4].vertex == B && h.slots[5].vertex == X && h.slots[6].vertex == A);
         SW_CHECK(fabsf(h.slots[5].uv[0] - 0.5f) < 1e-6f && fabsf(h.slots[5].uv[1]) < 1e-6f);
     }
-    /* x farther than the tolerance from the chord: nothing to do */
+    /* x farther than twice the tolerance from the chord: nothing to do */
     h.slots[5] = h.slots[6], h.slots[6] = h.slots[7];
     h.loops[1].slot_count = 3, h.slot_count = 7;
-    const double far[5][3] = {{0, 0, 0}, {0.5, 2e-3, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
+    const double far[5][3] = {{0, 0, 0}, {0.5, 3e-3, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
     poly.p = (double *)far;
     SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK && inserted == 0);
     free(h.slots);
     free(h.loops);
+}
+
+/* Step 3b beyond the tolerance: x 1.5 tolerances off the chord a-b. One
+ * loop runs a, x, b, the other b, a (a fillet's arc tangent to a line,
+ * its vertex near the tangent point within the tolerance of the line on
+ * one face, not on the other: a lock body's free edges): the two differ
+ * by x alone, and x goes in. Where x's other neighbour is not a, it is a
+ * corner of its own beyond the tolerance, and stays out. */
+static size_t inserted_off_the_chord(uint32_t before_x)
+{
+    const double p[6][3] = {{0, 0, 0}, {0.5, 1.5e-3, 0}, {1, 0, 0},
+                            {0.5, 1, 0}, {0.5, -1, 0}, {0.2, 1, 0}};
+    enum { A, X, B, C, D, E };
+    sw_seam_polylines poly = {.p = (double *)p, .vertex_count = 6, .tolerance = 1e-3};
+    sw_error err = {0};
+    sew_state st = {.poly = &poly, .tol = 1e-3, .err = &err};
+    sw_seam_host h = {0};
+    h.slots = malloc(7 * sizeof *h.slots);
+    h.loops = malloc(2 * sizeof *h.loops);
+    const uint32_t order[7] = {before_x, X, B, C, B, A, D};
+    for (int k = 0; k < 7; k++)
+        h.slots[k] = (sw_seam_slot){order[k], {(float)p[order[k]][0], (float)p[order[k]][1]}};
+    h.loops[0] = (sw_seam_loop){0, 0, 4, SW_SEAM_LOOP_OUTER};
+    h.loops[1] = (sw_seam_loop){1, 4, 3, SW_SEAM_LOOP_OUTER};
+    h.slot_count = 7, h.loop_count = 2;
+    size_t inserted = 99;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK);
+    if (inserted == 1)
+        SW_CHECK(h.slot_count == 8 && h.slots[5].vertex == X && h.slots[6].vertex == A);
+    free(h.slots);
+    free(h.loops);
+    return inserted;
+}
+
+static void test_tjunction_step_reaches_twice_the_tolerance_between_shared_ends(void)
+{
+    enum { A, X, B, C, D, E };
+    SW_CHECK(inserted_off_the_chord(A) == 1);
+    SW_CHECK(inserted_off_the_chord(E) == 0);
 }
 
 /* Step 3b where the vertex is already the neighbour (the boxed sphere's
@@ -205,5 +244,6 @@ int main(void)
     SW_RUN(test_trim_past_the_domain_is_put_on_it);
     SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
     SW_RUN(test_tjunction_step_merges_a_spike_tip_into_its_neighbour);
+    SW_RUN(test_tjunction_step_reaches_twice_the_tolerance_between_shared_ends);
     return sw_test_finish();
 }

@@ -5,7 +5,9 @@
  * ends), x is a vertex of the second loop's edge too: it is inserted there
  * (its (u, v) on that chord), and the two loops share the edge x-b. The interval rule misses these where the interval
  * is shorter than the tolerance (it takes it for a point contact) or where
- * x's partner was merged into its neighbour (the boxed sphere). Where x is
+ * x's partner was merged into its neighbour (the boxed sphere). Where the
+ * first loop runs a, x, b (the two differ by x alone) the reach is the
+ * merges' guard, twice the tolerance. Where x is
  * already a's other neighbour in the second loop (x, a, b), a merges into x
  * instead: an insertion would leave a spike x, a, x with a on one side of
  * the seam only. */
@@ -130,13 +132,20 @@ static int insertion_on_edge(const sw_seam_host *h, const tj_use *u, uint32_t k,
  * found the tip as a gap point). Then a merges into x instead when within
  * the reach: both loops run x, b. Likewise b for a, b, x. */
 static int insertion(const sew_state *s, const sw_seam_host *h, const tj_use *u, uint32_t x,
-                     tj_insert *out)
+                     int between, tj_insert *out)
 {
     const sw_seam_loop *lp = &h->loops[u->loop];
     uint32_t k = u->slot, j = next_distinct(h, lp, k);
     uint32_t a = h->slots[k].vertex, b = h->slots[j].vertex;
     sw_vec3 pa = at(s, a), pb = at(s, b), px = at(s, x), ab = sw_v3_sub(pb, pa);
     double reach = fmax(s->tol, sew_gap(s->poly, x) + fmax(sew_gap(s->poly, a), sew_gap(s->poly, b)));
+    /* x between a and b in its own loop: the two loops differ by x alone,
+     * and the reach is the merges' guard, twice the tolerance. An arc
+     * tangent to a line leaves it slowly: its vertices near the tangent
+     * point lie within the tolerance of the line on one face and a little
+     * beyond on the other. */
+    if (between)
+        reach = fmax(reach, 2.0 * s->tol);
     if (!(sw_v3_segment_distance(px, pa, pb) <= reach))
         return 0;
     uint32_t spike = h->slots[prev_distinct(h, lp, k)].vertex == x ? a
@@ -242,11 +251,22 @@ static tj_end *free_ends(const tj_use *uses, size_t n, size_t *count)
     return ends;
 }
 
+/* The vertex beyond x from b in the loop of use w (of edge x-b). */
+static uint32_t beyond(const sw_seam_host *h, const tj_use *w, uint32_t x)
+{
+    const sw_seam_loop *lp = &h->loops[w->loop];
+    uint32_t k = w->slot;
+    if (h->slots[k].vertex == x)
+        return h->slots[prev_distinct(h, lp, k)].vertex;
+    return h->slots[next_distinct(h, lp, next_distinct(h, lp, k))].vertex;
+}
+
 /* x, of an unsewn edge x-b, into the other unsewn edges at b. */
 static void try_end(const sew_state *s, const sw_seam_host *h, const tj_use *uses,
                     const tj_end *ends, size_t nends, size_t i, uint32_t x, uint32_t b,
                     uint8_t *taken, tj_insert *ins, size_t *count)
 {
+    uint32_t next = beyond(h, &uses[i], x);
     size_t lo = 0, hi = nends;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
@@ -260,7 +280,7 @@ static void try_end(const sew_state *s, const sw_seam_host *h, const tj_use *use
         uint32_t a = (uint32_t)(u->key >> 32) == b ? (uint32_t)u->key : (uint32_t)(u->key >> 32);
         if (ends[k].use == i || u->loop == uses[i].loop || a == x || taken[ends[k].use])
             continue;
-        if (insertion(s, h, u, x, &ins[*count])) {
+        if (insertion(s, h, u, x, next == a, &ins[*count])) {
             taken[ends[k].use] = 1;
             (*count)++;
             return;
