@@ -193,17 +193,24 @@ static uint32_t strip(sw_seam_standin *m, uint32_t i, uint32_t base, const sw_le
     return written;
 }
 
-/* Vertices and indices the stand-in needs; cracks for loops it leaves as
- * the level has them. */
+/* Vertices and indices the stand-in needs; cracks for outer loops it
+ * leaves as the level has them. A hole the level was made without (its
+ * tessellator refused the loops with it, and drew the surface whole) is
+ * drawn filled, as the walk's own mesh draws it then
+ * (sw_seam_entry.holes_filled), not counted as a crack. */
 static void sizes(const sw_seam_standin *m, uint32_t s, const sw_level *lv_rec, uint32_t *n,
-                  uint32_t *idx, uint32_t *cracks)
+                  uint32_t *idx, uint32_t *cracks, uint8_t *holes_filled)
 {
     const sw_seam_graph *g = &m->pack->seam;
-    *n = lv_rec->vertex_count, *idx = lv_rec->index_count, *cracks = 0;
+    *n = lv_rec->vertex_count, *idx = lv_rec->index_count, *cracks = 0, *holes_filled = 0;
     for (uint32_t i = 0; i < g->surface_loops[s + 1] - g->surface_loops[s]; i++) {
         const sw_level_chain *ch = &m->pack->levels.chains[lv_rec->first_chain + i];
         if (ch->point_count == 0) {
-            *cracks += m->vanished[i] ? 0 : m->loop_count[i];
+            int outer = (g->loops[g->surface_loops[s] + i].flags & SW_SEAM_LOOP_OUTER) != 0;
+            if (!m->vanished[i] && outer)
+                *cracks += m->loop_count[i];
+            else if (!m->vanished[i])
+                *holes_filled = 1;
             continue;
         }
         *n += m->loop_count[i];
@@ -221,11 +228,12 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32
     memset(e, 0, sizeof *e);
     e->made_bound = e->error_bound = rec->error;
     uint32_t points = 0, n = 0, idx = 0, cracks = 0;
+    uint8_t holes_filled = 0;
     if (!gather(m, front, s, &points)) {
         e->state = SW_SEAM_GONE;
         return 1;
     }
-    sizes(m, s, rec, &n, &idx, &cracks);
+    sizes(m, s, rec, &n, &idx, &cracks, &holes_filled);
     if (n > SW_WALK_VERTICES || idx > SW_WALK_INDICES) {
         e->state = SW_SEAM_FAILED;
         e->cracks = points;
@@ -258,6 +266,7 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32
         uv[i] = NAN;
     e->vertex_count = n, e->index_count = written;
     e->cracks = cracks;
+    e->holes_filled = holes_filled;
     e->state = SW_SEAM_READY;
     return 1;
 }
