@@ -70,17 +70,24 @@ typedef struct border_item {
     double key;
     int event;        /* 0 grid point, 1 entry, 2 exit */
     int entry_first;  /* at a loop point on the border: its entry sorts before its exit */
+    int hint_side;    /* an event's side as the clip found it (sw_tt_clip), -1 none */
     uint32_t chain;
 } border_item;
 
+/* A loop point the clip meets at t = 0 or 1 is taken as it is (crossing),
+ * and may lie a rounding off its side, strictly inside or outside the cell:
+ * it goes on the side the clip found, not by its coordinates. */
 static void place_on_border(const sw_tt_rect *r, border_item *it)
 {
+    static const int from_clip[4] = {3, 1, 0, 2};
     double u = it->pv.u, v = it->pv.v;
-    if (v == r->v0 && u < r->u1)
+    int on_a_side = u == r->u0 || u == r->u1 || v == r->v0 || v == r->v1;
+    int side = !on_a_side && it->hint_side >= 0 ? from_clip[it->hint_side] : -1;
+    if (side == 0 || (side < 0 && v == r->v0 && u < r->u1))
         it->side = 0, it->key = u;
-    else if (u == r->u1 && v < r->v1)
+    else if (side == 1 || (side < 0 && u == r->u1 && v < r->v1))
         it->side = 1, it->key = v;
-    else if (v == r->v1 && u > r->u0)
+    else if (side == 2 || (side < 0 && v == r->v1 && u > r->u0))
         it->side = 2, it->key = -u;
     else
         it->side = 3, it->key = -v;
@@ -189,12 +196,12 @@ static void find_events(walk *w, const uint32_t *segs, uint32_t seg_count)
         if (!ain && (bin || t0 < t1)) {
             border_item *it = &w->items[w->item_count++];
             it->pv = crossing(w->r, w->t, segs[k], t0, s0);
-            it->event = 1, it->chain = segs[k], it->entry_first = 0;
+            it->event = 1, it->chain = segs[k], it->entry_first = 0, it->hint_side = s0;
         }
         if (!bin && (ain || t0 < t1)) {
             border_item *it = &w->items[w->item_count++];
             it->pv = crossing(w->r, w->t, segs[k], t1, s1);
-            it->event = 2, it->chain = segs[k], it->entry_first = 0;
+            it->event = 2, it->chain = segs[k], it->entry_first = 0, it->hint_side = s1;
         }
     }
 }
@@ -379,6 +386,7 @@ int sw_tt_cell_rings(const sw_tt_trims *t, const sw_tt_rect *r, const uint32_t *
     for (uint32_t i = 0; i < border_count; i++) {
         border_item *it = &w.items[w.item_count++];
         it->pv = border[i], it->event = 0, it->chain = SW_TT_NONE, it->entry_first = 0;
+        it->hint_side = -1;
     }
     find_events(&w, segs, seg_count);
     if (!link_chains(&w, border_count, stamp, cell_id))
