@@ -46,7 +46,7 @@ typedef struct sw_seam_entry {
     uint32_t crossings;      /* border vertices on a seam segment */
     uint32_t fill_triangles; /* of index_count / 3, the fans over crossings (sw_seam_fill.h) */
     uint8_t state, capped, holes_filled;
-    uint8_t untangled;       /* drawn with thin excursions cut out (sw_seam_surface_untangle) */
+    uint8_t untangled;       /* drawn untangled (sw_seam_surface_untangle) */
 } sw_seam_entry;
 
 typedef struct sw_seam_cache {

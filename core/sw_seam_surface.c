@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "sw_seam_surface.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -172,8 +173,204 @@ static uint32_t mark_lobes(const sw_trim_point *pt, uint32_t first, uint32_t n, 
     return marked;
 }
 
+/* ---- loops that touch ---------------------------------------------------- */
+
+/* Segments under one box while points look for the nearest segment of an
+ * earlier loop; the box tests a surface may spend on it (points x boxes). */
+#define TOUCH_CHUNK 16u
+#define TOUCH_TESTS (1u << 26)
+/* In shrinks (sw_trim_tess_shrink): a point this near an earlier loop may
+ * cross it once both move (each up to four shrinks), and is moved to at
+ * least the margin from it; a move past the most is not made. A point a few
+ * floats across is a rounding too: the reach adds TOUCH_FLOATS of them. */
+#define TOUCH_REACH 12.0
+#define TOUCH_MARGIN 16.0
+#define TOUCH_MOST 1e6
+#define TOUCH_FLOATS 4.0
+
+typedef struct touch_box {
+    double box[4];
+    uint32_t first, count, loop;
+} touch_box;
+
+typedef struct seg2 {
+    double au, av, bu, bv;
+} seg2;
+
+static seg2 segment(const sw_trim_point *pt, uint32_t a, uint32_t b)
+{
+    return (seg2){ pt[a].uv[0], pt[a].uv[1], pt[b].uv[0], pt[b].uv[1] };
+}
+
+/* Distance from (u, v) to segment s; *t the nearest point's parameter. */
+static double seg_distance(const seg2 *s, double u, double v, double *t)
+{
+    double du = s->bu - s->au, dv = s->bv - s->av, l2 = du * du + dv * dv;
+    double k = l2 > 0 ? ((u - s->au) * du + (v - s->av) * dv) / l2 : 0;
+    k = k < 0 ? 0 : k > 1 ? 1 : k;
+    *t = k;
+    double x = s->au + k * du - u, y = s->av + k * dv - v;
+    return sqrt(x * x + y * y);
+}
+
+/* The unit normal of s toward the region (left when region_left). */
+static void region_normal(const seg2 *s, int region_left, double n[2])
+{
+    double du = s->bu - s->au, dv = s->bv - s->av, l = sqrt(du * du + dv * dv);
+    double sign = region_left ? 1.0 : -1.0;
+    n[0] = l > 0 ? -sign * dv / l : 0, n[1] = l > 0 ? sign * du / l : 0;
+}
+
+/* Point p moved along dir (unit) until it stands at least margin from
+ * segments s and s2 (s2 may be s): float steps from the move's size up,
+ * doubling; 0 (p kept) when no step up to `most` does. */
+static int move_off(sw_trim_point *p, const double dir[2], const seg2 *s, const seg2 *s2,
+                    double margin, double most)
+{
+    double t;
+    for (double step = margin; step <= most; step *= 2) {
+        float u = (float)(p->uv[0] + dir[0] * step), v = (float)(p->uv[1] + dir[1] * step);
+        if (u == p->uv[0] && dir[0] != 0)
+            u = nextafterf(u, dir[0] > 0 ? INFINITY : -INFINITY);
+        if (v == p->uv[1] && dir[1] != 0)
+            v = nextafterf(v, dir[1] > 0 ? INFINITY : -INFINITY);
+        if (seg_distance(s, u, v, &t) >= margin && seg_distance(s2, u, v, &t) >= margin) {
+            p->uv[0] = u, p->uv[1] = v;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static double loop_area2(const sw_trim_point *pt, uint32_t first, uint32_t end)
+{
+    double sum = 0;
+    for (uint32_t k = first; k < end; k++) {
+        const sw_trim_point *p = &pt[k], *q = &pt[k + 1 == end ? first : k + 1];
+        sum += (double)p->uv[0] * q->uv[1] - (double)q->uv[0] * p->uv[1];
+    }
+    return sum;
+}
+
+/* Boxes of up to TOUCH_CHUNK consecutive segments of every loop, grown by
+ * reach. Returns how many. */
+static uint32_t touch_boxes(const sw_trim_point *pt, const uint32_t *loop_first,
+                            uint32_t loop_count, double reach, touch_box *box)
+{
+    uint32_t n = 0;
+    for (uint32_t l = 0; l < loop_count; l++)
+        for (uint32_t a = loop_first[l]; a < loop_first[l + 1]; a += TOUCH_CHUNK, n++) {
+            uint32_t end = loop_first[l + 1], count = end - a < TOUCH_CHUNK ? end - a : TOUCH_CHUNK;
+            touch_box *b = &box[n];
+            *b = (touch_box){ { INFINITY, -INFINITY, INFINITY, -INFINITY }, a, count, l };
+            for (uint32_t k = a; k <= a + count; k++) {
+                const sw_trim_point *p = &pt[k == end ? loop_first[l] : k];
+                double r = reach + 2 * TOUCH_FLOATS * FLT_EPSILON *
+                                       fmax(fabs(p->uv[0]), fabs(p->uv[1]));
+                b->box[0] = fmin(b->box[0], p->uv[0] - r);
+                b->box[1] = fmax(b->box[1], p->uv[0] + r);
+                b->box[2] = fmin(b->box[2], p->uv[1] - r);
+                b->box[3] = fmax(b->box[3], p->uv[1] + r);
+            }
+        }
+    return n;
+}
+
+/* The loops as part_touching sees them: boxes of their segments, and on
+ * which side of each the region lies. */
+typedef struct touch_ctx {
+    sw_trim_point *pt;
+    const uint32_t *loop_first;
+    const touch_box *box;
+    const uint8_t *left;   /* per loop: the region lies left of its segments */
+    uint32_t nbox;
+    double reach, margin, most;
+} touch_ctx;
+
+/* The nearest segment to point i among the boxes of loops before `loop`,
+ * within reach (and a few floats): its start in *seg (UINT32_MAX if none),
+ * its loop in *seg_loop, the nearest point's parameter on it in *seg_t. */
+static void nearest_earlier(const touch_ctx *c, uint32_t loop, uint32_t i, uint32_t *seg,
+                            uint32_t *seg_loop, double *seg_t)
+{
+    double u = c->pt[i].uv[0], v = c->pt[i].uv[1], t;
+    double best = c->reach + TOUCH_FLOATS * FLT_EPSILON * fmax(fabs(u), fabs(v));
+    *seg = UINT32_MAX;
+    for (uint32_t b = 0; b < c->nbox && c->box[b].loop < loop; b++) {
+        const touch_box *x = &c->box[b];
+        if (u < x->box[0] || u > x->box[1] || v < x->box[2] || v > x->box[3])
+            continue;
+        uint32_t end = c->loop_first[x->loop + 1];
+        for (uint32_t k = x->first; k < x->first + x->count; k++) {
+            seg2 s = segment(c->pt, k, k + 1 == end ? c->loop_first[x->loop] : k + 1);
+            double d = seg_distance(&s, u, v, &t);
+            if (d <= best)
+                best = d, *seg = k, *seg_loop = x->loop, *seg_t = t;
+        }
+    }
+}
+
+/* Point i, near segment k of loop m at t, moved into m's region: off the
+ * segment along its normal, or, nearest at one of its ends, along the
+ * mitre of the two segments there. Returns 1 when moved. */
+static int part_point(const touch_ctx *c, uint32_t i, uint32_t m, uint32_t k, double t)
+{
+    uint32_t f = c->loop_first[m], e = c->loop_first[m + 1];
+    seg2 s = segment(c->pt, k, k + 1 == e ? f : k + 1), s2 = s;
+    double dir[2], n2[2];
+    region_normal(&s, c->left[m], dir);
+    if (t == 0 || t == 1) {
+        s2 = t == 0 ? segment(c->pt, k == f ? e - 1 : k - 1, k)
+                    : segment(c->pt, k + 1 == e ? f : k + 1, k + 2 >= e ? f + (k + 2 - e) : k + 2);
+        region_normal(&s2, c->left[m], n2);
+        double nu = dir[0] + n2[0], nv = dir[1] + n2[1], nl = sqrt(nu * nu + nv * nv);
+        if (nl > 1e-3)
+            dir[0] = nu / nl, dir[1] = nv / nl;
+    }
+    return move_off(&c->pt[i], dir, &s, &s2, c->margin, c->most);
+}
+
+/* Where a point of one loop lies on or next to another loop (a hole
+ * tangent to the outline, a hole sharing a vertex with it), the
+ * tessellator's region shrink moves both into their region, across each
+ * other, and the clipping refuses the surface. Each such point of a later
+ * loop is moved off the earlier loop into that loop's region side (to the
+ * next float and beyond, at least TOUCH_MARGIN shrinks): the region keeps
+ * a neck far below a pixel where it was pinched. Border vertices keep
+ * their seam position: only the (u, v) the clipping sees moves. Returns
+ * the points moved; 0 when the search would pass TOUCH_TESTS. */
+static uint32_t part_touching(sw_trim_point *pt, const uint32_t *loop_first, uint32_t loop_count,
+                              uint32_t outer, double shrink, sw_arena *scratch)
+{
+    uint32_t total = loop_first[loop_count], nbox = 0, moved = 0;
+    for (uint32_t l = 0; l < loop_count; l++)
+        nbox += (loop_first[l + 1] - loop_first[l] + TOUCH_CHUNK - 1) / TOUCH_CHUNK;
+    if (loop_count < 2 || !(shrink > 0) || (uint64_t)total * nbox > TOUCH_TESTS)
+        return 0;
+    size_t mark = sw_arena_mark(scratch);
+    touch_box *box = sw_arena_alloc(scratch, sizeof *box * ((size_t)nbox + 1), 8);
+    uint8_t *left = sw_arena_alloc(scratch, (size_t)loop_count, 1);
+    if (box && left) {
+        for (uint32_t l = 0; l < loop_count; l++)
+            left[l] = (loop_area2(pt, loop_first[l], loop_first[l + 1]) > 0) == (l < outer);
+        touch_ctx c = { pt, loop_first, box, left, 0, TOUCH_REACH * shrink,
+                        TOUCH_MARGIN * shrink, TOUCH_MOST * shrink };
+        c.nbox = touch_boxes(pt, loop_first, loop_count, c.reach, box);
+        for (uint32_t l = 1; l < loop_count; l++)
+            for (uint32_t i = loop_first[l]; i < loop_first[l + 1]; i++) {
+                uint32_t k, m = 0;
+                double t = 0;
+                nearest_earlier(&c, l, i, &k, &m, &t);
+                moved += k != UINT32_MAX && part_point(&c, i, m, k, t);
+            }
+    }
+    sw_arena_reset_to(scratch, mark);
+    return moved;
+}
+
 uint32_t sw_seam_surface_untangle(sw_trim_loops *loops, sw_trim_point *points,
-                                  uint32_t *loop_first, uint32_t *outer, sw_arena *scratch)
+                                  uint32_t *loop_first, uint32_t *outer, double shrink,
+                                  sw_arena *scratch)
 {
     uint32_t total = loop_first[loops->loop_count], table_size = 1;   /* the largest loop's */
     for (uint32_t l = 0; l < loops->loop_count; l++)
@@ -210,5 +407,5 @@ uint32_t sw_seam_surface_untangle(sw_trim_loops *loops, sw_trim_point *points,
         *outer = outer_kept;
     }
     sw_arena_reset_to(scratch, mark);
-    return dropped;
+    return dropped + part_touching(points, loop_first, loops->loop_count, *outer, shrink, scratch);
 }

@@ -59,15 +59,21 @@ int sw_seam_surface_loops(const sw_seam_select *state, uint32_t surface, float p
  * in (u, v): never thin. Then, where two of a loop's segments cross and
  * the lobe between them encloses under SW_SEAM_THIN of the loop's area (a
  * needle whose two sides cross short of its tip), the lobe's points go
- * (loops of up to 2048 points, four lobes each). loops views points and
- * loop_first, which are
- * compacted in place; loop_count may drop (a loop left with fewer than
- * three points goes; *outer, the outer loops first in loops, follows).
- * scratch lends at most 21 bytes a point and is given back. Work is bounded: at
- * most 64 points read per point of a loop (excursions past that are left).
- * Returns the points dropped (0 also when scratch is too small). */
+ * (loops of up to 2048 points, four lobes each). Last, a point of one
+ * loop on or within a few shrinks of an earlier loop (a hole tangent to
+ * the outline, or sharing a vertex with it; shrink: sw_trim_tess_shrink of
+ * the surface's patches) is moved off it, into its region, by a float step:
+ * the tessellator's region shrink would move the two across each other.
+ * loops views points and loop_first, which are compacted in place;
+ * loop_count may drop (a loop left with fewer than three points goes;
+ * *outer, the outer loops first in loops, follows). scratch lends at most
+ * 21 bytes a point and is given back. Work is bounded: at most 64 points
+ * read per point of a loop (excursions past that are left), 2^26 box tests
+ * for the touching points. Returns the points dropped or moved (0 also
+ * when scratch is too small). */
 #define SW_SEAM_THIN 0.05
 uint32_t sw_seam_surface_untangle(sw_trim_loops *loops, sw_trim_point *points,
-                                  uint32_t *loop_first, uint32_t *outer, sw_arena *scratch);
+                                  uint32_t *loop_first, uint32_t *outer, double shrink,
+                                  sw_arena *scratch);
 
 #endif

@@ -299,9 +299,7 @@ static sw_status shrink_region(tt_ctx *c, const double dom[4])
     double *shift = sw_arena_alloc(c->arena, sizeof(double) * 2 * (n + 1), 8);
     if (!shift)
         return sw_error_set(c->err, SW_ERR_NO_MEMORY, "trim tess: arena too small for loops");
-    double big = fmax(fmax(fabs(dom[0]), fabs(dom[1])), fmax(fabs(dom[2]), fabs(dom[3])));
-    double delta = fmax(SW_TT_SHRINK_REL * fmax(dom[1] - dom[0], dom[3] - dom[2]),
-                        1024 * DBL_EPSILON * big);
+    double delta = sw_tt_shrink_of(dom);
     for (uint32_t k = 0; k < c->trims.loop_count; k++) {
         const sw_tt_loop *l = &c->loops[k];
         for (uint32_t i = 0; i < l->count; i++) {

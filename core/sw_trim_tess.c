@@ -146,14 +146,28 @@ static sw_status copy_patches(tt_ctx *c)
     return SW_OK;
 }
 
-static void domain_of(const tt_ctx *c, double dom[4])
+static void domain_of(const sw_trim_patch *patches, uint32_t count, double dom[4])
 {
     dom[0] = dom[2] = INFINITY, dom[1] = dom[3] = -INFINITY;
-    for (uint32_t i = 0; i < c->patch_count; i++) {
-        const float *d = c->in_patches[i].domain;
+    for (uint32_t i = 0; i < count; i++) {
+        const float *d = patches[i].domain;
         dom[0] = fmin(dom[0], d[0]), dom[1] = fmax(dom[1], d[1]);
         dom[2] = fmin(dom[2], d[2]), dom[3] = fmax(dom[3], d[3]);
     }
+}
+
+double sw_tt_shrink_of(const double dom[4])
+{
+    double big = fmax(fmax(fabs(dom[0]), fabs(dom[1])), fmax(fabs(dom[2]), fabs(dom[3])));
+    return fmax(SW_TT_SHRINK_REL * fmax(dom[1] - dom[0], dom[3] - dom[2]),
+                1024 * DBL_EPSILON * big);
+}
+
+double sw_trim_tess_shrink(const sw_trim_patch *patches, uint32_t patch_count)
+{
+    double dom[4];
+    domain_of(patches, patch_count, dom);
+    return patch_count ? sw_tt_shrink_of(dom) : 0;
 }
 
 /* ---- output ---------------------------------------------------------------- */
@@ -390,7 +404,7 @@ static sw_status run(tt_ctx *c)
     if (s != SW_OK)
         return s;
     double dom[4];
-    domain_of(c, dom);
+    domain_of(c->in_patches, c->patch_count, dom);
     if ((s = sw_tt_prepare_loops(c, dom)) != SW_OK)
         return s;
     if (c->trims.loop_count > 0 &&

@@ -194,6 +194,12 @@ typedef struct sw_trim_tess_result {
     double error_bound;                  /* the largest cell bound: <= error unless capped */
 } sw_trim_tess_result;
 
+/* How far sw_trim_tess moves each loop point into the trimmed region for
+ * these patches (the region shrink: up to four times this at a sharp
+ * corner). Loops that touch, or come closer than a few times this, may
+ * cross once moved: sw_seam_surface_untangle parts them. */
+double sw_trim_tess_shrink(const sw_trim_patch *patches, uint32_t patch_count);
+
 /* Scratch bytes sw_trim_tess may take from its arena, worst case, for a
  * surface of patch_count patches, loops of point_count points in all, at
  * most max_degree in u and v, with options opt (NULL: defaults). */

@@ -96,6 +96,10 @@ static inline size_t sw_tt_ctrl_doubles(int n, int m)
     return (size_t)(n + 1) * (size_t)(m + 1) * 4;
 }
 
+/* How far loop points move into the region for a surface of domain dom
+ * (sw_trim_tess_shrink). */
+double sw_tt_shrink_of(const double dom[4]);
+
 /* Orients every loop with the region on its left, moves its points into the
  * region (c->pts, c->loops, c->trims) and checks them against the domain. */
 sw_status sw_tt_prepare_loops(tt_ctx *c, const double dom[4]);

@@ -17,6 +17,7 @@ typedef struct fixture {
     sw_trim_point pts[CAP];
     uint32_t first[8];
     uint32_t n, loops;
+    double shrink;   /* the tessellator's (sw_trim_tess_shrink); 0: no touching points parted */
 } fixture;
 
 static void add(fixture *f, double u, double v, uint32_t id)
@@ -33,7 +34,7 @@ static uint32_t untangle(fixture *f, uint32_t *outer, sw_trim_loops *out)
     sw_arena a;
     sw_arena_init(&a, block, sizeof block);
     *out = (sw_trim_loops){f->pts, f->first, f->loops};
-    uint32_t dropped = sw_seam_surface_untangle(out, f->pts, f->first, outer, &a);
+    uint32_t dropped = sw_seam_surface_untangle(out, f->pts, f->first, outer, f->shrink, &a);
     SW_CHECK(a.used == 0);
     return dropped;
 }

@@ -4,6 +4,7 @@ sw_add_test(test_trim_tess SOURCES test_trim_tess.c LIBS sw_core)
 sw_add_test(test_trim_tess_errors SOURCES test_trim_tess_errors.c LIBS sw_core)
 sw_add_test(test_trim_tess_seams SOURCES test_trim_tess_seams.c LIBS sw_core)
 sw_add_test(test_trim_cell SOURCES test_trim_cell.c LIBS sw_core)
+sw_add_test(test_trim_tess_touching SOURCES test_trim_tess_touching.c LIBS sw_core)
 sw_add_test(test_trim_tess_collapse SOURCES test_trim_tess_collapse.c LIBS sw_core)
 # A runtime-only build stops here (tests/CMakeLists.txt): the tests below
 # need the assets library's IGES reader.

@@ -3,9 +3,9 @@
  * coarsest drawn (sw_pack_verify_tess.h), as firmware/walk/sw_seam_walk.c draws
  * it: its loops from sw_seam_surface_loops (a surface whose outer loop
  * vanished is not drawn); a surface the clipping refuses for crossing loops
- * is tried with its slits cut out (sw_seam_surface_untangle), then without
- * its holes; one that needs too many vertices is tried at four times the
- * bound, three times. */
+ * is tried untangled (sw_seam_surface_untangle), then without its holes;
+ * one that needs too many vertices is tried at four times the bound, three
+ * times. */
 #include "sw_pack_verify_tess.h"
 
 #include <math.h>
@@ -28,6 +28,7 @@ typedef struct verifier {
     sw_trim_point *points;
     uint32_t *loop_first;
     sw_trim_patch *patches;
+    uint32_t patch_count;   /* the surface's, as tessellate last read them */
     uint32_t max_points, max_patches;
     sw_arena scratch;
     void *scratch_block;
@@ -113,6 +114,7 @@ static sw_status tessellate(verifier *v, uint32_t s, const sw_trim_loops *loops,
     uint32_t patch_count = 0;
     sw_status st = sw_trim_patches_from_pack(v->pack, s, v->patches, v->max_patches,
                                              &patch_count, err);
+    v->patch_count = st == SW_OK ? patch_count : 0;
     sw_trim_tess_result result;
     const sw_trim_tess_options opt = sw_seam_surface_tess_options();
     for (int attempt = 0; st == SW_OK && attempt < ATTEMPTS; attempt++, bound *= 4.0) {
@@ -145,7 +147,9 @@ static sw_status check_surface(verifier *v, uint32_t s, double seam_bound,
         bound = 1.0;
     sw_status st = tessellate(v, s, &loops, bound, err);
     if (st == SW_ERR_FORMAT &&
-        sw_seam_surface_untangle(&loops, v->points, v->loop_first, &outer, &v->scratch) > 0) {
+        sw_seam_surface_untangle(&loops, v->points, v->loop_first, &outer,
+                                 sw_trim_tess_shrink(v->patches, v->patch_count),
+                                 &v->scratch) > 0) {
         out->untangled++;
         st = tessellate(v, s, &loops, bound, err);
     }

@@ -21,7 +21,8 @@ typedef struct sw_pack_tess_report {
     uint32_t checks;              /* surface tessellations tried (vanished ones not) */
     uint32_t failed;              /* of them, refused by the tessellator */
     uint32_t holes_filled;        /* drawn without their holes, as the runtime then draws them */
-    uint32_t untangled;           /* drawn with slits cut out (sw_seam_surface_untangle) */
+    uint32_t untangled;           /* drawn untangled: slits cut out, touching loops parted
+                                     (sw_seam_surface_untangle) */
     uint32_t first_failed;        /* the first surface refused, UINT32_MAX when none was */
 } sw_pack_tess_report;
 

@@ -125,8 +125,9 @@ typedef struct sw_seam_frame {
     uint32_t capped_surfaces;     /* drawn coarser than their bound (over 65536 vertices) */
     uint32_t holes_filled;        /* drawn without their holes: a hole's coarse polyline
                                      crossed another loop, the tessellator refused the whole */
-    uint32_t untangled;           /* drawn with a slit cut out of a loop: the tessellator
-                                     refused the loops as they were (sw_seam_surface.h) */
+    uint32_t untangled;           /* drawn with a slit cut out of a loop or touching loops
+                                     parted: the tessellator refused the loops as they
+                                     were (sw_seam_surface.h) */
     uint32_t retessellated;       /* surfaces tessellated this frame */
     uint32_t evicted;             /* meshes the cache gave up for them */
     uint64_t retess_triangles;    /* triangles those made */

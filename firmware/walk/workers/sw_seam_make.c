@@ -63,6 +63,7 @@ static sw_status tessellate(sw_seam_maker *k, uint32_t s, const sw_trim_loops *l
     uint32_t patch_count = 0;
     sw_status st = sw_trim_patches_from_pack(k->pack, s, k->patches, k->max_patches,
                                              &patch_count, NULL);
+    k->patch_count = st == SW_OK ? patch_count : 0;
     if (st != SW_OK)
         return st;
     sw_trim_tess_buffers out = { k->positions, k->normals, k->uvs, k->ids, k->indices,
@@ -132,9 +133,9 @@ static void copy_out(const sw_seam_maker *k, sw_seam_cache *c, const sw_seam_ent
     memcpy(c->index_data + i0, k->indices, sizeof(uint16_t) * e->index_count);
 }
 
-/* One attempt at bound: tessellate (with slits cut out, then without the
- * holes, when the loops cross), fans, a place in the cache. SW_OK with
- * *placed 0 when there is no room. */
+/* One attempt at bound: tessellate (with slits cut out and touching loops
+ * parted, then without the holes, when the loops cross), fans, a place in
+ * the cache. SW_OK with *placed 0 when there is no room. */
 static sw_status attempt(sw_seam_maker *k, uint32_t s, sw_trim_loops *loops, uint32_t *outer,
                          double bound, sw_seam_cache *c, sw_seam_place_fn place, void *ctx,
                          sw_seam_entry *e, sw_trim_tess_result *t, sw_seam_drops *drops,
@@ -143,7 +144,9 @@ static sw_status attempt(sw_seam_maker *k, uint32_t s, sw_trim_loops *loops, uin
     int capped = 0;
     sw_status st = tessellate(k, s, loops, bound, t, &capped);
     if (st == SW_ERR_FORMAT &&
-        sw_seam_surface_untangle(loops, k->points, k->loop_first, outer, &k->scratch) > 0) {
+        sw_seam_surface_untangle(loops, k->points, k->loop_first, outer,
+                                 sw_trim_tess_shrink(k->patches, k->patch_count),
+                                 &k->scratch) > 0) {
         e->untangled = 1;
         st = tessellate(k, s, loops, bound, t, &capped);
     }

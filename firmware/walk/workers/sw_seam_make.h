@@ -33,6 +33,7 @@ typedef struct sw_seam_maker {
     sw_trim_point *points;        /* the same, as the tessellator takes them */
     uint32_t *loop_first;         /* the most loops of a surface, + 1 */
     sw_trim_patch *patches;       /* the most patches of a surface */
+    uint32_t patch_count;         /* the surface's, as tessellate last read them */
     uint32_t max_points, max_patches;
     sw_arena scratch;             /* the tessellator's */
     float *positions, *normals, *uvs;
