@@ -5,7 +5,8 @@
  *   one that follows it, or strays by less than a ten-thousandth of the
  *   edge, is kept; one a period away, past a closed face's seam, is
  *   projected again to the ends the face had. On a cylinder made here,
- *   with its top circle's true p-curve and with copies moved off it.
+ *   with its top circle's true p-curve and with copies moved off it; and
+ *   on a sphere's lune, a meridian's p-curve drifting from the pole.
  * - sw_occt::converted_moving (assets/import/sw_occt_convert.h): a torus
  *   band over a whole turn that OCCT cannot convert, converted a period
  *   along.
@@ -28,6 +29,11 @@
 #include <Geom_RectangularTrimmedSurface.hxx>
 
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAbs_SurfaceType.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -140,6 +146,62 @@ static void test_a_pcurve_a_period_away_is_projected_again(void)
  * conversion throws (the range, rounded, is over 2 pi); moved a period
  * along, it converts, and the conversion is the torus where its loops
  * run. */
+/* A sphere's face between two meridians, and one of them (not the pole's
+ * degenerate edges). */
+static bool lune_and_meridian(TopoDS_Face *face, TopoDS_Edge *edge)
+{
+    static TopoDS_Shape shape = BRepPrimAPI_MakeSphere(60.0, 1.0).Shape();
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+        TopoDS_Face lune = TopoDS::Face(f.Current());
+        if (BRepAdaptor_Surface(lune).GetType() != GeomAbs_Sphere)
+            continue;
+        for (TopExp_Explorer e(lune, TopAbs_EDGE); e.More(); e.Next()) {
+            TopoDS_Edge meridian = TopoDS::Edge(e.Current());
+            if (BRep_Tool::Degenerated(meridian) || BRep_Tool::IsClosed(meridian, lune))
+                continue;
+            *face = lune, *edge = meridian;
+            return true;
+        }
+    }
+    return false;
+}
+
+/* A converted p-curve from a sphere's pole (the CAx-IF head back): it
+ * starts at the pole at another u, which is the same point, and drifts to
+ * the meridian's u on the way, far off it. Projected again: the meridian,
+ * starting at the pole at its own u (the loop's gap there lies along the
+ * pole). A projection a period away off a pole is still refused
+ * (test_a_pcurve_a_period_away_is_projected_again). */
+static void test_a_pcurve_from_a_pole_is_projected_again(void)
+{
+    TopoDS_Face face;
+    TopoDS_Edge edge;
+    SW_CHECK(lune_and_meridian(&face, &edge));
+    double f = 0, l = 0;
+    Handle(Geom2d_Curve) own = BRep_Tool::CurveOnSurface(edge, face, f, l);
+    gp_Pnt2d a = own->Value(f), b = own->Value(l);
+    SW_CHECK_NEAR(std::fabs(a.Y()), 0.5 * M_PI, 1e-9);   /* it starts at a pole */
+    double off = sw_occt::pcurve_off(edge, face, own, f, l);
+    SW_CHECK_MSG(off >= 0 && off < 1e-6, "the edge's own p-curve strays %g", off);
+    /* From the pole at u + 0.3 straight to the meridian's far end, over the
+     * edge's parameters. */
+    TColgp_Array1OfPnt2d poles(1, 2);
+    poles(1) = gp_Pnt2d(a.X() + 0.3, a.Y()), poles(2) = b;
+    TColStd_Array1OfReal knots(1, 2);
+    knots(1) = f, knots(2) = l;
+    TColStd_Array1OfInteger mults(1, 2);
+    mults(1) = mults(2) = 2;
+    Handle(Geom2d_Curve) drift = new Geom2d_BSplineCurve(poles, knots, mults, 1);
+    SW_CHECK(sw_occt::pcurve_off(edge, face, drift, f, l) > 1.0);
+    bool projected = false;
+    Handle(Geom2d_Curve) out =
+        sw_occt::faithful_pcurve(edge, face, drift, f, l, 1e-6, nullptr, &projected);
+    SW_CHECK(projected);
+    off = sw_occt::pcurve_off(edge, face, out, f, l);
+    SW_CHECK_MSG(off >= 0 && off < 1e-6, "projected again, it strays %g", off);
+    SW_CHECK_NEAR(out->Value(f).X(), a.X(), 1e-6);
+}
+
 static void test_a_face_over_a_period_converts_moved_along(void)
 {
     gp_Torus torus(gp_Ax3(gp::XOY()), 0.6, 0.175);
@@ -226,6 +288,7 @@ int main()
     SW_RUN(test_a_stray_pcurve_is_projected_again);
     SW_RUN(test_a_small_stray_is_left_alone);
     SW_RUN(test_a_pcurve_a_period_away_is_projected_again);
+    SW_RUN(test_a_pcurve_from_a_pole_is_projected_again);
     SW_RUN(test_a_face_over_a_period_converts_moved_along);
     SW_RUN(test_a_plane_is_made_again_over_a_wider_box);
     SW_RUN(test_other_surfaces_are_not_made_again);

@@ -138,8 +138,12 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
         loop->computed.push_back(computed);
         /* OCCT's edge tolerance covers how far each face's p-curve image
          * strays from the edge (shape healing widens it where the file's
-         * faces do not meet): the sewing uses it as the file's own word. */
-        double edge_tolerance = std::max(BRep_Tool::Tolerance(edge), BRep_Tool::Tolerance(moved));
+         * faces do not meet): the sewing uses it as the file's own word.
+         * The converted edge's tolerance covers the conversion's p-curve:
+         * one projected again answers for itself. */
+        double edge_tolerance =
+            std::max(BRep_Tool::Tolerance(edge),
+                     projected ? pcurve_off(moved, converted, c, f, l) : BRep_Tool::Tolerance(moved));
         loop->gaps.push_back(edge_tolerance);
         for (int end = 0; end < 2; end++)
             loop->reach[end].push_back(

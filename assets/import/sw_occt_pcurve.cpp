@@ -62,6 +62,17 @@ double pcurve_stray(const TopoDS_Edge &edge, const TopoDS_Face &face,
     return stray_of(c, s, c3d, first, last);
 }
 
+double pcurve_off(const TopoDS_Edge &edge, const TopoDS_Face &face,
+                  const Handle(Geom2d_Curve) &c, double first, double last)
+{
+    Standard_Real f3, l3;
+    Handle(Geom_Curve) c3d = BRep_Tool::Curve(edge, f3, l3);
+    Handle(Geom_Surface) s = BRep_Tool::Surface(face);
+    if (c3d.IsNull() || s.IsNull() || c.IsNull())
+        return -1;
+    return distance_off(c, s, c3d, first, last);
+}
+
 /* The edge's 3D curve projected onto s over [first, last]: OCCT's
  * projection, else shape healing's (which keeps the parameters); null when
  * both fail. */
@@ -94,12 +105,29 @@ static Handle(Geom2d_Curve) projected_curve(Handle(Geom_Curve) c3d, const Handle
 
 /* Do the curves start and end at the same (u, v), within tol? A
  * projection may land a period away on a closed surface, the same points
- * in space and the wrong side of the seam. */
-static bool same_ends(const Handle(Geom2d_Curve) &a, const Handle(Geom2d_Curve) &b, double first,
-                      double last, double tol)
+ * in space and the wrong side of the seam. At a pole (a sphere's, a
+ * cone's apex) every u is the same point: ends that differ along it, the
+ * surface between them within near of their point in space, are the same
+ * (the loop's gap there is closed along the pole). */
+static bool same_end(const gp_Pnt2d &a, const gp_Pnt2d &b, double tol,
+                     const Handle(Geom_Surface) &s, double near)
 {
-    return a->Value(first).Distance(b->Value(first)) <= tol &&
-           a->Value(last).Distance(b->Value(last)) <= tol;
+    if (a.Distance(b) <= tol)
+        return true;
+    gp_Pnt p = s->Value(a.X(), a.Y());
+    for (int k = 1; k <= 4; k++) {
+        gp_Pnt2d m(a.X() + (b.X() - a.X()) * k / 4, a.Y() + (b.Y() - a.Y()) * k / 4);
+        if (s->Value(m.X(), m.Y()).Distance(p) > near)
+            return false;
+    }
+    return true;
+}
+
+static bool same_ends(const Handle(Geom2d_Curve) &a, const Handle(Geom2d_Curve) &b, double first,
+                      double last, double tol, const Handle(Geom_Surface) &s, double near)
+{
+    return same_end(a->Value(first), b->Value(first), tol, s, near) &&
+           same_end(a->Value(last), b->Value(last), tol, s, near);
 }
 
 bool pcurve_ends(const TopoDS_Edge &edge, const TopoDS_Face &face, PcurveEnds *ends)
@@ -159,7 +187,8 @@ Handle(Geom2d_Curve) faithful_pcurve(const TopoDS_Edge &edge, const TopoDS_Face 
      * across the face between two of them: the projection need only be
      * as close and end within reach. */
     bool better = astray ? again_off <= std::max(off, enough) && ends_within(again, first, last, *ends)
-                         : again_off < off && same_ends(c, again, first, last, 1e-4 * span);
+                         : again_off < off &&
+                               same_ends(c, again, first, last, 1e-4 * span, s, enough);
     if (!better)
         return c;
     *projected = true;

@@ -31,6 +31,12 @@ struct PcurveEnds {
     double reach[2];    /* in u, in v: a quarter of the surface's period there, or infinite */
 };
 
+/* How far c's image on face strays from the edge at most, measured to the
+ * edge's nearest point (parameters need not be in step); -1 when the edge
+ * or face has no curve or surface. */
+double pcurve_off(const TopoDS_Edge &edge, const TopoDS_Face &face,
+                  const Handle(Geom2d_Curve) &c, double first, double last);
+
 /* The ends of the edge's p-curve on face (not converted), reaching a
  * quarter period where its surface is periodic; false when it has none. */
 bool pcurve_ends(const TopoDS_Edge &edge, const TopoDS_Face &face, PcurveEnds *ends);
