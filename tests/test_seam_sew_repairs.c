@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* What the sewing does beyond the paper's intervals (sw_sew.h): the file's
  * own gaps widen its tolerance edge by edge, trims past their domain are put
- * on it, and T-junctions the intervals missed are closed (step 3b). */
+ * on it, and T-junctions the intervals missed are closed (step 3b), also
+ * where other loops go round a free edge through one vertex. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -94,20 +95,21 @@ static void test_tjunction_step_inserts_the_vertex_the_intervals_missed(void)
     free(h.loops);
 }
 
-/* Step 3b beyond the tolerance: x 1.5 tolerances off the chord a-b. One
+/* Step 3b beyond the tolerance: x off the chord a-b (of length 1). One
  * loop runs a, x, b, the other b, a (a fillet's arc tangent to a line,
  * its vertex near the tangent point within the tolerance of the line on
  * one face, not on the other: a lock body's free edges): the two differ
- * by x alone, and x goes in. Where x's other neighbour is not a, it is a
- * corner of its own beyond the tolerance, and stays out. */
-static size_t inserted_off_the_chord(uint32_t before_x)
+ * by x alone, and x goes in up to twice the tolerance, or a thousandth of
+ * the chord up to 16 tolerances. Where x's other neighbour is not a, it
+ * is a corner of its own beyond the tolerance, and stays out. */
+static size_t inserted_off_the_chord(uint32_t before_x, double off, double tol)
 {
-    const double p[6][3] = {{0, 0, 0}, {0.5, 1.5e-3, 0}, {1, 0, 0},
+    const double p[6][3] = {{0, 0, 0}, {0.5, off, 0}, {1, 0, 0},
                             {0.5, 1, 0}, {0.5, -1, 0}, {0.2, 1, 0}};
     enum { A, X, B, C, D, E };
-    sw_seam_polylines poly = {.p = (double *)p, .vertex_count = 6, .tolerance = 1e-3};
+    sw_seam_polylines poly = {.p = (double *)p, .vertex_count = 6, .tolerance = tol};
     sw_error err = {0};
-    sew_state st = {.poly = &poly, .tol = 1e-3, .err = &err};
+    sew_state st = {.poly = &poly, .tol = tol, .err = &err};
     sw_seam_host h = {0};
     h.slots = malloc(7 * sizeof *h.slots);
     h.loops = malloc(2 * sizeof *h.loops);
@@ -129,8 +131,60 @@ static size_t inserted_off_the_chord(uint32_t before_x)
 static void test_tjunction_step_reaches_twice_the_tolerance_between_shared_ends(void)
 {
     enum { A, X, B, C, D, E };
-    SW_CHECK(inserted_off_the_chord(A) == 1);
-    SW_CHECK(inserted_off_the_chord(E) == 0);
+    SW_CHECK(inserted_off_the_chord(A, 1.5e-3, 1e-3) == 1);
+    SW_CHECK(inserted_off_the_chord(E, 1.5e-3, 1e-3) == 0);
+    SW_CHECK(inserted_off_the_chord(A, 2.5e-3, 1e-3) == 0);
+    /* A tolerance far below the chord (the Annex lock body: 4.1e-5 on a
+     * 1.3 mm line, its arc's vertex 2.2 tolerances off): a thousandth of
+     * the chord, up to 16 tolerances. */
+    SW_CHECK(inserted_off_the_chord(A, 3.5e-5, 1e-5) == 1);
+    SW_CHECK(inserted_off_the_chord(A, 1.5e-4, 1e-5) == 1);
+    SW_CHECK(inserted_off_the_chord(A, 1.7e-4, 1e-5) == 0);
+    SW_CHECK(inserted_off_the_chord(E, 3.5e-5, 1e-5) == 0);
+}
+
+/* Step 3b's second pass: a free edge a-b in one loop where other loops go
+ * from a to b through x, both edges sewn (a cusp where a fillet's arc meets
+ * a line, its tip a hair off the line: the Annex corner lock bodies). x
+ * 2e-4 off the chord goes in; 3e-3 off (past twice the tolerance and a
+ * thousandth of the chord) it stays out. */
+static size_t detour_inserted(double off, uint32_t *second_loop)
+{
+    const double p[7][3] = {{0, 0, 0}, {0.5, off, 0}, {1, 0, 0},   {0.5, 1, 0},
+                            {0.5, -1, 0}, {0.2, 0.5, 0}, {0.8, 0.5, 0}};
+    enum { A, X, B, C, D, E, F };
+    sw_seam_polylines poly = {.p = (double *)p, .vertex_count = 7, .tolerance = 1e-3};
+    sw_error err = {0};
+    sew_state st = {.poly = &poly, .tol = 1e-3, .err = &err};
+    sw_seam_host h = {0};
+    h.slots = malloc(13 * sizeof *h.slots);
+    h.loops = malloc(4 * sizeof *h.loops);
+    /* a, x, b, c; b, a, d (a-b free); x, a, e and b, x, f sew a-x and x-b. */
+    const uint32_t order[13] = {A, X, B, C, B, A, D, X, A, E, B, X, F};
+    for (int k = 0; k < 13; k++)
+        h.slots[k] = (sw_seam_slot){order[k], {(float)p[order[k]][0], (float)p[order[k]][1]}};
+    h.loops[0] = (sw_seam_loop){0, 0, 4, SW_SEAM_LOOP_OUTER};
+    h.loops[1] = (sw_seam_loop){1, 4, 3, SW_SEAM_LOOP_OUTER};
+    h.loops[2] = (sw_seam_loop){2, 7, 3, SW_SEAM_LOOP_OUTER};
+    h.loops[3] = (sw_seam_loop){3, 10, 3, SW_SEAM_LOOP_OUTER};
+    h.slot_count = 13, h.loop_count = 4;
+    size_t inserted = 99;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK);
+    for (uint32_t k = 0; k < 4 && k < h.loops[1].slot_count; k++)
+        second_loop[k] = h.slots[h.loops[1].first_slot + k].vertex;
+    SW_CHECK(h.loops[1].slot_count == 3 + inserted);
+    free(h.slots);
+    free(h.loops);
+    return inserted;
+}
+
+static void test_tjunction_step_fills_a_free_edge_with_its_detour(void)
+{
+    enum { A, X, B, C, D, E, F };
+    uint32_t loop[4] = {0};
+    SW_CHECK(detour_inserted(2e-4, loop) == 1);
+    SW_CHECK(loop[0] == B && loop[1] == X && loop[2] == A && loop[3] == D);
+    SW_CHECK(detour_inserted(3e-3, loop) == 0);
 }
 
 /* Step 3b where the vertex is already the neighbour (the boxed sphere's
@@ -244,6 +298,7 @@ int main(void)
     SW_RUN(test_trim_past_the_domain_is_put_on_it);
     SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
     SW_RUN(test_tjunction_step_merges_a_spike_tip_into_its_neighbour);
+    SW_RUN(test_tjunction_step_fills_a_free_edge_with_its_detour);
     SW_RUN(test_tjunction_step_reaches_twice_the_tolerance_between_shared_ends);
     return sw_test_finish();
 }

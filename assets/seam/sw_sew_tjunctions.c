@@ -7,10 +7,14 @@
  * is shorter than the tolerance (it takes it for a point contact) or where
  * x's partner was merged into its neighbour (the boxed sphere). Where the
  * first loop runs a, x, b (the two differ by x alone) the reach is the
- * merges' guard, twice the tolerance. Where x is
+ * merges' guard, twice the tolerance, or a thousandth of the chord up to
+ * 16 tolerances (a file's tolerance far below its edges). Where x is
  * already a's other neighbour in the second loop (x, a, b), a merges into x
  * instead: an insertion would leave a spike x, a, x with a on one side of
- * the seam only. */
+ * the seam only. A second pass takes the free edges a-b that other loops
+ * go round through one vertex x, both of its edges sewn (a cusp where an
+ * arc meets a line tangentially, its tip a hair off the line: the loop
+ * that holds the cusp cut straight to the tip), x going in as above. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +46,11 @@ static int compare_inserts(const void *x, const void *y)
         return a->loop < b->loop ? -1 : 1;
     return (a->after > b->after) - (a->after < b->after);
 }
+
+/* Where the loops differ by x alone, x may stand off the chord by this
+ * much of it, up to this many tolerances. */
+#define BETWEEN_OF_EDGE 1e-3
+#define BETWEEN_TOLS 16.0
 
 static uint64_t edge_key(uint32_t a, uint32_t b)
 {
@@ -140,12 +149,15 @@ static int insertion(const sew_state *s, const sw_seam_host *h, const tj_use *u,
     sw_vec3 pa = at(s, a), pb = at(s, b), px = at(s, x), ab = sw_v3_sub(pb, pa);
     double reach = fmax(s->tol, sew_gap(s->poly, x) + fmax(sew_gap(s->poly, a), sew_gap(s->poly, b)));
     /* x between a and b in its own loop: the two loops differ by x alone,
-     * and the reach is the merges' guard, twice the tolerance. An arc
-     * tangent to a line leaves it slowly: its vertices near the tangent
-     * point lie within the tolerance of the line on one face and a little
-     * beyond on the other. */
+     * and the reach is the merges' guard, twice the tolerance, or a
+     * thousandth of the chord (up to BETWEEN_TOLS). An arc tangent to a
+     * line leaves it slowly: its vertices near the tangent point lie within
+     * the tolerance of the line on one face and a little beyond on the
+     * other, and with a file's tolerance of 4e-5 mm on a 1.3 mm line, two
+     * tolerances was not enough. */
     if (between)
-        reach = fmax(reach, 2.0 * s->tol);
+        reach = fmax(reach, fmax(2.0 * s->tol, fmin(BETWEEN_TOLS * s->tol,
+                                                     BETWEEN_OF_EDGE * sw_v3_length(ab))));
     if (!(sw_v3_segment_distance(px, pa, pb) <= reach))
         return 0;
     uint32_t spike = h->slots[prev_distinct(h, lp, k)].vertex == x ? a
@@ -235,13 +247,14 @@ static int compare_ends(const void *x, const void *y)
     return (a->use > b->use) - (a->use < b->use);
 }
 
-/* Both ends of every unsewn edge use, sorted by vertex. */
-static tj_end *free_ends(const tj_use *uses, size_t n, size_t *count)
+/* Both ends of every unsewn edge use (every use, with all), sorted by
+ * vertex. */
+static tj_end *edge_ends(const tj_use *uses, size_t n, int all, size_t *count)
 {
     tj_end *ends = malloc((2 * n + 1) * sizeof *ends);
     *count = 0;
     for (size_t i = 0; ends && i < n; i++) {
-        if (only_use(uses, n, uses[i].key) != &uses[i])
+        if (!all && only_use(uses, n, uses[i].key) != &uses[i])
             continue;
         ends[(*count)++] = (tj_end){(uint32_t)(uses[i].key >> 32), (uint32_t)i};
         ends[(*count)++] = (tj_end){(uint32_t)uses[i].key, (uint32_t)i};
@@ -288,12 +301,84 @@ static void try_end(const sew_state *s, const sw_seam_host *h, const tj_use *use
     }
 }
 
+/* The first of ends (sorted) at vertex v. */
+static size_t first_end(const tj_end *ends, size_t nends, uint32_t v)
+{
+    size_t lo = 0, hi = nends;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (ends[mid].vertex < v)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Is edge key used by a loop other than `loop`? */
+static int used_elsewhere(const tj_use *uses, size_t n, uint64_t key, uint32_t loop)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (uses[mid].key < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (; lo < n && uses[lo].key == key; lo++)
+        if (uses[lo].loop != loop)
+            return 1;
+    return 0;
+}
+
+/* Free edge use i, a-b, where other loops go from a to b through one
+ * vertex x (edges a-x and x-b): x into it, as where the loops differ by x
+ * alone. Returns 1 with *out filled. */
+static int detour(const sew_state *s, const sw_seam_host *h, const tj_use *uses, size_t n,
+                  const tj_end *ends, size_t nends, size_t i, tj_insert *out)
+{
+    uint32_t a = (uint32_t)(uses[i].key >> 32), b = (uint32_t)uses[i].key, loop = uses[i].loop;
+    for (size_t k = first_end(ends, nends, a); k < nends && ends[k].vertex == a; k++) {
+        const tj_use *w = &uses[ends[k].use];
+        uint32_t x = (uint32_t)(w->key >> 32) == a ? (uint32_t)w->key : (uint32_t)(w->key >> 32);
+        if (x == b || w->loop == loop || !used_elsewhere(uses, n, edge_key(x, b), loop))
+            continue;
+        if (insertion(s, h, &uses[i], x, 1, out))
+            return 1;
+    }
+    return 0;
+}
+
+/* Step 3b's second pass: every free edge with a detour (detour). */
+static sw_status insert_detours(sew_state *s, sw_seam_host *h, size_t *inserted)
+{
+    size_t n = 0, nends = 0, count = 0;
+    tj_use *uses = collect_uses(h, &n);
+    tj_end *ends = uses ? edge_ends(uses, n, 1, &nends) : NULL;
+    tj_insert *ins = malloc((n + 1) * sizeof *ins);
+    if (!uses || !ends || !ins) {
+        free(uses), free(ends), free(ins);
+        return sw_error_set(s->err, SW_ERR_NO_MEMORY, "sewing: out of memory for T-junctions");
+    }
+    for (size_t i = 0; i < n; i++)
+        if (only_use(uses, n, uses[i].key) == &uses[i] &&
+            detour(s, h, uses, n, ends, nends, i, &ins[count]))
+            count++;
+    if (count > 1)
+        qsort(ins, count, sizeof *ins, compare_inserts);
+    sw_status st = count ? apply(h, ins, count, s->err) : SW_OK;
+    *inserted += count;
+    free(uses), free(ends), free(ins);
+    return st;
+}
+
 sw_status sew_insert_tjunctions(sew_state *s, sw_seam_host *h, size_t *inserted)
 {
     *inserted = 0;
     size_t n = 0, nends = 0;
     tj_use *uses = collect_uses(h, &n);
-    tj_end *ends = uses ? free_ends(uses, n, &nends) : NULL;
+    tj_end *ends = uses ? edge_ends(uses, n, 0, &nends) : NULL;
     tj_insert *ins = malloc((2 * n + 1) * sizeof *ins);
     uint8_t *taken = calloc(n + 1, 1);
     if (!uses || !ends || !ins || !taken) {
@@ -314,5 +399,5 @@ sw_status sew_insert_tjunctions(sew_state *s, sw_seam_host *h, size_t *inserted)
     sw_status st = count ? apply(h, ins, count, s->err) : SW_OK;
     *inserted = count;
     free(uses), free(ends), free(ins), free(taken);
-    return st;
+    return st == SW_OK ? insert_detours(s, h, inserted) : st;
 }
