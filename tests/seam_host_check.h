@@ -5,6 +5,7 @@
 #ifndef SW_TEST_SEAM_HOST_CHECK_H
 #define SW_TEST_SEAM_HOST_CHECK_H
 
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
@@ -24,24 +25,44 @@ static inline int host_in_other_loop(const sw_seam_host *h, uint32_t v, uint32_t
     return 0;
 }
 
+/* The largest side of loop lp's (u, v) box. */
+static inline double host_loop_extent(const sw_seam_host *h, const sw_seam_loop *lp)
+{
+    double box[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+    for (uint32_t k = lp->first_slot; k < lp->first_slot + lp->slot_count; k++)
+        for (int c = 0; c < 2; c++) {
+            box[2 * c] = fmin(box[2 * c], h->slots[k].uv[c]);
+            box[2 * c + 1] = fmax(box[2 * c + 1], h->slots[k].uv[c]);
+        }
+    return fmax(box[1] - box[0], box[3] - box[2]);
+}
+
 /* One-sided spikes: a loop running x, a, x (runs of one vertex counted
  * once) with a in no other loop goes out to a and back, a on one side of
  * its seam only: a gap point in the drawn seams (the boxed sphere's fillet
  * tip before the T-junction step merged such an a into x). A spike both
- * sides share (a sewn fold, as at the teaspoon's tip) is no gap. */
+ * sides share (a sewn fold, as at the teaspoon's tip) is no gap; nor is a
+ * closed face's seam line sewn to itself up to a point (a cone's apex: the
+ * loop leaves x and comes back to it a quarter of its extent away in
+ * (u, v), up one side of the seam and down the other). */
 static inline uint32_t host_spikes(const sw_seam_host *h)
 {
     uint32_t spikes = 0;
     for (uint32_t l = 0; l < h->loop_count; l++) {
         const sw_seam_loop *lp = &h->loops[l];
         uint32_t n = lp->slot_count, ring[3] = {SW_SEAM_NONE, SW_SEAM_NONE, SW_SEAM_NONE};
+        uint32_t at[3] = {0, 0, 0};   /* the slots of the ring's vertices */
+        double across = 0.25 * host_loop_extent(h, lp);
         /* Twice round: the second pass counts, the spikes across the start too. */
         for (uint32_t k = 0; k < 2 * n; k++) {
-            uint32_t v = h->slots[lp->first_slot + k % n].vertex;
+            uint32_t slot = lp->first_slot + k % n, v = h->slots[slot].vertex;
             if (v == ring[2])
                 continue;
             ring[0] = ring[1], ring[1] = ring[2], ring[2] = v;
-            spikes += k >= n && ring[0] == ring[2] &&
+            at[0] = at[1], at[1] = at[2], at[2] = slot;
+            const float *p = h->slots[at[0]].uv, *q = h->slots[at[2]].uv;
+            int seam = hypot((double)p[0] - q[0], (double)p[1] - q[1]) > across;
+            spikes += k >= n && ring[0] == ring[2] && !seam &&
                       !host_in_other_loop(h, ring[1], lp->first_slot, n);
         }
     }

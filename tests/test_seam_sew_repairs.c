@@ -187,6 +187,46 @@ static void test_tjunction_step_fills_a_free_edge_with_its_detour(void)
     SW_CHECK(detour_inserted(3e-3, loop) == 0);
 }
 
+/* A cone (mayo's #332): its side's one loop from the base's seam point
+ * round the base, up the seam line, along the apex's degenerate edge
+ * (sampled as points 1e-13 apart) and down the seam line again; the base
+ * disk's loop round the other way. The apex's points are one vertex, so
+ * the seam line's two sides meet at both ends and are sewn: no free edge
+ * (without it both sides were free). */
+static void test_a_cone_is_sewn_along_its_seam_line(void)
+{
+    enum { AROUND = 32, APEX = 4, N = 1 + AROUND + APEX + AROUND };
+    double p[3 * N], uv[2 * N];
+    size_t n = 0;
+    for (int k = 0; k <= AROUND; k++, n++) {   /* the base, from the seam round to it */
+        double a = 2 * SW_PI * k / AROUND;
+        p[3 * n] = 3 * cos(a), p[3 * n + 1] = 3 * sin(a), p[3 * n + 2] = 0;
+        uv[2 * n] = a, uv[2 * n + 1] = 0;
+    }
+    for (int k = 0; k < APEX; k++, n++) {      /* the apex, its points a hair apart */
+        p[3 * n] = 1e-13 * k, p[3 * n + 1] = 0, p[3 * n + 2] = 5;
+        uv[2 * n] = 2 * SW_PI * (1 - (double)k / (APEX - 1)), uv[2 * n + 1] = 5;
+    }
+    size_t disk = n;
+    for (int k = 0; k < AROUND; k++, n++) {    /* the disk, the other way round */
+        double a = -2 * SW_PI * k / AROUND;
+        p[3 * n] = 3 * cos(a), p[3 * n + 1] = 3 * sin(a), p[3 * n + 2] = 0;
+        uv[2 * n] = p[3 * n], uv[2 * n + 1] = p[3 * n + 1];
+    }
+    size_t loop_start[3] = {0, disk, n}, surface_loops[3] = {0, 1, 2};
+    uint32_t loop_surface[2] = {0, 1};
+    uint8_t loop_outer[2] = {1, 1};
+    sw_seam_polylines poly = {uv, p, NULL, n, loop_start, loop_surface, loop_outer, 2,
+                              surface_loops, 2, 1e-4, 0, 0};
+    sw_seam_host h;
+    sw_sew_counts counts = {0};
+    sw_error err = {0};
+    SW_CHECK(sw_sew_polylines(&poly, 1e-4, &h, &counts, &err) == SW_OK);
+    SW_CHECK_MSG(counts.free_edges == 0, "%zu free edges", counts.free_edges);
+    check_host(&h);
+    sw_seam_host_free(&h);
+}
+
 /* Step 3b where the vertex is already the neighbour (the boxed sphere's
  * fillet tip at a sphere's pole): one loop runs x, a, b, C, the other b, x,
  * D, with x 2e-4 from a and on the chord a-b. Inserting x into a-b would
@@ -299,6 +339,7 @@ int main(void)
     SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
     SW_RUN(test_tjunction_step_merges_a_spike_tip_into_its_neighbour);
     SW_RUN(test_tjunction_step_fills_a_free_edge_with_its_detour);
+    SW_RUN(test_a_cone_is_sewn_along_its_seam_line);
     SW_RUN(test_tjunction_step_reaches_twice_the_tolerance_between_shared_ends);
     return sw_test_finish();
 }

@@ -95,6 +95,34 @@ static void unite_joins(const sew_state *s, uint32_t *parent, inserted *ins, siz
     }
 }
 
+/* Consecutive vertices of a loop within this much of the tolerance of the
+ * run's first are one point. */
+#define ONE_POINT_OF_TOL 0.01
+
+/* A loop's run of vertices at one point (a pole's or an apex's degenerate
+ * edge, sampled: a cone's apex came as 66 points 1e-13 apart) is one
+ * vertex. Otherwise the two sides that leave the point never meet: along
+ * the loop they are neighbours, and a loop is not sewn to its neighbours
+ * (a cone's seam line came out free on both sides). */
+static void unite_points(const sew_state *s, uint32_t *parent)
+{
+    const sw_seam_polylines *poly = s->poly;
+    double r = ONE_POINT_OF_TOL * s->tol;
+    for (size_t l = 0; l < poly->loop_count; l++) {
+        uint32_t first = (uint32_t)poly->loop_start[l], end = (uint32_t)poly->loop_start[l + 1];
+        uint32_t anchor = first;
+        for (uint32_t v = first + 1; v < end; v++) {
+            if (dist2(poly->p + 3 * (size_t)v, poly->p + 3 * (size_t)anchor) <= r * r)
+                unite(parent, anchor, v);
+            else
+                anchor = v;
+        }
+        if (end - first > 2 &&
+            dist2(poly->p + 3 * (size_t)(end - 1), poly->p + 3 * (size_t)first) <= r * r)
+            unite(parent, first, end - 1);
+    }
+}
+
 /* Loop l's slots (vertex = class root for now) at out: every polyline
  * vertex, each followed by the feet inserted into its edge. A foot merged
  * into the same vertex as the slot before it or the edge's end adds nothing
@@ -330,6 +358,7 @@ sw_status sew_merge(sew_state *s, sw_seam_host *out, sw_sew_counts *counts)
     if (st == SW_OK) {
         for (size_t k = 0; k < total; k++)
             parent[k] = (uint32_t)k;
+        unite_points(s, parent);
         unite_joins(s, parent, ins, &ins_count);
         counts->inserted = ins_count;
         st = build_loops(s, parent, ins, ins_count, out);
