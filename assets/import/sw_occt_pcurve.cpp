@@ -51,26 +51,31 @@ static double distance_off(const Handle(Geom2d_Curve) &c, const Handle(Geom_Surf
     return worst;
 }
 
-double pcurve_stray(const TopoDS_Edge &edge, const TopoDS_Face &face,
-                    const Handle(Geom2d_Curve) &c, double first, double last)
+typedef double (*PcurveMeasure)(const Handle(Geom2d_Curve) &, const Handle(Geom_Surface) &,
+                                 const Handle(Geom_Curve) &, double, double);
+
+/* measure of c on face against the edge's 3D curve; -1 without them. */
+static double measured(PcurveMeasure measure, const TopoDS_Edge &edge, const TopoDS_Face &face,
+                       const Handle(Geom2d_Curve) &c, double first, double last)
 {
     Standard_Real f3, l3;
     Handle(Geom_Curve) c3d = BRep_Tool::Curve(edge, f3, l3);
     Handle(Geom_Surface) s = BRep_Tool::Surface(face);
     if (c3d.IsNull() || s.IsNull() || c.IsNull())
         return -1;
-    return stray_of(c, s, c3d, first, last);
+    return measure(c, s, c3d, first, last);
+}
+
+double pcurve_stray(const TopoDS_Edge &edge, const TopoDS_Face &face,
+                    const Handle(Geom2d_Curve) &c, double first, double last)
+{
+    return measured(stray_of, edge, face, c, first, last);
 }
 
 double pcurve_off(const TopoDS_Edge &edge, const TopoDS_Face &face,
                   const Handle(Geom2d_Curve) &c, double first, double last)
 {
-    Standard_Real f3, l3;
-    Handle(Geom_Curve) c3d = BRep_Tool::Curve(edge, f3, l3);
-    Handle(Geom_Surface) s = BRep_Tool::Surface(face);
-    if (c3d.IsNull() || s.IsNull() || c.IsNull())
-        return -1;
-    return distance_off(c, s, c3d, first, last);
+    return measured(distance_off, edge, face, c, first, last);
 }
 
 /* The edge's 3D curve projected onto s over [first, last]: OCCT's

@@ -87,8 +87,8 @@ static tj_use *collect_uses(const sw_seam_host *h, size_t *n)
     return uses;
 }
 
-/* The one use of edge key, or NULL when it has none or several. */
-static const tj_use *only_use(const tj_use *uses, size_t n, uint64_t key)
+/* The first of the uses (sorted) of edge key or later. */
+static size_t first_use(const tj_use *uses, size_t n, uint64_t key)
 {
     size_t lo = 0, hi = n;
     while (lo < hi) {
@@ -98,6 +98,13 @@ static const tj_use *only_use(const tj_use *uses, size_t n, uint64_t key)
         else
             hi = mid;
     }
+    return lo;
+}
+
+/* The one use of edge key, or NULL when it has none or several. */
+static const tj_use *only_use(const tj_use *uses, size_t n, uint64_t key)
+{
+    size_t lo = first_use(uses, n, key);
     if (lo >= n || uses[lo].key != key || (lo + 1 < n && uses[lo + 1].key == key))
         return NULL;
     return &uses[lo];
@@ -264,6 +271,20 @@ static tj_end *edge_ends(const tj_use *uses, size_t n, int all, size_t *count)
     return ends;
 }
 
+/* The first of ends (sorted) at vertex v. */
+static size_t first_end(const tj_end *ends, size_t nends, uint32_t v)
+{
+    size_t lo = 0, hi = nends;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (ends[mid].vertex < v)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 /* The vertex beyond x from b in the loop of use w (of edge x-b). */
 static uint32_t beyond(const sw_seam_host *h, const tj_use *w, uint32_t x)
 {
@@ -280,15 +301,7 @@ static void try_end(const sew_state *s, const sw_seam_host *h, const tj_use *use
                     uint8_t *taken, tj_insert *ins, size_t *count)
 {
     uint32_t next = beyond(h, &uses[i], x);
-    size_t lo = 0, hi = nends;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (ends[mid].vertex < b)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    for (size_t k = lo; k < nends && ends[k].vertex == b; k++) {
+    for (size_t k = first_end(ends, nends, b); k < nends && ends[k].vertex == b; k++) {
         const tj_use *u = &uses[ends[k].use];
         uint32_t a = (uint32_t)(u->key >> 32) == b ? (uint32_t)u->key : (uint32_t)(u->key >> 32);
         if (ends[k].use == i || u->loop == uses[i].loop || a == x || taken[ends[k].use])
@@ -301,32 +314,10 @@ static void try_end(const sew_state *s, const sw_seam_host *h, const tj_use *use
     }
 }
 
-/* The first of ends (sorted) at vertex v. */
-static size_t first_end(const tj_end *ends, size_t nends, uint32_t v)
-{
-    size_t lo = 0, hi = nends;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (ends[mid].vertex < v)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 /* Is edge key used by a loop other than `loop`? */
 static int used_elsewhere(const tj_use *uses, size_t n, uint64_t key, uint32_t loop)
 {
-    size_t lo = 0, hi = n;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (uses[mid].key < key)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    for (; lo < n && uses[lo].key == key; lo++)
+    for (size_t lo = first_use(uses, n, key); lo < n && uses[lo].key == key; lo++)
         if (uses[lo].loop != loop)
             return 1;
     return 0;
