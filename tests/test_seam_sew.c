@@ -421,6 +421,42 @@ static void test_a_fold_at_a_corner_is_cut_off(void)
     sw_model_free(&m);
 }
 
+/* A triangle whose third side ends a hair across the first one's start, a
+ * straight trim 6e-10 long closing the gap (the Fly Gemini DIN mount's
+ * corner face): the first and third sides cross at the start; the sliver
+ * to cut is the hair, not the triangle. Flattened, its three corners
+ * stay (it was cut to a point, and its three neighbours' edges were free). */
+static void test_a_hair_at_a_triangle_corner_is_cut_off(void)
+{
+    shape_plane plane;
+    shape_plane_init(&plane, 1, 1, 1, 2, 2);
+    const double pts[4][2] = {{1.0, 1.5}, {0.5, 0.5}, {1.5, 0.5}, {1.0 - 4e-10, 1.5 + 4e-10}};
+    double knots[4] = {0, 0, 1, 1}, ctrl[4][8];
+    sw_nurbs_curve curves[4];
+    for (int k = 0; k < 4; k++) {
+        const double *a = pts[k], *b = pts[(k + 1) % 4];
+        double c[8] = {a[0], a[1], 0, 1, b[0], b[1], 0, 1};
+        memcpy(ctrl[k], c, sizeof c);
+        curves[k] = (sw_nurbs_curve){1, 2, knots, ctrl[k]};
+    }
+    sw_model_loop_input loop = {curves, NULL, 4, 1, NULL};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, &loop, 1, &err) == SW_OK);
+    sw_seam_polylines pl;
+    SW_CHECK_MSG(sw_seam_flatten_model(&m, 1e-5, &pl, &err) == SW_OK, "%s", err.message);
+    size_t n = pl.loop_start[1] - pl.loop_start[0];
+    int found[3] = {0, 0, 0};
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            found[k] |= fabs(pl.uv[2 * i] - pts[k][0]) < 1e-6 && fabs(pl.uv[2 * i + 1] - pts[k][1]) < 1e-6;
+    SW_CHECK_MSG(found[0] && found[1] && found[2], "corners kept: %d %d %d of %zu points", found[0],
+                 found[1], found[2], n);
+    sw_seam_polylines_free(&pl);
+    sw_model_free(&m);
+}
+
 /* The plane z = 0 over [0, 1]^2 with a hole of radius 0.3, and the disc that
  * fills it: the hole and the disc's rim are sewn all the way round. */
 static void test_hole_and_disc_sewn_all_round(void)
@@ -913,6 +949,7 @@ int main(int argc, char **argv)
     SW_RUN(test_gaps_too_wide_to_search_fail);
     SW_RUN(test_closed_surface_meets_itself);
     SW_RUN(test_a_fold_at_a_corner_is_cut_off);
+    SW_RUN(test_a_hair_at_a_triangle_corner_is_cut_off);
     SW_RUN(test_hole_and_disc_sewn_all_round);
     SW_RUN(test_teapot_polylines_within_tolerance);
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);

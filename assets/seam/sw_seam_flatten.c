@@ -344,7 +344,11 @@ static void drop_vertex(vbuf *b, size_t k)
  * the corner, its gap closed by a straight trim), segments i and i + 2
  * cross and the loop crosses itself there; the tessellator refuses that
  * wherever its cells are large enough to see it. The two vertices between
- * become the crossing point, which cuts off the sliver. */
+ * become the crossing point, which cuts off the sliver. In a loop of four
+ * the sliver may lie the other way round, between segments i + 2 and i
+ * (a triangle whose corner gap was closed by a straight trim: cutting
+ * across i + 1, its longest side, left it a point): the shorter of the
+ * two joining segments is the sliver's. */
 static void unfold_loop(flat_ctx *c, size_t first)
 {
     vbuf *b = c->buf;
@@ -354,7 +358,9 @@ static void unfold_loop(flat_ctx *c, size_t first)
         const double *a = b->uv + 2 * (first + i), *a1 = b->uv + 2 * i1;
         const double *c2 = b->uv + 2 * i2, *c3 = b->uv + 2 * (first + (i + 3) % n);
         double t;
-        if (!uv_cross(a, a1, c2, c3, &t)) {
+        const double *a3 = n == 4 ? c3 : NULL;   /* segment i + 3 joins c3 back to a */
+        if (!uv_cross(a, a1, c2, c3, &t) ||
+            (a3 && hypot(a[0] - a3[0], a[1] - a3[1]) < hypot(c2[0] - a1[0], c2[1] - a1[1]))) {
             i++;
             continue;
         }
