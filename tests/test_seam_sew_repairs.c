@@ -187,6 +187,53 @@ static void test_tjunction_step_fills_a_free_edge_with_its_detour(void)
     SW_CHECK(detour_inserted(3e-3, loop) == 0);
 }
 
+/* Step 3b's second pass, a sliver: one loop runs a-b, another d-c, with c
+ * `off` from a and d 1.2 off from b, a-c and b-d sewn edges of the
+ * sliver's end faces (the Bambu X1C mount: 0.002 mm wide, two faces each
+ * along one long side). Within the tolerance, c merges into a and d into
+ * b: both loops run a-b. Past it, nothing moves. Returns how many loops
+ * use a-b. */
+static int sliver_uses_of_ab(double off)
+{
+    const double p[10][3] = {{0, 0, 0},    {1, 0, 0},   {0, off, 0},  {1, 1.2 * off, 0},
+                             {0.5, -1, 0}, {0.5, 1, 0}, {-0.5, 0, 0}, {1.5, 0, 0},
+                             {-0.5, 1, 0}, {1.5, 1, 0}};
+    enum { A, B, C, D, E, F, G, H, I, J };
+    sw_seam_polylines poly = {.p = (double *)p, .vertex_count = 10, .tolerance = 1e-3};
+    sw_error err = {0};
+    sew_state st = {.poly = &poly, .tol = 1e-3, .err = &err};
+    sw_seam_host h = {0};
+    h.slots = malloc(18 * sizeof *h.slots);
+    h.loops = malloc(6 * sizeof *h.loops);
+    /* a, b, e; d, c, f; the ends c, a, g and a, c, i; b, d, h and d, b, j. */
+    const uint32_t order[18] = {A, B, E, D, C, F, C, A, G, A, C, I, B, D, H, D, B, J};
+    for (int k = 0; k < 18; k++)
+        h.slots[k] = (sw_seam_slot){order[k], {(float)p[order[k]][0], (float)p[order[k]][1]}};
+    for (uint32_t l = 0; l < 6; l++)
+        h.loops[l] = (sw_seam_loop){l, 3 * l, 3, SW_SEAM_LOOP_OUTER};
+    h.slot_count = 18, h.loop_count = 6;
+    size_t inserted = 99;
+    SW_CHECK(sew_insert_tjunctions(&st, &h, &inserted) == SW_OK);
+    int uses = 0;
+    for (uint32_t l = 0; l < h.loop_count; l++) {
+        const sw_seam_loop *lp = &h.loops[l];
+        for (uint32_t k = 0; k < lp->slot_count; k++) {
+            uint32_t u = h.slots[lp->first_slot + k].vertex;
+            uint32_t v = h.slots[lp->first_slot + (k + 1) % lp->slot_count].vertex;
+            uses += (u == A && v == B) || (u == B && v == A);
+        }
+    }
+    free(h.slots);
+    free(h.loops);
+    return uses;
+}
+
+static void test_tjunction_step_closes_a_sliver_narrower_than_the_tolerance(void)
+{
+    SW_CHECK(sliver_uses_of_ab(5e-4) == 2);
+    SW_CHECK(sliver_uses_of_ab(2e-3) == 1);
+}
+
 /* A cone (mayo's #332): its side's one loop from the base's seam point
  * round the base, up the seam line, along the apex's degenerate edge
  * (sampled as points 1e-13 apart) and down the seam line again; the base
@@ -339,6 +386,7 @@ int main(void)
     SW_RUN(test_tjunction_step_inserts_the_vertex_the_intervals_missed);
     SW_RUN(test_tjunction_step_merges_a_spike_tip_into_its_neighbour);
     SW_RUN(test_tjunction_step_fills_a_free_edge_with_its_detour);
+    SW_RUN(test_tjunction_step_closes_a_sliver_narrower_than_the_tolerance);
     SW_RUN(test_a_cone_is_sewn_along_its_seam_line);
     SW_RUN(test_tjunction_step_reaches_twice_the_tolerance_between_shared_ends);
     return sw_test_finish();

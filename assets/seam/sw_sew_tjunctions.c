@@ -14,7 +14,9 @@
  * the seam only. A second pass takes the free edges a-b that other loops
  * go round through one vertex x, both of its edges sewn (a cusp where an
  * arc meets a line tangentially, its tip a hair off the line: the loop
- * that holds the cusp cut straight to the tip), x going in as above. */
+ * that holds the cusp cut straight to the tip), x going in as above; and
+ * the free edges beside a sliver narrower than the tolerance, whose other
+ * long side is another loop's free edge: their ends merge pairwise. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -341,26 +343,82 @@ static int detour(const sew_state *s, const sw_seam_host *h, const tj_use *uses,
     return 0;
 }
 
-/* Step 3b's second pass: every free edge with a detour (detour). */
+/* The end of use w other than v. */
+static uint32_t other_end(const tj_use *w, uint32_t v)
+{
+    uint32_t lo = (uint32_t)(w->key >> 32), hi = (uint32_t)w->key;
+    return lo == v ? hi : lo;
+}
+
+/* Are u and v within the merges' reach of each other? */
+static int within_reach(const sew_state *s, uint32_t u, uint32_t v)
+{
+    double reach = fmax(s->tol, sew_gap(s->poly, u) + sew_gap(s->poly, v));
+    return sw_v3_length(sw_v3_sub(at(s, u), at(s, v))) <= reach;
+}
+
+/* Free edge use i, a-b, beside another loop's free edge c-d whose ends
+ * pair with a and b within the reach, each joined to its partner by an
+ * edge: a sliver narrower than the tolerance between two faces, each
+ * running along one of its long sides (the Bambu X1C mount: 0.002 mm wide,
+ * 3.2 mm long). c merges into a and d into b (out[0], out[1]): both faces
+ * run a-b, as OpenCASCADE's sewing pairs two such edges. Returns the
+ * partner's use, or n when there is none. */
+static size_t sliver(const sew_state *s, const tj_use *uses, size_t n, const tj_end *ends,
+                     size_t nends, size_t i, tj_insert *out)
+{
+    for (int turn = 0; turn < 2; turn++) {
+        uint32_t a = turn ? (uint32_t)uses[i].key : (uint32_t)(uses[i].key >> 32);
+        uint32_t b = other_end(&uses[i], a);
+        for (size_t k = first_end(ends, nends, a); k < nends && ends[k].vertex == a; k++) {
+            uint32_t c = other_end(&uses[ends[k].use], a);
+            if (c == b || !within_reach(s, a, c))
+                continue;
+            for (size_t m = first_end(ends, nends, c); m < nends && ends[m].vertex == c; m++) {
+                const tj_use *f = &uses[ends[m].use];
+                uint32_t d = other_end(f, c);
+                size_t bd = first_use(uses, n, edge_key(b, d));
+                if (f->loop == uses[i].loop || d == a || d == b || only_use(uses, n, f->key) != f ||
+                    !within_reach(s, b, d) || bd >= n || uses[bd].key != edge_key(b, d))
+                    continue;
+                out[0] = (tj_insert){uses[i].loop, uses[i].slot, {a, {0, 0}}, c};
+                out[1] = (tj_insert){uses[i].loop, uses[i].slot, {b, {0, 0}}, d};
+                return ends[m].use;
+            }
+        }
+    }
+    return n;
+}
+
+/* Step 3b's second pass: every free edge with a detour (detour), or
+ * beside a sliver's other side (sliver). */
 static sw_status insert_detours(sew_state *s, sw_seam_host *h, size_t *inserted)
 {
     size_t n = 0, nends = 0, count = 0;
     tj_use *uses = collect_uses(h, &n);
     tj_end *ends = uses ? edge_ends(uses, n, 1, &nends) : NULL;
-    tj_insert *ins = malloc((n + 1) * sizeof *ins);
-    if (!uses || !ends || !ins) {
-        free(uses), free(ends), free(ins);
+    tj_insert *ins = malloc((2 * n + 1) * sizeof *ins);
+    uint8_t *taken = calloc(n + 1, 1);
+    if (!uses || !ends || !ins || !taken) {
+        free(uses), free(ends), free(ins), free(taken);
         return sw_error_set(s->err, SW_ERR_NO_MEMORY, "sewing: out of memory for T-junctions");
     }
-    for (size_t i = 0; i < n; i++)
-        if (only_use(uses, n, uses[i].key) == &uses[i] &&
-            detour(s, h, uses, n, ends, nends, i, &ins[count]))
+    for (size_t i = 0; i < n; i++) {
+        if (taken[i] || only_use(uses, n, uses[i].key) != &uses[i])
+            continue;
+        if (detour(s, h, uses, n, ends, nends, i, &ins[count])) {
             count++;
+            continue;
+        }
+        size_t partner = sliver(s, uses, n, ends, nends, i, &ins[count]);
+        if (partner < n)
+            taken[partner] = 1, count += 2;
+    }
     if (count > 1)
         qsort(ins, count, sizeof *ins, compare_inserts);
     sw_status st = count ? apply(h, ins, count, s->err) : SW_OK;
     *inserted += count;
-    free(uses), free(ends), free(ins);
+    free(uses), free(ends), free(ins), free(taken);
     return st;
 }
 
