@@ -375,6 +375,27 @@ static void test_closed_surface_meets_itself(void)
 
 /* ---- curved trims ------------------------------------------------------- */
 
+/* The polygon pts[0 .. n) (n <= 8) as a loop of straight trims on the
+ * plane [0, 2]^2, flattened at 1e-5 into pl (m holds the model). */
+static void flatten_polygon(const double (*pts)[2], int n, sw_model *m, sw_seam_polylines *pl)
+{
+    static shape_plane plane;
+    shape_plane_init(&plane, 1, 1, 1, 2, 2);
+    static double knots[4] = {0, 0, 1, 1}, ctrl[8][8];
+    sw_nurbs_curve curves[8];
+    for (int k = 0; k < n; k++) {
+        const double *a = pts[k], *b = pts[(k + 1) % n];
+        double c[8] = {a[0], a[1], 0, 1, b[0], b[1], 0, 1};
+        memcpy(ctrl[k], c, sizeof c);
+        curves[k] = (sw_nurbs_curve){1, 2, knots, ctrl[k]};
+    }
+    sw_model_loop_input loop = {curves, NULL, (size_t)n, 1, NULL};
+    sw_model_init(m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(m, &plane.surface, 0, &loop, 1, &err) == SW_OK);
+    SW_CHECK_MSG(sw_seam_flatten_model(m, 1e-5, pl, &err) == SW_OK, "%s", err.message);
+}
+
 /* A loop of the square [0.5, 1.5]^2 whose bottom curve runs 0.003 past the
  * right side and 0.001 below its start before a straight trim closes the
  * gap back to it (a p-curve overshooting a corner): flattened, the loop
@@ -382,24 +403,10 @@ static void test_closed_surface_meets_itself(void)
  * fold is gone, the corner where the two sides cross. */
 static void test_a_fold_at_a_corner_is_cut_off(void)
 {
-    shape_plane plane;
-    shape_plane_init(&plane, 1, 1, 1, 2, 2);
     const double pts[5][2] = {{0.5, 0.5}, {1.503, 0.499}, {1.5, 0.499}, {1.5, 1.5}, {0.5, 1.5}};
-    double knots[4] = {0, 0, 1, 1}, ctrl[5][8];
-    sw_nurbs_curve curves[5];
-    for (int k = 0; k < 5; k++) {
-        const double *a = pts[k], *b = pts[(k + 1) % 5];
-        double c[8] = {a[0], a[1], 0, 1, b[0], b[1], 0, 1};
-        memcpy(ctrl[k], c, sizeof c);
-        curves[k] = (sw_nurbs_curve){1, 2, knots, ctrl[k]};
-    }
-    sw_model_loop_input loop = {curves, NULL, 5, 1, NULL};
     sw_model m;
-    sw_model_init(&m);
-    sw_error err;
-    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, &loop, 1, &err) == SW_OK);
     sw_seam_polylines pl;
-    SW_CHECK_MSG(sw_seam_flatten_model(&m, 1e-5, &pl, &err) == SW_OK, "%s", err.message);
+    flatten_polygon(pts, 5, &m, &pl);
     size_t n = pl.loop_start[1] - pl.loop_start[0], crossings = 0, corner = 0;
     for (size_t i = 0; i < n; i++) {
         const double *a = pl.uv + 2 * i, *b = pl.uv + 2 * ((i + 1) % n);
@@ -428,24 +435,10 @@ static void test_a_fold_at_a_corner_is_cut_off(void)
  * stay (it was cut to a point, and its three neighbours' edges were free). */
 static void test_a_hair_at_a_triangle_corner_is_cut_off(void)
 {
-    shape_plane plane;
-    shape_plane_init(&plane, 1, 1, 1, 2, 2);
     const double pts[4][2] = {{1.0, 1.5}, {0.5, 0.5}, {1.5, 0.5}, {1.0 - 4e-10, 1.5 + 4e-10}};
-    double knots[4] = {0, 0, 1, 1}, ctrl[4][8];
-    sw_nurbs_curve curves[4];
-    for (int k = 0; k < 4; k++) {
-        const double *a = pts[k], *b = pts[(k + 1) % 4];
-        double c[8] = {a[0], a[1], 0, 1, b[0], b[1], 0, 1};
-        memcpy(ctrl[k], c, sizeof c);
-        curves[k] = (sw_nurbs_curve){1, 2, knots, ctrl[k]};
-    }
-    sw_model_loop_input loop = {curves, NULL, 4, 1, NULL};
     sw_model m;
-    sw_model_init(&m);
-    sw_error err;
-    SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, &loop, 1, &err) == SW_OK);
     sw_seam_polylines pl;
-    SW_CHECK_MSG(sw_seam_flatten_model(&m, 1e-5, &pl, &err) == SW_OK, "%s", err.message);
+    flatten_polygon(pts, 4, &m, &pl);
     size_t n = pl.loop_start[1] - pl.loop_start[0];
     int found[3] = {0, 0, 0};
     for (size_t i = 0; i < n; i++)
