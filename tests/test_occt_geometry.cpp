@@ -15,6 +15,7 @@
  *   the same parameters. */
 #include "sw_occt_bspline.h"
 #include "sw_occt_convert.h"
+#include "sw_occt_face.h"
 #include "sw_occt_pcurve.h"
 #include "sw_test.h"
 
@@ -202,6 +203,31 @@ static void test_a_pcurve_from_a_pole_is_projected_again(void)
     SW_CHECK_NEAR(out->Value(f).X(), a.X(), 1e-6);
 }
 
+/* A whole turn of a torus band on a trimmed surface starting at u = pi / 2
+ * (pythonocc's 11752.stp): converted, its trims lie within its surface's
+ * u domain, so none is put on the border (the conversion ran the trims a
+ * turn shifted against the domain and the band's seam opened). */
+static void test_a_whole_turn_keeps_its_trims_in_the_domain(void)
+{
+    Handle(Geom_ToroidalSurface) torus = new Geom_ToroidalSurface(gp_Ax3(), 43.0, 2.0);
+    Handle(Geom_RectangularTrimmedSurface) band = new Geom_RectangularTrimmedSurface(
+        torus, 0.5 * M_PI, 2.5 * M_PI, 6.36769 - 2.0 * M_PI, 0.5 * M_PI);
+    TopoDS_Face face = BRepBuilderAPI_MakeFace(band, 1e-7).Face();
+    sw_occt::FaceWork w;
+    w.face = w.forward = face;
+    sw_occt::convert_face(&w, 0.1);
+    SW_CHECK_MSG(w.why.empty(), "%s", w.why.c_str());
+    double u0 = w.surface.knots_u.front(), u1 = w.surface.knots_u.back(), lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const sw_occt::Loop &loop : w.loops)
+        for (const sw_occt::TrimCurve &c : loop.curves)
+            for (int i = 0; i < c.count; i++)
+                lo = std::fmin(lo, c.ctrl[4 * i]), hi = std::fmax(hi, c.ctrl[4 * i]);
+    printf("  surface u [%.6f, %.6f], trims u [%.6f, %.6f]\n", u0, u1, lo, hi);
+    SW_CHECK(!w.loops.empty());
+    SW_CHECK_MSG(lo >= u0 - 1e-9 && hi <= u1 + 1e-9, "trims [%g, %g] past the domain [%g, %g]",
+                 lo, hi, u0, u1);
+}
+
 static void test_a_face_over_a_period_converts_moved_along(void)
 {
     gp_Torus torus(gp_Ax3(gp::XOY()), 0.6, 0.175);
@@ -290,6 +316,7 @@ int main()
     SW_RUN(test_a_pcurve_a_period_away_is_projected_again);
     SW_RUN(test_a_pcurve_from_a_pole_is_projected_again);
     SW_RUN(test_a_face_over_a_period_converts_moved_along);
+    SW_RUN(test_a_whole_turn_keeps_its_trims_in_the_domain);
     SW_RUN(test_a_plane_is_made_again_over_a_wider_box);
     SW_RUN(test_other_surfaces_are_not_made_again);
     return sw_test_finish();

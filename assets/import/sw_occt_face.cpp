@@ -11,6 +11,7 @@
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_Surface.hxx>
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
@@ -182,6 +183,69 @@ void widen_plane(const TopoDS_Face &face, const TopoDS_Face &converted,
         fill_surface(b, surface);
 }
 
+/* The u period of the face's surface (of the surface a trimmed surface
+ * trims), 0 when it has none. */
+double u_period(const TopoDS_Face &face)
+{
+    Handle(Geom_Surface) s = BRep_Tool::Surface(face);
+    Handle(Geom_RectangularTrimmedSurface) trimmed =
+        Handle(Geom_RectangularTrimmedSurface)::DownCast(s);
+    Handle(Geom_Surface) basis = trimmed.IsNull() ? s : trimmed->BasisSurface();
+    return basis->IsUPeriodic() ? basis->UPeriod() : 0;
+}
+
+/* A face over a whole turn (a torus band on a trimmed surface) whose
+ * converted trims run the turn shifted against the converted surface's
+ * domain: OpenCASCADE's conversion started the surface 0.04 rad past the
+ * seam the trims start at, and the strip between lay outside the domain
+ * (its trim points were put on the border, and the band's seam opened 1.6
+ * mm). The surface is made periodic, its origin moved to where the trims
+ * start (a knot inserted there), and made open and clamped again over
+ * [start, start + period]: the same points, the trims inside. */
+void wrap_turn(const TopoDS_Face &face, const TopoDS_Face &converted,
+               const std::vector<Loop> &loops, Surface *surface)
+{
+    double period = u_period(face);
+    double u0 = surface->knots_u.front(), u1 = surface->knots_u.back();
+    if (!(period > 0) || std::fabs(u1 - u0 - period) > 1e-9 * period)
+        return;
+    std::vector<const TrimCurve *> curves;
+    for (const Loop &loop : loops)
+        for (const TrimCurve &c : loop.curves)
+            curves.push_back(&c);
+    double box[4], eps = 1e-9 * period;
+    trims_box(curves, box);
+    if ((box[0] >= u0 - eps && box[1] <= u1 + eps) || box[1] - box[0] > period + eps)
+        return;
+    double start = box[0] < u0 - eps ? box[0] : box[1] - period;
+    double origin = start < u0 ? start + period : start;
+    try {
+        Handle(Geom_BSplineSurface) b = bspline_surface_of(converted);
+        if (!b->IsUClosed())
+            return;
+        b->InsertUKnot(origin, 1, Precision::PConfusion());
+        b->SetUPeriodic();
+        int at = 0;
+        for (int k = 1; k <= b->NbUKnots() && at == 0; k++)
+            at = std::fabs(b->UKnot(k) - origin) <= Precision::PConfusion() ? k : 0;
+        if (at == 0)
+            return;
+        b->SetUOrigin(at);
+        b->SetUNotPeriodic();
+        double a0, a1, b0, b1;
+        b->Bounds(a0, a1, b0, b1);
+        b->Segment(a0, a1, b0, b1);   /* clamped, as the model takes it */
+        Surface wrapped;
+        fill_surface(b, &wrapped);
+        double shift = start - wrapped.knots_u.front();
+        for (double &k : wrapped.knots_u)
+            k += shift;
+        *surface = std::move(wrapped);
+    } catch (const Standard_Failure &) {
+        /* left as it was: the trims past its domain are put on its border */
+    }
+}
+
 }  // namespace
 
 /* The face as a B-spline surface and its loops, or why it cannot be used.
@@ -210,6 +274,7 @@ static void convert_face_unguarded(FaceWork *w, double floor_mm)
         w->loops.push_back(std::move(loop));
     }
     widen_plane(face, converted, w->loops, &w->surface);
+    wrap_turn(face, converted, w->loops, &w->surface);
 }
 
 /* No exception leaves a thread: each becomes the face's reason, or a stop. */
