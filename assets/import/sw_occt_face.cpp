@@ -223,6 +223,11 @@ void wrap_turn(const TopoDS_Face &face, const TopoDS_Face &converted,
         Handle(Geom_BSplineSurface) b = bspline_surface_of(converted);
         if (!b->IsUClosed())
             return;
+        /* A knot a hair from the origin is taken for it: a new one there
+         * would leave a span too short for floats (the Bambu mount). */
+        for (int k = 1; k <= b->NbUKnots(); k++)
+            if (std::fabs(b->UKnot(k) - origin) <= 1e-6 * period)
+                origin = b->UKnot(k);
         b->InsertUKnot(origin, 1, Precision::PConfusion());
         b->SetUPeriodic();
         int at = 0;
