@@ -375,81 +375,6 @@ static void test_closed_surface_meets_itself(void)
 
 /* ---- curved trims ------------------------------------------------------- */
 
-/* The polygon pts[0 .. n) (n <= 8) as a loop of straight trims on the
- * plane [0, 2]^2, flattened at 1e-5 into pl (m holds the model). */
-static void flatten_polygon(const double (*pts)[2], int n, sw_model *m, sw_seam_polylines *pl)
-{
-    static shape_plane plane;
-    shape_plane_init(&plane, 1, 1, 1, 2, 2);
-    static double knots[4] = {0, 0, 1, 1}, ctrl[8][8];
-    sw_nurbs_curve curves[8];
-    for (int k = 0; k < n; k++) {
-        const double *a = pts[k], *b = pts[(k + 1) % n];
-        double c[8] = {a[0], a[1], 0, 1, b[0], b[1], 0, 1};
-        memcpy(ctrl[k], c, sizeof c);
-        curves[k] = (sw_nurbs_curve){1, 2, knots, ctrl[k]};
-    }
-    sw_model_loop_input loop = {curves, NULL, (size_t)n, 1, NULL};
-    sw_model_init(m);
-    sw_error err;
-    SW_CHECK(sw_model_add_surface(m, &plane.surface, 0, &loop, 1, &err) == SW_OK);
-    SW_CHECK_MSG(sw_seam_flatten_model(m, 1e-5, pl, &err) == SW_OK, "%s", err.message);
-}
-
-/* A loop of the square [0.5, 1.5]^2 whose bottom curve runs 0.003 past the
- * right side and 0.001 below its start before a straight trim closes the
- * gap back to it (a p-curve overshooting a corner): flattened, the loop
- * does not cross itself (no two of its segments cross in (u, v)), and the
- * fold is gone, the corner where the two sides cross. */
-static void test_a_fold_at_a_corner_is_cut_off(void)
-{
-    const double pts[5][2] = {{0.5, 0.5}, {1.503, 0.499}, {1.5, 0.499}, {1.5, 1.5}, {0.5, 1.5}};
-    sw_model m;
-    sw_seam_polylines pl;
-    flatten_polygon(pts, 5, &m, &pl);
-    size_t n = pl.loop_start[1] - pl.loop_start[0], crossings = 0, corner = 0;
-    for (size_t i = 0; i < n; i++) {
-        const double *a = pl.uv + 2 * i, *b = pl.uv + 2 * ((i + 1) % n);
-        corner += fabs(a[0] - 1.5) < 1e-9 && fabs(a[1] - (0.5 - 0.001 / 1.003)) < 1e-9;
-        for (size_t j = i + 2; j < n; j++) {
-            if ((j + 1) % n == i)
-                continue;
-            const double *c = pl.uv + 2 * j, *d = pl.uv + 2 * ((j + 1) % n);
-            double o1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-            double o2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-            double o3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
-            double o4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
-            crossings += o1 * o2 < 0 && o3 * o4 < 0;
-        }
-    }
-    SW_CHECK_MSG(crossings == 0, "%zu crossings in %zu points", crossings, n);
-    SW_CHECK_MSG(corner == 1, "the corner where the sides cross: %zu", corner);
-    sw_seam_polylines_free(&pl);
-    sw_model_free(&m);
-}
-
-/* A triangle whose third side ends a hair across the first one's start, a
- * straight trim 6e-10 long closing the gap (the Fly Gemini DIN mount's
- * corner face): the first and third sides cross at the start; the sliver
- * to cut is the hair, not the triangle. Flattened, its three corners
- * stay (it was cut to a point, and its three neighbours' edges were free). */
-static void test_a_hair_at_a_triangle_corner_is_cut_off(void)
-{
-    const double pts[4][2] = {{1.0, 1.5}, {0.5, 0.5}, {1.5, 0.5}, {1.0 - 4e-10, 1.5 + 4e-10}};
-    sw_model m;
-    sw_seam_polylines pl;
-    flatten_polygon(pts, 4, &m, &pl);
-    size_t n = pl.loop_start[1] - pl.loop_start[0];
-    int found[3] = {0, 0, 0};
-    for (size_t i = 0; i < n; i++)
-        for (int k = 0; k < 3; k++)
-            found[k] |= fabs(pl.uv[2 * i] - pts[k][0]) < 1e-6 && fabs(pl.uv[2 * i + 1] - pts[k][1]) < 1e-6;
-    SW_CHECK_MSG(found[0] && found[1] && found[2], "corners kept: %d %d %d of %zu points", found[0],
-                 found[1], found[2], n);
-    sw_seam_polylines_free(&pl);
-    sw_model_free(&m);
-}
-
 /* The plane z = 0 over [0, 1]^2 with a hole of radius 0.3, and the disc that
  * fills it: the hole and the disc's rim are sewn all the way round. */
 static void test_hole_and_disc_sewn_all_round(void)
@@ -941,8 +866,6 @@ int main(int argc, char **argv)
     SW_RUN(test_each_side_reaches_by_its_own_gap);
     SW_RUN(test_gaps_too_wide_to_search_fail);
     SW_RUN(test_closed_surface_meets_itself);
-    SW_RUN(test_a_fold_at_a_corner_is_cut_off);
-    SW_RUN(test_a_hair_at_a_triangle_corner_is_cut_off);
     SW_RUN(test_hole_and_disc_sewn_all_round);
     SW_RUN(test_teapot_polylines_within_tolerance);
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);
