@@ -320,6 +320,10 @@ static void print_summary(const build_options *o, const sw_model *model,
             printf("seamwalk-pack: %s: %zu closed faces converted a period along (OpenCASCADE's "
                    "conversion failed where they were)\n", sw_pack_tool_base_name(o->inputs[i]),
                    reports[i].faces_moved);
+        if (reports[i].faces_unrolled > 0)
+            printf("seamwalk-pack: %s: %zu faces over more than their surface's period put on "
+                   "a surface of their own range\n", sw_pack_tool_base_name(o->inputs[i]),
+                   reports[i].faces_unrolled);
     }
     const sw_seam_report *r = &seams->sewing;
     printf("seamwalk-pack: seams: %zu boundary vertices, %zu edges (%zu sewn, %zu free, %zu "

@@ -52,6 +52,7 @@ function(sw_occt_apply target core)
     ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_bspline.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_pcurve.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_convert.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_unroll.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_face.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_step_file.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/import/sw_occt_read_check.cpp)

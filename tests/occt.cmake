@@ -19,8 +19,8 @@ if(SW_OCCT_FOUND)
 endif()
 
 # The importer's geometry repairs (assets/import/sw_occt_pcurve.h,
-# sw_occt_convert.h, the plane's in sw_occt_bspline.h), in C++ against OCCT: C++ gets its own
-# warnings (sw_apply_warnings' are C's).
+# sw_occt_convert.h, sw_occt_unroll.h, the plane's in sw_occt_bspline.h), in
+# C++ against OCCT: C++ gets its own warnings (sw_apply_warnings' are C's).
 if(SW_OCCT_FOUND)
   add_executable(test_occt_geometry test_occt_geometry.cpp)
   target_include_directories(test_occt_geometry PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}

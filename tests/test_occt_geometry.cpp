@@ -10,6 +10,9 @@
  * - sw_occt::converted_moving (assets/import/sw_occt_convert.h): a torus
  *   band over a whole turn that OCCT cannot convert, converted a period
  *   along.
+ * - sw_occt::unrolled_over_period (assets/import/sw_occt_unroll.h): a
+ *   thread's helical band a hair over one turn, put on a surface of its
+ *   own range, converted with its trims within it and on its edges.
  * - sw_occt::plane_over (assets/import/sw_occt_bspline.h): a plane's
  *   conversion made again over a wider box, only where it is that plane in
  *   the same parameters. */
@@ -17,6 +20,7 @@
 #include "sw_occt_convert.h"
 #include "sw_occt_face.h"
 #include "sw_occt_pcurve.h"
+#include "sw_occt_unroll.h"
 #include "sw_test.h"
 
 #include <GeomConvert.hxx>
@@ -42,6 +46,11 @@
 #include <Geom2d_TrimmedCurve.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepLib.hxx>
+#include <GCE2d_MakeSegment.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
 
 /* The cylinder's side and an edge of it that is not its seam (a circle). */
 static bool side_and_circle(TopoDS_Face *face, TopoDS_Edge *edge)
@@ -268,6 +277,99 @@ static void test_a_face_over_a_period_converts_moved_along(void)
     SW_CHECK_MSG(off == 0, "%d of %d points of the loops off the torus", off, samples);
 }
 
+/* A thread's helical band on a cylinder (radius 1.4, pitch 0.5, 0.137
+ * wide) over a turn and over more radians: a straight strip in (u, v). */
+static TopoDS_Face helical_band(double over)
+{
+    const double r = 1.4, pitch = 0.5, width = 0.137;
+    Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), r);
+    double u0 = -M_PI, u1 = M_PI + over, rise = pitch * (u1 - u0) / (2.0 * M_PI);
+    const gp_Pnt2d corners[4] = {gp_Pnt2d(u0, 0.0), gp_Pnt2d(u1, rise),
+                                 gp_Pnt2d(u1, rise + width), gp_Pnt2d(u0, width)};
+    BRepBuilderAPI_MakeWire wire;
+    for (int i = 0; i < 4; i++)
+        wire.Add(BRepBuilderAPI_MakeEdge(GCE2d_MakeSegment(corners[i], corners[(i + 1) % 4]).Value(),
+                                         cylinder).Edge());
+    TopoDS_Wire w = wire.Wire();
+    BRepLib::BuildCurves3d(w);
+    return BRepBuilderAPI_MakeFace(cylinder, w).Face();
+}
+
+/* How far the face's converted trims run past its surface's u domain, and
+ * how far their points (33 a curve, on the surface) lie from the band's
+ * edges in space. */
+static void trims_against(const sw_occt::FaceWork &w, const TopoDS_Face &band, double *past,
+                          double *off)
+{
+    *past = 0, *off = 0;
+    double u0 = w.surface.knots_u.front(), u1 = w.surface.knots_u.back();
+    for (const sw_occt::Loop &loop : w.loops)
+        for (const sw_occt::TrimCurve &c : loop.curves) {
+            sw_nurbs_curve view = {c.degree, c.count, c.knots.data(), c.ctrl.data()};
+            double t0 = c.knots[(size_t)c.degree], t1 = c.knots[(size_t)c.count];
+            for (int i = 0; i <= 32; i++) {
+                sw_vec3 uv = sw_nurbs_curve_point(&view, t0 + (t1 - t0) * i / 32);
+                *past = std::fmax(*past, std::fmax(u0 - uv.x, uv.x - u1));
+                sw_vec3 p = sw_nurbs_surface_point(&w.surface.view, uv.x, uv.y);
+                double nearest = HUGE_VAL;
+                for (TopExp_Explorer e(band, TopAbs_EDGE); e.More(); e.Next()) {
+                    Standard_Real f, l;
+                    Handle(Geom_Curve) edge = BRep_Tool::Curve(TopoDS::Edge(e.Current()), f, l);
+                    GeomAPI_ProjectPointOnCurve on(gp_Pnt(p.x, p.y, p.z), edge, f, l);
+                    if (on.NbPoints() > 0)
+                        nearest = std::fmin(nearest, on.LowerDistance());
+                }
+                *off = std::fmax(*off, nearest);
+            }
+        }
+}
+
+/* The band 0.0014 rad over a turn, as in a printer bed's M3 holes:
+ * converted as it is, its surface runs one period and the trims past it;
+ * unrolled, the surface runs the band and every trim point is on an edge. */
+static void test_a_band_over_a_turn_is_unrolled(void)
+{
+    TopoDS_Face band = helical_band(0.0014);
+    sw_occt::FaceWork plain;
+    plain.face = plain.forward = band;
+    sw_occt::convert_face(&plain, 0.1);
+    double past, off;
+    trims_against(plain, band, &past, &off);
+    printf("  converted as it is: trims %.3g past the domain, %.3g off the edges\n", past, off);
+    SW_CHECK_MSG(past > 1e-3, "the conversion held the band: this test no longer shows the "
+                              "failure it is about");
+    TopoDS_Face unrolled = sw_occt::unrolled_over_period(band);
+    SW_CHECK(!unrolled.IsNull());
+    if (unrolled.IsNull())
+        return;
+    sw_occt::FaceWork w;
+    w.face = band;
+    w.forward = unrolled;
+    w.unrolled = true;
+    sw_occt::convert_face(&w, 0.1);
+    SW_CHECK_MSG(w.why.empty(), "%s", w.why.c_str());
+    SW_CHECK(w.loops.size() == 1);
+    trims_against(w, band, &past, &off);
+    printf("  unrolled: u over [%.6f, %.6f], trims %.3g past it, %.3g off the edges\n",
+           w.surface.knots_u.front(), w.surface.knots_u.back(), past, off);
+    SW_CHECK(w.surface.knots_u.back() - w.surface.knots_u.front() > 2.0 * M_PI + 1e-3);
+    SW_CHECK_MSG(past <= 1e-9, "trims %g past the domain", past);
+    /* BuildCurves3d made the edges' curves within 1e-5 of their p-curves. */
+    SW_CHECK_MSG(off <= 1e-5, "trim points %g off the band's edges", off);
+}
+
+/* A whole turn and no more (a cylinder's side), or a part of one: left to
+ * the conversion. */
+static void test_a_turn_or_less_is_not_unrolled(void)
+{
+    SW_CHECK(sw_occt::unrolled_over_period(helical_band(0.0)).IsNull());
+    SW_CHECK(sw_occt::unrolled_over_period(helical_band(-1.0)).IsNull());
+    TopoDS_Face side, unused;
+    TopoDS_Edge circle;
+    SW_CHECK(side_and_circle(&side, &circle));
+    SW_CHECK(sw_occt::unrolled_over_period(side).IsNull());
+}
+
 /* A plane's conversion over the unit square, made again over a box that
  * reaches past it: the box is its domain and every point the plane's. */
 static void test_a_plane_is_made_again_over_a_wider_box(void)
@@ -317,6 +419,8 @@ int main()
     SW_RUN(test_a_pcurve_from_a_pole_is_projected_again);
     SW_RUN(test_a_face_over_a_period_converts_moved_along);
     SW_RUN(test_a_whole_turn_keeps_its_trims_in_the_domain);
+    SW_RUN(test_a_band_over_a_turn_is_unrolled);
+    SW_RUN(test_a_turn_or_less_is_not_unrolled);
     SW_RUN(test_a_plane_is_made_again_over_a_wider_box);
     SW_RUN(test_other_surfaces_are_not_made_again);
     return sw_test_finish();

@@ -42,6 +42,8 @@ typedef struct sw_import_report {
                                    again from its model-space curve */
     size_t faces_moved;         /* closed faces converted a period along: OpenCASCADE's
                                    conversion failed where they were */
+    size_t faces_unrolled;      /* faces over more than their surface's period, put on a
+                                   B-spline surface of their own range */
     /* Entities that could not be used and were left out (a face and what
      * it needs): the model lacks them. */
     sw_import_tally unsupported;

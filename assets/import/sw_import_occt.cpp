@@ -23,6 +23,7 @@ extern "C" {
 #include "sw_math.h"
 #include "sw_occt_measure.h"
 }
+#include "sw_occt_unroll.h"
 #include "sw_occt_face.h"
 #include "sw_occt_internal.h"
 extern "C" {
@@ -219,6 +220,9 @@ void prepare_face(const ImportContext *ctx, const TopoDS_Face &face, bool mirror
     for (TopoDS_Iterator it(w->forward); it.More(); it.Next())
         if (it.Value().ShapeType() == TopAbs_WIRE)
             w->missing += fix_missing_pcurves(TopoDS::Wire(it.Value()), w->forward);
+    TopoDS_Face unrolled = unrolled_over_period(w->forward);
+    if (!unrolled.IsNull())
+        w->forward = unrolled, w->unrolled = true;
 }
 
 /* Adds a converted face to the current part; a face that cannot be used
@@ -245,6 +249,7 @@ sw_status add_face(ImportContext *ctx, const FaceWork &w, size_t index)
                                                 inputs.data(), inputs.size(), ctx->err);
         if (status == SW_OK) {
             ctx->report->faces++;
+            ctx->report->faces_unrolled += w.unrolled;
             ctx->report->pcurves_computed += (size_t)std::max(w.missing, w.file_gaps);
             ctx->report->pcurves_reprojected += (size_t)w.reprojected;
             ctx->report->faces_moved += w.moved;

@@ -64,6 +64,7 @@ void sw_import_report_merge(sw_import_report *total, const sw_import_report *one
     total->pcurves_computed += one->pcurves_computed;
     total->pcurves_reprojected += one->pcurves_reprojected;
     total->faces_moved += one->faces_moved;
+    total->faces_unrolled += one->faces_unrolled;
     if (sw_import_report_strict_messages(total) == 0 && sw_import_report_strict_messages(one) > 0)
         memcpy(total->first_message, one->first_message, sizeof total->first_message);
     tally_merge(&total->unsupported, &one->unsupported);

@@ -106,11 +106,11 @@ double end_reach(const TopoDS_Edge &edge, double edge_tolerance, int end)
     return v.IsNull() ? edge_tolerance : std::max(edge_tolerance, BRep_Tool::Tolerance(v));
 }
 
-/* The loop of one wire: each edge's p-curve on the converted face, in wire
- * order, reversed where the edge runs against its curve. Returns why it
- * failed, or "". */
+/* The loop of one wire: each edge's p-curve on the converted face (the face
+ * itself when conv is null), in wire order, reversed where the edge runs
+ * against its curve. Returns why it failed, or "". */
 std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
-                         const BRepBuilderAPI_NurbsConvert &conv, const TopoDS_Face &converted,
+                         const BRepBuilderAPI_NurbsConvert *conv, const TopoDS_Face &converted,
                          int computed, double floor_mm, Loop *loop, int *reprojected)
 {
     int edges_in_wire = 0, explored = 0;
@@ -118,7 +118,7 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
         edges_in_wire++;
     for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next()) {
         const TopoDS_Edge &edge = ex.Current();
-        TopoDS_Edge moved = TopoDS::Edge(conv.ModifiedShape(edge));
+        TopoDS_Edge moved = conv ? TopoDS::Edge(conv->ModifiedShape(edge)) : edge;
         moved.Orientation(edge.Orientation());
         Standard_Real f, l;
         Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(moved, converted, f, l);
@@ -261,9 +261,13 @@ static void convert_face_unguarded(FaceWork *w, double floor_mm)
     int computed = w->missing > 0 || w->file_gaps > 0;
     TopoDS_Face face = w->forward;   /* or its copy a period along */
     bool moved = false;
-    std::unique_ptr<BRepBuilderAPI_NurbsConvert> conv = converted_moving(&face, &moved);
+    /* An unrolled face is on its B-spline already, with its own p-curves:
+     * the conversion would approximate them again. */
+    std::unique_ptr<BRepBuilderAPI_NurbsConvert> conv;
+    if (!w->unrolled)
+        conv = converted_moving(&face, &moved);
     w->moved = moved;
-    TopoDS_Face converted = TopoDS::Face(conv->Shape().Oriented(TopAbs_FORWARD));
+    TopoDS_Face converted = conv ? TopoDS::Face(conv->Shape().Oriented(TopAbs_FORWARD)) : face;
     fill_surface(bspline_surface_of(converted), &w->surface);
     TopoDS_Wire outer = BRepTools::OuterWire(face);
     for (TopoDS_Iterator it(face); it.More(); it.Next()) {
@@ -272,7 +276,7 @@ static void convert_face_unguarded(FaceWork *w, double floor_mm)
         Loop loop;
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
-        w->why = loop_of_wire(wire, face, *conv, converted, computed, floor_mm, &loop,
+        w->why = loop_of_wire(wire, face, conv.get(), converted, computed, floor_mm, &loop,
                               &w->reprojected);
         if (!w->why.empty())
             return;

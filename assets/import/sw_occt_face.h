@@ -43,6 +43,8 @@ struct FaceWork {
     std::vector<Loop> loops;
     int reprojected = 0;
     bool moved = false;               /* converted a period along (sw_occt_convert.h) */
+    bool unrolled = false;            /* put on a surface over more than a period
+                                         (sw_occt_unroll.h) */
     std::string why;                  /* "" once converted */
     sw_status failed = SW_OK;         /* out of memory: the import stops */
 };
