@@ -1,13 +1,42 @@
 /* SPDX-License-Identifier: MIT */
-/* Flattening's folds (sw_seam_flatten.h): a loop whose (u, v) crosses
- * itself at a corner, by a p-curve overshooting it or a hair of a closing
- * trim, comes out not crossing itself, its corners kept. */
+/* Flattening (sw_seam_flatten.h): a trimmed rational bump's polylines
+ * within the tolerance of its exact trims; and folds: a loop whose (u, v)
+ * crosses itself at a corner, by a p-curve overshooting it or a hair of a
+ * closing trim, comes out not crossing itself, its corners kept. */
 #include <math.h>
 #include <string.h>
 
 #include "model_shapes.h"
+#include "seam_polyline_check.h"
 #include "sw_seam_flatten.h"
 #include "sw_test.h"
+
+/* A bicubic bump trimmed by a circle and a rational circle hole. */
+static void test_trimmed_bump_polylines_within_tolerance(void)
+{
+    double knots[8] = {0, 0, 0, 0, 1, 1, 1, 1}, ctrl[16 * 4];
+    for (int j = 0; j < 4; j++)
+        for (int i = 0; i < 4; i++) {
+            double *c = ctrl + 4 * (j * 4 + i);
+            c[0] = i / 3.0 * 10, c[1] = j / 3.0 * 10;
+            c[2] = ((i == 1 || i == 2) && (j == 1 || j == 2)) ? 6 : (i + j) % 3;
+            c[3] = 1 + 0.3 * ((i + 2 * j) % 3); /* rational */
+        }
+    sw_nurbs_surface surf = {3, 3, 4, 4, knots, knots, ctrl};
+    shape_circle outer, hole;
+    shape_circle_init(&outer, 0.5, 0.5, 0.45, 0);
+    shape_circle_init(&hole, 0.6, 0.45, 0.1, 1);
+    sw_model_loop_input loops[2] = {{&outer.curve, NULL, 1, 1, NULL}, {&hole.curve, NULL, 1, 0, NULL}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    SW_CHECK(sw_model_add_surface(&m, &surf, 0, loops, 2, &err) == SW_OK);
+    check_polyline_error(&m, 1e-3, 1);
+    check_polyline_error(&m, 3e-2, 1);
+    sw_model_free(&m);
+}
+
+/* ---- folds ------------------------------------------------------------- */
 
 /* The polygon pts[0 .. n) (n <= 8) as a loop of straight trims on the
  * plane [0, 2]^2, flattened at 1e-5 into pl (m holds the model). */
@@ -86,6 +115,7 @@ static void test_a_hair_at_a_triangle_corner_is_cut_off(void)
 
 int main(void)
 {
+    SW_RUN(test_trimmed_bump_polylines_within_tolerance);
     SW_RUN(test_a_fold_at_a_corner_is_cut_off);
     SW_RUN(test_a_hair_at_a_triangle_corner_is_cut_off);
     return sw_test_finish();
