@@ -4,3 +4,4 @@ sw_add_test(test_seam_sew SOURCES test_seam_sew.c LIBS sw_assets sw_core ARGS ${
 sw_add_test(test_seam_flatten SOURCES test_seam_flatten.c LIBS sw_assets sw_core)
 # Beyond the intervals: gaps from the file, trims past the domain, T-junctions.
 sw_add_test(test_seam_sew_repairs SOURCES test_seam_sew_repairs.c LIBS sw_assets sw_core)
+sw_add_test(test_seam_sew_edges SOURCES test_seam_sew_edges.c LIBS sw_assets sw_core)

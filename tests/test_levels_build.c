@@ -197,8 +197,8 @@ static sw_status pack_bump(double height, uint8_t **bytes, size_t *size, sw_erro
     shape_rect_init(&outer, 0.2, 2.8, 0.2, 1.8);
     shape_circle hole;
     shape_circle_init(&hole, 1.5, 1.0, 0.4, 1);
-    sw_model_loop_input loops[2] = { { outer.curves, NULL, 4, 1, NULL },
-                                     { &hole.curve, NULL, 1, 0, NULL } };
+    sw_model_loop_input loops[2] = { { outer.curves, NULL, 4, 1, NULL, NULL},
+                                     { &hole.curve, NULL, 1, 0, NULL, NULL} };
     sw_model m;
     sw_model_init(&m);
     sw_seam_host seams = { 0 };

@@ -13,6 +13,8 @@
  * - sw_occt::unrolled_over_period (assets/import/sw_occt_unroll.h): a
  *   thread's helical band a hair over one turn, put on a surface of its
  *   own range, converted with its trims within it and on its edges.
+ * - the shared edges a face's loops name for the sewing
+ *   (sw_occt::Loop.edges): a box's twelve, each in two faces.
  * - sw_occt::plane_over (assets/import/sw_occt_bspline.h): a plane's
  *   conversion made again over a wider box, only where it is that plane in
  *   the same parameters. */
@@ -33,6 +35,7 @@
 #include <Geom_Plane.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <Geom2d_BSplineCurve.hxx>
@@ -51,6 +54,9 @@
 #include <BRepLib.hxx>
 #include <GCE2d_MakeSegment.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <map>
 
 /* The cylinder's side and an edge of it that is not its seam (a circle). */
 static bool side_and_circle(TopoDS_Face *face, TopoDS_Edge *edge)
@@ -370,6 +376,36 @@ static void test_a_turn_or_less_is_not_unrolled(void)
     SW_CHECK(sw_occt::unrolled_over_period(side).IsNull());
 }
 
+/* A box's faces, converted with its edge map: every trim names a shared
+ * edge, twelve in all, each in two faces' loops. */
+static void test_a_box_names_its_shared_edges(void)
+{
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(1.0, 2.0, 3.0).Shape();
+    TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+    TopExp::MapShapesAndAncestors(box, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+    std::map<uint32_t, int> uses;
+    int unnamed = 0, faces = 0;
+    for (TopExp_Explorer f(box, TopAbs_FACE); f.More(); f.Next(), faces++) {
+        sw_occt::FaceWork w;
+        w.face = TopoDS::Face(f.Current());
+        w.forward = TopoDS::Face(w.face.Oriented(TopAbs_FORWARD));
+        w.edge_faces = &edge_faces;
+        sw_occt::convert_face(&w, 0.1);
+        SW_CHECK_MSG(w.why.empty(), "%s", w.why.c_str());
+        for (const sw_occt::Loop &loop : w.loops) {
+            SW_CHECK(loop.edges.size() == loop.curves.size());
+            for (uint32_t e : loop.edges)
+                e ? (void)uses[e]++ : (void)unnamed++;
+        }
+    }
+    int twice = 0;
+    for (const auto &u : uses)
+        twice += u.second == 2;
+    printf("  %d faces: %zu edges named, %d in two faces, %d trims unnamed\n", faces, uses.size(),
+           twice, unnamed);
+    SW_CHECK(faces == 6 && uses.size() == 12 && twice == 12 && unnamed == 0);
+}
+
 /* A plane's conversion over the unit square, made again over a box that
  * reaches past it: the box is its domain and every point the plane's. */
 static void test_a_plane_is_made_again_over_a_wider_box(void)
@@ -421,6 +457,7 @@ int main()
     SW_RUN(test_a_whole_turn_keeps_its_trims_in_the_domain);
     SW_RUN(test_a_band_over_a_turn_is_unrolled);
     SW_RUN(test_a_turn_or_less_is_not_unrolled);
+    SW_RUN(test_a_box_names_its_shared_edges);
     SW_RUN(test_a_plane_is_made_again_over_a_wider_box);
     SW_RUN(test_other_surfaces_are_not_made_again);
     return sw_test_finish();

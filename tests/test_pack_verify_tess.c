@@ -42,7 +42,7 @@ static sw_status verify_plane_trimmed_by(const double (*corner)[2], int n,
     shape_plane_init(&plane, 3, 2, 2, 1, 1);
     polygon poly;
     polygon_init(&poly, corner, n);
-    sw_model_loop_input loop[1] = {{poly.curves, NULL, (size_t)n, 1, NULL}};
+    sw_model_loop_input loop[1] = {{poly.curves, NULL, (size_t)n, 1, NULL, NULL}};
     sw_model m;
     sw_model_init(&m);
     sw_seam_host seams = {0};

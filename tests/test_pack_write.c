@@ -327,7 +327,8 @@ static sw_status add_trimmed_plate(sw_model *model, sw_error *err)
                               1.2, 0.5, 0, 1 };
     sw_nurbs_curve rect = { 1, 5, rect_k, rect_p }, circle = { 2, 9, circ_k, circ_p };
     static const int computed = 1;
-    sw_model_loop_input loops[2] = { { &rect, NULL, 1, 1, NULL }, { &circle, &computed, 1, 0, NULL } };
+    sw_model_loop_input loops[2] = {{&rect, NULL, 1, 1, NULL, NULL},
+                                    {&circle, &computed, 1, 0, NULL, NULL}};
     return sw_model_add_surface(model, &plate, 0, loops, 2, err);
 }
 

@@ -26,7 +26,8 @@ static void test_trimmed_bump_polylines_within_tolerance(void)
     shape_circle outer, hole;
     shape_circle_init(&outer, 0.5, 0.5, 0.45, 0);
     shape_circle_init(&hole, 0.6, 0.45, 0.1, 1);
-    sw_model_loop_input loops[2] = {{&outer.curve, NULL, 1, 1, NULL}, {&hole.curve, NULL, 1, 0, NULL}};
+    sw_model_loop_input loops[2] = {{&outer.curve, NULL, 1, 1, NULL, NULL},
+                                    {&hole.curve, NULL, 1, 0, NULL, NULL}};
     sw_model m;
     sw_model_init(&m);
     sw_error err;
@@ -52,7 +53,7 @@ static void flatten_polygon(const double (*pts)[2], int n, sw_model *m, sw_seam_
         memcpy(ctrl[k], c, sizeof c);
         curves[k] = (sw_nurbs_curve){1, 2, knots, ctrl[k]};
     }
-    sw_model_loop_input loop = {curves, NULL, (size_t)n, 1, NULL};
+    sw_model_loop_input loop = {curves, NULL, (size_t)n, 1, NULL, NULL};
     sw_model_init(m);
     sw_error err;
     SW_CHECK(sw_model_add_surface(m, &plane.surface, 0, &loop, 1, &err) == SW_OK);

@@ -388,8 +388,9 @@ static void test_hole_and_disc_sewn_all_round(void)
     shape_circle hole, rim;
     shape_circle_init(&hole, 0.5, 0.5, 0.3, 1);
     shape_circle_init(&rim, 0.5, 0.5, 0.3, 0);
-    sw_model_loop_input holed[2] = {{rect.curves, NULL, 4, 1, NULL}, {&hole.curve, NULL, 1, 0, NULL}};
-    sw_model_loop_input disc[1] = {{&rim.curve, NULL, 1, 1, NULL}};
+    sw_model_loop_input holed[2] = {{rect.curves, NULL, 4, 1, NULL, NULL},
+                                    {&hole.curve, NULL, 1, 0, NULL, NULL}};
+    sw_model_loop_input disc[1] = {{&rim.curve, NULL, 1, 1, NULL, NULL}};
     sw_model m;
     sw_model_init(&m);
     sw_error err;

@@ -31,9 +31,9 @@ static size_t seams_between(double size, double gap, double curve_gap, double to
     shape_rect_init(&right, size / 2 + gap, size, 0, size);
     shape_rect_init(&whole, 0, 100 * size, 0, 100 * size);
     const double gaps[4] = {curve_gap, curve_gap, curve_gap, curve_gap};
-    sw_model_loop_input a[1] = {{left.curves, NULL, 4, 1, gaps}};
-    sw_model_loop_input b[1] = {{right.curves, NULL, 4, 1, gaps}};
-    sw_model_loop_input c[1] = {{whole.curves, NULL, 4, 1, NULL}};
+    sw_model_loop_input a[1] = {{left.curves, NULL, 4, 1, gaps, NULL}};
+    sw_model_loop_input b[1] = {{right.curves, NULL, 4, 1, gaps, NULL}};
+    sw_model_loop_input c[1] = {{whole.curves, NULL, 4, 1, NULL, NULL}};
     sw_model m;
     sw_model_init(&m);
     sw_error err;
@@ -263,8 +263,10 @@ static void test_a_cone_is_sewn_along_its_seam_line(void)
     size_t loop_start[3] = {0, disk, n}, surface_loops[3] = {0, 1, 2};
     uint32_t loop_surface[2] = {0, 1};
     uint8_t loop_outer[2] = {1, 1};
-    sw_seam_polylines poly = {uv, p, NULL, n, loop_start, loop_surface, loop_outer, 2,
-                              surface_loops, 2, 1e-4, 0, 0};
+    sw_seam_polylines poly = {.uv = uv, .p = p, .vertex_count = n, .loop_start = loop_start,
+                              .loop_surface = loop_surface, .loop_outer = loop_outer,
+                              .loop_count = 2, .surface_loops = surface_loops,
+                              .surface_count = 2, .tolerance = 1e-4};
     sw_seam_host h;
     sw_sew_counts counts = {0};
     sw_error err = {0};
@@ -327,7 +329,7 @@ static void test_trim_past_the_domain_is_put_on_it(void)
     shape_plane_init(&plane, 3, 2, 2, 1, 1);
     shape_rect wide;
     shape_rect_init(&wide, 0.2, 1.02, 0.1, 0.9);
-    sw_model_loop_input loop[1] = {{wide.curves, NULL, 4, 1, NULL}};
+    sw_model_loop_input loop[1] = {{wide.curves, NULL, 4, 1, NULL, NULL}};
     sw_model m;
     sw_model_init(&m);
     sw_error err;

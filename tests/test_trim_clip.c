@@ -73,7 +73,7 @@ static int loops_closed(const sw_trim_set *s)
 static void add_line(sw_trim_set *s, double x0, double y0, double x1, double y1)
 {
     static const double knots[4] = {0, 0, 1, 1};
-    sw_model_trim_curve c = {1, 2, malloc(sizeof knots), malloc(8 * sizeof(double)), 0, 0.0};
+    sw_model_trim_curve c = {1, 2, malloc(sizeof knots), malloc(8 * sizeof(double)), 0, 0.0, 0};
     memcpy(c.knots, knots, sizeof knots);
     const double ctrl[8] = {x0, y0, 0, 1, x1, y1, 0, 1};
     memcpy(c.ctrl, ctrl, sizeof ctrl);
@@ -89,7 +89,7 @@ static void add_circle(sw_trim_set *s, double cx, double cy, double r, int cw)
     const double h = sqrt(0.5);
     const double pts[9][3] = {{1, 0, 1}, {1, 1, h}, {0, 1, 1}, {-1, 1, h}, {-1, 0, 1},
                               {-1, -1, h}, {0, -1, 1}, {1, -1, h}, {1, 0, 1}};
-    sw_model_trim_curve c = {2, 9, malloc(sizeof knots), malloc(36 * sizeof(double)), 0, 0.0};
+    sw_model_trim_curve c = {2, 9, malloc(sizeof knots), malloc(36 * sizeof(double)), 0, 0.0, 0};
     memcpy(c.knots, knots, sizeof knots);
     for (int i = 0; i < 9; i++) {
         double y = cw ? -pts[i][1] : pts[i][1];
@@ -254,7 +254,8 @@ static void test_a_model_split_into_pieces(void)
     sw_nurbs_curve views[8];
     for (size_t i = 0; i < p.curve_count; i++)
         views[i] = sw_model_curve_view(&p.curves[i]);
-    const sw_model_loop_input loops[2] = {{views, NULL, 4, 1, NULL}, {views + 4, NULL, 1, 0, NULL}};
+    const sw_model_loop_input loops[2] = {{views, NULL, 4, 1, NULL, NULL},
+                                          {views + 4, NULL, 1, 0, NULL, NULL}};
     SW_CHECK(sw_model_begin_part(&m, "plate", NULL, &err) == SW_OK);
     SW_CHECK_MSG(sw_model_add_surface(&m, &plane, 0, loops, 2, &err) == SW_OK, "%s", err.message);
     sw_trim_set pieces[3] = {{0}};

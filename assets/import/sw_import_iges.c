@@ -141,7 +141,7 @@ static sw_status add_face(iges_reader *r, iges_face *f, sw_model *model)
     for (int l = 0; l < f->loop_count; l++) {
         const iges_loop *lp = &f->loops[l];
         in[l] = (sw_model_loop_input){views + at, lp->computed, (size_t)lp->curves.count,
-                                      lp->outer, gaps + at};
+                                      lp->outer, gaps + at, NULL};
         for (int c = 0; c < lp->curves.count; c++) {
             gaps[at] = lp->curves.items[c].gap * r->units_to_mm;
             views[at++] = iges_curve_view(&lp->curves.items[c]);

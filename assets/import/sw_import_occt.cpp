@@ -243,7 +243,7 @@ sw_status add_face(ImportContext *ctx, const FaceWork &w, size_t index)
             for (const TrimCurve &t : l.curves)
                 views[i].push_back({t.degree, t.count, t.knots.data(), t.ctrl.data()});
             inputs[i] = {views[i].data(), l.computed.data(), views[i].size(), l.outer,
-                         l.gaps.data()};
+                         l.gaps.data(), l.edges.data()};
         }
         sw_status status = sw_model_add_surface(ctx->model, &w.surface.view, w.reversed,
                                                 inputs.data(), inputs.size(), ctx->err);
@@ -302,10 +302,15 @@ sw_status add_part(ImportContext *ctx, const TopoDS_Shape &shape, const TopLoc_L
     TopLoc_Location total = placement * shape.Location();
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(shape.Located(TopLoc_Location()), TopAbs_FACE, faces);
+    TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+    TopExp::MapShapesAndAncestors(shape.Located(TopLoc_Location()), TopAbs_EDGE, TopAbs_FACE,
+                                  edge_faces);
     std::vector<FaceWork> work((size_t)faces.Extent());
-    for (int i = 1; i <= faces.Extent(); i++)
+    for (int i = 1; i <= faces.Extent(); i++) {
         prepare_face(ctx, TopoDS::Face(faces(i)), total.Transformation().IsNegative(),
                      &work[(size_t)i - 1]);
+        work[(size_t)i - 1].edge_faces = &edge_faces;
+    }
     /* The conversion is most of an import (a cylinder's p-curves are
      * approximated again on its B-spline); faces go in order whatever ran
      * at once, so the model is the same on any runner. */

@@ -16,6 +16,7 @@
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <TopoDS_Vertex.hxx>
@@ -67,12 +68,14 @@ std::string close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double f
     std::vector<TrimCurve> closed;
     std::vector<int> computed;
     std::vector<double> gaps;
+    std::vector<uint32_t> edges;
     size_t n = loop->curves.size();
     double same = same_uv(*loop);
     for (size_t i = 0; i < n; i++) {
         closed.push_back(std::move(loop->curves[i]));
         computed.push_back(loop->computed[i]);
         gaps.push_back(loop->gaps[i]);
+        edges.push_back(loop->edges[i]);
         const TrimCurve &a = closed.back(), &b = loop->curves[(i + 1) % n];
         const double *end = &a.ctrl[a.ctrl.size() - 4];
         const double *start = i + 1 < n ? &b.ctrl[0] : &closed.front().ctrl[0];
@@ -90,10 +93,12 @@ std::string close_gaps(Loop *loop, const Handle(Geom_Surface) &surface, double f
         closed.push_back(segment(end, start));
         computed.push_back(1);
         gaps.push_back(p.Distance(q));
+        edges.push_back(0);   /* no edge of the file's */
     }
     loop->curves = std::move(closed);
     loop->computed = std::move(computed);
     loop->gaps = std::move(gaps);
+    loop->edges = std::move(edges);
     return std::string();
 }
 
@@ -106,11 +111,27 @@ double end_reach(const TopoDS_Edge &edge, double edge_tolerance, int end)
     return v.IsNull() ? edge_tolerance : std::max(edge_tolerance, BRep_Tool::Tolerance(v));
 }
 
+/* The edge's id for the sewing where it bounds two faces or more (its index
+ * in edge_faces), else 0 (sw_model_trim_curve.edge). */
+uint32_t shared_edge(const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces,
+                     const TopoDS_Edge &edge)
+{
+    int index = edge_faces ? edge_faces->FindIndex(edge) : 0;
+    if (index <= 0)
+        return 0;
+    const TopTools_ListOfShape &faces = edge_faces->FindFromIndex(index);
+    for (TopTools_ListOfShape::Iterator it(faces); it.More(); it.Next())
+        if (!it.Value().IsSame(faces.First()))
+            return (uint32_t)index;
+    return 0;
+}
+
 /* The loop of one wire: each edge's p-curve on the converted face (the face
  * itself when conv is null), in wire order, reversed where the edge runs
  * against its curve. Returns why it failed, or "". */
 std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
                          const BRepBuilderAPI_NurbsConvert *conv, const TopoDS_Face &converted,
+                         const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces,
                          int computed, double floor_mm, Loop *loop, int *reprojected)
 {
     int edges_in_wire = 0, explored = 0;
@@ -146,6 +167,7 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
             std::max(BRep_Tool::Tolerance(edge),
                      projected ? pcurve_off(moved, converted, c, f, l) : BRep_Tool::Tolerance(moved));
         loop->gaps.push_back(edge_tolerance);
+        loop->edges.push_back(shared_edge(edge_faces, edge));
         for (int end = 0; end < 2; end++)
             loop->reach[end].push_back(
                 end_reach(edge, std::max(edge_tolerance, Precision::Confusion()), end));
@@ -276,8 +298,8 @@ static void convert_face_unguarded(FaceWork *w, double floor_mm)
         Loop loop;
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
-        w->why = loop_of_wire(wire, face, conv.get(), converted, computed, floor_mm, &loop,
-                              &w->reprojected);
+        w->why = loop_of_wire(wire, face, conv.get(), converted, w->edge_faces, computed, floor_mm,
+                              &loop, &w->reprojected);
         if (!w->why.empty())
             return;
         w->loops.push_back(std::move(loop));

@@ -15,6 +15,7 @@ extern "C" {
 }
 #include "sw_occt_bspline.h"
 
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS_Face.hxx>
 
 #include <string>
@@ -26,6 +27,7 @@ struct Loop {
     std::vector<TrimCurve> curves;
     std::vector<int> computed;
     std::vector<double> gaps;   /* per curve: its edge's tolerance (sw_model_trim_curve.gap) */
+    std::vector<uint32_t> edges; /* per curve: its shared edge (sw_model_trim_curve.edge) */
     /* per curve: how far its start and its end may stray in 3D from the
      * vertex there (the wider of the edge's and the vertex's tolerance) */
     std::vector<double> reach[2];
@@ -37,6 +39,9 @@ struct Loop {
  * (convert_face), added in order (add_face). */
 struct FaceWork {
     TopoDS_Face face, forward;
+    /* The part's edges and the faces each bounds (TopExp::MapShapesAndAncestors):
+     * an edge of two faces or more is shared, its id its index here */
+    const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces = nullptr;
     int reversed = 0;
     int missing = 0, file_gaps = 0;   /* p-curves the file lacked (made by ShapeFix) */
     Surface surface;

@@ -306,6 +306,7 @@ static sw_status stage_copy(staged *s, const sw_nurbs_surface *in, const sw_mode
             dst->degree = src->degree, dst->count = src->count;
             dst->computed = loops[l].computed ? loops[l].computed[c] != 0 : 0;
             dst->gap = loops[l].gaps && loops[l].gaps[c] > 0 ? loops[l].gaps[c] : 0.0;
+            dst->edge = loops[l].edges ? loops[l].edges[c] : 0;
             dst->knots = copy_doubles(src->knots, (size_t)(src->count + src->degree + 1));
             dst->ctrl = copy_doubles(src->ctrl, 4 * (size_t)src->count);
             if (!dst->knots || !dst->ctrl)

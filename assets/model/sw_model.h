@@ -45,6 +45,10 @@ typedef struct sw_model_trim_curve {
     double gap;        /* model units: how far the curve's image on the surface may lie
                           from the edge the file meant (its edge tolerance, or the fit's
                           distance from a model-space curve); 0 when the file says none */
+    uint32_t edge;     /* the file's edge this trim is a use of, where the part's topology
+                          shares that edge between faces: an id unique in the part (from
+                          1); 0 when not shared or not known. The sewing pairs a shared
+                          edge's trims with each other (sw_seam_flatten.h) */
 } sw_model_trim_curve;
 
 /* A closed loop of trimming curves, head to tail. Outer loops bound the

@@ -27,18 +27,20 @@ static sw_status add_with_loops(sw_model *to, const sw_model_surface *s,
     sw_nurbs_curve *views = calloc(count + 1, sizeof *views);
     int *computed = calloc(count + 1, sizeof *computed);
     double *gaps = calloc(count + 1, sizeof *gaps);
+    uint32_t *edges = calloc(count + 1, sizeof *edges);
     sw_status st = SW_OK;
-    if (!in || !views || !computed || !gaps)
+    if (!in || !views || !computed || !gaps || !edges)
         st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory copying a surface");
     for (size_t l = 0, k = 0; st == SW_OK && l < loop_count; l++) {
         in[l] = (sw_model_loop_input){.curves = views + k, .computed = computed + k,
                                       .curve_count = loops[l].curve_count, .outer = loops[l].outer,
-                                      .gaps = gaps + k};
+                                      .gaps = gaps + k, .edges = edges + k};
         for (size_t c = 0; c < loops[l].curve_count; c++, k++) {
             const sw_model_trim_curve *curve = &curves[loops[l].first_curve + c];
             views[k] = sw_model_curve_view(curve);
             computed[k] = curve->computed;
             gaps[k] = curve->gap;
+            edges[k] = curve->edge;
         }
     }
     if (st == SW_OK) {
@@ -51,6 +53,7 @@ static sw_status add_with_loops(sw_model *to, const sw_model_surface *s,
     free(views);
     free(computed);
     free(gaps);
+    free(edges);
     return st;
 }
 

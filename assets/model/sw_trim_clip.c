@@ -86,7 +86,7 @@ static sw_status line_curve(const double a[2], const double b[2], sw_model_trim_
 {
     const double knots[4] = {0, 0, 1, 1};
     const double ctrl[8] = {a[0], a[1], 0, 1, b[0], b[1], 0, 1};
-    const sw_model_trim_curve line = {1, 2, (double *)knots, (double *)ctrl, 0, 0.0};
+    const sw_model_trim_curve line = {1, 2, (double *)knots, (double *)ctrl, 0, 0.0, 0};
     return copy_curve(&line, out, err);
 }
 
@@ -203,7 +203,8 @@ static void insert_once(int p, int n, const double *knots, const double *h, doub
 static sw_status make_piece(const sw_model_trim_curve *c, const double *h, int first, int count,
                             const double *knots, sw_model_trim_curve *out, sw_error *err)
 {
-    sw_model_trim_curve piece = {c->degree, count, (double *)knots, NULL, c->computed, c->gap};
+    sw_model_trim_curve piece = {c->degree, count, (double *)knots, NULL, c->computed, c->gap,
+                                 c->edge};
     double *ctrl = malloc((size_t)count * 4 * sizeof *ctrl);
     if (!ctrl)
         return oom(err);

@@ -7,6 +7,7 @@
 #define SW_TRIM_LOOP_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "sw_nurbs.h"
 
@@ -18,6 +19,7 @@ typedef struct sw_model_loop_input {
     size_t curve_count;
     int outer;
     const double *gaps;      /* per curve, may be NULL (all 0): sw_model_trim_curve.gap */
+    const uint32_t *edges;   /* per curve, may be NULL (all 0): sw_model_trim_curve.edge */
 } sw_model_loop_input;
 
 #endif

@@ -38,6 +38,7 @@ typedef struct vbuf {
     double *uv, *p;
     uint8_t *pin;      /* 1: a curve's start (a corner of the loop): never simplified away */
     float *gap;        /* the gap of the curve(s) the vertex lies on (sw_seam_polylines.gap) */
+    uint32_t *edge;    /* the shared edge of the segment from the vertex on (.edge) */
     size_t count, capacity;
 } vbuf;
 
@@ -48,6 +49,8 @@ typedef struct flat_ctx {
     size_t unproven;
     size_t clamped;    /* points moved onto the domain's border */
     float gap;         /* of the curve being flattened */
+    uint32_t edge;     /* of the curve being flattened, made unique in the model */
+    const uint32_t *part_edges;   /* per part: the ids before its own (NULL: none) */
     vbuf *buf;
     sw_error *err;
 } flat_ctx;
@@ -65,6 +68,7 @@ static sw_status vbuf_push(flat_ctx *c, double u, double v)
     vbuf *b = c->buf;
     if (b->count && b->uv[2 * b->count - 2] == u && b->uv[2 * b->count - 1] == v) {
         b->gap[b->count - 1] = fmaxf(b->gap[b->count - 1], c->gap);
+        b->edge[b->count - 1] = c->edge;   /* the segment from it is this curve's */
         return SW_OK; /* a degenerate piece: same point twice */
     }
     if (b->count == b->capacity) {
@@ -79,14 +83,18 @@ static sw_status vbuf_push(flat_ctx *c, double u, double v)
         if (pin)
             b->pin = pin;
         float *gap = pin ? realloc(b->gap, cap * sizeof *gap) : NULL;
-        if (!gap)
+        if (gap)
+            b->gap = gap;
+        uint32_t *edge = gap ? realloc(b->edge, cap * sizeof *edge) : NULL;
+        if (!edge)
             return sw_error_set(c->err, SW_ERR_NO_MEMORY, "flattening trims: out of memory");
-        b->gap = gap;
+        b->edge = edge;
         b->capacity = cap;
     }
     b->uv[2 * b->count] = u, b->uv[2 * b->count + 1] = v;
     b->pin[b->count] = 0;
     b->gap[b->count] = c->gap;
+    b->edge[b->count] = c->edge;
     sw_seam_qtree_point(c->qt, u, v, b->p + 3 * b->count);
     b->count++;
     return SW_OK;
@@ -250,6 +258,7 @@ static sw_status simplify_loop(flat_ctx *c, size_t first)
         double *uv = c->buf->uv + 2 * first, *p = c->buf->p + 3 * first;
         uint8_t *pin = c->buf->pin + first;
         float *gap = c->buf->gap + first;
+        uint32_t *edge = c->buf->edge + first;
         for (size_t k = 0; k < kept; k++) {
             /* A kept vertex stands for the dropped ones after it: their gaps too. */
             float g = gap[keep[k]];
@@ -259,6 +268,7 @@ static sw_status simplify_loop(flat_ctx *c, size_t first)
             memmove(p + 3 * k, p + 3 * keep[k], 3 * sizeof *p);
             pin[k] = pin[keep[k]];
             gap[k] = g;
+            edge[k] = edge[keep[k]];   /* curve starts are kept: one curve up to the next */
         }
         c->buf->count = first + kept;
     }
@@ -271,7 +281,7 @@ static sw_status simplify_loop(flat_ctx *c, size_t first)
  * point (to rounding): a real gap between two curves keeps both ends and an
  * edge across it. */
 static sw_status flatten_loop(flat_ctx *c, const sw_nurbs_curve *curves, const double *gaps,
-                              size_t count)
+                              const uint32_t *edges, size_t count)
 {
     size_t first = c->buf->count;
     for (size_t k = 0; k < count; k++) {
@@ -282,8 +292,11 @@ static sw_status flatten_loop(flat_ctx *c, const sw_nurbs_curve *curves, const d
             skip = dist3(q, c->buf->p + 3 * (c->buf->count - 1)) <= 1e-6 * c->tol;
         }
         c->gap = gaps ? (float)gaps[k] : 0.0f;
-        if (skip)   /* the previous curve's end is this one's start too */
+        c->edge = edges ? edges[k] : 0;
+        if (skip) {  /* the previous curve's end is this one's start too */
             c->buf->gap[c->buf->count - 1] = fmaxf(c->buf->gap[c->buf->count - 1], c->gap);
+            c->buf->edge[c->buf->count - 1] = c->edge;
+        }
         sw_status st = flatten_curve(c, &curves[k], skip);
         if (st != SW_OK) {
             sw_error_prefix(c->err, "curve %zu", k);
@@ -336,6 +349,7 @@ static void drop_vertex(vbuf *b, size_t k)
     memmove(b->p + 3 * k, b->p + 3 * (k + 1), 3 * after * sizeof *b->p);
     memmove(b->pin + k, b->pin + k + 1, after * sizeof *b->pin);
     memmove(b->gap + k, b->gap + k + 1, after * sizeof *b->gap);
+    memmove(b->edge + k, b->edge + k + 1, after * sizeof *b->edge);
     b->count--;
 }
 
@@ -368,6 +382,7 @@ static void unfold_loop(flat_ctx *c, size_t first)
         b->uv[2 * i1 + 1] = a[1] + t * (a1[1] - a[1]);
         sw_seam_qtree_point(c->qt, b->uv[2 * i1], b->uv[2 * i1 + 1], b->p + 3 * i1);
         b->gap[i1] = fmaxf(b->gap[i1], b->gap[i2]);
+        b->edge[i1] = b->edge[i2];   /* its segment now runs on along i2's */
         b->pin[i1] = 1;
         drop_vertex(b, i2);
         if (i2 < i1)
@@ -378,13 +393,13 @@ static void unfold_loop(flat_ctx *c, size_t first)
 /* One loop: flattened (retried with forced halvings if it came out with
  * fewer than 3 vertices: a loop of one or two short curves), simplified. */
 static sw_status one_loop(flat_ctx *c, const sw_nurbs_curve *curves, const double *gaps,
-                          size_t count)
+                          const uint32_t *edges, size_t count)
 {
     size_t first = c->buf->count;
     sw_status st = SW_OK;
     for (c->min_depth = 0; st == SW_OK && c->min_depth <= 4; c->min_depth += 2) {
         c->buf->count = first;
-        st = flatten_loop(c, curves, gaps, count);
+        st = flatten_loop(c, curves, gaps, edges, count);
         if (c->buf->count - first >= 3)
             break;
     }
@@ -407,6 +422,7 @@ void sw_seam_polylines_free(sw_seam_polylines *poly)
     free(poly->uv);
     free(poly->p);
     free(poly->gap);
+    free(poly->edge);
     free(poly->loop_start);
     free(poly->loop_surface);
     free(poly->loop_outer);
@@ -444,6 +460,7 @@ static sw_status flatten_surface(const sw_model *model, size_t s, flat_ctx *c,
     rect_loop_make(&rect, c->qt->domain);
     sw_nurbs_curve views[64], *curves = views;
     double view_gaps[64], *gaps = view_gaps;
+    uint32_t view_edges[64], *edges = view_edges;
     sw_status st = SW_OK;
     for (size_t l = 0; l < loops && st == SW_OK; l++) {
         const sw_model_loop *ml = surf->loop_count ? &model->loops[surf->first_loop + l] : NULL;
@@ -451,24 +468,30 @@ static sw_status flatten_surface(const sw_model *model, size_t s, flat_ctx *c,
         if (ml && count > 64) {
             curves = malloc(count * sizeof *curves);
             gaps = malloc(count * sizeof *gaps);
-            if (!curves || !gaps) {
+            edges = malloc(count * sizeof *edges);
+            if (!curves || !gaps || !edges) {
                 free(curves);
                 free(gaps);
+                free(edges);
                 return sw_error_set(c->err, SW_ERR_NO_MEMORY, "flattening trims: out of memory");
             }
         }
         for (size_t k = 0; ml && k < count; k++) {
             curves[k] = sw_model_curve_view(&model->curves[ml->first_curve + k]);
             gaps[k] = model->curves[ml->first_curve + k].gap;
+            uint32_t e = model->curves[ml->first_curve + k].edge;
+            edges[k] = e && c->part_edges ? c->part_edges[surf->part] + e : 0;
         }
         st = reserve_loop(out, loop_capacity, c->err);
         if (st == SW_OK)
-            st = one_loop(c, ml ? curves : rect.curves, ml ? gaps : NULL, count);
+            st = one_loop(c, ml ? curves : rect.curves, ml ? gaps : NULL, ml ? edges : NULL,
+                          count);
         if (curves != views) {
             free(curves);
             free(gaps);
+            free(edges);
         }
-        curves = views, gaps = view_gaps;
+        curves = views, gaps = view_gaps, edges = view_edges;
         if (st != SW_OK) {
             sw_error_prefix(c->err, "loop %zu", l);
             break;
@@ -478,6 +501,37 @@ static sw_status flatten_surface(const sw_model *model, size_t s, flat_ctx *c,
         out->loop_start[++out->loop_count] = c->buf->count;
     }
     return st;
+}
+
+/* Per part, the number of shared-edge ids of the parts before it, so that
+ * part p's edge e is part_edges[p] + e across the model (a part placed
+ * twice is two parts); NULL when the model names none, or when they pass
+ * 32 bits or memory runs out (then edges are not told apart). */
+static uint32_t *model_edge_bases(const sw_model *model)
+{
+    uint32_t *base = calloc(model->part_count + 1, sizeof *base);
+    if (!base)
+        return NULL;
+    uint64_t total = 0;
+    for (size_t p = 0; p < model->part_count; p++) {
+        base[p] = (uint32_t)total;
+        const sw_model_part *part = &model->parts[p];
+        uint32_t most = 0;
+        for (size_t s = part->first_surface; s < part->first_surface + part->surface_count; s++) {
+            const sw_model_surface *surf = &model->surfaces[s];
+            for (size_t l = surf->first_loop; l < surf->first_loop + surf->loop_count; l++)
+                for (size_t k = 0; k < model->loops[l].curve_count; k++) {
+                    uint32_t e = model->curves[model->loops[l].first_curve + k].edge;
+                    most = e > most ? e : most;
+                }
+        }
+        total += most;
+    }
+    if (total == 0 || total >= UINT32_MAX) {
+        free(base);
+        return NULL;
+    }
+    return base;
 }
 
 sw_status sw_seam_flatten_model(const sw_model *model, double tolerance, sw_seam_polylines *out,
@@ -500,7 +554,8 @@ sw_status sw_seam_flatten_model(const sw_model *model, double tolerance, sw_seam
                                       : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
     if (st == SW_OK)
         out->loop_start[0] = 0;
-    flat_ctx c = {.tol = tolerance / 2, .buf = &buf, .err = err};
+    uint32_t *part_edges = st == SW_OK ? model_edge_bases(model) : NULL;
+    flat_ctx c = {.tol = tolerance / 2, .part_edges = part_edges, .buf = &buf, .err = err};
     for (size_t s = 0; st == SW_OK && s < model->surface_count; s++) {
         out->surface_loops[s] = out->loop_count;
         sw_seam_qtree qt;
@@ -515,15 +570,18 @@ sw_status sw_seam_flatten_model(const sw_model *model, double tolerance, sw_seam
             sw_error_prefix(err, "surface %zu", s);
     }
     free(buf.pin);
+    free(part_edges);
     if (st != SW_OK) {
         free(buf.uv);
         free(buf.p);
         free(buf.gap);
+        free(buf.edge);
         sw_seam_polylines_free(out);
         return st;
     }
     out->surface_loops[model->surface_count] = out->loop_count;
     out->uv = buf.uv, out->p = buf.p, out->gap = buf.gap, out->vertex_count = buf.count;
+    out->edge = buf.edge;
     out->unproven = c.unproven;
     out->clamped = c.clamped;
     return SW_OK;

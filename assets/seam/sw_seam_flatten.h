@@ -40,6 +40,11 @@ typedef struct sw_seam_polylines {
                                lets its border stray from the edge it meant (the largest
                                sw_model_trim_curve.gap of the curves it stands for); the
                                sewing widens its tolerance by it */
+    uint32_t *edge;         /* owned, may be NULL (all 0): per vertex, the file's shared
+                               edge the segment from it to the next is a use of
+                               (sw_model_trim_curve.edge, made unique in the model); 0 when
+                               not known. The sewing sews a shared edge's trims only onto
+                               that edge's other trims (or onto unknown ones) */
     size_t vertex_count;
     size_t *loop_start;     /* owned: loop_count + 1 */
     uint32_t *loop_surface; /* owned: per loop */

@@ -13,7 +13,10 @@
  *     only where one of the vertex's edges runs within 60 degrees of the
  *     target edge (edges shorter than twice the tolerance have no direction
  *     to trust): near a junction of several loops every vertex is within the
- *     tolerance of every edge leaving it;
+ *     tolerance of every edge leaving it. Where the file's topology names
+ *     the shared edge both are uses of (sw_seam_polylines.edge), only
+ *     projections onto the same edge count: a sliver narrower than the
+ *     tolerance has each long side sewn to its own neighbour;
  *  2. per pair of loops, sewing intervals grow from the best projections
  *     along both polylines at once, one vertex of either side at a time
  *     (whichever comes first along them), a vertex joining only with a

@@ -204,6 +204,23 @@ static int directions_agree(const sew_state *s, uint32_t v, const double d[3], d
     return 0;
 }
 
+/* Does the file's topology let vertex v sew onto edge e? Where both are
+ * uses of shared edges (sw_seam_polylines.edge), only of the same one: v
+ * lies on the edges of its segments to either side (two at a corner). The
+ * two long sides of a sliver face narrower than the tolerance each belong
+ * with their own neighbour; by position alone either side was sewn to both
+ * (the Fly Gemini DIN mount), and the sliver's loop zigzagged between them. */
+static int edges_agree(const sew_state *s, uint32_t v, uint32_t e)
+{
+    const sw_seam_polylines *poly = s->poly;
+    if (!poly->edge || poly->edge[e] == 0)
+        return 1;
+    uint32_t l = s->vertex_loop[v];
+    uint32_t prev = v > poly->loop_start[l] ? v - 1 : (uint32_t)poly->loop_start[l + 1] - 1;
+    uint32_t out = poly->edge[v], in = poly->edge[prev];
+    return out == 0 || in == 0 || out == poly->edge[e] || in == poly->edge[e];
+}
+
 /* Projects vertex v onto edge e; keeps it within the tolerance, or within
  * both sides' gaps where they add up to more: each border lies within its
  * gap of the edge the file meant (OpenCASCADE's sewing takes the edges' own
@@ -236,7 +253,7 @@ static int project(sew_state *s, uint32_t v, uint32_t e)
         dist2 += (p[i] - a[i] - t * d[i]) * (p[i] - a[i] - t * d[i]);
     if (!(dist2 <= reach * reach))
         return 0;
-    if (!directions_agree(s, v, d, len))
+    if (!directions_agree(s, v, d, len) || !edges_agree(s, v, e))
         return 0;
     /* A foot this close to an end is that end: no sliver edges. */
     if (t * len <= snap)
