@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Flattening (sw_seam_flatten.h): a trimmed rational bump's polylines
- * within the tolerance of its exact trims; and folds: a loop whose (u, v)
+ * within the tolerance of its exact trims; folds: a loop whose (u, v)
  * crosses itself at a corner, by a p-curve overshooting it or a hair of a
- * closing trim, comes out not crossing itself, its corners kept. */
+ * closing trim, comes out not crossing itself, its corners kept; and a
+ * loop starting where the last one ended keeps its start, and each its
+ * segments' shared edges. */
 #include <math.h>
 #include <string.h>
 
@@ -114,10 +116,59 @@ static void test_a_hair_at_a_triangle_corner_is_cut_off(void)
     sw_model_free(&m);
 }
 
+/* ---- loops after loops -------------------------------------------------- */
+
+/* Two surfaces whose loops meet in (u, v): the first ends at (0, 0), where
+ * the second starts. The second keeps its start, and the first its last
+ * segment's edge: a point was taken for the same point twice across the
+ * two loops, the second lost its start and the first took its edge (a
+ * SO-100 base's two coplanar faces came out unsewn along their edge). */
+static void test_a_loop_starting_where_the_last_ended_keeps_its_start(void)
+{
+    static shape_plane plane;
+    shape_plane_init(&plane, 1, 1, 1, 2, 2);
+    static const double square[2][4][2] = {{{1, 0}, {1, 1}, {0, 1}, {0, 0}},
+                                           {{0, 0}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}}};
+    static double knots[4] = {0, 0, 1, 1}, ctrl[2][4][8];
+    sw_nurbs_curve curves[2][4];
+    uint32_t edges[2][4] = {{11, 12, 13, 14}, {21, 22, 23, 24}};
+    sw_model m;
+    sw_model_init(&m);
+    sw_error err;
+    for (int l = 0; l < 2; l++) {
+        for (int k = 0; k < 4; k++) {
+            const double *a = square[l][k], *b = square[l][(k + 1) % 4];
+            double c[8] = {a[0], a[1], 0, 1, b[0], b[1], 0, 1};
+            memcpy(ctrl[l][k], c, sizeof c);
+            curves[l][k] = (sw_nurbs_curve){1, 2, knots, ctrl[l][k]};
+        }
+        sw_model_loop_input loop = {curves[l], NULL, 4, 1, NULL, edges[l]};
+        SW_CHECK(sw_model_add_surface(&m, &plane.surface, 0, &loop, 1, &err) == SW_OK);
+    }
+    sw_seam_polylines pl;
+    SW_CHECK_MSG(sw_seam_flatten_model(&m, 1e-5, &pl, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pl.loop_count == 2 && pl.edge);
+    for (size_t l = 0; l < pl.loop_count && l < 2 && pl.edge; l++) {
+        size_t first = pl.loop_start[l], n = pl.loop_start[l + 1] - first;
+        SW_CHECK_MSG(n == 4, "loop %zu: %zu vertices", l, n);
+        for (size_t k = 0; k < n && k < 4; k++) {
+            SW_CHECK_MSG(pl.uv[2 * (first + k)] == square[l][k][0] &&
+                             pl.uv[2 * (first + k) + 1] == square[l][k][1],
+                         "loop %zu vertex %zu at (%g, %g)", l, k, pl.uv[2 * (first + k)],
+                         pl.uv[2 * (first + k) + 1]);
+            SW_CHECK_MSG(pl.edge[first + k] == edges[l][k], "loop %zu segment %zu: edge %u",
+                         l, k, pl.edge[first + k]);
+        }
+    }
+    sw_seam_polylines_free(&pl);
+    sw_model_free(&m);
+}
+
 int main(void)
 {
     SW_RUN(test_trimmed_bump_polylines_within_tolerance);
     SW_RUN(test_a_fold_at_a_corner_is_cut_off);
     SW_RUN(test_a_hair_at_a_triangle_corner_is_cut_off);
+    SW_RUN(test_a_loop_starting_where_the_last_ended_keeps_its_start);
     return sw_test_finish();
 }

@@ -50,6 +50,7 @@ typedef struct flat_ctx {
     size_t clamped;    /* points moved onto the domain's border */
     float gap;         /* of the curve being flattened */
     uint32_t edge;     /* of the curve being flattened, made unique in the model */
+    size_t loop_first; /* the buffer index the loop being flattened starts at */
     const uint32_t *part_edges;   /* per part: the ids before its own (NULL: none) */
     vbuf *buf;
     sw_error *err;
@@ -66,7 +67,9 @@ static sw_status vbuf_push(flat_ctx *c, double u, double v)
     c->clamped += cu != u || cv != v;
     u = cu, v = cv;
     vbuf *b = c->buf;
-    if (b->count && b->uv[2 * b->count - 2] == u && b->uv[2 * b->count - 1] == v) {
+    /* Only within the loop: the last loop may end where this one starts. */
+    if (b->count > c->loop_first && b->uv[2 * b->count - 2] == u &&
+        b->uv[2 * b->count - 1] == v) {
         b->gap[b->count - 1] = fmaxf(b->gap[b->count - 1], c->gap);
         b->edge[b->count - 1] = c->edge;   /* the segment from it is this curve's */
         return SW_OK; /* a degenerate piece: same point twice */
@@ -284,6 +287,7 @@ static sw_status flatten_loop(flat_ctx *c, const sw_nurbs_curve *curves, const d
                               const uint32_t *edges, size_t count)
 {
     size_t first = c->buf->count;
+    c->loop_first = first;
     for (size_t k = 0; k < count; k++) {
         int skip = 0;
         if (k > 0) {
@@ -509,23 +513,25 @@ static sw_status flatten_surface(const sw_model *model, size_t s, flat_ctx *c,
  * 32 bits or memory runs out (then edges are not told apart). */
 static uint32_t *model_edge_bases(const sw_model *model)
 {
-    uint32_t *base = calloc(model->part_count + 1, sizeof *base);
+    size_t parts = model->part_count;
+    for (size_t s = 0; s < model->surface_count; s++)
+        parts = model->surfaces[s].part + 1 > parts ? model->surfaces[s].part + 1 : parts;
+    uint32_t *base = calloc(parts + 1, sizeof *base);
     if (!base)
         return NULL;
+    for (size_t s = 0; s < model->surface_count; s++) {
+        const sw_model_surface *surf = &model->surfaces[s];
+        for (size_t l = surf->first_loop; l < surf->first_loop + surf->loop_count; l++)
+            for (size_t k = 0; k < model->loops[l].curve_count; k++) {
+                uint32_t e = model->curves[model->loops[l].first_curve + k].edge;
+                base[surf->part + 1] = e > base[surf->part + 1] ? e : base[surf->part + 1];
+            }
+    }
+    /* each part's largest id, one place on: summed, the ids before each */
     uint64_t total = 0;
-    for (size_t p = 0; p < model->part_count; p++) {
-        base[p] = (uint32_t)total;
-        const sw_model_part *part = &model->parts[p];
-        uint32_t most = 0;
-        for (size_t s = part->first_surface; s < part->first_surface + part->surface_count; s++) {
-            const sw_model_surface *surf = &model->surfaces[s];
-            for (size_t l = surf->first_loop; l < surf->first_loop + surf->loop_count; l++)
-                for (size_t k = 0; k < model->loops[l].curve_count; k++) {
-                    uint32_t e = model->curves[model->loops[l].first_curve + k].edge;
-                    most = e > most ? e : most;
-                }
-        }
-        total += most;
+    for (size_t p = 0; p <= parts; p++) {
+        total += base[p];
+        base[p] = (uint32_t)(total < UINT32_MAX ? total : 0);
     }
     if (total == 0 || total >= UINT32_MAX) {
         free(base);
