@@ -9,7 +9,7 @@
  *   on a sphere's lune, a meridian's p-curve drifting from the pole.
  * - sw_occt::converted_moving (assets/import/sw_occt_convert.h): a torus
  *   band over a whole turn that OCCT cannot convert, converted a period
- *   along.
+ *   along, its copied edges naming the face's own.
  * - sw_occt::unrolled_over_period (assets/import/sw_occt_unroll.h): a
  *   thread's helical band a hair over one turn, put on a surface of its
  *   own range, converted with its trims within it and on its edges.
@@ -55,7 +55,9 @@
 #include <GCE2d_MakeSegment.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <TopExp.hxx>
+#include <TopTools_DataMapOfShapeShape.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <map>
 
 /* The cylinder's side and an edge of it that is not its seam (a circle). */
@@ -259,13 +261,22 @@ static void test_a_face_over_a_period_converts_moved_along(void)
     TopoDS_Face moved = face;
     bool was_moved = false;
     std::unique_ptr<BRepBuilderAPI_NurbsConvert> conv;
+    TopTools_DataMapOfShapeShape original_of;
     try {
-        conv = sw_occt::converted_moving(&moved, &was_moved);
+        conv = sw_occt::converted_moving(&moved, &was_moved, &original_of);
     } catch (const Standard_Failure &e) {
         SW_CHECK_MSG(false, "not converted moved either: %s", e.GetMessageString());
         return;
     }
     SW_CHECK(was_moved && !moved.IsSame(face));
+    /* The copy's edges name the face's own, for the sewing. */
+    TopTools_IndexedMapOfShape own;
+    TopExp::MapShapes(face, TopAbs_EDGE, own);
+    int named = 0, copies = 0;
+    for (TopExp_Explorer e(moved, TopAbs_EDGE); e.More(); e.Next(), copies++)
+        named += original_of.IsBound(e.Current()) && own.Contains(original_of.Find(e.Current()));
+    SW_CHECK_MSG(copies > 0 && named == copies, "%d of %d copied edges name the face's own",
+                 named, copies);
     TopoDS_Face converted = TopoDS::Face(conv->Shape());
     Handle(Geom_Surface) s = BRep_Tool::Surface(converted);
     int off = 0, samples = 0;

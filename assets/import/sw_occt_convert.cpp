@@ -11,6 +11,7 @@
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <gp_Vec2d.hxx>
 
@@ -28,9 +29,19 @@ static Handle(Geom2d_Curve) moved_copy(const TopoDS_Edge &edge, const TopoDS_Fac
     return m;
 }
 
-TopoDS_Face moved_face(const TopoDS_Face &face, double du, double dv)
+TopoDS_Face moved_face(const TopoDS_Face &face, double du, double dv,
+                       TopTools_DataMapOfShapeShape *original_of)
 {
-    TopoDS_Face copy = TopoDS::Face(BRepBuilderAPI_Copy(face).Shape());
+    BRepBuilderAPI_Copy copier(face);
+    TopoDS_Face copy = TopoDS::Face(copier.Shape());
+    if (original_of) {
+        TopTools_IndexedMapOfShape originals;
+        TopExp::MapShapes(face, TopAbs_EDGE, originals);
+        for (int i = 1; i <= originals.Extent(); i++)
+            for (TopTools_ListOfShape::Iterator it(copier.Modified(originals(i))); it.More();
+                 it.Next())
+                original_of->Bind(it.Value(), originals(i));
+    }
     BRep_Builder builder;
     TopTools_IndexedMapOfShape edges;
     TopExp::MapShapes(copy, TopAbs_EDGE, edges);
@@ -51,7 +62,8 @@ TopoDS_Face moved_face(const TopoDS_Face &face, double du, double dv)
     return copy;
 }
 
-std::unique_ptr<BRepBuilderAPI_NurbsConvert> converted_moving(TopoDS_Face *face, bool *moved)
+std::unique_ptr<BRepBuilderAPI_NurbsConvert> converted_moving(
+    TopoDS_Face *face, bool *moved, TopTools_DataMapOfShapeShape *original_of)
 {
     *moved = false;
     try {
@@ -67,7 +79,9 @@ std::unique_ptr<BRepBuilderAPI_NurbsConvert> converted_moving(TopoDS_Face *face,
                 if (du == 0 && dv == 0)
                     continue;
                 try {
-                    TopoDS_Face m = moved_face(*face, du, dv);
+                    if (original_of)
+                        original_of->Clear();
+                    TopoDS_Face m = moved_face(*face, du, dv, original_of);
                     auto conv = std::make_unique<BRepBuilderAPI_NurbsConvert>(m, Standard_True);
                     *face = m, *moved = true;
                     return conv;

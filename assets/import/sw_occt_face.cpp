@@ -111,11 +111,24 @@ double end_reach(const TopoDS_Edge &edge, double edge_tolerance, int end)
     return v.IsNull() ? edge_tolerance : std::max(edge_tolerance, BRep_Tool::Tolerance(v));
 }
 
-/* The edge's id for the sewing where it bounds two faces or more (its index
- * in edge_faces), else 0 (sw_model_trim_curve.edge). */
-uint32_t shared_edge(const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces,
-                     const TopoDS_Edge &edge)
+/* The file's edges, for naming a face's edges for the sewing. */
+struct EdgeNames {
+    const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces;
+    const TopTools_DataMapOfShapeShape *original_of;   /* a moved copy's edges, or null */
+};
+
+/* The edge's id for the sewing (its index in edge_faces) where it bounds
+ * two faces or more, or one face on both sides (a closed face's seam: left
+ * unnamed, its trims were sewn onto anything near, and two solids a few
+ * micrometres apart were sewn to each other through them), else 0
+ * (sw_model_trim_curve.edge): a face the file does not join to others is
+ * sewn by position. */
+uint32_t shared_edge(const EdgeNames &names, const TopoDS_Edge &used)
 {
+    const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces = names.edge_faces;
+    const TopoDS_Edge &edge = names.original_of && names.original_of->IsBound(used)
+                                  ? TopoDS::Edge(names.original_of->Find(used))
+                                  : used;
     int index = edge_faces ? edge_faces->FindIndex(edge) : 0;
     if (index <= 0)
         return 0;
@@ -123,7 +136,7 @@ uint32_t shared_edge(const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces
     for (TopTools_ListOfShape::Iterator it(faces); it.More(); it.Next())
         if (!it.Value().IsSame(faces.First()))
             return (uint32_t)index;
-    return 0;
+    return BRep_Tool::IsClosed(edge, TopoDS::Face(faces.First())) ? (uint32_t)index : 0;
 }
 
 /* The loop of one wire: each edge's p-curve on the converted face (the face
@@ -131,8 +144,8 @@ uint32_t shared_edge(const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces
  * against its curve. Returns why it failed, or "". */
 std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
                          const BRepBuilderAPI_NurbsConvert *conv, const TopoDS_Face &converted,
-                         const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces,
-                         int computed, double floor_mm, Loop *loop, int *reprojected)
+                         const EdgeNames &names, int computed, double floor_mm, Loop *loop,
+                         int *reprojected)
 {
     int edges_in_wire = 0, explored = 0;
     for (TopoDS_Iterator it(wire); it.More(); it.Next())
@@ -167,7 +180,7 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
             std::max(BRep_Tool::Tolerance(edge),
                      projected ? pcurve_off(moved, converted, c, f, l) : BRep_Tool::Tolerance(moved));
         loop->gaps.push_back(edge_tolerance);
-        loop->edges.push_back(shared_edge(edge_faces, edge));
+        loop->edges.push_back(shared_edge(names, edge));
         for (int end = 0; end < 2; end++)
             loop->reach[end].push_back(
                 end_reach(edge, std::max(edge_tolerance, Precision::Confusion()), end));
@@ -286,8 +299,9 @@ static void convert_face_unguarded(FaceWork *w, double floor_mm)
     /* An unrolled face is on its B-spline already, with its own p-curves:
      * the conversion would approximate them again. */
     std::unique_ptr<BRepBuilderAPI_NurbsConvert> conv;
+    TopTools_DataMapOfShapeShape original_of;   /* a moved copy's edges: the file's */
     if (!w->unrolled)
-        conv = converted_moving(&face, &moved);
+        conv = converted_moving(&face, &moved, &original_of);
     w->moved = moved;
     TopoDS_Face converted = conv ? TopoDS::Face(conv->Shape().Oriented(TopAbs_FORWARD)) : face;
     fill_surface(bspline_surface_of(converted), &w->surface);
@@ -298,8 +312,9 @@ static void convert_face_unguarded(FaceWork *w, double floor_mm)
         Loop loop;
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
-        w->why = loop_of_wire(wire, face, conv.get(), converted, w->edge_faces, computed, floor_mm,
-                              &loop, &w->reprojected);
+        w->why = loop_of_wire(wire, face, conv.get(), converted,
+                              {w->edge_faces, moved ? &original_of : nullptr}, computed,
+                              floor_mm, &loop, &w->reprojected);
         if (!w->why.empty())
             return;
         w->loops.push_back(std::move(loop));
