@@ -40,7 +40,7 @@ struct Loop {
 struct FaceWork {
     TopoDS_Face face, forward;
     /* The part's edges and the faces each bounds (TopExp::MapShapesAndAncestors):
-     * an edge of two faces or more is shared, its id its index here */
+     * an edge of two faces or more, or a seam, is named by its index here */
     const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces = nullptr;
     int reversed = 0;
     int missing = 0, file_gaps = 0;   /* p-curves the file lacked (made by ShapeFix) */

@@ -20,6 +20,7 @@
 #include <TopoDS_Iterator.hxx>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sw_occt {
 
