@@ -7,6 +7,7 @@
 #include <Geom2d_TrimmedCurve.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_Plane.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -118,6 +119,13 @@ void fill_surface(const Handle(Geom_BSplineSurface) &b, Surface *out)
     out->view.knots_u = out->knots_u.data();
     out->view.knots_v = out->knots_v.data();
     out->view.ctrl = out->ctrl.data();
+}
+
+Handle(Geom_Surface) basis_surface(const Handle(Geom_Surface) &s)
+{
+    Handle(Geom_RectangularTrimmedSurface) trimmed =
+        Handle(Geom_RectangularTrimmedSurface)::DownCast(s);
+    return trimmed.IsNull() ? s : trimmed->BasisSurface();
 }
 
 void trims_box(const std::vector<const TrimCurve *> &curves, double box[4])

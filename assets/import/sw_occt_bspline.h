@@ -37,6 +37,10 @@ Handle(Geom2d_BSplineCurve) clamped_pcurve(const Handle(Geom2d_Curve) &curve, do
                                            double last);
 TrimCurve trim_curve_of(const Handle(Geom2d_BSplineCurve) &b);
 
+/* The surface a rectangular trimmed surface trims, or s itself: where its
+ * periods are told. */
+Handle(Geom_Surface) basis_surface(const Handle(Geom_Surface) &s);
+
 /* The face's surface (its location applied) as a clamped B-spline copy. */
 Handle(Geom_BSplineSurface) bspline_surface_of(const TopoDS_Face &face);
 void fill_surface(const Handle(Geom_BSplineSurface) &b, Surface *out);

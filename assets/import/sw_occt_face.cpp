@@ -11,7 +11,6 @@
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_Surface.hxx>
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
@@ -114,7 +113,7 @@ double end_reach(const TopoDS_Edge &edge, double edge_tolerance, int end)
 /* The file's edges, for naming a face's edges for the sewing. */
 struct EdgeNames {
     const TopTools_IndexedDataMapOfShapeListOfShape *edge_faces;
-    const TopTools_DataMapOfShapeShape *original_of;   /* a moved copy's edges, or null */
+    const TopTools_DataMapOfShapeShape *original_of;   /* a moved copy's edges (may be empty) */
 };
 
 /* The edge's id for the sewing (its index in edge_faces) where it bounds
@@ -193,18 +192,24 @@ std::string loop_of_wire(const TopoDS_Wire &wire, const TopoDS_Face &face,
     return close_gaps(loop, BRep_Tool::Surface(converted), floor_mm);
 }
 
+/* The box (u0, u1, v0, v1) of the loops' trims (trims_box). */
+void loops_box(const std::vector<Loop> &loops, double box[4])
+{
+    std::vector<const TrimCurve *> curves;
+    for (const Loop &loop : loops)
+        for (const TrimCurve &c : loop.curves)
+            curves.push_back(&c);
+    trims_box(curves, box);
+}
+
 /* A plane whose conversion does not hold the face's trims is made again
  * over them (plane_over), a thousandth wider each way; the trims keep
  * their parameters. */
 void widen_plane(const TopoDS_Face &face, const TopoDS_Face &converted,
                  const std::vector<Loop> &loops, Surface *surface)
 {
-    std::vector<const TrimCurve *> curves;
-    for (const Loop &loop : loops)
-        for (const TrimCurve &c : loop.curves)
-            curves.push_back(&c);
     double box[4];
-    trims_box(curves, box);
+    loops_box(loops, box);
     double u0 = surface->knots_u.front(), u1 = surface->knots_u.back();
     double v0 = surface->knots_v.front(), v1 = surface->knots_v.back();
     if (box[0] >= u0 && box[1] <= u1 && box[2] >= v0 && box[3] <= v1)
@@ -222,10 +227,7 @@ void widen_plane(const TopoDS_Face &face, const TopoDS_Face &converted,
  * trims), 0 when it has none. */
 double u_period(const TopoDS_Face &face)
 {
-    Handle(Geom_Surface) s = BRep_Tool::Surface(face);
-    Handle(Geom_RectangularTrimmedSurface) trimmed =
-        Handle(Geom_RectangularTrimmedSurface)::DownCast(s);
-    Handle(Geom_Surface) basis = trimmed.IsNull() ? s : trimmed->BasisSurface();
+    Handle(Geom_Surface) basis = basis_surface(BRep_Tool::Surface(face));
     return basis->IsUPeriodic() ? basis->UPeriod() : 0;
 }
 
@@ -244,12 +246,8 @@ void wrap_turn(const TopoDS_Face &face, const TopoDS_Face &converted,
     double u0 = surface->knots_u.front(), u1 = surface->knots_u.back();
     if (!(period > 0) || std::fabs(u1 - u0 - period) > 1e-9 * period)
         return;
-    std::vector<const TrimCurve *> curves;
-    for (const Loop &loop : loops)
-        for (const TrimCurve &c : loop.curves)
-            curves.push_back(&c);
     double box[4], eps = 1e-9 * period;
-    trims_box(curves, box);
+    loops_box(loops, box);
     if ((box[0] >= u0 - eps && box[1] <= u1 + eps) || box[1] - box[0] > period + eps)
         return;
     double start = box[0] < u0 - eps ? box[0] : box[1] - period;
@@ -313,7 +311,7 @@ static void convert_face_unguarded(FaceWork *w, double floor_mm)
         const TopoDS_Wire &wire = TopoDS::Wire(it.Value());
         loop.outer = wire.IsSame(outer);
         w->why = loop_of_wire(wire, face, conv.get(), converted,
-                              {w->edge_faces, moved ? &original_of : nullptr}, computed,
+                              {w->edge_faces, &original_of}, computed,
                               floor_mm, &loop, &w->reprojected);
         if (!w->why.empty())
             return;

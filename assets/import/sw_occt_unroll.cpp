@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 #include "sw_occt_unroll.h"
 
+#include "sw_occt_bspline.h"
+
 #include <BRepBndLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -10,7 +12,6 @@
 #include <GeomAdaptor_Surface.hxx>
 #include <GeomConvert_ApproxSurface.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_Surface.hxx>
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
@@ -29,13 +30,6 @@ namespace {
 /* Rounding puts a whole turn's p-curves a hair over the period (1e-13);
  * those convert whole (sw_occt_convert.h). */
 const double kOver = 1e-6;
-
-Handle(Geom_Surface) basis_of(const Handle(Geom_Surface) &s)
-{
-    Handle(Geom_RectangularTrimmedSurface) trimmed =
-        Handle(Geom_RectangularTrimmedSurface)::DownCast(s);
-    return trimmed.IsNull() ? s : trimmed->BasisSurface();
-}
 
 bool over_period(const Handle(Geom_Surface) &basis, const double uv[4])
 {
@@ -71,7 +65,9 @@ TopoDS_Face unrolled_over_period(const TopoDS_Face &face)
 {
     try {
         TopLoc_Location loc;
-        Handle(Geom_Surface) basis = basis_of(BRep_Tool::Surface(face, loc));
+        Handle(Geom_Surface) basis = basis_surface(BRep_Tool::Surface(face, loc));
+        if (!basis->IsUPeriodic() && !basis->IsVPeriodic())
+            return TopoDS_Face();   /* most faces: no bounds to take */
         double uv[4];
         BRepTools::UVBounds(face, uv[0], uv[1], uv[2], uv[3]);
         if (!over_period(basis, uv) || has_seam(face))
