@@ -258,30 +258,24 @@ static sw_status pack_verified(const build_options *o, progress_context *pc,
     return st;
 }
 
-sw_status sw_pack_tool_pack(const build_options *o, progress_context *pc, sw_model *model,
-                            const sw_import_report *reports, seam_summary *seam_summary_out,
-                            size_t *bytes_out, sw_error *err)
+sw_status sw_pack_tool_pack_bytes(const build_options *o, progress_context *pc, sw_model *model,
+                                  const sw_pack_import_note *notes, uint32_t note_count,
+                                  seam_summary *summary, uint8_t **bytes, size_t *size,
+                                  sw_error *err)
 {
     snprintf(pc->prefix, sizeof pc->prefix, "packing");
     pc->importing = 0;
     sw_pack_progress progress = { sw_pack_tool_progress, pc };
     sw_pack_contents contents;
     sw_seam_host seams = { 0 };
-    uint8_t *bytes = NULL;
-    sw_pack_import_note *notes = NULL;
-    uint32_t note_count = 0;
+    *bytes = NULL;
+    *size = 0;
     /* The levels made on o->threads (sw_levels_options, sw_part_levels_options). */
     sw_parts_threads threads;
     sw_parts_runner runner = sw_parts_threads_runner(&threads, o->threads > 1 ? o->threads - 1 : 0);
     build_options with = *o;
     with.part_levels.runner = o->threads > 1 ? &runner : NULL;
-    const char **names = input_names(o);
-    sw_status st = names ? sw_pack_notes_from_reports(names, reports, (size_t)o->input_count,
-                                                      &notes, &note_count, err)
-                         : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
-    free(names);
-    if (st == SW_OK)
-        st = build_seams(o, pc, model, &seams, seam_summary_out, err);
+    sw_status st = build_seams(o, pc, model, &seams, summary, err);
     if (st == SW_OK)
         st = sw_pack_contents_from_model_progress(model, &progress, &contents, err);
     if (st == SW_OK) {
@@ -289,11 +283,39 @@ sw_status sw_pack_tool_pack(const build_options *o, progress_context *pc, sw_mod
         contents.import_note_count = note_count;
         const sw_pack_orientation orientation = { .up_axis = model->up_axis };
         contents.orientation = sw_up_axis_valid(model->up_axis) ? &orientation : NULL;
-        st = pack_verified(&with, pc, model, &contents, &seams, seam_summary_out, &bytes,
-                           bytes_out, err);
+        st = pack_verified(&with, pc, model, &contents, &seams, summary, bytes, size, err);
         sw_pack_contents_free(&contents);
     }
     sw_seam_host_free(&seams);
+    if (st != SW_OK) {
+        free(*bytes);
+        *bytes = NULL;
+    }
+    return st;
+}
+
+sw_status sw_pack_tool_notes(const build_options *o, const sw_import_report *reports,
+                             sw_pack_import_note **notes, uint32_t *note_count, sw_error *err)
+{
+    const char **names = input_names(o);
+    sw_status st = names ? sw_pack_notes_from_reports(names, reports, (size_t)o->input_count,
+                                                      notes, note_count, err)
+                         : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    free(names);
+    return st;
+}
+
+sw_status sw_pack_tool_pack(const build_options *o, progress_context *pc, sw_model *model,
+                            const sw_import_report *reports, seam_summary *seam_summary_out,
+                            size_t *bytes_out, sw_error *err)
+{
+    uint8_t *bytes = NULL;
+    sw_pack_import_note *notes = NULL;
+    uint32_t note_count = 0;
+    sw_status st = sw_pack_tool_notes(o, reports, &notes, &note_count, err);
+    if (st == SW_OK)
+        st = sw_pack_tool_pack_bytes(o, pc, model, notes, note_count, seam_summary_out, &bytes,
+                                     bytes_out, err);
     free(notes);
     if (st == SW_OK) {
         sw_pack_tool_progress(pc, "writing", 0.0);

@@ -17,8 +17,10 @@
 #include "sw_import.h"
 #include "sw_levels_build.h"
 #include "sw_model.h"
+#include "sw_pack.h"
 #include "sw_part_levels_build.h"
 #include "sw_progress.h"
+#include "sw_scene.h"
 #include "sw_seam_sew.h"
 #include "sw_seam_split.h"
 
@@ -27,6 +29,7 @@ typedef struct build_options {
     const char **inputs;
     int input_count;
     int quiet, strict, iges_occt;
+    int copies;                 /* --copies: a scene's parts stored one copy per placement */
     double seam_tolerance;      /* 0: sw_seam_default_tolerance */
     sw_part_levels_options part_levels;   /* --cut-patches */
     uint32_t threads;           /* --threads: make the levels on (0 or 1: this one alone) */
@@ -71,6 +74,26 @@ const char *sw_pack_tool_base_name(const char *path);
  * fails instead, saying what was left out (SW_ERR_FORMAT). */
 sw_status sw_pack_tool_check_not_empty(const build_options *o, const sw_model *model,
                                        const sw_import_report *reports, sw_error *err);
+
+/* The model packed and verified into *bytes (malloc'd, *size bytes), with
+ * the notes given (not owned), the sewing, levels and repairs counted in
+ * *summary. */
+sw_status sw_pack_tool_pack_bytes(const build_options *o, progress_context *pc, sw_model *model,
+                                  const sw_pack_import_note *notes, uint32_t note_count,
+                                  seam_summary *summary, uint8_t **bytes, size_t *size,
+                                  sw_error *err);
+
+/* The import notes of the inputs' reports (malloc'd). */
+sw_status sw_pack_tool_notes(const build_options *o, const sw_import_report *reports,
+                             sw_pack_import_note **notes, uint32_t *note_count, sw_error *err);
+
+/* A scene as placed parts (version 2, seamwalk_pack_scene.c): each of
+ * plan's prototypes packed and verified on its own, in its own frame and
+ * at its own tolerance, then merged, placed, read back and written to
+ * o->out_path; the summary sums the prototypes'. */
+sw_status sw_pack_tool_pack_scene(const build_options *o, progress_context *pc,
+                                  sw_scene_plan *plan, const sw_import_report *reports,
+                                  seam_summary *summary, size_t *bytes_out, sw_error *err);
 
 /* The model packed, verified and written to o->out_path, the sewing,
  * levels and repairs counted in *summary, the bytes written in

@@ -35,11 +35,13 @@
 #include "sw_up_inputs.h"
 
 #include "seamwalk_pack_build.h"
+#include "sw_model_split.h"
 
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
     "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
     "                           [--up x|y|z|-x|-y|-z] [--cut-patches N] [--threads N]\n"
+    "                           [--copies]\n"
     "       seamwalk-pack info [--json] PACK\n"
     "       seamwalk-pack verify PACK [--key KEYS.pub]\n"
     "       seamwalk-pack keygen -o PREFIX\n"
@@ -60,7 +62,11 @@ static const char usage_text[] =
     "own, drawn apart far away (default 4096; 0: none cut).\n"
     "--threads: threads that convert STEP and IGES faces and make the static and\n"
     "part levels (default: the machine's cores; 0 or 1: none besides the tool's\n"
-    "own; at most 64). The pack's bytes are the same whatever the count.\n";
+    "own; at most 64). The pack's bytes are the same whatever the count.\n"
+    "A scene given alone is packed as placed parts: each file or generated object\n"
+    "it names is sewn, simplified and stored once, in its own frame, and placed\n"
+    "where its parts are (a pack of version 2). --copies: store every part as a\n"
+    "copy of its own (still placed: one copy per placement).\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -250,6 +256,84 @@ static sw_status add_input(const build_options *o, int i, progress_context *pc, 
     return st;
 }
 
+/* The parts and patches a plan places. */
+static void placed_counts(const sw_scene_plan *plan, size_t *parts, size_t *patches)
+{
+    *parts = *patches = 0;
+    for (size_t i = 0; i < plan->placement_count; i++) {
+        const sw_model *m = &plan->prototypes[plan->placements[i].prototype];
+        *parts += m->part_count;
+        *patches += m->patch_count;
+    }
+}
+
+/* A plan whose every placement has a prototype of its own: the scene
+ * stored as copies, placed all the same. */
+static sw_status plan_copies(sw_scene_plan *plan, sw_error *err)
+{
+    sw_model *models = calloc(plan->placement_count + 1, sizeof *models);
+    if (!models)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    sw_status st = SW_OK;
+    for (size_t i = 0; i < plan->placement_count; i++) {
+        sw_model_init(&models[i]);
+        const sw_model *from = &plan->prototypes[plan->placements[i].prototype];
+        for (size_t p = 0; st == SW_OK && p < from->part_count; p++) {
+            st = sw_model_begin_part(&models[i], from->parts[p].name, from->parts[p].color, err);
+            for (size_t f = 0; st == SW_OK && f < from->parts[p].surface_count; f++)
+                st = sw_model_copy_surface(from, from->parts[p].first_surface + f, &models[i],
+                                           err);
+        }
+        models[i].model_tolerance = from->model_tolerance;
+    }
+    for (size_t k = 0; k < plan->prototype_count; k++)
+        sw_model_free(&plan->prototypes[k]);
+    free(plan->prototypes);
+    plan->prototypes = models;
+    plan->prototype_count = plan->placement_count;
+    for (size_t i = 0; i < plan->placement_count; i++)
+        plan->placements[i].prototype = i;
+    return st;
+}
+
+/* A scene given alone, as placed parts (sw_pack_tool_pack_scene). */
+static sw_status build_scene(const build_options *o, sw_import_report *report,
+                             seam_summary *seams, size_t *bytes_out, size_t *parts,
+                             size_t *patches, sw_error *err)
+{
+    const char *path = o->inputs[0];
+    sw_model empty;
+    sw_model_init(&empty);
+    progress_context pc = { .model = &empty };
+    sw_progress_init(&pc.bar, stderr, o->quiet);
+    sw_parts_threads threads;
+    sw_parts_runner runner = sw_parts_threads_runner(&threads, o->threads > 1 ? o->threads - 1 : 0);
+    sw_import_options opts = { .strict = o->strict, .progress = sw_pack_tool_progress,
+                               .progress_user = &pc, .runner = o->threads > 1 ? &runner : NULL };
+    snprintf(pc.prefix, sizeof pc.prefix, "importing %s", sw_pack_tool_base_name(path));
+    pc.importing = 1;
+    sw_scene_plan plan;
+    sw_status st = sw_scene_plan_load(path, &opts, report, &plan, err);
+    if (st == SW_OK && o->strict)
+        st = check_strict(path, report, err);
+    if (st == SW_OK && o->copies)
+        st = plan_copies(&plan, err);
+    if (st == SW_OK) {
+        sw_progress_clear(&pc.bar);
+        int32_t up = sw_up_input_default(path, plan.views.up_axis);
+        plan.views.up_axis = sw_up_inputs_choose(o->inputs, &up, 1, o->up_axis, stderr);
+        placed_counts(&plan, parts, patches);
+        if (*patches == 0)
+            st = sw_pack_tool_check_not_empty(o, &empty, report, err);
+    }
+    if (st == SW_OK)
+        st = sw_pack_tool_pack_scene(o, &pc, &plan, report, seams, bytes_out, err);
+    sw_scene_plan_free(&plan);
+    sw_model_free(&empty);
+    sw_progress_clear(&pc.bar);
+    return st;
+}
+
 static sw_status build_pack(const build_options *o, sw_model *model, sw_import_report *reports,
                             seam_summary *seams, size_t *bytes_out, sw_error *err)
 {
@@ -304,7 +388,7 @@ static void print_warnings(const build_options *o, const sw_import_report *repor
     }
 }
 
-static void print_summary(const build_options *o, const sw_model *model,
+static void print_summary(const build_options *o, size_t parts, size_t patches,
                           const sw_import_report *reports, const seam_summary *seams,
                           size_t bytes, double seconds)
 {
@@ -369,7 +453,7 @@ static void print_summary(const build_options *o, const sw_model *model,
            pl->triangles[3], pl->incomplete, pl->over_bound, pl->not_smaller, pl->folded, pl->too_large,
            pl->worst_over_bound, pl->seconds);
     printf("seamwalk-pack: %zu parts, %zu patches, %zu bytes -> %s (%.2f s, %" PRIu32
-           " thread%s)\n", model->part_count, model->patch_count, bytes, o->out_path, seconds,
+           " thread%s)\n", parts, patches, bytes, o->out_path, seconds,
            o->threads > 1 ? o->threads : 1, o->threads > 1 ? "s" : "");
 }
 
@@ -424,6 +508,8 @@ static int parse_build(int argc, char **argv, build_options *o)
                 return usage_error("build: --up takes x, y, z, -x, -y or -z, not '%s'", u);
         } else if (strcmp(a, "--quiet") == 0) {
             o->quiet = 1;
+        } else if (strcmp(a, "--copies") == 0) {
+            o->copies = 1;
         } else if (strcmp(a, "--strict") == 0) {
             o->strict = 1;
         } else if (a[0] == '-' && a[1] != '\0') {
@@ -483,11 +569,17 @@ static int cmd_build(int argc, char **argv)
         size_t bytes = 0;
         double t0 = sw_pack_tool_now_s();
         seam_summary seams = { 0 };
-        sw_status st = build_pack(&o, &model, reports, &seams, &bytes, &err);
+        size_t parts = 0, patches = 0;
+        int placed = o.input_count == 1 && kind_of(o.inputs[0]) == INPUT_SCENE;
+        sw_status st = placed ? build_scene(&o, reports, &seams, &bytes, &parts, &patches, &err)
+                              : build_pack(&o, &model, reports, &seams, &bytes, &err);
+        if (!placed)
+            parts = model.part_count, patches = model.patch_count;
         if (st == SW_OK) {
             print_warnings(&o, reports);
             if (!o.quiet)
-                print_summary(&o, &model, reports, &seams, bytes, sw_pack_tool_now_s() - t0);
+                print_summary(&o, parts, patches, reports, &seams, bytes,
+                              sw_pack_tool_now_s() - t0);
         }
         rc = st == SW_OK ? 0 : fail(&err);
         sw_model_free(&model);

@@ -25,6 +25,7 @@
 
 #define SW_PACK_MAGIC "SWPACK\r\n"        /* 8 bytes, no terminator in the file */
 #define SW_PACK_VERSION 1u
+#define SW_PACK_VERSION_INSTANCED 2u      /* a pack with PROTOTYPES and INSTANCES */
 #define SW_PACK_BYTE_ORDER_MARK 0x01020304u /* reads 0x04030201 on a big-endian host */
 #define SW_PACK_ALIGN 64u                  /* every section offset is a multiple */
 #define SW_PACK_MAX_SECTIONS 256u
@@ -95,6 +96,13 @@ enum sw_section_type {
     SW_SECTION_PART_LEVEL_VERTICES = 38,/* sw_level_vertex[vertex_count] */
     SW_SECTION_PART_LEVEL_INDICES = 39, /* uint16_t[index_count] */
     SW_SECTION_PART_LEVEL_PIECE_OF = 40,/* uint32_t[surface_count] */
+    /* Instances (core/sw_pack_instances.h): the parts are stored once, in
+     * runs that index nothing outside themselves (prototypes), and placed
+     * by the instances; both or neither, and only in version 2, which
+     * needs them (an older reader would draw every prototype once, where
+     * it was modelled). */
+    SW_SECTION_PROTOTYPES = 41,         /* sw_pack_prototype[] */
+    SW_SECTION_INSTANCES = 42,          /* sw_pack_instance[] */
 };
 
 typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
@@ -239,6 +247,38 @@ typedef struct sw_pack_import_note {  /* 128 bytes */
                                          for si_unit", NUL-terminated UTF-8 */
 } sw_pack_import_note;
 
+/* The index spaces of a pack: each record kind that other records index,
+ * and the flat arrays they index. A prototype is a run of each. */
+enum sw_pack_space {
+    SW_SPACE_PARTS, SW_SPACE_PATCHES, SW_SPACE_CONTROL, SW_SPACE_ADJACENCY, SW_SPACE_SURFACES,
+    SW_SPACE_TRIM_LOOPS, SW_SPACE_TRIM_CURVES, SW_SPACE_TRIM_DATA, SW_SPACE_TRIM_MASKS,
+    SW_SPACE_SEAM_ORIGINALS,      /* the Seam Graph's original vertices */
+    SW_SPACE_SEAM_COLLAPSES,      /* its collapses, so its created vertices */
+    SW_SPACE_SEAM_SLOTS, SW_SPACE_SEAM_LOOPS, SW_SPACE_SEAM_EDGES, SW_SPACE_SEAM_SLOT_REFS,
+    SW_SPACE_LEVELS, SW_SPACE_LEVEL_VERTICES, SW_SPACE_LEVEL_INDICES, SW_SPACE_LEVEL_CHAINS,
+    SW_SPACE_LEVEL_CHAIN_POINTS, SW_SPACE_SUPERS, SW_SPACE_SUPER_MEMBERS, SW_SPACE_PIECES,
+    SW_SPACE_PART_LEVELS, SW_SPACE_PART_LEVEL_VERTICES, SW_SPACE_PART_LEVEL_INDICES,
+    SW_SPACE_COUNT
+};
+
+/* Section PROTOTYPES: the parts stored once. Prototype k holds, in every
+ * space, the run first[s] .. first[s] + count[s]; the runs tile each space
+ * in prototype order, and a prototype's records index only its own runs. */
+typedef struct sw_pack_prototype {    /* 208 bytes */
+    uint32_t first[SW_SPACE_COUNT];
+    uint32_t count[SW_SPACE_COUNT];
+} sw_pack_prototype;
+
+/* Section INSTANCES: where each prototype is placed, and as what. */
+typedef struct sw_pack_instance {     /* 144 bytes */
+    uint32_t prototype;               /* into PROTOTYPES */
+    uint32_t flags;                   /* zero */
+    float color[4];                   /* linear RGBA in [0, 1], for every part it places */
+    float transform[16];              /* column-major as sw_mat4: a rotation, a uniform scale
+                                         > 0 and a translation (no mirror) */
+    char name[56];                    /* NUL-terminated UTF-8 */
+} sw_pack_instance;
+
 /* Arena bytes the runtime keeps per patch beyond the pack itself (tessellation
  * level, visibility); the runtime asserts its per-patch state fits. */
 #define SW_RUNTIME_BYTES_PER_PATCH 16u
@@ -286,6 +326,13 @@ typedef struct sw_pack {
     /* The part levels: views into the PART_LEVEL* sections, every pointer
      * NULL and every count 0 when the pack has none. */
     sw_part_levels part_levels;
+    /* The prototypes and their instances (version 2): NULL with count 0
+     * when absent. A pack that has them is drawn through
+     * sw_pack_expand (core/sw_pack_instances.h). */
+    const sw_pack_prototype *prototypes;
+    uint32_t prototype_count;
+    const sw_pack_instance *instances;
+    uint32_t instance_count;
 } sw_pack;
 
 /* The box of patches[first .. first + count)'s control hulls into lo and

@@ -13,6 +13,7 @@
 #define XXH_STATIC_LINKING_ONLY /* XXH3_state_t on the stack: no malloc here */
 #include <xxhash.h>
 
+#include "sw_pack_instances.h"
 #include "sw_pack_notes.h"
 #include "sw_pack_validate.h"
 #include "sw_up_axis.h"
@@ -199,9 +200,10 @@ sw_status sw_pack_check_header_identity(const sw_pack_header *h, uint64_t actual
         return sw_error_set(err, SW_ERR_FORMAT, "header.byte_order: 0x%08x, expected 0x%08x",
                             (unsigned)h->byte_order, SW_PACK_BYTE_ORDER_MARK);
     }
-    if (h->version != SW_PACK_VERSION)
-        return sw_error_set(err, SW_ERR_VERSION, "header.version: %u, this build reads version %u",
-                            (unsigned)h->version, SW_PACK_VERSION);
+    if (h->version != SW_PACK_VERSION && h->version != SW_PACK_VERSION_INSTANCED)
+        return sw_error_set(err, SW_ERR_VERSION, "header.version: %u, this build reads versions "
+                            "%u and %u", (unsigned)h->version, SW_PACK_VERSION,
+                            SW_PACK_VERSION_INSTANCED);
     if (h->total_size != actual_size)
         return sw_error_set(err, SW_ERR_FORMAT,
                             "header.total_size: %llu, but the %s is %llu bytes%s",
@@ -704,6 +706,8 @@ static sw_status map_levels(const uint8_t *data, const int32_t index[], sw_pack 
  * must cover the pack at least. */
 static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
 {
+    if (pack->header->version == SW_PACK_VERSION_INSTANCED)
+        return SW_OK; /* the placed scene's: sw_pack_map_instances checks it */
     uint64_t walk = pack->seam_header ? sw_walk_arena_bytes(&pack->seam, pack->surfaces) : 0;
     uint64_t expected = sw_pack_runtime_bytes(pack->header->total_size, pack->meta->patch_count,
                                               walk);
@@ -763,7 +767,8 @@ sw_status sw_pack_open_memory_with(const void *data, size_t size, const sw_parts
         (s = sw_pack_map_orientation(bytes, &pack, err)) != SW_OK ||
         (s = sw_pack_map_import_notes(bytes, &pack, err)) != SW_OK ||
         (s = sw_pack_map_supers(bytes, &pack, err)) != SW_OK ||
-        (s = sw_pack_map_part_levels(bytes, &pack, err)) != SW_OK)
+        (s = sw_pack_map_part_levels(bytes, &pack, err)) != SW_OK ||
+        (s = sw_pack_map_instances(bytes, &pack, err)) != SW_OK)
         return s;
     *out = pack;
     return SW_OK;

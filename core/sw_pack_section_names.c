@@ -45,6 +45,8 @@ const char *sw_section_type_name(uint32_t type)
     case SW_SECTION_PART_LEVEL_VERTICES: return "PART_LEVEL_VERTICES";
     case SW_SECTION_PART_LEVEL_INDICES: return "PART_LEVEL_INDICES";
     case SW_SECTION_PART_LEVEL_PIECE_OF: return "PART_LEVEL_PIECE_OF";
+    case SW_SECTION_PROTOTYPES: return "PROTOTYPES";
+    case SW_SECTION_INSTANCES: return "INSTANCES";
     }
     return "unknown";
 }

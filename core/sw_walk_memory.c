@@ -23,15 +23,20 @@ sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surf
     return m;
 }
 
+uint32_t sw_walk_cache_vertices_for(uint64_t patches)
+{
+    uint32_t v = SW_WALK_CACHE_MIN;
+    while (v < SW_WALK_CACHE_MAX && (uint64_t)v < 32 * patches)
+        v *= 2;
+    return v;
+}
+
 uint32_t sw_walk_cache_vertices(const sw_seam_graph *g, const sw_pack_surface *surfaces)
 {
     uint64_t patches = 0;
     for (uint32_t s = 0; s < g->surface_count; s++)
         patches += surfaces[s].patch_count;
-    uint32_t v = SW_WALK_CACHE_MIN;
-    while (v < SW_WALK_CACHE_MAX && (uint64_t)v < 32 * patches)
-        v *= 2;
-    return v;
+    return sw_walk_cache_vertices_for(patches);
 }
 
 uint64_t sw_walk_scratch_bytes(const sw_walk_sizes *m)
@@ -55,30 +60,59 @@ uint64_t sw_walk_threads_bytes(uint32_t surface_count)
            sw_retire_ring_arena_bytes(sw_walk_retire_capacity(surface_count));
 }
 
-uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces)
+/* The walk over a graph of g's counts (its arrays are not read), of
+ * patches patches, whose largest surface is m. */
+static uint64_t walk_bytes(const sw_seam_graph *g, uint64_t patches, const sw_walk_sizes *m)
 {
-    if (!g || g->surface_count == 0)
-        return 0;
-    sw_walk_sizes m = sw_walk_largest_surface(g, surfaces);
     uint64_t n = g->surface_count, v = SW_WALK_VERTICES;
-    uint32_t cache = sw_walk_cache_vertices(g, surfaces);
+    uint32_t cache = sw_walk_cache_vertices_for(patches);
     uint64_t bytes = sw_seam_select_arena_bytes(g);
     bytes += 4 * take(n * sizeof(float)) + 3 * take(n);  /* target, seam bound, offset, depth;
                                                              visible, evictable, dirty */
-    uint64_t patches = 0;
-    for (uint32_t s = 0; s < g->surface_count; s++)
-        patches += surfaces[s].patch_count;
     bytes += 2 * take(n * sizeof(double)) +             /* cull_near, cull_far */
              sw_cull_tree_arena_bytes((uint32_t)n, patches);
     bytes += take(n * sizeof(sw_normal_cone)) +         /* the cones, and their scratch */
              sw_arena_worst_case(sizeof(double) * sw_normal_cone_scratch_doubles(
                                      SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE), 64);
-    bytes += take((m.points + 1ull) * sizeof(sw_seam_point)) +  /* the walk's maker */
-             take((m.points + 1ull) * sizeof(sw_trim_point)) +
-             take((m.loops + 1ull) * sizeof(uint32_t)) +
-             take((m.patches + 1ull) * sizeof(sw_trim_patch)) + take(sw_walk_scratch_bytes(&m));
+    bytes += take((m->points + 1ull) * sizeof(sw_seam_point)) +  /* the walk's maker */
+             take((m->points + 1ull) * sizeof(sw_trim_point)) +
+             take((m->loops + 1ull) * sizeof(uint32_t)) +
+             take((m->patches + 1ull) * sizeof(sw_trim_patch)) + take(sw_walk_scratch_bytes(m));
     bytes += 2 * take(v * 3 * sizeof(float)) + take(v * 2 * sizeof(float)) +
              take(v * sizeof(uint32_t)) + take(SW_WALK_INDICES * sizeof(uint16_t));
     bytes += sw_walk_threads_bytes((uint32_t)n);
     return bytes + sw_seam_cache_arena_bytes((uint32_t)n, cache, sw_walk_cache_indices(cache));
+}
+
+uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces)
+{
+    if (!g || g->surface_count == 0)
+        return 0;
+    sw_walk_sizes m = sw_walk_largest_surface(g, surfaces);
+    uint64_t patches = 0;
+    for (uint32_t s = 0; s < g->surface_count; s++)
+        patches += surfaces[s].patch_count;
+    return walk_bytes(g, patches, &m);
+}
+
+uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
+                                    const uint64_t counts[SW_SPACE_COUNT])
+{
+    if (!stored || counts[SW_SPACE_SURFACES] == 0)
+        return 0;
+    for (int s = 0; s < SW_SPACE_COUNT; s++)
+        if (counts[s] >= SW_SEAM_NONE)
+            return UINT64_MAX;
+    sw_walk_sizes m = sw_walk_largest_surface(stored, surfaces);
+    uint64_t originals = counts[SW_SPACE_SEAM_ORIGINALS], made = counts[SW_SPACE_SEAM_COLLAPSES];
+    sw_seam_graph g = {
+        .vertex_count = (uint32_t)(originals + made), .original_count = (uint32_t)originals,
+        .slot_count = (uint32_t)counts[SW_SPACE_SEAM_SLOTS],
+        .loop_count = (uint32_t)counts[SW_SPACE_SEAM_LOOPS],
+        .edge_count = (uint32_t)counts[SW_SPACE_SEAM_EDGES], .collapse_count = (uint32_t)made,
+        .slot_ref_count = (uint32_t)counts[SW_SPACE_SEAM_SLOT_REFS],
+        .surface_count = (uint32_t)counts[SW_SPACE_SURFACES] };
+    if (originals + made >= SW_SEAM_NONE)
+        return UINT64_MAX;
+    return walk_bytes(&g, counts[SW_SPACE_PATCHES], &m);
 }

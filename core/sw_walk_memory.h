@@ -28,6 +28,7 @@
 #define SW_WALK_CACHE_MIN (1u << 19)
 #define SW_WALK_CACHE_MAX (1u << 22)
 uint32_t sw_walk_cache_vertices(const sw_seam_graph *g, const sw_pack_surface *surfaces);
+uint32_t sw_walk_cache_vertices_for(uint64_t patches);
 static inline uint32_t sw_walk_cache_indices(uint32_t vertices) { return 6u * vertices; }
 
 /* The largest surface in loop points (slots), loops and patches, each on
@@ -41,6 +42,12 @@ sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surf
 
 /* Bytes of the walk, worst case (every alignment included); 0 for no graph. */
 uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces);
+
+/* The same for the placed scene of an instanced pack (sw_pack_instances.h)
+ * of counts per space, whose stored graph and surfaces give the largest
+ * surface; UINT64_MAX when the counts do not fit a graph. */
+uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
+                                    const uint64_t counts[SW_SPACE_COUNT]);
 
 /* Of those, the state the tessellation workers share (sw_seam_workers.h),
  * whatever their number: per surface a job (two floats), the worker's

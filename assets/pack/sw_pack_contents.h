@@ -62,6 +62,13 @@ typedef struct sw_pack_contents {
      * as the PART_LEVELS record and the four PART_LEVEL_* sections. Not
      * owned, like seam; part_levels->part_count must be meta.part_count. */
     const sw_part_levels *part_levels;
+    /* The prototypes and their instances (core/sw_pack_instances.h), or
+     * NULL for a pack of parts drawn where they are (version 1). Not owned,
+     * like seam. */
+    const sw_pack_prototype *prototypes;
+    uint32_t prototype_count;
+    const sw_pack_instance *instances;
+    uint32_t instance_count;
 } sw_pack_contents;
 
 #endif

@@ -247,14 +247,23 @@ static sw_status convert_viewpoint(const sw_model_viewpoint *v, size_t i, sw_pac
     return SW_OK;
 }
 
-static sw_status convert_scene(const sw_model *model, sw_pack_viewpoint *views, float *transforms,
-                               sw_error *err)
+sw_status sw_pack_viewpoints_from_model(const sw_model *model, sw_pack_viewpoint *views,
+                                       sw_error *err)
 {
     for (size_t i = 0; i < model->viewpoint_count; i++) {
         sw_status st = convert_viewpoint(&model->viewpoints[i], i, &views[i], err);
         if (st != SW_OK)
             return st;
     }
+    return SW_OK;
+}
+
+static sw_status convert_scene(const sw_model *model, sw_pack_viewpoint *views, float *transforms,
+                               sw_error *err)
+{
+    sw_status st = sw_pack_viewpoints_from_model(model, views, err);
+    if (st != SW_OK)
+        return st;
     for (size_t i = 0; i < model->part_count; i++) {
         const double *m = model->parts[i].transform;
         float *f = &transforms[i * 16];

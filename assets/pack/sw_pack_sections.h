@@ -21,6 +21,11 @@
 sw_status sw_pack_sections_from_model(const sw_model *model, sw_pack_contents *out,
                                       sw_error *err);
 
+/* The model's viewpoints as VIEWPOINT records (views holds
+ * model->viewpoint_count), with the reader's rules checked. */
+sw_status sw_pack_viewpoints_from_model(const sw_model *model, sw_pack_viewpoint *views,
+                                       sw_error *err);
+
 /* Copies a NUL-terminated name into a fixed field of cap bytes (NUL-padded),
  * cut to cap - 1 bytes and with every byte that does not start valid UTF-8
  * replaced by '?': importers pass through whatever encoding the source used,

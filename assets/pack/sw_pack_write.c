@@ -16,6 +16,7 @@
 #include <xxhash.h>
 
 #include "sw_pack_adjacency.h"
+#include "sw_pack_instances.h"
 #include "sw_pack_sections.h"
 #include "sw_pack_validate.h"
 #include "sw_seam_check.h"
@@ -23,11 +24,12 @@
 
 /* Types 1..13 (the first five always written), then the seam group's eight,
  * then ORIENTATION and IMPORT_NOTES, then the levels' seven, then the
- * super-surfaces' three, then the part levels' six. */
+ * super-surfaces' three, then the part levels' six, then PROTOTYPES and
+ * INSTANCES. */
 enum { FIXED_SECTIONS = 5, PLAIN_SECTIONS = 13, SEAM_SECTIONS = 8, LEVEL_SECTIONS = 7,
-       SUPER_SECTIONS = 3, PART_LEVEL_SECTIONS = 6,
+       SUPER_SECTIONS = 3, PART_LEVEL_SECTIONS = 6, INSTANCE_SECTIONS = 2,
        MAX_SECTIONS = PLAIN_SECTIONS + SEAM_SECTIONS + 2 + LEVEL_SECTIONS + SUPER_SECTIONS +
-                      PART_LEVEL_SECTIONS,
+                      PART_LEVEL_SECTIONS + INSTANCE_SECTIONS,
        HEADER_BYTES = 64, SECTION_BYTES = 32 };
 
 static uint64_t align_up(uint64_t x) { return (x + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN; }
@@ -174,6 +176,12 @@ static int list_sections(const sw_pack_contents *c, sw_pack_seam *seam_rec,
         src[n++] = (section_source){ SW_SECTION_PART_LEVEL_PIECE_OF, pl->piece_of,
                                      (uint64_t)pl->surface_count * sizeof(uint32_t) };
     }
+    if (c->instances) {
+        src[n++] = (section_source){ SW_SECTION_PROTOTYPES, c->prototypes,
+                                     (uint64_t)c->prototype_count * sizeof(sw_pack_prototype) };
+        src[n++] = (section_source){ SW_SECTION_INSTANCES, c->instances,
+                                     (uint64_t)c->instance_count * sizeof(sw_pack_instance) };
+    }
     return n;
 }
 
@@ -205,10 +213,27 @@ static sw_status lay_out(const section_source *src, int n, sw_pack_section *tabl
  * (the reader refuses such a pack for its graph before it sizes a walk). */
 static uint64_t walk_bytes(const sw_pack_contents *c)
 {
+    if (c->instances)
+        return 0; /* sw_pack_instanced_runtime_bytes counts the placed scene's */
     if (!c->seam || c->seam->surface_count != c->surface_count ||
         sw_seam_graph_check(c->seam, NULL) != SW_OK)
         return 0;
     return sw_walk_arena_bytes(c->seam, c->surfaces);
+}
+
+/* The header's runtime_bytes: of the pack, or of its placed scene. */
+static uint64_t runtime_bytes(const sw_pack_contents *c, uint64_t total)
+{
+    if (!c->instances)
+        return sw_pack_runtime_bytes(total, c->meta.patch_count, walk_bytes(c));
+    for (uint32_t i = 0; i < c->instance_count; i++)
+        if (c->instances[i].prototype >= c->prototype_count)
+            return 0; /* the reader refuses the instance first */
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(c->prototypes, c->instances, c->instance_count, counts);
+    int graph = c->seam && c->seam->surface_count == c->surface_count &&
+                sw_seam_graph_check(c->seam, NULL) == SW_OK;
+    return sw_pack_instanced_runtime_bytes(total, graph ? c->seam : NULL, c->surfaces, counts);
 }
 
 sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *out_size,
@@ -233,10 +258,9 @@ sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *ou
     for (int i = 0; i < n; i++)
         if (src[i].size > 0)
             memcpy(buf + table[i].offset, src[i].bytes, (size_t)src[i].size);
-    sw_pack_header h = { .version = SW_PACK_VERSION, .byte_order = SW_PACK_BYTE_ORDER_MARK,
-                         .total_size = total,
-                         .runtime_bytes = sw_pack_runtime_bytes(total, c->meta.patch_count,
-                                                                walk_bytes(c)),
+    sw_pack_header h = { .version = c->instances ? SW_PACK_VERSION_INSTANCED : SW_PACK_VERSION,
+                         .byte_order = SW_PACK_BYTE_ORDER_MARK, .total_size = total,
+                         .runtime_bytes = runtime_bytes(c, total),
                          .section_count = (uint32_t)n, .section_table_offset = HEADER_BYTES };
     memcpy(h.magic, SW_PACK_MAGIC, sizeof h.magic);
     memcpy(buf, &h, sizeof h);

@@ -117,7 +117,7 @@ static int scene_handler(void *user, const char *section, const char *name, cons
 /* ---- loading ------------------------------------------------------------ */
 
 /* base_dir/file, or file itself when it is absolute or there is no base. */
-static sw_status resolve_path(const char *base_dir, const char *file, char out[SCENE_PATH_MAX],
+sw_status scene_resolve_path(const char *base_dir, const char *file, char out[SCENE_PATH_MAX],
                               sw_error *err)
 {
     int n;
@@ -159,7 +159,7 @@ static sw_status load_part(const scene_state *st, const scene_part *part, const 
             status = sw_proc_add(model, &part->proc, err);
     } else {
         char path[SCENE_PATH_MAX];
-        status = resolve_path(base_dir, part->file, path, err);
+        status = scene_resolve_path(base_dir, part->file, path, err);
         if (status == SW_OK)
             status = scene_cache_place(cache, path, part->name, part->color, options, report,
                                        model, err);
@@ -175,8 +175,8 @@ static sw_status load_part(const scene_state *st, const scene_part *part, const 
     return SW_OK;
 }
 
-static sw_status load_view(const scene_state *st, const scene_view *view, sw_model *model,
-                           sw_error *err)
+sw_status scene_load_view(const scene_state *st, const scene_view *view, sw_model *model,
+                         sw_error *err)
 {
     sw_model_viewpoint vp = {.fov_deg = view->fov_deg};
     snprintf(vp.name, sizeof vp.name, "%s", view->name);
@@ -190,7 +190,7 @@ static sw_status load_view(const scene_state *st, const scene_view *view, sw_mod
 }
 
 /* Runs inih over the text; on success st holds every checked section. */
-static sw_status parse_scene(scene_state *st)
+sw_status scene_parse(scene_state *st)
 {
     const char *nul = memchr(st->text, '\0', st->size);
     if (nul) {
@@ -227,13 +227,13 @@ sw_status sw_scene_load_memory_with(const char *text, size_t size, const char *f
         .file_name = file_name ? file_name : "<memory>",
         .err = err,
     };
-    sw_status status = parse_scene(&st);
+    sw_status status = scene_parse(&st);
     scene_cache cache = {0};
     for (size_t i = 0; status == SW_OK && i < st.part_count; i++)
         status = load_part(&st, &st.parts[i], base_dir, options, report, &cache, model, err);
     scene_cache_free(&cache);
     for (size_t i = 0; status == SW_OK && i < st.view_count; i++)
-        status = load_view(&st, &st.views[i], model, err);
+        status = scene_load_view(&st, &st.views[i], model, err);
     if (status == SW_OK && st.up_axis_line)
         model->up_axis = st.up_axis;
     free(st.parts);
@@ -247,6 +247,22 @@ sw_status sw_scene_load_memory(const char *text, size_t size, const char *file_n
     return sw_scene_load_memory_with(text, size, file_name, base_dir, NULL, NULL, model, err);
 }
 
+sw_status scene_base_dir(const char *path, char out[SCENE_PATH_MAX], sw_error *err)
+{
+    out[0] = '\0';
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        return SW_OK;
+    size_t len = (size_t)(slash - path);
+    if (len == 0)
+        len = 1; /* a scene in "/" */
+    if (len >= SCENE_PATH_MAX)
+        return sw_error_set(err, SW_ERR_ARG, "%s: path too long", path);
+    memcpy(out, path, len);
+    out[len] = '\0';
+    return SW_OK;
+}
+
 sw_status sw_scene_load_with(const char *path, const sw_import_options *options,
                              sw_import_report *report, sw_model *model, sw_error *err)
 {
@@ -257,18 +273,11 @@ sw_status sw_scene_load_with(const char *path, const sw_import_options *options,
     sw_status status = sw_read_whole_file(path, &text, &size, err);
     if (status != SW_OK)
         return status;
-    char base_dir[SCENE_PATH_MAX] = "";
-    const char *slash = strrchr(path, '/');
-    if (slash) {
-        size_t len = (size_t)(slash - path);
-        if (len == 0)
-            len = 1; /* a scene in "/" */
-        if (len >= sizeof base_dir) {
-            free(text);
-            return sw_error_set(err, SW_ERR_ARG, "%s: path too long", path);
-        }
-        memcpy(base_dir, path, len);
-        base_dir[len] = '\0';
+    char base_dir[SCENE_PATH_MAX];
+    status = scene_base_dir(path, base_dir, err);
+    if (status != SW_OK) {
+        free(text);
+        return status;
     }
     status = sw_scene_load_memory_with(text, size, path, base_dir, options, report, model, err);
     free(text);

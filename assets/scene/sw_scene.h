@@ -85,6 +85,36 @@ sw_status sw_scene_import_file_with(const char *path, const sw_import_options *o
                                     sw_import_report *report, sw_model *model, sw_error *err);
 sw_status sw_scene_import_file(const char *path, sw_model *model, sw_error *err);
 
+/* The same scene as parts stored once and placed (core/sw_pack_instances.h,
+ * sw_scene_plan.c): each file or generated object the scene names is one
+ * prototype, whatever the number of parts naming it, loaded once in its own
+ * frame (its file's millimetres; a part's scale is left to its placement
+ * when it is uniform and applied to the prototype when it is not, so such
+ * a part shares only with parts of the same scales); each [part] is one
+ * placement of it: the units, the uniform scale, the rotation and the
+ * translation as one similarity transform, its colour and its name. */
+typedef struct sw_scene_placement {
+    size_t prototype;
+    float transform[16];        /* column-major, as sw_pack_instance.transform */
+    double scale;               /* the transform's uniform scale */
+    float color[4];
+    char name[56];
+} sw_scene_placement;
+
+typedef struct sw_scene_plan {
+    sw_model *prototypes;       /* prototype_count models */
+    size_t prototype_count;
+    sw_scene_placement *placements;
+    size_t placement_count;
+    sw_model views;             /* the scene's viewpoints and up axis; no parts */
+} sw_scene_plan;
+
+/* Loads the scene at path as a plan (errors as sw_scene_load_with's); the
+ * caller frees it with sw_scene_plan_free, also after a failure. */
+sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
+                             sw_import_report *report, sw_scene_plan *plan, sw_error *err);
+void sw_scene_plan_free(sw_scene_plan *plan);
+
 /* 1 when path names a scene (.ini), 0 otherwise. */
 int sw_scene_is_scene_path(const char *path);
 

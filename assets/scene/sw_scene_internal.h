@@ -120,6 +120,21 @@ typedef struct scene_cache {
 
 void scene_cache_free(scene_cache *cache);
 
+/* Runs inih over st->text; on success st holds every checked section
+ * (sw_scene.c). */
+sw_status scene_parse(scene_state *st);
+
+/* base_dir/file, or file itself when it is absolute or there is no base. */
+sw_status scene_resolve_path(const char *base_dir, const char *file, char out[SCENE_PATH_MAX],
+                             sw_error *err);
+
+/* The folder of path (relative part files resolve against it), "" for none. */
+sw_status scene_base_dir(const char *path, char out[SCENE_PATH_MAX], sw_error *err);
+
+/* A [view] added to the model's viewpoints, errors at its line. */
+sw_status scene_load_view(const scene_state *st, const scene_view *view, sw_model *model,
+                          sw_error *err);
+
 /* Adds the file's parts to model, untransformed: the first named name and
  * coloured color, any more (an assembly) as the importer named them. The
  * file is imported on first use (report gets that import's report). */

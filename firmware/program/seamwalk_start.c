@@ -35,6 +35,7 @@
 
 #include "seamwalk_program.h"
 #include "sw_heap.h"
+#include "sw_pack_instances.h"
 #include "sw_parts_threads.h"
 #include "sw_png.h"
 #include "sw_thread_name.h"
@@ -302,6 +303,12 @@ static sw_status load(sw_program *rt, sw_error *err)
     sw_parts_runner runner = sw_parts_threads_runner(&threads, (uint32_t)load_helpers());
     st = sw_pack_load_checked(rt->opt.pack_path, &rt->arena, &runner,
                               rt->opt.store_dir ? check_slot : NULL, rt, &rt->pack, err);
+    /* A pack of placed parts is walked as the scene it places. */
+    if (st == SW_OK) {
+        sw_pack stored = rt->pack;
+        if ((st = sw_pack_expand(&stored, &rt->arena, &rt->pack, err)) != SW_OK)
+            sw_error_prefix(err, "%s", rt->opt.pack_path);
+    }
     if (st != SW_OK)
         return st;
     double pack_ms = (sw_program_now_s() - t0) * 1000.0;

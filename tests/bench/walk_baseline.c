@@ -23,6 +23,7 @@
 
 #include "sw_camera_path.h"
 #include "sw_egl_headless.h"
+#include "sw_pack_instances.h"
 #include "sw_rss.h"
 #include "sw_surface_at.h"
 #include "sw_up_axis.h"
@@ -182,7 +183,9 @@ static int load_pack(wb_run *r, sw_error *err)
     if (!(r->block = malloc(bytes)))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes", bytes), 0;
     sw_arena_init(&r->arena, r->block, bytes);
-    if (sw_pack_load(r->opt.pack_path, &r->arena, &r->pack, err) != SW_OK)
+    sw_pack stored;
+    if (sw_pack_load(r->opt.pack_path, &r->arena, &stored, err) != SW_OK ||
+        sw_pack_expand(&stored, &r->arena, &r->pack, err) != SW_OK)
         return 0;
     if (!r->pack.seam_header || !r->pack.patch_domains || !r->pack.meta->patch_count)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: no patches, or no Seam Graph",

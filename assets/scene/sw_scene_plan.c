@@ -1,0 +1,208 @@
+/* SPDX-License-Identifier: MIT */
+/* A scene as prototypes and placements (sw_scene.h, sw_scene_plan_load). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sw_scene.h"
+#include "sw_scene_internal.h"
+#include "sw_text_scan.h"
+
+/* What makes two parts the same prototype. */
+typedef struct proto_key {
+    int generated;
+    char *path;                 /* resolved file, or NULL when generated */
+    sw_proc_params proc;        /* when generated */
+    double shape[3];            /* the scale a non-uniform part bakes in; 1 1 1 otherwise */
+} proto_key;
+
+typedef struct plan_builder {
+    sw_scene_plan *plan;
+    proto_key *keys;
+    size_t capacity, placement_capacity;
+    scene_cache cache;
+} plan_builder;
+
+static int uniform(const double s[3])
+{
+    return s[0] == s[1] && s[1] == s[2];
+}
+
+static int same_key(const proto_key *a, const proto_key *b)
+{
+    if (a->generated != b->generated || memcmp(a->shape, b->shape, sizeof a->shape) != 0)
+        return 0;
+    if (!a->generated)
+        return strcmp(a->path, b->path) == 0;
+    const sw_proc_params *p = &a->proc, *q = &b->proc;
+    return p->kind == q->kind && p->size_mm == q->size_mm && p->height_mm == q->height_mm &&
+           p->holes == q->holes && p->segments == q->segments && p->seed == q->seed;
+}
+
+/* The key of part: its file or object, and the scale it bakes in. */
+static sw_status key_of(const scene_part *part, const char *base_dir, proto_key *key,
+                        sw_error *err)
+{
+    memset(key, 0, sizeof *key);
+    double u = part->units_to_mm;
+    for (int k = 0; k < 3; k++)
+        key->shape[k] = uniform(part->scale) ? 1.0 : part->scale[k] * u;
+    key->generated = part->key_line[PK_GENERATE] != 0;
+    if (key->generated) {
+        key->proc = part->proc;
+        return SW_OK;
+    }
+    char path[SCENE_PATH_MAX];
+    sw_status st = scene_resolve_path(base_dir, part->file, path, err);
+    if (st == SW_OK && !(key->path = strdup(path)))
+        st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    return st;
+}
+
+/* A new prototype for key: the file's parts (or the object) in its own
+ * frame, the baked scale applied. */
+static sw_status add_prototype(plan_builder *b, const scene_part *part, proto_key *key,
+                               const sw_import_options *options, sw_import_report *report,
+                               sw_error *err)
+{
+    sw_scene_plan *plan = b->plan;
+    if (plan->prototype_count == b->capacity) {
+        size_t cap = b->capacity ? 2 * b->capacity : 16;
+        sw_model *models = realloc(plan->prototypes, cap * sizeof *models);
+        proto_key *keys = models ? realloc(b->keys, cap * sizeof *keys) : NULL;
+        if (models)
+            plan->prototypes = models;
+        if (!keys)
+            return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for %zu prototypes", cap);
+        b->keys = keys;
+        b->capacity = cap;
+    }
+    sw_model *m = &plan->prototypes[plan->prototype_count];
+    sw_model_init(m);
+    b->keys[plan->prototype_count] = *key;
+    plan->prototype_count++;
+    key->path = NULL; /* the builder owns it now */
+    float color[4];
+    sw_scene_default_color(plan->prototype_count - 1, color);
+    sw_status st;
+    if (key->generated) {
+        st = sw_model_begin_part(m, sw_proc_kind_name(part->proc.kind), color, err);
+        if (st == SW_OK)
+            st = sw_proc_add(m, &part->proc, err);
+    } else {
+        const char *path = b->keys[plan->prototype_count - 1].path;
+        const char *slash = strrchr(path, '/');
+        char name[56];
+        snprintf(name, sizeof name, "%.44s", slash ? slash + 1 : path);
+        st = scene_cache_place(&b->cache, path, name, color, options, report, m, err);
+    }
+    if (st == SW_OK && !uniform(key->shape)) {
+        sw_mat4 s = sw_mat4_scale(sw_v3(key->shape[0], key->shape[1], key->shape[2]));
+        for (size_t p = 0; p < m->part_count; p++)
+            sw_model_transform_part(m, p, &s);
+    }
+    return st;
+}
+
+/* The placement's transform: translate, rotate, then the uniform scale
+ * (units included) when the prototype does not bake it in. */
+static void placement_transform(const scene_part *part, sw_scene_placement *out)
+{
+    double s = uniform(part->scale) ? part->scale[0] * part->units_to_mm : 1.0;
+    sw_mat4 sm = sw_mat4_scale(sw_v3(s, s, s));
+    sw_mat4 r = sw_mat4_rotate(sw_v3(part->axis[0], part->axis[1], part->axis[2]),
+                               part->angle_deg * (SW_PI / 180.0));
+    sw_mat4 t = sw_mat4_translate(sw_v3(part->translate[0], part->translate[1],
+                                        part->translate[2]));
+    sw_mat4 rs = sw_mat4_mul(&r, &sm);
+    sw_mat4 m = sw_mat4_mul(&t, &rs);
+    for (int k = 0; k < 16; k++)
+        out->transform[k] = (float)m.m[k];
+    out->transform[3] = out->transform[7] = out->transform[11] = 0;
+    out->transform[15] = 1;
+    out->scale = fabs(s);
+}
+
+static sw_status add_placement(plan_builder *b, const scene_part *part, size_t prototype,
+                               sw_error *err)
+{
+    sw_scene_plan *plan = b->plan;
+    if (plan->placement_count == b->placement_capacity) {
+        size_t cap = b->placement_capacity ? 2 * b->placement_capacity : 64;
+        sw_scene_placement *more = realloc(plan->placements, cap * sizeof *more);
+        if (!more)
+            return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for %zu placements", cap);
+        plan->placements = more;
+        b->placement_capacity = cap;
+    }
+    sw_scene_placement *pl = &plan->placements[plan->placement_count++];
+    memset(pl, 0, sizeof *pl);
+    pl->prototype = prototype;
+    placement_transform(part, pl);
+    memcpy(pl->color, part->color, sizeof pl->color);
+    snprintf(pl->name, sizeof pl->name, "%s", part->name);
+    return SW_OK;
+}
+
+static sw_status plan_part(plan_builder *b, const scene_state *st, const scene_part *part,
+                           const char *base_dir, const sw_import_options *options,
+                           sw_import_report *report, sw_error *err)
+{
+    proto_key key;
+    sw_status status = key_of(part, base_dir, &key, err);
+    size_t k = 0;
+    while (status == SW_OK && k < b->plan->prototype_count && !same_key(&b->keys[k], &key))
+        k++;
+    if (status == SW_OK && k == b->plan->prototype_count)
+        status = add_prototype(b, part, &key, options, report, err);
+    free(key.path);
+    if (status == SW_OK)
+        status = add_placement(b, part, k, err);
+    if (status != SW_OK) {
+        long line = part->key_line[part->key_line[PK_FILE] ? PK_FILE : PK_GENERATE];
+        sw_error_prefix(err, "%s:%ld: part '%s'", st->file_name, line, part->name);
+    }
+    return status;
+}
+
+sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
+                             sw_import_report *report, sw_scene_plan *plan, sw_error *err)
+{
+    memset(plan, 0, sizeof *plan);
+    sw_model_init(&plan->views);
+    char *text = NULL, base_dir[SCENE_PATH_MAX];
+    size_t size = 0;
+    sw_status status = path ? sw_read_whole_file(path, &text, &size, err)
+                            : sw_error_set(err, SW_ERR_ARG, "sw_scene_plan_load: path is NULL");
+    if (status == SW_OK)
+        status = scene_base_dir(path, base_dir, err);
+    scene_state st = { .text = text ? text : "", .size = size, .file_name = path, .err = err };
+    if (status == SW_OK)
+        status = scene_parse(&st);
+    plan_builder b = { .plan = plan };
+    for (size_t i = 0; status == SW_OK && i < st.part_count; i++)
+        status = plan_part(&b, &st, &st.parts[i], base_dir, options, report, err);
+    for (size_t i = 0; status == SW_OK && i < st.view_count; i++)
+        status = scene_load_view(&st, &st.views[i], &plan->views, err);
+    if (status == SW_OK && st.up_axis_line)
+        plan->views.up_axis = st.up_axis;
+    for (size_t k = 0; k < plan->prototype_count; k++)
+        free(b.keys[k].path);
+    free(b.keys);
+    scene_cache_free(&b.cache);
+    free(st.parts);
+    free(st.views);
+    free(text);
+    return status;
+}
+
+void sw_scene_plan_free(sw_scene_plan *plan)
+{
+    for (size_t k = 0; k < plan->prototype_count; k++)
+        sw_model_free(&plan->prototypes[k]);
+    free(plan->prototypes);
+    free(plan->placements);
+    sw_model_free(&plan->views);
+    memset(plan, 0, sizeof *plan);
+}

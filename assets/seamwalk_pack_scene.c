@@ -1,0 +1,207 @@
+/* SPDX-License-Identifier: MIT */
+/* seamwalk-pack build of a scene as placed parts (seamwalk_pack_build.h):
+ * each prototype packed on its own, in its own frame, then the packs
+ * merged and placed (assets/pack/sw_pack_merge.h). */
+#include "seamwalk_pack_build.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sw_pack_instances.h"
+#include "sw_pack_merge.h"
+#include "sw_pack_sections.h"
+#include "sw_pack_write.h"
+
+/* The placed scene's box diagonal: every prototype's box moved by each of
+ * its placements. */
+static double placed_diagonal(const sw_scene_plan *plan)
+{
+    sw_box all = sw_box_empty();
+    for (size_t i = 0; i < plan->placement_count; i++) {
+        const sw_scene_placement *pl = &plan->placements[i];
+        sw_box b = sw_model_box(&plan->prototypes[pl->prototype]);
+        if (sw_box_is_empty(&b))
+            continue;
+        for (int c = 0; c < 8; c++) {
+            const float p[3] = { (float)(c & 1 ? b.max.x : b.min.x),
+                                 (float)(c & 2 ? b.max.y : b.min.y),
+                                 (float)(c & 4 ? b.max.z : b.min.z) };
+            float q[3];
+            sw_instance_place(pl->transform, p, q);
+            sw_box_add_point(&all, sw_v3(q[0], q[1], q[2]));
+        }
+    }
+    return sw_box_is_empty(&all) ? 0 : sw_box_diagonal(&all);
+}
+
+/* Prototype k's sewing tolerance, in its own units: the model's own
+ * (sw_seam_default_tolerance), never finer than a millionth of the whole
+ * scene where it is placed largest (or than --seam-tolerance, in the
+ * scene's units), which is what the scene sewn as one model was held to. */
+static double prototype_tolerance(const build_options *o, const sw_scene_plan *plan, size_t k,
+                                  double scene_floor)
+{
+    double scale = 0;
+    for (size_t i = 0; i < plan->placement_count; i++)
+        if (plan->placements[i].prototype == k)
+            scale = fmax(scale, plan->placements[i].scale);
+    if (scale <= 0)
+        scale = 1;
+    if (o->seam_tolerance > 0)
+        return o->seam_tolerance / scale;
+    return fmax(sw_seam_default_tolerance(&plan->prototypes[k], NULL), scene_floor / scale);
+}
+
+static void add_summary(seam_summary *sum, const seam_summary *one)
+{
+    sw_seam_report *a = &sum->sewing;
+    const sw_seam_report *b = &one->sewing;
+    a->loops += b->loops, a->boundary_vertices += b->boundary_vertices;
+    a->boundary_edges += b->boundary_edges, a->seams += b->seams;
+    a->free_edges += b->free_edges, a->nonmanifold_edges += b->nonmanifold_edges;
+    a->tolerance = fmax(a->tolerance, b->tolerance);
+    a->unproven_pieces += b->unproven_pieces, a->clamped += b->clamped;
+    a->gaps_held += b->gaps_held, a->inserted += b->inserted;
+    a->flatten_s += b->flatten_s, a->sew_s += b->sew_s;
+    sum->collapses += one->collapses, sum->simplify_s += one->simplify_s;
+    sum->pinned_surfaces += one->pinned_surfaces;
+    sum->split.cut += one->split.cut, sum->split.pieces += one->split.pieces;
+    sum->split.uncut += one->split.uncut;
+    sw_levels_report *l = &sum->levels;
+    const sw_levels_report *m = &one->levels;
+    l->surfaces += m->surfaces, l->with_levels += m->with_levels, l->levels += m->levels;
+    l->refused += m->refused, l->too_large += m->too_large, l->bad_border += m->bad_border;
+    l->not_finer += m->not_finer, l->vanished += m->vanished, l->seconds += m->seconds;
+    for (int r = 0; r < (int)SW_LEVELS_MAX; r++)
+        l->triangles[r] += m->triangles[r];
+    l->worst_over_bound = fmax(l->worst_over_bound, m->worst_over_bound);
+    sw_cluster_report *c = &sum->clusters;
+    c->surfaces += one->clusters.surfaces, c->clusters += one->clusters.clusters;
+    c->merged += one->clusters.merged, c->wide_alone += one->clusters.wide_alone;
+    c->capped += one->clusters.capped, c->seconds += one->clusters.seconds;
+    sw_part_levels_report *p = &sum->part_levels;
+    const sw_part_levels_report *q = &one->part_levels;
+    p->parts += q->parts, p->pieces += q->pieces, p->cut_parts += q->cut_parts;
+    p->with_levels += q->with_levels, p->levels += q->levels, p->incomplete += q->incomplete;
+    p->not_smaller += q->not_smaller, p->folded += q->folded, p->over_bound += q->over_bound;
+    p->too_large += q->too_large, p->source_triangles += q->source_triangles;
+    for (int r = 0; r < (int)SW_PART_LEVELS_MAX; r++)
+        p->triangles[r] += q->triangles[r];
+    p->worst_over_bound = fmax(p->worst_over_bound, q->worst_over_bound);
+    p->seconds += q->seconds;
+}
+
+/* Every prototype packed apart into bytes[k]. */
+static sw_status pack_prototypes(const build_options *o, progress_context *pc,
+                                 sw_scene_plan *plan, seam_summary *summary, uint8_t **bytes,
+                                 size_t *sizes, sw_error *err)
+{
+    double floor = 1e-6 * placed_diagonal(plan);
+    sw_status st = SW_OK;
+    for (size_t k = 0; st == SW_OK && k < plan->prototype_count; k++) {
+        build_options ok = *o;
+        ok.seam_tolerance = prototype_tolerance(o, plan, k, floor);
+        sw_model *m = &plan->prototypes[k];
+        m->up_axis = plan->views.up_axis;
+        pc->model = m;
+        seam_summary one;
+        st = sw_pack_tool_pack_bytes(&ok, pc, m, NULL, 0, &one, &bytes[k], &sizes[k], err);
+        if (st == SW_OK)
+            add_summary(summary, &one);
+        else
+            sw_error_prefix(err, "prototype %zu of %zu ('%s')", k + 1, plan->prototype_count,
+                            m->part_count ? m->parts[0].name : "");
+    }
+    return st;
+}
+
+static sw_status instances_of(const sw_scene_plan *plan, sw_pack_instance **out, sw_error *err)
+{
+    sw_pack_instance *inst = calloc(plan->placement_count + 1, sizeof *inst);
+    if (!inst)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    for (size_t i = 0; i < plan->placement_count; i++) {
+        const sw_scene_placement *pl = &plan->placements[i];
+        inst[i].prototype = (uint32_t)pl->prototype;
+        memcpy(inst[i].color, pl->color, sizeof inst[i].color);
+        memcpy(inst[i].transform, pl->transform, sizeof inst[i].transform);
+        sw_pack_copy_name(inst[i].name, sizeof inst[i].name, pl->name);
+    }
+    *out = inst;
+    return SW_OK;
+}
+
+/* The prototypes' packs merged, placed, with the scene's viewpoints, up
+ * axis and notes, serialised and read back as the runtime will. */
+static sw_status merge_placed(const sw_scene_plan *plan, uint8_t **bytes, const size_t *sizes,
+                              const sw_pack_import_note *notes, uint32_t note_count,
+                              uint8_t **out, size_t *out_size, sw_error *err)
+{
+    size_t n = plan->prototype_count;
+    sw_pack *packs = calloc(n + 1, sizeof *packs);
+    sw_pack_viewpoint *views = calloc(plan->views.viewpoint_count + 1, sizeof *views);
+    sw_pack_instance *inst = NULL;
+    sw_status st = packs && views ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    for (size_t k = 0; st == SW_OK && k < n; k++)
+        st = sw_pack_open_memory(bytes[k], sizes[k], &packs[k], err);
+    if (st == SW_OK)
+        st = sw_pack_viewpoints_from_model(&plan->views, views, err);
+    if (st == SW_OK)
+        st = instances_of(plan, &inst, err);
+    sw_pack_merged merged;
+    if (st == SW_OK)
+        st = sw_pack_merge(packs, (uint32_t)n, inst, (uint32_t)plan->placement_count, &merged,
+                           err);
+    if (st == SW_OK) {
+        sw_pack_contents *c = &merged.contents;
+        c->viewpoints = views;
+        c->viewpoint_count = (uint32_t)plan->views.viewpoint_count;
+        const sw_pack_orientation orientation = { .up_axis = plan->views.up_axis };
+        c->orientation = &orientation;
+        c->import_notes = notes;
+        c->import_note_count = note_count;
+        st = sw_pack_serialize(c, out, out_size, err);
+        sw_pack_merged_free(&merged);
+    }
+    sw_pack check;
+    if (st == SW_OK && (st = sw_pack_open_memory(*out, *out_size, &check, err)) != SW_OK)
+        sw_error_prefix(err, "the merged pack");
+    free(packs);
+    free(views);
+    free(inst);
+    return st;
+}
+
+sw_status sw_pack_tool_pack_scene(const build_options *o, progress_context *pc,
+                                  sw_scene_plan *plan, const sw_import_report *reports,
+                                  seam_summary *summary, size_t *bytes_out, sw_error *err)
+{
+    size_t n = plan->prototype_count;
+    uint8_t **bytes = calloc(n + 1, sizeof *bytes), *out = NULL;
+    size_t *sizes = calloc(n + 1, sizeof *sizes);
+    sw_pack_import_note *notes = NULL;
+    uint32_t note_count = 0;
+    memset(summary, 0, sizeof *summary);
+    sw_status st = bytes && sizes ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    if (st == SW_OK)
+        st = sw_pack_tool_notes(o, reports, &notes, &note_count, err);
+    if (st == SW_OK)
+        st = pack_prototypes(o, pc, plan, summary, bytes, sizes, err);
+    if (st == SW_OK) {
+        sw_pack_tool_progress(pc, "placing", 0.0);
+        st = merge_placed(plan, bytes, sizes, notes, note_count, &out, bytes_out, err);
+    }
+    if (st == SW_OK) {
+        sw_pack_tool_progress(pc, "writing", 0.0);
+        st = sw_write_file_atomic(o->out_path, out, *bytes_out, err);
+    }
+    for (size_t k = 0; bytes && k < n; k++)
+        free(bytes[k]);
+    free(bytes);
+    free(sizes);
+    free(notes);
+    free(out);
+    return st;
+}

@@ -1,0 +1,67 @@
+/* SPDX-License-Identifier: MIT */
+/* Packs of placed parts (version 2, PACK_FORMAT.md "Prototypes and
+ * instances"): a part used many times in a scene is stored once, as a
+ * prototype (a run of every index space that indexes nothing outside
+ * itself), and each placement is an instance: the prototype, a similarity
+ * transform (rotation, uniform scale, translation), a colour and a name.
+ *
+ * The reader maps and checks the two sections (sw_pack_map_instances).
+ * sw_pack_expand then makes the placed scene as an ordinary pack view: each
+ * instance's parts, patches, Seam Graph, levels and part levels moved into
+ * place, in arena memory. The trims, the levels' indices and chains and
+ * the part levels' indices are parametric or local, so the view shares
+ * them with the prototypes instead of copying them.
+ *
+ * This expansion copies every instance's positions: memory grows with the
+ * instance count. It is the step before a walk that keeps per instance only
+ * what the view needs. The same moving of a run of records, without a
+ * transform, joins packs built apart (sw_pack_block.h). */
+#ifndef SW_PACK_INSTANCES_H
+#define SW_PACK_INSTANCES_H
+
+#include <stdint.h>
+
+#include "sw_arena.h"
+#include "sw_error.h"
+#include "sw_pack.h"
+
+/* Maps PROTOTYPES and INSTANCES into out (called last by the reader, on a
+ * pack whose other sections are valid) and checks every rule: the runs
+ * tile each space, every record of a prototype indexes only its own runs,
+ * every transform is a similarity without a mirror that keeps the placed
+ * coordinates finite, and the placed scene's counts fit their indices. */
+sw_status sw_pack_map_instances(const uint8_t *data, sw_pack *out, sw_error *err);
+
+/* A pack's record counts per space, as stored. */
+void sw_pack_space_counts(const sw_pack *pack, uint64_t counts[SW_SPACE_COUNT]);
+
+/* Counts of the placed scene per space: instance k adds its prototype's. */
+void sw_pack_placed_counts(const sw_pack_prototype *prototypes, const sw_pack_instance *instances,
+                           uint32_t instance_count, uint64_t counts[SW_SPACE_COUNT]);
+
+/* Arena bytes sw_pack_expand takes for a placed scene of those counts,
+ * worst case (alignment included). */
+uint64_t sw_pack_expand_bytes(const uint64_t counts[SW_SPACE_COUNT]);
+
+/* runtime_bytes of an instanced pack of total_size bytes: the pack, the
+ * expansion and the walk over the placed scene (stored: the pack's own
+ * Seam Graph and surfaces, whose largest surface sizes the walk's buffers;
+ * NULL graph: no walk). */
+uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_graph *stored,
+                                         const sw_pack_surface *surfaces,
+                                         const uint64_t counts[SW_SPACE_COUNT]);
+
+/* The placed scene of a validated pack as a view in out: everything the
+ * walk reads (the header, the section table, viewpoints, orientation and
+ * notes stay the pack's). A pack without instances is copied as it is
+ * (*out = *pack), taking nothing. SW_ERR_NO_MEMORY when the arena is
+ * short of sw_pack_expand_bytes. */
+sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_error *err);
+
+/* Where point p of a prototype lands under an instance's transform (the
+ * expansion's arithmetic: doubles, rounded once), and the transform's
+ * scale. */
+void sw_instance_place(const float transform[16], const float p[3], float out[3]);
+double sw_instance_scale(const float transform[16]);
+
+#endif
