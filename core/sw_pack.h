@@ -264,9 +264,12 @@ enum sw_pack_space {
 /* Section PROTOTYPES: the parts stored once. Prototype k holds, in every
  * space, the run first[s] .. first[s] + count[s]; the runs tile each space
  * in prototype order, and a prototype's records index only its own runs. */
-typedef struct sw_pack_prototype {    /* 208 bytes */
+typedef struct sw_pack_prototype {    /* 216 bytes */
     uint32_t first[SW_SPACE_COUNT];
     uint32_t count[SW_SPACE_COUNT];
+    float seam_tolerance;             /* its Seam Graph's sewing tolerance, in its own units
+                                         (the SEAM record holds the largest); 0 without one */
+    uint32_t reserved;                /* zero */
 } sw_pack_prototype;
 
 /* Section INSTANCES: where each prototype is placed, and as what. */

@@ -137,10 +137,14 @@ static sw_status take_arrays(placed *d, const uint64_t counts[SW_SPACE_COUNT], s
 static sw_pack_move move_for(const sw_pack *pack, const placed *d, const sw_pack_prototype *p,
                              const sw_pack_instance *inst)
 {
+    int moved = 0;
+    for (int k = 0; k < 16; k++)
+        moved |= inst->transform[k] != (k % 5 == 0 ? 1.0f : 0.0f);
     sw_pack_move m = { .src_originals = pack->seam.original_count,
                        .dst_originals = (uint32_t)d->n[A_VERTICES] -
                                         (uint32_t)d->n[A_COLLAPSES],
-                       .transform = inst->transform, .scale = sw_instance_scale(inst->transform) };
+                       .transform = moved ? inst->transform : NULL,
+                       .scale = moved ? sw_instance_scale(inst->transform) : 1 };
     for (int s = 0; s < SW_SPACE_COUNT; s++)
         m.shift[s] = shared_space(s) ? 0 : (int64_t)d->at[s] - (int64_t)p->first[s];
     return m;
@@ -377,7 +381,7 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
         if (pack->seam_header)
             place_seam(pack, &d, p, &m);
         place_levels(pack, &d, p, &m);
-        float t = (float)(pack->seam.tolerance * m.scale);
+        float t = (float)(p->seam_tolerance * m.scale);
         tolerance = t > tolerance ? t : tolerance;
         for (int s = 0; s < SW_SPACE_COUNT; s++)
             d.at[s] += shared_space(s) ? 0 : p->count[s];

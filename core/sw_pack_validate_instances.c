@@ -10,7 +10,8 @@
 #include "sw_pack_instances.h"
 #include "sw_pack_validate.h"
 
-_Static_assert(sizeof(sw_pack_prototype) == 208, "sw_pack_prototype");
+_Static_assert(sizeof(sw_pack_prototype) == 216, "sw_pack_prototype");
+_Static_assert(offsetof(sw_pack_prototype, seam_tolerance) == 208, "sw_pack_prototype.tolerance");
 _Static_assert(sizeof(sw_pack_instance) == 144, "sw_pack_instance");
 _Static_assert(offsetof(sw_pack_instance, color) == 8, "sw_pack_instance.color");
 _Static_assert(offsetof(sw_pack_instance, transform) == 24, "sw_pack_instance.transform");
@@ -27,10 +28,18 @@ static sw_status check_tiling(const sw_pack *pack, sw_error *err)
 {
     uint64_t total[SW_SPACE_COUNT];
     sw_pack_space_counts(pack, total);
-    for (uint32_t k = 0; k < pack->prototype_count; k++)
-        if (pack->prototypes[k].count[SW_SPACE_PARTS] == 0)
+    for (uint32_t k = 0; k < pack->prototype_count; k++) {
+        const sw_pack_prototype *p = &pack->prototypes[k];
+        if (p->count[SW_SPACE_PARTS] == 0)
             return sw_error_set(err, SW_ERR_FORMAT, "PROTOTYPES[%u]: no part, expected at "
                                 "least one", (unsigned)k);
+        if (!(p->seam_tolerance >= 0 && p->seam_tolerance <= pack->seam.tolerance) ||
+            p->reserved != 0)
+            return sw_error_set(err, SW_ERR_FORMAT, "PROTOTYPES[%u]: seam_tolerance %g, "
+                                "reserved %u; expected 0 to the SEAM record's %g, and 0",
+                                (unsigned)k, (double)p->seam_tolerance, (unsigned)p->reserved,
+                                (double)pack->seam.tolerance);
+    }
     for (int s = 0; s < SW_SPACE_COUNT; s++) {
         uint64_t next = 0;
         for (uint32_t k = 0; k < pack->prototype_count; k++) {

@@ -16,6 +16,10 @@ endif()
 sw_add_test(test_pack SOURCES test_pack.c LIBS sw_assets sw_core)
 sw_add_test(test_pack_trim SOURCES test_pack_trim.c LIBS sw_assets sw_core)
 sw_add_test(test_pack_write SOURCES test_pack_write.c LIBS sw_assets sw_core)
+# Packs of placed parts: merged from packs built apart, placed, expanded
+# (checked point by point and read back as an ordinary pack), and one
+# refusal per rule of PROTOTYPES and INSTANCES.
+sw_add_test(test_pack_instances SOURCES test_pack_instances.c LIBS sw_assets sw_core)
 # seamwalk-pack's progress line (a pseudo-terminal stands in for the user's).
 sw_add_test(test_progress SOURCES test_progress.c LIBS sw_assets sw_core)
 # The up axis: names, the ORIENTATION section, each input's default, the

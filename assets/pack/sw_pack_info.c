@@ -32,6 +32,11 @@ static void print_notes_text(FILE *out, const sw_pack *pack)
 
 static void json_string(FILE *out, const char *s, size_t max);
 
+void sw_pack_json_string(FILE *out, const char *s, size_t max)
+{
+    json_string(out, s, max);
+}
+
 /* "import_notes": [...], always (empty for a clean import). */
 static void json_notes(FILE *out, const sw_pack *pack)
 {
@@ -367,8 +372,10 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
         sw_fput_escaped(out, pack->viewpoints[i].name, sizeof pack->viewpoints[i].name);
     }
     fputc('\n', out);
+    sw_pack_print_instances_text(out, pack);
     print_sections_text(out, pack);
-    const float *lo = m->box_min, *hi = m->box_max;
+    float lo[3], hi[3];
+    sw_pack_placed_box(pack, lo, hi);
     double dx = (double)hi[0] - lo[0], dy = (double)hi[1] - lo[1], dz = (double)hi[2] - lo[2];
     fprintf(out, "  %-16s %s (model tolerance %g)\n", "units", sw_pack_units_name(m->units),
             m->model_tolerance);
@@ -548,17 +555,19 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack,
     sw_pack_print_super_json(out, pack, &derived->supers);
     sw_pack_print_part_levels_json(out, pack);
     json_viewpoints(out, pack);
+    sw_pack_print_instances_json(out, pack);
     json_sections(out, pack);
     fprintf(out, "  \"units\": \"%s\",\n  \"model_tolerance\": %.9g,\n",
             sw_pack_units_name(m->units), m->model_tolerance);
     fprintf(out, "  \"up_axis\": \"%s\",\n", sw_up_axis_name(sw_pack_up_axis(pack)));
     json_notes(out, pack);
+    float lo[3], hi[3];
+    sw_pack_placed_box(pack, lo, hi);
     fprintf(out, "  \"box\": {\"min\": ");
-    json_floats(out, m->box_min, 3);
+    json_floats(out, lo, 3);
     fprintf(out, ", \"max\": ");
-    json_floats(out, m->box_max, 3);
-    double dx = (double)m->box_max[0] - m->box_min[0], dy = (double)m->box_max[1] - m->box_min[1],
-           dz = (double)m->box_max[2] - m->box_min[2];
+    json_floats(out, hi, 3);
+    double dx = (double)hi[0] - lo[0], dy = (double)hi[1] - lo[1], dz = (double)hi[2] - lo[2];
     fprintf(out, "},\n  \"model_size\": %.9g,\n", sqrt(dx * dx + dy * dy + dz * dz));
     fprintf(out, "  \"runtime_bytes\": %" PRIu64 "\n}\n", pack->header->runtime_bytes);
 }

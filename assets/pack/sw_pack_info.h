@@ -115,4 +115,16 @@ const char *sw_pack_units_name(uint32_t units);
 sw_status sw_pack_print_info(FILE *out, const char *path, const sw_pack *pack, int json,
                              sw_error *err);
 
+/* The placed parts (sw_pack_info_instances.c): the box of the placed
+ * scene (the stored box for a pack without instances), and the
+ * prototypes, instances and placed counts, as text and as JSON keys
+ * (prototype_count, instance_count, placed, prototypes, instances; the
+ * counts 0 and nothing else without instances). */
+void sw_pack_placed_box(const sw_pack *pack, float lo[3], float hi[3]);
+void sw_pack_print_instances_text(FILE *out, const sw_pack *pack);
+void sw_pack_print_instances_json(FILE *out, const sw_pack *pack);
+
+/* s (at most max bytes) as a JSON string. */
+void sw_pack_json_string(FILE *out, const char *s, size_t max);
+
 #endif

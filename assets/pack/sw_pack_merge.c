@@ -315,6 +315,7 @@ sw_status sw_pack_merge(const sw_pack *packs, uint32_t count, const sw_pack_inst
             proto->first[s] = (uint32_t)base[s];
             proto->count[s] = (uint32_t)n[s];
         }
+        proto->seam_tolerance = p->seam_header ? p->seam.tolerance : 0;
         move_model(out, p, &mv, base);
         if (p->seam_header)
             move_seam(out, p, &mv, base);

@@ -1,0 +1,115 @@
+/* SPDX-License-Identifier: MIT */
+/* The placed parts' part of `seamwalk-pack info` (sw_pack_info.h): how many
+ * prototypes are stored and how often each is placed, what the placed scene
+ * holds (what the runtime expands and walks) and the bytes per placed part
+ * and patch, so sharing shows in figures. */
+#include <inttypes.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "sw_pack_info.h"
+#include "sw_pack_instances.h"
+
+void sw_pack_placed_box(const sw_pack *pack, float lo[3], float hi[3])
+{
+    if (!pack->instances) {
+        for (int k = 0; k < 3; k++)
+            lo[k] = pack->meta->box_min[k], hi[k] = pack->meta->box_max[k];
+        return;
+    }
+    for (int k = 0; k < 3; k++)
+        lo[k] = INFINITY, hi[k] = -INFINITY;
+    /* The points moved as the runtime moves them, so the box is the one
+     * the walk starts from (a turned box's corners would be larger). */
+    for (uint32_t i = 0; i < pack->instance_count; i++) {
+        const sw_pack_instance *inst = &pack->instances[i];
+        const sw_pack_prototype *p = &pack->prototypes[inst->prototype];
+        for (uint32_t c = 0; c < p->count[SW_SPACE_CONTROL]; c++) {
+            float w[3];
+            sw_instance_place(inst->transform,
+                              &pack->control[4 * ((size_t)p->first[SW_SPACE_CONTROL] + c)], w);
+            for (int k = 0; k < 3; k++)
+                lo[k] = fminf(lo[k], w[k]), hi[k] = fmaxf(hi[k], w[k]);
+        }
+    }
+    if (lo[0] > hi[0])
+        for (int k = 0; k < 3; k++)
+            lo[k] = hi[k] = 0;
+}
+
+/* How many instances place each prototype (uses[prototype_count]). */
+static uint32_t *count_uses(const sw_pack *pack)
+{
+    uint32_t *uses = calloc((size_t)pack->prototype_count + 1, sizeof *uses);
+    for (uint32_t i = 0; uses && i < pack->instance_count; i++)
+        uses[pack->instances[i].prototype]++;
+    return uses;
+}
+
+void sw_pack_print_instances_text(FILE *out, const sw_pack *pack)
+{
+    if (!pack->instances)
+        return;
+    uint64_t c[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, c);
+    fprintf(out, "  %-16s %" PRIu32 " of %" PRIu32 " prototypes; placed: %" PRIu64 " parts, %"
+            PRIu64 " patches, %" PRIu64 " surfaces, %" PRIu64 " seam vertices\n", "instances",
+            pack->instance_count, pack->prototype_count, c[SW_SPACE_PARTS], c[SW_SPACE_PATCHES],
+            c[SW_SPACE_SURFACES], c[SW_SPACE_SEAM_ORIGINALS] + c[SW_SPACE_SEAM_COLLAPSES]);
+    fprintf(out, "  %-16s %.0f bytes per placed part, %.1f per placed patch\n", "",
+            (double)pack->header->total_size / pack->instance_count,
+            c[SW_SPACE_PATCHES] ? (double)pack->header->total_size / c[SW_SPACE_PATCHES] : 0.0);
+    uint32_t *uses = count_uses(pack);
+    for (uint32_t k = 0; uses && k < pack->prototype_count && k < 12; k++) {
+        const sw_pack_prototype *p = &pack->prototypes[k];
+        const sw_pack_part *first = &pack->parts[p->first[SW_SPACE_PARTS]];
+        fprintf(out, "    prototype %-4" PRIu32 " ", k);
+        sw_fput_escaped(out, first->name, sizeof first->name);
+        fprintf(out, "%s: %" PRIu32 " patches, placed %" PRIu32 " times\n",
+                p->count[SW_SPACE_PARTS] > 1 ? " ..." : "", p->count[SW_SPACE_PATCHES], uses[k]);
+    }
+    if (pack->prototype_count > 12)
+        fprintf(out, "    ... %" PRIu32 " more prototypes\n", pack->prototype_count - 12);
+    free(uses);
+}
+
+void sw_pack_print_instances_json(FILE *out, const sw_pack *pack)
+{
+    if (!pack->instances) {
+        fprintf(out, "  \"prototype_count\": 0,\n  \"instance_count\": 0,\n");
+        return;
+    }
+    uint64_t c[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, c);
+    fprintf(out, "  \"prototype_count\": %" PRIu32 ",\n  \"instance_count\": %" PRIu32 ",\n",
+            pack->prototype_count, pack->instance_count);
+    fprintf(out, "  \"placed\": {\"parts\": %" PRIu64 ", \"patches\": %" PRIu64 ", \"surfaces\": %"
+            PRIu64 ", \"seam_vertices\": %" PRIu64 ", \"level_vertices\": %" PRIu64
+            ", \"part_level_vertices\": %" PRIu64 "},\n", c[SW_SPACE_PARTS],
+            c[SW_SPACE_PATCHES], c[SW_SPACE_SURFACES],
+            c[SW_SPACE_SEAM_ORIGINALS] + c[SW_SPACE_SEAM_COLLAPSES], c[SW_SPACE_LEVEL_VERTICES],
+            c[SW_SPACE_PART_LEVEL_VERTICES]);
+    uint32_t *uses = count_uses(pack);
+    fprintf(out, "  \"prototypes\": [");
+    for (uint32_t k = 0; uses && k < pack->prototype_count; k++) {
+        const sw_pack_prototype *p = &pack->prototypes[k];
+        fprintf(out, "%s\n    {\"first_part\": %" PRIu32 ", \"parts\": %" PRIu32 ", \"patches\": %"
+                PRIu32 ", \"seam_vertices\": %" PRIu64 ", \"instances\": %" PRIu32 "}",
+                k ? "," : "", p->first[SW_SPACE_PARTS], p->count[SW_SPACE_PARTS],
+                p->count[SW_SPACE_PATCHES],
+                (uint64_t)p->count[SW_SPACE_SEAM_ORIGINALS] + p->count[SW_SPACE_SEAM_COLLAPSES],
+                uses[k]);
+    }
+    fprintf(out, "\n  ],\n  \"instances\": [");
+    for (uint32_t i = 0; i < pack->instance_count; i++) {
+        const sw_pack_instance *inst = &pack->instances[i];
+        fprintf(out, "%s\n    {\"prototype\": %" PRIu32 ", \"name\": ", i ? "," : "",
+                inst->prototype);
+        sw_pack_json_string(out, inst->name, sizeof inst->name);
+        fprintf(out, ", \"scale\": %.9g, \"translation\": [%.9g, %.9g, %.9g]}",
+                sw_instance_scale(inst->transform), inst->transform[12], inst->transform[13],
+                inst->transform[14]);
+    }
+    fprintf(out, "\n  ],\n");
+    free(uses);
+}

@@ -1,0 +1,314 @@
+/* SPDX-License-Identifier: MIT */
+/* Packs of placed parts (core/sw_pack_instances.h, assets/pack/sw_pack_merge.h):
+ * packs built apart merged into prototypes, placed by instances, read back
+ * and expanded into the scene the walk draws; the expansion checked against
+ * the prototypes point by point and, independently, by writing the
+ * expanded view out as an ordinary pack and reading it back with every rule
+ * of the reader; and every rule of the two sections refused with its
+ * message. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sw_test.h"
+
+#include "pack_sample.h"
+#include "sw_pack_instances.h"
+#include "sw_pack_merge.h"
+#include "sw_pack_write.h"
+#include "sw_seam_check.h"
+
+/* The sample with every group (pack_sample.h), serialised. */
+static uint8_t *full_sample(size_t *size)
+{
+    sample_levels l;
+    sample_supers k;
+    sample_part_levels pl;
+    make_sample_levels(&l);
+    make_sample_supers(&k);
+    make_sample_part_levels(&pl);
+    return serialize_sample_all(&l.view, &k.view, &pl.view, size);
+}
+
+/* A rotation of angle about z, scale s, then a translation. */
+static void similarity(float t[16], double angle, double s, float tx, float ty, float tz)
+{
+    memset(t, 0, 16 * sizeof *t);
+    double c = cos(angle) * s, n = sin(angle) * s;
+    t[0] = (float)c, t[1] = (float)n, t[4] = (float)-n, t[5] = (float)c, t[10] = (float)s;
+    t[12] = tx, t[13] = ty, t[14] = tz, t[15] = 1;
+}
+
+static sw_pack_instance instance(uint32_t prototype, double angle, double s, float tx,
+                                 const char *name)
+{
+    sw_pack_instance i = { .prototype = prototype, .color = { 0.5f, 0.25f, 1, 1 } };
+    similarity(i.transform, angle, s, tx, 2, -3);
+    snprintf(i.name, sizeof i.name, "%s", name);
+    return i;
+}
+
+enum { PLACED = 3 };
+
+/* Two prototypes (the sample twice, opened from its bytes) placed three
+ * times, serialised into *out. */
+static sw_status placed_sample(const sw_pack_instance *inst, uint32_t n, uint8_t **out,
+                               size_t *out_size, sw_error *err)
+{
+    size_t size = 0;
+    uint8_t *bytes = full_sample(&size);
+    sw_pack packs[2];
+    sw_status st = sw_pack_open_memory(bytes, size, &packs[0], err);
+    packs[1] = packs[0];
+    sw_pack_merged m;
+    if (st == SW_OK)
+        st = sw_pack_merge(packs, 2, inst, n, &m, err);
+    if (st == SW_OK) {
+        st = sw_pack_serialize(&m.contents, out, out_size, err);
+        sw_pack_merged_free(&m);
+    }
+    free(bytes);
+    return st;
+}
+
+static void three(sw_pack_instance inst[PLACED])
+{
+    inst[0] = instance(0, 0, 1, 0, "first");
+    inst[1] = instance(1, 0.7, 2.5, 10, "second");
+    inst[2] = instance(0, -1.9, 0.25, -4, "third");
+}
+
+/* The expanded view as an ordinary pack's contents. */
+static sw_pack_contents contents_of(const sw_pack *p)
+{
+    return (sw_pack_contents){
+        .meta = *p->meta, .parts = p->parts, .patches = p->patches, .control = p->control,
+        .adjacency = p->adjacency, .surfaces = p->surfaces, .surface_count = p->surface_count,
+        .trim_loops = p->trim_loops, .trim_loop_count = p->trim_loop_count,
+        .trim_curves = p->trim_curves, .trim_curve_count = p->trim_curve_count,
+        .trim_data = p->trim_data, .trim_data_count = p->trim_data_count,
+        .patch_domains = p->patch_domains, .trim_masks = p->trim_masks,
+        .trim_mask_count = p->trim_mask_count, .part_transforms = p->part_transforms,
+        .seam = &p->seam, .levels = &p->levels, .supers = &p->supers,
+        .part_levels = &p->part_levels };
+}
+
+static void test_merge_expand_and_read_back(void)
+{
+    sw_pack_instance inst[PLACED];
+    three(inst);
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(placed_sample(inst, PLACED, &bytes, &size, &err) == SW_OK, "%s", err.message);
+    sw_pack pack;
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.header->version == SW_PACK_VERSION_INSTANCED);
+    SW_CHECK(pack.prototype_count == 2 && pack.instance_count == PLACED);
+    SW_CHECK(pack.meta->part_count == 4 && pack.surface_count == 4);
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack.prototypes, pack.instances, pack.instance_count, counts);
+    size_t arena_bytes = (size_t)sw_pack_expand_bytes(counts);
+    void *block = malloc(arena_bytes);
+    sw_arena arena;
+    sw_arena_init(&arena, block, arena_bytes);
+    sw_pack placed;
+    SW_CHECK_MSG(sw_pack_expand(&pack, &arena, &placed, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(arena.used <= arena_bytes);
+    SW_CHECK(placed.meta->part_count == 6 && placed.surface_count == 6);
+    SW_CHECK(placed.instances == NULL && placed.prototypes == NULL);
+    /* Each placed control point is its prototype's, moved. */
+    const uint32_t per = pack.prototypes[0].count[SW_SPACE_CONTROL];
+    for (uint32_t i = 0; i < PLACED; i++)
+        for (uint32_t c = 0; c < per; c++) {
+            float want[3];
+            sw_instance_place(inst[i].transform, &pack.control[4 * c], want);
+            const float *got = &placed.control[4 * ((size_t)i * per + c)];
+            SW_CHECK(got[0] == want[0] && got[1] == want[1] && got[2] == want[2]);
+            SW_CHECK(got[3] == pack.control[4 * c + 3]);
+        }
+    /* Names and colours are the instances'; a prototype of two parts names
+     * both after its instance. */
+    SW_CHECK(strcmp(placed.parts[2].name, "second/") == 0 ||
+             strncmp(placed.parts[2].name, "second/", 7) == 0);
+    SW_CHECK(placed.parts[4].color[2] == 1.0f);
+    /* Errors scale with the instance. */
+    const sw_seam_graph *g = &placed.seam, *pg = &pack.seam;
+    uint32_t made = pg->collapse_count / 2;
+    SW_CHECK(fabsf(g->vertices[g->original_count + made].error -
+                   pg->vertices[pg->original_count].error * 2.5f) <=
+             1e-6f * (1 + pg->vertices[pg->original_count].error));
+    SW_CHECK(sw_seam_graph_check(g, &err) == SW_OK);
+    /* The sewing tolerance is each prototype's at its instance's scale:
+     * the largest, not the stored graph's largest at the largest scale. */
+    SW_CHECK(pack.prototypes[1].seam_tolerance == pg->tolerance);
+    SW_CHECK_NEAR(g->tolerance, pg->tolerance * 2.5, 1e-6 * pg->tolerance);
+    /* Independently: the expanded view written as an ordinary pack passes
+     * every rule of the reader. */
+    sw_pack_contents c = contents_of(&placed);
+    uint8_t *flat = NULL;
+    size_t flat_size = 0;
+    SW_CHECK_MSG(sw_pack_serialize(&c, &flat, &flat_size, &err) == SW_OK, "%s", err.message);
+    sw_pack again;
+    SW_CHECK_MSG(sw_pack_open_memory(flat, flat_size, &again, &err) == SW_OK, "%s", err.message);
+    free(flat);
+    free(block);
+    free(bytes);
+}
+
+/* Placed at the identity, a prototype's copy is its records, moved in the
+ * index spaces only. */
+static void test_identity_is_a_copy(void)
+{
+    sw_pack_instance inst[2] = { instance(0, 0, 1, 0, "a"), instance(1, 0, 1, 0, "b") };
+    for (int i = 0; i < 2; i++)
+        similarity(inst[i].transform, 0, 1, 0, 0, 0);
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(placed_sample(inst, 2, &bytes, &size, &err) == SW_OK, "%s", err.message);
+    sw_pack pack, placed;
+    SW_CHECK(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK);
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack.prototypes, pack.instances, pack.instance_count, counts);
+    size_t arena_bytes = (size_t)sw_pack_expand_bytes(counts);
+    void *block = malloc(arena_bytes);
+    sw_arena arena;
+    sw_arena_init(&arena, block, arena_bytes);
+    SW_CHECK(sw_pack_expand(&pack, &arena, &placed, &err) == SW_OK);
+    SW_CHECK(memcmp(placed.control, pack.control,
+                    (size_t)pack.meta->control_count * 4 * sizeof(float)) == 0);
+    SW_CHECK(memcmp(placed.seam.slots, pack.seam.slots,
+                    (size_t)pack.seam.slot_count * sizeof(sw_seam_slot)) == 0);
+    SW_CHECK(memcmp(placed.seam.collapses, pack.seam.collapses,
+                    (size_t)pack.seam.collapse_count * sizeof(sw_seam_collapse)) == 0);
+    SW_CHECK(memcmp(placed.levels.vertices, pack.levels.vertices,
+                    (size_t)pack.levels.vertex_count * sizeof(sw_level_vertex)) == 0);
+    for (uint32_t p = 0; p < pack.meta->patch_count; p++)
+        SW_CHECK(memcmp(&placed.patches[p], &pack.patches[p], sizeof(sw_pack_patch)) == 0);
+    free(block);
+    free(bytes);
+}
+
+/* ---- refused packs -------------------------------------------------------- */
+
+static sw_pack_instance *instances_at(uint8_t *bytes)
+{
+    int e = entry_of(bytes, SW_SECTION_INSTANCES);
+    return (sw_pack_instance *)(bytes + table_of(bytes)[e].offset);
+}
+
+static sw_pack_prototype *prototypes_at(uint8_t *bytes)
+{
+    int e = entry_of(bytes, SW_SECTION_PROTOTYPES);
+    return (sw_pack_prototype *)(bytes + table_of(bytes)[e].offset);
+}
+
+typedef void (*fault)(uint8_t *bytes);
+
+static void expect_refused(fault f, const char *message, const char *what)
+{
+    sw_pack_instance inst[PLACED];
+    three(inst);
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK(placed_sample(inst, PLACED, &bytes, &size, &err) == SW_OK);
+    f(bytes);
+    reseal_all(bytes);
+    sw_pack pack;
+    sw_status st = sw_pack_open_memory(bytes, size, &pack, &err);
+    SW_CHECK_MSG(st != SW_OK, "%s: accepted", what);
+    SW_CHECK_MSG(strstr(err.message, message) != NULL, "%s: '%s', expected '%s'", what,
+                 err.message, message);
+    free(bytes);
+}
+
+static void bad_prototype(uint8_t *b) { instances_at(b)[1].prototype = 2; }
+static void bad_flags(uint8_t *b) { instances_at(b)[0].flags = 1; }
+static void bad_color(uint8_t *b) { instances_at(b)[2].color[1] = 1.5f; }
+static void bad_name(uint8_t *b) { memset(instances_at(b)[0].name, 'x', 56); }
+static void shear(uint8_t *b) { instances_at(b)[1].transform[4] += 0.5f; }
+static void mirror(uint8_t *b) { instances_at(b)[1].transform[10] *= -1; }
+static void zero_scale(uint8_t *b)
+{
+    float *t = instances_at(b)[0].transform;
+    for (int k = 0; k < 12; k++)
+        t[k] = 0;
+}
+static void not_finite(uint8_t *b) { instances_at(b)[2].transform[13] = NAN; }
+static void last_row(uint8_t *b) { instances_at(b)[2].transform[7] = 0.5f; }
+static void too_far(uint8_t *b) { instances_at(b)[0].transform[12] = 1e30f; }
+static void gap(uint8_t *b) { prototypes_at(b)[1].first[SW_SPACE_PATCHES] += 1; }
+static void short_run(uint8_t *b) { prototypes_at(b)[1].count[SW_SPACE_LEVEL_VERTICES] -= 1; }
+static void no_parts(uint8_t *b)
+{
+    sw_pack_prototype *p = prototypes_at(b);
+    p[1].first[SW_SPACE_PARTS] = 4, p[0].count[SW_SPACE_PARTS] = 4, p[1].count[SW_SPACE_PARTS] = 0;
+}
+/* Prototype 1's first level draws prototype 0's vertices (the same count):
+ * whole to the reader's other rules, not its own. */
+static void cross_reference(uint8_t *b)
+{
+    int e = entry_of(b, SW_SECTION_LEVEL_RECORDS);
+    sw_level *levels = (sw_level *)(b + table_of(b)[e].offset);
+    levels[prototypes_at(b)[1].first[SW_SPACE_LEVELS]].first_vertex = 0;
+}
+static void loose(uint8_t *b) { prototypes_at(b)[0].seam_tolerance *= 2; }
+static void runtime_bytes(uint8_t *b) { header_of(b)->runtime_bytes += 64; }
+static void old_version(uint8_t *b) { header_of(b)->version = SW_PACK_VERSION; }
+static void no_instances(uint8_t *b)
+{
+    table_of(b)[entry_of(b, SW_SECTION_INSTANCES)].type = 200;   /* unknown: skipped */
+}
+
+static void test_refused(void)
+{
+    expect_refused(bad_prototype, "INSTANCES[1].prototype: 2, expected < 2", "prototype");
+    expect_refused(bad_flags, "INSTANCES[0].flags", "flags");
+    expect_refused(bad_color, "INSTANCES[2].color[1]", "colour");
+    expect_refused(bad_name, "INSTANCES[0].name: not NUL-terminated", "name");
+    expect_refused(shear, "INSTANCES[1].transform: expected a rotation", "shear");
+    expect_refused(mirror, "INSTANCES[1].transform: expected a rotation", "mirror");
+    expect_refused(zero_scale, "INSTANCES[0].transform: expected a rotation", "zero scale");
+    expect_refused(not_finite, "INSTANCES[2].transform[13]", "NaN");
+    expect_refused(last_row, "INSTANCES[2].transform: its last row", "last row");
+    expect_refused(too_far, "INSTANCES[0]: places points", "too far");
+    expect_refused(gap, "PROTOTYPES[1]: its patches start at", "gap");
+    expect_refused(short_run, "PROTOTYPES: the runs of level vertices end", "short run");
+    expect_refused(no_parts, "PROTOTYPES[1]: no part", "no parts");
+    expect_refused(cross_reference, "first_vertex of prototype 1's levels record", "cross");
+    expect_refused(loose, "PROTOTYPES[0]: seam_tolerance", "tolerance");
+    expect_refused(runtime_bytes, "header.runtime_bytes", "runtime bytes");
+    expect_refused(old_version, "header.version: 1 with PROTOTYPES and INSTANCES", "version");
+    expect_refused(no_instances, "PROTOTYPES without INSTANCES", "alone");
+}
+
+/* Inputs the merge cannot join are named. */
+static void test_merge_refuses(void)
+{
+    size_t size = 0, plain_size = 0;
+    uint8_t *bytes = full_sample(&size);
+    sample s;
+    make_sample(&s);
+    uint8_t *plain = serialize_sample(&s, &plain_size);
+    sw_pack packs[2];
+    sw_error err = { 0 };
+    SW_CHECK(sw_pack_open_memory(bytes, size, &packs[0], &err) == SW_OK);
+    SW_CHECK(sw_pack_open_memory(plain, plain_size, &packs[1], &err) == SW_OK);
+    sw_pack_instance one = instance(0, 0, 1, 0, "x");
+    sw_pack_merged m;
+    SW_CHECK(sw_pack_merge(packs, 2, &one, 1, &m, &err) != SW_OK);
+    SW_CHECK_MSG(strstr(err.message, "input 1 lacks a Seam Graph") != NULL, "%s", err.message);
+    free(plain);
+    free(bytes);
+}
+
+int main(void)
+{
+    SW_RUN(test_merge_expand_and_read_back);
+    SW_RUN(test_identity_is_a_copy);
+    SW_RUN(test_refused);
+    SW_RUN(test_merge_refuses);
+    return sw_test_finish();
+}
