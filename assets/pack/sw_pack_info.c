@@ -2,6 +2,7 @@
 /* seamwalk-pack info (sw_pack_info.h): stats per part and for the pack, as
  * aligned text and as JSON. Keys are added, never renamed: scripts read them. */
 #include "sw_pack_info.h"
+#include "sw_pack_instances.h"
 
 #include <inttypes.h>
 #include <math.h>
@@ -147,6 +148,33 @@ void sw_pack_gather_stats(const sw_pack *pack, sw_pack_part_stats *parts,
     stats_finish(total);
 }
 
+void sw_pack_stats_add(sw_pack_part_stats *sum, const sw_pack_part_stats *s)
+{
+    int first = sum->patches == 0;
+    sum->surfaces += s->surfaces, sum->trimmed_surfaces += s->trimmed_surfaces;
+    sum->rational_surfaces += s->rational_surfaces, sum->rational_patches += s->rational_patches;
+    sum->loops += s->loops, sum->curves += s->curves;
+    sum->rational_curves += s->rational_curves, sum->computed_curves += s->computed_curves;
+    for (int k = 0; s->patches && k < 2; k++) {
+        sum->degree_min[k] = first || s->degree_min[k] < sum->degree_min[k] ? s->degree_min[k]
+                                                                            : sum->degree_min[k];
+        sum->degree_max[k] = s->degree_max[k] > sum->degree_max[k] ? s->degree_max[k]
+                                                                   : sum->degree_max[k];
+    }
+    for (int k = 0; s->patches && k < 3; k++) {
+        sum->box_min[k] = first || s->box_min[k] < sum->box_min[k] ? s->box_min[k] : sum->box_min[k];
+        sum->box_max[k] = first || s->box_max[k] > sum->box_max[k] ? s->box_max[k] : sum->box_max[k];
+    }
+    if (s->curves) {
+        int none = sum->curves == s->curves;
+        sum->trim_degree_min = none || s->trim_degree_min < sum->trim_degree_min
+                                   ? s->trim_degree_min : sum->trim_degree_min;
+        sum->trim_degree_max = s->trim_degree_max > sum->trim_degree_max ? s->trim_degree_max
+                                                                         : sum->trim_degree_max;
+    }
+    sum->patches += s->patches;
+}
+
 static double ratio(uint64_t bytes, uint32_t n) { return n ? (double)bytes / n : 0.0; }
 
 static double border_fraction(const sw_seam_border *b)
@@ -238,6 +266,17 @@ sw_status sw_pack_gather_levels_stats(const sw_pack *pack, sw_pack_levels_stats 
 
 /* ---- text ---------------------------------------------------------------- */
 
+/* The parts info describes, with their stats and the counts of the whole:
+ * the pack's own, or for a pack of placed parts the placed ones. */
+typedef struct info_parts {
+    uint32_t count;
+    const sw_pack_part *parts;
+    const float *transforms;          /* 16 per part, or NULL */
+    const sw_pack_part_stats *stats;
+    sw_pack_part_stats total;
+    uint64_t patches, control_points, adjacency;
+} info_parts;
+
 static void print_degrees(FILE *out, const sw_pack_part_stats *s)
 {
     fprintf(out, "u %d..%d, v %d..%d", s->degree_min[0], s->degree_max[0], s->degree_min[1],
@@ -247,11 +286,12 @@ static void print_degrees(FILE *out, const sw_pack_part_stats *s)
     fputc('\n', out);
 }
 
-static void print_part_text(FILE *out, const sw_pack *pack, uint32_t i, const sw_pack_part_stats *s)
+static void print_part_text(FILE *out, const sw_pack *pack, const info_parts *ip, uint32_t i)
 {
     const char *units = sw_pack_units_name(pack->meta->units);
+    const sw_pack_part_stats *s = &ip->stats[i];
     fprintf(out, "  part %" PRIu32 ": ", i);
-    sw_fput_escaped(out, pack->parts[i].name, sizeof pack->parts[i].name);
+    sw_fput_escaped(out, ip->parts[i].name, sizeof ip->parts[i].name);
     fputc('\n', out);
     fprintf(out, "    %-16s %" PRIu32 " (%" PRIu32 " trimmed, %" PRIu32 " rational)\n",
             "surfaces", s->surfaces, s->trimmed_surfaces, s->rational_surfaces);
@@ -332,16 +372,16 @@ typedef struct derived_stats {
     sw_pack_super_stats supers;
 } derived_stats;
 
-static void print_text(FILE *out, const char *path, const sw_pack *pack,
-                       const sw_pack_part_stats *parts, const sw_pack_part_stats *t,
+static void print_text(FILE *out, const char *path, const sw_pack *pack, const info_parts *ip,
                        const derived_stats *derived)
 {
     const sw_pack_meta *m = pack->meta;
+    const sw_pack_part_stats *t = &ip->total;
     fprintf(out, "%s: seamwalk pack version %" PRIu32 ", %" PRIu64 " bytes\n", path,
             pack->header->version, pack->header->total_size);
-    fprintf(out, "  %-16s %" PRIu32 "\n", "parts", m->part_count);
-    for (uint32_t i = 0; i < m->part_count; i++) {
-        const sw_pack_part *p = &pack->parts[i];
+    fprintf(out, "  %-16s %" PRIu32 "\n", "parts", ip->count);
+    for (uint32_t i = 0; i < ip->count; i++) {
+        const sw_pack_part *p = &ip->parts[i];
         /* names are the file's bytes (a STEP product, a file name): shown
          * escaped, padded as the other columns */
         size_t len = strnlen(p->name, sizeof p->name);
@@ -353,14 +393,14 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
     }
     fprintf(out, "  %-16s %" PRIu32 " (%" PRIu32 " trimmed)\n", "surfaces", t->surfaces,
             t->trimmed_surfaces);
-    fprintf(out, "  %-16s %" PRIu32 "\n", "bezier patches", m->patch_count);
-    fprintf(out, "  %-16s %" PRIu32 "\n", "control points", m->control_count);
+    fprintf(out, "  %-16s %" PRIu64 "\n", "bezier patches", ip->patches);
+    fprintf(out, "  %-16s %" PRIu64 "\n", "control points", ip->control_points);
     fprintf(out, "  %-16s %" PRIu32 "\n", "rational", t->rational_patches);
     fprintf(out, "  %-16s ", "degrees");
     print_degrees(out, t);
     fprintf(out, "  %-16s %" PRIu32 " loops, %" PRIu32 " curves (%" PRIu32 " computed), %" PRIu32
             " masks\n", "trimming", t->loops, t->curves, t->computed_curves, pack->trim_mask_count);
-    fprintf(out, "  %-16s %" PRIu32 "\n", "adjacency", m->adjacency_count);
+    fprintf(out, "  %-16s %" PRIu64 "\n", "adjacency", ip->adjacency);
     print_seam_text(out, pack);
     print_levels_text(out, pack, &derived->levels);
     sw_pack_print_super_text(out, pack, &derived->supers);
@@ -385,8 +425,8 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack,
             hi[2]);
     fprintf(out, "  %-16s %g (box diagonal)\n", "model size", sqrt(dx * dx + dy * dy + dz * dz));
     fprintf(out, "  %-16s %" PRIu64 " bytes\n", "runtime memory", pack->header->runtime_bytes);
-    for (uint32_t i = 0; i < m->part_count; i++)
-        print_part_text(out, pack, i, &parts[i]);
+    for (uint32_t i = 0; i < ip->count; i++)
+        print_part_text(out, pack, ip, i);
 }
 
 /* ---- JSON ------------------------------------------------------------------ */
@@ -426,9 +466,10 @@ static void json_counts(FILE *out, const sw_pack_part_stats *s, const char *inde
     fprintf(out, "%s\"trim_degree\": [%d, %d]", indent, s->trim_degree_min, s->trim_degree_max);
 }
 
-static void json_part(FILE *out, const sw_pack *pack, uint32_t i, const sw_pack_part_stats *s)
+static void json_part(FILE *out, const info_parts *ip, uint32_t i)
 {
-    const sw_pack_part *p = &pack->parts[i];
+    const sw_pack_part *p = &ip->parts[i];
+    const sw_pack_part_stats *s = &ip->stats[i];
     fprintf(out, "%s\n    {\"name\": ", i ? "," : "");
     json_string(out, p->name, sizeof p->name);
     fprintf(out, ", \"first_patch\": %" PRIu32 ", \"patches\": %" PRIu32 ", \"color\": ",
@@ -444,9 +485,9 @@ static void json_part(FILE *out, const sw_pack *pack, uint32_t i, const sw_pack_
     json_floats(out, s->box_min, 3);
     fprintf(out, ", \"max\": ");
     json_floats(out, s->box_max, 3);
-    if (pack->part_transforms) {
+    if (ip->transforms) {
         fprintf(out, "},\n     \"transform\": ");
-        json_floats(out, &pack->part_transforms[(size_t)i * 16], 16);
+        json_floats(out, &ip->transforms[(size_t)i * 16], 16);
         fputc('}', out);
     } else {
         fprintf(out, "}}");
@@ -527,29 +568,29 @@ static void json_levels(FILE *out, const sw_pack *pack, const sw_pack_levels_sta
     fprintf(out, "]},\n");
 }
 
-static void print_json(FILE *out, const char *path, const sw_pack *pack,
-                       const sw_pack_part_stats *parts, const sw_pack_part_stats *t,
+static void print_json(FILE *out, const char *path, const sw_pack *pack, const info_parts *ip,
                        const derived_stats *derived)
 {
     const sw_pack_meta *m = pack->meta;
+    const sw_pack_part_stats *t = &ip->total;
     fprintf(out, "{\n  \"file\": ");
     json_string(out, path, SIZE_MAX);
     fprintf(out, ",\n  \"version\": %" PRIu32 ",\n  \"total_bytes\": %" PRIu64 ",\n",
             pack->header->version, pack->header->total_size);
-    fprintf(out, "  \"part_count\": %" PRIu32 ",\n  \"parts\": [", m->part_count);
-    for (uint32_t i = 0; i < m->part_count; i++)
-        json_part(out, pack, i, &parts[i]);
-    fprintf(out, "%s],\n", m->part_count ? "\n  " : "");
+    fprintf(out, "  \"part_count\": %" PRIu32 ",\n  \"parts\": [", ip->count);
+    for (uint32_t i = 0; i < ip->count; i++)
+        json_part(out, ip, i);
+    fprintf(out, "%s],\n", ip->count ? "\n  " : "");
     fprintf(out, "  \"surfaces\": %" PRIu32 ",\n", t->surfaces);
     fprintf(out, "  \"surfaces_note\": \"one per Bezier patch for Bezier inputs\",\n");
-    fprintf(out, "  \"bezier_patches\": %" PRIu32 ",\n", m->patch_count);
-    fprintf(out, "  \"control_points\": %" PRIu32 ",\n", m->control_count);
+    fprintf(out, "  \"bezier_patches\": %" PRIu64 ",\n", ip->patches);
+    fprintf(out, "  \"control_points\": %" PRIu64 ",\n", ip->control_points);
     fprintf(out, "  \"rational_patches\": %" PRIu32 ",\n", t->rational_patches);
     fprintf(out, "  \"degree_u\": [%d, %d],\n  \"degree_v\": [%d, %d],\n", t->degree_min[0],
             t->degree_max[0], t->degree_min[1], t->degree_max[1]);
     json_counts(out, t, "  ");
     fprintf(out, ",\n  \"trim_masks\": %" PRIu32 ",\n", pack->trim_mask_count);
-    fprintf(out, "  \"adjacency\": %" PRIu32 ",\n", m->adjacency_count);
+    fprintf(out, "  \"adjacency\": %" PRIu64 ",\n", ip->adjacency);
     json_seam(out, pack);
     json_levels(out, pack, &derived->levels);
     sw_pack_print_super_json(out, pack, &derived->supers);
@@ -575,21 +616,37 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack,
 sw_status sw_pack_print_info(FILE *out, const char *path, const sw_pack *pack, int json,
                              sw_error *err)
 {
-    sw_pack_part_stats total;
+    info_parts ip = { .count = pack->meta->part_count, .parts = pack->parts,
+                      .transforms = pack->part_transforms, .patches = pack->meta->patch_count,
+                      .control_points = pack->meta->control_count,
+                      .adjacency = pack->meta->adjacency_count };
     sw_pack_part_stats *parts = calloc((size_t)pack->meta->part_count + 1, sizeof *parts);
     if (!parts)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "%s: cannot allocate stats for %u parts",
                             path, (unsigned)pack->meta->part_count);
-    sw_pack_gather_stats(pack, parts, &total);
+    sw_pack_gather_stats(pack, parts, &ip.total);
+    ip.stats = parts;
+    sw_pack_placed_parts placed = { 0 };
+    sw_status s = SW_OK;
+    if (pack->instances && (s = sw_pack_place_parts(pack, parts, &placed, err)) == SW_OK) {
+        ip.count = placed.count, ip.parts = placed.parts, ip.transforms = placed.transforms;
+        ip.stats = placed.stats, ip.total = placed.total;
+        uint64_t c[SW_SPACE_COUNT];
+        sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, c);
+        ip.patches = c[SW_SPACE_PATCHES], ip.control_points = c[SW_SPACE_CONTROL];
+        ip.adjacency = c[SW_SPACE_ADJACENCY];
+    }
     derived_stats derived;
-    sw_status s = sw_pack_gather_levels_stats(pack, &derived.levels, err);
+    if (s == SW_OK)
+        s = sw_pack_gather_levels_stats(pack, &derived.levels, err);
     if (s == SW_OK)
         s = sw_pack_gather_super_stats(pack, &derived.supers, err);
     if (s == SW_OK && json)
-        print_json(out, path, pack, parts, &total, &derived);
+        print_json(out, path, pack, &ip, &derived);
     else if (s == SW_OK)
-        print_text(out, path, pack, parts, &total, &derived);
+        print_text(out, path, pack, &ip, &derived);
     free(parts);
+    sw_pack_placed_parts_free(&placed);
     if (s != SW_OK)
         sw_error_prefix(err, "%s", path);
     return s;

@@ -124,6 +124,26 @@ void sw_pack_placed_box(const sw_pack *pack, float lo[3], float hi[3]);
 void sw_pack_print_instances_text(FILE *out, const sw_pack *pack);
 void sw_pack_print_instances_json(FILE *out, const sw_pack *pack);
 
+/* The parts a pack of placed parts places, as info lists them: each
+ * instance's copy of its prototype's parts, named and coloured by the
+ * instance, its first patch in the placed scene, its transform the
+ * instance's, its stats the stored part's (stored[part]) with the box it is
+ * placed in; total sums them. Arrays malloc'd; free with
+ * sw_pack_placed_parts_free. */
+typedef struct sw_pack_placed_parts {
+    uint32_t count;
+    sw_pack_part *parts;
+    float *transforms;
+    sw_pack_part_stats *stats;
+    sw_pack_part_stats total;
+} sw_pack_placed_parts;
+sw_status sw_pack_place_parts(const sw_pack *pack, const sw_pack_part_stats *stored,
+                              sw_pack_placed_parts *out, sw_error *err);
+void sw_pack_placed_parts_free(sw_pack_placed_parts *p);
+
+/* s's counts added to sum (degrees and boxes widened). */
+void sw_pack_stats_add(sw_pack_part_stats *sum, const sw_pack_part_stats *s);
+
 /* s (at most max bytes) as a JSON string. */
 void sw_pack_json_string(FILE *out, const char *s, size_t max);
 

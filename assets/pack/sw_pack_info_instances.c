@@ -5,7 +5,9 @@
  * and patch, so sharing shows in figures. */
 #include <inttypes.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "sw_pack_info.h"
 #include "sw_pack_instances.h"
@@ -112,4 +114,74 @@ void sw_pack_print_instances_json(FILE *out, const sw_pack *pack)
     }
     fprintf(out, "\n  ],\n");
     free(uses);
+}
+
+/* The box stored part p's patches are placed in by transform t. */
+static void placed_part_box(const sw_pack *pack, const sw_pack_part *p, const float *t,
+                            float lo[3], float hi[3])
+{
+    for (int k = 0; k < 3; k++)
+        lo[k] = INFINITY, hi[k] = -INFINITY;
+    for (uint32_t i = p->first_patch; i < p->first_patch + p->patch_count; i++) {
+        const sw_pack_patch *q = &pack->patches[i];
+        uint32_t n = (uint32_t)(q->degree_u + 1) * (q->degree_v + 1);
+        for (uint32_t c = 0; c < n; c++) {
+            float w[3];
+            sw_instance_place(t, &pack->control[4 * ((size_t)q->first_control + c)], w);
+            for (int k = 0; k < 3; k++)
+                lo[k] = fminf(lo[k], w[k]), hi[k] = fmaxf(hi[k], w[k]);
+        }
+    }
+    if (lo[0] > hi[0])
+        for (int k = 0; k < 3; k++)
+            lo[k] = hi[k] = 0;
+}
+
+sw_status sw_pack_place_parts(const sw_pack *pack, const sw_pack_part_stats *stored,
+                              sw_pack_placed_parts *out, sw_error *err)
+{
+    memset(out, 0, sizeof *out);
+    uint64_t c[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, c);
+    size_t n = (size_t)c[SW_SPACE_PARTS];
+    out->parts = calloc(n + 1, sizeof *out->parts);
+    out->transforms = calloc(16 * n + 1, sizeof *out->transforms);
+    out->stats = calloc(n + 1, sizeof *out->stats);
+    if (!out->parts || !out->transforms || !out->stats) {
+        sw_pack_placed_parts_free(out);
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot allocate %zu placed parts", n);
+    }
+    uint32_t at = 0, patches = 0;
+    for (uint32_t i = 0; i < pack->instance_count; i++) {
+        const sw_pack_instance *inst = &pack->instances[i];
+        const sw_pack_prototype *p = &pack->prototypes[inst->prototype];
+        uint32_t first = p->first[SW_SPACE_PARTS], count = p->count[SW_SPACE_PARTS];
+        for (uint32_t k = 0; k < count; k++, at++) {
+            const sw_pack_part *from = &pack->parts[first + k];
+            sw_pack_part *to = &out->parts[at];
+            *to = *from;
+            to->first_patch = patches + from->first_patch - p->first[SW_SPACE_PATCHES];
+            memcpy(to->color, inst->color, sizeof to->color);
+            if (count == 1)
+                snprintf(to->name, sizeof to->name, "%s", inst->name);
+            else
+                snprintf(to->name, sizeof to->name, "%.27s/%.27s", inst->name, from->name);
+            memcpy(&out->transforms[16 * (size_t)at], inst->transform, sizeof inst->transform);
+            out->stats[at] = stored[first + k];
+            placed_part_box(pack, from, inst->transform, out->stats[at].box_min,
+                            out->stats[at].box_max);
+            sw_pack_stats_add(&out->total, &out->stats[at]);
+        }
+        patches += p->count[SW_SPACE_PATCHES];
+    }
+    out->count = at;
+    return SW_OK;
+}
+
+void sw_pack_placed_parts_free(sw_pack_placed_parts *p)
+{
+    free(p->parts);
+    free(p->transforms);
+    free(p->stats);
+    memset(p, 0, sizeof *p);
 }
