@@ -5,6 +5,8 @@
 #include "seamwalk_pack_build.h"
 
 #include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,28 +42,44 @@ static double placed_diagonal(const sw_scene_plan *plan)
  * (sw_seam_default_tolerance), never finer than a millionth of the whole
  * scene where it is placed largest (or than --seam-tolerance, in the
  * scene's units), which is what the scene sewn as one model was held to. */
-static double prototype_tolerance(const build_options *o, const sw_scene_plan *plan, size_t k,
-                                  double scene_floor)
+/* The largest scale prototype k is placed at (1 when it is not placed). */
+static double largest_scale(const sw_scene_plan *plan, size_t k)
 {
     double scale = 0;
     for (size_t i = 0; i < plan->placement_count; i++)
         if (plan->placements[i].prototype == k)
             scale = fmax(scale, plan->placements[i].scale);
-    if (scale <= 0)
-        scale = 1;
+    return scale > 0 ? scale : 1;
+}
+
+static double prototype_tolerance(const build_options *o, const sw_scene_plan *plan, size_t k,
+                                  double scene_floor)
+{
+    double scale = largest_scale(plan, k);
     if (o->seam_tolerance > 0)
         return o->seam_tolerance / scale;
     return fmax(sw_seam_default_tolerance(&plan->prototypes[k], NULL), scene_floor / scale);
 }
 
-static void add_summary(seam_summary *sum, const seam_summary *one)
+/* The name of prototype k's first placement, for messages. */
+static const char *first_placement(const sw_scene_plan *plan, size_t k)
+{
+    for (size_t i = 0; i < plan->placement_count; i++)
+        if (plan->placements[i].prototype == k)
+            return plan->placements[i].name;
+    return "";
+}
+
+/* one's figures added to sum; its tolerance in the scene's units (scale:
+ * the largest its prototype is placed at). */
+static void add_summary(seam_summary *sum, const seam_summary *one, double scale)
 {
     sw_seam_report *a = &sum->sewing;
     const sw_seam_report *b = &one->sewing;
     a->loops += b->loops, a->boundary_vertices += b->boundary_vertices;
     a->boundary_edges += b->boundary_edges, a->seams += b->seams;
     a->free_edges += b->free_edges, a->nonmanifold_edges += b->nonmanifold_edges;
-    a->tolerance = fmax(a->tolerance, b->tolerance);
+    a->tolerance = fmax(a->tolerance, b->tolerance * scale);
     a->unproven_pieces += b->unproven_pieces, a->clamped += b->clamped;
     a->gaps_held += b->gaps_held, a->inserted += b->inserted;
     a->flatten_s += b->flatten_s, a->sew_s += b->sew_s;
@@ -93,27 +111,119 @@ static void add_summary(seam_summary *sum, const seam_summary *one)
     p->seconds += q->seconds;
 }
 
-/* Every prototype packed apart into bytes[k]. */
+/* The prototypes' packing, shared by the threads that run it. */
+typedef struct proto_jobs {
+    const build_options *o;
+    sw_scene_plan *plan;
+    double floor;
+    uint32_t inner_threads;      /* each prototype's own --threads */
+    size_t *order;               /* prototypes, largest first */
+    atomic_size_t next;
+    uint8_t **bytes;
+    size_t *sizes;
+    seam_summary *summaries;
+    sw_status *status;
+    sw_error *errors;
+} proto_jobs;
+
+static void pack_one(proto_jobs *j, size_t k, progress_context *pc)
+{
+    build_options ok = *j->o;
+    ok.seam_tolerance = prototype_tolerance(j->o, j->plan, k, j->floor);
+    ok.threads = j->inner_threads;
+    sw_model *m = &j->plan->prototypes[k];
+    pc->model = m;
+    j->status[k] = sw_pack_tool_pack_bytes(&ok, pc, m, NULL, 0, &j->summaries[k], &j->bytes[k],
+                                           &j->sizes[k], &j->errors[k]);
+}
+
+static void *pack_worker(void *arg)
+{
+    proto_jobs *j = arg;
+    sw_model none;
+    sw_model_init(&none);
+    progress_context pc = { .model = &none };
+    sw_progress_init(&pc.bar, stderr, 1); /* the main thread's bar counts prototypes */
+    for (size_t i; (i = atomic_fetch_add(&j->next, 1)) < j->plan->prototype_count;)
+        pack_one(j, j->order[i], &pc);
+    return NULL;
+}
+
+typedef struct sized { size_t patches, k; } sized;
+
+static int larger_first(const void *a, const void *b)
+{
+    const sized *x = a, *y = b;
+    return x->patches != y->patches ? (x->patches < y->patches) - (x->patches > y->patches)
+                                    : (x->k > y->k) - (x->k < y->k);
+}
+
+/* The prototypes by size, largest first (ties in scene order). */
+static sw_status order_by_size(const sw_scene_plan *plan, size_t *order, sw_error *err)
+{
+    size_t n = plan->prototype_count;
+    sized *s = calloc(n + 1, sizeof *s);
+    if (!s)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    for (size_t k = 0; k < n; k++)
+        s[k] = (sized){ plan->prototypes[k].patch_count, k };
+    qsort(s, n, sizeof *s, larger_first);
+    for (size_t k = 0; k < n; k++)
+        order[k] = s[k].k;
+    free(s);
+    return SW_OK;
+}
+
+/* Every prototype packed apart into bytes[k], on o->threads threads: the
+ * largest first, one thread each (or all of them for one prototype). Each
+ * pack is the same bytes on any count, so the whole is too; a failure is
+ * reported for the first failing prototype in scene order. */
 static sw_status pack_prototypes(const build_options *o, progress_context *pc,
                                  sw_scene_plan *plan, seam_summary *summary, uint8_t **bytes,
                                  size_t *sizes, sw_error *err)
 {
-    double floor = 1e-6 * placed_diagonal(plan);
-    sw_status st = SW_OK;
-    for (size_t k = 0; st == SW_OK && k < plan->prototype_count; k++) {
-        build_options ok = *o;
-        ok.seam_tolerance = prototype_tolerance(o, plan, k, floor);
-        sw_model *m = &plan->prototypes[k];
-        m->up_axis = plan->views.up_axis;
-        pc->model = m;
-        seam_summary one;
-        st = sw_pack_tool_pack_bytes(&ok, pc, m, NULL, 0, &one, &bytes[k], &sizes[k], err);
-        if (st == SW_OK)
-            add_summary(summary, &one);
-        else
-            sw_error_prefix(err, "prototype %zu of %zu ('%s')", k + 1, plan->prototype_count,
-                            m->part_count ? m->parts[0].name : "");
+    size_t n = plan->prototype_count;
+    uint32_t threads = o->threads > 1 ? o->threads : 1;
+    if (threads > n)
+        threads = (uint32_t)n;
+    proto_jobs j = { .o = o, .plan = plan, .floor = 1e-6 * placed_diagonal(plan),
+                     .inner_threads = threads > 1 ? 1 : o->threads, .bytes = bytes,
+                     .sizes = sizes, .order = calloc(n + 1, sizeof(size_t)),
+                     .summaries = calloc(n + 1, sizeof(seam_summary)),
+                     .status = calloc(n + 1, sizeof(sw_status)),
+                     .errors = calloc(n + 1, sizeof(sw_error)) };
+    atomic_init(&j.next, 0);
+    pthread_t *tids = calloc(threads + 1, sizeof *tids);
+    sw_status st = j.order && j.summaries && j.status && j.errors && tids
+                       ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    if (st == SW_OK)
+        st = order_by_size(plan, j.order, err);
+    if (st == SW_OK) {
+        snprintf(pc->prefix, sizeof pc->prefix, "packing %zu prototypes", n);
+        sw_pack_tool_progress(pc, "sewing, simplifying, levels", 0.0);
+        uint32_t started = 1;
+        while (started < threads && pthread_create(&tids[started], NULL, pack_worker, &j) == 0)
+            started++;
+        for (size_t i; (i = atomic_fetch_add(&j.next, 1)) < n;)
+            pack_one(&j, j.order[i], pc);
+        for (uint32_t t = 1; t < started; t++)
+            pthread_join(tids[t], NULL);
     }
+    for (size_t k = 0; st == SW_OK && k < n; k++) {
+        if (j.status[k] == SW_OK) {
+            add_summary(summary, &j.summaries[k], largest_scale(plan, k));
+            continue;
+        }
+        *err = j.errors[k];
+        st = j.status[k];
+        sw_error_prefix(err, "prototype %zu of %zu (first placed as '%s')", k + 1, n,
+                        first_placement(plan, k));
+    }
+    free(j.order);
+    free(j.summaries);
+    free(j.status);
+    free(j.errors);
+    free(tids);
     return st;
 }
 

@@ -150,17 +150,22 @@ static sw_pack_move move_for(const sw_pack *pack, const placed *d, const sw_pack
     return m;
 }
 
+void sw_instance_part_name(const char *instance, const char *part, char out[56])
+{
+    char name[56];
+    if (part[0])
+        snprintf(name, sizeof name, "%.27s/%.27s", instance, part);
+    else
+        snprintf(name, sizeof name, "%.55s", instance);
+    memcpy(out, name, sizeof name);
+}
+
 static void name_parts(const sw_pack_instance *inst, const sw_pack_part *from, uint32_t n,
                        sw_pack_part *to, float *transforms)
 {
     for (uint32_t k = 0; k < n; k++) {
         memcpy(to[k].color, inst->color, sizeof to[k].color);
-        char name[sizeof to[k].name];
-        if (n == 1)
-            snprintf(name, sizeof name, "%s", inst->name);
-        else
-            snprintf(name, sizeof name, "%.27s/%.27s", inst->name, from[k].name);
-        memcpy(to[k].name, name, sizeof name);
+        sw_instance_part_name(inst->name, from[k].name, to[k].name);
         memcpy(&transforms[16 * (size_t)k], inst->transform, 16 * sizeof(float));
     }
 }

@@ -58,6 +58,11 @@ uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_grap
  * short of sw_pack_expand_bytes. */
 sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_error *err);
 
+/* The name of a prototype's part placed by an instance: the instance's
+ * name, followed by "/" and the part's when the part has one (a product of
+ * an assembly), cut to fit 56 bytes with its NUL. */
+void sw_instance_part_name(const char *instance, const char *part, char out[56]);
+
 /* Where point p of a prototype lands under an instance's transform (the
  * expansion's arithmetic: doubles, rounded once), and the transform's
  * scale. */

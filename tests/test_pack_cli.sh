@@ -167,12 +167,14 @@ assert p["degree_u"] == [3, 3] and p["rational_patches"] == 0 and len(p["transfo
 assert all(lo <= hi for lo, hi in zip(p["box"]["min"], p["box"]["max"]))
 assert j["units"] == "mm" and j["trim_loops"] == 0 and j["viewpoints"] == []
 assert [s["name"] for s in j["sections"]][4:] == ["ADJACENCY", "SURFACES", "TRIM_LOOPS",
-  "TRIM_CURVES", "TRIM_DATA", "PATCH_DOMAINS", "TRIM_MASKS", "VIEWPOINTS", "PART_TRANSFORMS",
+  "TRIM_CURVES", "TRIM_DATA", "PATCH_DOMAINS", "TRIM_MASKS", "VIEWPOINTS",
   "SEAM", "SEAM_VERTICES", "SEAM_SLOTS", "SEAM_LOOPS", "SEAM_EDGES", "SEAM_COLLAPSES",
   "SEAM_SLOT_REFS", "SEAM_SURFACE_LOOPS", "ORIENTATION", "LEVELS", "LEVEL_RECORDS",
   "LEVEL_SURFACES", "LEVEL_VERTICES", "LEVEL_INDICES", "LEVEL_CHAINS", "LEVEL_CHAIN_POINTS",
   "SUPER_SURFACES", "SUPER_MEMBERS", "SUPER_OF", "PART_LEVELS", "PART_LEVEL_RECORDS",
-  "PART_LEVEL_RANGES", "PART_LEVEL_VERTICES", "PART_LEVEL_INDICES", "PART_LEVEL_PIECE_OF"]
+  "PART_LEVEL_RANGES", "PART_LEVEL_VERTICES", "PART_LEVEL_INDICES", "PART_LEVEL_PIECE_OF",
+  "PROTOTYPES", "INSTANCES"]
+assert j["version"] == 2 and j["instance_count"] == 3 and j["prototype_count"] == 3
 assert j["levels"]["levels"] > 0, j["levels"]
 pl = j["part_levels"]
 assert pl["pieces"] == 3 and pl["pieces_with_levels"] == 3 and pl["cut_parts"] == 0, pl

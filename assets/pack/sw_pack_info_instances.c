@@ -64,11 +64,16 @@ void sw_pack_print_instances_text(FILE *out, const sw_pack *pack)
     uint32_t *uses = count_uses(pack);
     for (uint32_t k = 0; uses && k < pack->prototype_count && k < 12; k++) {
         const sw_pack_prototype *p = &pack->prototypes[k];
-        const sw_pack_part *first = &pack->parts[p->first[SW_SPACE_PARTS]];
-        fprintf(out, "    prototype %-4" PRIu32 " ", k);
-        sw_fput_escaped(out, first->name, sizeof first->name);
-        fprintf(out, "%s: %" PRIu32 " patches, placed %" PRIu32 " times\n",
-                p->count[SW_SPACE_PARTS] > 1 ? " ..." : "", p->count[SW_SPACE_PATCHES], uses[k]);
+        uint32_t i = 0;
+        while (i < pack->instance_count && pack->instances[i].prototype != k)
+            i++;
+        fprintf(out, "    prototype %-4" PRIu32 " %" PRIu32 " parts, %" PRIu32 " patches, placed %"
+                PRIu32 " times%s", k, p->count[SW_SPACE_PARTS], p->count[SW_SPACE_PATCHES],
+                uses[k], i < pack->instance_count ? ", first as " : "\n");
+        if (i < pack->instance_count) {
+            sw_fput_escaped(out, pack->instances[i].name, sizeof pack->instances[i].name);
+            fputc('\n', out);
+        }
     }
     if (pack->prototype_count > 12)
         fprintf(out, "    ... %" PRIu32 " more prototypes\n", pack->prototype_count - 12);
@@ -162,10 +167,7 @@ sw_status sw_pack_place_parts(const sw_pack *pack, const sw_pack_part_stats *sto
             *to = *from;
             to->first_patch = patches + from->first_patch - p->first[SW_SPACE_PATCHES];
             memcpy(to->color, inst->color, sizeof to->color);
-            if (count == 1)
-                snprintf(to->name, sizeof to->name, "%s", inst->name);
-            else
-                snprintf(to->name, sizeof to->name, "%.27s/%.27s", inst->name, from->name);
+            sw_instance_part_name(inst->name, from->name, to->name);
             memcpy(&out->transforms[16 * (size_t)at], inst->transform, sizeof inst->transform);
             out->stats[at] = stored[first + k];
             placed_part_box(pack, from, inst->transform, out->stats[at].box_min,

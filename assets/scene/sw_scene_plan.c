@@ -86,16 +86,19 @@ static sw_status add_prototype(plan_builder *b, const scene_part *part, proto_ke
     float color[4];
     sw_scene_default_color(plan->prototype_count - 1, color);
     sw_status st;
+    /* A prototype's parts are named by what they are within their file (a
+     * STEP product) or not at all; each placement names them after itself
+     * (sw_instance_part_name). */
     if (key->generated) {
-        st = sw_model_begin_part(m, sw_proc_kind_name(part->proc.kind), color, err);
+        st = sw_model_begin_part(m, "", color, err);
         if (st == SW_OK)
             st = sw_proc_add(m, &part->proc, err);
     } else {
-        const char *path = b->keys[plan->prototype_count - 1].path;
-        const char *slash = strrchr(path, '/');
-        char name[56];
-        snprintf(name, sizeof name, "%.44s", slash ? slash + 1 : path);
-        st = scene_cache_place(&b->cache, path, name, color, options, report, m, err);
+        st = scene_cache_place(&b->cache, b->keys[plan->prototype_count - 1].path, "", color,
+                               options, report, m, err);
+        for (size_t p = 0; st == SW_OK && p < m->part_count; p++)
+            if (m->parts[p].name[0] == '/')
+                memmove(m->parts[p].name, m->parts[p].name + 1, strlen(m->parts[p].name));
     }
     if (st == SW_OK && !uniform(key->shape)) {
         sw_mat4 s = sw_mat4_scale(sw_v3(key->shape[0], key->shape[1], key->shape[2]));
