@@ -23,8 +23,10 @@ add_test(NAME levels_teaset COMMAND bash -c
 # Super-surfaces: clustering on hand-built surfaces, and on the teaset as
 # the pack tool builds it (every sampled normal inside its cluster's cone).
 sw_add_test(test_cluster SOURCES test_cluster.c LIBS sw_assets sw_core)
+# The teaset's three files as one model, not its scene: the clusters are
+# made again from the whole pack, and a scene's are made per prototype.
 add_test(NAME cluster_teaset COMMAND bash -c
-  "$<TARGET_FILE:seamwalk-pack> build ${PROJECT_SOURCE_DIR}/assets/samples/teaset.ini -o ${CMAKE_CURRENT_BINARY_DIR}/cluster_teaset.swpack --quiet && $<TARGET_FILE:test_cluster> ${CMAKE_CURRENT_BINARY_DIR}/cluster_teaset.swpack")
+  "cd ${PROJECT_SOURCE_DIR}/assets/samples && $<TARGET_FILE:seamwalk-pack> build teapot.txt teacup.txt teaspoon.txt -o ${CMAKE_CURRENT_BINARY_DIR}/cluster_teaset.swpack --quiet && $<TARGET_FILE:test_cluster> ${CMAKE_CURRENT_BINARY_DIR}/cluster_teaset.swpack")
 # The part levels of the built teaset against its exact surfaces.
 add_executable(test_part_levels_build_prog test_part_levels_build.c)
 target_link_libraries(test_part_levels_build_prog PRIVATE sw_assets sw_core)

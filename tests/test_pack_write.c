@@ -11,6 +11,7 @@
 
 #include "sw_test.h"
 #include "pack_sample.h"
+#include "sw_pack_merge.h"
 
 /* ---- writing files ---- */
 
@@ -500,6 +501,51 @@ static void write_orientation_seed(const char *dir)
     free(bytes);
 }
 
+/* The sample with every group, as two prototypes placed three times: the
+ * PROTOTYPES and INSTANCES sections for the fuzzer. */
+static void write_instances_seed(const char *dir)
+{
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    sample s;
+    sample_seam g;
+    sample_levels l;
+    sample_supers k;
+    sample_part_levels pl;
+    make_sample(&s);
+    make_sample_seam(&g);
+    make_sample_levels(&l);
+    make_sample_supers(&k);
+    make_sample_part_levels(&pl);
+    sw_pack_contents c = sample_contents(&s);
+    c.seam = &g.graph, c.levels = &l.view, c.supers = &k.view, c.part_levels = &pl.view;
+    SW_CHECK_MSG(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK, "%s", err.message);
+    sw_pack packs[2];
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &packs[0], &err) == SW_OK, "%s", err.message);
+    packs[1] = packs[0];
+    sw_pack_instance inst[3] = { { .prototype = 0, .color = { 1, 1, 1, 1 } },
+                                 { .prototype = 1, .color = { 0.5f, 0.5f, 0.5f, 1 } },
+                                 { .prototype = 0, .color = { 0, 0, 1, 1 } } };
+    for (int i = 0; i < 3; i++) {
+        float *t = inst[i].transform;
+        t[0] = t[5] = t[10] = (float)(i + 1), t[15] = 1, t[12] = 3.0f * (float)i;
+        snprintf(inst[i].name, sizeof inst[i].name, "copy %d", i);
+    }
+    sw_pack_merged m;
+    uint8_t *placed = NULL;
+    size_t placed_size = 0;
+    SW_CHECK_MSG(sw_pack_merge(packs, 2, inst, 3, &m, &err) == SW_OK, "%s", err.message);
+    SW_CHECK_MSG(sw_pack_serialize(&m.contents, &placed, &placed_size, &err) == SW_OK, "%s",
+                 err.message);
+    sw_pack_merged_free(&m);
+    char path[512];
+    snprintf(path, sizeof path, "%s/seed-instances", dir);
+    write_plain(path, placed, placed_size);
+    free(placed);
+    free(bytes);
+}
+
 /* The hand-made sample with every optional section, without them, with an
  * unknown section, with a Seam Graph, with the graph and static levels; packs the writer makes of Bezier
  * patches and of a trimmed surface with a viewpoint. */
@@ -527,6 +573,7 @@ static int write_corpus(const char *dir)
     write_sample_seed(dir, "seed-supers", 1, 1, 0);
     write_sample_seed(dir, "seed-part-levels", 1, 1, 1);
     write_orientation_seed(dir);
+    write_instances_seed(dir);
     sw_model model;
     start_model(&model);
     add_bicubic(&model, 0, 0, 0, 0);

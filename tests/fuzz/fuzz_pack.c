@@ -14,6 +14,7 @@
 
 #include "sw_border_strip.h"
 #include "sw_pack.h"
+#include "sw_pack_instances.h"
 #include "sw_pack_signature.h"
 #include "../parts_backwards.h"
 #include "fuzz_reseal.h"
@@ -143,6 +144,32 @@ static void walk(const sw_pack *pack)
     sink = sum + walk_trims(pack) + walk_scene(pack) + walk_seam(pack) + walk_levels(pack);
 }
 
+/* A pack of placed parts: walked as stored, then expanded as the runtime
+ * expands it (when the placed scene is small enough to hold) and walked
+ * again, so an expansion the checks let out of bounds shows up too. */
+static void walk_placed(const sw_pack *pack)
+{
+    walk(pack);
+    if (!pack->instances)
+        return;
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
+    uint64_t bytes = sw_pack_expand_bytes(counts);
+    if (bytes > (64u << 20))
+        return;
+    void *block = malloc((size_t)bytes);
+    if (!block)
+        return;
+    sw_arena arena;
+    sw_arena_init(&arena, block, (size_t)bytes);
+    sw_pack placed;
+    sw_error err;
+    if (sw_pack_expand(pack, &arena, &placed, &err) != SW_OK)
+        abort();   /* the bytes were counted: expansion cannot run short */
+    walk(&placed);
+    free(block);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     uint8_t *buf = fuzz_copy(data, size);
@@ -155,12 +182,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     sw_pack_signature sig;
     (void)sw_pack_check_signature_raw(buf, size, NULL, &sig, &err);
     if (sw_pack_open_memory(buf, size, &pack, &err) == SW_OK)
-        walk(&pack);
+        walk_placed(&pack);
     if (size >= sizeof(sw_pack_header)) {
         reseal(buf, size);
         sw_status st = sw_pack_open_memory(buf, size, &pack, &err);
         if (st == SW_OK)
-            walk(&pack);
+            walk_placed(&pack);
         sw_error again;   /* order-free: the loader's threads run the checks in any order */
         if (!sw_opens_the_same_backwards(buf, size, st, err.message, &again))
             abort();   /* reported by the fuzzer as a crash */
