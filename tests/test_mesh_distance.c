@@ -222,10 +222,30 @@ static void test_the_distance_between_two_sheets(void)
     SW_CHECK(sw_mesh_grid_make(&none) == NULL);
 }
 
+/* A long triangle over a mesh with a dip between where 8 samples a side
+ * would fall: found at the spacing asked (with 8 a side it measured 0). */
+static void test_long_triangles_are_sampled_at_the_spacing(void)
+{
+    /* a: one triangle 0..100 along x; g: the same plane with a dip 5 deep
+     * from x = 1.5 to 11 (between 0 and 12.5, where 8 a side sample) */
+    float pa[9] = { 0, 0, 0, 100, 0, 0, 0, 1, 0 };
+    uint32_t ia[3] = { 0, 1, 2 };
+    float pg[] = { 0, -1, 0, 1.5f, -1, 0, 6.25f, -1, -5, 11, -1, 0, 101, -1, 0,
+                   0, 2, 0, 1.5f, 2, 0, 6.25f, 2, -5, 11, 2, 0, 101, 2, 0 };
+    uint32_t ig[] = { 0, 1, 6, 0, 6, 5, 1, 2, 7, 1, 7, 6, 2, 3, 8, 2, 8, 7, 3, 4, 9, 3, 9, 8 };
+    sw_mesh_view a = { pa, ia, 3, 3 }, gv = { pg, ig, 10, 24 };
+    sw_mesh_grid *g = sw_mesh_grid_make(&gv);
+    SW_CHECK(g != NULL);
+    double d = sw_mesh_distance(&a, g, 0.1);
+    SW_CHECK_MSG(d > 3, "the dip under the long triangle: %g", d);
+    sw_mesh_grid_free(g);
+}
+
 int main(void)
 {
     SW_RUN(test_nearest_is_the_nearest_of_all_triangles);
     SW_RUN(test_within_visits_every_triangle_within_reach_and_no_other);
     SW_RUN(test_the_distance_between_two_sheets);
+    SW_RUN(test_long_triangles_are_sampled_at_the_spacing);
     return sw_test_finish();
 }

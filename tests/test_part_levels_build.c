@@ -398,15 +398,20 @@ static int check_pieces(const sw_pack *pack)
     return cut_parts;
 }
 
+/* A pack of placed parts is checked as placed: its prototypes, built
+ * apart, overlap where they were modelled, and the sources made again
+ * from them together would weld one to another. */
 static void check_pack_file(const char *path, int want_cut)
 {
     sw_pack pack;
-    uint8_t *bytes = sw_test_open_pack_file(path, &pack);
+    void *placed;
+    uint8_t *bytes = sw_test_open_placed_pack(path, &pack, &placed);
     if (!bytes)
         return;
     SW_CHECK_MSG(pack.part_levels.level_count > 0, "%s: no part levels", path);
     int cut = pack.part_levels.level_count > 0 ? check_pieces(&pack) : 0;
     SW_CHECK_MSG(!want_cut || cut > 0, "%s: no part cut into pieces", path);
+    free(placed);
     free(bytes);
 }
 

@@ -381,7 +381,7 @@ double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spa
                             v[j][2] - v[(j + 1) % 3][2] };
             longest = fmax(longest, sqrt(dot3(d, d)));
         }
-        int n = spacing > 0 ? (int)fmin(8, ceil(longest / spacing)) : 1;
+        int n = spacing > 0 ? (int)fmin(SW_MESH_DISTANCE_MAX_SIDE, ceil(longest / spacing)) : 1;
         if (n <= 1 && corner) {
             for (int j = 0; j < 3; j++)
                 corner[a->indices[t + j]] = 1;

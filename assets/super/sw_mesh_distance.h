@@ -43,7 +43,12 @@ int sw_mesh_grid_within(const sw_mesh_grid *g, const double p[3], double r,
 
 /* The largest distance from a's sample points to g's mesh: each triangle
  * of a sampled on a barycentric grid fine enough that neighbouring samples
- * are at most `spacing` apart (at most 8 a side), its corners included. */
+ * are at most `spacing` apart (at most SW_MESH_DISTANCE_MAX_SIDE a side),
+ * its corners included. The cap was 8: a coarse part level's triangles
+ * across a whole plate (1,053 mm) were then sampled 130 mm apart at a
+ * bound of 6.5 mm, and a level 28.7 mm off its source was measured at 6.5.
+ * A coarse level has few triangles, so sampling it finely costs little. */
+#define SW_MESH_DISTANCE_MAX_SIDE 256
 double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spacing);
 
 #endif
