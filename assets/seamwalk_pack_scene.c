@@ -42,13 +42,14 @@ static double placed_diagonal(const sw_scene_plan *plan)
  * (sw_seam_default_tolerance), never finer than a millionth of the whole
  * scene where it is placed largest (or than --seam-tolerance, in the
  * scene's units), which is what the scene sewn as one model was held to. */
-/* The largest scale prototype k is placed at (1 when it is not placed). */
+/* The largest scale prototype k is placed at (1 when it is not placed); a
+ * copy's is its source's (sw_scene_placement.prototype_scale). */
 static double largest_scale(const sw_scene_plan *plan, size_t k)
 {
     double scale = 0;
     for (size_t i = 0; i < plan->placement_count; i++)
         if (plan->placements[i].prototype == k)
-            scale = fmax(scale, plan->placements[i].scale);
+            scale = fmax(scale, plan->placements[i].prototype_scale);
     return scale > 0 ? scale : 1;
 }
 

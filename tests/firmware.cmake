@@ -227,6 +227,12 @@ if(EXISTS ${SW_SHARED_MODELS}/occt_hammer.iges)
            ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR} ${SW_SHARED_MODELS} ${standin_patches})
 endif()
 
+# A scene of repeated parts packed as placed parts and as copies walks the
+# same, pixel for pixel (tests/test_instances_walk.sh), as built and with
+# every surface tessellated, with no crack and no gap.
+add_test(NAME instances_walk COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_instances_walk.sh
+         ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+
 # corpus.sh's verdicts (tests/corpus_row.py) on made-up steps' outputs:
 # faces OpenCASCADE transfers that the pack lacks and the build did not
 # name as skipped, the failed step kept as the reason, the summary.

@@ -97,6 +97,9 @@ typedef struct sw_scene_placement {
     size_t prototype;
     float transform[16];        /* column-major, as sw_pack_instance.transform */
     double scale;               /* the transform's uniform scale */
+    double prototype_scale;     /* the largest scale its prototype is placed at: its copies
+                                   (seamwalk-pack build --copies) keep it, and with it the
+                                   prototype's sewing tolerance */
     float color[4];
     char name[56];
 } sw_scene_placement;

@@ -192,6 +192,12 @@ sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
         plan->views.up_axis = st.up_axis;
     for (size_t k = 0; k < plan->prototype_count; k++)
         free(b.keys[k].path);
+    for (size_t i = 0; i < plan->placement_count; i++) {
+        sw_scene_placement *pl = &plan->placements[i];
+        for (size_t j = 0; j < plan->placement_count; j++)
+            if (plan->placements[j].prototype == pl->prototype)
+                pl->prototype_scale = fmax(pl->prototype_scale, plan->placements[j].scale);
+    }
     free(b.keys);
     scene_cache_free(&b.cache);
     free(st.parts);
