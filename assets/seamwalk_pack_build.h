@@ -30,6 +30,8 @@ typedef struct build_options {
     int input_count;
     int quiet, strict, iges_occt;
     int copies;                 /* --copies: a scene's parts stored one copy per placement */
+    int part_mode;              /* build-part: one prototype of a scene (prototype) */
+    long prototype;
     double seam_tolerance;      /* 0: sw_seam_default_tolerance */
     sw_part_levels_options part_levels;   /* --cut-patches */
     uint32_t threads;           /* --threads: make the levels on (0 or 1: this one alone) */
@@ -92,8 +94,18 @@ sw_status sw_pack_tool_notes(const build_options *o, const sw_import_report *rep
  * at its own tolerance, then merged, placed, read back and written to
  * o->out_path; the summary sums the prototypes'. */
 sw_status sw_pack_tool_pack_scene(const build_options *o, progress_context *pc,
-                                  sw_scene_plan *plan, const sw_import_report *reports,
-                                  seam_summary *summary, size_t *bytes_out, sw_error *err);
+                                  sw_scene_plan *plan, seam_summary *summary, size_t *bytes_out,
+                                  sw_error *err);
+
+/* Its steps, for building parts apart (seamwalk_pack_parts.c): prototype k
+ * packed as the whole build packs it, the same bytes (its import's notes
+ * in it, the summary's tolerance in the scene's units); and the packs of
+ * every prototype, in order, merged and placed as plan says, read back. */
+sw_status sw_pack_tool_pack_prototype(const build_options *o, progress_context *pc,
+                                      sw_scene_plan *plan, size_t k, uint8_t **bytes,
+                                      size_t *size, seam_summary *summary, sw_error *err);
+sw_status sw_pack_tool_place(const sw_scene_plan *plan, uint8_t *const *bytes,
+                             const size_t *sizes, uint8_t **out, size_t *out_size, sw_error *err);
 
 /* The model packed, verified and written to o->out_path, the sewing,
  * levels and repairs counted in *summary, the bytes written in

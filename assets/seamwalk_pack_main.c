@@ -35,6 +35,8 @@
 #include "sw_up_inputs.h"
 
 #include "seamwalk_pack_build.h"
+#include "seamwalk_pack_parts.h"
+#include "sw_pack_write.h"
 #include "sw_model_split.h"
 
 static const char usage_text[] =
@@ -42,6 +44,9 @@ static const char usage_text[] =
     "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
     "                           [--up x|y|z|-x|-y|-z] [--cut-patches N] [--threads N]\n"
     "                           [--copies]\n"
+    "       seamwalk-pack build-part SCENE.ini --prototype K -o PART.swpack [build options]\n"
+    "       seamwalk-pack merge SCENE.ini PART.swpack... -o OUT.swpack [--up AXIS] [--quiet]\n"
+    "       seamwalk-pack ninja SCENE.ini -o build.ninja [--pack OUT.swpack] [-- BUILD OPTIONS]\n"
     "       seamwalk-pack info [--json] PACK\n"
     "       seamwalk-pack verify PACK [--key KEYS.pub]\n"
     "       seamwalk-pack keygen -o PREFIX\n"
@@ -66,7 +71,11 @@ static const char usage_text[] =
     "A scene given alone is packed as placed parts: each file or generated object\n"
     "it names is sewn, simplified and stored once, in its own frame, and placed\n"
     "where its parts are (a pack of version 2). --copies: store every part as a\n"
-    "copy of its own (still placed: one copy per placement).\n";
+    "copy of its own (still placed: one copy per placement).\n"
+    "build-part packs one prototype of a scene (0-based, in the order the scene first\n"
+    "names each file or object) as build does; merge places the scene's prototypes'\n"
+    "packs, given in that order, into the pack build would write, byte for byte;\n"
+    "ninja writes a build.ninja that runs build-part for each prototype and merge.\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -271,13 +280,17 @@ static void placed_counts(const sw_scene_plan *plan, size_t *parts, size_t *patc
  * stored as copies, placed all the same. */
 static sw_status plan_copies(sw_scene_plan *plan, sw_error *err)
 {
-    sw_model *models = calloc(plan->placement_count + 1, sizeof *models);
-    if (!models)
-        return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
-    sw_status st = SW_OK;
-    for (size_t i = 0; i < plan->placement_count; i++) {
+    size_t n = plan->placement_count;
+    sw_model *models = calloc(n + 1, sizeof *models);
+    char **sources = calloc(n + 1, sizeof *sources);
+    sw_import_report *reports = calloc(n + 1, sizeof *reports);
+    uint8_t *reported = calloc(plan->prototype_count + 1, 1);
+    sw_status st = models && sources && reports && reported
+                       ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    for (size_t i = 0; st == SW_OK && i < n; i++) {
+        size_t k = plan->placements[i].prototype;
+        const sw_model *from = &plan->prototypes[k];
         sw_model_init(&models[i]);
-        const sw_model *from = &plan->prototypes[plan->placements[i].prototype];
         for (size_t p = 0; st == SW_OK && p < from->part_count; p++) {
             st = sw_model_begin_part(&models[i], from->parts[p].name, from->parts[p].color, err);
             for (size_t f = 0; st == SW_OK && f < from->parts[p].surface_count; f++)
@@ -285,14 +298,46 @@ static sw_status plan_copies(sw_scene_plan *plan, sw_error *err)
                                            err);
         }
         models[i].model_tolerance = from->model_tolerance;
+        if (plan->sources[k] && !(sources[i] = strdup(plan->sources[k])))
+            st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+        if (!reported[k])   /* the file's import, told once */
+            reports[i] = plan->reports[k], reported[k] = 1;
+    }
+    free(reported);
+    if (st != SW_OK) {
+        for (size_t i = 0; models && i < n; i++)
+            sw_model_free(&models[i]), free(sources ? sources[i] : NULL);
+        free(models), free(sources), free(reports);
+        return st;
     }
     for (size_t k = 0; k < plan->prototype_count; k++)
-        sw_model_free(&plan->prototypes[k]);
-    free(plan->prototypes);
-    plan->prototypes = models;
-    plan->prototype_count = plan->placement_count;
-    for (size_t i = 0; i < plan->placement_count; i++)
+        sw_model_free(&plan->prototypes[k]), free(plan->sources[k]);
+    free(plan->prototypes), free(plan->sources), free(plan->reports);
+    plan->prototypes = models, plan->sources = sources, plan->reports = reports;
+    plan->prototype_count = n;
+    for (size_t i = 0; i < n; i++)
         plan->placements[i].prototype = i;
+    return SW_OK;
+}
+
+/* build-part: prototype o->prototype of the plan, packed as build packs
+ * it, written as a pack of its own (version 1) for merge. */
+static sw_status build_one_prototype(const build_options *o, progress_context *pc,
+                                     sw_scene_plan *plan, seam_summary *seams,
+                                     size_t *bytes_out, size_t *parts, size_t *patches,
+                                     sw_error *err)
+{
+    if ((size_t)o->prototype >= plan->prototype_count)
+        return sw_error_set(err, SW_ERR_ARG, "%s: --prototype %ld, the scene has %zu (0 to %zu)",
+                            o->inputs[0], o->prototype, plan->prototype_count,
+                            plan->prototype_count - 1);
+    size_t k = (size_t)o->prototype;
+    uint8_t *bytes = NULL;
+    *parts = plan->prototypes[k].part_count, *patches = plan->prototypes[k].patch_count;
+    sw_status st = sw_pack_tool_pack_prototype(o, pc, plan, k, &bytes, bytes_out, seams, err);
+    if (st == SW_OK)
+        st = sw_write_file_atomic(o->out_path, bytes, *bytes_out, err);
+    free(bytes);
     return st;
 }
 
@@ -326,8 +371,10 @@ static sw_status build_scene(const build_options *o, sw_import_report *report,
         if (*patches == 0)
             st = sw_pack_tool_check_not_empty(o, &empty, report, err);
     }
-    if (st == SW_OK)
-        st = sw_pack_tool_pack_scene(o, &pc, &plan, report, seams, bytes_out, err);
+    if (st == SW_OK && o->part_mode)
+        st = build_one_prototype(o, &pc, &plan, seams, bytes_out, parts, patches, err);
+    else if (st == SW_OK)
+        st = sw_pack_tool_pack_scene(o, &pc, &plan, seams, bytes_out, err);
     sw_scene_plan_free(&plan);
     sw_model_free(&empty);
     sw_progress_clear(&pc.bar);
@@ -510,6 +557,13 @@ static int parse_build(int argc, char **argv, build_options *o)
             o->quiet = 1;
         } else if (strcmp(a, "--copies") == 0) {
             o->copies = 1;
+        } else if (o->part_mode && strcmp(a, "--prototype") == 0) {
+            const char *t = i + 1 < argc ? argv[++i] : "";
+            char *end;
+            o->prototype = strtol(t, &end, 10);
+            if (end == t || *end != '\0' || o->prototype < 0)
+                return usage_error("build-part: --prototype takes a prototype's number from 0, "
+                                   "not '%s'", t);
         } else if (strcmp(a, "--strict") == 0) {
             o->strict = 1;
         } else if (a[0] == '-' && a[1] != '\0') {
@@ -520,6 +574,9 @@ static int parse_build(int argc, char **argv, build_options *o)
     }
     if (!o->out_path || o->input_count == 0)
         return usage_error("build: %s", !o->out_path ? "missing -o OUT.swpack" : "no INPUT");
+    if (o->part_mode && (o->input_count != 1 || kind_of(o->inputs[0]) != INPUT_SCENE ||
+                         o->prototype < 0 || o->copies))
+        return usage_error("build-part: %s", "takes one SCENE.ini and --prototype K");
     return 0;
 }
 
@@ -549,9 +606,10 @@ static sw_status check_output(const char *path, sw_error *err)
     return SW_OK;
 }
 
-static int cmd_build(int argc, char **argv)
+static int cmd_build(int argc, char **argv, int part_mode)
 {
-    build_options o = { .inputs = calloc((size_t)argc + 1, sizeof(char *)) };
+    build_options o = { .inputs = calloc((size_t)argc + 1, sizeof(char *)),
+                        .part_mode = part_mode, .prototype = -1 };
     sw_import_report *reports = calloc((size_t)argc + 1, sizeof *reports);
     if (!o.inputs || !reports) {
         free(o.inputs);
@@ -676,7 +734,13 @@ int main(int argc, char **argv)
     }
     int rc;
     if (strcmp(cmd, "build") == 0)
-        rc = cmd_build(argc - 2, argv + 2);
+        rc = cmd_build(argc - 2, argv + 2, 0);
+    else if (strcmp(cmd, "build-part") == 0)
+        rc = cmd_build(argc - 2, argv + 2, 1);
+    else if (strcmp(cmd, "merge") == 0)
+        rc = sw_pack_cmd_merge(argc - 2, argv + 2);
+    else if (strcmp(cmd, "ninja") == 0)
+        rc = sw_pack_cmd_ninja(argc - 2, argv + 2);
     else if (strcmp(cmd, "info") == 0)
         rc = cmd_info(argc - 2, argv + 2);
     else if (strcmp(cmd, "verify") == 0)

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_pack_import_notes.h"
 #include "sw_pack_instances.h"
 #include "sw_pack_merge.h"
 #include "sw_pack_sections.h"
@@ -127,15 +128,50 @@ typedef struct proto_jobs {
     sw_error *errors;
 } proto_jobs;
 
+/* Prototype k packed on threads threads, at its tolerance (floor: the
+ * placed scene's, placed_floor), with what its file's import said. */
+static sw_status pack_prototype(const build_options *o, progress_context *pc,
+                                sw_scene_plan *plan, size_t k, double floor, uint32_t threads,
+                                uint8_t **bytes, size_t *size, seam_summary *summary,
+                                sw_error *err)
+{
+    build_options ok = *o;
+    ok.seam_tolerance = prototype_tolerance(o, plan, k, floor);
+    ok.threads = threads;
+    sw_model *m = &plan->prototypes[k];
+    m->up_axis = plan->views.up_axis;
+    pc->model = m;
+    const char *name = plan->sources[k] ? sw_pack_tool_base_name(plan->sources[k]) : "generated";
+    sw_pack_import_note *notes = NULL;
+    uint32_t note_count = 0;
+    sw_status st = sw_pack_notes_from_reports(&name, &plan->reports[k], 1, &notes, &note_count,
+                                              err);
+    if (st == SW_OK)
+        st = sw_pack_tool_pack_bytes(&ok, pc, m, notes, note_count, summary, bytes, size, err);
+    free(notes);
+    return st;
+}
+
+static double placed_floor(const sw_scene_plan *plan)
+{
+    return 1e-6 * placed_diagonal(plan);
+}
+
 static void pack_one(proto_jobs *j, size_t k, progress_context *pc)
 {
-    build_options ok = *j->o;
-    ok.seam_tolerance = prototype_tolerance(j->o, j->plan, k, j->floor);
-    ok.threads = j->inner_threads;
-    sw_model *m = &j->plan->prototypes[k];
-    pc->model = m;
-    j->status[k] = sw_pack_tool_pack_bytes(&ok, pc, m, NULL, 0, &j->summaries[k], &j->bytes[k],
-                                           &j->sizes[k], &j->errors[k]);
+    j->status[k] = pack_prototype(j->o, pc, j->plan, k, j->floor, j->inner_threads, &j->bytes[k],
+                                  &j->sizes[k], &j->summaries[k], &j->errors[k]);
+}
+
+sw_status sw_pack_tool_pack_prototype(const build_options *o, progress_context *pc,
+                                      sw_scene_plan *plan, size_t k, uint8_t **bytes,
+                                      size_t *size, seam_summary *summary, sw_error *err)
+{
+    sw_status st = pack_prototype(o, pc, plan, k, placed_floor(plan), o->threads, bytes, size,
+                                  summary, err);
+    if (st == SW_OK)
+        summary->sewing.tolerance *= largest_scale(plan, k);
+    return st;
 }
 
 static void *pack_worker(void *arg)
@@ -187,7 +223,7 @@ static sw_status pack_prototypes(const build_options *o, progress_context *pc,
     uint32_t threads = o->threads > 1 ? o->threads : 1;
     if (threads > n)
         threads = (uint32_t)n;
-    proto_jobs j = { .o = o, .plan = plan, .floor = 1e-6 * placed_diagonal(plan),
+    proto_jobs j = { .o = o, .plan = plan, .floor = placed_floor(plan),
                      .inner_threads = threads > 1 ? 1 : o->threads, .bytes = bytes,
                      .sizes = sizes, .order = calloc(n + 1, sizeof(size_t)),
                      .summaries = calloc(n + 1, sizeof(seam_summary)),
@@ -244,11 +280,8 @@ static sw_status instances_of(const sw_scene_plan *plan, sw_pack_instance **out,
     return SW_OK;
 }
 
-/* The prototypes' packs merged, placed, with the scene's viewpoints, up
- * axis and notes, serialised and read back as the runtime will. */
-static sw_status merge_placed(const sw_scene_plan *plan, uint8_t **bytes, const size_t *sizes,
-                              const sw_pack_import_note *notes, uint32_t note_count,
-                              uint8_t **out, size_t *out_size, sw_error *err)
+sw_status sw_pack_tool_place(const sw_scene_plan *plan, uint8_t *const *bytes,
+                             const size_t *sizes, uint8_t **out, size_t *out_size, sw_error *err)
 {
     size_t n = plan->prototype_count;
     sw_pack *packs = calloc(n + 1, sizeof *packs);
@@ -256,7 +289,8 @@ static sw_status merge_placed(const sw_scene_plan *plan, uint8_t **bytes, const 
     sw_pack_instance *inst = NULL;
     sw_status st = packs && views ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
     for (size_t k = 0; st == SW_OK && k < n; k++)
-        st = sw_pack_open_memory(bytes[k], sizes[k], &packs[k], err);
+        if ((st = sw_pack_open_memory(bytes[k], sizes[k], &packs[k], err)) != SW_OK)
+            sw_error_prefix(err, "prototype %zu of %zu", k + 1, n);
     if (st == SW_OK)
         st = sw_pack_viewpoints_from_model(&plan->views, views, err);
     if (st == SW_OK)
@@ -271,8 +305,6 @@ static sw_status merge_placed(const sw_scene_plan *plan, uint8_t **bytes, const 
         c->viewpoint_count = (uint32_t)plan->views.viewpoint_count;
         const sw_pack_orientation orientation = { .up_axis = plan->views.up_axis };
         c->orientation = &orientation;
-        c->import_notes = notes;
-        c->import_note_count = note_count;
         st = sw_pack_serialize(c, out, out_size, err);
         sw_pack_merged_free(&merged);
     }
@@ -286,23 +318,19 @@ static sw_status merge_placed(const sw_scene_plan *plan, uint8_t **bytes, const 
 }
 
 sw_status sw_pack_tool_pack_scene(const build_options *o, progress_context *pc,
-                                  sw_scene_plan *plan, const sw_import_report *reports,
-                                  seam_summary *summary, size_t *bytes_out, sw_error *err)
+                                  sw_scene_plan *plan, seam_summary *summary, size_t *bytes_out,
+                                  sw_error *err)
 {
     size_t n = plan->prototype_count;
     uint8_t **bytes = calloc(n + 1, sizeof *bytes), *out = NULL;
     size_t *sizes = calloc(n + 1, sizeof *sizes);
-    sw_pack_import_note *notes = NULL;
-    uint32_t note_count = 0;
     memset(summary, 0, sizeof *summary);
     sw_status st = bytes && sizes ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
-    if (st == SW_OK)
-        st = sw_pack_tool_notes(o, reports, &notes, &note_count, err);
     if (st == SW_OK)
         st = pack_prototypes(o, pc, plan, summary, bytes, sizes, err);
     if (st == SW_OK) {
         sw_pack_tool_progress(pc, "placing", 0.0);
-        st = merge_placed(plan, bytes, sizes, notes, note_count, &out, bytes_out, err);
+        st = sw_pack_tool_place(plan, bytes, sizes, &out, bytes_out, err);
     }
     if (st == SW_OK) {
         sw_pack_tool_progress(pc, "writing", 0.0);
@@ -312,7 +340,6 @@ sw_status sw_pack_tool_pack_scene(const build_options *o, progress_context *pc,
         free(bytes[k]);
     free(bytes);
     free(sizes);
-    free(notes);
     free(out);
     return st;
 }

@@ -24,6 +24,12 @@ add_test(NAME test_pack_cli
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_pack_cli.sh $<TARGET_FILE:seamwalk-pack>
           ${SW_SAMPLES} ${SW_SHARED_MODELS})
 sw_host_only_test(test_pack_cli PROGRAMS seamwalk-pack)
+# A scene built whole, on 1 and on 4 threads, in parts (build-part, merge)
+# and through the build.ninja `seamwalk-pack ninja` writes: one pack, byte
+# for byte (tests/test_build_parts.sh).
+add_test(NAME build_parts COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_build_parts.sh
+         ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+sw_host_only_test(build_parts PROGRAMS seamwalk-pack)
 
 # The STEP file's quick pass before OpenCASCADE: instances, shells' faces,
 # the limits (issue 25: a shell listing one face 200,000 times).

@@ -14,8 +14,8 @@ enum { M_PARTS, M_PATCHES, M_CONTROL, M_ADJACENCY, M_SURFACES, M_TRIM_LOOPS, M_T
        M_SLOT_REFS, M_SURFACE_LOOPS, M_LEVELS, M_SURFACE_LEVELS, M_LEVEL_VERTICES,
        M_LEVEL_INDICES, M_CHAINS, M_CHAIN_POINTS, M_SUPERS, M_MEMBERS, M_SUPER_OF,
        M_PART_LEVELS, M_PIECE_LEVELS, M_PIECE_OF, M_PL_VERTICES, M_PL_INDICES, M_PROTOTYPES,
-       M_COUNT };
-_Static_assert(M_COUNT <= 32, "sw_pack_merged.arrays");
+       M_NOTES, M_COUNT };
+_Static_assert(M_COUNT <= 40, "sw_pack_merged.arrays");
 
 /* Each input has the groups the first has. */
 static sw_status check_inputs(const sw_pack *packs, uint32_t count, sw_error *err)
@@ -53,7 +53,7 @@ static sw_status take(sw_pack_merged *m, int a, uint64_t n, size_t size, sw_erro
 }
 
 static sw_status take_all(sw_pack_merged *m, const uint64_t t[SW_SPACE_COUNT], uint32_t count,
-                          sw_error *err)
+                          uint64_t notes, sw_error *err)
 {
     const uint64_t s = t[SW_SPACE_SURFACES];
     const struct { uint64_t n; size_t size; } want[M_COUNT] = {
@@ -82,7 +82,7 @@ static sw_status take_all(sw_pack_merged *m, const uint64_t t[SW_SPACE_COUNT], u
         { t[SW_SPACE_PIECES] + 1, sizeof(uint32_t) }, { s, sizeof(uint32_t) },
         { t[SW_SPACE_PART_LEVEL_VERTICES], sizeof(sw_level_vertex) },
         { t[SW_SPACE_PART_LEVEL_INDICES], sizeof(uint16_t) },
-        { count, sizeof(sw_pack_prototype) } };
+        { count, sizeof(sw_pack_prototype) }, { notes, sizeof(sw_pack_import_note) } };
     sw_status st = SW_OK;
     for (int a = 0; st == SW_OK && a < M_COUNT; a++)
         st = take(m, a, want[a].n, want[a].size, err);
@@ -299,8 +299,11 @@ sw_status sw_pack_merge(const sw_pack *packs, uint32_t count, const sw_pack_inst
             total[SW_SPACE_SEAM_ORIGINALS] + total[SW_SPACE_SEAM_COLLAPSES] >= SW_SEAM_NONE)
             st = sw_error_set(err, SW_ERR_RANGE, "merge: %llu records of one kind, past a "
                               "32-bit index", (unsigned long long)total[s]);
+    uint64_t notes = 0;
+    for (uint32_t k = 0; st == SW_OK && k < count; k++)
+        notes += packs[k].import_note_count;
     if (st == SW_OK)
-        st = take_all(out, total, count, err);
+        st = take_all(out, total, count, notes, err);
     float tolerance = 0;
     for (uint32_t k = 0; st == SW_OK && k < count; k++) {
         const sw_pack *p = &packs[k];
@@ -320,6 +323,9 @@ sw_status sw_pack_merge(const sw_pack *packs, uint32_t count, const sw_pack_inst
         if (p->seam_header)
             move_seam(out, p, &mv, base);
         move_levels(out, p, &mv, base);
+        memcpy((sw_pack_import_note *)out->arrays[M_NOTES] + out->contents.import_note_count,
+               p->import_notes, (size_t)p->import_note_count * sizeof *p->import_notes);
+        out->contents.import_note_count += p->import_note_count;
         tolerance = fmaxf(tolerance, p->seam.tolerance);
         for (int s = 0; s < SW_SPACE_COUNT; s++)
             base[s] += n[s];
@@ -334,7 +340,10 @@ sw_status sw_pack_merge(const sw_pack *packs, uint32_t count, const sw_pack_inst
     ((uint32_t *)out->arrays[M_PIECE_LEVELS])[total[SW_SPACE_PIECES]] =
         (uint32_t)total[SW_SPACE_PART_LEVELS];
     merge_meta(out, packs, count, total);
+    uint32_t note_count = out->contents.import_note_count;
     fill_contents(out, &packs[0], total, count, tolerance);
+    out->contents.import_notes = note_count ? out->arrays[M_NOTES] : NULL;
+    out->contents.import_note_count = note_count;
     out->contents.instances = instances;
     out->contents.instance_count = instance_count;
     return SW_OK;

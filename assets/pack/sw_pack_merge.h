@@ -15,9 +15,10 @@
 #include "sw_pack_contents.h"
 
 typedef struct sw_pack_merged {
-    sw_pack_contents contents;     /* views of the arrays below; viewpoints, orientation and
-                                      import notes are the caller's to set */
-    void *arrays[32];              /* owned */
+    sw_pack_contents contents;     /* views of the arrays below (the import notes are the
+                                      inputs' in turn); viewpoints and orientation are the
+                                      caller's to set */
+    void *arrays[40];              /* owned */
     sw_pack_meta meta;
     sw_seam_graph seam;
     sw_levels levels;

@@ -105,17 +105,26 @@ typedef struct sw_scene_placement {
 } sw_scene_placement;
 
 typedef struct sw_scene_plan {
-    sw_model *prototypes;       /* prototype_count models */
+    sw_model *prototypes;       /* prototype_count models (empty when not imported) */
     size_t prototype_count;
+    char **sources;             /* each prototype's file, NULL for a generated object */
+    sw_import_report *reports;  /* each prototype's import (zero for a generated object or
+                                   a file another prototype read first) */
     sw_scene_placement *placements;
     size_t placement_count;
     sw_model views;             /* the scene's viewpoints and up axis; no parts */
 } sw_scene_plan;
 
-/* Loads the scene at path as a plan (errors as sw_scene_load_with's); the
- * caller frees it with sw_scene_plan_free, also after a failure. */
+/* Loads the scene at path as a plan (errors as sw_scene_load_with's);
+ * report (may be NULL) gets the imports' reports summed. The caller frees
+ * the plan with sw_scene_plan_free, also after a failure. */
 sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
                              sw_import_report *report, sw_scene_plan *plan, sw_error *err);
+
+/* The same without importing anything: the prototypes (their sources),
+ * the placements and the views, for merging packs built apart and writing
+ * build files (the prototype models stay empty). */
+sw_status sw_scene_plan_read(const char *path, sw_scene_plan *plan, sw_error *err);
 void sw_scene_plan_free(sw_scene_plan *plan);
 
 /* 1 when path names a scene (.ini), 0 otherwise. */

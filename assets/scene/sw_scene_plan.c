@@ -22,6 +22,7 @@ typedef struct plan_builder {
     proto_key *keys;
     size_t capacity, placement_capacity;
     scene_cache cache;
+    int import;                 /* 0: the prototypes' sources only */
 } plan_builder;
 
 static int uniform(const double s[3])
@@ -70,19 +71,33 @@ static sw_status add_prototype(plan_builder *b, const scene_part *part, proto_ke
     if (plan->prototype_count == b->capacity) {
         size_t cap = b->capacity ? 2 * b->capacity : 16;
         sw_model *models = realloc(plan->prototypes, cap * sizeof *models);
-        proto_key *keys = models ? realloc(b->keys, cap * sizeof *keys) : NULL;
         if (models)
             plan->prototypes = models;
-        if (!keys)
+        proto_key *keys = models ? realloc(b->keys, cap * sizeof *keys) : NULL;
+        if (keys)
+            b->keys = keys;
+        char **sources = keys ? realloc(plan->sources, cap * sizeof *sources) : NULL;
+        if (sources)
+            plan->sources = sources;
+        sw_import_report *reports = sources ? realloc(plan->reports, cap * sizeof *reports)
+                                            : NULL;
+        if (!reports)
             return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for %zu prototypes", cap);
-        b->keys = keys;
+        plan->reports = reports;
         b->capacity = cap;
     }
-    sw_model *m = &plan->prototypes[plan->prototype_count];
+    size_t k = plan->prototype_count;
+    sw_model *m = &plan->prototypes[k];
     sw_model_init(m);
-    b->keys[plan->prototype_count] = *key;
+    memset(&plan->reports[k], 0, sizeof plan->reports[k]);
+    plan->sources[k] = key->path ? strdup(key->path) : NULL;
+    b->keys[k] = *key;
     plan->prototype_count++;
     key->path = NULL; /* the builder owns it now */
+    if (!b->import)
+        return key->generated || plan->sources[k] ? SW_OK
+                                                  : sw_error_set(err, SW_ERR_NO_MEMORY,
+                                                                 "out of memory");
     float color[4];
     sw_scene_default_color(plan->prototype_count - 1, color);
     sw_status st;
@@ -94,8 +109,10 @@ static sw_status add_prototype(plan_builder *b, const scene_part *part, proto_ke
         if (st == SW_OK)
             st = sw_proc_add(m, &part->proc, err);
     } else {
-        st = scene_cache_place(&b->cache, b->keys[plan->prototype_count - 1].path, "", color,
-                               options, report, m, err);
+        st = scene_cache_place(&b->cache, b->keys[k].path, "", color, options,
+                               &plan->reports[k], m, err);
+        if (report)
+            sw_import_report_merge(report, &plan->reports[k]);
         for (size_t p = 0; st == SW_OK && p < m->part_count; p++)
             if (m->parts[p].name[0] == '/')
                 memmove(m->parts[p].name, m->parts[p].name + 1, strlen(m->parts[p].name));
@@ -169,8 +186,8 @@ static sw_status plan_part(plan_builder *b, const scene_state *st, const scene_p
     return status;
 }
 
-sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
-                             sw_import_report *report, sw_scene_plan *plan, sw_error *err)
+static sw_status plan_load(const char *path, int import, const sw_import_options *options,
+                           sw_import_report *report, sw_scene_plan *plan, sw_error *err)
 {
     memset(plan, 0, sizeof *plan);
     sw_model_init(&plan->views);
@@ -183,7 +200,7 @@ sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
     scene_state st = { .text = text ? text : "", .size = size, .file_name = path, .err = err };
     if (status == SW_OK)
         status = scene_parse(&st);
-    plan_builder b = { .plan = plan };
+    plan_builder b = { .plan = plan, .import = import };
     for (size_t i = 0; status == SW_OK && i < st.part_count; i++)
         status = plan_part(&b, &st, &st.parts[i], base_dir, options, report, err);
     for (size_t i = 0; status == SW_OK && i < st.view_count; i++)
@@ -206,11 +223,26 @@ sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
     return status;
 }
 
+sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
+                             sw_import_report *report, sw_scene_plan *plan, sw_error *err)
+{
+    return plan_load(path, 1, options, report, plan, err);
+}
+
+sw_status sw_scene_plan_read(const char *path, sw_scene_plan *plan, sw_error *err)
+{
+    return plan_load(path, 0, NULL, NULL, plan, err);
+}
+
 void sw_scene_plan_free(sw_scene_plan *plan)
 {
-    for (size_t k = 0; k < plan->prototype_count; k++)
+    for (size_t k = 0; k < plan->prototype_count; k++) {
         sw_model_free(&plan->prototypes[k]);
+        free(plan->sources[k]);
+    }
     free(plan->prototypes);
+    free(plan->sources);
+    free(plan->reports);
     free(plan->placements);
     sw_model_free(&plan->views);
     memset(plan, 0, sizeof *plan);

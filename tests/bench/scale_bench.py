@@ -138,9 +138,9 @@ class Scene:
         f["bytes_per_seam_vertex"] = (seam.get("bytes", 0) / seam["vertices"]
                                       if seam.get("vertices") else None)
         f["bytes_per_patch"] = info["total_bytes"] / max(1, info["bezier_patches"])
-        f["placed_parts"] = info.get("instance_count", info["part_count"])
+        f["placed_parts"] = info["part_count"]
         f["bytes_per_placed_part"] = info["total_bytes"] / max(1, f["placed_parts"])
-        f["stored_parts"] = info["part_count"]
+        f["stored_parts"] = info.get("prototype_count") or info["part_count"]
         return info
 
     def path(self, info):
@@ -187,7 +187,7 @@ class Scene:
 
 def print_scene(sc):
     f = sc.figures
-    print("\n%d-patch showroom: %s stored part(s), %s placed" %
+    print("\n%d-patch showroom: %s stored (prototypes), %s parts placed" %
           (sc.patches, f.get("stored_parts", "?"), f.get("placed_parts", "?")))
     rows = [("build", "build_s", "%.1f s wall (%.1f s CPU)" %
              (f.get("build_s", 0), f.get("build_cpu_s", 0))),
