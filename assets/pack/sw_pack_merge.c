@@ -191,6 +191,41 @@ static void move_levels(sw_pack_merged *m, const sw_pack *p, const sw_pack_move 
     }
 }
 
+/* The levels', clusters' and part levels' views (s: the surfaces). */
+static void fill_derived(sw_pack_merged *m, const sw_pack *first, const uint64_t *t, uint32_t s)
+{
+    sw_pack_contents *c = &m->contents;
+    if (first->levels_header) {
+        m->levels = (sw_levels){
+            .levels = m->arrays[M_LEVELS], .surface_levels = m->arrays[M_SURFACE_LEVELS],
+            .vertices = m->arrays[M_LEVEL_VERTICES], .indices = m->arrays[M_LEVEL_INDICES],
+            .chains = m->arrays[M_CHAINS], .chain_points = m->arrays[M_CHAIN_POINTS],
+            .level_count = (uint32_t)t[SW_SPACE_LEVELS],
+            .vertex_count = (uint32_t)t[SW_SPACE_LEVEL_VERTICES],
+            .index_count = (uint32_t)t[SW_SPACE_LEVEL_INDICES],
+            .chain_count = (uint32_t)t[SW_SPACE_LEVEL_CHAINS],
+            .chain_point_count = (uint32_t)t[SW_SPACE_LEVEL_CHAIN_POINTS], .surface_count = s };
+        c->levels = &m->levels;
+    }
+    if (first->supers.supers) {
+        m->supers = (sw_supers){ .supers = m->arrays[M_SUPERS], .members = m->arrays[M_MEMBERS],
+                                 .super_of = m->arrays[M_SUPER_OF],
+                                 .super_count = (uint32_t)t[SW_SPACE_SUPERS],
+                                 .surface_count = s };
+        c->supers = &m->supers;
+    }
+    if (first->part_levels.levels) {
+        m->part_levels = (sw_part_levels){
+            .levels = m->arrays[M_PART_LEVELS], .piece_levels = m->arrays[M_PIECE_LEVELS],
+            .piece_of = m->arrays[M_PIECE_OF], .vertices = m->arrays[M_PL_VERTICES],
+            .indices = m->arrays[M_PL_INDICES], .level_count = (uint32_t)t[SW_SPACE_PART_LEVELS],
+            .vertex_count = (uint32_t)t[SW_SPACE_PART_LEVEL_VERTICES],
+            .index_count = (uint32_t)t[SW_SPACE_PART_LEVEL_INDICES],
+            .piece_count = (uint32_t)t[SW_SPACE_PIECES], .surface_count = s };
+        c->part_levels = &m->part_levels;
+    }
+}
+
 /* The views of the merged arrays, as the writer takes them. */
 static void fill_contents(sw_pack_merged *m, const sw_pack *first, const uint64_t *t,
                           uint32_t count, float tolerance)
@@ -228,35 +263,7 @@ static void fill_contents(sw_pack_merged *m, const sw_pack *first, const uint64_
             .tolerance = tolerance };
         c->seam = &m->seam;
     }
-    if (first->levels_header) {
-        m->levels = (sw_levels){
-            .levels = m->arrays[M_LEVELS], .surface_levels = m->arrays[M_SURFACE_LEVELS],
-            .vertices = m->arrays[M_LEVEL_VERTICES], .indices = m->arrays[M_LEVEL_INDICES],
-            .chains = m->arrays[M_CHAINS], .chain_points = m->arrays[M_CHAIN_POINTS],
-            .level_count = (uint32_t)t[SW_SPACE_LEVELS],
-            .vertex_count = (uint32_t)t[SW_SPACE_LEVEL_VERTICES],
-            .index_count = (uint32_t)t[SW_SPACE_LEVEL_INDICES],
-            .chain_count = (uint32_t)t[SW_SPACE_LEVEL_CHAINS],
-            .chain_point_count = (uint32_t)t[SW_SPACE_LEVEL_CHAIN_POINTS], .surface_count = s };
-        c->levels = &m->levels;
-    }
-    if (first->supers.supers) {
-        m->supers = (sw_supers){ .supers = m->arrays[M_SUPERS], .members = m->arrays[M_MEMBERS],
-                                 .super_of = m->arrays[M_SUPER_OF],
-                                 .super_count = (uint32_t)t[SW_SPACE_SUPERS],
-                                 .surface_count = s };
-        c->supers = &m->supers;
-    }
-    if (first->part_levels.levels) {
-        m->part_levels = (sw_part_levels){
-            .levels = m->arrays[M_PART_LEVELS], .piece_levels = m->arrays[M_PIECE_LEVELS],
-            .piece_of = m->arrays[M_PIECE_OF], .vertices = m->arrays[M_PL_VERTICES],
-            .indices = m->arrays[M_PL_INDICES], .level_count = (uint32_t)t[SW_SPACE_PART_LEVELS],
-            .vertex_count = (uint32_t)t[SW_SPACE_PART_LEVEL_VERTICES],
-            .index_count = (uint32_t)t[SW_SPACE_PART_LEVEL_INDICES],
-            .piece_count = (uint32_t)t[SW_SPACE_PIECES], .surface_count = s };
-        c->part_levels = &m->part_levels;
-    }
+    fill_derived(m, first, t, s);
     c->prototypes = m->arrays[M_PROTOTYPES];
     c->prototype_count = count;
 }
@@ -282,57 +289,73 @@ static void merge_meta(sw_pack_merged *m, const sw_pack *packs, uint32_t count,
     }
 }
 
-sw_status sw_pack_merge(const sw_pack *packs, uint32_t count, const sw_pack_instance *instances,
-                        uint32_t instance_count, sw_pack_merged *out, sw_error *err)
+/* The inputs' counts together, each within a 32-bit index; their notes. */
+static sw_status merged_totals(const sw_pack *packs, uint32_t count, uint64_t total[SW_SPACE_COUNT],
+                               uint64_t *notes, sw_error *err)
 {
-    memset(out, 0, sizeof *out);
-    sw_status st = check_inputs(packs, count, err);
-    uint64_t total[SW_SPACE_COUNT] = { 0 }, base[SW_SPACE_COUNT] = { 0 };
-    for (uint32_t k = 0; st == SW_OK && k < count; k++) {
+    *notes = 0;
+    for (uint32_t k = 0; k < count; k++) {
         uint64_t n[SW_SPACE_COUNT];
         sw_pack_space_counts(&packs[k], n);
         for (int s = 0; s < SW_SPACE_COUNT; s++)
             total[s] += n[s];
+        *notes += packs[k].import_note_count;
     }
-    for (int s = 0; st == SW_OK && s < SW_SPACE_COUNT; s++)
-        if (total[s] >= UINT32_MAX ||
-            total[SW_SPACE_SEAM_ORIGINALS] + total[SW_SPACE_SEAM_COLLAPSES] >= SW_SEAM_NONE)
-            st = sw_error_set(err, SW_ERR_RANGE, "merge: %llu records of one kind, past a "
-                              "32-bit index", (unsigned long long)total[s]);
-    uint64_t notes = 0;
-    for (uint32_t k = 0; st == SW_OK && k < count; k++)
-        notes += packs[k].import_note_count;
+    for (int s = 0; s < SW_SPACE_COUNT; s++)
+        if (total[s] >= UINT32_MAX)
+            return sw_error_set(err, SW_ERR_RANGE, "merge: %llu records of one kind, past a "
+                                "32-bit index", (unsigned long long)total[s]);
+    if (total[SW_SPACE_SEAM_ORIGINALS] + total[SW_SPACE_SEAM_COLLAPSES] >= SW_SEAM_NONE)
+        return sw_error_set(err, SW_ERR_RANGE, "merge: more seam vertices than a 32-bit index "
+                            "holds");
+    return SW_OK;
+}
+
+/* Input k's records after the inputs' before it (base, moved on past
+ * them), its runs recorded as prototype k. */
+static void merge_one(sw_pack_merged *out, const sw_pack *p, uint32_t k, const uint64_t *total,
+                      uint64_t *base)
+{
+    sw_pack_move mv = { .src_originals = p->seam.original_count,
+                        .dst_originals = (uint32_t)total[SW_SPACE_SEAM_ORIGINALS], .scale = 1 };
+    sw_pack_prototype *proto = (sw_pack_prototype *)out->arrays[M_PROTOTYPES] + k;
+    uint64_t n[SW_SPACE_COUNT];
+    sw_pack_space_counts(p, n);
+    for (int s = 0; s < SW_SPACE_COUNT; s++) {
+        mv.shift[s] = (int64_t)base[s];
+        proto->first[s] = (uint32_t)base[s];
+        proto->count[s] = (uint32_t)n[s];
+    }
+    proto->seam_tolerance = p->seam_header ? p->seam.tolerance : 0;
+    move_model(out, p, &mv, base);
+    if (p->seam_header)
+        move_seam(out, p, &mv, base);
+    move_levels(out, p, &mv, base);
+    memcpy((sw_pack_import_note *)out->arrays[M_NOTES] + out->contents.import_note_count,
+           p->import_notes, (size_t)p->import_note_count * sizeof *p->import_notes);
+    out->contents.import_note_count += p->import_note_count;
+    for (int s = 0; s < SW_SPACE_COUNT; s++)
+        base[s] += n[s];
+}
+
+sw_status sw_pack_merge(const sw_pack *packs, uint32_t count, const sw_pack_instance *instances,
+                        uint32_t instance_count, sw_pack_merged *out, sw_error *err)
+{
+    memset(out, 0, sizeof *out);
+    uint64_t total[SW_SPACE_COUNT] = { 0 }, base[SW_SPACE_COUNT] = { 0 }, notes = 0;
+    sw_status st = check_inputs(packs, count, err);
+    if (st == SW_OK)
+        st = merged_totals(packs, count, total, &notes, err);
     if (st == SW_OK)
         st = take_all(out, total, count, notes, err);
-    float tolerance = 0;
-    for (uint32_t k = 0; st == SW_OK && k < count; k++) {
-        const sw_pack *p = &packs[k];
-        sw_pack_move mv = { .src_originals = p->seam.original_count,
-                            .dst_originals = (uint32_t)total[SW_SPACE_SEAM_ORIGINALS],
-                            .scale = 1 };
-        sw_pack_prototype *proto = (sw_pack_prototype *)out->arrays[M_PROTOTYPES] + k;
-        uint64_t n[SW_SPACE_COUNT];
-        sw_pack_space_counts(p, n);
-        for (int s = 0; s < SW_SPACE_COUNT; s++) {
-            mv.shift[s] = (int64_t)base[s];
-            proto->first[s] = (uint32_t)base[s];
-            proto->count[s] = (uint32_t)n[s];
-        }
-        proto->seam_tolerance = p->seam_header ? p->seam.tolerance : 0;
-        move_model(out, p, &mv, base);
-        if (p->seam_header)
-            move_seam(out, p, &mv, base);
-        move_levels(out, p, &mv, base);
-        memcpy((sw_pack_import_note *)out->arrays[M_NOTES] + out->contents.import_note_count,
-               p->import_notes, (size_t)p->import_note_count * sizeof *p->import_notes);
-        out->contents.import_note_count += p->import_note_count;
-        tolerance = fmaxf(tolerance, p->seam.tolerance);
-        for (int s = 0; s < SW_SPACE_COUNT; s++)
-            base[s] += n[s];
-    }
     if (st != SW_OK) {
         sw_pack_merged_free(out);
         return st;
+    }
+    float tolerance = 0;
+    for (uint32_t k = 0; k < count; k++) {
+        merge_one(out, &packs[k], k, total, base);
+        tolerance = fmaxf(tolerance, packs[k].seam.tolerance);
     }
     uint32_t s = (uint32_t)total[SW_SPACE_SURFACES];
     ((uint32_t *)out->arrays[M_SURFACE_LOOPS])[s] = (uint32_t)total[SW_SPACE_SEAM_LOOPS];

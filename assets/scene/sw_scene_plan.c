@@ -61,6 +61,30 @@ static sw_status key_of(const scene_part *part, const char *base_dir, proto_key 
     return st;
 }
 
+/* Room for one more prototype. */
+static sw_status grow(plan_builder *b, sw_error *err)
+{
+    sw_scene_plan *plan = b->plan;
+    if (plan->prototype_count < b->capacity)
+        return SW_OK;
+    size_t cap = b->capacity ? 2 * b->capacity : 16;
+    sw_model *models = realloc(plan->prototypes, cap * sizeof *models);
+    if (models)
+        plan->prototypes = models;
+    proto_key *keys = models ? realloc(b->keys, cap * sizeof *keys) : NULL;
+    if (keys)
+        b->keys = keys;
+    char **sources = keys ? realloc(plan->sources, cap * sizeof *sources) : NULL;
+    if (sources)
+        plan->sources = sources;
+    sw_import_report *reports = sources ? realloc(plan->reports, cap * sizeof *reports) : NULL;
+    if (!reports)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for %zu prototypes", cap);
+    plan->reports = reports;
+    b->capacity = cap;
+    return SW_OK;
+}
+
 /* A new prototype for key: the file's parts (or the object) in its own
  * frame, the baked scale applied. */
 static sw_status add_prototype(plan_builder *b, const scene_part *part, proto_key *key,
@@ -68,24 +92,9 @@ static sw_status add_prototype(plan_builder *b, const scene_part *part, proto_ke
                                sw_error *err)
 {
     sw_scene_plan *plan = b->plan;
-    if (plan->prototype_count == b->capacity) {
-        size_t cap = b->capacity ? 2 * b->capacity : 16;
-        sw_model *models = realloc(plan->prototypes, cap * sizeof *models);
-        if (models)
-            plan->prototypes = models;
-        proto_key *keys = models ? realloc(b->keys, cap * sizeof *keys) : NULL;
-        if (keys)
-            b->keys = keys;
-        char **sources = keys ? realloc(plan->sources, cap * sizeof *sources) : NULL;
-        if (sources)
-            plan->sources = sources;
-        sw_import_report *reports = sources ? realloc(plan->reports, cap * sizeof *reports)
-                                            : NULL;
-        if (!reports)
-            return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for %zu prototypes", cap);
-        plan->reports = reports;
-        b->capacity = cap;
-    }
+    sw_status st = grow(b, err);
+    if (st != SW_OK)
+        return st;
     size_t k = plan->prototype_count;
     sw_model *m = &plan->prototypes[k];
     sw_model_init(m);
@@ -93,14 +102,13 @@ static sw_status add_prototype(plan_builder *b, const scene_part *part, proto_ke
     plan->sources[k] = key->path ? strdup(key->path) : NULL;
     b->keys[k] = *key;
     plan->prototype_count++;
+    if (key->path && !plan->sources[k])
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
     key->path = NULL; /* the builder owns it now */
     if (!b->import)
-        return key->generated || plan->sources[k] ? SW_OK
-                                                  : sw_error_set(err, SW_ERR_NO_MEMORY,
-                                                                 "out of memory");
+        return SW_OK;
     float color[4];
     sw_scene_default_color(plan->prototype_count - 1, color);
-    sw_status st;
     /* A prototype's parts are named by what they are within their file (a
      * STEP product) or not at all; each placement names them after itself
      * (sw_instance_part_name). */
