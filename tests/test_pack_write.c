@@ -505,22 +505,15 @@ static void write_orientation_seed(const char *dir)
  * PROTOTYPES and INSTANCES sections for the fuzzer. */
 static void write_instances_seed(const char *dir)
 {
-    uint8_t *bytes = NULL;
     size_t size = 0;
     sw_error err = { 0 };
-    sample s;
-    sample_seam g;
     sample_levels l;
     sample_supers k;
     sample_part_levels pl;
-    make_sample(&s);
-    make_sample_seam(&g);
     make_sample_levels(&l);
     make_sample_supers(&k);
     make_sample_part_levels(&pl);
-    sw_pack_contents c = sample_contents(&s);
-    c.seam = &g.graph, c.levels = &l.view, c.supers = &k.view, c.part_levels = &pl.view;
-    SW_CHECK_MSG(sw_pack_serialize(&c, &bytes, &size, &err) == SW_OK, "%s", err.message);
+    uint8_t *bytes = serialize_sample_all(&l.view, &k.view, &pl.view, &size);
     sw_pack packs[2];
     SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &packs[0], &err) == SW_OK, "%s", err.message);
     packs[1] = packs[0];

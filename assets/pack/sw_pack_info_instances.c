@@ -12,6 +12,18 @@
 #include "sw_pack_info.h"
 #include "sw_pack_instances.h"
 
+/* Control points first .. first + n moved by t, into the box lo .. hi. */
+static void add_placed_points(const sw_pack *pack, const float *t, uint32_t first, uint32_t n,
+                              float lo[3], float hi[3])
+{
+    for (uint32_t c = first; c < first + n; c++) {
+        float w[3];
+        sw_instance_place(t, &pack->control[4 * (size_t)c], w);
+        for (int k = 0; k < 3; k++)
+            lo[k] = fminf(lo[k], w[k]), hi[k] = fmaxf(hi[k], w[k]);
+    }
+}
+
 void sw_pack_placed_box(const sw_pack *pack, float lo[3], float hi[3])
 {
     if (!pack->instances) {
@@ -26,13 +38,8 @@ void sw_pack_placed_box(const sw_pack *pack, float lo[3], float hi[3])
     for (uint32_t i = 0; i < pack->instance_count; i++) {
         const sw_pack_instance *inst = &pack->instances[i];
         const sw_pack_prototype *p = &pack->prototypes[inst->prototype];
-        for (uint32_t c = 0; c < p->count[SW_SPACE_CONTROL]; c++) {
-            float w[3];
-            sw_instance_place(inst->transform,
-                              &pack->control[4 * ((size_t)p->first[SW_SPACE_CONTROL] + c)], w);
-            for (int k = 0; k < 3; k++)
-                lo[k] = fminf(lo[k], w[k]), hi[k] = fmaxf(hi[k], w[k]);
-        }
+        add_placed_points(pack, inst->transform, p->first[SW_SPACE_CONTROL],
+                          p->count[SW_SPACE_CONTROL], lo, hi);
     }
     if (lo[0] > hi[0])
         for (int k = 0; k < 3; k++)
@@ -129,13 +136,8 @@ static void placed_part_box(const sw_pack *pack, const sw_pack_part *p, const fl
         lo[k] = INFINITY, hi[k] = -INFINITY;
     for (uint32_t i = p->first_patch; i < p->first_patch + p->patch_count; i++) {
         const sw_pack_patch *q = &pack->patches[i];
-        uint32_t n = (uint32_t)(q->degree_u + 1) * (q->degree_v + 1);
-        for (uint32_t c = 0; c < n; c++) {
-            float w[3];
-            sw_instance_place(t, &pack->control[4 * ((size_t)q->first_control + c)], w);
-            for (int k = 0; k < 3; k++)
-                lo[k] = fminf(lo[k], w[k]), hi[k] = fmaxf(hi[k], w[k]);
-        }
+        add_placed_points(pack, t, q->first_control,
+                          (uint32_t)(q->degree_u + 1) * (q->degree_v + 1), lo, hi);
     }
     if (lo[0] > hi[0])
         for (int k = 0; k < 3; k++)
