@@ -332,6 +332,22 @@ static double largest_coordinate(const sw_pack *pack)
     return m;
 }
 
+/* The largest length the expansion scales: errors, bounds, sides. */
+static double largest_length(const sw_pack *pack)
+{
+    double m = pack->seam.tolerance;
+    for (uint32_t v = 0; v < pack->seam.vertex_count; v++)
+        m = fmax(m, pack->seam.vertices[v].error);
+    for (uint32_t k = 0; k < pack->seam.collapse_count; k++)
+        m = fmax(m, pack->seam.collapses[k].error);
+    for (uint32_t i = 0; i < pack->levels.level_count; i++)
+        m = fmax(m, fmax(pack->levels.levels[i].error, pack->levels.levels[i].made_bound));
+    for (uint32_t i = 0; i < pack->part_levels.level_count; i++)
+        m = fmax(m, fmax(pack->part_levels.levels[i].error,
+                         pack->part_levels.levels[i].shading_side));
+    return m;
+}
+
 /* Placed coordinates stay below this, so boxes, distances and their
  * squares stay finite in the walk's floats and doubles. */
 #define PLACED_LIMIT 1e18
@@ -340,7 +356,7 @@ static sw_status check_instances(const sw_pack *pack, sw_error *err)
 {
     if (pack->instance_count == 0)
         return sw_error_set(err, SW_ERR_FORMAT, "INSTANCES: no instance, expected at least one");
-    double reach = largest_coordinate(pack) * sqrt(3.0);
+    double reach = largest_coordinate(pack) * sqrt(3.0), length = largest_length(pack);
     for (uint32_t i = 0; i < pack->instance_count; i++) {
         const sw_pack_instance *r = &pack->instances[i];
         if (r->prototype >= pack->prototype_count)
@@ -366,6 +382,10 @@ static sw_status check_instances(const sw_pack *pack, sw_error *err)
         if (!(far < PLACED_LIMIT))
             return sw_error_set(err, SW_ERR_RANGE, "INSTANCES[%u]: places points up to %g from "
                                 "the origin, expected below %g", (unsigned)i, far, PLACED_LIMIT);
+        if (!(length * sw_instance_scale(r->transform) < PLACED_LIMIT))
+            return sw_error_set(err, SW_ERR_RANGE, "INSTANCES[%u]: scales an error of %g to "
+                                "%g, expected below %g", (unsigned)i, length,
+                                length * sw_instance_scale(r->transform), PLACED_LIMIT);
     }
     return SW_OK;
 }

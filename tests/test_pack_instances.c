@@ -254,6 +254,14 @@ static void cross_reference(uint8_t *b)
     sw_level *levels = (sw_level *)(b + table_of(b)[e].offset);
     levels[prototypes_at(b)[1].first[SW_SPACE_LEVELS]].first_vertex = 0;
 }
+/* A sewing tolerance of 1e10 placed at a scale of 1e9: an error past the
+ * walk's doubles' comfort, though every coordinate stays small. */
+static void huge_error(uint8_t *b)
+{
+    int e = entry_of(b, SW_SECTION_SEAM);
+    ((sw_pack_seam *)(b + table_of(b)[e].offset))->tolerance = 1e10f;
+    similarity(instances_at(b)[1].transform, 0.7, 1e9, 10, 2, -3);
+}
 static void loose(uint8_t *b) { prototypes_at(b)[0].seam_tolerance *= 2; }
 static void runtime_bytes(uint8_t *b) { header_of(b)->runtime_bytes += 64; }
 static void old_version(uint8_t *b) { header_of(b)->version = SW_PACK_VERSION; }
@@ -279,6 +287,7 @@ static void test_refused(void)
     expect_refused(no_parts, "PROTOTYPES[1]: no part", "no parts");
     expect_refused(cross_reference, "first_vertex of prototype 1's levels record", "cross");
     expect_refused(loose, "PROTOTYPES[0]: seam_tolerance", "tolerance");
+    expect_refused(huge_error, "INSTANCES[1]: scales an error of", "error scaled");
     expect_refused(runtime_bytes, "header.runtime_bytes", "runtime bytes");
     expect_refused(old_version, "header.version: 1 with PROTOTYPES and INSTANCES", "version");
     expect_refused(no_instances, "PROTOTYPES without INSTANCES", "alone");
