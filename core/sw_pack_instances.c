@@ -111,6 +111,17 @@ uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_grap
     return bytes > UINT64_MAX - expand ? UINT64_MAX : bytes + expand;
 }
 
+uint64_t sw_pack_runtime_bytes_at(const sw_pack *pack, uint64_t total_size)
+{
+    const sw_seam_graph *g = pack->seam_header ? &pack->seam : NULL;
+    if (!pack->instances)
+        return sw_pack_runtime_bytes(total_size, pack->meta->patch_count,
+                                     g ? sw_walk_arena_bytes(g, pack->surfaces) : 0);
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
+    return sw_pack_instanced_runtime_bytes(total_size, g, pack->surfaces, counts);
+}
+
 /* The placed scene's arrays, taken from the arena. */
 typedef struct placed {
     void *a[A_COUNT];

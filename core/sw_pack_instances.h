@@ -51,6 +51,10 @@ uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_grap
                                          const sw_pack_surface *surfaces,
                                          const uint64_t counts[SW_SPACE_COUNT]);
 
+/* runtime_bytes of a validated pack were it total_size bytes (the signer
+ * adds a section), placed or not. */
+uint64_t sw_pack_runtime_bytes_at(const sw_pack *pack, uint64_t total_size);
+
 /* The placed scene of a validated pack as a view in out: everything the
  * walk reads (the header, the section table, viewpoints, orientation and
  * notes stay the pack's). A pack without instances is copied as it is

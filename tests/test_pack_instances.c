@@ -7,6 +7,7 @@
  * of the reader; and every rule of the two sections refused with its
  * message. */
 #include <math.h>
+#include <sodium.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -15,6 +16,8 @@
 #include "pack_sample.h"
 #include "sw_pack_instances.h"
 #include "sw_pack_merge.h"
+#include "sw_pack_sign.h"
+#include "sw_pack_signature.h"
 #include "sw_pack_write.h"
 #include "sw_seam_check.h"
 
@@ -190,6 +193,32 @@ static void test_identity_is_a_copy(void)
     free(bytes);
 }
 
+/* A pack of placed parts signed: its header still counts the placed scene,
+ * and a unit's checks pass. */
+static void test_signed_placed_pack(void)
+{
+    sw_pack_instance inst[PLACED];
+    three(inst);
+    uint8_t *bytes = NULL, *out = NULL, pk[32], sk[64];
+    size_t size = 0, out_size = 0;
+    sw_error err = { 0 };
+    SW_CHECK(placed_sample(inst, PLACED, &bytes, &size, &err) == SW_OK);
+    SW_CHECK(sodium_init() >= 0);
+    crypto_sign_keypair(pk, sk);
+    sw_sign_request req = { sk, 3, "placed" };
+    SW_CHECK_MSG(sw_pack_sign_bytes(bytes, size, &req, &out, &out_size, &err) == SW_OK, "%s",
+                 err.message);
+    sw_pack pack;
+    const sw_pack_signature *sig;
+    sw_trusted_keys keys = { .count = 1 };
+    memcpy(keys.keys[0], pk, 32);
+    SW_CHECK_MSG(sw_pack_open_memory(out, out_size, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.instance_count == PLACED);
+    SW_CHECK_MSG(sw_pack_check_signature(&pack, &keys, &sig, &err) == SW_OK, "%s", err.message);
+    free(out);
+    free(bytes);
+}
+
 /* ---- refused packs -------------------------------------------------------- */
 
 static sw_pack_instance *instances_at(uint8_t *bytes)
@@ -317,6 +346,7 @@ int main(void)
 {
     SW_RUN(test_merge_expand_and_read_back);
     SW_RUN(test_identity_is_a_copy);
+    SW_RUN(test_signed_placed_pack);
     SW_RUN(test_refused);
     SW_RUN(test_merge_refuses);
     return sw_test_finish();

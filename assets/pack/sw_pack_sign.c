@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Key files and pack signing (sw_pack_sign.h in this folder). */
 #include "sw_pack_sign.h"
+#include "sw_pack_instances.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -214,10 +215,7 @@ static sw_status build_signed(const sw_pack *in, uint32_t kept, const sw_sign_re
     *h = *in->header;
     h->section_count = kept + 1;
     h->total_size = size;
-    h->runtime_bytes = sw_pack_runtime_bytes(size, in->meta->patch_count,
-                                             in->seam_header ? sw_walk_arena_bytes(&in->seam,
-                                                                                   in->surfaces)
-                                                             : 0);
+    h->runtime_bytes = sw_pack_runtime_bytes_at(in, size);
     copy_sections(in, offsets, bytes);
     free(offsets);
     sw_pack_section *entry = (sw_pack_section *)(bytes + 64) + kept;
