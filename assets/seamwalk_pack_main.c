@@ -52,6 +52,7 @@ static const char usage_text[] =
     "       seamwalk-pack keygen -o PREFIX\n"
     "       seamwalk-pack sign PACK --key PREFIX.key --version N --name NAME [-o OUT]\n"
     "       seamwalk-pack gen showroom --patches N -o SCENE.ini [--part FILE]... [--seed S]\n"
+    "                                  [--catalog N]\n"
     "       seamwalk-pack --help | --version\n"
     "INPUT: a Newell listing (.txt), Bezier patch text (.bpt), IGES (.igs, .iges),\n"
     "STEP (.stp, .step) or a scene (.ini). Each file becomes one part named after\n"

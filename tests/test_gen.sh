@@ -74,6 +74,37 @@ procedural() {
   check "another seed writes another scene" \
     bash -c "'$pack' gen showroom --patches 2000 --seed 2 -o '$work/other.ini' > /dev/null &&
              ! cmp -s '$work/small.ini' '$work/other.ini'"
+  check "a catalog of 3 designs: 2000 patches built, at most 3 designs a kind" \
+    bash -c "'$pack' gen showroom --patches 2000 --catalog 3 -o '$work/catalog.ini' > /dev/null &&
+             python3 - '$work/catalog.ini' <<'PY'
+import configparser, sys
+c = configparser.ConfigParser(inline_comment_prefixes=(';',))
+c.read(sys.argv[1])
+kinds = {}
+for s in c.sections():
+    p = c[s]
+    if 'generate' in p:   # the plates that fill the count up differ in segments only
+        kinds.setdefault(p['generate'], set()).add((p.get('size'), p.get('height'),
+                                                    p.get('holes'), p.get('seed')))
+assert kinds and all(len(v) <= 3 for v in kinds.values()), {k: len(v) for k, v in kinds.items()}
+PY"
+  check "a catalog's pack stores each design once, as many prototypes as designs" \
+    bash -c "'$pack' build '$work/catalog.ini' -o '$work/catalog.swpack' > /dev/null &&
+             '$pack' info --json '$work/catalog.swpack' > '$work/catalog.json' &&
+             python3 - '$work/catalog.ini' '$work/catalog.json' <<'PY'
+import configparser, json, sys
+c = configparser.ConfigParser(inline_comment_prefixes=(';',))
+c.read(sys.argv[1])
+designs = {tuple(c[s].get(k) for k in ('generate', 'size', 'height', 'holes', 'segments', 'seed'))
+           for s in c.sections() if 'generate' in c[s]}
+j = json.load(open(sys.argv[2]))
+placed = sum(1 for s in c.sections() if s.startswith('part '))
+assert j['prototype_count'] == len(designs) and j['instance_count'] == placed, \
+    (j['prototype_count'], len(designs), j['instance_count'], placed)
+assert j['placed']['patches'] == 2000, j['placed']
+PY"
+  check "--catalog past 1000 is a usage error" fails_with 2 "--catalog" showroom --patches 5 \
+    --catalog 1001 -o "$work/bad.ini"
   check "a tiny showroom (7 patches) builds exactly" builds_to 7 tiny
   check "40000 patches asked, within 5% built" builds_to 40000 large --seed 40
   if [ -n "$walker" ]; then

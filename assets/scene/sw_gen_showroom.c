@@ -51,6 +51,8 @@ typedef struct gen_plan {
     gen_item *items;
     size_t item_count, item_capacity;
     uint64_t rng;
+    uint64_t seed;
+    size_t catalog;           /* designs per kind of object; 0: each object its own */
 } gen_plan;
 
 /* ---- random numbers ----------------------------------------------------- */
@@ -149,10 +151,17 @@ static sw_status push_item(gen_plan *plan, const gen_item *item, sw_error *err)
     return SW_OK;
 }
 
-/* A procedural object of a kind with seeded proportions that fit a cell. */
+/* A procedural object of a kind with seeded proportions that fit a cell;
+ * from a catalog, one of its designs (the same proportions and seed each
+ * time a design is drawn: a showroom's repeated products). */
 static gen_item random_object(gen_plan *plan, sw_proc_kind kind)
 {
-    uint64_t *r = &plan->rng;
+    uint64_t design_rng, *r = &plan->rng;
+    if (plan->catalog > 0) {
+        uint64_t design = (uint64_t)rng_int(r, 0, (int)plan->catalog - 1);
+        design_rng = plan->seed ^ (0x51A7E0000ull + (uint64_t)kind * 0x10000ull + design);
+        r = &design_rng;
+    }
     gen_item item = {.file = -1, .proc = sw_proc_defaults(kind)};
     sw_proc_params *p = &item.proc;
     if (kind == SW_PROC_PLATE) {
@@ -426,7 +435,7 @@ sw_status sw_gen_showroom_scene(const sw_gen_showroom_desc *desc, char **text,
     if (desc->patches < 1 || desc->patches > SW_GEN_MAX_PATCHES)
         return sw_error_set(err, SW_ERR_RANGE, "--patches %zu outside 1..%zu", desc->patches,
                             SW_GEN_MAX_PATCHES);
-    gen_plan plan = {.rng = desc->seed};
+    gen_plan plan = {.rng = desc->seed, .seed = desc->seed, .catalog = desc->catalog};
     sw_status st = measure_files(desc, &plan, err);
     if (st == SW_OK)
         st = plan_objects(&plan, desc->patches, err);
@@ -491,7 +500,7 @@ static int parse_gen_args(int argc, char **argv, gen_args *a)
     for (int i = 1; i < argc; i++) {
         const char *opt = argv[i];
         int known = !strcmp(opt, "--patches") || !strcmp(opt, "-o") || !strcmp(opt, "--part") ||
-                    !strcmp(opt, "--seed");
+                    !strcmp(opt, "--seed") || !strcmp(opt, "--catalog");
         if (!known)
             return gen_usage_error("unknown argument '%s'", opt);
         if (i + 1 == argc)
@@ -506,6 +515,10 @@ static int parse_gen_args(int argc, char **argv, gen_args *a)
             if (!parse_count(val, UINT64_MAX, &v))
                 return gen_usage_error("--seed: expected a whole number, found '%s'", val);
             a->desc.seed = v;
+        } else if (!strcmp(opt, "--catalog")) {
+            if (!parse_count(val, SW_GEN_MAX_CATALOG, &v))
+                return gen_usage_error("--catalog: expected a count in 0..1000, found '%s'", val);
+            a->desc.catalog = (size_t)v;
         } else if (!strcmp(opt, "-o")) {
             if (a->out_path)
                 return gen_usage_error("%s given twice", "-o");

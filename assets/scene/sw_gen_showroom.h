@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The showroom generator: `seamwalk-pack gen showroom --patches N -o
- * scene.ini [--part FILE]... [--seed S]` writes a scene (sw_scene.h) that
+ * scene.ini [--part FILE]... [--seed S] [--catalog N]` writes a scene (sw_scene.h) that
  * lays out copies of the given part files and procedural objects
  * (sw_procedural.h) on a floor grid with aisles, adding up to N Bezier patches
  * when built, plus named viewpoints (entrance, overview, closeup). It writes
@@ -30,7 +30,11 @@ typedef struct sw_gen_showroom_desc {
     const char *const *part_files;  /* may be NULL when part_file_count is 0 */
     size_t part_file_count;
     uint64_t seed;
+    size_t catalog;                 /* plates, vases and rails from this many designs of each
+                                       (0..SW_GEN_MAX_CATALOG; 0: each object its own) */
 } sw_gen_showroom_desc;
+
+#define SW_GEN_MAX_CATALOG 1000
 
 #define SW_GEN_MAX_PATCHES ((size_t)10000000)
 
