@@ -331,8 +331,9 @@ static void merge_one(sw_pack_merged *out, const sw_pack *p, uint32_t k, const u
     if (p->seam_header)
         move_seam(out, p, &mv, base);
     move_levels(out, p, &mv, base);
-    memcpy((sw_pack_import_note *)out->arrays[M_NOTES] + out->contents.import_note_count,
-           p->import_notes, (size_t)p->import_note_count * sizeof *p->import_notes);
+    if (p->import_notes)
+        memcpy((sw_pack_import_note *)out->arrays[M_NOTES] + out->contents.import_note_count,
+               p->import_notes, (size_t)p->import_note_count * sizeof *p->import_notes);
     out->contents.import_note_count += p->import_note_count;
     for (int s = 0; s < SW_SPACE_COUNT; s++)
         base[s] += n[s];
