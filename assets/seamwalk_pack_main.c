@@ -37,7 +37,6 @@
 #include "seamwalk_pack_build.h"
 #include "seamwalk_pack_parts.h"
 #include "sw_pack_write.h"
-#include "sw_model_split.h"
 
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
@@ -266,61 +265,6 @@ static sw_status add_input(const build_options *o, int i, progress_context *pc, 
     return st;
 }
 
-/* The parts and patches a plan places. */
-static void placed_counts(const sw_scene_plan *plan, size_t *parts, size_t *patches)
-{
-    *parts = *patches = 0;
-    for (size_t i = 0; i < plan->placement_count; i++) {
-        const sw_model *m = &plan->prototypes[plan->placements[i].prototype];
-        *parts += m->part_count;
-        *patches += m->patch_count;
-    }
-}
-
-/* A plan whose every placement has a prototype of its own: the scene
- * stored as copies, placed all the same. */
-static sw_status plan_copies(sw_scene_plan *plan, sw_error *err)
-{
-    size_t n = plan->placement_count;
-    sw_model *models = calloc(n + 1, sizeof *models);
-    char **sources = calloc(n + 1, sizeof *sources);
-    sw_import_report *reports = calloc(n + 1, sizeof *reports);
-    uint8_t *reported = calloc(plan->prototype_count + 1, 1);
-    sw_status st = models && sources && reports && reported
-                       ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
-    for (size_t i = 0; st == SW_OK && i < n; i++) {
-        size_t k = plan->placements[i].prototype;
-        const sw_model *from = &plan->prototypes[k];
-        sw_model_init(&models[i]);
-        for (size_t p = 0; st == SW_OK && p < from->part_count; p++) {
-            st = sw_model_begin_part(&models[i], from->parts[p].name, from->parts[p].color, err);
-            for (size_t f = 0; st == SW_OK && f < from->parts[p].surface_count; f++)
-                st = sw_model_copy_surface(from, from->parts[p].first_surface + f, &models[i],
-                                           err);
-        }
-        models[i].model_tolerance = from->model_tolerance;
-        if (plan->sources[k] && !(sources[i] = strdup(plan->sources[k])))
-            st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
-        if (!reported[k])   /* the file's import, told once */
-            reports[i] = plan->reports[k], reported[k] = 1;
-    }
-    free(reported);
-    if (st != SW_OK) {
-        for (size_t i = 0; models && i < n; i++)
-            sw_model_free(&models[i]), free(sources ? sources[i] : NULL);
-        free(models), free(sources), free(reports);
-        return st;
-    }
-    for (size_t k = 0; k < plan->prototype_count; k++)
-        sw_model_free(&plan->prototypes[k]), free(plan->sources[k]);
-    free(plan->prototypes), free(plan->sources), free(plan->reports);
-    plan->prototypes = models, plan->sources = sources, plan->reports = reports;
-    plan->prototype_count = n;
-    for (size_t i = 0; i < n; i++)
-        plan->placements[i].prototype = i;
-    return SW_OK;
-}
-
 /* build-part: prototype o->prototype of the plan, packed as build packs
  * it, written as a pack of its own (version 1) for merge. */
 static sw_status build_one_prototype(const build_options *o, progress_context *pc,
@@ -363,12 +307,12 @@ static sw_status build_scene(const build_options *o, sw_import_report *report,
     if (st == SW_OK && o->strict)
         st = check_strict(path, report, err);
     if (st == SW_OK && o->copies)
-        st = plan_copies(&plan, err);
+        st = sw_scene_plan_copies(&plan, err);
     if (st == SW_OK) {
         sw_progress_clear(&pc.bar);
         int32_t up = sw_up_input_default(path, plan.views.up_axis);
         plan.views.up_axis = sw_up_inputs_choose(o->inputs, &up, 1, o->up_axis, stderr);
-        placed_counts(&plan, parts, patches);
+        sw_scene_plan_placed(&plan, parts, patches);
         if (*patches == 0)
             st = sw_pack_tool_check_not_empty(o, &empty, report, err);
     }

@@ -127,6 +127,14 @@ sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
 sw_status sw_scene_plan_read(const char *path, sw_scene_plan *plan, sw_error *err);
 void sw_scene_plan_free(sw_scene_plan *plan);
 
+/* The parts and patches the plan places, all placements together. */
+void sw_scene_plan_placed(const sw_scene_plan *plan, size_t *parts, size_t *patches);
+
+/* The plan made one prototype per placement (a copy of its prototype's
+ * parts, with its file's import told once): the scene stored as copies,
+ * placed all the same (seamwalk-pack build --copies). */
+sw_status sw_scene_plan_copies(sw_scene_plan *plan, sw_error *err);
+
 /* 1 when path names a scene (.ini), 0 otherwise. */
 int sw_scene_is_scene_path(const char *path);
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "sw_scene.h"
+#include "sw_model_split.h"
 #include "sw_scene_internal.h"
 #include "sw_text_scan.h"
 
@@ -240,6 +241,58 @@ sw_status sw_scene_plan_load(const char *path, const sw_import_options *options,
 sw_status sw_scene_plan_read(const char *path, sw_scene_plan *plan, sw_error *err)
 {
     return plan_load(path, 0, NULL, NULL, plan, err);
+}
+
+void sw_scene_plan_placed(const sw_scene_plan *plan, size_t *parts, size_t *patches)
+{
+    *parts = *patches = 0;
+    for (size_t i = 0; i < plan->placement_count; i++) {
+        const sw_model *m = &plan->prototypes[plan->placements[i].prototype];
+        *parts += m->part_count;
+        *patches += m->patch_count;
+    }
+}
+
+sw_status sw_scene_plan_copies(sw_scene_plan *plan, sw_error *err)
+{
+    size_t n = plan->placement_count;
+    sw_model *models = calloc(n + 1, sizeof *models);
+    char **sources = calloc(n + 1, sizeof *sources);
+    sw_import_report *reports = calloc(n + 1, sizeof *reports);
+    uint8_t *reported = calloc(plan->prototype_count + 1, 1);
+    sw_status st = models && sources && reports && reported
+                       ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+    for (size_t i = 0; st == SW_OK && i < n; i++) {
+        size_t k = plan->placements[i].prototype;
+        const sw_model *from = &plan->prototypes[k];
+        sw_model_init(&models[i]);
+        for (size_t p = 0; st == SW_OK && p < from->part_count; p++) {
+            st = sw_model_begin_part(&models[i], from->parts[p].name, from->parts[p].color, err);
+            for (size_t f = 0; st == SW_OK && f < from->parts[p].surface_count; f++)
+                st = sw_model_copy_surface(from, from->parts[p].first_surface + f, &models[i],
+                                           err);
+        }
+        models[i].model_tolerance = from->model_tolerance;
+        if (plan->sources[k] && !(sources[i] = strdup(plan->sources[k])))
+            st = sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
+        if (!reported[k])   /* the file's import, told once */
+            reports[i] = plan->reports[k], reported[k] = 1;
+    }
+    free(reported);
+    if (st != SW_OK) {
+        for (size_t i = 0; models && i < n; i++)
+            sw_model_free(&models[i]), free(sources ? sources[i] : NULL);
+        free(models), free(sources), free(reports);
+        return st;
+    }
+    for (size_t k = 0; k < plan->prototype_count; k++)
+        sw_model_free(&plan->prototypes[k]), free(plan->sources[k]);
+    free(plan->prototypes), free(plan->sources), free(plan->reports);
+    plan->prototypes = models, plan->sources = sources, plan->reports = reports;
+    plan->prototype_count = n;
+    for (size_t i = 0; i < n; i++)
+        plan->placements[i].prototype = i;
+    return SW_OK;
 }
 
 void sw_scene_plan_free(sw_scene_plan *plan)
