@@ -16,9 +16,10 @@ set(SW_TEST_COSTS_RELEASE
     holes_newell_teapot.txt 10 display_signal 10 model_occt_hammer.iges 10 walk_seams 10
     holes_gpucast_teapot.igs 9 model_occt_screw.step 9 test_png 9 model_nist_mbe_pmi_1.stp 9
     model_occt_bearing.iges 9 test_import_occt_truncations 9 holes_axom_boxed_sphere.step 8
-    up_axis_orbit 8 model_gpucast_teapot.igs 8)
+    up_axis_orbit 8 model_gpucast_teapot.igs 8 instances_walk 23 build_parts 22)
 set(SW_TEST_COSTS_ASAN
     standins 150 test_pack_cli 143 test_gen_parts 133 up_axis_cli 83 test_gen 73 test_import_occt 73
+    build_parts 68 instances_walk 64
     walk_bench_smoke 73 model_occt_linkrods.step 65 walk_threads 58 test_iges_crosscheck 44
     model_nist_mbe_pmi_4.stp 41 cull_bench_smoke 41 test_flash_cli 37 test_flash_power 35
     soak_short 29 test_flash_boot 28 walk_golden 27 model_axom_boxed_sphere.step 22
