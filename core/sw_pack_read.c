@@ -706,11 +706,14 @@ static sw_status map_levels(const uint8_t *data, const int32_t index[], sw_pack 
  * must cover the pack at least. */
 static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
 {
+    /* A placed pack's is the placed scene's: sw_pack_map_instances checks it
+     * (and that the version and the sections agree). */
+    if (pack->header->version == SW_PACK_VERSION_INSTANCED)
+        return SW_OK;
     for (uint32_t i = 0; i < pack->header->section_count; i++)
         if (pack->sections[i].type == SW_SECTION_PROTOTYPES ||
-            pack->sections[i].type == SW_SECTION_INSTANCES ||
-            pack->header->version == SW_PACK_VERSION_INSTANCED)
-            return SW_OK; /* the placed scene's: sw_pack_map_instances checks it */
+            pack->sections[i].type == SW_SECTION_INSTANCES)
+            return SW_OK;
     uint64_t walk = pack->seam_header ? sw_walk_arena_bytes(&pack->seam, pack->surfaces) : 0;
     uint64_t expected = sw_pack_runtime_bytes(pack->header->total_size, pack->meta->patch_count,
                                               walk);
