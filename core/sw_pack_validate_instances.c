@@ -313,38 +313,47 @@ static sw_status check_transform(const float *t, uint32_t i, sw_error *err)
     return SW_OK;
 }
 
+/* The larger of m and |x|. Written as a comparison, not fmax: GCC 12's
+ * aarch64 vectoriser fails on fmax reductions over these loops (an
+ * internal compiler error). A NaN is left out either way. */
+static double widen(double m, double x)
+{
+    x = fabs(x);
+    return x > m ? x : m;
+}
+
 /* The largest coordinate of any point the expansion moves. */
 static double largest_coordinate(const sw_pack *pack)
 {
     double m = 0;
     for (uint32_t i = 0; i < pack->meta->patch_count; i++)
         for (int k = 0; k < 3; k++)
-            m = fmax(m, fmax(fabs(pack->patches[i].box_min[k]), fabs(pack->patches[i].box_max[k])));
+            m = widen(widen(m, pack->patches[i].box_min[k]), pack->patches[i].box_max[k]);
     for (uint32_t v = 0; v < pack->seam.vertex_count; v++)
         for (int k = 0; k < 3; k++)
-            m = fmax(m, fabs(pack->seam.vertices[v].p[k]));
+            m = widen(m, pack->seam.vertices[v].p[k]);
     for (uint32_t v = 0; v < pack->levels.vertex_count; v++)
         for (int k = 0; k < 3; k++)
-            m = fmax(m, fabs(pack->levels.vertices[v].p[k]));
+            m = widen(m, pack->levels.vertices[v].p[k]);
     for (uint32_t v = 0; v < pack->part_levels.vertex_count; v++)
         for (int k = 0; k < 3; k++)
-            m = fmax(m, fabs(pack->part_levels.vertices[v].p[k]));
+            m = widen(m, pack->part_levels.vertices[v].p[k]);
     return m;
 }
 
 /* The largest length the expansion scales: errors, bounds, sides. */
 static double largest_length(const sw_pack *pack)
 {
-    double m = pack->seam.tolerance;
+    double m = widen(0, pack->seam.tolerance);
     for (uint32_t v = 0; v < pack->seam.vertex_count; v++)
-        m = fmax(m, pack->seam.vertices[v].error);
+        m = widen(m, pack->seam.vertices[v].error);
     for (uint32_t k = 0; k < pack->seam.collapse_count; k++)
-        m = fmax(m, pack->seam.collapses[k].error);
+        m = widen(m, pack->seam.collapses[k].error);
     for (uint32_t i = 0; i < pack->levels.level_count; i++)
-        m = fmax(m, fmax(pack->levels.levels[i].error, pack->levels.levels[i].made_bound));
+        m = widen(widen(m, pack->levels.levels[i].error), pack->levels.levels[i].made_bound);
     for (uint32_t i = 0; i < pack->part_levels.level_count; i++)
-        m = fmax(m, fmax(pack->part_levels.levels[i].error,
-                         pack->part_levels.levels[i].shading_side));
+        m = widen(widen(m, pack->part_levels.levels[i].error),
+                  pack->part_levels.levels[i].shading_side);
     return m;
 }
 
