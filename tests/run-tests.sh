@@ -13,10 +13,12 @@ export CMAKE_GENERATOR=${CMAKE_GENERATOR:-Ninja}
 
 jobs=$(nproc 2>/dev/null || echo 2)
 run_suite() {  # run_suite BUILD_DIR CMAKE_ARGS...
-  local dir=$1; shift
+  local dir=$1 t0=$SECONDS; shift
   cmake -S . -B "$dir" -DSW_WERROR=ON "$@" >/dev/null
   cmake --build "$dir" -j"$jobs"
+  local built=$SECONDS
   ctest --test-dir "$dir" --output-on-failure -j"$jobs"
+  echo "$dir: built in $((built - t0)) s, tested in $((SECONDS - built)) s"
 }
 
 run_suite build -DCMAKE_BUILD_TYPE=Release
