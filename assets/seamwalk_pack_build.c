@@ -13,6 +13,7 @@
 #include "sw_pack_verify_tess.h"
 #include "sw_pack_write.h"
 #include "sw_parts_threads.h"
+#include "sw_seam_reroot.h"
 #include "sw_seam_simplify.h"
 #include "sw_up_axis.h"
 
@@ -216,7 +217,31 @@ static sw_status with_levels(sw_pack_contents *contents, const sw_seam_host *sea
     return st;
 }
 
+double sw_pack_tool_seam_floor(double closest_mm)
+{
+    return closest_mm * SW_CLOSEST_BOUND_PER_MM;
+}
+
+double sw_pack_tool_default_closest_mm(double diagonal)
+{
+    return diagonal / 100;
+}
+
 enum { REPAIR_ROUNDS = 6 };
+
+/* The graph the pack stores: full's hierarchy cut at the build's seam
+ * floor (sw_seam_reroot.h), into *cut (replacing it). full stays whole: a
+ * repair round pins and simplifies it again, then cuts it again. */
+static sw_status cut_at_floor(const build_options *o, const sw_seam_host *full,
+                              sw_seam_host *cut, seam_summary *summary, sw_error *err)
+{
+    sw_seam_host_free(cut);
+    sw_status st = sw_seam_host_copy(full, cut, err);
+    if (st == SW_OK)
+        st = sw_seam_reroot(cut, (float)o->seam_floor, &summary->reroot, err);
+    summary->seam_floor = o->seam_floor;
+    return st;
+}
 
 /* The pack serialised and verified as `verify` will: a surface refused at
  * one of its seam states keeps its seams whole (their vertices pinned, the
@@ -234,8 +259,11 @@ static sw_status pack_verified(const build_options *o, progress_context *pc,
     uint8_t *failed = calloc((size_t)seams->surface_count + 1, 1);
     sw_status st = pinned && failed ? SW_OK : sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory");
     const sw_seam_surface_eval eval = { model_point, (void *)model };
+    sw_seam_host cut = { 0 };
     for (int round = 0; st == SW_OK; round++) {
-        st = serialize_seams(contents, seams, pc, bytes, size, err);
+        st = cut_at_floor(o, seams, &cut, summary, err);
+        if (st == SW_OK)
+            st = serialize_seams(contents, &cut, pc, bytes, size, err);
         if (st != SW_OK)
             break;
         sw_pack_tool_progress(pc, "verifying", 0.0);
@@ -252,7 +280,8 @@ static sw_status pack_verified(const build_options *o, progress_context *pc,
         summary->collapses = seams->collapse_count;
     }
     if (st == SW_OK)
-        st = with_levels(contents, seams, &o->part_levels, pc, bytes, size, summary, err);
+        st = with_levels(contents, &cut, &o->part_levels, pc, bytes, size, summary, err);
+    sw_seam_host_free(&cut);
     free(pinned);
     free(failed);
     return st;
@@ -312,10 +341,16 @@ sw_status sw_pack_tool_pack(const build_options *o, progress_context *pc, sw_mod
     uint8_t *bytes = NULL;
     sw_pack_import_note *notes = NULL;
     uint32_t note_count = 0;
+    build_options with = *o;
+    sw_box box = sw_model_box(model);
+    with.seam_floor = sw_pack_tool_seam_floor(
+        o->closest_mm > 0 ? o->closest_mm
+                          : sw_pack_tool_default_closest_mm(sw_box_is_empty(&box)
+                                                                ? 0 : sw_box_diagonal(&box)));
     sw_status st = sw_pack_tool_notes(o, reports, &notes, &note_count, err);
     if (st == SW_OK)
-        st = sw_pack_tool_pack_bytes(o, pc, model, notes, note_count, seam_summary_out, &bytes,
-                                     bytes_out, err);
+        st = sw_pack_tool_pack_bytes(&with, pc, model, notes, note_count, seam_summary_out,
+                                     &bytes, bytes_out, err);
     free(notes);
     if (st == SW_OK) {
         sw_pack_tool_progress(pc, "writing", 0.0);

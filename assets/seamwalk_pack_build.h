@@ -21,6 +21,7 @@
 #include "sw_part_levels_build.h"
 #include "sw_progress.h"
 #include "sw_scene.h"
+#include "sw_seam_reroot.h"
 #include "sw_seam_sew.h"
 #include "sw_seam_split.h"
 
@@ -33,6 +34,10 @@ typedef struct build_options {
     int part_mode;              /* build-part: one prototype of a scene (prototype) */
     long prototype;
     double seam_tolerance;      /* 0: sw_seam_default_tolerance */
+    double closest_mm;          /* --closest-mm: the nearest a view comes to a surface;
+                                   0: sw_pack_tool_default_closest_mm */
+    double seam_floor;          /* the seam hierarchy's finest error, model units: the bound
+                                   at closest_mm (sw_pack_tool_seam_floor); 0: none */
     sw_part_levels_options part_levels;   /* --cut-patches */
     uint32_t threads;           /* --threads: make the levels on (0 or 1: this one alone) */
     int32_t up_axis;            /* --up (sw_up_axis.h); 0: by the inputs (sw_up_inputs.h) */
@@ -60,7 +65,21 @@ typedef struct seam_summary {
     sw_part_levels_report part_levels;
     uint32_t pinned_surfaces;   /* whose seams were kept whole so that they tessellate */
     sw_seam_split_report split; /* surfaces cut: their loops too long for one draw */
+    double seam_floor;          /* the finest seam error kept, model units (0: all) */
+    sw_seam_reroot_report reroot; /* the collapses no view undoes, applied for good */
 } seam_summary;
+
+/* The bound a view closest_mm away asks for (model units are millimetres):
+ * half a pixel of a 1080-row display with the runtime's 45-degree field
+ * of view (its defaults, --max-error-px and --fov-deg). A unit that shows
+ * more rows, or a view that comes closer, asks for finer: the runtime draws
+ * the floor there and counts the surfaces it clamped. */
+#define SW_CLOSEST_BOUND_PER_MM 3.8352e-4
+double sw_pack_tool_seam_floor(double closest_mm);
+
+/* Where the option is not given: a hundredth of the model's (or the
+ * placed scene's) diagonal, diagonal in millimetres. */
+double sw_pack_tool_default_closest_mm(double diagonal);
 
 /* The build's progress line (a sw_progress callback; user: a
  * progress_context). */

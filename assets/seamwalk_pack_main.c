@@ -41,8 +41,8 @@
 static const char usage_text[] =
     "usage: seamwalk-pack build INPUT... -o OUT.swpack [--quiet] [--strict]\n"
     "                           [--iges-reader native|occt] [--seam-tolerance MM]\n"
-    "                           [--up x|y|z|-x|-y|-z] [--cut-patches N] [--threads N]\n"
-    "                           [--copies]\n"
+    "                           [--closest-mm MM] [--up x|y|z|-x|-y|-z]\n"
+    "                           [--cut-patches N] [--threads N] [--copies]\n"
     "       seamwalk-pack build-part SCENE.ini --prototype K -o PART.swpack [build options]\n"
     "       seamwalk-pack merge SCENE.ini PART.swpack... -o OUT.swpack [--up AXIS] [--quiet]\n"
     "       seamwalk-pack ninja SCENE.ini -o build.ninja [--pack OUT.swpack] [-- BUILD OPTIONS]\n"
@@ -61,6 +61,10 @@ static const char usage_text[] =
     "--seam-tolerance: how far apart trims may be and still be sewn into one seam\n"
     "(default: the file's model tolerance, at least 1e-5 of its smallest part's size\n"
     "and 1e-6 of the whole model's).\n"
+    "--closest-mm: the nearest a walk brings the eye to a surface; the Seam Graph\n"
+    "keeps the levels views from there on need, no finer (default: a hundredth of\n"
+    "the model's or placed scene's size). Closer views are drawn at that level and\n"
+    "counted (the walk's clamped surfaces).\n"
     "--up: the model axis that points up (default: z for STEP and IGES, y for .txt\n"
     "and .bpt, a scene's up_axis or y; inputs that differ: the first's, warned).\n"
     "--cut-patches: parts of more patches are cut into pieces with levels of their\n"
@@ -407,6 +411,14 @@ static void print_summary(const build_options *o, size_t parts, size_t patches,
            "%.2f s\n", r->boundary_vertices, r->boundary_edges, r->seams, r->free_edges,
            r->nonmanifold_edges, r->tolerance, seams->collapses, r->flatten_s + r->sew_s,
            seams->simplify_s);
+    const sw_seam_reroot_report *cut = &seams->reroot;
+    if (seams->seam_floor > 0)
+        printf("seamwalk-pack: seams: levels down to %g mm (the bound of a view %g mm away): %"
+               PRIu32 " collapses applied, %" PRIu32 " kept so that no loop vanishes; original "
+               "vertices %" PRIu32 " -> %" PRIu32 ", slots %" PRIu32 " -> %" PRIu32 "\n",
+               seams->seam_floor, seams->seam_floor / SW_CLOSEST_BOUND_PER_MM, cut->applied,
+               cut->kept, cut->originals_before, cut->originals_after, cut->slots_before,
+               cut->slots_after);
     if (seams->split.cut > 0 || seams->split.uncut > 0)
         printf("seamwalk-pack: seams: %" PRIu32 " surfaces cut into %" PRIu32 " pieces, %" PRIu32
                " left whole: their loops held more than %d points (one draw shows 65536 "
@@ -479,6 +491,12 @@ static int parse_build(int argc, char **argv, build_options *o)
                 !(o->seam_tolerance < 1e30))
                 return usage_error("build: --seam-tolerance takes a length in mm > 0, not '%s'",
                                    t);
+        } else if (strcmp(a, "--closest-mm") == 0) {
+            const char *t = i + 1 < argc ? argv[++i] : "";
+            char *end;
+            o->closest_mm = strtod(t, &end);
+            if (end == t || *end != '\0' || !(o->closest_mm > 0) || !(o->closest_mm < 1e30))
+                return usage_error("build: --closest-mm takes a length in mm > 0, not '%s'", t);
         } else if (strcmp(a, "--cut-patches") == 0) {
             const char *t = i + 1 < argc ? argv[++i] : "";
             char *end;

@@ -87,6 +87,12 @@ static void add_summary(seam_summary *sum, const seam_summary *one, double scale
     a->flatten_s += b->flatten_s, a->sew_s += b->sew_s;
     sum->collapses += one->collapses, sum->simplify_s += one->simplify_s;
     sum->pinned_surfaces += one->pinned_surfaces;
+    sum->seam_floor = fmax(sum->seam_floor, one->seam_floor * scale);
+    sw_seam_reroot_report *cut = &sum->reroot;
+    const sw_seam_reroot_report *its = &one->reroot;
+    cut->applied += its->applied, cut->kept += its->kept;
+    cut->originals_before += its->originals_before, cut->originals_after += its->originals_after;
+    cut->slots_before += its->slots_before, cut->slots_after += its->slots_after;
     sum->split.cut += one->split.cut, sum->split.pieces += one->split.pieces;
     sum->split.uncut += one->split.uncut;
     sw_levels_report *l = &sum->levels;
@@ -128,6 +134,14 @@ typedef struct proto_jobs {
     sw_error *errors;
 } proto_jobs;
 
+/* The seam floor in the scene's units: the bound at --closest-mm, or at a
+ * hundredth of the placed scene. */
+static double placed_seam_floor(const build_options *o, const sw_scene_plan *plan)
+{
+    return sw_pack_tool_seam_floor(o->closest_mm > 0 ? o->closest_mm
+                                   : sw_pack_tool_default_closest_mm(placed_diagonal(plan)));
+}
+
 /* Prototype k packed on threads threads, at its tolerance (floor: the
  * placed scene's, placed_floor), with what its file's import said. */
 static sw_status pack_prototype(const build_options *o, progress_context *pc,
@@ -137,6 +151,7 @@ static sw_status pack_prototype(const build_options *o, progress_context *pc,
 {
     build_options ok = *o;
     ok.seam_tolerance = prototype_tolerance(o, plan, k, floor);
+    ok.seam_floor = placed_seam_floor(o, plan) / largest_scale(plan, k);
     ok.threads = threads;
     sw_model *m = &plan->prototypes[k];
     m->up_axis = plan->views.up_axis;
@@ -169,8 +184,10 @@ sw_status sw_pack_tool_pack_prototype(const build_options *o, progress_context *
 {
     sw_status st = pack_prototype(o, pc, plan, k, placed_floor(plan), o->threads, bytes, size,
                                   summary, err);
-    if (st == SW_OK)
+    if (st == SW_OK) {
         summary->sewing.tolerance *= largest_scale(plan, k);
+        summary->seam_floor *= largest_scale(plan, k);
+    }
     return st;
 }
 

@@ -52,8 +52,10 @@ void sw_pack_placed_counts(const sw_pack_prototype *prototypes, const sw_pack_in
 
 /* Spaces the placed scene shares with the prototypes (parametric or local
  * to a level): their indices are left as they are. */
-static int shared_space(int s)
+static int shared_space(int s, int share_levels)
 {
+    if (share_levels && s == SW_SPACE_LEVEL_VERTICES)
+        return 1;
     return s == SW_SPACE_TRIM_LOOPS || s == SW_SPACE_TRIM_CURVES || s == SW_SPACE_TRIM_DATA ||
            s == SW_SPACE_TRIM_MASKS || s == SW_SPACE_LEVEL_INDICES || s == SW_SPACE_LEVEL_CHAINS ||
            s == SW_SPACE_LEVEL_CHAIN_POINTS || s == SW_SPACE_PART_LEVEL_INDICES;
@@ -66,7 +68,8 @@ enum { A_META, A_SEAM, A_LEVELS, A_PARTS, A_TRANSFORMS, A_PATCHES, A_CONTROL, A_
        A_MEMBERS, A_SUPER_OF, A_PART_LEVELS, A_PIECE_LEVELS, A_PIECE_OF, A_PL_VERTICES,
        A_COUNT };
 
-static void array_sizes(const uint64_t c[SW_SPACE_COUNT], uint64_t n[A_COUNT], uint64_t size[A_COUNT])
+static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int share_levels, uint64_t n[A_COUNT],
+                        uint64_t size[A_COUNT])
 {
     const uint64_t surfaces = c[SW_SPACE_SURFACES];
     const uint64_t counts[A_COUNT] = {
@@ -88,15 +91,27 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], uint64_t n[A_COUNT], u
         sizeof(sw_level_vertex) };
     for (int a = 0; a < A_COUNT; a++)
         n[a] = counts[a], size[a] = bytes[a];
+    if (share_levels)
+        n[A_LEVEL_VERTICES] = 0;
+}
+
+static uint64_t expand_bytes(const uint64_t counts[SW_SPACE_COUNT], int share_levels)
+{
+    uint64_t n[A_COUNT], size[A_COUNT], total = 0;
+    array_sizes(counts, share_levels, n, size);
+    for (int a = 0; a < A_COUNT; a++)
+        total += sw_arena_worst_case(n[a] * size[a] + 1, 64);
+    return total;
 }
 
 uint64_t sw_pack_expand_bytes(const uint64_t counts[SW_SPACE_COUNT])
 {
-    uint64_t n[A_COUNT], size[A_COUNT], total = 0;
-    array_sizes(counts, n, size);
-    for (int a = 0; a < A_COUNT; a++)
-        total += sw_arena_worst_case(n[a] * size[a] + 1, 64);
-    return total;
+    return expand_bytes(counts, 0);
+}
+
+uint64_t sw_pack_expand_shared_bytes(const uint64_t counts[SW_SPACE_COUNT])
+{
+    return expand_bytes(counts, 1);
 }
 
 uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_graph *stored,
@@ -107,7 +122,7 @@ uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_grap
         return UINT64_MAX;
     uint64_t walk = stored ? sw_walk_arena_bytes_placed(stored, surfaces, counts) : 0;
     uint64_t bytes = sw_pack_runtime_bytes(total_size, (uint32_t)counts[SW_SPACE_PATCHES], walk);
-    uint64_t expand = sw_pack_expand_bytes(counts);
+    uint64_t expand = sw_pack_expand_shared_bytes(counts);
     return bytes > UINT64_MAX - expand ? UINT64_MAX : bytes + expand;
 }
 
@@ -122,42 +137,83 @@ uint64_t sw_pack_runtime_bytes_at(const sw_pack *pack, uint64_t total_size)
     return sw_pack_instanced_runtime_bytes(total_size, g, pack->surfaces, counts);
 }
 
+void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
+{
+    const sw_seam_graph *g = pack->seam_header ? &pack->seam : NULL;
+    uint64_t total = pack->header->total_size;
+    out->pack = (total + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN + SW_PACK_ALIGN;
+    if (!pack->instances) {
+        out->patch_state = (uint64_t)pack->meta->patch_count * SW_RUNTIME_BYTES_PER_PATCH;
+        out->placed = 0;
+        sw_walk_pools(g, pack->surfaces, out->walk);
+        return;
+    }
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
+    out->patch_state = counts[SW_SPACE_PATCHES] * SW_RUNTIME_BYTES_PER_PATCH;
+    out->placed = sw_pack_expand_shared_bytes(counts);
+    if (g)
+        sw_walk_pools_placed(g, pack->surfaces, counts, out->walk);
+    else
+        memset(out->walk, 0, sizeof out->walk);
+}
+
 /* The placed scene's arrays, taken from the arena. */
 typedef struct placed {
     void *a[A_COUNT];
     uint64_t n[A_COUNT];
     uint64_t at[SW_SPACE_COUNT];   /* records written so far per space */
+    int share_levels;              /* the static levels' vertices stay the pack's */
 } placed;
 
 static sw_status take_arrays(placed *d, const uint64_t counts[SW_SPACE_COUNT], sw_arena *arena,
                              sw_error *err)
 {
     uint64_t size[A_COUNT];
-    array_sizes(counts, d->n, size);
+    array_sizes(counts, d->share_levels, d->n, size);
     for (int a = 0; a < A_COUNT; a++) {
         d->a[a] = sw_arena_alloc(arena, (size_t)(d->n[a] * size[a] + 1), 64);
         if (!d->a[a])
             return sw_error_set(err, SW_ERR_NO_MEMORY, "the placed scene: the arena is short "
                                 "(%llu bytes needed)",
-                                (unsigned long long)sw_pack_expand_bytes(counts));
+                                (unsigned long long)expand_bytes(counts, d->share_levels));
     }
     return SW_OK;
+}
+
+/* A transform that moves nothing is not applied (the expansion copies). */
+static int moves(const float *t)
+{
+    int moved = 0;
+    for (int k = 0; t && k < 16; k++)
+        moved |= t[k] != (k % 5 == 0 ? 1.0f : 0.0f);
+    return moved;
+}
+
+void sw_pack_level_vertices(const sw_pack *pack, uint32_t s, const sw_level *rec,
+                            sw_level_vertex *out)
+{
+    const sw_level_vertex *src = pack->levels.vertices + rec->first_vertex;
+    const float *t = pack->level_vertices_local
+                         ? pack->part_transforms + 16 * (size_t)pack->surfaces[s].part : NULL;
+    const sw_pack_move place = { .transform = moves(t) ? t : NULL,
+                                 .scale = moves(t) ? sw_instance_scale(t) : 1 };
+    sw_pack_move_level_vertices(&place, src, rec->vertex_count, out);
 }
 
 /* The move of prototype p to where instance inst's copy goes. */
 static sw_pack_move move_for(const sw_pack *pack, const placed *d, const sw_pack_prototype *p,
                              const sw_pack_instance *inst)
 {
-    int moved = 0;
-    for (int k = 0; k < 16; k++)
-        moved |= inst->transform[k] != (k % 5 == 0 ? 1.0f : 0.0f);
+    int moved = moves(inst->transform);
     sw_pack_move m = { .src_originals = pack->seam.original_count,
                        .dst_originals = (uint32_t)d->n[A_VERTICES] -
                                         (uint32_t)d->n[A_COLLAPSES],
                        .transform = moved ? inst->transform : NULL,
                        .scale = moved ? sw_instance_scale(inst->transform) : 1 };
     for (int s = 0; s < SW_SPACE_COUNT; s++)
-        m.shift[s] = shared_space(s) ? 0 : (int64_t)d->at[s] - (int64_t)p->first[s];
+        m.shift[s] = shared_space(s, d->share_levels) ? 0
+                                                     : (int64_t)d->at[s] - (int64_t)p->first[s];
     return m;
 }
 
@@ -253,10 +309,11 @@ static void place_levels(const sw_pack *pack, placed *d, const sw_pack_prototype
         sw_pack_move_indices(m, SW_SPACE_LEVELS, l->surface_levels + p->first[SW_SPACE_SURFACES],
                              p->count[SW_SPACE_SURFACES],
                              AT(d, A_SURFACE_LEVELS, uint32_t, SW_SPACE_SURFACES));
-        sw_pack_move_level_vertices(m, l->vertices + p->first[SW_SPACE_LEVEL_VERTICES],
-                                    p->count[SW_SPACE_LEVEL_VERTICES],
-                                    AT(d, A_LEVEL_VERTICES, sw_level_vertex,
-                                       SW_SPACE_LEVEL_VERTICES));
+        if (!d->share_levels)
+            sw_pack_move_level_vertices(m, l->vertices + p->first[SW_SPACE_LEVEL_VERTICES],
+                                        p->count[SW_SPACE_LEVEL_VERTICES],
+                                        AT(d, A_LEVEL_VERTICES, sw_level_vertex,
+                                           SW_SPACE_LEVEL_VERTICES));
     }
     const sw_supers *su = &pack->supers;
     if (su->supers) {
@@ -314,7 +371,8 @@ static void fill_headers(const sw_pack *pack, placed *d, float tolerance)
         sw_pack_levels *l = d->a[A_LEVELS];
         *l = *pack->levels_header;
         l->level_count = (uint32_t)d->n[A_LEVEL_RECORDS];
-        l->vertex_count = (uint32_t)d->n[A_LEVEL_VERTICES];
+        l->vertex_count = d->share_levels ? pack->levels.vertex_count
+                                          : (uint32_t)d->n[A_LEVEL_VERTICES];
         l->surface_count = (uint32_t)d->n[A_SURFACES];
     }
 }
@@ -353,9 +411,11 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
         out->levels_header = d->a[A_LEVELS];
         out->levels.levels = d->a[A_LEVEL_RECORDS];
         out->levels.surface_levels = d->a[A_SURFACE_LEVELS];
-        out->levels.vertices = d->a[A_LEVEL_VERTICES];
+        out->levels.vertices = d->share_levels ? pack->levels.vertices : d->a[A_LEVEL_VERTICES];
         out->levels.level_count = (uint32_t)d->n[A_LEVEL_RECORDS];
-        out->levels.vertex_count = (uint32_t)d->n[A_LEVEL_VERTICES];
+        out->levels.vertex_count = d->share_levels ? pack->levels.vertex_count
+                                                   : (uint32_t)d->n[A_LEVEL_VERTICES];
+        out->level_vertices_local = d->share_levels;
         out->levels.surface_count = surfaces;
     }
     if (pack->supers.supers) {
@@ -376,7 +436,8 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
     }
 }
 
-sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_error *err)
+static sw_status expand(const sw_pack *pack, int share_levels, sw_arena *arena, sw_pack *out,
+                        sw_error *err)
 {
     if (!pack->instances) {
         *out = *pack;
@@ -384,7 +445,7 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
     }
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    placed d = { 0 };
+    placed d = { .share_levels = share_levels };
     sw_status st = take_arrays(&d, counts, arena, err);
     if (st != SW_OK)
         return st;
@@ -400,7 +461,7 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
         float t = (float)(p->seam_tolerance * m.scale);
         tolerance = t > tolerance ? t : tolerance;
         for (int s = 0; s < SW_SPACE_COUNT; s++)
-            d.at[s] += shared_space(s) ? 0 : p->count[s];
+            d.at[s] += shared_space(s, share_levels) ? 0 : p->count[s];
     }
     ((uint32_t *)d.a[A_SURFACE_LOOPS])[d.n[A_SURFACES]] = (uint32_t)d.n[A_LOOPS];
     ((uint32_t *)d.a[A_SURFACE_LEVELS])[d.n[A_SURFACES]] = (uint32_t)d.n[A_LEVEL_RECORDS];
@@ -408,4 +469,15 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
     fill_headers(pack, &d, tolerance);
     fill_view(pack, &d, out);
     return SW_OK;
+}
+
+sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_error *err)
+{
+    return expand(pack, 0, arena, out, err);
+}
+
+sw_status sw_pack_expand_shared(const sw_pack *pack, sw_arena *arena, sw_pack *out,
+                                sw_error *err)
+{
+    return expand(pack, 1, arena, out, err);
 }

@@ -12,9 +12,10 @@
  * the part levels' indices are parametric or local, so the view shares
  * them with the prototypes instead of copying them.
  *
- * This expansion copies every instance's positions: memory grows with the
- * instance count. It is the step before a walk that keeps per instance only
- * what the view needs. The same moving of a run of records, without a
+ * This expansion copies every instance's positions (the runtime's shares
+ * the static levels' vertices): memory grows with the instance count. It
+ * is the step before a walk that keeps per instance only what the view
+ * needs. The same moving of a run of records, without a
  * transform, joins packs built apart (sw_pack_block.h). */
 #ifndef SW_PACK_INSTANCES_H
 #define SW_PACK_INSTANCES_H
@@ -24,6 +25,7 @@
 #include "sw_arena.h"
 #include "sw_error.h"
 #include "sw_pack.h"
+#include "sw_walk_memory.h"
 
 /* Maps PROTOTYPES and INSTANCES into out (called last by the reader, on a
  * pack whose other sections are valid) and checks every rule: the runs
@@ -40,8 +42,10 @@ void sw_pack_placed_counts(const sw_pack_prototype *prototypes, const sw_pack_in
                            uint32_t instance_count, uint64_t counts[SW_SPACE_COUNT]);
 
 /* Arena bytes sw_pack_expand takes for a placed scene of those counts,
- * worst case (alignment included). */
+ * worst case (alignment included); and sw_pack_expand_shared (the
+ * runtime's, counted in runtime_bytes). */
 uint64_t sw_pack_expand_bytes(const uint64_t counts[SW_SPACE_COUNT]);
+uint64_t sw_pack_expand_shared_bytes(const uint64_t counts[SW_SPACE_COUNT]);
 
 /* runtime_bytes of an instanced pack of total_size bytes: the pack, the
  * expansion and the walk over the placed scene (stored: the pack's own
@@ -55,12 +59,40 @@ uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_grap
  * adds a section), placed or not. */
 uint64_t sw_pack_runtime_bytes_at(const sw_pack *pack, uint64_t total_size);
 
+/* A validated pack's runtime_bytes pool by pool (they add up to it): the
+ * pack as read into the arena, each placed patch's state, the placed
+ * scene's expansion (version 2; 0 otherwise) and the walk's pools
+ * (sw_walk_memory.h). */
+typedef struct sw_runtime_pools {
+    uint64_t pack, patch_state, placed;
+    uint64_t walk[SW_WALK_POOL_COUNT];
+} sw_runtime_pools;
+void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out);
+
 /* The placed scene of a validated pack as a view in out: everything the
  * walk reads (the header, the section table, viewpoints, orientation and
  * notes stay the pack's). A pack without instances is copied as it is
  * (*out = *pack), taking nothing. SW_ERR_NO_MEMORY when the arena is
  * short of sw_pack_expand_bytes. */
 sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_error *err);
+
+/* The same as the runtime holds it: the static levels' vertices are not
+ * copied per instance but shared with the prototypes, in their frames
+ * (out->level_vertices_local = 1; each level's first_vertex indexes the
+ * pack's own LEVEL_VERTICES): whoever reads them places a surface's with
+ * its part's transform (out->part_transforms), as the stand-ins are made
+ * (firmware/walk/visibility/sw_seam_standin.c). A pack without instances
+ * is copied as it is, its vertices placed already. */
+sw_status sw_pack_expand_shared(const sw_pack *pack, sw_arena *arena, sw_pack *out,
+                                sw_error *err);
+
+/* The vertices of static level rec (of surface s) as drawn, into out
+ * (rec->vertex_count of them): where pack shares them with its prototype
+ * (level_vertices_local), placed by s's part's transform with the mover
+ * the expansion uses, so the same floats as sw_pack_expand's copy; else
+ * as stored. */
+void sw_pack_level_vertices(const sw_pack *pack, uint32_t s, const sw_level *rec,
+                            sw_level_vertex *out);
 
 /* The name of a prototype's part placed by an instance: the instance's
  * name, followed by "/" and the part's when the part has one (a product of

@@ -55,10 +55,12 @@ static sw_status validate_vertex(const sw_seam_graph *g, uint32_t i, sw_error *e
             return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].p.%c: %g, expected a "
                                 "finite number", (unsigned)i, "xyz"[k], (double)v->p[k]);
     int original = i < g->original_count;
-    if (!finite_non_negative(v->error) || (original && v->error != 0.0f))
-        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].error: %g, expected %s",
-                            (unsigned)i, (double)v->error,
-                            original ? "0 (an original vertex)" : "finite >= 0");
+    /* An original vertex's error is 0 where the hierarchy starts at the
+     * sewn polylines, the floor it stands for where the host cut it
+     * (assets/seam/sw_seam_reroot.h). */
+    if (!finite_non_negative(v->error))
+        return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].error: %g, expected finite "
+                            ">= 0", (unsigned)i, (double)v->error);
     if (v->reserved != 0)
         return sw_error_set(err, SW_ERR_FORMAT, "SEAM_VERTICES[%u].reserved: %u, expected 0",
                             (unsigned)i, (unsigned)v->reserved);

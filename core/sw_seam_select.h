@@ -164,6 +164,12 @@ sw_status sw_seam_select_loop(const sw_seam_select *state, uint32_t loop, float 
                               sw_seam_point *points, uint32_t capacity, uint32_t *count,
                               int *vanished, sw_error *err);
 
+/* Is slot k of loop (0 .. slot_count - 1 from its first) on a degenerate
+ * side of its surface's domain (a pole: one of its two segments far
+ * shorter in model space than its (u, v) length predicts), where the pin
+ * above keeps the slot's own point? Static: the original slots only. */
+int sw_seam_slot_degenerate(const sw_seam_graph *graph, uint32_t loop, uint32_t k);
+
 /* The same, and each point's slot in the loop (0 .. slot_count - 1 from
  * the loop's first) into slots (capacity entries, may be NULL): where the
  * point stands along the loop, whatever the front (sw_border_strip.h's t). */

@@ -110,6 +110,12 @@ static int degenerate_at(const sw_seam_graph *g, const sw_seam_loop *loop, uint3
     return own < 0.0625f * scale;
 }
 
+int sw_seam_slot_degenerate(const sw_seam_graph *g, uint32_t loop, uint32_t k)
+{
+    return loop < g->loop_count && k < g->loops[loop].slot_count &&
+           degenerate_at(g, &g->loops[loop], k);
+}
+
 /* One run, slots k0 .. k0 + len (mod the loop) all showing x. One point, the
  * rule's, unless the run holds slots where the parameterisation is
  * degenerate (a pole side, as on the Newell lid at its knob: one point in

@@ -43,13 +43,18 @@ double sw_seam_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
     for (uint32_t k = 0; k < loop->slot_count; k++) {
         const sw_seam_slot *a = &g->slots[loop->first_slot + k];
         const sw_seam_slot *b = &g->slots[loop->first_slot + (k + 1) % loop->slot_count];
-        const float *p = g->vertices[a->vertex].p, *q = g->vertices[b->vertex].p;
+        const sw_seam_vertex *va = &g->vertices[a->vertex], *vb = &g->vertices[b->vertex];
+        if (va->error > 0)
+            continue;
+        const float *p = va->p, *q = vb->p;
         sw_vec3 at = sw_surface_at(patches, patch_count, a->uv[0], a->uv[1]);
+        worst = fmax(worst, sw_v3_length(sw_v3_sub(at, sw_v3(p[0], p[1], p[2]))));
+        if (vb->error > 0)
+            continue;
         sw_vec3 mid = sw_surface_at(patches, patch_count, 0.5 * ((double)a->uv[0] + b->uv[0]),
                                     0.5 * ((double)a->uv[1] + b->uv[1]));
         sw_vec3 chord = sw_v3(0.5 * ((double)p[0] + q[0]), 0.5 * ((double)p[1] + q[1]),
                               0.5 * ((double)p[2] + q[2]));
-        worst = fmax(worst, sw_v3_length(sw_v3_sub(at, sw_v3(p[0], p[1], p[2]))));
         worst = fmax(worst, sw_v3_length(sw_v3_sub(mid, chord)));
     }
     return worst;

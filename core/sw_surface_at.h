@@ -19,7 +19,11 @@ sw_vec3 sw_surface_at(const sw_trim_patch *patches, uint32_t patch_count, double
 /* The largest distance of loop's sewn polyline (its slots at full detail and
  * the middle of each segment) from the surface at the same (u, v): the
  * file's own gaps, which sewing joins across and no level of detail makes
- * smaller. */
+ * smaller. Only sewn points count: where the pack's hierarchy was cut at a
+ * floor (assets/seam/sw_seam_reroot.h), a vertex with an error of its own
+ * stands for a level of detail, whose distance from the surface is error
+ * to be measured, not a gap to be forgiven; so the slots of such vertices,
+ * and the segments with one at an end, are left out. */
 double sw_seam_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
                              const sw_trim_patch *patches, uint32_t patch_count);
 

@@ -60,39 +60,102 @@ uint64_t sw_walk_threads_bytes(uint32_t surface_count)
            sw_retire_ring_arena_bytes(sw_walk_retire_capacity(surface_count));
 }
 
+const char *const sw_walk_pool_names[SW_WALK_POOL_COUNT] = {
+    "seam front", "surface state", "culling", "mesh maker", "surface output",
+    "worker hand-over", "mesh cache" };
+
 /* The walk over a graph of g's counts (its arrays are not read), of
- * patches patches, whose largest surface is m. */
-static uint64_t walk_bytes(const sw_seam_graph *g, uint64_t patches, const sw_walk_sizes *m)
+ * patches patches, whose largest surface is m, pool by pool. */
+static void walk_pools(const sw_seam_graph *g, uint64_t patches, const sw_walk_sizes *m,
+                       uint64_t pool[SW_WALK_POOL_COUNT])
 {
     uint64_t n = g->surface_count, v = SW_WALK_VERTICES;
     uint32_t cache = sw_walk_cache_vertices_for(patches);
-    uint64_t bytes = sw_seam_select_arena_bytes(g);
-    bytes += 4 * take(n * sizeof(float)) + 3 * take(n);  /* target, seam bound, offset, depth;
-                                                             visible, evictable, dirty */
-    bytes += 2 * take(n * sizeof(double)) +             /* cull_near, cull_far */
-             sw_cull_tree_arena_bytes((uint32_t)n, patches);
-    bytes += take(n * sizeof(sw_normal_cone)) +         /* the cones, and their scratch */
-             sw_arena_worst_case(sizeof(double) * sw_normal_cone_scratch_doubles(
-                                     SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE), 64);
-    bytes += take((m->points + 1ull) * sizeof(sw_seam_point)) +  /* the walk's maker */
-             take((m->points + 1ull) * sizeof(sw_trim_point)) +
-             take((m->loops + 1ull) * sizeof(uint32_t)) +
-             take((m->patches + 1ull) * sizeof(sw_trim_patch)) + take(sw_walk_scratch_bytes(m));
-    bytes += 2 * take(v * 3 * sizeof(float)) + take(v * 2 * sizeof(float)) +
-             take(v * sizeof(uint32_t)) + take(SW_WALK_INDICES * sizeof(uint16_t));
-    bytes += sw_walk_threads_bytes((uint32_t)n);
-    return bytes + sw_seam_cache_arena_bytes((uint32_t)n, cache, sw_walk_cache_indices(cache));
+    pool[SW_WALK_POOL_SEAM_FRONT] = sw_seam_select_arena_bytes(g);
+    pool[SW_WALK_POOL_SURFACES] = 5 * take(n * sizeof(float)) + 3 * take(n); /* target, seam
+        bound, offset, floor, depth; visible, evictable, dirty */
+    pool[SW_WALK_POOL_CULL] = 2 * take(n * sizeof(double)) +             /* cull_near, cull_far */
+                              sw_cull_tree_arena_bytes((uint32_t)n, patches) +
+                              take(n * sizeof(sw_normal_cone)) +         /* the cones, scratch */
+                              sw_arena_worst_case(sizeof(double) * sw_normal_cone_scratch_doubles(
+                                                      SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE),
+                                                  64);
+    pool[SW_WALK_POOL_MAKER] = take((m->points + 1ull) * sizeof(sw_seam_point)) +
+                               take((m->points + 1ull) * sizeof(sw_trim_point)) +
+                               take((m->loops + 1ull) * sizeof(uint32_t)) +
+                               take((m->patches + 1ull) * sizeof(sw_trim_patch)) +
+                               take(sw_walk_scratch_bytes(m));
+    pool[SW_WALK_POOL_OUTPUT] = 2 * take(v * 3 * sizeof(float)) + take(v * 2 * sizeof(float)) +
+                                take(v * sizeof(uint32_t)) +
+                                take(SW_WALK_INDICES * sizeof(uint16_t));
+    pool[SW_WALK_POOL_THREADS] = sw_walk_threads_bytes((uint32_t)n);
+    pool[SW_WALK_POOL_CACHE] = sw_seam_cache_arena_bytes((uint32_t)n, cache,
+                                                         sw_walk_cache_indices(cache));
+}
+
+static uint64_t walk_bytes(const sw_seam_graph *g, uint64_t patches, const sw_walk_sizes *m)
+{
+    uint64_t pool[SW_WALK_POOL_COUNT], bytes = 0;
+    walk_pools(g, patches, m, pool);
+    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
+        bytes += pool[i];
+    return bytes;
 }
 
 uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces)
 {
-    if (!g || g->surface_count == 0)
+    uint64_t pool[SW_WALK_POOL_COUNT], bytes = 0;
+    sw_walk_pools(g, surfaces, pool);
+    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
+        bytes += pool[i];
+    return bytes;
+}
+
+/* A graph of the placed counts (no arrays), for the sizes alone; 0 when
+ * they do not fit one. */
+static int placed_graph(const uint64_t counts[SW_SPACE_COUNT], sw_seam_graph *g)
+{
+    for (int s = 0; s < SW_SPACE_COUNT; s++)
+        if (counts[s] >= SW_SEAM_NONE)
+            return 0;
+    uint64_t originals = counts[SW_SPACE_SEAM_ORIGINALS], made = counts[SW_SPACE_SEAM_COLLAPSES];
+    if (originals + made >= SW_SEAM_NONE)
         return 0;
+    *g = (sw_seam_graph){
+        .vertex_count = (uint32_t)(originals + made), .original_count = (uint32_t)originals,
+        .slot_count = (uint32_t)counts[SW_SPACE_SEAM_SLOTS],
+        .loop_count = (uint32_t)counts[SW_SPACE_SEAM_LOOPS],
+        .edge_count = (uint32_t)counts[SW_SPACE_SEAM_EDGES], .collapse_count = (uint32_t)made,
+        .slot_ref_count = (uint32_t)counts[SW_SPACE_SEAM_SLOT_REFS],
+        .surface_count = (uint32_t)counts[SW_SPACE_SURFACES] };
+    return 1;
+}
+
+void sw_walk_pools_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
+                          const uint64_t counts[SW_SPACE_COUNT],
+                          uint64_t pool[SW_WALK_POOL_COUNT])
+{
+    sw_seam_graph g;
+    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
+        pool[i] = 0;
+    if (!stored || counts[SW_SPACE_SURFACES] == 0 || !placed_graph(counts, &g))
+        return;
+    sw_walk_sizes m = sw_walk_largest_surface(stored, surfaces);
+    walk_pools(&g, counts[SW_SPACE_PATCHES], &m, pool);
+}
+
+void sw_walk_pools(const sw_seam_graph *g, const sw_pack_surface *surfaces,
+                   uint64_t pool[SW_WALK_POOL_COUNT])
+{
+    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
+        pool[i] = 0;
+    if (!g || g->surface_count == 0)
+        return;
     sw_walk_sizes m = sw_walk_largest_surface(g, surfaces);
     uint64_t patches = 0;
     for (uint32_t s = 0; s < g->surface_count; s++)
         patches += surfaces[s].patch_count;
-    return walk_bytes(g, patches, &m);
+    walk_pools(g, patches, &m, pool);
 }
 
 uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
@@ -100,19 +163,9 @@ uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_s
 {
     if (!stored || counts[SW_SPACE_SURFACES] == 0)
         return 0;
-    for (int s = 0; s < SW_SPACE_COUNT; s++)
-        if (counts[s] >= SW_SEAM_NONE)
-            return UINT64_MAX;
-    sw_walk_sizes m = sw_walk_largest_surface(stored, surfaces);
-    uint64_t originals = counts[SW_SPACE_SEAM_ORIGINALS], made = counts[SW_SPACE_SEAM_COLLAPSES];
-    sw_seam_graph g = {
-        .vertex_count = (uint32_t)(originals + made), .original_count = (uint32_t)originals,
-        .slot_count = (uint32_t)counts[SW_SPACE_SEAM_SLOTS],
-        .loop_count = (uint32_t)counts[SW_SPACE_SEAM_LOOPS],
-        .edge_count = (uint32_t)counts[SW_SPACE_SEAM_EDGES], .collapse_count = (uint32_t)made,
-        .slot_ref_count = (uint32_t)counts[SW_SPACE_SEAM_SLOT_REFS],
-        .surface_count = (uint32_t)counts[SW_SPACE_SURFACES] };
-    if (originals + made >= SW_SEAM_NONE)
+    sw_seam_graph g;
+    if (!placed_graph(counts, &g))
         return UINT64_MAX;
+    sw_walk_sizes m = sw_walk_largest_surface(stored, surfaces);
     return walk_bytes(&g, counts[SW_SPACE_PATCHES], &m);
 }

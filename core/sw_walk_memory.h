@@ -49,6 +49,20 @@ uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surf
 uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
                                     const uint64_t counts[SW_SPACE_COUNT]);
 
+/* The same, pool by pool (each of the walk's allocations in one of them):
+ * the selection's front over the Seam Graph (sw_seam_select.h), the
+ * per-surface state, culling (the tree, the cones), the maker's buffers
+ * for one surface, one surface's output, the workers' shared hand-over
+ * (sw_walk_threads_bytes) and the tessellation cache's pools. */
+enum { SW_WALK_POOL_SEAM_FRONT, SW_WALK_POOL_SURFACES, SW_WALK_POOL_CULL, SW_WALK_POOL_MAKER,
+       SW_WALK_POOL_OUTPUT, SW_WALK_POOL_THREADS, SW_WALK_POOL_CACHE, SW_WALK_POOL_COUNT };
+extern const char *const sw_walk_pool_names[SW_WALK_POOL_COUNT];
+void sw_walk_pools(const sw_seam_graph *g, const sw_pack_surface *surfaces,
+                   uint64_t pool[SW_WALK_POOL_COUNT]);
+void sw_walk_pools_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
+                          const uint64_t counts[SW_SPACE_COUNT],
+                          uint64_t pool[SW_WALK_POOL_COUNT]);
+
 /* Of those, the state the tessellation workers share (sw_seam_workers.h),
  * whatever their number: per surface a job (two floats), the worker's
  * result entry, its no-room flag and a publish slot (one atomic pointer),

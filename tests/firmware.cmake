@@ -239,3 +239,9 @@ add_test(NAME instances_walk COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_insta
 add_test(NAME corpus_row COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/test_corpus_row.py
          ${PROJECT_SOURCE_DIR})
 sw_host_only_test(corpus_row)
+
+# A pack built for a closest view (--closest-mm): fewer seam vertices, the
+# same pictures from beyond it, and views closer than it clamped and
+# counted (tests/test_closest.sh).
+add_test(NAME closest_view COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_closest.sh
+         ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})

@@ -72,6 +72,22 @@ assert [s["name"] for s in j["sections"]][:4] == ["META", "PARTS", "PATCHES", "C
 assert abs(j["parts"][0]["color"][2] - 0.62) < 1e-6 and j["runtime_bytes"] > j["total_bytes"]
 assert j["box"]["min"][1] > -1e-6 and j["model_size"] > 1
 EOF
+# The runtime's memory, pool by pool: the pools add up to runtime_bytes, for
+# a pack of placed parts (the teaset scene) and a plain one (one file).
+"$tool" build "$samples/teapot.txt" -o "$work/pot.swpack" --quiet
+check "info's pools add up to runtime_bytes" python3 - "$tool" "$teaset" "$work/pot.swpack" <<'EOF'
+import json, subprocess, sys
+for path in sys.argv[2:]:
+    j = json.loads(subprocess.run([sys.argv[1], "info", "--json", path], capture_output=True,
+                                  text=True, check=True).stdout)
+    p = j["runtime_pools"]
+    assert sum(p.values()) == j["runtime_bytes"], (path, sum(p.values()), j["runtime_bytes"])
+    assert p["pack"] >= j["total_bytes"] and p["seam front"] > 0 and p["mesh cache"] > 0, p
+    assert (p["placed scene"] > 0) == (j.get("instance_count", 0) > 0), (path, p)
+text = subprocess.run([sys.argv[1], "info", sys.argv[2]], capture_output=True, text=True,
+                      check=True).stdout
+assert "runtime memory" in text and "    mesh cache" in text and "    seam front" in text, text
+EOF
 run verify "$teaset"
 check "verify accepts the teaset, every surface drawable" eval '[ "$(code)" -eq 0 ] && has "$work/out" "^$teaset: ok (70 patches, [0-9]* bytes; 70 surfaces tessellate at [0-9]* seam states from the finest to the coarsest drawn, [0-9]* tessellations, 0 without their holes, 0 with slits cut)$"'
 

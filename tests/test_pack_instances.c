@@ -161,6 +161,56 @@ static void test_merge_expand_and_read_back(void)
 
 /* Placed at the identity, a prototype's copy is its records, moved in the
  * index spaces only. */
+/* The runtime's expansion shares the static levels' vertices with the
+ * prototypes, and places them as the stand-ins read them
+ * (sw_pack_level_vertices): the same floats as the tools' expansion
+ * copies; it takes less arena. */
+static void test_shared_levels_place_as_copied(void)
+{
+    sw_pack_instance inst[PLACED];
+    three(inst);
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(placed_sample(inst, PLACED, &bytes, &size, &err) == SW_OK, "%s", err.message);
+    sw_pack pack;
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(pack.levels.level_count > 0 && pack.levels.vertex_count > 0);
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack.prototypes, pack.instances, pack.instance_count, counts);
+    size_t whole_bytes = (size_t)sw_pack_expand_bytes(counts);
+    size_t shared_bytes = (size_t)sw_pack_expand_shared_bytes(counts);
+    SW_CHECK_MSG(shared_bytes + counts[SW_SPACE_LEVEL_VERTICES] * sizeof(sw_level_vertex) <=
+                     whole_bytes + 64, "shared %zu, whole %zu", shared_bytes, whole_bytes);
+    void *a = malloc(whole_bytes), *b = malloc(shared_bytes);
+    sw_arena wa, sa;
+    sw_arena_init(&wa, a, whole_bytes);
+    sw_arena_init(&sa, b, shared_bytes);
+    sw_pack whole, shared;
+    SW_CHECK(sw_pack_expand(&pack, &wa, &whole, &err) == SW_OK && !whole.level_vertices_local);
+    SW_CHECK_MSG(sw_pack_expand_shared(&pack, &sa, &shared, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(shared.level_vertices_local && shared.levels.vertices == pack.levels.vertices);
+    SW_CHECK(shared.levels.level_count == whole.levels.level_count);
+    uint32_t compared = 0, differ = 0;
+    sw_level_vertex out[256];
+    for (uint32_t s = 0; s < shared.surface_count; s++)
+        for (uint32_t k = shared.levels.surface_levels[s]; k < shared.levels.surface_levels[s + 1];
+             k++) {
+            const sw_level *rs = &shared.levels.levels[k], *rw = &whole.levels.levels[k];
+            SW_CHECK(rs->vertex_count == rw->vertex_count && rs->error == rw->error);
+            if (rs->vertex_count > 256)
+                continue;
+            sw_pack_level_vertices(&shared, s, rs, out);
+            differ += memcmp(out, whole.levels.vertices + rw->first_vertex,
+                             rs->vertex_count * sizeof *out) != 0;
+            compared++;
+        }
+    SW_CHECK_MSG(compared > 0 && differ == 0, "%u of %u levels placed otherwise", differ, compared);
+    free(a);
+    free(b);
+    free(bytes);
+}
+
 static void test_identity_is_a_copy(void)
 {
     sw_pack_instance inst[2] = { instance(0, 0, 1, 0, "a"), instance(1, 0, 1, 0, "b") };
@@ -345,6 +395,7 @@ static void test_merge_refuses(void)
 int main(void)
 {
     SW_RUN(test_merge_expand_and_read_back);
+    SW_RUN(test_shared_levels_place_as_copied);
     SW_RUN(test_identity_is_a_copy);
     SW_RUN(test_signed_placed_pack);
     SW_RUN(test_refused);

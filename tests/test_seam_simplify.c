@@ -249,7 +249,7 @@ static void break_missing_edge(sw_seam_host *g) { g->edge_count--; }
 static void break_extra_edge(sw_seam_host *g) { g->edges[0].b = g->original_count - 1; }
 static void break_duplicate_edge(sw_seam_host *g) { g->edges[1] = g->edges[0]; }
 static void break_child(sw_seam_host *g) { g->vertices[2].child = 0; }
-static void break_error(sw_seam_host *g) { g->vertices[2].error = 1.0f; }
+static void break_error(sw_seam_host *g) { g->vertices[2].error = -1.0f; }
 static void break_position(sw_seam_host *g) { g->vertices[4].p[1] = NAN; }
 static void break_slot_ref(sw_seam_host *g) { g->slot_refs[0] = g->slot_refs[1]; }
 static void break_surface_loops(sw_seam_host *g) { g->surface_loops[1] = g->loop_count + 1; }

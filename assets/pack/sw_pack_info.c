@@ -372,6 +372,46 @@ typedef struct derived_stats {
     sw_pack_super_stats supers;
 } derived_stats;
 
+/* The runtime's memory pool by pool (sw_pack_runtime_pools): what a unit's
+ * --memory-mb must hold, and where it goes. */
+static void pool_list(const sw_pack *pack, const char *names[], uint64_t bytes[], int *n)
+{
+    sw_runtime_pools p;
+    sw_pack_runtime_pools(pack, &p);
+    const char *fixed[3] = { "pack", "patch state", "placed scene" };
+    const uint64_t sizes[3] = { p.pack, p.patch_state, p.placed };
+    *n = 0;
+    for (int i = 0; i < 3; i++)
+        names[*n] = fixed[i], bytes[(*n)++] = sizes[i];
+    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
+        names[*n] = sw_walk_pool_names[i], bytes[(*n)++] = p.walk[i];
+}
+
+static void print_pools_text(FILE *out, const sw_pack *pack)
+{
+    const char *names[3 + SW_WALK_POOL_COUNT];
+    uint64_t bytes[3 + SW_WALK_POOL_COUNT];
+    int n;
+    pool_list(pack, names, bytes, &n);
+    fprintf(out, "  %-16s %" PRIu64 " bytes (%.1f MiB), by pool:\n", "runtime memory",
+            pack->header->runtime_bytes, pack->header->runtime_bytes / 1048576.0);
+    for (int i = 0; i < n; i++)
+        fprintf(out, "    %-16s %12" PRIu64 " bytes %8.1f MiB\n", names[i], bytes[i],
+                bytes[i] / 1048576.0);
+}
+
+static void print_pools_json(FILE *out, const sw_pack *pack)
+{
+    const char *names[3 + SW_WALK_POOL_COUNT];
+    uint64_t bytes[3 + SW_WALK_POOL_COUNT];
+    int n;
+    pool_list(pack, names, bytes, &n);
+    fprintf(out, "  \"runtime_pools\": {");
+    for (int i = 0; i < n; i++)
+        fprintf(out, "%s\"%s\": %" PRIu64, i ? ", " : "", names[i], bytes[i]);
+    fprintf(out, "}\n");
+}
+
 static void print_text(FILE *out, const char *path, const sw_pack *pack, const info_parts *ip,
                        const derived_stats *derived)
 {
@@ -424,7 +464,7 @@ static void print_text(FILE *out, const char *path, const sw_pack *pack, const i
     fprintf(out, "  %-16s min %g %g %g, max %g %g %g\n", "box", lo[0], lo[1], lo[2], hi[0], hi[1],
             hi[2]);
     fprintf(out, "  %-16s %g (box diagonal)\n", "model size", sqrt(dx * dx + dy * dy + dz * dz));
-    fprintf(out, "  %-16s %" PRIu64 " bytes\n", "runtime memory", pack->header->runtime_bytes);
+    print_pools_text(out, pack);
     for (uint32_t i = 0; i < ip->count; i++)
         print_part_text(out, pack, ip, i);
 }
@@ -610,7 +650,9 @@ static void print_json(FILE *out, const char *path, const sw_pack *pack, const i
     json_floats(out, hi, 3);
     double dx = (double)hi[0] - lo[0], dy = (double)hi[1] - lo[1], dz = (double)hi[2] - lo[2];
     fprintf(out, "},\n  \"model_size\": %.9g,\n", sqrt(dx * dx + dy * dy + dz * dz));
-    fprintf(out, "  \"runtime_bytes\": %" PRIu64 "\n}\n", pack->header->runtime_bytes);
+    fprintf(out, "  \"runtime_bytes\": %" PRIu64 ",\n", pack->header->runtime_bytes);
+    print_pools_json(out, pack);
+    fprintf(out, "}\n");
 }
 
 sw_status sw_pack_print_info(FILE *out, const char *path, const sw_pack *pack, int json,

@@ -29,6 +29,10 @@ typedef struct sw_seam_host {
 /* A read-only view of host's arrays (valid until host changes or is freed). */
 sw_seam_graph sw_seam_host_view(const sw_seam_host *host);
 
+/* A copy of host in *out (which it overwrites; free it with
+ * sw_seam_host_free). SW_ERR_NO_MEMORY when malloc fails (*out zeroed). */
+sw_status sw_seam_host_copy(const sw_seam_host *host, sw_seam_host *out, sw_error *err);
+
 /* Frees every array and zeroes host; safe on a zeroed or freed host. */
 void sw_seam_host_free(sw_seam_host *host);
 

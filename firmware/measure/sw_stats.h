@@ -47,6 +47,7 @@ typedef struct sw_stats {
     uint32_t seam_active_min, seam_active_max;       /* active seam vertices per frame */
     uint32_t surfaces_vanished_max, surfaces_failed_max, surfaces_holes_filled_max;
     uint32_t surfaces_untangled_max;
+    uint32_t surfaces_clamped_max; /* in view, asking finer than the pack's floor */
     uint64_t seam_crossings_max;  /* T-vertices on seam segments, per frame */
     uint64_t seam_arena_bytes, seam_arena_peak_bytes; /* the seam walk's share of the arena:
                                                          its bound, and what it took */

@@ -131,6 +131,8 @@ static sw_status seam_frame(sw_program *rt, int measuring, uint64_t *triangles, 
         s->surfaces_holes_filled_max = f.holes_filled;
     if (f.untangled > s->surfaces_untangled_max)
         s->surfaces_untangled_max = f.untangled;
+    if (f.clamped_surfaces > s->surfaces_clamped_max)
+        s->surfaces_clamped_max = f.clamped_surfaces;
     if (f.cracks > s->cracks_max)   /* counted every frame: a refused surface is one */
         s->cracks_max = f.cracks;
     if (f.fill_triangles > s->fill_triangles_max)
@@ -390,10 +392,12 @@ static void print_summary(const sw_program *rt)
         snprintf(error, sizeof error, "error max %.3f px", s->error_max_px);
     printf("seamwalk: %llu frames of %u patches at %dx%d in %.2f s; %s (bound %.2f);"
            " cracks max %llu; undrawn max %u (surfaces in view with no mesh yet, the most in a"
-           " frame); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
+           " frame); clamped max %u (surfaces in view closer than the pack's --closest-mm,"
+           " drawn at its finest); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
            " frame stats and pictures the rest); mallocs after init %lld\n",
            (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, error,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->waiting_max,
+           s->surfaces_clamped_max,
            s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
     /* The walk's crack count is its own bookkeeping; the drawn borders are

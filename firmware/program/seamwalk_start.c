@@ -306,7 +306,7 @@ static sw_status load(sw_program *rt, sw_error *err)
     /* A pack of placed parts is walked as the scene it places. */
     if (st == SW_OK) {
         sw_pack stored = rt->pack;
-        if ((st = sw_pack_expand(&stored, &rt->arena, &rt->pack, err)) != SW_OK)
+        if ((st = sw_pack_expand_shared(&stored, &rt->arena, &rt->pack, err)) != SW_OK)
             sw_error_prefix(err, "%s", rt->opt.pack_path);
     }
     if (st != SW_OK)

@@ -80,6 +80,20 @@ static sw_status make_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
     return SW_OK;
 }
 
+/* Each surface's floor: the largest error of the vertices its loops start
+ * at, no finer than the walk's. */
+static void set_floors(sw_seam_walk *w)
+{
+    const sw_seam_graph *g = &w->pack->seam;
+    for (uint32_t s = 0; s < g->surface_count; s++) {
+        float f = w->bound_floor;
+        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+            for (uint32_t k = 0; k < g->loops[l].slot_count; k++)
+                f = fmaxf(f, g->vertices[g->slots[g->loops[l].first_slot + k].vertex].error);
+        w->floor[s] = f;
+    }
+}
+
 sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
                             sw_error *err)
 {
@@ -104,6 +118,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->evictable = take(arena, n, &failed);
     w->dirty = take(arena, n, &failed);
     w->sew_offset = take(arena, n * sizeof(float), &failed);
+    w->floor = take(arena, n * sizeof(float), &failed);
     w->depth = take(arena, n * sizeof(float), &failed);
     w->cull_near = take(arena, n * sizeof(double), &failed);
     w->cull_far = take(arena, n * sizeof(double), &failed);
@@ -118,6 +133,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     if (st != SW_OK)
         return st;
     w->cull_tree_ms = sw_seam_walk_ms_since(&t0);
+    set_floors(w);
     for (size_t k = 0; k < n; k++)
         w->target[k] = SW_SEAM_INVISIBLE_BOUND, w->seam_bound[k] = 0, w->sew_offset[k] = -1,
         w->depth[k] = INFINITY;
@@ -161,8 +177,8 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound, double ahead
 {
     const sw_seam_entry *e = &w->cache.entries[s];
     if (w->visible[s] == 1) {
-        bound = fmax(bound, (double)w->bound_floor);
-        ahead = fmin(fmax(ahead, (double)w->bound_floor), bound);
+        bound = fmax(bound, (double)w->floor[s]);
+        ahead = fmin(fmax(ahead, (double)w->floor[s]), bound);
         w->want[s] = (float)bound;
         if (sw_seam_walk_coarse_start(w, 0))
             bound *= SW_SEAM_FIRST_COARSER, ahead = bound;
@@ -214,7 +230,7 @@ static float culled_want(const sw_seam_walk *w, const sw_view *view, uint32_t s)
     d.y = fmax(fmax(b.min.y - e.y, 0.0), e.y - b.max.y);
     d.z = fmax(fmax(b.min.z - e.z, 0.0), e.z - b.max.z);
     double bound = sw_view_error_world(view, w->error_px, fmax(sw_v3_length(d), view->near_z));
-    return (float)fmax(bound, (double)w->bound_floor);
+    return (float)fmax(bound, (double)w->floor[s]);
 }
 
 /* How many frames ahead the threaded walk makes meshes for: about a
@@ -248,7 +264,7 @@ static double ahead_bound(const sw_seam_walk *w, const sw_view *view, uint32_t s
  * of the bound: a few times farther). Then the target: kept while valid,
  * else the bound's level; out of view, kept while the cache holds a mesh
  * (its seams stay where they were), else as coarse as the hierarchy goes. */
-static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32_t *cone_culled)
+static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, sw_seam_frame *frame)
 {
     double depth = w->cull_near[s];
     w->visible[s] = isfinite(depth);
@@ -262,6 +278,7 @@ static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32
             w->visible[s] = SW_SEAM_WALK_TINY;
         else
             away = w->cone_cull && facing_away(w, view, s, &all);
+        frame->clamped_surfaces += w->visible[s] == 1 && bound < w->floor[s];
     }
     /* A surface facing away is handled as a drawn one in all but the
      * drawing: its bound, its tessellation and its place in the cache, so
@@ -274,7 +291,7 @@ static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, uint32
     if (!w->visible[s])
         w->want[s] = culled_want(w, view, s);
     if (away)
-        w->visible[s] = SW_SEAM_WALK_AWAY, *cone_culled += 1;
+        w->visible[s] = SW_SEAM_WALK_AWAY, frame->cone_culled++;
     w->evictable[s] = w->visible[s] != 1 && w->visible[s] != SW_SEAM_WALK_AWAY;
     return changed;
 }
@@ -321,7 +338,7 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     w->eye = view->eye;
     cull_boxes(w, view, frame);
     for (uint32_t s = 0; s < n; s++) {
-        changed |= cull_surface(w, view, s, &frame->cone_culled);
+        changed |= cull_surface(w, view, s, frame);
         frame->visible_surfaces += w->visible[s] != 0;
     }
     sw_seam_walk_choose_parts(w, view, frame);

@@ -147,6 +147,9 @@ typedef struct sw_seam_frame {
     uint64_t cull_depth_tests;    /* boxes whose depth range it computed */
     double cull_ms;               /* of the select, spent on those */
     uint32_t cone_culled;         /* in the frustum, left out: their cone faces away */
+    uint32_t clamped_surfaces;    /* in view, their bound finer than their floor (a view
+                                     closer than the pack was built for, --closest-mm):
+                                     drawn at the floor, coarser than the view asks */
     double measure_ms;            /* of the draw, spent measuring (not part of the frame) */
     double error_beyond_sewing_px;/* measured: the most a sample's error exceeds its surface's
                                      sewing offset, what the level of detail and the
@@ -225,6 +228,10 @@ typedef struct sw_seam_walk {
                                      silhouette */
     double error_px;
     float bound_floor;            /* a tenth of the sewing tolerance */
+    float *floor;                 /* surface_count: the finest bound it is drawn at: the
+                                     above, or the largest error its seam vertices start
+                                     at where the pack's hierarchy was cut at a floor
+                                     (assets/seam/sw_seam_reroot.h) */
     uint32_t frame;               /* frames selected so far */
     int no_cache;                 /* every visible surface remade every frame at its exact
                                      bound: the benchmarks' baseline */

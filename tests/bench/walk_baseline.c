@@ -185,7 +185,7 @@ static int load_pack(wb_run *r, sw_error *err)
     sw_arena_init(&r->arena, r->block, bytes);
     sw_pack stored;
     if (sw_pack_load(r->opt.pack_path, &r->arena, &stored, err) != SW_OK ||
-        sw_pack_expand(&stored, &r->arena, &r->pack, err) != SW_OK)
+        sw_pack_expand_shared(&stored, &r->arena, &r->pack, err) != SW_OK)
         return 0;
     if (!r->pack.seam_header || !r->pack.patch_domains || !r->pack.meta->patch_count)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: no patches, or no Seam Graph",

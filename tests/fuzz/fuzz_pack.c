@@ -154,20 +154,26 @@ static void walk_placed(const sw_pack *pack)
         return;
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    uint64_t bytes = sw_pack_expand_bytes(counts);
-    if (bytes > (64u << 20))
-        return;
-    void *block = malloc((size_t)bytes);
-    if (!block)
-        return;
-    sw_arena arena;
-    sw_arena_init(&arena, block, (size_t)bytes);
-    sw_pack placed;
-    sw_error err;
-    if (sw_pack_expand(pack, &arena, &placed, &err) != SW_OK)
-        abort();   /* the bytes were counted: expansion cannot run short */
-    walk(&placed);
-    free(block);
+    /* Both expansions: the tools' (every position copied) and the
+     * runtime's (the static levels' vertices shared with the prototypes). */
+    for (int shared = 0; shared < 2; shared++) {
+        uint64_t bytes = shared ? sw_pack_expand_shared_bytes(counts) : sw_pack_expand_bytes(counts);
+        if (bytes > (64u << 20))
+            return;
+        void *block = malloc((size_t)bytes);
+        if (!block)
+            return;
+        sw_arena arena;
+        sw_arena_init(&arena, block, (size_t)bytes);
+        sw_pack placed;
+        sw_error err;
+        sw_status st = shared ? sw_pack_expand_shared(pack, &arena, &placed, &err)
+                              : sw_pack_expand(pack, &arena, &placed, &err);
+        if (st != SW_OK)
+            abort();   /* the bytes were counted: expansion cannot run short */
+        walk(&placed);
+        free(block);
+    }
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -35,7 +35,7 @@ typedef struct sw_seam_exact {
     double sew_offset;    /* model units, sw_seam_sewing_offset (sw_surface_at.h) */
     double depth;         /* the surface's nearest depth this frame */
     double error_px;      /* the walk's bound in pixels */
-    double bound_floor;   /* the walk's smallest bound in model units */
+    double bound_floor;   /* the walk's smallest bound for the surface, model units */
 } sw_seam_exact;
 
 /* The frame's worst figures, over the surfaces measured. */

@@ -31,7 +31,7 @@ static void measure_item(sw_seam_walk *w, const sw_seam_draw_item *it, const sw_
     float offset = sw_seam_walk_sewing_offset(w, s, w->measure_sew_offset, w->measure_patches,
                                               w->measure_max_patches);
     const sw_seam_exact exact = { w->measure_patches, patch_count, offset, it->depth,
-                                  w->error_px, w->bound_floor };
+                                  w->error_px, w->floor[s] };
     sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
     if (w->drawn)
         sw_seam_drawn_add_mesh(w->drawn, s, &mesh);

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "sw_pack_instances.h"
 #include "sw_walk_memory.h"
 
 static uint32_t longest_chain(const sw_levels *lv)
@@ -246,7 +247,7 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32
     sw_vertex *v = c->verts + (size_t)e->vertex_block * SW_SEAM_CACHE_VERTEX_UNIT;
     float *uv = c->uvs + 2 * (size_t)e->vertex_block * SW_SEAM_CACHE_VERTEX_UNIT;
     uint16_t *out = c->index_data + (size_t)e->index_block * SW_SEAM_CACHE_INDEX_UNIT;
-    memcpy(v, lv->vertices + rec->first_vertex, rec->vertex_count * sizeof *v);
+    sw_pack_level_vertices(m->pack, s, rec, (sw_level_vertex *)v);
     memcpy(out, lv->indices + rec->first_index, rec->index_count * sizeof *out);
     uint32_t base = rec->vertex_count, written = rec->index_count;
     for (uint32_t i = 0; i < g->surface_loops[s + 1] - g->surface_loops[s]; i++) {
