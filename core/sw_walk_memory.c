@@ -93,10 +93,9 @@ static void walk_pools(const sw_seam_graph *g, uint64_t patches, const sw_walk_s
                                                          sw_walk_cache_indices(cache));
 }
 
-static uint64_t walk_bytes(const sw_seam_graph *g, uint64_t patches, const sw_walk_sizes *m)
+static uint64_t pool_sum(const uint64_t pool[SW_WALK_POOL_COUNT])
 {
-    uint64_t pool[SW_WALK_POOL_COUNT], bytes = 0;
-    walk_pools(g, patches, m, pool);
+    uint64_t bytes = 0;
     for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
         bytes += pool[i];
     return bytes;
@@ -104,11 +103,9 @@ static uint64_t walk_bytes(const sw_seam_graph *g, uint64_t patches, const sw_wa
 
 uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces)
 {
-    uint64_t pool[SW_WALK_POOL_COUNT], bytes = 0;
+    uint64_t pool[SW_WALK_POOL_COUNT];
     sw_walk_pools(g, surfaces, pool);
-    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
-        bytes += pool[i];
-    return bytes;
+    return pool_sum(pool);
 }
 
 /* A graph of the placed counts (no arrays), for the sizes alone; 0 when
@@ -166,6 +163,7 @@ uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_s
     sw_seam_graph g;
     if (!placed_graph(counts, &g))
         return UINT64_MAX;
-    sw_walk_sizes m = sw_walk_largest_surface(stored, surfaces);
-    return walk_bytes(&g, counts[SW_SPACE_PATCHES], &m);
+    uint64_t pool[SW_WALK_POOL_COUNT];
+    sw_walk_pools_placed(stored, surfaces, counts, pool);
+    return pool_sum(pool);
 }
