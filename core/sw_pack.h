@@ -312,10 +312,11 @@ typedef struct sw_pack {
     const sw_pack_viewpoint *viewpoints;
     uint32_t viewpoint_count;
     const float *part_transforms;                /* 16 * part_count, or NULL */
-    int level_vertices_local;                    /* 1: the static levels' vertices are
-                                                    their prototype's, in its frame: a
-                                                    surface's are placed by its part's
-                                                    transform (sw_pack_expand_shared) */
+    int level_vertices_local;                    /* 1: the static and part levels'
+                                                    vertices are their prototype's, in its
+                                                    frame: a surface's or piece's are
+                                                    placed by its part's transform
+                                                    (sw_pack_expand_shared) */
     /* The Seam Graph: views into the SEAM_* sections, every pointer NULL and
      * every count 0 when the pack has none. */
     const sw_pack_seam *seam_header;             /* NULL when absent */

@@ -54,7 +54,7 @@ void sw_pack_placed_counts(const sw_pack_prototype *prototypes, const sw_pack_in
  * to a level): their indices are left as they are. */
 static int shared_space(int s, int share_levels)
 {
-    if (share_levels && s == SW_SPACE_LEVEL_VERTICES)
+    if (share_levels && (s == SW_SPACE_LEVEL_VERTICES || s == SW_SPACE_PART_LEVEL_VERTICES))
         return 1;
     return s == SW_SPACE_TRIM_LOOPS || s == SW_SPACE_TRIM_CURVES || s == SW_SPACE_TRIM_DATA ||
            s == SW_SPACE_TRIM_MASKS || s == SW_SPACE_LEVEL_INDICES || s == SW_SPACE_LEVEL_CHAINS ||
@@ -92,7 +92,7 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int share_levels, uint
     for (int a = 0; a < A_COUNT; a++)
         n[a] = counts[a], size[a] = bytes[a];
     if (share_levels)
-        n[A_LEVEL_VERTICES] = 0;
+        n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0;
 }
 
 static uint64_t expand_bytes(const uint64_t counts[SW_SPACE_COUNT], int share_levels)
@@ -163,7 +163,7 @@ typedef struct placed {
     void *a[A_COUNT];
     uint64_t n[A_COUNT];
     uint64_t at[SW_SPACE_COUNT];   /* records written so far per space */
-    int share_levels;              /* the static levels' vertices stay the pack's */
+    int share_levels;              /* the static and part levels' vertices stay the pack's */
 } placed;
 
 static sw_status take_arrays(placed *d, const uint64_t counts[SW_SPACE_COUNT], sw_arena *arena,
@@ -337,10 +337,11 @@ static void place_levels(const sw_pack *pack, placed *d, const sw_pack_prototype
         sw_pack_move_indices(m, SW_SPACE_PIECES, pl->piece_of + p->first[SW_SPACE_SURFACES],
                              p->count[SW_SPACE_SURFACES],
                              AT(d, A_PIECE_OF, uint32_t, SW_SPACE_SURFACES));
-        sw_pack_move_level_vertices(m, pl->vertices + p->first[SW_SPACE_PART_LEVEL_VERTICES],
-                                    p->count[SW_SPACE_PART_LEVEL_VERTICES],
-                                    AT(d, A_PL_VERTICES, sw_level_vertex,
-                                       SW_SPACE_PART_LEVEL_VERTICES));
+        if (!d->share_levels)
+            sw_pack_move_level_vertices(m, pl->vertices + p->first[SW_SPACE_PART_LEVEL_VERTICES],
+                                        p->count[SW_SPACE_PART_LEVEL_VERTICES],
+                                        AT(d, A_PL_VERTICES, sw_level_vertex,
+                                           SW_SPACE_PART_LEVEL_VERTICES));
     }
 }
 
@@ -386,6 +387,7 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
     out->meta = d->a[A_META];
     out->parts = d->a[A_PARTS];
     out->part_transforms = d->a[A_TRANSFORMS];
+    out->level_vertices_local = d->share_levels;
     out->patches = d->a[A_PATCHES];
     out->control = d->a[A_CONTROL];
     out->adjacency = d->a[A_ADJACENCY];
@@ -415,7 +417,6 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
         out->levels.level_count = (uint32_t)d->n[A_LEVEL_RECORDS];
         out->levels.vertex_count = d->share_levels ? pack->levels.vertex_count
                                                    : (uint32_t)d->n[A_LEVEL_VERTICES];
-        out->level_vertices_local = d->share_levels;
         out->levels.surface_count = surfaces;
     }
     if (pack->supers.supers) {
@@ -428,9 +429,11 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
         out->part_levels.levels = d->a[A_PART_LEVELS];
         out->part_levels.piece_levels = d->a[A_PIECE_LEVELS];
         out->part_levels.piece_of = d->a[A_PIECE_OF];
-        out->part_levels.vertices = d->a[A_PL_VERTICES];
+        out->part_levels.vertices = d->share_levels ? pack->part_levels.vertices
+                                                    : d->a[A_PL_VERTICES];
         out->part_levels.level_count = (uint32_t)d->n[A_PART_LEVELS];
-        out->part_levels.vertex_count = (uint32_t)d->n[A_PL_VERTICES];
+        out->part_levels.vertex_count = d->share_levels ? pack->part_levels.vertex_count
+                                                        : (uint32_t)d->n[A_PL_VERTICES];
         out->part_levels.piece_count = (uint32_t)(d->n[A_PIECE_LEVELS] - 1);
         out->part_levels.surface_count = surfaces;
     }

@@ -13,7 +13,8 @@
  * them with the prototypes instead of copying them.
  *
  * This expansion copies every instance's positions (the runtime's shares
- * the static levels' vertices): memory grows with the instance count. It
+ * the static and part levels' vertices): memory grows with the instance
+ * count. It
  * is the step before a walk that keeps per instance only what the view
  * needs. The same moving of a run of records, without a
  * transform, joins packs built apart (sw_pack_block.h). */
@@ -76,13 +77,15 @@ void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out);
  * short of sw_pack_expand_bytes. */
 sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_error *err);
 
-/* The same as the runtime holds it: the static levels' vertices are not
- * copied per instance but shared with the prototypes, in their frames
- * (out->level_vertices_local = 1; each level's first_vertex indexes the
- * pack's own LEVEL_VERTICES): whoever reads them places a surface's with
- * its part's transform (out->part_transforms), as the stand-ins are made
- * (firmware/walk/visibility/sw_seam_standin.c). A pack without instances
- * is copied as it is, its vertices placed already. */
+/* The same as the runtime holds it: the static and part levels' vertices
+ * are not copied per instance but shared with the prototypes, in their
+ * frames (out->level_vertices_local = 1; each level's first_vertex indexes
+ * the pack's own LEVEL_VERTICES or PART_LEVEL_VERTICES): whoever reads them
+ * places a surface's or a piece's with its part's transform
+ * (out->part_transforms), as the stand-ins are made
+ * (firmware/walk/visibility/sw_seam_standin.c) and the part levels drawn
+ * (the GL thread's model matrix). A pack without instances is copied as
+ * it is, its vertices placed already. */
 sw_status sw_pack_expand_shared(const sw_pack *pack, sw_arena *arena, sw_pack *out,
                                 sw_error *err);
 

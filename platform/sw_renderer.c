@@ -8,6 +8,7 @@
 #include <GLES2/gl2.h>
 #include <assert.h>
 #include <stddef.h>
+#include <string.h>
 
 /* Attribute slots are bound by name before linking (kmscube does the same), so
  * the vertex layout does not depend on the linker's choice. */
@@ -196,6 +197,21 @@ void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float 
     glUseProgram(r->program);
     glUniformMatrix4fv(r->u_model_view, 1, GL_FALSE, model_view);
     glUniformMatrix4fv(r->u_projection, 1, GL_FALSE, projection);
+    memcpy(r->view, model_view, sizeof r->view);
+}
+
+void sw_renderer_set_model(sw_renderer *r, const float model[16])
+{
+    float mv[16];
+    for (int c = 0; c < 4; c++)
+        for (int row = 0; row < 4; row++) {
+            double x = 0;
+            for (int k = 0; model && k < 4; k++)
+                x += (double)r->view[4 * k + row] * model[4 * c + k];
+            mv[4 * c + row] = model ? (float)x : r->view[4 * c + row];
+        }
+    glUseProgram(r->program);
+    glUniformMatrix4fv(r->u_model_view, 1, GL_FALSE, mv);
 }
 
 void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3])

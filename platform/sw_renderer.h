@@ -20,6 +20,7 @@ typedef struct sw_renderer {
     uint32_t max_vertices, max_indices;
     uint64_t draw_calls, triangles;   /* since init, for the stats */
     int back_hidden;                  /* sw_renderer_set_back_hidden */
+    float view[16];                   /* this frame's camera, for sw_renderer_set_model */
 } sw_renderer;
 
 /* Compiles the program and creates buffers for batches of up to max_vertices
@@ -33,6 +34,11 @@ void sw_renderer_destroy(sw_renderer *r);
 void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float clear_rgba[4],
                              const float model_view[16], const float projection[16]);
 void sw_renderer_set_color(sw_renderer *r, const float rgba[4]);
+
+/* Draws that follow place their vertices by model (column-major, a
+ * similarity: rotation, uniform scale, translation) before the frame's
+ * camera; NULL: the camera alone again. */
+void sw_renderer_set_model(sw_renderer *r, const float model[16]);
 
 /* With rgb, back faces (clockwise on screen) are drawn flat in rgb instead
  * of lit: in a colour of their own, the inside of a closed solid showing

@@ -15,6 +15,7 @@
 
 #include "pack_sample.h"
 #include "sw_pack_instances.h"
+#include "sw_pack_move.h"
 #include "sw_pack_merge.h"
 #include "sw_pack_sign.h"
 #include "sw_pack_signature.h"
@@ -206,6 +207,32 @@ static void test_shared_levels_place_as_copied(void)
             compared++;
         }
     SW_CHECK_MSG(compared > 0 && differ == 0, "%u of %u levels placed otherwise", differ, compared);
+    /* The part levels' too, placed by their piece's part's transform (the
+     * GL thread's model matrix does it on the unit). */
+    SW_CHECK(shared.part_levels.vertices == pack.part_levels.vertices &&
+             shared.part_levels.level_count == whole.part_levels.level_count);
+    compared = differ = 0;
+    for (uint32_t s = 0; s < shared.surface_count; s++) {
+        uint32_t g = shared.part_levels.piece_of[s], part = shared.surfaces[s].part;
+        for (uint32_t k = shared.part_levels.piece_levels[g];
+             k < shared.part_levels.piece_levels[g + 1]; k++) {
+            const sw_part_level *ls = &shared.part_levels.levels[k];
+            const sw_part_level *lw = &whole.part_levels.levels[k];
+            if (ls->vertex_count > 256)
+                continue;
+            const float *t = shared.part_transforms + 16 * (size_t)part;
+            const sw_pack_move place = { .transform = t, .scale = sw_instance_scale(t) };
+            sw_pack_move_level_vertices(&place, shared.part_levels.vertices + ls->first_vertex,
+                                        ls->vertex_count, out);
+            for (uint32_t v = 0; v < ls->vertex_count; v++)
+                for (int c = 0; c < 3; c++)
+                    differ += fabsf(out[v].p[c] - whole.part_levels.vertices[lw->first_vertex + v].p[c]) >
+                              1e-6f * (1 + fabsf(out[v].p[c]));
+            compared++;
+        }
+    }
+    SW_CHECK_MSG(compared > 0 && differ == 0, "%u coordinates of %u part levels placed otherwise",
+                 differ, compared);
     free(a);
     free(b);
     free(bytes);

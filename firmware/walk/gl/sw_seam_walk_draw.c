@@ -45,8 +45,16 @@ static void draw_item(const sw_seam_walk *w, const sw_seam_draw_item *it, sw_ren
 {
     const float *rgba = w->pack->parts[it->part].color;
     if (it->part_level) {   /* a whole part, from P's resident buffers */
+        /* Shared with its prototype (sw_pack_expand_shared): placed by its
+         * part's transform here, the camera alone again after. */
+        const float *place = w->pack->level_vertices_local
+                                 ? w->pack->part_transforms + 16 * (size_t)it->part : NULL;
+        if (place)
+            sw_renderer_set_model(r, place);
         sw_gl_pool_draw_resident(pool, r, rgba, it->first_vertex, it->first_index,
                                  it->index_count);
+        if (place)
+            sw_renderer_set_model(r, NULL);
         return;
     }
     const uint16_t *idx = w->cache.index_data + it->first_index;
