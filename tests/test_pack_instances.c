@@ -97,16 +97,24 @@ static sw_pack_contents contents_of(const sw_pack *p)
         .part_levels = &p->part_levels };
 }
 
+/* The sample placed by inst (PLACED of them), opened from its bytes
+ * (*bytes: free them after the pack). */
+static void open_placed(const sw_pack_instance *inst, uint8_t **bytes, sw_pack *pack)
+{
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(placed_sample(inst, PLACED, bytes, &size, &err) == SW_OK, "%s", err.message);
+    SW_CHECK_MSG(sw_pack_open_memory(*bytes, size, pack, &err) == SW_OK, "%s", err.message);
+}
+
 static void test_merge_expand_and_read_back(void)
 {
     sw_pack_instance inst[PLACED];
     three(inst);
     uint8_t *bytes = NULL;
-    size_t size = 0;
     sw_error err = { 0 };
-    SW_CHECK_MSG(placed_sample(inst, PLACED, &bytes, &size, &err) == SW_OK, "%s", err.message);
     sw_pack pack;
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    open_placed(inst, &bytes, &pack);
     SW_CHECK(pack.header->version == SW_PACK_VERSION_INSTANCED);
     SW_CHECK(pack.prototype_count == 2 && pack.instance_count == PLACED);
     SW_CHECK(pack.meta->part_count == 4 && pack.surface_count == 4);
@@ -160,22 +168,18 @@ static void test_merge_expand_and_read_back(void)
     free(bytes);
 }
 
-/* Placed at the identity, a prototype's copy is its records, moved in the
- * index spaces only. */
-/* The runtime's expansion shares the static levels' vertices with the
- * prototypes, and places them as the stand-ins read them
- * (sw_pack_level_vertices): the same floats as the tools' expansion
- * copies; it takes less arena. */
+/* The runtime's expansion shares the static and part levels' vertices
+ * with the prototypes, and places them as the stand-ins and the GL thread
+ * read them (sw_pack_level_vertices, the part's transform): the same
+ * floats as the tools' expansion copies; it takes less arena. */
 static void test_shared_levels_place_as_copied(void)
 {
     sw_pack_instance inst[PLACED];
     three(inst);
     uint8_t *bytes = NULL;
-    size_t size = 0;
     sw_error err = { 0 };
-    SW_CHECK_MSG(placed_sample(inst, PLACED, &bytes, &size, &err) == SW_OK, "%s", err.message);
     sw_pack pack;
-    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    open_placed(inst, &bytes, &pack);
     SW_CHECK(pack.levels.level_count > 0 && pack.levels.vertex_count > 0);
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack.prototypes, pack.instances, pack.instance_count, counts);
@@ -238,6 +242,8 @@ static void test_shared_levels_place_as_copied(void)
     free(bytes);
 }
 
+/* Placed at the identity, a prototype's copy is its records, moved in the
+ * index spaces only. */
 static void test_identity_is_a_copy(void)
 {
     sw_pack_instance inst[2] = { instance(0, 0, 1, 0, "a"), instance(1, 0, 1, 0, "b") };
