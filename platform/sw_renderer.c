@@ -203,15 +203,15 @@ void sw_renderer_begin_frame(sw_renderer *r, int width, int height, const float 
 void sw_renderer_set_model(sw_renderer *r, const float model[16])
 {
     float mv[16];
-    for (int c = 0; c < 4; c++)
+    for (int c = 0; model && c < 4; c++)
         for (int row = 0; row < 4; row++) {
             double x = 0;
-            for (int k = 0; model && k < 4; k++)
+            for (int k = 0; k < 4; k++)
                 x += (double)r->view[4 * k + row] * model[4 * c + k];
-            mv[4 * c + row] = model ? (float)x : r->view[4 * c + row];
+            mv[4 * c + row] = (float)x;
         }
     glUseProgram(r->program);
-    glUniformMatrix4fv(r->u_model_view, 1, GL_FALSE, mv);
+    glUniformMatrix4fv(r->u_model_view, 1, GL_FALSE, model ? mv : r->view);
 }
 
 void sw_renderer_set_back_color(sw_renderer *r, const float rgb[3])

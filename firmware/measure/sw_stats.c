@@ -447,7 +447,8 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
     fprintf(f, "  \"seam\": {\"active_vertices_min\": %u, \"active_vertices_max\": %u, "
                    "\"surfaces_vanished_max\": %u, \"surfaces_failed_max\": %u, "
                    "\"surfaces_holes_filled_max\": %u, \"surfaces_untangled_max\": %u, "
-                   "\"surfaces_clamped_max\": %u, \"crossings_max\": %llu, \"arena_bytes\": %llu, \"arena_peak_bytes\": %llu, "
+                   "\"surfaces_clamped_max\": %u, \"crossings_max\": %llu, "
+                   "\"arena_bytes\": %llu, \"arena_peak_bytes\": %llu, "
                    "\"sewing_offset_px_max\": %.5f, \"error_px_beyond_sewing_max\": %.5f},\n",
                 s->seam_active_min, s->seam_active_max, s->surfaces_vanished_max,
                 s->surfaces_failed_max, s->surfaces_holes_filled_max, s->surfaces_untangled_max,
