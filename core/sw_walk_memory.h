@@ -19,14 +19,17 @@
 #define SW_WALK_INDICES (6u * 65536u)
 
 /* The cache's pools: vertices (16 bytes as drawn, 8 of (u, v)) and six
- * indices a vertex (12 bytes), the same again in GL buffers, sized by the
- * pack: 32 vertices a patch, a power of two from 2^19 to 2^22 (the teaset
- * and the generated 2,068-face courtyard get 2^19, 18 MiB: at 2^17 the
- * courtyard's close views ran out and refused surfaces; the 40,000-patch
- * showroom gets 2^21, 72 MiB, where 2^19 ran out with 10,600 surfaces in
- * view: 423,000 triangles, blocks rounded to powers of two). */
+ * indices a vertex (12 bytes), the same again in GL buffers. They hold the
+ * meshes a frame draws, the batch replacing some of them, and meshes out of
+ * view kept until the room is needed (evicted least recently drawn first),
+ * so they are sized by what a frame draws, not by the scene: 16 vertices a
+ * patch as a power of two, from 2^19 (below it a courtyard's close views
+ * refused surfaces) to 2^21, about three times the blocks the busiest
+ * frames of the generated showrooms draw (docs/perf/2026-12-07-cache.md).
+ * The walk's stats give each pool's fill (cache.pool in docs/stats.md). */
 #define SW_WALK_CACHE_MIN (1u << 19)
-#define SW_WALK_CACHE_MAX (1u << 22)
+#define SW_WALK_CACHE_MAX (1u << 21)
+#define SW_WALK_CACHE_PER_PATCH 16u
 uint32_t sw_walk_cache_vertices(const sw_seam_graph *g, const sw_pack_surface *surfaces);
 uint32_t sw_walk_cache_vertices_for(uint64_t patches);
 static inline uint32_t sw_walk_cache_indices(uint32_t vertices) { return 6u * vertices; }

@@ -13,7 +13,7 @@ sewn border is off a face by up to the gap whatever the level of detail:
 the walk measures that offset once per surface and reports it); error_px.max
 itself may exceed the bound by no more than that offset. The cache's fields
 are there and consistent (no more surfaces re-tessellated in a frame than
-the pack has). The seams as drawn (firmware/walk/gl/sw_seam_drawn.h): every measured
+the pack has; the drawn meshes' blocks within those in use, within the pools). The seams as drawn (firmware/walk/gl/sw_seam_drawn.h): every measured
 frame checked, T-vertices reported, no gap where the model has no free
 border. The depth buffer's bits (16 at least) and the largest far /
 near of a frame are reported."""
@@ -80,6 +80,15 @@ def main():
                    "cache fields: %s surfaces re-tessellated in all, at most %s a frame, %s "
                    "frames without" % (retess.get("total"), retess.get("max"),
                                        cache.get("frames_without_retess"))))
+    # The pools' fill: the drawn meshes' blocks are among those in use,
+    # within the capacity, and a walk that drew draws from them.
+    pool = cache.get("pool", {})
+    checks.append((all(0 < pool.get("drawn_%s_max" % k, 0) <= pool.get("used_%s_max" % k, 0)
+                       <= pool.get(k, 0) for k in ("vertices", "indices")),
+                   "cache pools: vertices %s drawn, %s in use of %s; indices %s, %s of %s" % (
+                       pool.get("drawn_vertices_max"), pool.get("used_vertices_max"),
+                       pool.get("vertices"), pool.get("drawn_indices_max"),
+                       pool.get("used_indices_max"), pool.get("indices"))))
     drawn = stats.get("seam_drawn", {})
     # T-vertices are reported, not failed: the fill fans close the
     # tessellator's crossings, but a file's own T-junctions the sewing

@@ -117,6 +117,31 @@ static void test_frames_past_capacity_keep_the_last_ones(void)
         SW_CHECK_MSG(strstr(buf, fields[i]) != NULL, "missing %s in\n%s", fields[i], buf);
 }
 
+/* The cache pools' fill: the most of each figure over the frames, written
+ * with the capacity. */
+static void test_cache_fill_keeps_the_most(void)
+{
+    sw_arena a;
+    sw_arena_init(&a, block, sizeof block);
+    sw_stats s;
+    SW_CHECK(sw_stats_init(&s, &a, 4, 0.5, NULL) == SW_OK);
+    s.pool_vertices = 1024, s.pool_indices = 6144;
+    const uint64_t fill[3][4] = { { 500, 2000, 100, 400 }, { 300, 3000, 200, 300 },
+                                  { 900, 1000, 50, 800 } };
+    for (int i = 0; i < 3; i++) {
+        sw_stats_add_cache_fill(&s, fill[i][0], fill[i][1], fill[i][2], fill[i][3]);
+        sw_stats_add_frame(&s, 10.0, 100, 1);
+    }
+    char buf[8192] = "";
+    FILE *f = fmemopen(buf, sizeof buf - 1, "w");
+    SW_CHECK(sw_stats_write_json(&s, f, &a, NULL) == SW_OK);
+    fclose(f);
+    const char *want = "\"pool\": {\"vertices\": 1024, \"indices\": 6144, \"used_vertices_max\": 900, "
+                       "\"used_indices_max\": 3000, \"drawn_vertices_max\": 200, "
+                       "\"drawn_indices_max\": 800}";
+    SW_CHECK_MSG(strstr(buf, want) != NULL, "missing %s in\n%s", want, buf);
+}
+
 static void test_rss_fields_are_read_from_status_text(void)
 {
     const char text[] = "Name:\tseamwalk\nVmHWM:\t  123456 kB\nVmRSS:\t   98765 kB\n"
@@ -136,6 +161,7 @@ static void test_rss_fields_are_read_from_status_text(void)
 int main(void)
 {
     SW_RUN(test_percentiles_are_nearest_rank);
+    SW_RUN(test_cache_fill_keeps_the_most);
     SW_RUN(test_error_p99_never_understates);
     SW_RUN(test_behind_samples_are_kept_apart);
     SW_RUN(test_json_has_every_contract_field);

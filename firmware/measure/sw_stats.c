@@ -86,6 +86,17 @@ void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles
     s->frames_without_retess += surfaces == 0;
 }
 
+static uint64_t max_u64(uint64_t a, uint64_t b) { return a > b ? a : b; }
+
+void sw_stats_add_cache_fill(sw_stats *s, uint64_t used_vertices, uint64_t used_indices,
+                             uint64_t drawn_vertices, uint64_t drawn_indices)
+{
+    s->used_vertices_max = max_u64(s->used_vertices_max, used_vertices);
+    s->used_indices_max = max_u64(s->used_indices_max, used_indices);
+    s->drawn_vertices_max = max_u64(s->drawn_vertices_max, drawn_vertices);
+    s->drawn_indices_max = max_u64(s->drawn_indices_max, drawn_indices);
+}
+
 void sw_stats_add_cull_frame(sw_stats *s, uint64_t box_tests, uint32_t cone_culled,
                              double cull_ms)
 {
@@ -232,12 +243,18 @@ static sw_status write_cache(FILE *f, const sw_stats *s, sw_arena *scratch)
                "\"frames_without_retess\": %d, \"retess_triangles\": {\"max\": %llu, "
                "\"total\": %llu}, \"upload_bytes\": {\"max\": %llu, \"total\": %llu}, "
                "\"evictions\": %llu, \"tess_ms\": {\"p50\": %.3f, \"max\": %.3f}, "
-               "\"without_tess_ms\": {\"p50\": %.3f, \"p99\": %.3f}},\n",
+               "\"without_tess_ms\": {\"p50\": %.3f, \"p99\": %.3f}, "
+               "\"pool\": {\"vertices\": %llu, \"indices\": %llu, \"used_vertices_max\": %llu, "
+               "\"used_indices_max\": %llu, \"drawn_vertices_max\": %llu, "
+               "\"drawn_indices_max\": %llu}},\n",
             c.p50, c.max, (unsigned long long)s->retess_total, s->frames_without_retess,
             (unsigned long long)s->retess_triangles_max,
             (unsigned long long)s->retess_triangles_total,
             (unsigned long long)s->upload_bytes_max, (unsigned long long)s->upload_bytes_total,
-            (unsigned long long)s->evictions, t.p50, t.max, d.p50, d.p99);
+            (unsigned long long)s->evictions, t.p50, t.max, d.p50, d.p99,
+            (unsigned long long)s->pool_vertices, (unsigned long long)s->pool_indices,
+            (unsigned long long)s->used_vertices_max, (unsigned long long)s->used_indices_max,
+            (unsigned long long)s->drawn_vertices_max, (unsigned long long)s->drawn_indices_max);
     return SW_OK;
 }
 

@@ -72,6 +72,10 @@ typedef struct sw_stats {
     float *tess_ms;              /* per frame: of frame_ms, tessellating and uploading */
     uint64_t retess_total, retess_triangles_total, retess_triangles_max;
     uint64_t upload_bytes_total, upload_bytes_max, evictions;
+    /* Its pools, in vertices and indices: capacity, the most in use when a
+     * frame was planned, and the most the drawn meshes' blocks held. */
+    uint64_t pool_vertices, pool_indices;
+    uint64_t used_vertices_max, used_indices_max, drawn_vertices_max, drawn_indices_max;
     int frames_without_retess;
 
     /* Culling (core/sw_cull_tree.h, sw_normal_cone.h), per frame. */
@@ -195,6 +199,10 @@ void sw_stats_add_visibility_frame(sw_stats *s, double visibility_ms, double pla
 /* The cache's work in the frame sw_stats_add_frame records next. */
 void sw_stats_add_cache_frame(sw_stats *s, uint32_t surfaces, uint64_t triangles,
                               uint64_t upload_bytes, uint32_t evictions, double tess_ms);
+
+/* The cache's pools in a frame: in use, and held by the drawn meshes. */
+void sw_stats_add_cache_fill(sw_stats *s, uint64_t used_vertices, uint64_t used_indices,
+                             uint64_t drawn_vertices, uint64_t drawn_indices);
 
 /* The culling's work in the frame sw_stats_add_frame records next. */
 void sw_stats_add_cull_frame(sw_stats *s, uint64_t box_tests, uint32_t cone_culled,

@@ -141,6 +141,8 @@ static sw_status seam_frame(sw_program *rt, int measuring, uint64_t *triangles, 
         s->seam_crossings_max = f.crossings;
     sw_stats_add_cache_frame(s, f.retessellated, f.retess_triangles, f.upload_bytes, f.evicted,
                              f.tess_ms);
+    sw_stats_add_cache_fill(s, f.cache_used_vertices, f.cache_used_indices,
+                            f.cache_drawn_vertices, f.cache_drawn_indices);
     sw_stats_add_cull_frame(s, f.cull_box_tests, f.cone_culled, f.cull_ms);
     if (rt->workers)
         sw_stats_add_threads_frame(s, f.waiting_surfaces, f.behind_surfaces, f.frames_behind,

@@ -382,6 +382,7 @@ sw_status sw_program_start_pool(sw_program *rt, sw_error *err)
 {
     double mark_s = sw_program_now_s();
     uint32_t vertices = rt->seam.cache.vertices, indices = rt->seam.cache.indices;
+    rt->stats.pool_vertices = vertices, rt->stats.pool_indices = indices;
     sw_status st = sw_gl_pool_init(&rt->pool, vertices, indices, (uint32_t)rt->opt.batch_tris,
                                    err);
     if (st != SW_OK)

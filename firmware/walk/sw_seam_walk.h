@@ -130,6 +130,10 @@ typedef struct sw_seam_frame {
                                      were (sw_seam_surface.h) */
     uint32_t retessellated;       /* surfaces tessellated this frame */
     uint32_t evicted;             /* meshes the cache gave up for them */
+    uint64_t cache_drawn_vertices;/* the drawn meshes' blocks in the cache's pools, */
+    uint64_t cache_drawn_indices; /* rounded as the pools hand them out */
+    uint64_t cache_used_vertices; /* all blocks in use when the frame was planned */
+    uint64_t cache_used_indices;
     uint64_t retess_triangles;    /* triangles those made */
     uint64_t upload_bytes;        /* bytes written into the GL buffers */
     uint64_t triangles;           /* the tessellations', the fill fans not counted: */

@@ -117,6 +117,10 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
     sw_seam_plan_draw(plan, &item);
     e->last_frame = w->frame;   /* the epoch its blocks stay in use until (sw_handoff.h) */
     frame->drawn_surfaces++;
+    frame->cache_drawn_vertices += (uint64_t)SW_SEAM_CACHE_VERTEX_UNIT *
+                                   sw_buddy_block_units(&w->cache.vertex_pool, e->vertex_block);
+    frame->cache_drawn_indices += (uint64_t)SW_SEAM_CACHE_INDEX_UNIT *
+                                  sw_buddy_block_units(&w->cache.index_pool, e->index_block);
     frame->triangles += e->index_count / 3 - e->fill_triangles;
     frame->fill_triangles += e->fill_triangles;
     frame->crossings += e->crossings;
@@ -149,5 +153,11 @@ void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
             plan_surface(w, s, plan, frame);
     }
     sw_seam_walk_plan_parts(w, plan, frame);
+    uint32_t vertex_units = w->cache.vertex_pool.used_units;
+    uint32_t index_units = w->cache.index_pool.used_units;
+    if (w->workers)
+        sw_seam_workers_pool_use(w->workers, &vertex_units, &index_units);
+    frame->cache_used_vertices = (uint64_t)SW_SEAM_CACHE_VERTEX_UNIT * vertex_units;
+    frame->cache_used_indices = (uint64_t)SW_SEAM_CACHE_INDEX_UNIT * index_units;
     plan->depth_known = sw_seam_depth_range(w, view, &plan->nearest, &plan->farthest);
 }

@@ -51,6 +51,14 @@ int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam
     return ok;
 }
 
+void sw_seam_workers_pool_use(sw_seam_workers *p, uint32_t *vertex_units, uint32_t *index_units)
+{
+    pthread_mutex_lock(&p->alloc_lock);
+    *vertex_units = p->cache->vertex_pool.used_units;
+    *index_units = p->cache->index_pool.used_units;
+    pthread_mutex_unlock(&p->alloc_lock);
+}
+
 int sw_seam_workers_retire(sw_seam_workers *p, sw_retired r)
 {
     if (!sw_retire_ring_done(&p->retire, r.epoch))

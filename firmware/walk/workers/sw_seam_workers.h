@@ -102,6 +102,10 @@ int sw_seam_workers_push(sw_seam_workers *p, uint32_t s);
  * cache with: V's stand-ins. */
 int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e);
 
+/* The units the cache's pools have in use (retired blocks not yet given
+ * back included), read under alloc_lock. */
+void sw_seam_workers_pool_use(sw_seam_workers *p, uint32_t *vertex_units, uint32_t *index_units);
+
 /* Producer: a mesh given up, its blocks back to the pool at once when the
  * frame that last drew it has finished (under alloc_lock), else through
  * the retire ring; 0 when the ring is full. A mesh out of view for a while
