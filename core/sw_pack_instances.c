@@ -158,6 +158,19 @@ void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
         memset(out->walk, 0, sizeof out->walk);
 }
 
+int sw_runtime_pool_list(const sw_runtime_pools *p, const char *names[SW_RUNTIME_POOL_COUNT],
+                         uint64_t bytes[SW_RUNTIME_POOL_COUNT])
+{
+    const char *fixed[3] = { "pack", "patch state", "placed scene" };
+    const uint64_t sizes[3] = { p->pack, p->patch_state, p->placed };
+    int n = 0;
+    for (int i = 0; i < 3; i++)
+        names[n] = fixed[i], bytes[n++] = sizes[i];
+    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
+        names[n] = sw_walk_pool_names[i], bytes[n++] = p->walk[i];
+    return n;
+}
+
 /* The placed scene's arrays, taken from the arena. */
 typedef struct placed {
     void *a[A_COUNT];

@@ -70,6 +70,13 @@ typedef struct sw_runtime_pools {
 } sw_runtime_pools;
 void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out);
 
+/* Those pools as a list of names and bytes, in runtime_bytes' order (the
+ * pack, the patch state, the placed scene, then the walk's): returns
+ * SW_RUNTIME_POOL_COUNT. */
+enum { SW_RUNTIME_POOL_COUNT = 3 + SW_WALK_POOL_COUNT };
+int sw_runtime_pool_list(const sw_runtime_pools *pools, const char *names[SW_RUNTIME_POOL_COUNT],
+                         uint64_t bytes[SW_RUNTIME_POOL_COUNT]);
+
 /* The placed scene of a validated pack as a view in out: everything the
  * walk reads (the header, the section table, viewpoints, orientation and
  * notes stay the pack's). A pack without instances is copied as it is

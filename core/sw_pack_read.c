@@ -701,9 +701,12 @@ static sw_status map_levels(const uint8_t *data, const int32_t index[], sw_pack 
 }
 
 /* After the seam sections are validated: the walk's size follows their
- * indices. A pack whose graph this reader skips (the seam sections under
- * types it does not know) may count a walk it cannot size: then the value
- * must cover the pack at least. */
+ * indices. The header must hold at least what this reader's runtime takes
+ * (the runtime sizes its arena from it before reading the pack); more is
+ * a pack written when the runtime took more, which still runs: a unit
+ * whose firmware is updated keeps walking the packs it holds. A pack whose
+ * graph this reader skips (the seam sections under types it does not know)
+ * may count a walk it cannot size: then the value must cover the pack. */
 static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
 {
     /* A placed pack's is the placed scene's: sw_pack_map_instances checks it
@@ -718,11 +721,12 @@ static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
     uint64_t expected = sw_pack_runtime_bytes(pack->header->total_size, pack->meta->patch_count,
                                               walk);
     uint64_t got = pack->header->runtime_bytes;
-    if (pack->seam_header ? got != expected : got < expected)
+    if (got < expected)
         return sw_error_set(err, SW_ERR_FORMAT,
-                            "header.runtime_bytes: %llu, expected %llu for %llu bytes, %u "
-                            "patches and a walk of %llu bytes (a pack from an older "
-                            "seamwalk-pack: build it again)",
+                            "header.runtime_bytes: %llu, expected at least %llu for %llu "
+                            "bytes, %u "
+                            "patches and a walk of %llu bytes (its seamwalk-pack's runtime "
+                            "took less than this one: build it again)",
                             (unsigned long long)pack->header->runtime_bytes,
                             (unsigned long long)expected,
                             (unsigned long long)pack->header->total_size,

@@ -418,10 +418,10 @@ static sw_status check_placed(const sw_pack *pack, sw_error *err)
     uint64_t want = sw_pack_instanced_runtime_bytes(pack->header->total_size,
                                                     pack->seam_header ? &pack->seam : NULL,
                                                     pack->surfaces, counts);
-    if (pack->header->runtime_bytes != want)
-        return sw_error_set(err, SW_ERR_FORMAT, "header.runtime_bytes: %llu, expected %llu for "
-                            "the placed scene of %u instances (a pack from an older "
-                            "seamwalk-pack: build it again)",
+    if (pack->header->runtime_bytes < want)
+        return sw_error_set(err, SW_ERR_FORMAT, "header.runtime_bytes: %llu, expected at least "
+                            "%llu for the placed scene of %u instances (its seamwalk-pack's "
+                            "runtime took less than this one: build it again)",
                             (unsigned long long)pack->header->runtime_bytes,
                             (unsigned long long)want, (unsigned)pack->instance_count);
     return SW_OK;

@@ -120,6 +120,28 @@ static void test_runtime_bytes_formula(void)
     SW_CHECK(sw_pack_runtime_bytes(100, 1, UINT64_MAX) == UINT64_MAX);
 }
 
+/* The header's runtime_bytes: less than the reader's formula is refused
+ * (the runtime would size its arena short), more opens (a pack written when
+ * the runtime took more keeps running after a firmware update). */
+static void test_runtime_bytes_at_least_the_formula(void)
+{
+    sample s;
+    make_sample(&s);
+    size_t size = 0;
+    uint8_t *bytes = serialize_sample(&s, &size);
+    uint64_t exact = header_of(bytes)->runtime_bytes;
+    header_of(bytes)->runtime_bytes = exact - 1;
+    reseal(bytes);
+    sw_error err;
+    SW_CHECK(open_bytes(bytes, size, &err) == SW_ERR_FORMAT);
+    SW_CHECK_MSG(strstr(err.message, "header.runtime_bytes: ") &&
+                 strstr(err.message, "expected at least"), "%s", err.message);
+    header_of(bytes)->runtime_bytes = exact + 4096;
+    reseal(bytes);
+    SW_CHECK_MSG(open_bytes(bytes, size, &err) == SW_OK, "%s", err.message);
+    free(bytes);
+}
+
 static void test_section_type_names(void)
 {
     SW_CHECK(strcmp(sw_section_type_name(SW_SECTION_META), "META") == 0);
@@ -585,6 +607,7 @@ int main(void)
     SW_RUN(test_round_trip_keeps_optional_sections);
     SW_RUN(test_bezier_only_pack_has_no_optional_views);
     SW_RUN(test_runtime_bytes_formula);
+    SW_RUN(test_runtime_bytes_at_least_the_formula);
     SW_RUN(test_section_type_names);
     SW_RUN(test_every_truncation_is_rejected);
     SW_RUN(test_flipped_byte_in_each_section_names_it);

@@ -375,7 +375,7 @@ static void huge_error(uint8_t *b)
     similarity(instances_at(b)[1].transform, 0.7, 1e9, 10, 2, -3);
 }
 static void loose(uint8_t *b) { prototypes_at(b)[0].seam_tolerance *= 2; }
-static void runtime_bytes(uint8_t *b) { header_of(b)->runtime_bytes += 64; }
+static void runtime_bytes(uint8_t *b) { header_of(b)->runtime_bytes -= 64; }
 static void old_version(uint8_t *b) { header_of(b)->version = SW_PACK_VERSION; }
 static void no_instances(uint8_t *b)
 {
@@ -400,9 +400,35 @@ static void test_refused(void)
     expect_refused(cross_reference, "first_vertex of prototype 1's levels record", "cross");
     expect_refused(loose, "PROTOTYPES[0]: seam_tolerance", "tolerance");
     expect_refused(huge_error, "INSTANCES[1]: scales an error of", "error scaled");
-    expect_refused(runtime_bytes, "header.runtime_bytes", "runtime bytes");
+    expect_refused(runtime_bytes, "header.runtime_bytes: ", "runtime bytes short");
     expect_refused(old_version, "header.version: 1 with PROTOTYPES and INSTANCES", "version");
     expect_refused(no_instances, "PROTOTYPES without INSTANCES", "alone");
+}
+
+/* A header asking more than this runtime takes (a pack written when the
+ * runtime took more) still opens, and the runtime's expansion fits in it. */
+static void test_runtime_bytes_more(void)
+{
+    sw_pack_instance inst[PLACED];
+    three(inst);
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    sw_error err = { 0 };
+    SW_CHECK(placed_sample(inst, PLACED, &bytes, &size, &err) == SW_OK);
+    uint64_t exact = header_of(bytes)->runtime_bytes;
+    header_of(bytes)->runtime_bytes = exact + (1u << 20);
+    reseal_all(bytes);
+    sw_pack pack;
+    SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
+    sw_runtime_pools pools;
+    sw_pack_runtime_pools(&pack, &pools);
+    const char *names[SW_RUNTIME_POOL_COUNT];
+    uint64_t pool[SW_RUNTIME_POOL_COUNT], sum = 0;
+    for (int i = 0, n = sw_runtime_pool_list(&pools, names, pool); i < n; i++)
+        sum += pool[i];
+    SW_CHECK_MSG(sum == exact, "pools %llu, the exact runtime_bytes %llu",
+                 (unsigned long long)sum, (unsigned long long)exact);
+    free(bytes);
 }
 
 /* Inputs the merge cannot join are named. */
@@ -432,6 +458,7 @@ int main(void)
     SW_RUN(test_identity_is_a_copy);
     SW_RUN(test_signed_placed_pack);
     SW_RUN(test_refused);
+    SW_RUN(test_runtime_bytes_more);
     SW_RUN(test_merge_refuses);
     return sw_test_finish();
 }

@@ -378,32 +378,33 @@ static void pool_list(const sw_pack *pack, const char *names[], uint64_t bytes[]
 {
     sw_runtime_pools p;
     sw_pack_runtime_pools(pack, &p);
-    const char *fixed[3] = { "pack", "patch state", "placed scene" };
-    const uint64_t sizes[3] = { p.pack, p.patch_state, p.placed };
-    *n = 0;
-    for (int i = 0; i < 3; i++)
-        names[*n] = fixed[i], bytes[(*n)++] = sizes[i];
-    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
-        names[*n] = sw_walk_pool_names[i], bytes[(*n)++] = p.walk[i];
+    *n = sw_runtime_pool_list(&p, names, bytes);
 }
 
 static void print_pools_text(FILE *out, const sw_pack *pack)
 {
-    const char *names[3 + SW_WALK_POOL_COUNT];
-    uint64_t bytes[3 + SW_WALK_POOL_COUNT];
+    const char *names[SW_RUNTIME_POOL_COUNT];
+    uint64_t bytes[SW_RUNTIME_POOL_COUNT];
     int n;
     pool_list(pack, names, bytes, &n);
     fprintf(out, "  %-16s %" PRIu64 " bytes (%.1f MiB), by pool:\n", "runtime memory",
             pack->header->runtime_bytes, pack->header->runtime_bytes / 1048576.0);
-    for (int i = 0; i < n; i++)
+    uint64_t sum = 0;
+    for (int i = 0; i < n; i++) {
         fprintf(out, "    %-16s %12" PRIu64 " bytes %8.1f MiB\n", names[i], bytes[i],
                 bytes[i] / 1048576.0);
+        sum += bytes[i];
+    }
+    if (pack->header->runtime_bytes > sum)   /* written when the runtime took more */
+        fprintf(out, "    %-16s %12" PRIu64 " bytes %8.1f MiB (the header asks more than this "
+                "seamwalk takes)\n", "beyond the pools", pack->header->runtime_bytes - sum,
+                (pack->header->runtime_bytes - sum) / 1048576.0);
 }
 
 static void print_pools_json(FILE *out, const sw_pack *pack)
 {
-    const char *names[3 + SW_WALK_POOL_COUNT];
-    uint64_t bytes[3 + SW_WALK_POOL_COUNT];
+    const char *names[SW_RUNTIME_POOL_COUNT];
+    uint64_t bytes[SW_RUNTIME_POOL_COUNT];
     int n;
     pool_list(pack, names, bytes, &n);
     fprintf(out, "  \"runtime_pools\": {");

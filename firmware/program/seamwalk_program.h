@@ -90,6 +90,13 @@ sw_status sw_program_start(sw_program *rt, sw_error *err);
  * them overlaps V's planning of that frame. */
 sw_status sw_program_start_pool(sw_program *rt, sw_error *err);
 
+/* The refusal of a pack whose arena (need bytes, from its header h) is
+ * more than --memory-mb: by how much, and the pack's largest pools
+ * (seamwalk_memory_short.c; the pack read again with check on its raw
+ * bytes, as the loader reads it). Always SW_ERR_NO_MEMORY. */
+sw_status sw_program_memory_short(const sw_program *rt, const sw_pack_header *h, double need,
+                                  sw_pack_raw_check check, void *user, sw_error *err);
+
 /* Ends the threads and gives back every block and GL object start took
  * (the display stays: main closes it). Safe after a failed start. */
 void sw_program_stop(sw_program *rt);

@@ -216,6 +216,13 @@ static sw_status init_seams(sw_program *rt, double *mark_s, sw_error *err)
     return st;
 }
 
+/* --store: a slot's signature, on its raw bytes, before any is parsed. */
+static sw_status check_slot(void *user, const uint8_t *bytes, size_t size, sw_error *err)
+{
+    const sw_program *rt = user;
+    return sw_boot_check_raw(&rt->boot, rt->loading_slot, bytes, size, err);
+}
+
 static sw_status size_arena(sw_program *rt, size_t *path_bytes, sw_error *err)
 {
     sw_pack_header h;
@@ -233,14 +240,10 @@ static sw_status size_arena(sw_program *rt, size_t *path_bytes, sw_error *err)
     /* Checked alone first so a huge header value cannot overflow the sum. */
     size_t need = (double)h.runtime_bytes > limit ? SIZE_MAX
                                                   : arena_bytes_needed(rt, &h, *path_bytes, keys);
-    if (need == SIZE_MAX)
-        return sw_error_set(err, SW_ERR_NO_MEMORY,
-                            "the pack alone needs %.1f MiB, more than --memory-mb %.1f",
-                            h.runtime_bytes / (1024.0 * 1024.0), rt->opt.memory_mb);
-    if ((double)need > limit)
-        return sw_error_set(err, SW_ERR_NO_MEMORY,
-                            "needs %.1f MiB of memory (%zu bytes), more than --memory-mb %.1f",
-                            need / (1024.0 * 1024.0), need, rt->opt.memory_mb);
+    if (need == SIZE_MAX || (double)need > limit)
+        return sw_program_memory_short(rt, &h, need == SIZE_MAX ? (double)h.runtime_bytes
+                                                                : (double)need,
+                                       rt->opt.store_dir ? check_slot : NULL, (void *)rt, err);
     rt->block = sw_heap_take_block(need);
     if (!rt->block)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the arena", need);
@@ -280,13 +283,6 @@ static long load_helpers(void)
 {
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     return cores > 5 ? 3 : cores > 2 ? cores - 2 : 1;
-}
-
-/* --store: a slot's signature, on its raw bytes, before any is parsed. */
-static sw_status check_slot(void *user, const uint8_t *bytes, size_t size, sw_error *err)
-{
-    const sw_program *rt = user;
-    return sw_boot_check_raw(&rt->boot, rt->loading_slot, bytes, size, err);
 }
 
 /* The loader's whole job, on its own thread: nothing here calls GL or
