@@ -166,12 +166,12 @@ sw_box sw_box_empty(void)
 
 void sw_box_add_point(sw_box *box, sw_vec3 p)
 {
-    box->min.x = fmin(box->min.x, p.x);
-    box->min.y = fmin(box->min.y, p.y);
-    box->min.z = fmin(box->min.z, p.z);
-    box->max.x = fmax(box->max.x, p.x);
-    box->max.y = fmax(box->max.y, p.y);
-    box->max.z = fmax(box->max.z, p.z);
+    box->min.x = sw_min(box->min.x, p.x);
+    box->min.y = sw_min(box->min.y, p.y);
+    box->min.z = sw_min(box->min.z, p.z);
+    box->max.x = sw_max(box->max.x, p.x);
+    box->max.y = sw_max(box->max.y, p.y);
+    box->max.z = sw_max(box->max.z, p.z);
 }
 
 void sw_box_add_box(sw_box *box, const sw_box *other)

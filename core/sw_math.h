@@ -21,6 +21,13 @@ typedef struct sw_frustum { sw_plane planes[6]; } sw_frustum;
 
 typedef enum sw_cull { SW_CULL_OUTSIDE = 0, SW_CULL_INTERSECTS = 1, SW_CULL_INSIDE = 2 } sw_cull;
 
+/* fmax and fmin inlined, with their answers (NaN: the other operand):
+ * GCC calls libm's for them unless told NaN cannot occur, which this code
+ * cannot be (it checks for NaN), and a pack build's error measures call
+ * them in their innermost loops. */
+static inline double sw_max(double a, double b) { return a >= b || b != b ? a : b; }
+static inline double sw_min(double a, double b) { return a <= b || b != b ? a : b; }
+
 sw_vec3 sw_v3(double x, double y, double z);
 sw_vec3 sw_v3_add(sw_vec3 a, sw_vec3 b);
 sw_vec3 sw_v3_sub(sw_vec3 a, sw_vec3 b);

@@ -15,13 +15,13 @@ static const sw_trim_patch *patch_at(const sw_trim_patch *patches, uint32_t n, d
     double best_out = INFINITY;
     for (uint32_t i = 0; i < n; i++) {
         const float *d = patches[i].domain;
-        double out = fmax(fmax(d[0] - u, u - d[1]), fmax(d[2] - v, v - d[3]));
+        double out = sw_max(sw_max(d[0] - u, u - d[1]), sw_max(d[2] - v, v - d[3]));
         if (out < best_out)
             best_out = out, best = &patches[i];
     }
     const float *d = best->domain;
-    *s = fmin(fmax((u - d[0]) / (d[1] - d[0]), 0.0), 1.0);
-    *t = fmin(fmax((v - d[2]) / (d[3] - d[2]), 0.0), 1.0);
+    *s = sw_min(sw_max((u - d[0]) / (d[1] - d[0]), 0.0), 1.0);
+    *t = sw_min(sw_max((v - d[2]) / (d[3] - d[2]), 0.0), 1.0);
     return best;
 }
 

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_math.h"
+
 struct sw_mesh_grid {
     const sw_mesh_view *mesh;
     double lo[3], cell;
@@ -22,7 +24,7 @@ static void triangle_box(const sw_mesh_view *m, uint32_t t, double lo[3], double
     for (int c = 0; c < 3; c++) {
         const float *p = m->positions + 3 * (size_t)m->indices[3 * (size_t)t + c];
         for (int k = 0; k < 3; k++)
-            lo[k] = fmin(lo[k], p[k]), hi[k] = fmax(hi[k], p[k]);
+            lo[k] = sw_min(lo[k], p[k]), hi[k] = sw_max(hi[k], p[k]);
     }
 }
 
@@ -265,9 +267,9 @@ static double ring_distance(const sw_mesh_grid *g, const double p[3], const int 
     double d = INFINITY;
     for (int a = 0; a < 3; a++) {
         if (c[a] - k >= 0)   /* the far side of cell c - k + 1 */
-            d = fmin(d, fmax(0, p[a] - (g->lo[a] + (c[a] - k + 1) * g->cell)));
+            d = sw_min(d, sw_max(0, p[a] - (g->lo[a] + (c[a] - k + 1) * g->cell)));
         if (c[a] + k < g->dim[a])
-            d = fmin(d, fmax(0, g->lo[a] + (c[a] + k) * g->cell - p[a]));
+            d = sw_min(d, sw_max(0, g->lo[a] + (c[a] + k) * g->cell - p[a]));
     }
     return d;
 }
@@ -334,7 +336,7 @@ double sw_mesh_grid_nearest(const sw_mesh_grid *g, const double p[3], sw_mesh_po
 static double farther(const sw_mesh_grid *g, const double p[3], double worst)
 {
     sw_mesh_point at;
-    return fmax(worst, nearest_within(g, p, worst, &at));
+    return sw_max(worst, nearest_within(g, p, worst, &at));
 }
 
 typedef struct within {
@@ -379,7 +381,7 @@ double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spa
         for (int j = 0; j < 3; j++) {
             double d[3] = { v[j][0] - v[(j + 1) % 3][0], v[j][1] - v[(j + 1) % 3][1],
                             v[j][2] - v[(j + 1) % 3][2] };
-            longest = fmax(longest, sqrt(dot3(d, d)));
+            longest = sw_max(longest, sqrt(dot3(d, d)));
         }
         int n = spacing > 0 ? (int)fmin(SW_MESH_DISTANCE_MAX_SIDE, ceil(longest / spacing)) : 1;
         if (n <= 1 && corner) {
