@@ -330,13 +330,32 @@ double sw_mesh_grid_nearest(const sw_mesh_grid *g, const double p[3], sw_mesh_po
     return nearest_within(g, p, -1, at);
 }
 
+/* The squared distance from p to triangle t of the grid's mesh. */
+static double distance2_to(const sw_mesh_grid *g, const double p[3], uint32_t t)
+{
+    const sw_mesh_view *m = g->mesh;
+    double v[3][3], w[3];
+    for (int j = 0; j < 3; j++)
+        for (int k = 0; k < 3; k++)
+            v[j][k] = m->positions[3 * (size_t)m->indices[3 * (size_t)t + j] + k];
+    return triangle_distance2(p, v[0], v[1], v[2], w);
+}
+
 /* max(worst, the distance from p to the grid's mesh), searching no further
  * once a triangle within worst is found: most points of a level lie closer
- * to its source than the largest distance found so far. */
-static double farther(const sw_mesh_grid *g, const double p[3], double worst)
+ * to its source than the largest distance found so far. *hint is the
+ * triangle that ended the last search (UINT32_MAX: none), tried first:
+ * points are measured in order along a mesh, so the last one's triangle
+ * is most often within worst of the next, and any triangle within worst
+ * gives the same answer. */
+static double farther(const sw_mesh_grid *g, const double p[3], double worst, uint32_t *hint)
 {
+    if (*hint != UINT32_MAX && distance2_to(g, p, *hint) <= worst * worst)
+        return worst;
     sw_mesh_point at;
-    return sw_max(worst, nearest_within(g, p, worst, &at));
+    double d = nearest_within(g, p, worst, &at);
+    *hint = at.triangle;
+    return sw_max(worst, d);
 }
 
 typedef struct within {
@@ -373,6 +392,7 @@ double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spa
      * neighbours: those vertices are measured once each, afterwards. */
     uint8_t *corner = calloc((size_t)a->vertex_count + 1, 1);
     double worst = 0;
+    uint32_t hint = UINT32_MAX;
     for (uint32_t t = 0; t + 2 < a->index_count; t += 3) {
         double v[3][3], longest = 0;
         for (int j = 0; j < 3; j++)
@@ -395,14 +415,14 @@ double sw_mesh_distance(const sw_mesh_view *a, const sw_mesh_grid *g, double spa
                 double w0 = (double)i / n, w1 = (double)j / n, w2 = 1 - w0 - w1, p[3];
                 for (int k = 0; k < 3; k++)
                     p[k] = w0 * v[0][k] + w1 * v[1][k] + w2 * v[2][k];
-                worst = farther(g, p, worst);
+                worst = farther(g, p, worst, &hint);
             }
     }
     for (uint32_t i = 0; corner && i < a->vertex_count; i++)
         if (corner[i]) {
             const double p[3] = { a->positions[3 * (size_t)i], a->positions[3 * (size_t)i + 1],
                                   a->positions[3 * (size_t)i + 2] };
-            worst = farther(g, p, worst);
+            worst = farther(g, p, worst, &hint);
         }
     free(corner);
     return worst;
