@@ -36,6 +36,45 @@ sw_vec3 sw_surface_at(const sw_trim_patch *patches, uint32_t n, double u, double
     return sp.p;
 }
 
+/* Does (u, v) lie strictly inside d's domain (no other patch's then, where
+ * the domains do not overlap)? */
+static int strictly_inside(const float d[4], double u, double v)
+{
+    return d[0] < u && u < d[1] && d[2] < v && v < d[3];
+}
+
+void sw_surface_sampler_init(sw_surface_sampler *s, const sw_trim_patch *patches,
+                             uint32_t patch_count)
+{
+    s->patches = patches, s->patch_count = patch_count, s->last = NULL;
+    s->disjoint = patch_count <= SW_SURFACE_SAMPLER_PAIRS;
+    for (uint32_t i = 0; s->disjoint && i < patch_count; i++)
+        for (uint32_t j = i + 1; j < patch_count; j++) {
+            const float *a = patches[i].domain, *b = patches[j].domain;
+            if (a[0] < b[1] && b[0] < a[1] && a[2] < b[3] && b[2] < a[3]) {
+                s->disjoint = 0;
+                break;
+            }
+        }
+}
+
+sw_vec3 sw_surface_sampler_at(sw_surface_sampler *s, double u, double v)
+{
+    if (!s->disjoint)
+        return sw_surface_at(s->patches, s->patch_count, u, v);
+    if (!s->last || !strictly_inside(s->last->domain, u, v)) {
+        double st[2];
+        s->last = patch_at(s->patches, s->patch_count, u, v, &st[0], &st[1]);
+        s->exact = sw_bezier_patch_from_float(&s->last->patch, s->ctrl);
+    }
+    const float *d = s->last->domain;
+    double ps = sw_min(sw_max((u - d[0]) / (d[1] - d[0]), 0.0), 1.0);
+    double pt = sw_min(sw_max((v - d[2]) / (d[3] - d[2]), 0.0), 1.0);
+    sw_surface_point sp;
+    sw_bezier_eval(&s->exact, ps, pt, SW_EVAL_POINT, &sp);
+    return sp.p;
+}
+
 double sw_seam_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
                              const sw_trim_patch *patches, uint32_t patch_count)
 {

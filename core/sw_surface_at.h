@@ -16,6 +16,25 @@
  * for points an ulp outside). */
 sw_vec3 sw_surface_at(const sw_trim_patch *patches, uint32_t patch_count, double u, double v);
 
+/* The same at many (u, v) of one surface in a row (a level's samples): the
+ * patch found last is tried first, its control points made double once.
+ * Only where the surface's patch domains do not overlap, so the answers
+ * are sw_surface_at's; otherwise (or past SW_SURFACE_SAMPLER_PAIRS
+ * patches, where checking each pair would cost more than it saves) every
+ * point is looked up as there. */
+#define SW_SURFACE_SAMPLER_PAIRS 256u
+typedef struct sw_surface_sampler {
+    const sw_trim_patch *patches;
+    uint32_t patch_count;
+    int disjoint;
+    const sw_trim_patch *last;    /* NULL: none yet */
+    sw_bezier_patch exact;        /* last's, in ctrl */
+    double ctrl[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
+} sw_surface_sampler;
+void sw_surface_sampler_init(sw_surface_sampler *s, const sw_trim_patch *patches,
+                             uint32_t patch_count);
+sw_vec3 sw_surface_sampler_at(sw_surface_sampler *s, double u, double v);
+
 /* The largest distance of loop's sewn polyline (its slots at full detail and
  * the middle of each segment) from the surface at the same (u, v): the
  * file's own gaps, which sewing joins across and no level of detail makes

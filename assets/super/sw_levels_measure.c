@@ -6,9 +6,8 @@
 
 #include "sw_surface_at.h"
 
-static double triangle_worst(const sw_trim_patch *patches, uint32_t patch_count,
-                             const float *positions, const float *uvs, const uint16_t t[3],
-                             uint32_t n)
+static double triangle_worst(sw_surface_sampler *surface, const float *positions,
+                             const float *uvs, const uint16_t t[3], uint32_t n)
 {
     double worst = 0;
     for (uint32_t i = 0; i <= n; i++)
@@ -21,7 +20,7 @@ static double triangle_worst(const sw_trim_patch *patches, uint32_t patch_count,
                 for (int a = 0; a < 2; a++)
                     uv[a] += w[k] * uvs[2 * (size_t)t[k] + a];
             }
-            sw_vec3 s = sw_surface_at(patches, patch_count, uv[0], uv[1]);
+            sw_vec3 s = sw_surface_sampler_at(surface, uv[0], uv[1]);
             worst = fmax(worst, sqrt((p[0] - s.x) * (p[0] - s.x) + (p[1] - s.y) * (p[1] - s.y) +
                                      (p[2] - s.z) * (p[2] - s.z)));
         }
@@ -32,9 +31,10 @@ double sw_levels_measure(const sw_trim_patch *patches, uint32_t patch_count,
                          const float *positions, const float *uvs, const uint16_t *indices,
                          uint32_t index_count, uint32_t n)
 {
+    sw_surface_sampler surface;
+    sw_surface_sampler_init(&surface, patches, patch_count);
     double worst = 0;
     for (uint32_t t = 0; t + 2 < index_count; t += 3)
-        worst = fmax(worst, triangle_worst(patches, patch_count, positions, uvs, indices + t,
-                                           n ? n : 1));
+        worst = fmax(worst, triangle_worst(&surface, positions, uvs, indices + t, n ? n : 1));
     return worst;
 }
