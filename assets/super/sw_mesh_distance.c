@@ -15,6 +15,8 @@ struct sw_mesh_grid {
     uint32_t *first;    /* cells + 1: cell c's triangles are tri[first[c] .. first[c + 1]) */
     uint32_t *tri;      /* triangle numbers */
     float *box;         /* per triangle: its box's low corner, then its high one */
+    double *corners;    /* per triangle: its three corners, as doubles (9 a triangle: the
+                           distance reads them for every point, gathered once) */
 };
 
 static void triangle_box(const sw_mesh_view *m, uint32_t t, double lo[3], double hi[3])
@@ -89,13 +91,18 @@ sw_mesh_grid *sw_mesh_grid_make(const sw_mesh_view *b)
     for (int k = 0; k < 3; k++)
         g->lo[k] = INFINITY;
     g->box = malloc(6 * (size_t)n * sizeof *g->box);
-    if (!g->box) {
+    g->corners = malloc(9 * (size_t)n * sizeof *g->corners);
+    if (!g->box || !g->corners) {
         sw_mesh_grid_free(g);
         return NULL;
     }
     for (uint32_t t = 0; t < n; t++) {
         double tl[3], th[3];
         triangle_box(b, t, tl, th);
+        for (int c = 0; c < 3; c++)
+            for (int k = 0; k < 3; k++)
+                g->corners[9 * (size_t)t + 3 * c + k] =
+                    b->positions[3 * (size_t)b->indices[3 * (size_t)t + c] + k];
         for (int k = 0; k < 3; k++) {
             g->lo[k] = fmin(g->lo[k], tl[k]), hi[k] = fmax(hi[k], th[k]);
             g->box[6 * (size_t)t + k] = (float)tl[k], g->box[6 * (size_t)t + 3 + k] = (float)th[k];
@@ -143,6 +150,7 @@ void sw_mesh_grid_free(sw_mesh_grid *g)
     free(g->first);
     free(g->tri);
     free(g->box);
+    free(g->corners);
     free(g);
 }
 
@@ -223,20 +231,15 @@ static int cell_visit(const sw_mesh_grid *g, const double p[3], const int c[3],
                       const double *reach2,
                       int (*each)(void *ctx, const sw_mesh_point *at, double d2), void *ctx)
 {
-    const sw_mesh_view *m = g->mesh;
     size_t cell = cell_index(g, c[0], c[1], c[2]);
     for (uint32_t i = g->first[cell]; i < g->first[cell + 1]; i++) {
         uint32_t tri = g->tri[i];
         const float *box = g->box + 6 * (size_t)tri;
         if (box_distance2(p, box, box + 3) > *reach2)
             continue;
-        const uint32_t *t = m->indices + 3 * (size_t)tri;
-        double v[3][3];
-        for (int j = 0; j < 3; j++)
-            for (int k = 0; k < 3; k++)
-                v[j][k] = m->positions[3 * (size_t)t[j] + k];
+        const double *v = g->corners + 9 * (size_t)tri;
         sw_mesh_point at = { tri, { 0, 0, 0 } };
-        double d2 = triangle_distance2(p, v[0], v[1], v[2], at.weights);
+        double d2 = triangle_distance2(p, v, v + 3, v + 6, at.weights);
         if (each(ctx, &at, d2))
             return 1;
     }
@@ -333,12 +336,9 @@ double sw_mesh_grid_nearest(const sw_mesh_grid *g, const double p[3], sw_mesh_po
 /* The squared distance from p to triangle t of the grid's mesh. */
 static double distance2_to(const sw_mesh_grid *g, const double p[3], uint32_t t)
 {
-    const sw_mesh_view *m = g->mesh;
-    double v[3][3], w[3];
-    for (int j = 0; j < 3; j++)
-        for (int k = 0; k < 3; k++)
-            v[j][k] = m->positions[3 * (size_t)m->indices[3 * (size_t)t + j] + k];
-    return triangle_distance2(p, v[0], v[1], v[2], w);
+    const double *v = g->corners + 9 * (size_t)t;
+    double w[3];
+    return triangle_distance2(p, v, v + 3, v + 6, w);
 }
 
 /* max(worst, the distance from p to the grid's mesh), searching no further

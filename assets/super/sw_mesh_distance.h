@@ -19,8 +19,9 @@ typedef struct sw_mesh_view {
 
 typedef struct sw_mesh_grid sw_mesh_grid;   /* B's triangles, binned in a uniform grid */
 
-/* The grid over b's triangles (b must outlive it); NULL when out of memory
- * or b has no triangle. */
+/* The grid over b's triangles (b must outlive it), with their corners as
+ * doubles (72 bytes a triangle beside the bins); NULL when out of memory or
+ * b has no triangle. */
 sw_mesh_grid *sw_mesh_grid_make(const sw_mesh_view *b);
 void sw_mesh_grid_free(sw_mesh_grid *g);
 
