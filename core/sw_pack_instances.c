@@ -51,10 +51,11 @@ void sw_pack_placed_counts(const sw_pack_prototype *prototypes, const sw_pack_in
 }
 
 /* Spaces the placed scene shares with the prototypes (parametric or local
- * to a level): their indices are left as they are. */
-static int shared_space(int s, int share_levels)
+ * to a level; for the runtime also the levels' vertices): their indices
+ * are left as they are. */
+static int shared_space(int s, int runtime)
 {
-    if (share_levels && (s == SW_SPACE_LEVEL_VERTICES || s == SW_SPACE_PART_LEVEL_VERTICES))
+    if (runtime && (s == SW_SPACE_LEVEL_VERTICES || s == SW_SPACE_PART_LEVEL_VERTICES))
         return 1;
     return s == SW_SPACE_TRIM_LOOPS || s == SW_SPACE_TRIM_CURVES || s == SW_SPACE_TRIM_DATA ||
            s == SW_SPACE_TRIM_MASKS || s == SW_SPACE_LEVEL_INDICES || s == SW_SPACE_LEVEL_CHAINS ||
@@ -68,7 +69,7 @@ enum { A_META, A_SEAM, A_LEVELS, A_PARTS, A_TRANSFORMS, A_PATCHES, A_CONTROL, A_
        A_MEMBERS, A_SUPER_OF, A_PART_LEVELS, A_PIECE_LEVELS, A_PIECE_OF, A_PL_VERTICES,
        A_COUNT };
 
-static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int share_levels, uint64_t n[A_COUNT],
+static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int runtime, uint64_t n[A_COUNT],
                         uint64_t size[A_COUNT])
 {
     const uint64_t surfaces = c[SW_SPACE_SURFACES];
@@ -91,14 +92,16 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int share_levels, uint
         sizeof(sw_level_vertex) };
     for (int a = 0; a < A_COUNT; a++)
         n[a] = counts[a], size[a] = bytes[a];
-    if (share_levels)
-        n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0;
+    /* The runtime's: the levels' vertices shared, and what the walk never
+     * reads (the seam edges, the patches' adjacency) left out. */
+    if (runtime)
+        n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0, n[A_EDGES] = 0, n[A_ADJACENCY] = 0;
 }
 
-static uint64_t expand_bytes(const uint64_t counts[SW_SPACE_COUNT], int share_levels)
+static uint64_t expand_bytes(const uint64_t counts[SW_SPACE_COUNT], int runtime)
 {
     uint64_t n[A_COUNT], size[A_COUNT], total = 0;
-    array_sizes(counts, share_levels, n, size);
+    array_sizes(counts, runtime, n, size);
     for (int a = 0; a < A_COUNT; a++)
         total += sw_arena_worst_case(n[a] * size[a] + 1, 64);
     return total;
@@ -176,20 +179,20 @@ typedef struct placed {
     void *a[A_COUNT];
     uint64_t n[A_COUNT];
     uint64_t at[SW_SPACE_COUNT];   /* records written so far per space */
-    int share_levels;              /* the static and part levels' vertices stay the pack's */
+    int runtime;                   /* the runtime's (array_sizes says what that leaves out) */
 } placed;
 
 static sw_status take_arrays(placed *d, const uint64_t counts[SW_SPACE_COUNT], sw_arena *arena,
                              sw_error *err)
 {
     uint64_t size[A_COUNT];
-    array_sizes(counts, d->share_levels, d->n, size);
+    array_sizes(counts, d->runtime, d->n, size);
     for (int a = 0; a < A_COUNT; a++) {
         d->a[a] = sw_arena_alloc(arena, (size_t)(d->n[a] * size[a] + 1), 64);
         if (!d->a[a])
             return sw_error_set(err, SW_ERR_NO_MEMORY, "the placed scene: the arena is short "
                                 "(%llu bytes needed)",
-                                (unsigned long long)expand_bytes(counts, d->share_levels));
+                                (unsigned long long)expand_bytes(counts, d->runtime));
     }
     return SW_OK;
 }
@@ -225,7 +228,7 @@ static sw_pack_move move_for(const sw_pack *pack, const placed *d, const sw_pack
                        .transform = moved ? inst->transform : NULL,
                        .scale = moved ? sw_instance_scale(inst->transform) : 1 };
     for (int s = 0; s < SW_SPACE_COUNT; s++)
-        m.shift[s] = shared_space(s, d->share_levels) ? 0
+        m.shift[s] = shared_space(s, d->runtime) ? 0
                                                      : (int64_t)d->at[s] - (int64_t)p->first[s];
     return m;
 }
@@ -266,7 +269,7 @@ static void place_model(const sw_pack *pack, placed *d, const sw_pack_prototype 
     sw_pack_move_patches(m, &pack->patches[p->first[SW_SPACE_PATCHES]],
                          p->count[SW_SPACE_PATCHES], d->a[A_CONTROL],
                          AT(d, A_PATCHES, sw_pack_patch, SW_SPACE_PATCHES));
-    if (pack->adjacency)
+    if (pack->adjacency && d->n[A_ADJACENCY])
         sw_pack_move_adjacency(m, pack->adjacency + p->first[SW_SPACE_ADJACENCY],
                                p->count[SW_SPACE_ADJACENCY],
                                AT(d, A_ADJACENCY, sw_pack_adjacency, SW_SPACE_ADJACENCY));
@@ -298,9 +301,10 @@ static void place_seam(const sw_pack *pack, placed *d, const sw_pack_prototype *
     sw_pack_move_seam_loops(m, g->loops + p->first[SW_SPACE_SEAM_LOOPS],
                             p->count[SW_SPACE_SEAM_LOOPS],
                             AT(d, A_LOOPS, sw_seam_loop, SW_SPACE_SEAM_LOOPS));
-    sw_pack_move_seam_edges(m, g->edges + p->first[SW_SPACE_SEAM_EDGES],
-                            p->count[SW_SPACE_SEAM_EDGES],
-                            AT(d, A_EDGES, sw_seam_edge, SW_SPACE_SEAM_EDGES));
+    if (d->n[A_EDGES])
+        sw_pack_move_seam_edges(m, g->edges + p->first[SW_SPACE_SEAM_EDGES],
+                                p->count[SW_SPACE_SEAM_EDGES],
+                                AT(d, A_EDGES, sw_seam_edge, SW_SPACE_SEAM_EDGES));
     sw_pack_move_seam_collapses(m, g->collapses + p->first[SW_SPACE_SEAM_COLLAPSES],
                                 p->count[SW_SPACE_SEAM_COLLAPSES],
                                 AT(d, A_COLLAPSES, sw_seam_collapse, SW_SPACE_SEAM_COLLAPSES));
@@ -322,7 +326,7 @@ static void place_levels(const sw_pack *pack, placed *d, const sw_pack_prototype
         sw_pack_move_indices(m, SW_SPACE_LEVELS, l->surface_levels + p->first[SW_SPACE_SURFACES],
                              p->count[SW_SPACE_SURFACES],
                              AT(d, A_SURFACE_LEVELS, uint32_t, SW_SPACE_SURFACES));
-        if (!d->share_levels)
+        if (!d->runtime)
             sw_pack_move_level_vertices(m, l->vertices + p->first[SW_SPACE_LEVEL_VERTICES],
                                         p->count[SW_SPACE_LEVEL_VERTICES],
                                         AT(d, A_LEVEL_VERTICES, sw_level_vertex,
@@ -350,7 +354,7 @@ static void place_levels(const sw_pack *pack, placed *d, const sw_pack_prototype
         sw_pack_move_indices(m, SW_SPACE_PIECES, pl->piece_of + p->first[SW_SPACE_SURFACES],
                              p->count[SW_SPACE_SURFACES],
                              AT(d, A_PIECE_OF, uint32_t, SW_SPACE_SURFACES));
-        if (!d->share_levels)
+        if (!d->runtime)
             sw_pack_move_level_vertices(m, pl->vertices + p->first[SW_SPACE_PART_LEVEL_VERTICES],
                                         p->count[SW_SPACE_PART_LEVEL_VERTICES],
                                         AT(d, A_PL_VERTICES, sw_level_vertex,
@@ -385,7 +389,7 @@ static void fill_headers(const sw_pack *pack, placed *d, float tolerance)
         sw_pack_levels *l = d->a[A_LEVELS];
         *l = *pack->levels_header;
         l->level_count = (uint32_t)d->n[A_LEVEL_RECORDS];
-        l->vertex_count = d->share_levels ? pack->levels.vertex_count
+        l->vertex_count = d->runtime ? pack->levels.vertex_count
                                           : (uint32_t)d->n[A_LEVEL_VERTICES];
         l->surface_count = (uint32_t)d->n[A_SURFACES];
     }
@@ -400,10 +404,10 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
     out->meta = d->a[A_META];
     out->parts = d->a[A_PARTS];
     out->part_transforms = d->a[A_TRANSFORMS];
-    out->level_vertices_local = d->share_levels;
+    out->level_vertices_local = d->runtime;
     out->patches = d->a[A_PATCHES];
     out->control = d->a[A_CONTROL];
-    out->adjacency = d->a[A_ADJACENCY];
+    out->adjacency = d->n[A_ADJACENCY] ? d->a[A_ADJACENCY] : NULL;
     uint32_t surfaces = (uint32_t)d->n[A_SURFACES];
     if (pack->surfaces) {
         out->surfaces = d->a[A_SURFACES];
@@ -415,7 +419,7 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
         out->seam_header = h;
         out->seam = (sw_seam_graph){
             .vertices = d->a[A_VERTICES], .slots = d->a[A_SLOTS], .loops = d->a[A_LOOPS],
-            .edges = d->a[A_EDGES], .collapses = d->a[A_COLLAPSES], .slot_refs = d->a[A_SLOT_REFS],
+            .edges = h->edge_count ? d->a[A_EDGES] : NULL, .collapses = d->a[A_COLLAPSES], .slot_refs = d->a[A_SLOT_REFS],
             .surface_loops = d->a[A_SURFACE_LOOPS], .vertex_count = h->vertex_count,
             .original_count = h->original_count, .slot_count = h->slot_count,
             .loop_count = h->loop_count, .edge_count = h->edge_count,
@@ -426,9 +430,9 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
         out->levels_header = d->a[A_LEVELS];
         out->levels.levels = d->a[A_LEVEL_RECORDS];
         out->levels.surface_levels = d->a[A_SURFACE_LEVELS];
-        out->levels.vertices = d->share_levels ? pack->levels.vertices : d->a[A_LEVEL_VERTICES];
+        out->levels.vertices = d->runtime ? pack->levels.vertices : d->a[A_LEVEL_VERTICES];
         out->levels.level_count = (uint32_t)d->n[A_LEVEL_RECORDS];
-        out->levels.vertex_count = d->share_levels ? pack->levels.vertex_count
+        out->levels.vertex_count = d->runtime ? pack->levels.vertex_count
                                                    : (uint32_t)d->n[A_LEVEL_VERTICES];
         out->levels.surface_count = surfaces;
     }
@@ -442,17 +446,17 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
         out->part_levels.levels = d->a[A_PART_LEVELS];
         out->part_levels.piece_levels = d->a[A_PIECE_LEVELS];
         out->part_levels.piece_of = d->a[A_PIECE_OF];
-        out->part_levels.vertices = d->share_levels ? pack->part_levels.vertices
+        out->part_levels.vertices = d->runtime ? pack->part_levels.vertices
                                                     : d->a[A_PL_VERTICES];
         out->part_levels.level_count = (uint32_t)d->n[A_PART_LEVELS];
-        out->part_levels.vertex_count = d->share_levels ? pack->part_levels.vertex_count
+        out->part_levels.vertex_count = d->runtime ? pack->part_levels.vertex_count
                                                         : (uint32_t)d->n[A_PL_VERTICES];
         out->part_levels.piece_count = (uint32_t)(d->n[A_PIECE_LEVELS] - 1);
         out->part_levels.surface_count = surfaces;
     }
 }
 
-static sw_status expand(const sw_pack *pack, int share_levels, sw_arena *arena, sw_pack *out,
+static sw_status expand(const sw_pack *pack, int runtime, sw_arena *arena, sw_pack *out,
                         sw_error *err)
 {
     if (!pack->instances) {
@@ -461,7 +465,7 @@ static sw_status expand(const sw_pack *pack, int share_levels, sw_arena *arena, 
     }
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    placed d = { .share_levels = share_levels };
+    placed d = { .runtime = runtime };
     sw_status st = take_arrays(&d, counts, arena, err);
     if (st != SW_OK)
         return st;
@@ -477,7 +481,7 @@ static sw_status expand(const sw_pack *pack, int share_levels, sw_arena *arena, 
         float t = (float)(p->seam_tolerance * m.scale);
         tolerance = t > tolerance ? t : tolerance;
         for (int s = 0; s < SW_SPACE_COUNT; s++)
-            d.at[s] += shared_space(s, share_levels) ? 0 : p->count[s];
+            d.at[s] += shared_space(s, runtime) ? 0 : p->count[s];
     }
     ((uint32_t *)d.a[A_SURFACE_LOOPS])[d.n[A_SURFACES]] = (uint32_t)d.n[A_LOOPS];
     ((uint32_t *)d.a[A_SURFACE_LEVELS])[d.n[A_SURFACES]] = (uint32_t)d.n[A_LEVEL_RECORDS];

@@ -91,8 +91,10 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
  * places a surface's or a piece's with its part's transform
  * (out->part_transforms), as the stand-ins are made
  * (firmware/walk/visibility/sw_seam_standin.c) and the part levels drawn
- * (the GL thread's model matrix). A pack without instances is copied as
- * it is, its vertices placed already. */
+ * (the GL thread's model matrix). What the walk never reads is left out:
+ * the seam edges and the patches' adjacency (their counts 0, their
+ * pointers NULL). A pack without instances is copied as it is, its
+ * vertices placed already. */
 sw_status sw_pack_expand_shared(const sw_pack *pack, sw_arena *arena, sw_pack *out,
                                 sw_error *err);
 

@@ -196,6 +196,16 @@ static void test_shared_levels_place_as_copied(void)
     SW_CHECK_MSG(sw_pack_expand_shared(&pack, &sa, &shared, &err) == SW_OK, "%s", err.message);
     SW_CHECK(shared.level_vertices_local && shared.levels.vertices == pack.levels.vertices);
     SW_CHECK(shared.levels.level_count == whole.levels.level_count);
+    /* What the walk never reads is left out; the rest of the graph is the
+     * copying expansion's. */
+    SW_CHECK(whole.seam.edge_count > 0 && whole.meta->adjacency_count > 0);
+    SW_CHECK(shared.seam.edge_count == 0 && !shared.seam.edges &&
+             shared.meta->adjacency_count == 0 && !shared.adjacency);
+    SW_CHECK(shared.seam.vertex_count == whole.seam.vertex_count &&
+             memcmp(shared.seam.vertices, whole.seam.vertices,
+                    whole.seam.vertex_count * sizeof *whole.seam.vertices) == 0 &&
+             memcmp(shared.seam.slots, whole.seam.slots,
+                    whole.seam.slot_count * sizeof *whole.seam.slots) == 0);
     uint32_t compared = 0, differ = 0;
     sw_level_vertex out[256];
     for (uint32_t s = 0; s < shared.surface_count; s++)
