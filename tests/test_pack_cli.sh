@@ -69,6 +69,13 @@ assert j["part_count"] == 3 and [p["name"] for p in j["parts"]] == ["teapot", "t
 assert j["bezier_patches"] == 70 and j["surfaces"] == 70 and j["control_points"] == 1120
 assert j["rational_patches"] == 0 and j["degree_u"] == [3, 3] and j["degree_v"] == [3, 3]
 assert [s["name"] for s in j["sections"]][:4] == ["META", "PARTS", "PATCHES", "CONTROL"]
+# each section's bytes per stored seam vertex, per stored patch, per instance
+# (a plain pack places its parts once)
+placed = j.get("instance_count") or 1
+for s in j["sections"]:
+    assert abs(s["per_patch"] * 70 - s["size"]) <= 70e-3, s
+    assert abs(s["per_instance"] * placed - s["size"]) <= placed * 1e-3, s
+assert sum(s["per_seam_vertex"] for s in j["sections"]) * j["seam"]["vertices"] > 0.999 * j["total_bytes"] - 4096
 assert abs(j["parts"][0]["color"][2] - 0.62) < 1e-6 and j["runtime_bytes"] > j["total_bytes"]
 assert j["box"]["min"][1] > -1e-6 and j["model_size"] > 1
 EOF

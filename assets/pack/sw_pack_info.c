@@ -306,9 +306,27 @@ static void print_part_text(FILE *out, const sw_pack *pack, const info_parts *ip
             s->box_min[1], s->box_min[2], s->box_max[0], s->box_max[1], s->box_max[2], units);
 }
 
+/* What each section's bytes come to per stored seam vertex, per stored
+ * patch and per instance (a pack without instances places its parts once):
+ * where a pack's size goes, whatever its scene's size. 0 where the pack has
+ * none of the first two. */
+typedef struct per_unit {
+    double seam_vertices, patches, instances;
+} per_unit;
+
+static per_unit units_of(const sw_pack *pack)
+{
+    per_unit u = { pack->seam_header ? pack->seam.vertex_count : 0, pack->meta->patch_count,
+                   pack->instances ? pack->instance_count : 1 };
+    return u;
+}
+
+static double per(uint64_t bytes, double count) { return count > 0 ? bytes / count : 0; }
+
 static void print_sections_text(FILE *out, const sw_pack *pack)
 {
-    fprintf(out, "  %-16s %" PRIu32 "\n", "sections", pack->header->section_count);
+    fprintf(out, "  %-16s %" PRIu32 " (bytes, and per stored seam vertex, per stored patch, per instance)\n",
+            "sections", pack->header->section_count);
     /* 15 fits every name up to PART_TRANSFORMS; only the seam group's
      * longer names widen the column. */
     int width = 15;
@@ -316,11 +334,18 @@ static void print_sections_text(FILE *out, const sw_pack *pack)
         int len = (int)strlen(sw_section_type_name(pack->sections[i].type));
         width = len > width ? len : width;
     }
+    per_unit u = units_of(pack);
+    uint64_t total = 0;
     for (uint32_t i = 0; i < pack->header->section_count; i++) {
         const sw_pack_section *sec = &pack->sections[i];
-        fprintf(out, "    %-*s offset %10" PRIu64 "  size %10" PRIu64 "\n", width,
-                sw_section_type_name(sec->type), sec->offset, sec->size);
+        fprintf(out, "    %-*s offset %10" PRIu64 "  size %10" PRIu64 " %9.1f %9.1f %11.1f\n",
+                width, sw_section_type_name(sec->type), sec->offset, sec->size,
+                per(sec->size, u.seam_vertices), per(sec->size, u.patches),
+                per(sec->size, u.instances));
+        total += sec->size;
     }
+    fprintf(out, "    %-*s %17s  size %10" PRIu64 " %9.1f %9.1f %11.1f\n", width, "all sections", "",
+            total, per(total, u.seam_vertices), per(total, u.patches), per(total, u.instances));
 }
 
 /* Only for packs with a Seam Graph, so other packs' reports are unchanged. */
@@ -537,12 +562,16 @@ static void json_part(FILE *out, const info_parts *ip, uint32_t i)
 
 static void json_sections(FILE *out, const sw_pack *pack)
 {
+    per_unit u = units_of(pack);
     fprintf(out, "  \"sections\": [");
     for (uint32_t i = 0; i < pack->header->section_count; i++) {
         const sw_pack_section *sec = &pack->sections[i];
         fprintf(out, "%s\n    {\"type\": %" PRIu32 ", \"name\": \"%s\", \"offset\": %" PRIu64
-                ", \"size\": %" PRIu64 "}", i ? "," : "", sec->type,
-                sw_section_type_name(sec->type), sec->offset, sec->size);
+                ", \"size\": %" PRIu64 ", \"per_seam_vertex\": %.3f, \"per_patch\": %.3f, "
+                "\"per_instance\": %.3f}", i ? "," : "", sec->type,
+                sw_section_type_name(sec->type), sec->offset, sec->size,
+                per(sec->size, u.seam_vertices), per(sec->size, u.patches),
+                per(sec->size, u.instances));
     }
     fprintf(out, "\n  ],\n");
 }
