@@ -394,8 +394,8 @@ static void print_summary(const sw_program *rt)
         snprintf(error, sizeof error, "error max %.3f px", s->error_max_px);
     printf("seamwalk: %llu frames of %u patches at %dx%d in %.2f s; %s (bound %.2f);"
            " cracks max %llu; undrawn max %u (surfaces in view with no mesh yet, the most in a"
-           " frame); clamped max %u (surfaces in view closer than the pack's --closest-mm,"
-           " drawn at its finest); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
+           " frame); clamped max %u (surfaces in view closer than the pack was built for, its"
+           " --closest-mm or a tenth of its sewing tolerance, drawn at its finest); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
            " frame stats and pictures the rest); mallocs after init %lld\n",
            (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, error,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->waiting_max,

@@ -5,9 +5,10 @@
  * --closest-mm, fewer patches) knows what to change. The pools are a
  * function of the validated pack (sw_pack_runtime_pools), so the pack is
  * read once more here, into a block of its own given back at once; only
- * this refusal, before the run takes anything, reads it so. When even that
- * block cannot be had, or the pack does not load, the message says the
- * total and where the pools are listed. */
+ * this refusal, before the run takes anything, reads it so, and only a
+ * pack no larger than the limit. Otherwise, or when the block cannot be
+ * had or the pack does not load, the message says the total and where the
+ * pools are listed. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <string.h>
@@ -52,8 +53,10 @@ sw_status sw_program_memory_short(const sw_program *rt, const sw_pack_header *h,
 {
     double limit = rt->opt.memory_mb * 1048576.0;
     char pools[SW_ERROR_MESSAGE_MAX] = "";
+    /* Read only a pack within the limit: on a unit short of memory, one
+     * larger than what the run may take must not be read to say so. */
     size_t bytes = (size_t)h->total_size + 2 * SW_PACK_ALIGN;
-    void *block = h->total_size < SIZE_MAX / 2 ? sw_heap_take_block(bytes) : NULL;
+    void *block = (double)h->total_size <= limit ? sw_heap_take_block(bytes) : NULL;
     if (block) {
         sw_arena arena;
         sw_arena_init(&arena, block, bytes);
@@ -64,7 +67,10 @@ sw_status sw_program_memory_short(const sw_program *rt, const sw_pack_header *h,
             largest_pools(&pack, pools, sizeof pools);
         sw_heap_give_block(block, bytes);
     }
-    if (!pools[0])
+    if (!pools[0] && (double)h->total_size > limit)
+        snprintf(pools, sizeof pools, "the pack itself %.1f MiB (the rest not read: "
+                 "seamwalk-pack info lists them)", h->total_size / 1048576.0);
+    else if (!pools[0])
         snprintf(pools, sizeof pools, "seamwalk-pack info lists them");
     return sw_error_set(err, SW_ERR_NO_MEMORY,
                         "needs %.1f MiB of memory, more than --memory-mb %.1f by %.1f MiB; "
