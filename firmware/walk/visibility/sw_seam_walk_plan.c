@@ -153,10 +153,12 @@ void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
             plan_surface(w, s, plan, frame);
     }
     sw_seam_walk_plan_parts(w, plan, frame);
-    uint32_t vertex_units = w->cache.vertex_pool.used_units;
-    uint32_t index_units = w->cache.index_pool.used_units;
-    if (w->workers)
+    uint32_t vertex_units, index_units;
+    if (w->workers)   /* the workers place meshes meanwhile */
         sw_seam_workers_pool_use(w->workers, &vertex_units, &index_units);
+    else
+        vertex_units = w->cache.vertex_pool.used_units,
+        index_units = w->cache.index_pool.used_units;
     frame->cache_used_vertices = (uint64_t)SW_SEAM_CACHE_VERTEX_UNIT * vertex_units;
     frame->cache_used_indices = (uint64_t)SW_SEAM_CACHE_INDEX_UNIT * index_units;
     plan->depth_known = sw_seam_depth_range(w, view, &plan->nearest, &plan->farthest);
