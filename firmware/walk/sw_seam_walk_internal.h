@@ -144,6 +144,16 @@ void sw_seam_walk_restitch(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *f
  * many. */
 uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count);
 
+/* The threaded walk keeps a share of the cache's pools free for the next
+ * frame: stand-ins are made in V's half of the frame from the room there
+ * is, and a full cache (meshes out of view are kept until room is needed)
+ * left surfaces coming into view undrawn for a frame or two while the room
+ * evicted for them came free. When a pool's free units fall below half of
+ * 1/SW_SEAM_HEADROOM of it, meshes out of view go, least recently drawn
+ * first, until they reach it (counted in frame->evicted). */
+#define SW_SEAM_HEADROOM 8u
+void sw_seam_walk_keep_room(sw_seam_walk *w, sw_seam_frame *frame);
+
 /* Surface s's cache entry (READY) into the plan's uploads. */
 void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan);
 

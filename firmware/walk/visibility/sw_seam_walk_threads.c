@@ -397,12 +397,15 @@ void sw_seam_walk_restitch_around(sw_seam_walk *w, uint32_t s)
         }
 }
 
-/* The count least recently drawn meshes out of view, retired: workers
- * found no room. A mesh's epoch is the last frame that drew it (and
- * measured it: the GL thread reads a mesh only in the frames that draw it,
- * and at its upload, before any of them), so the workers may reuse its
- * blocks as soon as that frame has finished. */
-uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
+/* The least recently drawn meshes out of view, retired until count of
+ * them have gone or their blocks cover vertex_units and index_units
+ * (whichever comes first; UINT32_MAX: no such limit). A mesh's epoch is
+ * the last frame that drew it (and measured it: the GL thread reads a mesh
+ * only in the frames that draw it, and at its upload, before any of them),
+ * so the workers may reuse its blocks as soon as that frame has finished:
+ * at once for most, drawn long ago. Returns how many went. */
+static uint32_t evict_oldest(sw_seam_walk *w, uint32_t count, uint64_t vertex_units,
+                             uint64_t index_units)
 {
     /* Oldest first by one sort of the candidates (the scratch choose()
      * used; free again by now): a search of the whole cache per mesh made
@@ -416,12 +419,36 @@ uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
                 (sw_seam_candidate){ (float)(w->frame - c->entries[s].last_frame), s };
     sw_seam_candidates_sort(w->candidates, m);
     uint32_t k = 0;
-    for (; k < count && k < m; k++) {
+    uint64_t vertices = 0, indices = 0;
+    for (; k < count && k < m && (vertices < vertex_units || indices < index_units); k++) {
+        const sw_seam_entry *e = &c->entries[w->candidates[k].surface];
+        vertices += sw_buddy_block_units(&c->vertex_pool, e->vertex_block);
+        indices += sw_buddy_block_units(&c->index_pool, e->index_block);
         retire_mesh(w, w->candidates[k].surface);
         sw_seam_walk_restitch_around(w, w->candidates[k].surface);
         c->evictions++;
     }
     return k;
+}
+
+uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
+{
+    return evict_oldest(w, count, UINT64_MAX, UINT64_MAX);
+}
+
+void sw_seam_walk_keep_room(sw_seam_walk *w, sw_seam_frame *frame)
+{
+    uint32_t vertex_units, index_units;
+    sw_seam_workers_pool_use(w->workers, &vertex_units, &index_units);
+    const sw_buddy *v = &w->cache.vertex_pool, *i = &w->cache.index_pool;
+    uint64_t want_v = v->units / SW_SEAM_HEADROOM, want_i = i->units / SW_SEAM_HEADROOM;
+    uint64_t free_v = v->units - vertex_units, free_i = i->units - index_units;
+    if (free_v >= want_v / 2 && free_i >= want_i / 2)
+        return;   /* between a half and the whole share: not every frame */
+    uint32_t before = w->cache.evictions;
+    evict_oldest(w, UINT32_MAX, free_v < want_v ? want_v - free_v : 0,
+                 free_i < want_i ? want_i - free_i : 0);
+    frame->evicted += w->cache.evictions - before;
 }
 
 /* Surface s's published mesh becomes the drawn one; the mesh it replaces
