@@ -25,10 +25,9 @@ sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surf
 
 uint32_t sw_walk_cache_vertices_for(uint64_t patches)
 {
-    uint32_t v = SW_WALK_CACHE_MIN;
-    while (v < SW_WALK_CACHE_MAX && (uint64_t)v < (uint64_t)SW_WALK_CACHE_PER_PATCH * patches)
-        v *= 2;
-    return v;
+    uint64_t v = (uint64_t)SW_WALK_CACHE_PER_PATCH * patches;
+    v = v < SW_WALK_CACHE_MIN ? SW_WALK_CACHE_MIN : v > SW_WALK_CACHE_MAX ? SW_WALK_CACHE_MAX : v;
+    return (uint32_t)((v + 63) / 64 * 64);   /* whole units of both pools */
 }
 
 uint32_t sw_walk_cache_vertices(const sw_seam_graph *g, const sw_pack_surface *surfaces)

@@ -20,16 +20,18 @@
 
 /* The cache's pools: vertices (16 bytes as drawn, 8 of (u, v)) and six
  * indices a vertex (12 bytes), the same again in GL buffers. They hold the
- * meshes a frame draws, the batch replacing some of them, and meshes out of
- * view kept until the room is needed (evicted least recently drawn first),
- * so they are sized by what a frame draws, not by the scene: 16 vertices a
- * patch as a power of two, from 2^19 (below it a courtyard's close views
- * refused surfaces) to 2^21, about three times the blocks the busiest
- * frames of the generated showrooms draw (docs/perf/2026-12-07-cache.md).
- * The walk's stats give each pool's fill (cache.pool in docs/stats.md). */
+ * meshes a frame draws, beside them the batch replacing them (a move of
+ * the seam front remakes most of what is in view), stand-ins, and meshes
+ * out of view kept until the room is needed: 32 vertices a patch, from
+ * 2^19 (below it a courtyard's close views refused surfaces) to 2^21, a
+ * multiple of 64 (whole units of both pools; the pools need not be powers
+ * of two, only their blocks are). About three times the blocks the busiest
+ * frames of the generated showrooms draw; at half that, surfaces coming
+ * into view waited undrawn (docs/perf/2026-12-07-cache.md). The walk's
+ * stats give each pool's fill (cache.pool in docs/stats.md). */
 #define SW_WALK_CACHE_MIN (1u << 19)
 #define SW_WALK_CACHE_MAX (1u << 21)
-#define SW_WALK_CACHE_PER_PATCH 16u
+#define SW_WALK_CACHE_PER_PATCH 32u
 uint32_t sw_walk_cache_vertices(const sw_seam_graph *g, const sw_pack_surface *surfaces);
 uint32_t sw_walk_cache_vertices_for(uint64_t patches);
 static inline uint32_t sw_walk_cache_indices(uint32_t vertices) { return 6u * vertices; }

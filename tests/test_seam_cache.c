@@ -113,6 +113,21 @@ static void test_every_surface_fits_at_once(void)
     free(surfaces);
 }
 
+/* The pools' size: 32 vertices a patch within 2^19 .. 2^21, whole units of
+ * both pools, six indices a vertex. */
+static void test_cache_size_follows_the_patches(void)
+{
+    const uint64_t patches[5] = { 0, 1000, 40000, 40066, 400000 };
+    const uint32_t want[5] = { 1u << 19, 1u << 19, 1280000, 1282112, 1u << 21 };
+    for (int i = 0; i < 5; i++) {
+        uint32_t v = sw_walk_cache_vertices_for(patches[i]);
+        SW_CHECK_MSG(v == want[i], "%llu patches: %u vertices, expected %u",
+                     (unsigned long long)patches[i], v, want[i]);
+        SW_CHECK(v % SW_SEAM_CACHE_VERTEX_UNIT == 0 &&
+                 sw_walk_cache_indices(v) % SW_SEAM_CACHE_INDEX_UNIT == 0);
+    }
+}
+
 /* The fuzz seed with a Seam Graph: loaded and walked in an arena of exactly
  * its runtime_bytes. */
 static void test_runtime_bytes_hold_pack_and_walk(const char *seed)
@@ -149,6 +164,7 @@ int main(int argc, char **argv)
     SW_RUN(test_least_recently_drawn_goes_first);
     SW_RUN(test_surfaces_in_view_are_never_evicted);
     SW_RUN(test_every_surface_fits_at_once);
+    SW_RUN(test_cache_size_follows_the_patches);
     if (argc == 2)
         test_runtime_bytes_hold_pack_and_walk(argv[1]);
     else
