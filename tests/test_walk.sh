@@ -170,8 +170,11 @@ errors)
   "$pack_tool" build "$src/assets/samples/teaset.ini" -o "$work/good.swpack" || fail "build"
   size=$(stat -c %s "$work/good.swpack")
   # Refused before anything is taken, saying by how much and which of the
-  # pack's pools take most (the teaset's: the mesh cache).
-  expect_failure 1 "needs .* MiB of memory, more than --memory-mb 1.0 by .*largest first: mesh cache" \
+  # pack's pools take most (the teaset's: the mesh cache); a pack larger
+  # than the limit itself is not read to say so.
+  expect_failure 1 "needs .* MiB of memory, more than --memory-mb 20.0 by .*largest first: mesh cache" \
+    "$walker" --pack "$work/good.swpack" --headless 320x240 --orbit --memory-mb 20
+  expect_failure 1 "more than --memory-mb 1.0 by .*: the pack itself [0-9.]* MiB (the rest not read" \
     "$walker" --pack "$work/good.swpack" --headless 320x240 --orbit --memory-mb 1
   head -c $((size / 2)) "$work/good.swpack" > "$work/short.swpack"
   expect_failure 1 "short.swpack" "$walker" --pack "$work/short.swpack" --headless 320x240 --orbit
