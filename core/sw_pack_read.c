@@ -724,9 +724,8 @@ static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
     if (got < expected)
         return sw_error_set(err, SW_ERR_FORMAT,
                             "header.runtime_bytes: %llu, expected at least %llu for %llu "
-                            "bytes, %u "
-                            "patches and a walk of %llu bytes (its seamwalk-pack's runtime "
-                            "took less than this one: build it again)",
+                            "bytes, %u patches and a walk of %llu bytes (its seamwalk-pack's "
+                            "runtime took less than this one: build it again)",
                             (unsigned long long)pack->header->runtime_bytes,
                             (unsigned long long)expected,
                             (unsigned long long)pack->header->total_size,
