@@ -119,11 +119,30 @@ static void add_summary(seam_summary *sum, const seam_summary *one, double scale
     p->seconds += q->seconds;
 }
 
+/* The placed scene's floors, in its units: the sewing's (a millionth of
+ * its size) and the seam hierarchy's (the bound at --closest-mm, or at a
+ * hundredth of its size). Made once: the scene's size reads every
+ * placement's prototype, and made per prototype it made a scene's build
+ * quadratic in its size. */
+typedef struct scene_floors {
+    double sewing, seam;
+} scene_floors;
+
+static scene_floors floors_of(const build_options *o, const sw_scene_plan *plan)
+{
+    double diagonal = placed_diagonal(plan);
+    scene_floors f = { 1e-6 * diagonal,
+                       sw_pack_tool_seam_floor(o->closest_mm > 0
+                                                   ? o->closest_mm
+                                                   : sw_pack_tool_default_closest_mm(diagonal)) };
+    return f;
+}
+
 /* The prototypes' packing, shared by the threads that run it. */
 typedef struct proto_jobs {
     const build_options *o;
     sw_scene_plan *plan;
-    double floor;
+    scene_floors floors;
     uint32_t inner_threads;      /* each prototype's own --threads */
     size_t *order;               /* prototypes, largest first */
     atomic_size_t next;
@@ -134,24 +153,16 @@ typedef struct proto_jobs {
     sw_error *errors;
 } proto_jobs;
 
-/* The seam floor in the scene's units: the bound at --closest-mm, or at a
- * hundredth of the placed scene. */
-static double placed_seam_floor(const build_options *o, const sw_scene_plan *plan)
-{
-    return sw_pack_tool_seam_floor(o->closest_mm > 0 ? o->closest_mm
-                                   : sw_pack_tool_default_closest_mm(placed_diagonal(plan)));
-}
-
-/* Prototype k packed on threads threads, at its tolerance (floor: the
- * placed scene's, placed_floor), with what its file's import said. */
+/* Prototype k packed on threads threads, at its tolerance (within the
+ * placed scene's floors), with what its file's import said. */
 static sw_status pack_prototype(const build_options *o, progress_context *pc,
-                                sw_scene_plan *plan, size_t k, double floor, uint32_t threads,
-                                uint8_t **bytes, size_t *size, seam_summary *summary,
-                                sw_error *err)
+                                sw_scene_plan *plan, size_t k, const scene_floors *floors,
+                                uint32_t threads, uint8_t **bytes, size_t *size,
+                                seam_summary *summary, sw_error *err)
 {
     build_options ok = *o;
-    ok.seam_tolerance = prototype_tolerance(o, plan, k, floor);
-    ok.seam_floor = placed_seam_floor(o, plan) / largest_scale(plan, k);
+    ok.seam_tolerance = prototype_tolerance(o, plan, k, floors->sewing);
+    ok.seam_floor = floors->seam / largest_scale(plan, k);
     ok.threads = threads;
     sw_model *m = &plan->prototypes[k];
     m->up_axis = plan->views.up_axis;
@@ -167,23 +178,18 @@ static sw_status pack_prototype(const build_options *o, progress_context *pc,
     return st;
 }
 
-static double placed_floor(const sw_scene_plan *plan)
-{
-    return 1e-6 * placed_diagonal(plan);
-}
-
 static void pack_one(proto_jobs *j, size_t k, progress_context *pc)
 {
-    j->status[k] = pack_prototype(j->o, pc, j->plan, k, j->floor, j->inner_threads, &j->bytes[k],
-                                  &j->sizes[k], &j->summaries[k], &j->errors[k]);
+    j->status[k] = pack_prototype(j->o, pc, j->plan, k, &j->floors, j->inner_threads,
+                                  &j->bytes[k], &j->sizes[k], &j->summaries[k], &j->errors[k]);
 }
 
 sw_status sw_pack_tool_pack_prototype(const build_options *o, progress_context *pc,
                                       sw_scene_plan *plan, size_t k, uint8_t **bytes,
                                       size_t *size, seam_summary *summary, sw_error *err)
 {
-    sw_status st = pack_prototype(o, pc, plan, k, placed_floor(plan), o->threads, bytes, size,
-                                  summary, err);
+    scene_floors floors = floors_of(o, plan);
+    sw_status st = pack_prototype(o, pc, plan, k, &floors, o->threads, bytes, size, summary, err);
     if (st == SW_OK) {
         summary->sewing.tolerance *= largest_scale(plan, k);
         summary->seam_floor *= largest_scale(plan, k);
@@ -240,7 +246,7 @@ static sw_status pack_prototypes(const build_options *o, progress_context *pc,
     uint32_t threads = o->threads > 1 ? o->threads : 1;
     if (threads > n)
         threads = (uint32_t)n;
-    proto_jobs j = { .o = o, .plan = plan, .floor = placed_floor(plan),
+    proto_jobs j = { .o = o, .plan = plan, .floors = floors_of(o, plan),
                      .inner_threads = threads > 1 ? 1 : o->threads, .bytes = bytes,
                      .sizes = sizes, .order = calloc(n + 1, sizeof(size_t)),
                      .summaries = calloc(n + 1, sizeof(seam_summary)),
