@@ -136,9 +136,9 @@ static void test_cache_fill_keeps_the_most(void)
     FILE *f = fmemopen(buf, sizeof buf - 1, "w");
     SW_CHECK(sw_stats_write_json(&s, f, &a, NULL) == SW_OK);
     fclose(f);
-    const char *want = "\"pool\": {\"vertices\": 1024, \"indices\": 6144, \"used_vertices_max\": 900, "
-                       "\"used_indices_max\": 3000, \"drawn_vertices_max\": 200, "
-                       "\"drawn_indices_max\": 800}";
+    const char *want = "\"pool\": {\"vertices\": 1024, \"indices\": 6144, "
+                       "\"used_vertices_max\": 900, \"used_indices_max\": 3000, "
+                       "\"drawn_vertices_max\": 200, \"drawn_indices_max\": 800}";
     SW_CHECK_MSG(strstr(buf, want) != NULL, "missing %s in\n%s", want, buf);
 }
 

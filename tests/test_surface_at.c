@@ -41,7 +41,8 @@ static void sampler_agrees(const sw_trim_patch *patches, uint32_t n, int disjoin
         for (int j = -2; j <= 26; j++)
             for (int i = -2; i <= 26; i++) {
                 double u = (k == 1 ? 24 - i : i) / 12.0, v = j / 12.0;
-                mismatches += !same(sw_surface_sampler_at(&s, u, v), sw_surface_at(patches, n, u, v));
+                mismatches += !same(sw_surface_sampler_at(&s, u, v),
+                                    sw_surface_at(patches, n, u, v));
             }
     SW_CHECK_MSG(mismatches == 0, "%d points differ", mismatches);
 }

@@ -325,8 +325,8 @@ static double per(uint64_t bytes, double count) { return count > 0 ? bytes / cou
 
 static void print_sections_text(FILE *out, const sw_pack *pack)
 {
-    fprintf(out, "  %-16s %" PRIu32 " (bytes, and per stored seam vertex, per stored patch, per instance)\n",
-            "sections", pack->header->section_count);
+    fprintf(out, "  %-16s %" PRIu32 " (bytes, and per stored seam vertex, per stored patch, "
+            "per instance)\n", "sections", pack->header->section_count);
     /* 15 fits every name up to PART_TRANSFORMS; only the seam group's
      * longer names widen the column. */
     int width = 15;
@@ -344,8 +344,9 @@ static void print_sections_text(FILE *out, const sw_pack *pack)
                 per(sec->size, u.instances));
         total += sec->size;
     }
-    fprintf(out, "    %-*s %17s  size %10" PRIu64 " %9.1f %9.1f %11.1f\n", width, "all sections", "",
-            total, per(total, u.seam_vertices), per(total, u.patches), per(total, u.instances));
+    fprintf(out, "    %-*s %17s  size %10" PRIu64 " %9.1f %9.1f %11.1f\n", width,
+            "all sections", "", total, per(total, u.seam_vertices), per(total, u.patches),
+            per(total, u.instances));
 }
 
 /* Only for packs with a Seam Graph, so other packs' reports are unchanged. */
