@@ -150,9 +150,11 @@ uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count);
  * left surfaces coming into view undrawn for a frame or two while the room
  * evicted for them came free. When a pool's free units fall below half of
  * 1/SW_SEAM_HEADROOM of it, meshes out of view go, least recently drawn
- * first, until they reach it (counted in frame->evicted). */
+ * first, until they reach it (counted in frame->evicted). vertex_units and
+ * index_units: the pools' units in use, as the plan read them. */
 #define SW_SEAM_HEADROOM 8u
-void sw_seam_walk_keep_room(sw_seam_walk *w, sw_seam_frame *frame);
+void sw_seam_walk_keep_room(sw_seam_walk *w, uint32_t vertex_units, uint32_t index_units,
+                            sw_seam_frame *frame);
 
 /* Surface s's cache entry (READY) into the plan's uploads. */
 void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan);

@@ -436,10 +436,9 @@ uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
     return evict_oldest(w, count, UINT64_MAX, UINT64_MAX);
 }
 
-void sw_seam_walk_keep_room(sw_seam_walk *w, sw_seam_frame *frame)
+void sw_seam_walk_keep_room(sw_seam_walk *w, uint32_t vertex_units, uint32_t index_units,
+                            sw_seam_frame *frame)
 {
-    uint32_t vertex_units, index_units;
-    sw_seam_workers_pool_use(w->workers, &vertex_units, &index_units);
     const sw_buddy *v = &w->cache.vertex_pool, *i = &w->cache.index_pool;
     uint64_t want_v = v->units / SW_SEAM_HEADROOM, want_i = i->units / SW_SEAM_HEADROOM;
     uint64_t free_v = v->units - vertex_units, free_i = i->units - index_units;
