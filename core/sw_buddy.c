@@ -84,6 +84,7 @@ int sw_buddy_alloc(sw_buddy *b, uint32_t count, uint32_t *first)
     }
     b->order[at] = (uint8_t)want;
     b->state[at] = USED;
+    b->next[at] = SW_BUDDY_NO_OWNER;
     b->used_units += 1u << want;
     *first = at;
     return 1;
@@ -111,4 +112,63 @@ int sw_buddy_free(sw_buddy *b, uint32_t first)
 uint32_t sw_buddy_block_units(const sw_buddy *b, uint32_t first)
 {
     return first < b->units && b->state[first] == USED ? 1u << b->order[first] : 0;
+}
+
+int sw_buddy_largest_free(const sw_buddy *b)
+{
+    for (int k = SW_BUDDY_MAX_ORDER; k >= 0; k--)
+        if (b->head[k] != NONE)
+            return k;
+    return -1;
+}
+
+void sw_buddy_set_owner(sw_buddy *b, uint32_t first, uint32_t owner)
+{
+    if (first < b->units && b->state[first] == USED)
+        b->next[first] = owner;
+}
+
+/* The region [at, at + size) as it would be freed: its used units, or
+ * UINT64_MAX when a used block in it cannot be freed. Blocks tile the
+ * pool, so its blocks start at at and follow each other. */
+static uint64_t region_cost(const sw_buddy *b, uint64_t at, uint64_t size,
+                            sw_buddy_freeable_fn freeable, void *ctx)
+{
+    uint64_t used = 0;
+    for (uint64_t u = at; u < at + size; u += 1ull << b->order[u])
+        if (b->state[u] == USED) {
+            if (!freeable(ctx, (uint32_t)u, b->next[u]))
+                return UINT64_MAX;
+            used += 1ull << b->order[u];
+        }
+    return used;
+}
+
+int sw_buddy_find_region(const sw_buddy *b, uint32_t order, sw_buddy_freeable_fn freeable,
+                         void *ctx, uint32_t *first)
+{
+    if (order > SW_BUDDY_MAX_ORDER)
+        return 0;
+    uint64_t size = 1ull << order, best = UINT64_MAX;
+    for (uint64_t at = 0; at + size <= b->units;) {
+        uint64_t block = 1ull << b->order[at];
+        if (block > size) {
+            /* One block covers this region and the next: free, or one
+             * block freed whole, its cost the same in each. */
+            uint64_t cost = b->state[at] != USED                      ? 0
+                            : freeable(ctx, (uint32_t)at, b->next[at]) ? block
+                                                                       : UINT64_MAX;
+            if (cost < best)
+                best = cost, *first = (uint32_t)at;
+            at += block;
+        } else {
+            uint64_t cost = region_cost(b, at, size, freeable, ctx);
+            if (cost < best)
+                best = cost, *first = (uint32_t)at;
+            at += size;
+        }
+        if (best == 0)
+            break;
+    }
+    return best != UINT64_MAX;
 }

@@ -20,7 +20,8 @@
 
 typedef struct sw_buddy {
     uint32_t units;
-    uint32_t *next, *prev;     /* units: free-list links of a free block's first unit */
+    uint32_t *next, *prev;     /* units: free-list links of a free block's first unit;
+                                  next: a used block's owner */
     uint8_t *order;            /* units: a block's order, at its first unit */
     uint8_t *state;            /* units: 0 inside a block, 1 first unit of a free block,
                                   2 first unit of a used block */
@@ -44,5 +45,29 @@ int sw_buddy_free(sw_buddy *b, uint32_t first);
 
 /* Units the block at first spans (0 when first starts no used block). */
 uint32_t sw_buddy_block_units(const sw_buddy *b, uint32_t first);
+
+/* The order of the largest free block (2^order units), -1 when none is
+ * free: a request of 2^k units succeeds exactly when k <= it. O(orders). */
+int sw_buddy_largest_free(const sw_buddy *b);
+
+/* A used block's owner: a number the caller gives it (a surface), kept
+ * where a free block keeps its links, so it costs nothing;
+ * SW_BUDDY_NO_OWNER from alloc until set. */
+#define SW_BUDDY_NO_OWNER 0xFFFFFFFFu
+void sw_buddy_set_owner(sw_buddy *b, uint32_t first, uint32_t owner);
+
+/* Can the used block at first, owned by owner, be freed now? */
+typedef int (*sw_buddy_freeable_fn)(void *ctx, uint32_t first, uint32_t owner);
+
+/* Where a block of 2^order units can be made by freeing blocks: the
+ * aligned region of that size, inside the pool, all of whose used blocks
+ * freeable() accepts, with the fewest used units (the first such, lowest
+ * address, on a tie). 1 and *first (its first unit) when there is one, 0
+ * when not; a region already free is one with none. Freeing the region's
+ * used blocks merges it into a free block of at least that order: the
+ * room the largest-free check above asks for, made by freeing
+ * where it helps rather than oldest first. O(blocks). */
+int sw_buddy_find_region(const sw_buddy *b, uint32_t order, sw_buddy_freeable_fn freeable,
+                         void *ctx, uint32_t *first);
 
 #endif

@@ -54,6 +54,77 @@ static void test_odd_range_and_bad_input(void)
     SW_CHECK(sw_buddy_init(&b, 0, &a, NULL) == SW_ERR_ARG);
 }
 
+/* Blocks owned by a multiple of 3 cannot be freed (test_random_...'s
+ * owners are its slots). */
+static int freeable(void *ctx, uint32_t first, uint32_t owner)
+{
+    (void)ctx, (void)first;
+    return owner % 3 != 0;
+}
+
+/* From the shadow map: the used units of the blocks to free for the region
+ * [at, at + size), UINT32_MAX when one of them cannot be freed. */
+static uint32_t shadow_cost(const sw_buddy *b, const uint32_t *owner, const uint32_t *live,
+                            uint32_t at, uint32_t size)
+{
+    uint32_t cost = 0, last = 0xFFFFFFFFu;
+    for (uint32_t u = at; u < at + size; u++)
+        if (owner[u] != 0xFFFFFFFFu && owner[u] != last) {
+            last = owner[u];
+            if (!freeable(NULL, 0, owner[u]))
+                return UINT32_MAX;
+            cost += sw_buddy_block_units(b, live[owner[u]]);
+        }
+    return cost;
+}
+
+/* What sw_buddy_find_region must find: the cheapest aligned region's
+ * cost, UINT32_MAX when none can be freed. */
+static uint32_t cheapest_region(const sw_buddy *b, const uint32_t *owner, const uint32_t *live,
+                                uint32_t units, uint32_t order)
+{
+    uint32_t size = 1u << order, best = UINT32_MAX;
+    for (uint32_t at = 0; at + size <= units; at += size) {
+        uint32_t cost = shadow_cost(b, owner, live, at, size);
+        best = cost < best ? cost : best;
+    }
+    return best;
+}
+
+/* The region search and the largest free block against the shadow map;
+ * then the found region freed gives a block of that order. */
+static void check_regions(sw_buddy *b, uint32_t *owner, const uint32_t *live, int *used,
+                          uint32_t units)
+{
+    for (uint32_t order = 0; order <= 10; order++) {
+        uint32_t want = cheapest_region(b, owner, live, units, order), at = 0;
+        int found = sw_buddy_find_region(b, order, freeable, NULL, &at);
+        SW_CHECK_MSG(found == (want != UINT32_MAX), "order %u: found %d", (unsigned)order,
+                     found);
+        if (!found)
+            continue;
+        SW_CHECK(at % (1u << order) == 0 && at + (1u << order) <= units);
+        SW_CHECK(shadow_cost(b, owner, live, at, 1u << order) == want);
+        SW_CHECK((want == 0) == (sw_buddy_largest_free(b) >= (int)order));
+    }
+    int k = sw_buddy_largest_free(b);
+    uint32_t at;
+    SW_CHECK(k < 0 || (sw_buddy_alloc(b, 1u << k, &at) && sw_buddy_free(b, at)));
+    SW_CHECK(k >= SW_BUDDY_MAX_ORDER || !sw_buddy_alloc(b, 2u << k, &at));
+    /* Free the region found for 2^6 units: then a block of 2^6 fits. */
+    if (!sw_buddy_find_region(b, 6, freeable, NULL, &at))
+        return;
+    for (uint32_t u = at; u < at + 64; u++)
+        if (owner[u] != 0xFFFFFFFFu) {
+            uint32_t i = owner[u];
+            for (uint32_t v = 0; v < units; v++)
+                owner[v] = owner[v] == i ? 0xFFFFFFFFu : owner[v];
+            SW_CHECK(sw_buddy_free(b, live[i]));
+            used[i] = 0;
+        }
+    SW_CHECK(sw_buddy_largest_free(b) >= 6);
+}
+
 static void test_random_blocks_never_overlap(void)
 {
     enum { UNITS = 1000, LIVE = 64, STEPS = 20000 };
@@ -85,13 +156,17 @@ static void test_random_blocks_never_overlap(void)
         for (uint32_t k = 0; k < n && at + k < UNITS; k++)
             bad += owner[at + k] != 0xFFFFFFFFu, owner[at + k] = (uint32_t)i;
         live[i] = at, used[i] = 1;
+        sw_buddy_set_owner(&b, at, (uint32_t)i);
     }
     SW_CHECK_MSG(bad == 0, "%u overlaps or bad blocks", (unsigned)bad);
     SW_CHECK(fails < STEPS / 4);
+    check_regions(&b, owner, live, used, UNITS);
     for (int i = 0; i < LIVE; i++)
         if (used[i])
             SW_CHECK(sw_buddy_free(&b, live[i]));
     SW_CHECK(b.used_units == 0);
+    memset(owner, 0xFF, sizeof owner);
+    check_regions(&b, owner, live, used, UNITS);
     uint32_t at;
     SW_CHECK(sw_buddy_alloc(&b, 512, &at)); /* merged back: 512 + 256 + 128 + 64 + 32 + 8 */
 }

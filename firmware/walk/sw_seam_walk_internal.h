@@ -144,14 +144,26 @@ void sw_seam_walk_restitch(sw_seam_walk *w, sw_seam_plan *plan, sw_seam_frame *f
  * many. */
 uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count);
 
+/* Room for a block of 2^order units in pool (SW_SEAM_VERTEX_POOL or
+ * SW_SEAM_INDEX_POOL), made by giving up the meshes out of view in the
+ * one aligned region whose freeing makes it, fewest units first
+ * (sw_buddy_find_region), their frames finished so the room is free at
+ * once. Giving up the least recently drawn frees as much but leaves it
+ * scattered in blocks too small: at 400,000 patches a stand-in of 2,000
+ * vertices waited, undrawn, with a tenth of the pool free. Returns the
+ * meshes given up (0 also when the room was free already). */
+uint32_t sw_seam_walk_room_for(sw_seam_walk *w, int pool, uint32_t order);
+
 /* The threaded walk keeps a share of the cache's pools free for the next
  * frame: stand-ins are made in V's half of the frame from the room there
  * is, and a full cache (meshes out of view are kept until room is needed)
  * left surfaces coming into view undrawn for a frame or two while the room
  * evicted for them came free. When a pool's free units fall below half of
  * 1/SW_SEAM_HEADROOM of it, meshes out of view go, least recently drawn
- * first, until they reach it (counted in frame->evicted). vertex_units and
- * index_units: the pools' units in use, as the plan read them. */
+ * first, until they reach it (counted in frame->evicted); and a block as large as
+ * the largest asked (up to a 32nd of the pool) free in each, by
+ * sw_seam_walk_room_for. vertex_units and index_units: the pools' units in
+ * use, as the plan read them. */
 #define SW_SEAM_HEADROOM 8u
 void sw_seam_walk_keep_room(sw_seam_walk *w, uint32_t vertex_units, uint32_t index_units,
                             sw_seam_frame *frame);

@@ -215,21 +215,35 @@ static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
     return w->mixed_shown;
 }
 
-/* No room for a stand-in: meshes out of view go, least recently drawn
- * first, in rounds of 64, 128, 256... a frame (each round sorts the cache:
- * at most log2(surfaces / 64) + 1 of them) until none is left out of view.
+/* No room for a stand-in. First the region that gives the block refused
+ * (sw_seam_walk_room_for): a pool most of whose free room lies in blocks
+ * too small kept refusing it while least recently drawn meshes went.
+ * Else meshes out of view go, least recently drawn first, in rounds of
+ * 64, 128, 256... a frame (each round sorts the cache: at most
+ * log2(surfaces / 64) + 1 of them) until none is left out of view.
  * Those drawn in frames that have finished (most of them: they went out
  * of view a while ago) free their blocks at once, so the stand-in is tried
  * again now, not a frame later, in which a turn of the eye would leave
  * hundreds of surfaces undrawn. 1 when some went. */
 static int make_room(sw_seam_walk *w, sw_seam_frame *frame)
 {
+    uint32_t gone = 0;
+    for (int pool = SW_SEAM_VERTEX_POOL; pool <= SW_SEAM_INDEX_POOL; pool++) {
+        uint32_t largest;
+        int refused;
+        sw_seam_workers_asked(w->workers, pool, &largest, &refused);
+        if (refused >= 0)
+            gone += sw_seam_walk_room_for(w, pool, (uint32_t)refused);
+    }
+    frame->evicted += gone;
+    if (gone > 0)
+        return 1;
     if (w->standin_evicted != w->frame)
         w->standin_evicted = w->frame, w->standin_evict_rounds = 0;
     if (w->standin_evict_rounds == UINT32_MAX)
         return 0;   /* nothing left out of view this frame */
     uint32_t want = 64u << (w->standin_evict_rounds < 24 ? w->standin_evict_rounds : 24);
-    uint32_t gone = sw_seam_walk_evict(w, want);
+    gone = sw_seam_walk_evict(w, want);
     w->standin_evict_rounds = gone < want ? UINT32_MAX : w->standin_evict_rounds + 1;
     frame->evicted += gone;
     return gone > 0;

@@ -431,6 +431,46 @@ static uint32_t evict_oldest(sw_seam_walk *w, uint32_t count, uint64_t vertex_un
     return k;
 }
 
+typedef struct room_search {
+    sw_seam_walk *w;
+    int pool;
+} room_search;
+
+/* A block V may give up at once: the mesh of its owner, out of view, last
+ * drawn in a frame that has finished (so its blocks come back now). */
+static int freeable(void *ctx, uint32_t first, uint32_t owner)
+{
+    const room_search *r = ctx;
+    const sw_seam_walk *w = r->w;
+    if (owner >= w->cache.surface_count)
+        return 0;
+    const sw_seam_entry *e = &w->cache.entries[owner];
+    uint32_t block = r->pool == SW_SEAM_INDEX_POOL ? e->index_block : e->vertex_block;
+    return e->state == SW_SEAM_READY && w->evictable[owner] && block == first &&
+           sw_retire_ring_done(&w->workers->retire, e->last_frame);
+}
+
+uint32_t sw_seam_walk_room_for(sw_seam_walk *w, int pool, uint32_t order)
+{
+    room_search search = { w, pool };
+    uint32_t first = 0, gone = 0;
+    if (sw_seam_workers_find_room(w->workers, pool, order, freeable, &search, &first) != 1)
+        return 0;
+    uint64_t end = first + (1ull << order);
+    sw_seam_cache *c = &w->cache;
+    for (uint32_t s = 0; s < c->surface_count; s++) {
+        const sw_seam_entry *e = &c->entries[s];
+        uint32_t block = pool == SW_SEAM_INDEX_POOL ? e->index_block : e->vertex_block;
+        if (e->state != SW_SEAM_READY || !w->evictable[s] || block < first || block >= end)
+            continue;
+        retire_mesh(w, s);
+        sw_seam_walk_restitch_around(w, s);
+        c->evictions++;
+        gone++;
+    }
+    return gone;
+}
+
 uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
 {
     return evict_oldest(w, count, UINT64_MAX, UINT64_MAX);
@@ -442,11 +482,22 @@ void sw_seam_walk_keep_room(sw_seam_walk *w, uint32_t vertex_units, uint32_t ind
     const sw_buddy *v = &w->cache.vertex_pool, *i = &w->cache.index_pool;
     uint64_t want_v = v->units / SW_SEAM_HEADROOM, want_i = i->units / SW_SEAM_HEADROOM;
     uint64_t free_v = v->units - vertex_units, free_i = i->units - index_units;
-    if (free_v >= want_v / 2 && free_i >= want_i / 2)
-        return;   /* between a half and the whole share: not every frame */
     uint32_t before = w->cache.evictions;
-    evict_oldest(w, UINT32_MAX, free_v < want_v ? want_v - free_v : 0,
-                 free_i < want_i ? want_i - free_i : 0);
+    if (free_v < want_v / 2 || free_i < want_i / 2)   /* between a half and the whole share:
+                                                         not every frame */
+        evict_oldest(w, UINT32_MAX, free_v < want_v ? want_v - free_v : 0,
+                     free_i < want_i ? want_i - free_i : 0);
+    /* The free share may lie in blocks too small for the largest mesh
+     * asked: a block that size kept free, up to a 32nd of the pool. */
+    for (int pool = SW_SEAM_VERTEX_POOL; pool <= SW_SEAM_INDEX_POOL; pool++) {
+        const sw_buddy *b = pool == SW_SEAM_INDEX_POOL ? i : v;
+        uint32_t largest, cap = 0;
+        int refused;
+        sw_seam_workers_asked(w->workers, pool, &largest, &refused);
+        while ((2ull << cap) <= b->units / 32)
+            cap++;
+        sw_seam_walk_room_for(w, pool, largest < cap ? largest : cap);
+    }
     frame->evicted += w->cache.evictions - before;
 }
 

@@ -27,28 +27,80 @@ static uint64_t now_ns(void)
 /* The cache's blocks for a worker's mesh: retired blocks whose frame has
  * finished go back first. Under alloc_lock, which the workers and V (for
  * stand-ins) take, never P. */
+static uint32_t order_of(uint32_t units)
+{
+    uint32_t k = 0;
+    while ((1ull << k) < units)
+        k++;
+    return k;
+}
+
+/* Under alloc_lock: retired blocks whose frames have finished go back. */
+static void take_retired(sw_seam_workers *p)
+{
+    sw_retired r;
+    while (sw_retire_ring_take(&p->retire, &r)) {
+        sw_buddy_free(&p->cache->vertex_pool, r.vertex_block);
+        sw_buddy_free(&p->cache->index_pool, r.index_block);
+    }
+}
+
+/* Under alloc_lock: a request of units of pool noted for
+ * sw_seam_workers_asked. */
+static void note_asked(sw_seam_workers *p, int pool, uint32_t units, int refused)
+{
+    uint32_t k = order_of(units);
+    p->asked_order[pool] = k > p->asked_order[pool] ? k : p->asked_order[pool];
+    if (refused)
+        p->refused_order[pool] = (int)k;
+}
+
 int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e)
 {
-    (void)s;
     sw_seam_workers *p = ctx;
     sw_seam_cache *c = p->cache;
     uint32_t vu = (n ? n : 1), iu = (m ? m : 1);
     vu = (vu + SW_SEAM_CACHE_VERTEX_UNIT - 1) / SW_SEAM_CACHE_VERTEX_UNIT;
     iu = (iu + SW_SEAM_CACHE_INDEX_UNIT - 1) / SW_SEAM_CACHE_INDEX_UNIT;
     pthread_mutex_lock(&p->alloc_lock);
-    sw_retired r;
-    while (sw_retire_ring_take(&p->retire, &r)) {
-        sw_buddy_free(&c->vertex_pool, r.vertex_block);
-        sw_buddy_free(&c->index_pool, r.index_block);
-    }
+    take_retired(p);
     uint32_t vb, ib;
-    int ok = sw_buddy_alloc(&c->vertex_pool, vu, &vb);
-    if (ok && !(ok = sw_buddy_alloc(&c->index_pool, iu, &ib)))
+    int vertex_ok = sw_buddy_alloc(&c->vertex_pool, vu, &vb);
+    int ok = vertex_ok && sw_buddy_alloc(&c->index_pool, iu, &ib);
+    if (vertex_ok && !ok)
         sw_buddy_free(&c->vertex_pool, vb);
+    note_asked(p, SW_SEAM_VERTEX_POOL, vu, !vertex_ok);
+    note_asked(p, SW_SEAM_INDEX_POOL, iu, vertex_ok && !ok);
+    if (ok) {
+        sw_buddy_set_owner(&c->vertex_pool, vb, s);
+        sw_buddy_set_owner(&c->index_pool, ib, s);
+    }
     pthread_mutex_unlock(&p->alloc_lock);
     if (ok)
         e->vertex_block = vb, e->index_block = ib;
     return ok;
+}
+
+void sw_seam_workers_asked(sw_seam_workers *p, int pool, uint32_t *largest, int *refused)
+{
+    pthread_mutex_lock(&p->alloc_lock);
+    *largest = p->asked_order[pool];
+    *refused = p->refused_order[pool];
+    pthread_mutex_unlock(&p->alloc_lock);
+}
+
+int sw_seam_workers_find_room(sw_seam_workers *p, int pool, uint32_t order,
+                              sw_buddy_freeable_fn freeable, void *ctx, uint32_t *first)
+{
+    sw_buddy *b = pool == SW_SEAM_INDEX_POOL ? &p->cache->index_pool : &p->cache->vertex_pool;
+    pthread_mutex_lock(&p->alloc_lock);
+    take_retired(p);
+    p->refused_order[pool] = -1;
+    int room = sw_buddy_largest_free(b) >= (int)order            ? 2
+               : sw_buddy_find_region(b, order, freeable, ctx, first) ? 1
+                                                                       : 0;
+    pthread_mutex_unlock(&p->alloc_lock);
+    return room;
 }
 
 void sw_seam_workers_pool_use(sw_seam_workers *p, uint32_t *vertex_units, uint32_t *index_units)
@@ -174,6 +226,7 @@ sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack
         return sw_error_set(err, SW_ERR_ARG, "workers: %u, expected 1 to %d", (unsigned)count,
                             SW_SEAM_WORKERS_MAX);
     p->pack = pack, p->cache = cache, p->count = count;
+    p->refused_order[0] = p->refused_order[1] = -1;
     atomic_init(&p->outstanding, 0);
     atomic_init(&p->stop, 0);
     atomic_init(&p->stall, 0);

@@ -34,6 +34,7 @@
 #include <stdint.h>
 
 #include "sw_arena.h"
+#include "sw_buddy.h"
 #include "sw_handoff.h"
 #include "sw_seam_make.h"
 #include "sw_steal_queue.h"
@@ -67,6 +68,10 @@ typedef struct sw_seam_workers {
     sw_publish_slot *slots;       /* surface_count */
     sw_retire_ring retire;
     pthread_mutex_t alloc_lock;
+    uint32_t asked_order[2];      /* under alloc_lock: the largest block asked of the vertex
+                                     pool and of the index pool (its order) */
+    int refused_order[2];         /* the last one refused since the last
+                                     sw_seam_workers_find_room, -1 none */
     sem_t wake;                   /* posted by the producer after pushing */
     uint32_t next_queue;          /* producer's: round robin */
     _Atomic uint32_t outstanding;
@@ -105,6 +110,23 @@ int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam
 /* The units the cache's pools have in use (retired blocks not yet given
  * back included), read under alloc_lock. */
 void sw_seam_workers_pool_use(sw_seam_workers *p, uint32_t *vertex_units, uint32_t *index_units);
+
+/* The cache's pools as V keeps room in them. */
+enum { SW_SEAM_VERTEX_POOL = 0, SW_SEAM_INDEX_POOL = 1 };
+
+/* The order of the largest block asked of pool so far, and of the last
+ * one it refused since the last sw_seam_workers_find_room (-1: none), read
+ * under alloc_lock. */
+void sw_seam_workers_asked(sw_seam_workers *p, int pool, uint32_t *largest, int *refused);
+
+/* Room for a block of 2^order units of pool (sw_buddy_find_region under
+ * alloc_lock, retired blocks whose frames have finished given back
+ * first): 2 when one is free, 1 and *first when the region from *first
+ * would give one once the blocks in it that freeable accepts (their owner:
+ * the surface) are given up, 0 when no region would. The caller gives
+ * them up after the call (sw_seam_workers_retire takes the lock). */
+int sw_seam_workers_find_room(sw_seam_workers *p, int pool, uint32_t order,
+                              sw_buddy_freeable_fn freeable, void *ctx, uint32_t *first);
 
 /* Producer: a mesh given up, its blocks back to the pool at once when the
  * frame that last drew it has finished (under alloc_lock), else through
