@@ -110,7 +110,8 @@ typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
     uint32_t version;                 /* SW_PACK_VERSION */
     uint32_t byte_order;              /* SW_PACK_BYTE_ORDER_MARK */
     uint64_t total_size;              /* bytes in the file */
-    uint64_t runtime_bytes;           /* sw_pack_runtime_bytes(total_size, patch_count, walk) */
+    uint64_t runtime_bytes;           /* sw_pack_runtime_bytes(patch_count, walk): the arena
+                                         the runtime needs beside the pack's own bytes */
     uint32_t section_count;           /* 1..SW_PACK_MAX_SECTIONS */
     uint32_t section_table_offset;    /* 64: the table follows the header */
     uint64_t header_checksum;         /* XXH3-64 of header (this field 0) + section table */
@@ -369,11 +370,17 @@ static inline double sw_pack_patches_diagonal(const sw_pack_patch *patches, uint
     return sqrt(d);
 }
 
-/* runtime_bytes for a pack of total_size bytes and patch_count patches whose
- * walk takes walk_bytes (sw_walk_arena_bytes of its Seam Graph, 0 without
- * one): the pack itself, 64-byte aligned, the per-patch state and the walk.
- * Writer, signer and reader all use it (PACK_FORMAT.md, runtime_bytes). */
-uint64_t sw_pack_runtime_bytes(uint64_t total_size, uint32_t patch_count, uint64_t walk_bytes);
+/* runtime_bytes for a pack of patch_count patches whose walk takes
+ * walk_bytes (sw_walk_arena_bytes of its Seam Graph, 0 without one): the
+ * per-patch state and the walk, and 64 bytes of alignment. Not the pack's
+ * own bytes: the runtime maps the file (sw_pack_map_checked) and copies it
+ * into the arena only when it cannot (sw_pack_arena_bytes). Writer, signer
+ * and reader all use it (PACK_FORMAT.md, runtime_bytes). */
+uint64_t sw_pack_runtime_bytes(uint32_t patch_count, uint64_t walk_bytes);
+
+/* Arena bytes a pack of total_size bytes takes when it is copied into the
+ * arena (sw_pack_load): the file, 64-byte aligned, and the alignment. */
+uint64_t sw_pack_arena_bytes(uint64_t total_size);
 
 /* Validates everything (every rule in PACK_FORMAT.md, "Validation rules")
  * and fills out with views into data; nothing is copied or allocated. data
@@ -412,6 +419,32 @@ typedef sw_status (*sw_pack_raw_check)(void *user, const uint8_t *bytes, size_t 
 sw_status sw_pack_load_checked(const char *path, sw_arena *arena, const sw_parts_runner *runner,
                                sw_pack_raw_check check, void *user, sw_pack *out,
                                sw_error *err);
+
+/* A pack file mapped read-only (sw_pack_map_checked). */
+typedef struct sw_pack_mapping {
+    void *base;
+    size_t size;
+} sw_pack_mapping;
+
+/* 1 when the pack file at path may be mapped rather than copied: a regular
+ * file owned by root and writable by neither group nor others, so no one
+ * but root can change its bytes while the walk reads them (checked once,
+ * then walked: bytes changed in place after the checks could index out of
+ * bounds). Root's tools never write into a pack that may be walked:
+ * seamwalk-pack writes a new file and renames it, seamwalk-flash writes
+ * each install into a new file (firmware/store/STORE.md). A file its
+ * reader owns could be changed by it: it is copied. */
+int sw_pack_file_mappable(const char *path);
+
+/* sw_pack_load_checked with the file mapped read-only (mmap) instead of
+ * copied into an arena: its pages stay the kernel's to drop and read again
+ * (clean file pages), not the arena's. The file must still be mappable
+ * (sw_pack_file_mappable) when opened: SW_ERR_IO otherwise. On success
+ * out views *map until sw_pack_unmap; on failure nothing stays mapped. */
+sw_status sw_pack_map_checked(const char *path, const sw_parts_runner *runner,
+                              sw_pack_raw_check check, void *user, sw_pack_mapping *map,
+                              sw_pack *out, sw_error *err);
+void sw_pack_unmap(sw_pack_mapping *map);
 
 const char *sw_section_type_name(uint32_t type); /* "META", ... or "unknown" */
 

@@ -117,43 +117,42 @@ uint64_t sw_pack_expand_shared_bytes(const uint64_t counts[SW_SPACE_COUNT])
     return expand_bytes(counts, 1);
 }
 
-uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_graph *stored,
+uint64_t sw_pack_instanced_runtime_bytes(const sw_seam_graph *stored,
                                          const sw_pack_surface *surfaces,
                                          const uint64_t counts[SW_SPACE_COUNT])
 {
     if (counts[SW_SPACE_PATCHES] > UINT32_MAX)
         return UINT64_MAX;
     uint64_t walk = stored ? sw_walk_arena_bytes_placed(stored, surfaces, counts) : 0;
-    uint64_t bytes = sw_pack_runtime_bytes(total_size, (uint32_t)counts[SW_SPACE_PATCHES], walk);
+    uint64_t bytes = sw_pack_runtime_bytes((uint32_t)counts[SW_SPACE_PATCHES], walk);
     uint64_t expand = sw_pack_expand_shared_bytes(counts);
     return bytes > UINT64_MAX - expand ? UINT64_MAX : bytes + expand;
 }
 
-uint64_t sw_pack_runtime_bytes_at(const sw_pack *pack, uint64_t total_size)
+uint64_t sw_pack_runtime_bytes_of(const sw_pack *pack)
 {
     const sw_seam_graph *g = pack->seam_header ? &pack->seam : NULL;
     if (!pack->instances)
-        return sw_pack_runtime_bytes(total_size, pack->meta->patch_count,
+        return sw_pack_runtime_bytes(pack->meta->patch_count,
                                      g ? sw_walk_arena_bytes(g, pack->surfaces) : 0);
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    return sw_pack_instanced_runtime_bytes(total_size, g, pack->surfaces, counts);
+    return sw_pack_instanced_runtime_bytes(g, pack->surfaces, counts);
 }
 
 void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
 {
     const sw_seam_graph *g = pack->seam_header ? &pack->seam : NULL;
-    uint64_t total = pack->header->total_size;
-    out->pack = (total + SW_PACK_ALIGN - 1) / SW_PACK_ALIGN * SW_PACK_ALIGN + SW_PACK_ALIGN;
     if (!pack->instances) {
-        out->patch_state = (uint64_t)pack->meta->patch_count * SW_RUNTIME_BYTES_PER_PATCH;
+        out->patch_state =
+            (uint64_t)pack->meta->patch_count * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
         out->placed = 0;
         sw_walk_pools(g, pack->surfaces, out->walk);
         return;
     }
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    out->patch_state = counts[SW_SPACE_PATCHES] * SW_RUNTIME_BYTES_PER_PATCH;
+    out->patch_state = counts[SW_SPACE_PATCHES] * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
     out->placed = sw_pack_expand_shared_bytes(counts);
     if (g)
         sw_walk_pools_placed(g, pack->surfaces, counts, out->walk);
@@ -164,10 +163,10 @@ void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
 int sw_runtime_pool_list(const sw_runtime_pools *p, const char *names[SW_RUNTIME_POOL_COUNT],
                          uint64_t bytes[SW_RUNTIME_POOL_COUNT])
 {
-    const char *fixed[3] = { "pack", "patch state", "placed scene" };
-    const uint64_t sizes[3] = { p->pack, p->patch_state, p->placed };
+    const char *fixed[2] = { "patch state", "placed scene" };
+    const uint64_t sizes[2] = { p->patch_state, p->placed };
     int n = 0;
-    for (int i = 0; i < 3; i++)
+    for (int i = 0; i < 2; i++)
         names[n] = fixed[i], bytes[n++] = sizes[i];
     for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
         names[n] = sw_walk_pool_names[i], bytes[n++] = p->walk[i];

@@ -48,32 +48,31 @@ void sw_pack_placed_counts(const sw_pack_prototype *prototypes, const sw_pack_in
 uint64_t sw_pack_expand_bytes(const uint64_t counts[SW_SPACE_COUNT]);
 uint64_t sw_pack_expand_shared_bytes(const uint64_t counts[SW_SPACE_COUNT]);
 
-/* runtime_bytes of an instanced pack of total_size bytes: the pack, the
- * expansion and the walk over the placed scene (stored: the pack's own
- * Seam Graph and surfaces, whose largest surface sizes the walk's buffers;
- * NULL graph: no walk). */
-uint64_t sw_pack_instanced_runtime_bytes(uint64_t total_size, const sw_seam_graph *stored,
+/* runtime_bytes of an instanced pack: the per-patch state, the expansion
+ * and the walk over the placed scene (stored: the pack's own Seam Graph
+ * and surfaces, whose largest surface sizes the walk's buffers; NULL
+ * graph: no walk). */
+uint64_t sw_pack_instanced_runtime_bytes(const sw_seam_graph *stored,
                                          const sw_pack_surface *surfaces,
                                          const uint64_t counts[SW_SPACE_COUNT]);
 
-/* runtime_bytes of a validated pack were it total_size bytes (the signer
- * adds a section), placed or not. */
-uint64_t sw_pack_runtime_bytes_at(const sw_pack *pack, uint64_t total_size);
+/* runtime_bytes of a validated pack, placed or not. */
+uint64_t sw_pack_runtime_bytes_of(const sw_pack *pack);
 
-/* A validated pack's runtime_bytes pool by pool (they add up to it): the
- * pack as read into the arena, each placed patch's state, the placed
- * scene's expansion (version 2; 0 otherwise) and the walk's pools
+/* A validated pack's runtime_bytes pool by pool (they add up to it): each
+ * placed patch's state (and the 64 bytes of alignment), the placed scene's
+ * expansion (version 2; 0 otherwise) and the walk's pools
  * (sw_walk_memory.h). */
 typedef struct sw_runtime_pools {
-    uint64_t pack, patch_state, placed;
+    uint64_t patch_state, placed;
     uint64_t walk[SW_WALK_POOL_COUNT];
 } sw_runtime_pools;
 void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out);
 
 /* Those pools as a list of names and bytes, in runtime_bytes' order (the
- * pack, the patch state, the placed scene, then the walk's): returns
+ * patch state, the placed scene, then the walk's): returns
  * SW_RUNTIME_POOL_COUNT. */
-enum { SW_RUNTIME_POOL_COUNT = 3 + SW_WALK_POOL_COUNT };
+enum { SW_RUNTIME_POOL_COUNT = 2 + SW_WALK_POOL_COUNT };
 int sw_runtime_pool_list(const sw_runtime_pools *pools, const char *names[SW_RUNTIME_POOL_COUNT],
                          uint64_t bytes[SW_RUNTIME_POOL_COUNT]);
 

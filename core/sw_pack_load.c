@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* Reading a pack file: its header alone (to size the arena), or the whole
- * file into the arena and then the checks of sw_pack_read.c
+ * file, into the arena or mapped, and then the checks of sw_pack_read.c
  * (sw_pack_open_memory_with); the file I/O only. */
+#define _DEFAULT_SOURCE /* MAP_POPULATE */
 #include <errno.h>
 #include <fcntl.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -128,4 +130,73 @@ sw_status sw_pack_load_checked(const char *path, sw_arena *arena, const sw_parts
         sw_error_prefix(err, "%s", path);
     }
     return s;
+}
+
+/* Only root can change it (sw_pack_file_mappable). */
+static int mappable(const struct stat *st)
+{
+    return S_ISREG(st->st_mode) && st->st_uid == 0 && (st->st_mode & (S_IWGRP | S_IWOTH)) == 0;
+}
+
+int sw_pack_file_mappable(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && mappable(&st);
+}
+
+/* The open file mapped, checked and validated; map filled on success. */
+static sw_status map_fd(int fd, const sw_parts_runner *runner, const raw_check *check,
+                        sw_pack_mapping *map, sw_pack *out, sw_error *err)
+{
+    struct stat st;
+    if (fstat(fd, &st) != 0)
+        return sw_error_set(err, SW_ERR_IO, "cannot stat: %s", strerror(errno));
+    if (!mappable(&st))
+        return sw_error_set(err, SW_ERR_IO, "no longer a file only root can write (owner %u, "
+                            "mode %04o): changed while the walk started",
+                            (unsigned)st.st_uid, (unsigned)(st.st_mode & 07777));
+    uint64_t file_size = (uint64_t)st.st_size;
+    if (file_size < sizeof(sw_pack_header) || file_size > SIZE_MAX)
+        return sw_error_set(err, SW_ERR_FORMAT, "header: the file is %llu bytes, a pack is at "
+                            "least %zu", (unsigned long long)file_size, sizeof(sw_pack_header));
+    /* Populated at once: the checks read every byte, in order. */
+    void *base = mmap(NULL, (size_t)file_size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    if (base == MAP_FAILED)
+        return sw_error_set(err, SW_ERR_IO, "cannot map %llu bytes: %s",
+                            (unsigned long long)file_size, strerror(errno));
+    sw_status s = check->fn ? check->fn(check->user, base, (size_t)file_size, err) : SW_OK;
+    if (s == SW_OK)
+        s = sw_pack_open_memory_with(base, (size_t)file_size, runner, out, err);
+    if (s != SW_OK) {
+        munmap(base, (size_t)file_size);
+        return s;
+    }
+    *map = (sw_pack_mapping){ base, (size_t)file_size };
+    return SW_OK;
+}
+
+sw_status sw_pack_map_checked(const char *path, const sw_parts_runner *runner,
+                              sw_pack_raw_check check_fn, void *user, sw_pack_mapping *map,
+                              sw_pack *out, sw_error *err)
+{
+    const raw_check check = { check_fn, user };
+    *map = (sw_pack_mapping){ NULL, 0 };
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        sw_error_set(err, SW_ERR_IO, "cannot open: %s", strerror(errno));
+        sw_error_prefix(err, "%s", path);
+        return SW_ERR_IO;
+    }
+    sw_status s = map_fd(fd, runner, &check, map, out, err);
+    close(fd);   /* the mapping keeps the file */
+    if (s != SW_OK)
+        sw_error_prefix(err, "%s", path);
+    return s;
+}
+
+void sw_pack_unmap(sw_pack_mapping *map)
+{
+    if (map->base)
+        munmap(map->base, map->size);
+    *map = (sw_pack_mapping){ NULL, 0 };
 }

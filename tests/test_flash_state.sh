@@ -149,5 +149,32 @@ boot
 check "escape in a slot's name: the boot starts B" both 0 "starting slot B \('cup-2' version 2\)"
 check "escape in a slot's name: the boot prints no control byte" no_controls
 
+# A unit on trial walks its pending slot mapped (a file only root can
+# write); an install meanwhile replaces that slot: the walk's bytes stay as
+# they were (the install writes a new file), and the slot holds the new pack.
+make_unit
+rm -f "$work/mapped"*
+python3 - "$unit/slot-b.swpack" "$work/mapped" <<'PYEOF2' &
+import mmap, os, sys, time
+f = open(sys.argv[1], 'rb')
+m = mmap.mmap(f.fileno(), 0, prot=mmap.PROT_READ)
+before = bytes(m)
+open(sys.argv[2] + '.ready', 'w').close()
+for _ in range(3000):
+    if os.path.exists(sys.argv[2] + '.go'):
+        break
+    time.sleep(0.01)
+same = bytes(m) == before
+open(sys.argv[2], 'w').write('same' if same else 'changed')
+PYEOF2
+mapper=$!
+for _ in $(seq 300); do [ -e "$work/mapped.ready" ] && break; sleep 0.01; done
+fl install "$fixture/old.swpack"
+check "an install over the walked slot: it installs" rc 0
+touch "$work/mapped.go"; wait "$mapper"
+check "an install over the walked slot: the walk's mapped bytes unchanged" \
+  grep -qx same "$work/mapped"
+check "an install over the walked slot: the slot holds the new pack" cmp -s "$fixture/old.swpack" "$unit/slot-b.swpack"
+
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]

@@ -3,6 +3,8 @@
  * refuses and how it says so. The writer's side is in test_pack_write.c. */
 #include <stdint.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <xxhash.h>
 
 #include "sw_test.h"
@@ -49,7 +51,7 @@ static void test_round_trip_keeps_every_field(void)
     sw_error err = { 0 };
     SW_CHECK_MSG(sw_pack_open_memory(bytes, size, &pack, &err) == SW_OK, "%s", err.message);
     SW_CHECK(pack.header->total_size == size);
-    SW_CHECK(pack.header->runtime_bytes == sw_pack_runtime_bytes(size, 3, 0));
+    SW_CHECK(pack.header->runtime_bytes == sw_pack_runtime_bytes(3, 0));
     SW_CHECK(pack.header->section_count == SAMPLE_SECTIONS);
     SW_CHECK(memcmp(pack.meta, &s.meta, sizeof s.meta) == 0);
     SW_CHECK(memcmp(pack.parts, s.parts, sizeof s.parts) == 0);
@@ -113,11 +115,13 @@ static void test_bezier_only_pack_has_no_optional_views(void)
 
 static void test_runtime_bytes_formula(void)
 {
-    /* 100 bytes round up to 128, 10 patches x 16, 64 slack, the walk. */
-    SW_CHECK(sw_pack_runtime_bytes(100, 10, 0) == 128 + 160 + 64);
-    SW_CHECK(sw_pack_runtime_bytes(128, 0, 1000) == 128 + 64 + 1000);
-    SW_CHECK(sw_pack_runtime_bytes(UINT64_MAX, 1, 0) == UINT64_MAX);
-    SW_CHECK(sw_pack_runtime_bytes(100, 1, UINT64_MAX) == UINT64_MAX);
+    /* 10 patches x 16, 64 slack, the walk; not the pack's own bytes. */
+    SW_CHECK(sw_pack_runtime_bytes(10, 0) == 160 + 64);
+    SW_CHECK(sw_pack_runtime_bytes(0, 1000) == 64 + 1000);
+    SW_CHECK(sw_pack_runtime_bytes(1, UINT64_MAX) == UINT64_MAX);
+    /* Copied into an arena: 100 bytes round up to 128, and 64 slack. */
+    SW_CHECK(sw_pack_arena_bytes(100) == 128 + 64);
+    SW_CHECK(sw_pack_arena_bytes(UINT64_MAX) == UINT64_MAX);
 }
 
 /* The header's runtime_bytes: less than the reader's formula is refused
@@ -562,13 +566,76 @@ static void test_load_into_small_arena_fails_cleanly(void)
     SW_CHECK_MSG(strncmp(err.message, path, strlen(path)) == 0 && strstr(err.message, "arena"),
                  "%s", err.message);
     SW_CHECK(arena.used == 0);
-    /* runtime_bytes is enough, by definition. */
-    SW_CHECK(header_of(bytes)->runtime_bytes <= sizeof block);
-    sw_arena_init(&arena, block, (size_t)header_of(bytes)->runtime_bytes);
+    /* sw_pack_arena_bytes is enough, by definition. */
+    SW_CHECK(sw_pack_arena_bytes(size) <= sizeof block);
+    sw_arena_init(&arena, block, (size_t)sw_pack_arena_bytes(size));
     SW_CHECK_MSG(sw_pack_load(path, &arena, &pack, &err) == SW_OK, "%s", err.message);
     SW_CHECK(pack.meta->patch_count == 3 && memcmp(pack.control, s.control, sizeof s.control) == 0);
     SW_CHECK(sw_pack_load(scratch("missing.swpack"), &arena, &pack, &err) == SW_ERR_IO);
     SW_CHECK_MSG(strstr(err.message, "missing.swpack: cannot open"), "%s", err.message);
+    free(bytes);
+}
+
+static sw_status refuse_raw(void *user, const uint8_t *bytes, size_t size, sw_error *err)
+{
+    (void)bytes, (void)size;
+    ++*(int *)user;
+    return sw_error_set(err, SW_ERR_FORMAT, "not signed by a trusted key");
+}
+
+/* A file only root can write is mapped, not copied: the same pack as the
+ * copy; anyone else's, or one group or others may write, is not; a
+ * refused or broken one leaves nothing mapped. */
+static void test_map_only_what_root_alone_writes(void)
+{
+    sample s;
+    make_sample(&s);
+    size_t size = 0;
+    uint8_t *bytes = serialize_sample(&s, &size);
+    char path[256];
+    snprintf(path, sizeof path, "%s", scratch("mapped.swpack"));
+    write_plain(path, bytes, size);
+    sw_pack pack;
+    sw_pack_mapping map;
+    sw_error err = { 0 };
+    if (geteuid() != 0) {   /* a file of ours: we could change it under the walk */
+        SW_CHECK(!sw_pack_file_mappable(path));
+        SW_CHECK(sw_pack_map_checked(path, NULL, NULL, NULL, &map, &pack, &err) == SW_ERR_IO);
+        SW_CHECK_MSG(strstr(err.message, "only root can write"), "%s", err.message);
+        SW_CHECK(map.base == NULL);
+        free(bytes);
+        return;
+    }
+    SW_CHECK(chmod(path, 0644) == 0 && sw_pack_file_mappable(path));
+    SW_CHECK_MSG(sw_pack_map_checked(path, NULL, NULL, NULL, &map, &pack, &err) == SW_OK, "%s",
+                 err.message);
+    SW_CHECK(map.base && map.size == size && memcmp(map.base, bytes, size) == 0);
+    SW_CHECK(pack.meta->patch_count == 3 && memcmp(pack.control, s.control, sizeof s.control) == 0);
+    SW_CHECK((const uint8_t *)pack.control >= (const uint8_t *)map.base &&
+             (const uint8_t *)pack.control < (const uint8_t *)map.base + size);
+    sw_pack_unmap(&map);
+    SW_CHECK(map.base == NULL);
+    int calls = 0;   /* the raw check first, on the mapped bytes */
+    SW_CHECK(sw_pack_map_checked(path, NULL, refuse_raw, &calls, &map, &pack, &err) ==
+             SW_ERR_FORMAT);
+    SW_CHECK_MSG(calls == 1 && strstr(err.message, path) && map.base == NULL, "%s", err.message);
+    SW_CHECK(chmod(path, 0664) == 0 && !sw_pack_file_mappable(path));
+    SW_CHECK(sw_pack_map_checked(path, NULL, NULL, NULL, &map, &pack, &err) == SW_ERR_IO);
+    SW_CHECK_MSG(strstr(err.message, "mode 0664") && map.base == NULL, "%s", err.message);
+    SW_CHECK(chmod(path, 0644) == 0 && chown(path, 12345, 0) == 0 &&
+             !sw_pack_file_mappable(path));
+    SW_CHECK(sw_pack_map_checked(path, NULL, NULL, NULL, &map, &pack, &err) == SW_ERR_IO);
+    SW_CHECK_MSG(strstr(err.message, "owner 12345"), "%s", err.message);
+    SW_CHECK(chown(path, 0, 0) == 0);
+    bytes[size - 1] ^= 1;   /* a section's checksum no longer holds */
+    write_plain(path, bytes, size);
+    SW_CHECK(chmod(path, 0644) == 0);
+    SW_CHECK(sw_pack_map_checked(path, NULL, NULL, NULL, &map, &pack, &err) == SW_ERR_CHECKSUM);
+    SW_CHECK_MSG(strstr(err.message, path) && map.base == NULL, "%s", err.message);
+    write_plain(path, bytes, 10);
+    SW_CHECK(sw_pack_map_checked(path, NULL, NULL, NULL, &map, &pack, &err) == SW_ERR_FORMAT);
+    SW_CHECK(sw_pack_map_checked(scratch("missing.swpack"), NULL, NULL, NULL, &map, &pack,
+                                 &err) == SW_ERR_IO);
     free(bytes);
 }
 
@@ -632,6 +699,7 @@ int main(void)
     SW_RUN(test_pack_without_adjacency_section_opens);
     SW_RUN(test_load_into_small_arena_fails_cleanly);
     SW_RUN(test_read_header_detects_short_file);
+    SW_RUN(test_map_only_what_root_alone_writes);
     remove_scratch();
     return sw_test_finish();
 }

@@ -413,8 +413,9 @@ static void print_pools_text(FILE *out, const sw_pack *pack)
     uint64_t bytes[SW_RUNTIME_POOL_COUNT];
     int n;
     pool_list(pack, names, bytes, &n);
-    fprintf(out, "  %-16s %" PRIu64 " bytes (%.1f MiB), by pool:\n", "runtime memory",
-            pack->header->runtime_bytes, pack->header->runtime_bytes / 1048576.0);
+    fprintf(out, "  %-16s %" PRIu64 " bytes (%.1f MiB) beside the pack's own bytes, by "
+            "pool:\n", "runtime memory", pack->header->runtime_bytes,
+            pack->header->runtime_bytes / 1048576.0);
     uint64_t sum = 0;
     for (int i = 0; i < n; i++) {
         fprintf(out, "    %-16s %12" PRIu64 " bytes %8.1f MiB\n", names[i], bytes[i],

@@ -215,7 +215,7 @@ static sw_status build_signed(const sw_pack *in, uint32_t kept, const sw_sign_re
     *h = *in->header;
     h->section_count = kept + 1;
     h->total_size = size;
-    h->runtime_bytes = sw_pack_runtime_bytes_at(in, size);
+    h->runtime_bytes = sw_pack_runtime_bytes_of(in);
     copy_sections(in, offsets, bytes);
     free(offsets);
     sw_pack_section *entry = (sw_pack_section *)(bytes + 64) + kept;

@@ -222,10 +222,10 @@ static uint64_t walk_bytes(const sw_pack_contents *c)
 }
 
 /* The header's runtime_bytes: of the pack, or of its placed scene. */
-static uint64_t runtime_bytes(const sw_pack_contents *c, uint64_t total)
+static uint64_t runtime_bytes(const sw_pack_contents *c)
 {
     if (!c->instances)
-        return sw_pack_runtime_bytes(total, c->meta.patch_count, walk_bytes(c));
+        return sw_pack_runtime_bytes(c->meta.patch_count, walk_bytes(c));
     for (uint32_t i = 0; i < c->instance_count; i++)
         if (c->instances[i].prototype >= c->prototype_count)
             return 0; /* the reader refuses the instance first */
@@ -233,7 +233,7 @@ static uint64_t runtime_bytes(const sw_pack_contents *c, uint64_t total)
     sw_pack_placed_counts(c->prototypes, c->instances, c->instance_count, counts);
     int graph = c->seam && c->seam->surface_count == c->surface_count &&
                 sw_seam_graph_check(c->seam, NULL) == SW_OK;
-    return sw_pack_instanced_runtime_bytes(total, graph ? c->seam : NULL, c->surfaces, counts);
+    return sw_pack_instanced_runtime_bytes(graph ? c->seam : NULL, c->surfaces, counts);
 }
 
 sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *out_size,
@@ -260,7 +260,7 @@ sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *ou
             memcpy(buf + table[i].offset, src[i].bytes, (size_t)src[i].size);
     sw_pack_header h = { .version = c->instances ? SW_PACK_VERSION_INSTANCED : SW_PACK_VERSION,
                          .byte_order = SW_PACK_BYTE_ORDER_MARK, .total_size = total,
-                         .runtime_bytes = runtime_bytes(c, total),
+                         .runtime_bytes = runtime_bytes(c),
                          .section_count = (uint32_t)n, .section_table_offset = HEADER_BYTES };
     memcpy(h.magic, SW_PACK_MAGIC, sizeof h.magic);
     memcpy(buf, &h, sizeof h);

@@ -490,6 +490,8 @@ sw_status sw_stats_write_json(const sw_stats *s, FILE *f, sw_arena *scratch, sw_
     fprintf(f, "  \"arena_bytes\": %llu,\n  \"arena_peak_bytes\": %llu,\n  \"runtime_bytes\": %llu,\n",
             (unsigned long long)s->arena_bytes, (unsigned long long)s->arena_peak_bytes,
             (unsigned long long)s->runtime_bytes);
+    fprintf(f, "  \"pack_bytes\": %llu,\n  \"pack_mapped\": %s,\n",
+            (unsigned long long)s->pack_bytes, s->pack_mapped ? "true" : "false");
     fprintf(f, "  \"mallocs_after_init\": %lld,\n", (long long)s->mallocs_after_init);
     fprintf(f, "  \"process_mallocs_after_init\": %lld,\n",
             (long long)s->process_mallocs_after_init);

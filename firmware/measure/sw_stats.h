@@ -158,7 +158,9 @@ typedef struct sw_stats {
     double start_display_ms, start_prepare_ms, start_walk_init_ms, start_workers_ms,
         start_gl_ms, start_frame_ms, start_load_wait_ms;
     uint64_t arena_bytes, arena_peak_bytes;  /* the one arena: every byte the walk uses */
-    uint64_t runtime_bytes;      /* of it, the pack header's (pack, patch state, walk) */
+    uint64_t runtime_bytes;      /* of it, the pack header's (patch state, walk) */
+    uint64_t pack_bytes;         /* the pack's file: mapped, or copied into the arena */
+    int pack_mapped;
     int64_t mallocs_after_init;  /* -1 when the binary could not count */
     int64_t process_mallocs_after_init; /* the whole process's, Mesa's and libc's too, when
                                            tests/process_alloc_shim.so is preloaded; else -1 */

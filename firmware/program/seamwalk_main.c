@@ -363,6 +363,8 @@ static sw_status write_stats(sw_program *rt, sw_error *err)
     s->seam_arena_bytes = rt->pack.seam_header ? sw_seam_walk_arena_bytes(&rt->pack) : 0;
     s->seam_arena_peak_bytes = rt->walk_bytes;
     s->runtime_bytes = rt->pack.header ? rt->pack.header->runtime_bytes : 0;
+    s->pack_bytes = rt->pack.header ? rt->pack.header->total_size : 0;
+    s->pack_mapped = rt->pack_mapped;
     s->width = rt->opt.width;
     s->height = rt->opt.height;
     if (!rt->opt.stats_path)
@@ -392,16 +394,19 @@ static void print_summary(const sw_program *rt)
     char error[64] = "error not measured (--measure-every 0)";
     if (s->measure_every > 0)
         snprintf(error, sizeof error, "error max %.3f px", s->error_max_px);
+    char pack[96];
+    snprintf(pack, sizeof pack, "the pack's %.1f MiB %s", s->pack_bytes / 1048576.0,
+             s->pack_mapped ? "mapped beside it" : "copied into it");
     printf("seamwalk: %llu frames of %u patches at %dx%d in %.2f s; %s (bound %.2f);"
            " cracks max %llu; undrawn max %u (surfaces in view with no mesh yet, the most in a"
            " frame); clamped max %u (surfaces in view closer than the pack was built for, its"
-           " --closest-mm or a tenth of its sewing tolerance, drawn at its finest); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, the run's"
+           " --closest-mm or a tenth of its sewing tolerance, drawn at its finest); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, %s, the run's"
            " frame stats and pictures the rest); mallocs after init %lld\n",
            (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, error,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->waiting_max,
            s->surfaces_clamped_max,
            s->arena_bytes / 1048576.0,
-           s->runtime_bytes / 1048576.0, (long long)s->mallocs_after_init);
+           s->runtime_bytes / 1048576.0, pack, (long long)s->mallocs_after_init);
     /* The walk's crack count is its own bookkeeping; the drawn borders are
      * checked apart (sw_seam_drawn.h) on the measured frames. */
     if (s->measure_every > 0)

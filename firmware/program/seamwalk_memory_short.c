@@ -72,9 +72,13 @@ sw_status sw_program_memory_short(const sw_program *rt, const sw_pack_header *h,
                  "seamwalk-pack info lists them)", h->total_size / 1048576.0);
     else if (!pools[0])
         snprintf(pools, sizeof pools, "seamwalk-pack info lists them");
+    char copied[160] = "";
+    if (!rt->pack_mapped)
+        snprintf(copied, sizeof copied, "the pack's file copied into it %.1f MiB (a file only "
+                 "root can write is mapped instead), ", h->total_size / 1048576.0);
     return sw_error_set(err, SW_ERR_NO_MEMORY,
                         "needs %.1f MiB of memory, more than --memory-mb %.1f by %.1f MiB; "
-                        "of it the pack's runtime memory %.1f MiB by pool, largest first: %s",
+                        "of it %sthe pack's runtime memory %.1f MiB by pool, largest first: %s",
                         need / 1048576.0, rt->opt.memory_mb, (need - limit) / 1048576.0,
-                        h->runtime_bytes / 1048576.0, pools);
+                        copied, h->runtime_bytes / 1048576.0, pools);
 }

@@ -33,6 +33,9 @@ typedef struct sw_program {
     sw_arena arena;
     void *block;
     sw_pack pack;
+    int pack_mapped;          /* the pack file mapped (sw_pack_file_mappable), else copied
+                                 into the arena */
+    sw_pack_mapping mapping;
     sw_camera_path path;
     sw_seam_walk seam;
     int workers;              /* tessellation threads (--workers, resolved) */

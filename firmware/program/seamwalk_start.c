@@ -73,10 +73,13 @@ static sw_status file_size(const char *path, size_t *size, sw_error *err)
 static size_t arena_bytes_needed(const sw_program *rt, const sw_pack_header *h,
                                  size_t path_bytes, size_t path_keys)
 {
-    /* runtime_bytes covers the pack, every patch's state and the walk
-     * (sw_pack.h, core/sw_walk_memory.h); the rest depends on the options. */
+    /* runtime_bytes covers every patch's state and the walk (sw_pack.h,
+     * core/sw_walk_memory.h); the pack itself when it is copied, not
+     * mapped; the rest depends on the options. */
     size_t bytes = (size_t)h->runtime_bytes + sw_stats_arena_bytes(rt->opt.frames) +
                    sw_seam_drawn_arena_bytes(SW_DRAWN_EDGES, SW_SEAM_WALK_INDICES);
+    if (!rt->pack_mapped)
+        bytes += (size_t)sw_pack_arena_bytes(h->total_size);
     if (rt->opt.fill_crossings)
         bytes += sw_seam_fill_arena_bytes(SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES);
     bytes += sw_arena_worst_case(path_bytes + 1, 8) +
@@ -237,13 +240,17 @@ static sw_status size_arena(sw_program *rt, size_t *path_bytes, sw_error *err)
         keys = *path_bytes / 20 + 1; /* a key line has at least 10 numbers and 10 separators */
     }
     double limit = rt->opt.memory_mb * 1024.0 * 1024.0;
+    rt->pack_mapped = sw_pack_file_mappable(rt->opt.pack_path);
+    double copied = rt->pack_mapped ? 0.0 : (double)h.total_size;
     /* Checked alone first so a huge header value cannot overflow the sum. */
-    size_t need = (double)h.runtime_bytes > limit ? SIZE_MAX
-                                                  : arena_bytes_needed(rt, &h, *path_bytes, keys);
-    if (need == SIZE_MAX || (double)need > limit)
-        return sw_program_memory_short(rt, &h, need == SIZE_MAX ? (double)h.runtime_bytes
-                                                                : (double)need,
-                                       rt->opt.store_dir ? check_slot : NULL, (void *)rt, err);
+    size_t need = (double)h.runtime_bytes + copied > limit
+                      ? SIZE_MAX
+                      : arena_bytes_needed(rt, &h, *path_bytes, keys);
+    if (need == SIZE_MAX || (double)need > limit) {
+        double asked = need == SIZE_MAX ? (double)h.runtime_bytes + copied : (double)need;
+        return sw_program_memory_short(rt, &h, asked, rt->opt.store_dir ? check_slot : NULL,
+                                       (void *)rt, err);
+    }
     rt->block = sw_heap_take_block(need);
     if (!rt->block)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes for the arena", need);
@@ -297,8 +304,11 @@ static sw_status load(sw_program *rt, sw_error *err)
     double t0 = sw_program_now_s();
     sw_parts_threads threads;
     sw_parts_runner runner = sw_parts_threads_runner(&threads, (uint32_t)load_helpers());
-    st = sw_pack_load_checked(rt->opt.pack_path, &rt->arena, &runner,
-                              rt->opt.store_dir ? check_slot : NULL, rt, &rt->pack, err);
+    sw_pack_raw_check check = rt->opt.store_dir ? check_slot : NULL;
+    st = rt->pack_mapped ? sw_pack_map_checked(rt->opt.pack_path, &runner, check, rt,
+                                               &rt->mapping, &rt->pack, err)
+                         : sw_pack_load_checked(rt->opt.pack_path, &rt->arena, &runner, check,
+                                                rt, &rt->pack, err);
     /* A pack of placed parts is walked as the scene it places. */
     if (st == SW_OK) {
         sw_pack stored = rt->pack;
@@ -570,4 +580,5 @@ void sw_program_stop(sw_program *rt)
     sw_grow_hook_destroy(&rt->grow);
     sw_heap_give_block(rt->block, rt->arena.size);
     rt->block = NULL;
+    sw_pack_unmap(&rt->mapping);   /* after everything that read the pack */
 }

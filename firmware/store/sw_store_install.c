@@ -194,8 +194,16 @@ static sw_status write_chunks(install *in, int fd, sw_error *err)
     return SW_OK;
 }
 
+/* A new install goes into a new file: the old one is unlinked first, not
+ * written over, since a walk may have it mapped (sw_pack_map_checked: a
+ * unit on trial walks its pending slot, the one a new install replaces)
+ * and must not see its bytes change; unlinked, its pages stay the walk's
+ * until it ends. A resumed install continues its own new file, which no
+ * walk has: the state names its slot empty. */
 static sw_status write_slot(install *in, sw_error *err)
 {
+    if (in->journal.done == 0 && unlink(in->path) != 0 && errno != ENOENT)
+        return sw_error_set(err, SW_ERR_IO, "unlink %s: %s", in->path, strerror(errno));
     int fd = open(in->path, O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0)
         return sw_error_set(err, SW_ERR_IO, "%s: %s", in->path, strerror(errno));
