@@ -307,6 +307,13 @@ void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
     }
 }
 
+void sw_stats_add_pressure(sw_stats *s, double pressure)
+{
+    if (pressure > 1.0)
+        s->pressure_frames++;
+    s->pressure_max = pressure > s->pressure_max ? pressure : s->pressure_max;
+}
+
 void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint64_t triangles,
                            uint32_t leaner_jobs)
 {
@@ -371,7 +378,8 @@ static void write_part_levels(FILE *f, const sw_stats *s)
 static void write_threads(FILE *f, const sw_stats *s)
 {
     fprintf(f, "  \"threads\": {\"workers\": %d, \"sync_work\": %d, \"target_ms\": %.3f, "
-               "\"waiting_surfaces_max\": %u, \"standins_max\": %u, \"standins_made\": %llu, "
+               "\"waiting_surfaces_max\": %u, \"pressure_max\": %.3f, \"pressure_frames\": %u, "
+               "\"standins_max\": %u, \"standins_made\": %llu, "
                "\"standins_leaner_jobs\": %llu, "
                "\"standin_triangles\": {\"mean\": %.0f, \"max\": %llu}, "
                "\"behind_surfaces_max\": %u, "
@@ -381,7 +389,8 @@ static void write_threads(FILE *f, const sw_stats *s)
                "\"worker_triangles\": %llu, \"worker_busy_ms\": %.1f, \"steals\": %llu, "
                "\"updated\": {\"capped_batches\": %llu, \"over_cap_batches\": %llu, "
                "\"over_cap_ratio_max\": %.3f}},\n",
-            s->workers, s->sync_work, s->target_ms, s->waiting_max, s->standins_max,
+            s->workers, s->sync_work, s->target_ms, s->waiting_max,
+            s->pressure_max > 1.0 ? s->pressure_max : 1.0, s->pressure_frames, s->standins_max,
             (unsigned long long)s->standins_made, (unsigned long long)s->standins_leaner,
             s->frames_total ? (double)s->standin_triangles / (double)s->frames_total : 0.0,
             (unsigned long long)s->standin_triangles_max, s->behind_max,

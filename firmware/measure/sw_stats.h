@@ -161,6 +161,8 @@ typedef struct sw_stats {
     uint64_t runtime_bytes;      /* of it, the pack header's (patch state, walk) */
     uint64_t pack_bytes;         /* the pack's file: mapped, or copied into the arena */
     int pack_mapped;
+    double pressure_max;         /* the walk's bound raised by at most this factor */
+    uint32_t pressure_frames;    /* in so many frames (sw_seam_walk_pressure) */
     int64_t mallocs_after_init;  /* -1 when the binary could not count */
     int64_t process_mallocs_after_init; /* the whole process's, Mesa's and libc's too, when
                                            tests/process_alloc_shim.so is preloaded; else -1 */
@@ -187,6 +189,9 @@ void sw_stats_add_update_cap(sw_stats *s, double used, double cap);
 void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint64_t triangles,
                            uint32_t leaner_jobs);
 void sw_stats_add_part_levels(sw_stats *s, uint32_t parts, uint32_t covered, uint64_t triangles);
+
+/* The factor the walk raised its bound by this frame (1: not raised). */
+void sw_stats_add_pressure(sw_stats *s, double pressure);
 
 void sw_stats_add_threads_frame(sw_stats *s, uint32_t waiting, uint32_t behind,
                                 uint32_t frames_behind, double behind_ratio, uint32_t jobs,

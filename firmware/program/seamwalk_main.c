@@ -149,6 +149,7 @@ static sw_status seam_frame(sw_program *rt, int measuring, uint64_t *triangles, 
                                    f.behind_ratio, f.jobs_scheduled, f.jobs_prefetch,
                                    f.batches_committed,
                                    f.seam_ops, f.budget_tris, f.budget_used);
+    sw_stats_add_pressure(s, f.pressure);
     if (rt->workers)
         sw_stats_add_standins(s, f.standins, f.standins_made, f.standin_triangles,
                               f.jobs_leaner);
@@ -399,11 +400,13 @@ static void print_summary(const sw_program *rt)
              s->pack_mapped ? "mapped beside it" : "copied into it");
     printf("seamwalk: %llu frames of %u patches at %dx%d in %.2f s; %s (bound %.2f);"
            " cracks max %llu; undrawn max %u (surfaces in view with no mesh yet, the most in a"
-           " frame); clamped max %u (surfaces in view closer than the pack was built for, its"
+           " frame); bound raised in %u frames, by up to %.2fx (the mesh cache could not hold"
+           " the view); clamped max %u (surfaces in view closer than the pack was built for, its"
            " --closest-mm or a tenth of its sewing tolerance, drawn at its finest); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, %s, the run's"
            " frame stats and pictures the rest); mallocs after init %lld\n",
            (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, error,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->waiting_max,
+           s->pressure_frames, s->pressure_max > 1.0 ? s->pressure_max : 1.0,
            s->surfaces_clamped_max,
            s->arena_bytes / 1048576.0,
            s->runtime_bytes / 1048576.0, pack, (long long)s->mallocs_after_init);

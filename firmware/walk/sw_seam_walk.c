@@ -103,6 +103,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
                             "this seamwalk-pack)");
     w->pack = pack;
     w->error_px = error_px;
+    w->pressure = 1.0;
     w->bound_floor = 0.1f * pack->seam.tolerance;
     w->drop_surface = UINT32_MAX;
     w->standin_silhouettes = 1;
@@ -229,7 +230,8 @@ static float culled_want(const sw_seam_walk *w, const sw_view *view, uint32_t s)
     d.x = fmax(fmax(b.min.x - e.x, 0.0), e.x - b.max.x);
     d.y = fmax(fmax(b.min.y - e.y, 0.0), e.y - b.max.y);
     d.z = fmax(fmax(b.min.z - e.z, 0.0), e.z - b.max.z);
-    double bound = sw_view_error_world(view, w->error_px, fmax(sw_v3_length(d), view->near_z));
+    double bound = sw_view_error_world(view, sw_seam_walk_error_px(w),
+                                       fmax(sw_v3_length(d), view->near_z));
     return (float)fmax(bound, (double)w->floor[s]);
 }
 
@@ -253,7 +255,7 @@ static double ahead_bound(const sw_seam_walk *w, const sw_view *view, uint32_t s
     if (!sw_seam_walk_async(w) || !isfinite(depth) || !isfinite(last) || !(last > depth))
         return bound;
     double ahead = fmax(depth - SW_SEAM_LOOKAHEAD_FRAMES * (last - depth), 0.5 * depth);
-    return sw_view_error_world(view, w->error_px, fmax(ahead, view->near_z));
+    return sw_view_error_world(view, sw_seam_walk_error_px(w), fmax(ahead, view->near_z));
 }
 
 /* Visible when any of its patches' boxes is (the culling tree's answer,
@@ -268,7 +270,8 @@ static int cull_surface(sw_seam_walk *w, const sw_view *view, uint32_t s, sw_sea
 {
     double depth = w->cull_near[s];
     w->visible[s] = isfinite(depth);
-    double bound = w->visible[s] ? sw_view_error_world(view, w->error_px, depth) : 0.0;
+    double bound = w->visible[s] ? sw_view_error_world(view, sw_seam_walk_error_px(w), depth)
+                                 : 0.0;
     double ahead = ahead_bound(w, view, s, depth, bound);
     w->depth[s] = (float)depth;
     int away = 0;

@@ -168,6 +168,7 @@ typedef struct sw_seam_frame {
                                      the same (u, v), sw_seam_measure.h */
     /* With workers: */
     uint32_t waiting_surfaces;    /* visible with no mesh yet (not drawn: holes until made) */
+    double pressure;              /* the bound's factor this frame (sw_seam_walk_pressure) */
     uint32_t standins;            /* drawn from a static level while their mesh is made */
     uint32_t standins_made;       /* stand-ins made this frame */
     uint64_t standin_triangles;   /* of triangles: those the stand-ins drew */
@@ -231,6 +232,10 @@ typedef struct sw_seam_walk {
     sw_vec3 eye;                  /* this frame's (select): which stand-ins may show a
                                      silhouette */
     double error_px;
+    double pressure;              /* V: the bound's factor while the cache cannot hold the
+                                     view at error_px (1: none; sw_seam_walk_pressure) */
+    uint32_t pressure_raised;     /* the frame it last rose */
+    uint32_t pressure_calm;       /* frames with room since it last moved */
     float bound_floor;            /* a tenth of the sewing tolerance */
     float *floor;                 /* surface_count: the finest bound it is drawn at: the
                                      above, or the largest error its seam vertices start

@@ -168,6 +168,25 @@ uint32_t sw_seam_walk_room_for(sw_seam_walk *w, int pool, uint32_t order);
 void sw_seam_walk_keep_room(sw_seam_walk *w, uint32_t vertex_units, uint32_t index_units,
                             sw_seam_frame *frame);
 
+/* The screen-space bound the walk makes meshes for: error_px, times the
+ * pressure while the cache cannot hold the view at it. */
+static inline double sw_seam_walk_error_px(const sw_seam_walk *w)
+{
+    return w->error_px * w->pressure;
+}
+
+/* The threaded walk, after planning a frame: when surfaces in view waited
+ * undrawn while the meshes drawn filled more than half the cache (the view
+ * holds more than the cache at the bound: at 4,000,000 patches, 106,312
+ * surfaces a frame), the bound is raised by sqrt 2 (at most every other
+ * frame, up to SW_SEAM_PRESSURE_MAX), so every mesh and stand-in is made
+ * coarser and more far parts are drawn from their part levels: the view
+ * drawn coarser, counted (frame->pressure, the summary line), rather than
+ * with holes. It comes down by sqrt 2 after 16 frames in a row whose drawn
+ * meshes held less than a third of the cache. */
+#define SW_SEAM_PRESSURE_MAX 64.0
+void sw_seam_walk_pressure(sw_seam_walk *w, sw_seam_frame *frame);
+
 /* Surface s's cache entry (READY) into the plan's uploads. */
 void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan);
 

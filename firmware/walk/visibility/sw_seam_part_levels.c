@@ -83,7 +83,8 @@ static uint32_t level_at(const sw_seam_walk *w, const sw_view *view, uint32_t g,
 {
     double bound = w->part_levels_coarsest
                        ? INFINITY
-                       : sw_view_error_world(view, w->error_px, fmax(depth, view->near_z));
+                       : sw_view_error_world(view, sw_seam_walk_error_px(w),
+                                             fmax(depth, view->near_z));
     return coarsest_within(w->part_levels, g, f, bound, bound * (SHADING_SIDE_PX / w->error_px));
 }
 

@@ -131,6 +131,30 @@ static void plan_surface(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_sea
         sw_seam_walk_count_behind(w, s, behind_ratio(w, s, e), frame);
 }
 
+#define SW_SQRT2 1.4142135623730951
+
+void sw_seam_walk_pressure(sw_seam_walk *w, sw_seam_frame *frame)
+{
+    double vertices = (double)w->cache.vertex_pool.units * SW_SEAM_CACHE_VERTEX_UNIT;
+    double indices = (double)w->cache.index_pool.units * SW_SEAM_CACHE_INDEX_UNIT;
+    double drawn = fmax((double)frame->cache_drawn_vertices / vertices,
+                        (double)frame->cache_drawn_indices / indices);
+    if (frame->waiting_surfaces > 0 && drawn > 0.5) {
+        w->pressure_calm = 0;
+        if (w->pressure < SW_SEAM_PRESSURE_MAX && w->frame - w->pressure_raised >= 2) {
+            w->pressure = fmin(w->pressure * SW_SQRT2, SW_SEAM_PRESSURE_MAX);
+            w->pressure_raised = w->frame;
+        }
+        return;
+    }
+    if (w->pressure > 1.0 && drawn < 1.0 / 3.0 && ++w->pressure_calm >= 16) {
+        w->pressure = fmax(w->pressure / SW_SQRT2, 1.0);
+        w->pressure_calm = 0;
+    }
+    else if (drawn >= 1.0 / 3.0)
+        w->pressure_calm = 0;
+}
+
 void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
                        sw_seam_frame *frame)
 {
@@ -161,7 +185,10 @@ void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
         index_units = w->cache.index_pool.used_units;
     frame->cache_used_vertices = (uint64_t)SW_SEAM_CACHE_VERTEX_UNIT * vertex_units;
     frame->cache_used_indices = (uint64_t)SW_SEAM_CACHE_INDEX_UNIT * index_units;
-    if (w->workers && !w->sync_work)   /* sync_work's frames wait for their meshes */
+    if (w->workers && !w->sync_work) {   /* sync_work's frames wait for their meshes */
         sw_seam_walk_keep_room(w, vertex_units, index_units, frame);
+        sw_seam_walk_pressure(w, frame);
+    }
+    frame->pressure = w->pressure;
     plan->depth_known = sw_seam_depth_range(w, view, &plan->nearest, &plan->farthest);
 }
