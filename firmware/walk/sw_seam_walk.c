@@ -104,6 +104,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->pack = pack;
     w->error_px = error_px;
     w->pressure = 1.0;
+    w->pressure_raised = UINT32_MAX - 1;   /* as if two frames before the first */
     w->bound_floor = 0.1f * pack->seam.tolerance;
     w->drop_surface = UINT32_MAX;
     w->standin_silhouettes = 1;

@@ -176,14 +176,18 @@ static inline double sw_seam_walk_error_px(const sw_seam_walk *w)
 }
 
 /* The threaded walk, after planning a frame: when surfaces in view waited
- * undrawn while the meshes drawn filled more than half the cache (the view
- * holds more than the cache at the bound: at 4,000,000 patches, 106,312
- * surfaces a frame), the bound is raised by sqrt 2 (at most every other
- * frame, up to SW_SEAM_PRESSURE_MAX), so every mesh and stand-in is made
- * coarser and more far parts are drawn from their part levels: the view
- * drawn coarser, counted (frame->pressure, the summary line), rather than
- * with holes. It comes down by sqrt 2 after 16 frames in a row whose drawn
- * meshes held less than a third of the cache. */
+ * undrawn for room, the cache more than 15/16 full, and either the meshes
+ * drawn filled more than half of it or a 64th of the surfaces drawn by
+ * meshes and stand-ins waited (the view holds more than the cache at the
+ * bound: at 4,000,000 patches, 80,000 surfaces in the first frame), the
+ * bound is raised by (stand-ins + waiting) / stand-ins, from sqrt 2 to 4
+ * (at most every other frame, up to SW_SEAM_PRESSURE_MAX), so every mesh
+ * and stand-in is made coarser and more far parts are drawn from their
+ * part levels: the view drawn coarser, counted (frame->pressure, the
+ * summary line), rather than with holes. A few surfaces waiting in a cache
+ * whose room a batch holds do not raise it. It comes down by sqrt 2 after
+ * 16 frames in a row with none waiting and the drawn meshes under a third
+ * of the cache. */
 #define SW_SEAM_PRESSURE_MAX 64.0
 void sw_seam_walk_pressure(sw_seam_walk *w, sw_seam_frame *frame);
 

@@ -139,19 +139,32 @@ void sw_seam_walk_pressure(sw_seam_walk *w, sw_seam_frame *frame)
     double indices = (double)w->cache.index_pool.units * SW_SEAM_CACHE_INDEX_UNIT;
     double drawn = fmax((double)frame->cache_drawn_vertices / vertices,
                         (double)frame->cache_drawn_indices / indices);
-    if (frame->waiting_surfaces > 0 && drawn > 0.5) {
+    double used = fmax((double)frame->cache_used_vertices / vertices,
+                       (double)frame->cache_used_indices / indices);
+    /* Drawn by meshes and stand-ins, not through part levels. */
+    uint32_t meshes = frame->drawn_surfaces - frame->covered_surfaces;
+    if (frame->waiting_surfaces > 0 && used > 15.0 / 16.0 &&
+        (drawn > 0.5 || (uint64_t)frame->waiting_surfaces * 64 > meshes)) {
         w->pressure_calm = 0;
+        /* A mesh's vertices go about as 1 / bound: raised by the share of
+         * the view that waited, so the first frame of a view far larger
+         * than the cache needs a few rises, not dozens. */
+        double step = frame->standins ? (double)(frame->standins + frame->waiting_surfaces) /
+                                            frame->standins
+                                      : 4.0;
+        step = fmin(fmax(step, SW_SQRT2), 4.0);
         if (w->pressure < SW_SEAM_PRESSURE_MAX && w->frame - w->pressure_raised >= 2) {
-            w->pressure = fmin(w->pressure * SW_SQRT2, SW_SEAM_PRESSURE_MAX);
+            w->pressure = fmin(w->pressure * step, SW_SEAM_PRESSURE_MAX);
             w->pressure_raised = w->frame;
         }
         return;
     }
-    if (w->pressure > 1.0 && drawn < 1.0 / 3.0 && ++w->pressure_calm >= 16) {
+    if (w->pressure > 1.0 && frame->waiting_surfaces == 0 && drawn < 1.0 / 3.0 &&
+        ++w->pressure_calm >= 16) {
         w->pressure = fmax(w->pressure / SW_SQRT2, 1.0);
         w->pressure_calm = 0;
     }
-    else if (drawn >= 1.0 / 3.0)
+    else if (frame->waiting_surfaces > 0 || drawn >= 1.0 / 3.0)
         w->pressure_calm = 0;
 }
 

@@ -359,6 +359,10 @@ static void push_more(sw_seam_walk *w)
 
 sw_status sw_seam_walk_schedule(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err)
 {
+    /* Stand-ins need room the batch must not take (sw_seam_workers.h);
+     * sync_work's batches are waited for, drawn from nothing meanwhile. */
+    atomic_store_explicit(&w->workers->reserve, sw_seam_walk_async(w) && w->standins != NULL,
+                          memory_order_relaxed);
     sw_status st = w->batch_count == 0 ? open_batch(w, frame, err) : SW_OK;
     push_more(w);
     return st;

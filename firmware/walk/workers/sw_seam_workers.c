@@ -55,9 +55,11 @@ static void note_asked(sw_seam_workers *p, int pool, uint32_t units, int refused
         p->refused_order[pool] = (int)k;
 }
 
-int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e)
+/* Blocks for n vertices and m indices; with reserve, only when a
+ * 1/SW_SEAM_STANDIN_RESERVE share of each pool stays free beside them. */
+static int place(sw_seam_workers *p, uint32_t s, uint32_t n, uint32_t m, int reserve,
+                 sw_seam_entry *e)
 {
-    sw_seam_workers *p = ctx;
     sw_seam_cache *c = p->cache;
     uint32_t vu = (n ? n : 1), iu = (m ? m : 1);
     vu = (vu + SW_SEAM_CACHE_VERTEX_UNIT - 1) / SW_SEAM_CACHE_VERTEX_UNIT;
@@ -65,8 +67,18 @@ int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam
     pthread_mutex_lock(&p->alloc_lock);
     take_retired(p);
     uint32_t vb, ib;
+    uint32_t keep_v = reserve ? c->vertex_pool.units / SW_SEAM_STANDIN_RESERVE : 0;
+    uint32_t keep_i = reserve ? c->index_pool.units / SW_SEAM_STANDIN_RESERVE : 0;
     int vertex_ok = sw_buddy_alloc(&c->vertex_pool, vu, &vb);
+    if (vertex_ok && c->vertex_pool.units - c->vertex_pool.used_units < keep_v) {
+        sw_buddy_free(&c->vertex_pool, vb);
+        vertex_ok = 0;
+    }
     int ok = vertex_ok && sw_buddy_alloc(&c->index_pool, iu, &ib);
+    if (ok && c->index_pool.units - c->index_pool.used_units < keep_i) {
+        sw_buddy_free(&c->index_pool, ib);
+        ok = 0;
+    }
     if (vertex_ok && !ok)
         sw_buddy_free(&c->vertex_pool, vb);
     note_asked(p, SW_SEAM_VERTEX_POOL, vu, !vertex_ok);
@@ -79,6 +91,20 @@ int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam
     if (ok)
         e->vertex_block = vb, e->index_block = ib;
     return ok;
+}
+
+int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e)
+{
+    return place(ctx, s, n, m, 0, e);
+}
+
+/* The workers' own: a batch remaking meshes holds the old and the new ones
+ * side by side, and took the last free room from the stand-ins of
+ * surfaces coming into view (drawn from nothing meanwhile). */
+static int place_job(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e)
+{
+    sw_seam_workers *p = ctx;
+    return place(p, s, n, m, atomic_load_explicit(&p->reserve, memory_order_relaxed), e);
 }
 
 void sw_seam_workers_asked(sw_seam_workers *p, int pool, uint32_t *largest, int *refused)
@@ -128,7 +154,7 @@ static void run_job(sw_seam_workers *p, sw_seam_maker *maker, uint32_t s)
     const sw_seam_job job = p->jobs[s];
     int no_room = 0;
     uint64_t tris = sw_seam_make(maker, s, job.bound, job.seam_bound, p->cache,
-                                 sw_seam_workers_place, p, &p->made[s], &no_room);
+                                 place_job, p, &p->made[s], &no_room);
     p->no_room[s] = (uint8_t)no_room;
     atomic_fetch_add_explicit(&p->made_triangles, tris, memory_order_relaxed);
     atomic_fetch_add_explicit(&p->busy_ns, now_ns() - t0, memory_order_relaxed);
@@ -231,6 +257,7 @@ sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack
     atomic_init(&p->stop, 0);
     atomic_init(&p->stall, 0);
     atomic_init(&p->slow_ms, 0);
+    atomic_init(&p->reserve, 0);
     atomic_init(&p->made_triangles, 0);
     atomic_init(&p->busy_ns, 0);
     atomic_init(&p->steals, 0);

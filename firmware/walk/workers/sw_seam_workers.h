@@ -76,6 +76,8 @@ typedef struct sw_seam_workers {
     uint32_t next_queue;          /* producer's: round robin */
     _Atomic uint32_t outstanding;
     _Atomic int stop, stall;
+    _Atomic int reserve;          /* the producer's: 1 while stand-ins draw what the workers
+                                     have not made (their share of the pools kept) */
     _Atomic int slow_ms;          /* test hook: each job waits this long before publishing */
     _Atomic uint64_t made_triangles, busy_ns, steals; /* since init: for the controller */
     int lock_up, sem_up;
@@ -104,7 +106,10 @@ sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack
 int sw_seam_workers_push(sw_seam_workers *p, uint32_t s);
 
 /* A sw_seam_place_fn (ctx: the pool) for meshes the workers share the
- * cache with: V's stand-ins. */
+ * cache with: V's stand-ins. While reserve is set, the workers' own
+ * meshes leave a 1/SW_SEAM_STANDIN_RESERVE share of each pool free for
+ * them. */
+#define SW_SEAM_STANDIN_RESERVE 32u
 int sw_seam_workers_place(void *ctx, uint32_t s, uint32_t n, uint32_t m, sw_seam_entry *e);
 
 /* The units the cache's pools have in use (retired blocks not yet given
