@@ -211,6 +211,15 @@ const sw_option_desc sw_option_table[] = {
      .def = 0, F(test_grow_kb), .flags = SW_OPTION_TEST_ONLY,
      .help = "K kB more resident memory at each loop's end of a soak, no allocation (the "
              "soak must fail on it)"},
+    {.name = "--test-cache-vertices", .arg = "N", .kind = SW_OPTION_INT, .min = 0,
+     .max = 2147483647, .def = 0, .def_text = "the pack's", F(cache_vertices),
+     .flags = SW_OPTION_TEST_ONLY,
+     .help = "the mesh cache held to about N vertices (and 6 N indices): a view larger than "
+             "it, so the bound must be raised for room"},
+    {.name = "--test-pressure", ON_OFF, .def = 1,
+     F(pressure), .flags = SW_OPTION_TEST_ONLY,
+     .help = "0: the bound is never raised when the cache cannot hold the view (the mutant "
+             "that leaves surfaces undrawn)"},
     {.name = "--test-drop-surface", .arg = "S", .kind = SW_OPTION_INT, .min = 0,
      .max = 2147483647, .def = -1, .def_text = "none", F(drop_surface),
      .flags = SW_OPTION_TEST_ONLY,

@@ -236,6 +236,7 @@ typedef struct sw_seam_walk {
                                      view at error_px (1: none; sw_seam_walk_pressure) */
     uint32_t pressure_raised;     /* the frame it last rose */
     uint32_t pressure_calm;       /* frames with room since it last moved */
+    int no_pressure;              /* a test's mutant: never raised */
     float bound_floor;            /* a tenth of the sewing tolerance */
     float *floor;                 /* surface_count: the finest bound it is drawn at: the
                                      above, or the largest error its seam vertices start
@@ -307,6 +308,11 @@ typedef struct sw_seam_walk {
 size_t sw_seam_walk_arena_bytes(const sw_pack *pack);
 sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
                             sw_error *err);
+
+/* A test's smaller cache: blocks of the pools held for good (no surface
+ * owns them) until about vertices vertices and 6 x as many indices are
+ * left. Before the workers start. */
+void sw_seam_walk_hold_cache(sw_seam_walk *w, uint32_t vertices);
 
 /* Makes every surface's normal cone (its scratch from arena, given back:
  * counted in the walk's bytes) and turns cone culling on: surfaces in view

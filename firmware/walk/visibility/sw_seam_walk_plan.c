@@ -200,7 +200,8 @@ void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
     frame->cache_used_indices = (uint64_t)SW_SEAM_CACHE_INDEX_UNIT * index_units;
     if (w->workers && !w->sync_work) {   /* sync_work's frames wait for their meshes */
         sw_seam_walk_keep_room(w, vertex_units, index_units, frame);
-        sw_seam_walk_pressure(w, frame);
+        if (!w->no_pressure)
+            sw_seam_walk_pressure(w, frame);
     }
     frame->pressure = w->pressure;
     plan->depth_known = sw_seam_depth_range(w, view, &plan->nearest, &plan->farthest);
