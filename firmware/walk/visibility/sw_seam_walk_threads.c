@@ -401,15 +401,37 @@ void sw_seam_walk_restitch_around(sw_seam_walk *w, uint32_t s)
         }
 }
 
+/* The first of the m candidates (sorted here) given up until count of
+ * them went or their blocks covered *vertex_units and *index_units, which
+ * keep what is still short. */
+static uint32_t evict_sorted(sw_seam_walk *w, uint32_t m, uint32_t count,
+                             uint64_t *vertex_units, uint64_t *index_units)
+{
+    sw_seam_cache *c = &w->cache;
+    sw_seam_candidates_sort(w->candidates, m);
+    uint32_t k = 0;
+    for (; k < count && k < m && (*vertex_units > 0 || *index_units > 0); k++) {
+        const sw_seam_entry *e = &c->entries[w->candidates[k].surface];
+        uint64_t v = sw_buddy_block_units(&c->vertex_pool, e->vertex_block);
+        uint64_t i = sw_buddy_block_units(&c->index_pool, e->index_block);
+        *vertex_units -= v < *vertex_units ? v : *vertex_units;
+        *index_units -= i < *index_units ? i : *index_units;
+        retire_mesh(w, w->candidates[k].surface);
+        sw_seam_walk_restitch_around(w, w->candidates[k].surface);
+        c->evictions++;
+    }
+    return k;
+}
+
 /* The least recently drawn meshes out of view, retired until count of
- * them have gone or their blocks cover vertex_units and index_units
- * (whichever comes first; UINT32_MAX: no such limit). A mesh's epoch is
+ * them have gone or their blocks cover *vertex_units and *index_units
+ * (whichever comes first; UINT32_MAX, UINT64_MAX: no such limit). A mesh's epoch is
  * the last frame that drew it (and measured it: the GL thread reads a mesh
  * only in the frames that draw it, and at its upload, before any of them),
  * so the workers may reuse its blocks as soon as that frame has finished:
  * at once for most, drawn long ago. Returns how many went. */
-static uint32_t evict_oldest(sw_seam_walk *w, uint32_t count, uint64_t vertex_units,
-                             uint64_t index_units)
+static uint32_t evict_oldest(sw_seam_walk *w, uint32_t count, uint64_t *vertex_units,
+                             uint64_t *index_units)
 {
     /* Oldest first by one sort of the candidates (the scratch choose()
      * used; free again by now): a search of the whole cache per mesh made
@@ -421,19 +443,9 @@ static uint32_t evict_oldest(sw_seam_walk *w, uint32_t count, uint64_t vertex_un
         if (c->entries[s].state == SW_SEAM_READY && w->evictable[s])
             w->candidates[m++] =
                 (sw_seam_candidate){ (float)(w->frame - c->entries[s].last_frame), s };
-    sw_seam_candidates_sort(w->candidates, m);
-    uint32_t k = 0;
-    uint64_t vertices = 0, indices = 0;
-    for (; k < count && k < m && (vertices < vertex_units || indices < index_units); k++) {
-        const sw_seam_entry *e = &c->entries[w->candidates[k].surface];
-        vertices += sw_buddy_block_units(&c->vertex_pool, e->vertex_block);
-        indices += sw_buddy_block_units(&c->index_pool, e->index_block);
-        retire_mesh(w, w->candidates[k].surface);
-        sw_seam_walk_restitch_around(w, w->candidates[k].surface);
-        c->evictions++;
-    }
-    return k;
+    return evict_sorted(w, m, count, vertex_units, index_units);
 }
+
 
 typedef struct room_search {
     sw_seam_walk *w;
@@ -475,9 +487,31 @@ uint32_t sw_seam_walk_room_for(sw_seam_walk *w, int pool, uint32_t order)
     return gone;
 }
 
+/* Under pressure: meshes in view made finer than the view now asks (their
+ * bound under want / SW_SEAM_KEEP: each would be remade coarser) given
+ * up, the largest first, until vertex_units and index_units came back.
+ * Their surfaces are drawn from stand-ins from the next frame (now, the
+ * frames drawing them still hold their blocks) until the workers remake
+ * them: what they held, kept until those remakes, left the surfaces
+ * coming into view without room. Returns how many went. */
+static uint32_t evict_too_fine(sw_seam_walk *w, uint64_t *vertex_units, uint64_t *index_units)
+{
+    sw_seam_cache *c = &w->cache;
+    uint32_t m = 0;
+    for (uint32_t s = 0; s < c->surface_count; s++) {
+        const sw_seam_entry *e = &c->entries[s];
+        if (e->state == SW_SEAM_READY && !w->evictable[s] && !w->standin[s] &&
+            (double)e->made_bound * SW_SEAM_KEEP < (double)w->want[s])
+            w->candidates[m++] = (sw_seam_candidate){
+                (float)sw_buddy_block_units(&c->vertex_pool, e->vertex_block), s };
+    }
+    return evict_sorted(w, m, UINT32_MAX, vertex_units, index_units);
+}
+
 uint32_t sw_seam_walk_evict(sw_seam_walk *w, uint32_t count)
 {
-    return evict_oldest(w, count, UINT64_MAX, UINT64_MAX);
+    uint64_t all_v = UINT64_MAX, all_i = UINT64_MAX;
+    return evict_oldest(w, count, &all_v, &all_i);
 }
 
 void sw_seam_walk_keep_room(sw_seam_walk *w, uint32_t vertex_units, uint32_t index_units,
@@ -487,10 +521,14 @@ void sw_seam_walk_keep_room(sw_seam_walk *w, uint32_t vertex_units, uint32_t ind
     uint64_t want_v = v->units / SW_SEAM_HEADROOM, want_i = i->units / SW_SEAM_HEADROOM;
     uint64_t free_v = v->units - vertex_units, free_i = i->units - index_units;
     uint32_t before = w->cache.evictions;
-    if (free_v < want_v / 2 || free_i < want_i / 2)   /* between a half and the whole share:
+    if (free_v < want_v / 2 || free_i < want_i / 2) {  /* between a half and the whole share:
                                                          not every frame */
-        evict_oldest(w, UINT32_MAX, free_v < want_v ? want_v - free_v : 0,
-                     free_i < want_i ? want_i - free_i : 0);
+        uint64_t short_v = free_v < want_v ? want_v - free_v : 0;
+        uint64_t short_i = free_i < want_i ? want_i - free_i : 0;
+        evict_oldest(w, UINT32_MAX, &short_v, &short_i);
+        if (w->pressure > 1.0)
+            evict_too_fine(w, &short_v, &short_i);
+    }
     /* The free share may lie in blocks too small for the largest mesh
      * asked: a block that size kept free, up to a 32nd of the pool. */
     for (int pool = SW_SEAM_VERTEX_POOL; pool <= SW_SEAM_INDEX_POOL; pool++) {
