@@ -548,15 +548,23 @@ static void test_pack_without_adjacency_section_opens(void)
 
 /* ---- files ---- */
 
+/* The sample pack written to scratch file name: its bytes (the caller
+ * frees them) and its path in path (256 bytes). */
+static uint8_t *write_sample(sample *s, const char *name, char *path, size_t *size)
+{
+    make_sample(s);
+    uint8_t *bytes = serialize_sample(s, size);
+    snprintf(path, 256, "%s", scratch(name));
+    write_plain(path, bytes, *size);
+    return bytes;
+}
+
 static void test_load_into_small_arena_fails_cleanly(void)
 {
     sample s;
-    make_sample(&s);
     size_t size = 0;
-    uint8_t *bytes = serialize_sample(&s, &size);
     char path[256];
-    snprintf(path, sizeof path, "%s", scratch("sample.swpack"));
-    write_plain(path, bytes, size);
+    uint8_t *bytes = write_sample(&s, "sample.swpack", path, &size);
     static _Alignas(64) unsigned char block[8192];
     sw_arena arena;
     sw_arena_init(&arena, block, size / 2);
@@ -589,12 +597,9 @@ static sw_status refuse_raw(void *user, const uint8_t *bytes, size_t size, sw_er
 static void test_map_only_what_root_alone_writes(void)
 {
     sample s;
-    make_sample(&s);
     size_t size = 0;
-    uint8_t *bytes = serialize_sample(&s, &size);
     char path[256];
-    snprintf(path, sizeof path, "%s", scratch("mapped.swpack"));
-    write_plain(path, bytes, size);
+    uint8_t *bytes = write_sample(&s, "mapped.swpack", path, &size);
     sw_pack pack;
     sw_pack_mapping map;
     sw_error err = { 0 };

@@ -446,7 +446,6 @@ static uint32_t evict_oldest(sw_seam_walk *w, uint32_t count, uint64_t *vertex_u
     return evict_sorted(w, m, count, vertex_units, index_units);
 }
 
-
 typedef struct room_search {
     sw_seam_walk *w;
     int pool;
