@@ -402,7 +402,8 @@ static void print_summary(const sw_program *rt)
            " cracks max %llu; undrawn max %u (surfaces in view with no mesh yet, the most in a"
            " frame); bound raised in %u frames, by up to %.2fx (the mesh cache could not hold"
            " the view); clamped max %u (surfaces in view closer than the pack was built for, its"
-           " --closest-mm or a tenth of its sewing tolerance, drawn at its finest); arena %.1f MiB (the pack's runtime_bytes %.1f MiB, %s, the run's"
+           " --closest-mm or a tenth of its sewing tolerance, drawn at its finest);"
+           " arena %.1f MiB (the pack's runtime_bytes %.1f MiB, %s, the run's"
            " frame stats and pictures the rest); mallocs after init %lld\n",
            (unsigned long long)s->frames_total, s->patches_total, s->width, s->height, s->walk_s, error,
            s->error_bound_px, (unsigned long long)s->cracks_max, s->waiting_max,

@@ -24,9 +24,6 @@ static uint64_t now_ns(void)
     return (uint64_t)t.tv_sec * 1000000000ull + (uint64_t)t.tv_nsec;
 }
 
-/* The cache's blocks for a worker's mesh: retired blocks whose frame has
- * finished go back first. Under alloc_lock, which the workers and V (for
- * stand-ins) take, never P. */
 static uint32_t order_of(uint32_t units)
 {
     uint32_t k = 0;
@@ -55,8 +52,11 @@ static void note_asked(sw_seam_workers *p, int pool, uint32_t units, int refused
         p->refused_order[pool] = (int)k;
 }
 
-/* Blocks for n vertices and m indices; with reserve, only when a
- * 1/SW_SEAM_STANDIN_RESERVE share of each pool stays free beside them. */
+/* The cache's blocks for surface s's mesh of n vertices and m indices
+ * (with reserve, only when a 1/SW_SEAM_STANDIN_RESERVE share of each pool
+ * stays free beside them): retired blocks whose frame has finished go back
+ * first. Under alloc_lock, which the workers and V (for stand-ins) take,
+ * never P. */
 static int place(sw_seam_workers *p, uint32_t s, uint32_t n, uint32_t m, int reserve,
                  sw_seam_entry *e)
 {
