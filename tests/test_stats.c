@@ -156,6 +156,11 @@ static void test_rss_fields_are_read_from_status_text(void)
     sw_rss r;
     SW_CHECK(sw_rss_read(&r) == 1);   /* this process, on Linux */
     SW_CHECK(r.rss_kb > 0 && r.peak_kb >= r.rss_kb);
+    /* Its own pages and its mapped files' (the program itself, at least):
+     * parts of VmRSS (the rest is shared memory). */
+    SW_CHECK_MSG(r.anon_kb > 0 && r.file_kb > 0 && r.anon_kb + r.file_kb <= r.rss_kb,
+                 "anon %lld, file %lld, rss %lld", (long long)r.anon_kb, (long long)r.file_kb,
+                 (long long)r.rss_kb);
 }
 
 int main(void)

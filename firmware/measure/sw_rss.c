@@ -26,7 +26,7 @@ int64_t sw_rss_field_kb(const char *text, int n, const char *key)
 
 int sw_rss_read(sw_rss *out)
 {
-    out->rss_kb = out->peak_kb = -1;
+    out->rss_kb = out->peak_kb = out->file_kb = out->anon_kb = -1;
     /* /proc/self/status is about 1.5 kB; 8 kB leaves room for kernels that
      * add fields. */
     char text[8192];
@@ -39,6 +39,8 @@ int sw_rss_read(sw_rss *out)
     close(fd);
     out->rss_kb = sw_rss_field_kb(text, n, "VmRSS:");
     out->peak_kb = sw_rss_field_kb(text, n, "VmHWM:");
+    out->file_kb = sw_rss_field_kb(text, n, "RssFile:");
+    out->anon_kb = sw_rss_field_kb(text, n, "RssAnon:");
     if (out->rss_kb < 0 || out->peak_kb < 0) {
         out->rss_kb = out->peak_kb = -1;
         return 0;

@@ -13,10 +13,15 @@
 typedef struct sw_rss {
     int64_t rss_kb;      /* VmRSS; -1 when unknown */
     int64_t peak_kb;     /* VmHWM; -1 when unknown */
+    int64_t file_kb;     /* RssFile: of VmRSS, pages of mapped files (a mapped pack's,
+                            the kernel's to drop and read again); -1 when unknown */
+    int64_t anon_kb;     /* RssAnon: of VmRSS, the process's own (the arena, the heap,
+                            Mesa's); -1 when unknown */
 } sw_rss;
 
-/* 1 when both figures were read, else 0 and both -1 (no /proc, or a
- * status file without them). */
+/* 1 when VmRSS and VmHWM were read, else 0 and both -1 (no /proc, or a
+ * status file without them); RssFile and RssAnon are read where the
+ * kernel has them (Linux 4.5 on). */
 int sw_rss_read(sw_rss *out);
 
 /* The figure after key ("VmRSS:") in a status text of n bytes, in kB; -1

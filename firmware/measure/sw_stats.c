@@ -43,6 +43,7 @@ sw_status sw_stats_init(sw_stats *s, sw_arena *arena, int frames, double error_b
     s->mallocs_after_init = -1;
     s->process_mallocs_after_init = -1;
     s->rss_start_kb = s->rss_first_loop_kb = s->rss_end_kb = s->rss_peak_kb = -1;
+    s->rss_end_file_kb = s->rss_end_anon_kb = -1;
     s->start_display_ms = s->start_prepare_ms = s->start_walk_init_ms = -1;
     s->start_workers_ms = s->start_gl_ms = s->start_frame_ms = s->start_load_wait_ms = -1;
     return SW_OK;
@@ -415,9 +416,10 @@ static void write_series_and_soak(FILE *f, const sw_stats *s)
             (unsigned long long)s->frames_total, s->worst_frame_ms,
             (unsigned long long)s->worst_frame);
     fprintf(f, "  \"rss_kb\": {\"start\": %lld, \"after_first_loop\": %lld, \"end\": %lld, "
-               "\"peak\": %lld},\n",
+               "\"peak\": %lld, \"end_file\": %lld, \"end_anon\": %lld},\n",
             (long long)s->rss_start_kb, (long long)s->rss_first_loop_kb,
-            (long long)s->rss_end_kb, (long long)s->rss_peak_kb);
+            (long long)s->rss_end_kb, (long long)s->rss_peak_kb, (long long)s->rss_end_file_kb,
+            (long long)s->rss_end_anon_kb);
     fprintf(f, "  \"soak\": {\"duration_s\": %.3f, \"loops\": %llu, \"frames_per_loop\": %d, "
                "\"heap_resident\": %d, \"batch_waits\": %llu, \"rss_kb_per_loop\": [",
             s->duration_s, (unsigned long long)s->loops, s->frame_capacity, s->heap_resident,

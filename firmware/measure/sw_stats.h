@@ -139,6 +139,7 @@ typedef struct sw_stats {
      * after the first loop (the GL driver's own buffers are taken by then),
      * at the end, and the process's peak. */
     int64_t rss_start_kb, rss_first_loop_kb, rss_end_kb, rss_peak_kb;
+    int64_t rss_end_file_kb, rss_end_anon_kb;   /* of the end's: mapped files', the process's own */
     int64_t rss_loop_kb[SW_STATS_RSS_LOOPS]; /* at the end of each of the first loops */
     int heap_resident;           /* the heap and the arena made resident after the first loop
                                     (sw_heap.h); 0 when no loop follows it */

@@ -297,7 +297,10 @@ static sw_status walk(sw_program *rt, sw_error *err)
         if (rt->display->close_requested)
             break;   /* the window closed, or SIGTERM/SIGINT: end as if the walk were done */
     }
-    s->rss_end_kb = rss_now_kb(s);
+    sw_rss end;
+    sw_rss_read(&end);
+    s->rss_end_kb = end.rss_kb, s->rss_peak_kb = end.peak_kb;
+    s->rss_end_file_kb = end.file_kb, s->rss_end_anon_kb = end.anon_kb;
     s->batch_waits = rt->pool.waits;
     rt->stats.walk_s = sw_program_now_s() - t0;
     rt->stats.mallocs_after_init = sw_alloc_count_active()
