@@ -181,14 +181,13 @@ sw_status sw_pack_map_checked(const char *path, const sw_parts_runner *runner,
 {
     const raw_check check = { check_fn, user };
     *map = (sw_pack_mapping){ NULL, 0 };
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
-        sw_error_set(err, SW_ERR_IO, "cannot open: %s", strerror(errno));
-        sw_error_prefix(err, "%s", path);
-        return SW_ERR_IO;
+    uint64_t file_size = 0;
+    int fd = -1;
+    sw_status s = open_regular(path, &fd, &file_size, err);
+    if (s == SW_OK) {
+        s = map_fd(fd, runner, &check, map, out, err);
+        close(fd);   /* the mapping keeps the file */
     }
-    sw_status s = map_fd(fd, runner, &check, map, out, err);
-    close(fd);   /* the mapping keeps the file */
     if (s != SW_OK)
         sw_error_prefix(err, "%s", path);
     return s;

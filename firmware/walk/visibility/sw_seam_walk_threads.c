@@ -401,6 +401,15 @@ void sw_seam_walk_restitch_around(sw_seam_walk *w, uint32_t s)
         }
 }
 
+/* Surface s's mesh given up (its blocks free once the frames that drew
+ * it have finished), the stand-ins beside it made again. */
+static void give_up(sw_seam_walk *w, uint32_t s)
+{
+    retire_mesh(w, s);
+    sw_seam_walk_restitch_around(w, s);
+    w->cache.evictions++;
+}
+
 /* The first of the m candidates (sorted here) given up until count of
  * them went or their blocks covered *vertex_units and *index_units, which
  * keep what is still short. */
@@ -416,9 +425,7 @@ static uint32_t evict_sorted(sw_seam_walk *w, uint32_t m, uint32_t count,
         uint64_t i = sw_buddy_block_units(&c->index_pool, e->index_block);
         *vertex_units -= v < *vertex_units ? v : *vertex_units;
         *index_units -= i < *index_units ? i : *index_units;
-        retire_mesh(w, w->candidates[k].surface);
-        sw_seam_walk_restitch_around(w, w->candidates[k].surface);
-        c->evictions++;
+        give_up(w, w->candidates[k].surface);
     }
     return k;
 }
@@ -478,9 +485,7 @@ uint32_t sw_seam_walk_room_for(sw_seam_walk *w, int pool, uint32_t order)
         uint32_t block = pool == SW_SEAM_INDEX_POOL ? e->index_block : e->vertex_block;
         if (e->state != SW_SEAM_READY || !w->evictable[s] || block < first || block >= end)
             continue;
-        retire_mesh(w, s);
-        sw_seam_walk_restitch_around(w, s);
-        c->evictions++;
+        give_up(w, s);
         gone++;
     }
     return gone;
