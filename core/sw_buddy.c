@@ -172,3 +172,16 @@ int sw_buddy_find_region(const sw_buddy *b, uint32_t order, sw_buddy_freeable_fn
     }
     return best != UINT64_MAX;
 }
+
+uint32_t sw_buddy_region_owners(const sw_buddy *b, uint32_t first, uint32_t order,
+                                uint32_t *owners, uint32_t cap)
+{
+    if (order > SW_BUDDY_MAX_ORDER || first >= b->units)
+        return 0;
+    uint64_t end = (uint64_t)first + (1ull << order);
+    uint32_t n = 0;
+    for (uint64_t u = first; u < end && u < b->units && n < cap; u += 1ull << b->order[u])
+        if (b->state[u] == USED)
+            owners[n++] = b->next[u];
+    return n;
+}

@@ -78,6 +78,24 @@ static uint32_t shadow_cost(const sw_buddy *b, const uint32_t *owner, const uint
     return cost;
 }
 
+/* sw_buddy_region_owners of the region found at at: the owners the
+ * shadow map has from at on, in address order, those of its blocks; and
+ * when one block covers the region, that block's owner alone. Cut at cap. */
+static void check_owners(const sw_buddy *b, const uint32_t *owner, uint32_t at, uint32_t order)
+{
+    uint32_t got[1024], want[1024], n_want = 0, last = 0xFFFFFFFFu;
+    uint32_t n = sw_buddy_region_owners(b, at, order, got, 1024);
+    for (uint32_t u = at; u < at + (1u << order) && n_want < 1024; u++)
+        if (owner[u] != 0xFFFFFFFFu && owner[u] != last)
+            want[n_want++] = last = owner[u];
+    SW_CHECK_MSG(n == n_want, "order %u at %u: %u owners listed, %u in the map",
+                 (unsigned)order, (unsigned)at, (unsigned)n, (unsigned)n_want);
+    for (uint32_t k = 0; k < n && k < n_want; k++)
+        SW_CHECK(got[k] == want[k]);
+    if (n_want > 1)
+        SW_CHECK(sw_buddy_region_owners(b, at, order, got, 1) == 1 && got[0] == want[0]);
+}
+
 /* What sw_buddy_find_region must find: the cheapest aligned region's
  * cost, UINT32_MAX when none can be freed. */
 static uint32_t cheapest_region(const sw_buddy *b, const uint32_t *owner, const uint32_t *live,
@@ -106,22 +124,24 @@ static void check_regions(sw_buddy *b, uint32_t *owner, const uint32_t *live, in
         SW_CHECK(at % (1u << order) == 0 && at + (1u << order) <= units);
         SW_CHECK(shadow_cost(b, owner, live, at, 1u << order) == want);
         SW_CHECK((want == 0) == (sw_buddy_largest_free(b) >= (int)order));
+        check_owners(b, owner, at, order);
     }
     int k = sw_buddy_largest_free(b);
     uint32_t at;
     SW_CHECK(k < 0 || (sw_buddy_alloc(b, 1u << k, &at) && sw_buddy_free(b, at)));
     SW_CHECK(k >= SW_BUDDY_MAX_ORDER || !sw_buddy_alloc(b, 2u << k, &at));
-    /* Free the region found for 2^6 units: then a block of 2^6 fits. */
+    /* Free the owners listed for the region found for 2^6 units: then a
+     * block of 2^6 fits. */
     if (!sw_buddy_find_region(b, 6, freeable, NULL, &at))
         return;
-    for (uint32_t u = at; u < at + 64; u++)
-        if (owner[u] != 0xFFFFFFFFu) {
-            uint32_t i = owner[u];
-            for (uint32_t v = 0; v < units; v++)
-                owner[v] = owner[v] == i ? 0xFFFFFFFFu : owner[v];
-            SW_CHECK(sw_buddy_free(b, live[i]));
-            used[i] = 0;
-        }
+    uint32_t listed[64], n = sw_buddy_region_owners(b, at, 6, listed, 64);
+    for (uint32_t j = 0; j < n; j++) {
+        uint32_t i = listed[j];
+        for (uint32_t v = 0; v < units; v++)
+            owner[v] = owner[v] == i ? 0xFFFFFFFFu : owner[v];
+        SW_CHECK(sw_buddy_free(b, live[i]));
+        used[i] = 0;
+    }
     SW_CHECK(sw_buddy_largest_free(b) >= 6);
 }
 

@@ -287,6 +287,7 @@ typedef struct sw_seam_walk {
                                      (sw_seam_standin_worth); 0 by its error alone (tests) */
     uint32_t standin_evicted;     /* the frame stand-ins last gave meshes up for room */
     uint32_t standin_evict_rounds;/* and how many times in it (UINT32_MAX: none was left) */
+    uint32_t standin_searches;    /* region searches for stand-ins in that frame */
     uint8_t *standin;             /* surface_count: its cache entry is a stand-in */
     uint8_t *restitch;            /* surface_count: a stand-in to make again after the swap */
     float *standin_error;         /* surface_count: the error of the level its stand-in

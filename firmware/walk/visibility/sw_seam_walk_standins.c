@@ -215,6 +215,12 @@ static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
     return w->mixed_shown;
 }
 
+/* Region searches for stand-ins a frame: each looks through a pool's
+ * blocks, and a view larger than the cache refuses tens of thousands of
+ * stand-ins a frame (4,000,000 patches: minutes a frame when each
+ * searched). The rounds below go on. */
+#define SW_STANDIN_SEARCHES 16u
+
 /* No room for a stand-in. First the region that gives the block refused
  * (sw_seam_walk_room_for): a pool most of whose free room lies in blocks
  * too small kept refusing it while least recently drawn meshes went.
@@ -227,19 +233,21 @@ static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
  * hundreds of surfaces undrawn. 1 when some went. */
 static int make_room(sw_seam_walk *w, sw_seam_frame *frame)
 {
+    if (w->standin_evicted != w->frame)
+        w->standin_evicted = w->frame, w->standin_evict_rounds = 0, w->standin_searches = 0;
     uint32_t gone = 0;
     for (int pool = SW_SEAM_VERTEX_POOL; pool <= SW_SEAM_INDEX_POOL; pool++) {
         uint32_t largest;
         int refused;
         sw_seam_workers_asked(w->workers, pool, &largest, &refused);
-        if (refused >= 0)
+        if (refused >= 0 && w->standin_searches < SW_STANDIN_SEARCHES) {
+            w->standin_searches++;
             gone += sw_seam_walk_room_for(w, pool, (uint32_t)refused);
+        }
     }
     frame->evicted += gone;
     if (gone > 0)
         return 1;
-    if (w->standin_evicted != w->frame)
-        w->standin_evicted = w->frame, w->standin_evict_rounds = 0;
     if (w->standin_evict_rounds == UINT32_MAX)
         return 0;   /* nothing left out of view this frame */
     uint32_t want = 64u << (w->standin_evict_rounds < 24 ? w->standin_evict_rounds : 24);

@@ -472,21 +472,26 @@ static int freeable(void *ctx, uint32_t first, uint32_t owner)
            sw_retire_ring_done(&w->workers->retire, e->last_frame);
 }
 
+/* Owners given up a search: a region of more blocks than that (tiny
+ * meshes side by side) is searched again, cheaper by those gone. */
+#define SW_SEAM_ROOM_OWNERS 1024u
+#define SW_SEAM_ROOM_ROUNDS 4
+
 uint32_t sw_seam_walk_room_for(sw_seam_walk *w, int pool, uint32_t order)
 {
     room_search search = { w, pool };
-    uint32_t first = 0, gone = 0;
-    if (sw_seam_workers_find_room(w->workers, pool, order, freeable, &search, &first) != 1)
-        return 0;
-    uint64_t end = first + (1ull << order);
-    sw_seam_cache *c = &w->cache;
-    for (uint32_t s = 0; s < c->surface_count; s++) {
-        const sw_seam_entry *e = &c->entries[s];
-        uint32_t block = pool == SW_SEAM_INDEX_POOL ? e->index_block : e->vertex_block;
-        if (e->state != SW_SEAM_READY || !w->evictable[s] || block < first || block >= end)
-            continue;
-        give_up(w, s);
-        gone++;
+    uint32_t owners[SW_SEAM_ROOM_OWNERS], gone = 0;
+    for (int round = 0; round < SW_SEAM_ROOM_ROUNDS; round++) {
+        uint32_t count = 0;
+        if (sw_seam_workers_find_room(w->workers, pool, order, freeable, &search, owners,
+                                      SW_SEAM_ROOM_OWNERS, &count) != 1)
+            break;
+        for (uint32_t k = 0; k < count; k++)
+            if (owners[k] < w->cache.surface_count &&
+                w->cache.entries[owners[k]].state == SW_SEAM_READY)
+                give_up(w, owners[k]), gone++;
+        if (count < SW_SEAM_ROOM_OWNERS)
+            break;
     }
     return gone;
 }

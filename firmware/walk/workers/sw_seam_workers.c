@@ -116,15 +116,20 @@ void sw_seam_workers_asked(sw_seam_workers *p, int pool, uint32_t *largest, int 
 }
 
 int sw_seam_workers_find_room(sw_seam_workers *p, int pool, uint32_t order,
-                              sw_buddy_freeable_fn freeable, void *ctx, uint32_t *first)
+                              sw_buddy_freeable_fn freeable, void *ctx, uint32_t *owners,
+                              uint32_t cap, uint32_t *count)
 {
     sw_buddy *b = pool == SW_SEAM_INDEX_POOL ? &p->cache->index_pool : &p->cache->vertex_pool;
+    uint32_t first = 0;
+    *count = 0;
     pthread_mutex_lock(&p->alloc_lock);
     take_retired(p);
     p->refused_order[pool] = -1;
     int room = sw_buddy_largest_free(b) >= (int)order            ? 2
-               : sw_buddy_find_region(b, order, freeable, ctx, first) ? 1
-                                                                       : 0;
+               : sw_buddy_find_region(b, order, freeable, ctx, &first) ? 1
+                                                                        : 0;
+    if (room == 1)
+        *count = sw_buddy_region_owners(b, first, order, owners, cap);
     pthread_mutex_unlock(&p->alloc_lock);
     return room;
 }

@@ -126,12 +126,14 @@ void sw_seam_workers_asked(sw_seam_workers *p, int pool, uint32_t *largest, int 
 
 /* Room for a block of 2^order units of pool (sw_buddy_find_region under
  * alloc_lock, retired blocks whose frames have finished given back
- * first): 2 when one is free, 1 and *first when the region from *first
- * would give one once the blocks in it that freeable accepts (their owner:
- * the surface) are given up, 0 when no region would. The caller gives
- * them up after the call (sw_seam_workers_retire takes the lock). */
+ * first): 2 when one is free, 1 when a region would give one once the
+ * blocks in it that freeable accepts are given up, their owners (the
+ * surfaces; at most cap) then in owners and their count in *count; 0 when
+ * no region would. The caller gives them up after the call
+ * (sw_seam_workers_retire takes the lock). */
 int sw_seam_workers_find_room(sw_seam_workers *p, int pool, uint32_t order,
-                              sw_buddy_freeable_fn freeable, void *ctx, uint32_t *first);
+                              sw_buddy_freeable_fn freeable, void *ctx, uint32_t *owners,
+                              uint32_t cap, uint32_t *count);
 
 /* Producer: a mesh given up, its blocks back to the pool at once when the
  * frame that last drew it has finished (under alloc_lock), else through
