@@ -351,20 +351,36 @@ sw_status sw_seam_walk_move_front(sw_seam_walk *w, sw_seam_frame *frame, sw_erro
     return SW_OK;
 }
 
+/* Every surface culled, bounded and given its target, and the part
+ * levels chosen: the frame's counts of them afresh. */
+static int select_surfaces(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame)
+{
+    int changed = 0;
+    frame->visible_surfaces = frame->clamped_surfaces = frame->cone_culled = 0;
+    frame->covered_surfaces = 0;
+    for (uint32_t s = 0; s < w->pack->seam.surface_count; s++) {
+        changed |= cull_surface(w, view, s, frame);
+        frame->visible_surfaces += w->visible[s] != 0;
+    }
+    sw_seam_walk_choose_parts(w, view, frame);
+    return changed;
+}
+
+/* Selections again for a bound raised before the plan: a few steps of
+ * 4 reach the pressure's most from none. */
+#define SW_SEAM_PRESSURE_AHEAD_STEPS 4
+
 sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_frame *frame,
                               sw_error *err)
 {
     memset(frame, 0, sizeof *frame);
     sw_seam_walk_take_deferred(w, frame);
-    uint32_t n = w->pack->seam.surface_count;
     int changed = w->frame == 0;
     w->eye = view->eye;
     cull_boxes(w, view, frame);
-    for (uint32_t s = 0; s < n; s++) {
-        changed |= cull_surface(w, view, s, frame);
-        frame->visible_surfaces += w->visible[s] != 0;
-    }
-    sw_seam_walk_choose_parts(w, view, frame);
+    changed |= select_surfaces(w, view, frame);
+    for (int k = 0; k < SW_SEAM_PRESSURE_AHEAD_STEPS && sw_seam_walk_pressure_ahead(w); k++)
+        changed |= select_surfaces(w, view, frame);
     /* The update is complete (no operation cap) and depends on the bounds
      * alone, so with no bound changed the front already meets them: a
      * still camera, or one whose surfaces all keep their tessellations,

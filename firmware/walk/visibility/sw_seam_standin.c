@@ -219,6 +219,20 @@ static void sizes(const sw_seam_standin *m, uint32_t s, const sw_level *lv_rec, 
     }
 }
 
+void sw_seam_standin_estimate(const sw_pack *pack, uint32_t s, uint32_t level,
+                              uint32_t *vertices, uint32_t *indices)
+{
+    const sw_seam_graph *g = &pack->seam;
+    const sw_level *rec = &pack->levels.levels[level];
+    uint64_t n = rec->vertex_count, idx = rec->index_count;
+    for (uint32_t i = 0; i < g->surface_loops[s + 1] - g->surface_loops[s]; i++) {
+        uint32_t points = pack->levels.chains[rec->first_chain + i].point_count;
+        n += points, idx += 6ull * points;
+    }
+    *vertices = n > UINT32_MAX ? UINT32_MAX : (uint32_t)n;
+    *indices = idx > UINT32_MAX ? UINT32_MAX : (uint32_t)idx;
+}
+
 int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
                          uint32_t level, sw_seam_cache *c, sw_seam_place_fn place,
                          void *place_ctx, sw_seam_entry *e)

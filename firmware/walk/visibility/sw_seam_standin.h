@@ -64,6 +64,13 @@ float sw_seam_standin_worth(const sw_level *level, int silhouette);
  * its finest. UINT32_MAX when s has none. */
 uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound, int silhouette);
 
+/* About the vertices and indices a stand-in of s from level takes: the
+ * level's, and its chains' points for the strips that join each loop to
+ * it (the loops' own points as the chains count them: the front it is
+ * joined to is not read). */
+void sw_seam_standin_estimate(const sw_pack *pack, uint32_t s, uint32_t level,
+                              uint32_t *vertices, uint32_t *indices);
+
 /* 1 when an outer loop of surface s vanishes at front (m's buffers are
  * written). */
 int sw_seam_standin_vanishes(sw_seam_standin *m, const sw_seam_select *front, uint32_t s);

@@ -168,6 +168,42 @@ void sw_seam_walk_pressure(sw_seam_walk *w, sw_seam_frame *frame)
         w->pressure_calm = 0;
 }
 
+/* Units of a block holding count items of unit each, as the buddy hands
+ * it out (a power of two). */
+static uint64_t block_units(uint64_t count, uint32_t unit)
+{
+    uint64_t units = (count + unit - 1) / unit, block = 1;
+    while (block < units)
+        block *= 2;
+    return block;
+}
+
+int sw_seam_walk_pressure_ahead(sw_seam_walk *w)
+{
+    if (!sw_seam_walk_async(w) || !w->standins || w->no_pressure ||
+        w->pressure >= SW_SEAM_PRESSURE_MAX)
+        return 0;
+    uint64_t vertex_units = 0, index_units = 0;
+    for (uint32_t s = 0; s < w->pack->seam.surface_count; s++) {
+        if (w->visible[s] != 1)
+            continue;
+        uint32_t level = sw_seam_standin_level(w->pack, s, w->target[s], 0), n = 1, m = 1;
+        if (level != UINT32_MAX)
+            sw_seam_standin_estimate(w->pack, s, level, &n, &m);
+        vertex_units += block_units(n, SW_SEAM_CACHE_VERTEX_UNIT);
+        index_units += block_units(m, SW_SEAM_CACHE_INDEX_UNIT);
+    }
+    double over = fmax((double)vertex_units / w->cache.vertex_pool.units,
+                       (double)index_units / w->cache.index_pool.units);
+    if (over <= 7.0 / 8.0)
+        return 0;
+    double step = fmin(fmax(over / 0.75, SW_SQRT2), 4.0);
+    w->pressure = fmin(w->pressure * step, SW_SEAM_PRESSURE_MAX);
+    w->pressure_raised = w->frame;
+    w->pressure_calm = 0;
+    return 1;
+}
+
 void sw_seam_walk_plan(sw_seam_walk *w, const sw_view *view, sw_seam_plan *plan,
                        sw_seam_frame *frame)
 {
