@@ -35,6 +35,23 @@ static void unlink_block(sw_buddy *b, uint32_t first)
     b->state[first] = INSIDE;
 }
 
+/* [0, units) free: the largest block aligned at each position that still
+ * fits. */
+static void cover(sw_buddy *b, uint32_t units)
+{
+    b->units = units;
+    for (int k = 0; k <= SW_BUDDY_MAX_ORDER; k++)
+        b->head[k] = NONE;
+    for (uint32_t at = 0; at < units;) {
+        uint32_t k = 0;
+        while (k < SW_BUDDY_MAX_ORDER && (at & ((2u << k) - 1)) == 0 &&
+               (uint64_t)at + (2ull << k) <= units)
+            k++;
+        push(b, at, k);
+        at += 1u << k;
+    }
+}
+
 sw_status sw_buddy_init(sw_buddy *b, uint32_t units, sw_arena *arena, sw_error *err)
 {
     memset(b, 0, sizeof *b);
@@ -48,20 +65,18 @@ sw_status sw_buddy_init(sw_buddy *b, uint32_t units, sw_arena *arena, sw_error *
     if (!b->next || !b->prev || !b->order || !b->state)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "buddy: arena too small for %u units",
                             (unsigned)units);
-    b->units = units;
     memset(b->state, INSIDE, n);
-    for (int k = 0; k <= SW_BUDDY_MAX_ORDER; k++)
-        b->head[k] = NONE;
-    /* The largest block aligned at each position that still fits. */
-    for (uint32_t at = 0; at < units;) {
-        uint32_t k = 0;
-        while (k < SW_BUDDY_MAX_ORDER && (at & ((2u << k) - 1)) == 0 &&
-               (uint64_t)at + (2ull << k) <= units)
-            k++;
-        push(b, at, k);
-        at += 1u << k;
-    }
+    cover(b, units);
     return SW_OK;
+}
+
+int sw_buddy_shrink(sw_buddy *b, uint32_t units)
+{
+    if (units == 0 || units > b->units || b->used_units != 0)
+        return 0;
+    memset(b->state, INSIDE, (size_t)b->units + 1);
+    cover(b, units);
+    return 1;
 }
 
 int sw_buddy_alloc(sw_buddy *b, uint32_t count, uint32_t *first)

@@ -35,6 +35,11 @@ size_t sw_buddy_arena_bytes(uint32_t units);
  * units 0, SW_ERR_NO_MEMORY when the arena is too small. */
 sw_status sw_buddy_init(sw_buddy *b, uint32_t units, sw_arena *arena, sw_error *err);
 
+/* The pool cut to its first units (a test's smaller cache, in the same
+ * arrays): 1, or 0 when a block is in use or units is 0 or more than it
+ * has (nothing changes). */
+int sw_buddy_shrink(sw_buddy *b, uint32_t units);
+
 /* A block of at least count units (count >= 1): 1 and *first set, or 0 when
  * no free block is large enough (nothing changes). */
 int sw_buddy_alloc(sw_buddy *b, uint32_t count, uint32_t *first);

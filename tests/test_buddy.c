@@ -54,6 +54,27 @@ static void test_odd_range_and_bad_input(void)
     SW_CHECK(sw_buddy_init(&b, 0, &a, NULL) == SW_ERR_ARG);
 }
 
+/* A pool cut to fewer units hands out only those, and all of them; it is
+ * not cut while a block is in use, nor to 0 or more than it has. */
+static void test_shrink(void)
+{
+    sw_arena a;
+    sw_buddy b;
+    init(&b, &a, 1000);
+    uint32_t at, n = 0;
+    SW_CHECK(sw_buddy_alloc(&b, 1, &at));
+    SW_CHECK(!sw_buddy_shrink(&b, 100) && b.units == 1000);
+    SW_CHECK(sw_buddy_free(&b, at));
+    SW_CHECK(!sw_buddy_shrink(&b, 0) && !sw_buddy_shrink(&b, 1001) && b.units == 1000);
+    SW_CHECK(sw_buddy_shrink(&b, 100) && b.units == 100);
+    SW_CHECK(sw_buddy_largest_free(&b) == 6);   /* 64 + 32 + 4 */
+    while (sw_buddy_alloc(&b, 1, &at)) {
+        SW_CHECK(at < 100);
+        n++;
+    }
+    SW_CHECK_MSG(n == 100 && b.used_units == 100, "%u units handed out of 100", (unsigned)n);
+}
+
 /* Blocks owned by a multiple of 3 cannot be freed (test_random_...'s
  * owners are its slots). */
 static int freeable(void *ctx, uint32_t first, uint32_t owner)
@@ -195,6 +216,7 @@ int main(void)
 {
     SW_RUN(test_rounds_up_and_merges_back);
     SW_RUN(test_odd_range_and_bad_input);
+    SW_RUN(test_shrink);
     SW_RUN(test_random_blocks_never_overlap);
     return sw_test_finish();
 }

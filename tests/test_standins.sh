@@ -105,9 +105,11 @@ EOF
 # A cache smaller than the view (--test-cache-vertices, about a third of
 # what the walk draws at most here): the walk raises its bound for room
 # and says so on the summary line; the mutant that never raises it leaves
-# surfaces undrawn. (Not yet asserted: no holes with the pressure. It
-# leaves fewer, not none: meshes made finer before a rise keep their room
-# until remade, and stand-ins coming into view meanwhile wait.)
+# surfaces undrawn, at least 8 times as many as the walk. (Not yet
+# asserted: no holes with the pressure. It leaves 2-16 in a frame where
+# the mutant leaves 260-270: in the first frames the stand-ins and the
+# batch making their meshes take the whole cache, with nothing out of view
+# to give up.)
 walk small --workers 1 --sync-work 0 --measure-every 0 --test-cache-vertices 20000
 walk small_mutant --workers 1 --sync-work 0 --measure-every 0 --test-cache-vertices 20000 \
   --test-pressure 0
@@ -117,10 +119,15 @@ python3 - "$work/small.json" "$work/small_mutant.json" <<'EOF' || fail "stats, s
 import json, sys
 s, m = (json.load(open(p))["threads"] for p in sys.argv[1:3])
 print("a cache of 20,000 vertices: bound raised in %d frames, by up to %.2fx; undrawn max %d "
-      "(%d without the pressure)" % (s["pressure_frames"], s["pressure_max"],
-                                      s["waiting_surfaces_max"], m["waiting_surfaces_max"]))
+      "(%d without the pressure); %d stand-ins from a coarser level for room"
+      % (s["pressure_frames"], s["pressure_max"], s["waiting_surfaces_max"],
+         m["waiting_surfaces_max"], s["standins_coarser"]))
 assert s["pressure_frames"] > 0 and s["pressure_max"] > 1, s
 assert m["pressure_frames"] == 0 and m["pressure_max"] == 1, m
 assert m["waiting_surfaces_max"] > 0, "the mutant's cache held the view: nothing was tested"
+assert 8 * s["waiting_surfaces_max"] <= m["waiting_surfaces_max"], \
+    "the pressure left %d undrawn, the mutant %d" % (s["waiting_surfaces_max"],
+                                                    m["waiting_surfaces_max"])
+assert 0 <= s["standins_coarser"] <= s["standins_made"], s
 EOF
 echo "ok: stand-ins"

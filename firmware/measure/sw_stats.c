@@ -315,11 +315,12 @@ void sw_stats_add_pressure(sw_stats *s, double pressure)
     s->pressure_max = pressure > s->pressure_max ? pressure : s->pressure_max;
 }
 
-void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint64_t triangles,
-                           uint32_t leaner_jobs)
+void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint32_t coarser,
+                           uint64_t triangles, uint32_t leaner_jobs)
 {
     s->standins_max = drawn > s->standins_max ? drawn : s->standins_max;
     s->standins_made += made;
+    s->standins_coarser += coarser;
     s->standins_leaner += leaner_jobs;
     s->standin_triangles += triangles;
     if (triangles > s->standin_triangles_max)
@@ -380,7 +381,7 @@ static void write_threads(FILE *f, const sw_stats *s)
 {
     fprintf(f, "  \"threads\": {\"workers\": %d, \"sync_work\": %d, \"target_ms\": %.3f, "
                "\"waiting_surfaces_max\": %u, \"pressure_max\": %.3f, \"pressure_frames\": %u, "
-               "\"standins_max\": %u, \"standins_made\": %llu, "
+               "\"standins_max\": %u, \"standins_made\": %llu, \"standins_coarser\": %llu, "
                "\"standins_leaner_jobs\": %llu, "
                "\"standin_triangles\": {\"mean\": %.0f, \"max\": %llu}, "
                "\"behind_surfaces_max\": %u, "
@@ -392,7 +393,8 @@ static void write_threads(FILE *f, const sw_stats *s)
                "\"over_cap_ratio_max\": %.3f}},\n",
             s->workers, s->sync_work, s->target_ms, s->waiting_max,
             s->pressure_max > 1.0 ? s->pressure_max : 1.0, s->pressure_frames, s->standins_max,
-            (unsigned long long)s->standins_made, (unsigned long long)s->standins_leaner,
+            (unsigned long long)s->standins_made, (unsigned long long)s->standins_coarser,
+            (unsigned long long)s->standins_leaner,
             s->frames_total ? (double)s->standin_triangles / (double)s->frames_total : 0.0,
             (unsigned long long)s->standin_triangles_max, s->behind_max,
             s->frames_behind_max, s->behind_ratio_max, (unsigned long long)s->jobs_total,

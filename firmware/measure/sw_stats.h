@@ -99,6 +99,8 @@ typedef struct sw_stats {
     uint32_t waiting_max;        /* visible surfaces with no mesh yet, the most of a frame */
     uint32_t standins_max;       /* drawn from a static level while their mesh is made */
     uint64_t standins_made;      /* stand-ins made (sw_seam_standin.h) */
+    uint64_t standins_coarser;   /* of them, from a coarser level than their target's, for
+                                    room */
     uint64_t standins_leaner;    /* jobs giving stand-ins finer than needed the walk's own mesh */
     uint64_t standin_triangles;  /* the stand-ins drew, over every frame */
     uint64_t standin_triangles_max; /* of a frame */
@@ -185,10 +187,12 @@ void sw_stats_add_update_cap(sw_stats *s, double used, double cap);
 
 /* The threaded walk's frame: waiting and behind surfaces, frames behind,
  * the bound ratio, jobs and whether a batch was swapped in, the budget. */
-/* The threaded walk's stand-ins: drawn this frame, made, their triangles,
- * and the jobs scheduled to replace the ones finer than needed. */
-void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint64_t triangles,
-                           uint32_t leaner_jobs);
+/* The threaded walk's stand-ins: drawn this frame, made (coarser of them
+ * made from a level coarser than their target's, for room), their
+ * triangles, and the jobs scheduled to replace the ones finer than
+ * needed. */
+void sw_stats_add_standins(sw_stats *s, uint32_t drawn, uint32_t made, uint32_t coarser,
+                           uint64_t triangles, uint32_t leaner_jobs);
 void sw_stats_add_part_levels(sw_stats *s, uint32_t parts, uint32_t covered, uint64_t triangles);
 
 /* The factor the walk raised its bound by this frame (1: not raised). */

@@ -151,8 +151,8 @@ static sw_status seam_frame(sw_program *rt, int measuring, uint64_t *triangles, 
                                    f.seam_ops, f.budget_tris, f.budget_used);
     sw_stats_add_pressure(s, f.pressure);
     if (rt->workers)
-        sw_stats_add_standins(s, f.standins, f.standins_made, f.standin_triangles,
-                              f.jobs_leaner);
+        sw_stats_add_standins(s, f.standins, f.standins_made, f.standins_coarser,
+                              f.standin_triangles, f.jobs_leaner);
     sw_stats_add_part_levels(s, f.part_levels, f.covered_surfaces, f.part_level_triangles);
     if (rt->workers && f.jobs_scheduled)
         sw_stats_add_update_cap(s, f.updated_tris, f.updated_cap);

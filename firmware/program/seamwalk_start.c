@@ -209,7 +209,7 @@ static sw_status init_seams(sw_program *rt, double *mark_s, sw_error *err)
     if (st == SW_OK && rt->opt.drop_surface >= 0)
         rt->seam.drop_surface = (uint32_t)rt->opt.drop_surface;
     if (st == SW_OK && rt->opt.cache_vertices > 0)
-        sw_seam_walk_hold_cache(&rt->seam, (uint32_t)rt->opt.cache_vertices);
+        sw_seam_walk_shrink_cache(&rt->seam, (uint32_t)rt->opt.cache_vertices);
     rt->seam.no_pressure = !rt->opt.pressure;
     rt->seam.no_standins = !rt->opt.static_levels;
     rt->seam.no_part_levels = !rt->opt.part_levels;

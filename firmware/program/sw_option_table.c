@@ -214,7 +214,7 @@ const sw_option_desc sw_option_table[] = {
     {.name = "--test-cache-vertices", .arg = "N", .kind = SW_OPTION_INT, .min = 0,
      .max = 2147483647, .def = 0, .def_text = "the pack's", F(cache_vertices),
      .flags = SW_OPTION_TEST_ONLY,
-     .help = "the mesh cache held to about N vertices (and 6 N indices): a view larger than "
+     .help = "the mesh cache cut to about N vertices (and 6 N indices): a view larger than "
              "it, so the bound must be raised for room"},
     {.name = "--test-pressure", ON_OFF, .def = 1,
      F(pressure), .flags = SW_OPTION_TEST_ONLY,

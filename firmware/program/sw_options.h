@@ -75,7 +75,7 @@ typedef struct sw_options {
                                     bound (1, tests) */
     int visibility_thread;       /* V on its own thread (with workers) */
     int slow_workers_ms;         /* --test-slow-workers MS: each job published MS late */
-    long cache_vertices;         /* --test-cache-vertices N: the mesh cache held to about N
+    long cache_vertices;         /* --test-cache-vertices N: the mesh cache cut to about N
                                     vertices (0: its whole size) */
     int pressure;                /* --test-pressure 0: the bound never raised for room */
     int batch_tris;              /* triangles drawn before waiting for the GL driver; 0: at

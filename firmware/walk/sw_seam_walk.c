@@ -146,22 +146,18 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
 }
 
 /* Pool b held, largest blocks first, until at most keep units are free. */
-static void hold(sw_buddy *b, uint32_t keep)
+/* units of pool b, at most what it has. */
+static void cut(sw_buddy *b, uint64_t units)
 {
-    for (int k = SW_BUDDY_MAX_ORDER; k >= 0; k--) {
-        uint32_t at;
-        while (b->units - b->used_units >= keep + (1u << k) && sw_buddy_alloc(b, 1u << k, &at))
-            ;
-    }
+    sw_buddy_shrink(b, (uint32_t)(units == 0 ? 1 : units < b->units ? units : b->units));
 }
 
-void sw_seam_walk_hold_cache(sw_seam_walk *w, uint32_t vertices)
+void sw_seam_walk_shrink_cache(sw_seam_walk *w, uint32_t vertices)
 {
     uint64_t indices = (uint64_t)vertices * 6;
-    hold(&w->cache.vertex_pool, (vertices + SW_SEAM_CACHE_VERTEX_UNIT - 1) /
-                                    SW_SEAM_CACHE_VERTEX_UNIT);
-    hold(&w->cache.index_pool, (uint32_t)((indices + SW_SEAM_CACHE_INDEX_UNIT - 1) /
-                                          SW_SEAM_CACHE_INDEX_UNIT));
+    cut(&w->cache.vertex_pool, (vertices + SW_SEAM_CACHE_VERTEX_UNIT - 1ull) /
+                                   SW_SEAM_CACHE_VERTEX_UNIT);
+    cut(&w->cache.index_pool, (indices + SW_SEAM_CACHE_INDEX_UNIT - 1) / SW_SEAM_CACHE_INDEX_UNIT);
 }
 
 sw_status sw_seam_walk_enable_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)

@@ -171,6 +171,8 @@ typedef struct sw_seam_frame {
     double pressure;              /* the bound's factor this frame (sw_seam_walk_pressure) */
     uint32_t standins;            /* drawn from a static level while their mesh is made */
     uint32_t standins_made;       /* stand-ins made this frame */
+    uint32_t standins_coarser;    /* of them, from a level coarser than their target's: the
+                                     cache had no room for that one */
     uint64_t standin_triangles;   /* of triangles: those the stand-ins drew */
     uint32_t part_levels;         /* parts drawn whole from a part level */
     uint64_t part_level_triangles;/* of triangles: those the part levels drew */
@@ -310,10 +312,12 @@ size_t sw_seam_walk_arena_bytes(const sw_pack *pack);
 sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
                             sw_error *err);
 
-/* A test's smaller cache: blocks of the pools held for good (no surface
- * owns them) until about vertices vertices and 6 x as many indices are
- * left. Before the workers start. */
-void sw_seam_walk_hold_cache(sw_seam_walk *w, uint32_t vertices);
+/* A test's smaller cache: the pools cut to about vertices vertices and 6
+ * x as many indices (never more than they have), so every share of them
+ * the walk keeps or reads is of that size. Before the workers start.
+ * (Holding the rest in blocks no surface owned left the shares of the
+ * whole: the pressure and the room kept saw a cache 25 times as large.) */
+void sw_seam_walk_shrink_cache(sw_seam_walk *w, uint32_t vertices);
 
 /* Makes every surface's normal cone (its scratch from arena, given back:
  * counted in the walk's bytes) and turns cone culling on: surfaces in view

@@ -195,11 +195,14 @@ void sw_seam_walk_pressure(sw_seam_walk *w, sw_seam_frame *frame);
  * than what waited: after the select (the surfaces in view, their targets
  * and the part levels chosen), the room each surface drawn from the cache
  * would take as a stand-in at its target (sw_seam_standin_estimate, in
- * the pools' blocks); when that is more than 7/8 of a pool, the bound is
- * raised by the share over 3/4 (sqrt 2 to 4) and 1 returned: the caller
- * selects again. So the first frame of a view larger than the cache
- * (4,000,000 patches: 143,000 surfaces in view for a cache that holds
- * 30,000 stand-ins) is planned at a bound it can draw, where the
+ * the pools' blocks); when that is more than half a pool, the bound is
+ * raised by the share over 3/8 (sqrt 2 to 4) and 1 returned: the caller
+ * selects again. Half: while the workers make a surface's mesh its
+ * stand-in is drawn, so the cache holds the view about twice over (at 7/8
+ * a cache of a third of the view still left 20-120 surfaces a frame
+ * undrawn; at half, 2-3). So the first frame of a view larger than the
+ * cache (4,000,000 patches: 143,000 surfaces in view for a cache that
+ * holds 30,000 stand-ins) is planned at a bound it can draw, where the
  * pressure above rose only after frames with holes. With stand-ins only
  * (what the walk draws while meshes are made), not with sync_work. */
 int sw_seam_walk_pressure_ahead(sw_seam_walk *w);

@@ -86,6 +86,18 @@ uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound, int
     return best != UINT32_MAX ? best : first < end ? first : UINT32_MAX;
 }
 
+uint32_t sw_seam_standin_coarser(const sw_pack *pack, uint32_t s, uint32_t level)
+{
+    const sw_levels *lv = &pack->levels;
+    if (!lv->surface_levels || s >= lv->surface_count)
+        return UINT32_MAX;
+    uint32_t loops = pack->seam.surface_loops[s + 1] - pack->seam.surface_loops[s];
+    for (uint32_t k = level + 1; k < lv->surface_levels[s + 1]; k++)
+        if (k > lv->surface_levels[s] && whole(lv, k, loops))
+            return k;
+    return UINT32_MAX;
+}
+
 /* Surface s's loops at front into m; 0 when an outer loop vanished. *points
  * gets their points in all. */
 static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,

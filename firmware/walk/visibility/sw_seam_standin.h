@@ -64,6 +64,10 @@ float sw_seam_standin_worth(const sw_level *level, int silhouette);
  * its finest. UINT32_MAX when s has none. */
 uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound, int silhouette);
 
+/* The next level of s coarser than level with a chain for every loop,
+ * UINT32_MAX when none is. */
+uint32_t sw_seam_standin_coarser(const sw_pack *pack, uint32_t s, uint32_t level);
+
 /* About the vertices and indices a stand-in of s from level takes: the
  * level's, and its chains' points for the strips that join each loop to
  * it (the loops' own points as the chains count them: the front it is

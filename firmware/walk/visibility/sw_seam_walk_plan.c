@@ -195,9 +195,9 @@ int sw_seam_walk_pressure_ahead(sw_seam_walk *w)
     }
     double over = fmax((double)vertex_units / w->cache.vertex_pool.units,
                        (double)index_units / w->cache.index_pool.units);
-    if (over <= 7.0 / 8.0)
+    if (over <= 0.5)
         return 0;
-    double step = fmin(fmax(over / 0.75, SW_SQRT2), 4.0);
+    double step = fmin(fmax(over / 0.375, SW_SQRT2), 4.0);
     w->pressure = fmin(w->pressure * step, SW_SEAM_PRESSURE_MAX);
     w->pressure_raised = w->frame;
     w->pressure_calm = 0;

@@ -290,6 +290,14 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     if (!made && make_room(w, frame))
         made = sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
                                     sw_seam_workers_place, w->workers, e);
+    /* Still no room: a coarser level, inside the same announced border (the
+     * strips join the loops its neighbours were joined to), drawn coarser
+     * than its target (behind, measured apart) rather than not at all. */
+    for (uint32_t k = level; !made && (k = sw_seam_standin_coarser(w->pack, s, k)) != UINT32_MAX;) {
+        made = sw_seam_standin_make(w->standins, &front, s, k, &w->cache,
+                                    sw_seam_workers_place, w->workers, e);
+        frame->standins_coarser += (uint32_t)made;
+    }
     if (!made) {
         e->last_frame = last;
         return 0;   /* it waits, undrawn and counted */
