@@ -36,17 +36,39 @@
 
 static size_t worst(size_t count, size_t size) { return sw_arena_worst_case(count * size, 8); }
 
-size_t sw_seam_select_arena_bytes(const sw_seam_graph *g)
+/* 1 when a graph's counts fit size_t sums (a 32-bit size_t may not). */
+static int countable(const sw_seam_graph *g)
+{
+    uint64_t largest = g->vertex_count > g->slot_count ? g->vertex_count : g->slot_count;
+    return largest <= (uint64_t)(SIZE_MAX / 64);
+}
+
+size_t sw_seam_topology_arena_bytes(const sw_seam_graph *g)
 {
     if (!g)
         return 0;
-    uint64_t largest = g->vertex_count > g->slot_count ? g->vertex_count : g->slot_count;
-    if (largest > (uint64_t)(SIZE_MAX / 64))
-        return SIZE_MAX;   /* 32-bit size_t: more than the address space */
+    if (!countable(g))
+        return SIZE_MAX;
     size_t v = g->vertex_count, o = g->original_count;
-    return worst(v, 1) * 3 + worst(v, 4) * 4 + worst(o, 4) * 2 + worst(o + 1, 4) +
-           worst(g->slot_count, 4) * 3 + worst((size_t)g->collapse_count + 1, 4) * 2 +
-           worst(g->surface_count, 1) + worst(g->surface_count, 4);
+    return worst(v, 4) * 2 + worst(o, 4) + worst(o + 1, 4) + worst(g->slot_count, 4) * 3;
+}
+
+size_t sw_seam_select_front_bytes(const sw_seam_graph *g)
+{
+    if (!g)
+        return 0;
+    if (!countable(g))
+        return SIZE_MAX;
+    size_t v = g->vertex_count, o = g->original_count;
+    return worst(v, 1) * 3 + worst(v, 4) * 2 + worst(o, 4) +
+           worst((size_t)g->collapse_count + 1, 4) * 2 + worst(g->surface_count, 1) +
+           worst(g->surface_count, 4);
+}
+
+size_t sw_seam_select_arena_bytes(const sw_seam_graph *g)
+{
+    size_t t = sw_seam_topology_arena_bytes(g), f = sw_seam_select_front_bytes(g);
+    return t == SIZE_MAX || f == SIZE_MAX ? SIZE_MAX : t + f;
 }
 
 static void *take(sw_arena *arena, size_t count, size_t size, int *failed)
@@ -57,23 +79,16 @@ static void *take(sw_arena *arena, size_t count, size_t size, int *failed)
     return p;
 }
 
-static sw_status take_arrays(sw_seam_select *s, sw_arena *arena, sw_error *err)
+static sw_status take_front(sw_seam_select *s, sw_arena *arena, sw_error *err)
 {
     const sw_seam_graph *g = &s->graph;
     size_t v = g->vertex_count, o = g->original_count;
     int failed = 0;
     s->active = take(arena, v, 1, &failed);
     s->queued = take(arena, v, 1, &failed);
-    s->leaf_lo = take(arena, v, 4, &failed);
-    s->leaf_count = take(arena, v, 4, &failed);
     s->bound = take(arena, v, 4, &failed);
     s->queue = take(arena, v, 4, &failed);
-    s->leaf_order = take(arena, o, 4, &failed);
     s->shown = take(arena, o, 4, &failed);
-    s->leaf_slots = take(arena, o + 1, 4, &failed);
-    s->slot_surface = take(arena, g->slot_count, 4, &failed);
-    s->slot_prev = take(arena, g->slot_count, 4, &failed);
-    s->slot_next = take(arena, g->slot_count, 4, &failed);
     s->stack = take(arena, (size_t)g->collapse_count + 1, 4, &failed);
     s->surface_changed = take(arena, g->surface_count, 1, &failed);
     s->surface_bound = take(arena, g->surface_count, 4, &failed);
@@ -82,7 +97,7 @@ static sw_status take_arrays(sw_seam_select *s, sw_arena *arena, sw_error *err)
     if (failed)
         return sw_error_set(err, SW_ERR_NO_MEMORY,
                             "seam select: arena too small (%zu bytes free, %zu needed)",
-                            arena->size - arena->used, sw_seam_select_arena_bytes(g));
+                            arena->size - arena->used, sw_seam_select_front_bytes(g));
     return SW_OK;
 }
 
@@ -90,53 +105,82 @@ static sw_status take_arrays(sw_seam_select *s, sw_arena *arena, sw_error *err)
  * before v1's, so the smallest position in a run is the slot whose (u, v)
  * the polyline uses (sw_seam_select_loop.c). Children are larger than their
  * parents, so a descending pass places every vertex before its parents. */
-static void build_leaf_ranges(sw_seam_select *s)
+static void build_leaf_ranges(sw_seam_topology *t)
 {
-    const sw_seam_graph *g = &s->graph;
+    const sw_seam_graph *g = &t->graph;
     for (uint32_t v = 0; v < g->vertex_count; v++)
-        s->leaf_count[v] = v < g->original_count ? 1 : 0;
+        t->leaf_count[v] = v < g->original_count ? 1 : 0;
     for (uint32_t k = 0; k < g->collapse_count; k++)
-        s->leaf_count[g->original_count + k] =
-            s->leaf_count[g->collapses[k].v1] + s->leaf_count[g->collapses[k].v2];
+        t->leaf_count[g->original_count + k] =
+            t->leaf_count[g->collapses[k].v1] + t->leaf_count[g->collapses[k].v2];
     uint32_t next = 0;
     for (uint32_t v = 0; v < g->vertex_count; v++)
         if (g->vertices[v].child == SW_SEAM_NONE) {
-            s->leaf_lo[v] = next;
-            next += s->leaf_count[v];
+            t->leaf_lo[v] = next;
+            next += t->leaf_count[v];
         }
     for (uint32_t k = g->collapse_count; k-- > 0;) {
         const sw_seam_collapse *c = &g->collapses[k];
         uint32_t vn = g->original_count + k;
-        s->leaf_lo[c->v2] = s->leaf_lo[vn];
-        s->leaf_lo[c->v1] = s->leaf_lo[vn] + s->leaf_count[c->v2];
+        t->leaf_lo[c->v2] = t->leaf_lo[vn];
+        t->leaf_lo[c->v1] = t->leaf_lo[vn] + t->leaf_count[c->v2];
     }
     for (uint32_t o = 0; o < g->original_count; o++)
-        s->leaf_order[s->leaf_lo[o]] = o;
+        t->leaf_order[t->leaf_lo[o]] = o;
 }
 
 /* The slots in leaf order (leaf_slots, slot_surface, slot_prev, slot_next),
  * filled loop by loop: each original's entries in the order of its slots.
- * The queue (unused until an update) holds each original's next entry. */
-static void build_leaf_slots(sw_seam_select *s)
+ * next_entry (original_count) holds each original's next entry. */
+static void build_leaf_slots(sw_seam_topology *t, uint32_t *next_entry)
 {
-    const sw_seam_graph *g = &s->graph;
-    s->leaf_slots[0] = 0;
+    const sw_seam_graph *g = &t->graph;
+    t->leaf_slots[0] = 0;
     for (uint32_t p = 0; p < g->original_count; p++)
-        s->leaf_slots[p + 1] = s->leaf_slots[p] + g->vertices[s->leaf_order[p]].slot_ref_count;
-    uint32_t *next_entry = s->queue;
+        t->leaf_slots[p + 1] = t->leaf_slots[p] + g->vertices[t->leaf_order[p]].slot_ref_count;
     for (uint32_t o = 0; o < g->original_count; o++)
-        next_entry[o] = s->leaf_slots[s->leaf_lo[o]];
+        next_entry[o] = t->leaf_slots[t->leaf_lo[o]];
     for (uint32_t l = 0; l < g->loop_count; l++) {
         const sw_seam_loop *loop = &g->loops[l];
         const sw_seam_slot *slots = g->slots + loop->first_slot;
         uint32_t n = loop->slot_count;
         for (uint32_t i = 0; i < n; i++) {
             uint32_t e = next_entry[slots[i].vertex]++;
-            s->slot_surface[e] = loop->surface;
-            s->slot_prev[e] = s->leaf_lo[slots[i ? i - 1 : n - 1].vertex];
-            s->slot_next[e] = s->leaf_lo[slots[i + 1 < n ? i + 1 : 0].vertex];
+            t->slot_surface[e] = loop->surface;
+            t->slot_prev[e] = t->leaf_lo[slots[i ? i - 1 : n - 1].vertex];
+            t->slot_next[e] = t->leaf_lo[slots[i + 1 < n ? i + 1 : 0].vertex];
         }
     }
+}
+
+sw_status sw_seam_topology_init(sw_seam_topology *t, const sw_seam_graph *graph,
+                                sw_arena *arena, sw_error *err)
+{
+    if (!t || !graph || !arena)
+        return sw_error_set(err, SW_ERR_ARG, "seam topology: no topology, graph or arena");
+    if (!countable(graph))
+        return sw_error_set(err, SW_ERR_RANGE, "seam select: %u vertices, %u slots: too many",
+                            graph->vertex_count, graph->slot_count);
+    *t = (sw_seam_topology){.graph = *graph};
+    size_t v = graph->vertex_count, o = graph->original_count;
+    int failed = 0;
+    t->leaf_lo = take(arena, v, 4, &failed);
+    t->leaf_count = take(arena, v, 4, &failed);
+    t->leaf_order = take(arena, o, 4, &failed);
+    t->leaf_slots = take(arena, o + 1, 4, &failed);
+    t->slot_surface = take(arena, graph->slot_count, 4, &failed);
+    t->slot_prev = take(arena, graph->slot_count, 4, &failed);
+    t->slot_next = take(arena, graph->slot_count, 4, &failed);
+    size_t mark = sw_arena_mark(arena);
+    uint32_t *next_entry = take(arena, o, 4, &failed);
+    if (failed)
+        return sw_error_set(err, SW_ERR_NO_MEMORY,
+                            "seam select: arena too small (%zu bytes free, %zu needed)",
+                            arena->size - arena->used, sw_seam_topology_arena_bytes(graph));
+    build_leaf_ranges(t);
+    build_leaf_slots(t, next_entry);
+    sw_arena_reset_to(arena, mark);
+    return SW_OK;
 }
 
 /* Marks the surfaces of the slots under v as changed and shows x in them. */
@@ -158,22 +202,19 @@ sw_status sw_seam_select_init(sw_seam_select *s, const sw_seam_graph *graph, sw_
     return st != SW_OK ? st : sw_seam_select_init_checked(s, graph, arena, err);
 }
 
-sw_status sw_seam_select_init_checked(sw_seam_select *s, const sw_seam_graph *graph,
-                                      sw_arena *arena, sw_error *err)
+sw_status sw_seam_select_init_shared(sw_seam_select *s, const sw_seam_topology *t,
+                                     sw_arena *arena, sw_error *err)
 {
-    if (!s || !arena)
-        return sw_error_set(err, SW_ERR_ARG, "seam select: no state or arena");
-    sw_status st;
-    if (sw_seam_select_arena_bytes(graph) == SIZE_MAX)
-        return sw_error_set(err, SW_ERR_RANGE, "seam select: %u vertices, %u slots: too many",
-                            graph->vertex_count, graph->slot_count);
-    *s = (sw_seam_select){.graph = *graph};
-    st = take_arrays(s, arena, err);
+    if (!s || !t || !arena)
+        return sw_error_set(err, SW_ERR_ARG, "seam select: no state, topology or arena");
+    *s = (sw_seam_select){.graph = t->graph, .leaf_lo = t->leaf_lo,
+                          .leaf_count = t->leaf_count, .leaf_order = t->leaf_order,
+                          .leaf_slots = t->leaf_slots, .slot_surface = t->slot_surface,
+                          .slot_prev = t->slot_prev, .slot_next = t->slot_next};
+    sw_status st = take_front(s, arena, err);
     if (st != SW_OK)
         return st;
     const sw_seam_graph *g = &s->graph;
-    build_leaf_ranges(s);
-    build_leaf_slots(s);
     for (uint32_t v = 0; v < g->vertex_count; v++) {
         s->queued[v] = s->seeded[v] = 0;
         s->active[v] = g->vertices[v].child == SW_SEAM_NONE;
@@ -184,6 +225,21 @@ sw_status sw_seam_select_init_checked(sw_seam_select *s, const sw_seam_graph *gr
     }
     sw_seam_select_clear_changed(s);
     return SW_OK;
+}
+
+sw_status sw_seam_select_init_checked(sw_seam_select *s, const sw_seam_graph *graph,
+                                      sw_arena *arena, sw_error *err)
+{
+    if (!s || !arena)
+        return sw_error_set(err, SW_ERR_ARG, "seam select: no state or arena");
+    if (sw_seam_select_arena_bytes(graph) == SIZE_MAX)
+        return sw_error_set(err, SW_ERR_RANGE, "seam select: %u vertices, %u slots: too many",
+                            graph->vertex_count, graph->slot_count);
+    /* The topology lives in the same arena, before the front, and only
+     * this state points at it. */
+    sw_seam_topology t;
+    sw_status st = sw_seam_topology_init(&t, graph, arena, err);
+    return st != SW_OK ? st : sw_seam_select_init_shared(s, &t, arena, err);
 }
 
 /* Every run of x in a polyline is bounded by slots next to slots of x's

@@ -29,16 +29,15 @@
 #include "sw_error.h"
 #include "sw_seam_graph.h"
 
-/* The state. Fields are the module's business; read them through the calls
- * below. The graph's arrays must outlive the state (they are not copied). */
-typedef struct sw_seam_select {
+/* What a front reads of its graph and never changes: the originals in
+ * leaf order and their slots in that order. Built once for a graph; every
+ * front over that graph (the instances of one part) can share it. Fields
+ * are the module's business. The graph's arrays must outlive it. */
+typedef struct sw_seam_topology {
     sw_seam_graph graph;
-    uint8_t *active;           /* vertex_count: 1 on the front */
     uint32_t *leaf_lo;         /* vertex_count: v's originals are leaf_order[leaf_lo[v] .. +leaf_count[v]) */
     uint32_t *leaf_count;      /* vertex_count */
     uint32_t *leaf_order;      /* original_count: originals in depth-first order, v2's side first */
-    uint32_t *shown;           /* original_count: the active ancestor of the original at each
-                                  leaf position (a split fills a contiguous range) */
     /* The slots of the originals in leaf order, so that everything a split
      * or collapse of v reads is the contiguous range of v's leaves: */
     uint32_t *leaf_slots;      /* original_count + 1: leaf position p's slots are entries
@@ -47,6 +46,30 @@ typedef struct sw_seam_select {
     uint32_t *slot_prev;       /* slot_count entries: the leaf position of the original at the
                                   slot before it in its loop, and after it (cyclic) */
     uint32_t *slot_next;
+} sw_seam_topology;
+
+/* Arena bytes sw_seam_topology_init takes for graph, worst case: 8 bytes
+ * per vertex, 8 more per original and 12 per slot. */
+size_t sw_seam_topology_arena_bytes(const sw_seam_graph *graph);
+
+/* Builds the topology of graph, which sw_seam_graph_check has passed, from
+ * arena (and, for the while, scratch of 4 bytes an original past what it
+ * keeps, given back). SW_ERR_RANGE for a graph too large to count,
+ * SW_ERR_NO_MEMORY when the arena is too small. */
+sw_status sw_seam_topology_init(sw_seam_topology *topology, const sw_seam_graph *graph,
+                                sw_arena *arena, sw_error *err);
+
+/* The state. Fields are the module's business; read them through the calls
+ * below. The graph's arrays, and the topology's when it was shared, must
+ * outlive the state (they are not copied). */
+typedef struct sw_seam_select {
+    sw_seam_graph graph;
+    uint8_t *active;           /* vertex_count: 1 on the front */
+    /* The topology's (sw_seam_topology, above): */
+    const uint32_t *leaf_lo, *leaf_count, *leaf_order, *leaf_slots;
+    const uint32_t *slot_surface, *slot_prev, *slot_next;
+    uint32_t *shown;           /* original_count: the active ancestor of the original at each
+                                  leaf position (a split fills a contiguous range) */
     float *bound;              /* vertex_count: the smallest surface bound over v's slots (per update) */
     uint32_t *stack;           /* collapse_count + 1: forced-split chain */
     uint32_t *queue;           /* vertex_count: update's work list (a heap) */
@@ -66,10 +89,22 @@ typedef struct sw_seam_select {
 } sw_seam_select;
 
 /* Arena bytes sw_seam_select_init takes for graph, worst case (alignment
- * included): 19 bytes per vertex, 8 more per created vertex, 12 more per
- * original, 12 per slot and 5 per surface (about 82 bytes per original
- * vertex of a sewn graph: 2 slots each, as many created vertices). */
+ * included): its topology's and its front's (below), 19 bytes per vertex,
+ * 8 more per created vertex, 12 more per original, 12 per slot and 5 per
+ * surface (about 82 bytes per original vertex of a sewn graph: 2 slots
+ * each, as many created vertices). */
 size_t sw_seam_select_arena_bytes(const sw_seam_graph *graph);
+
+/* Arena bytes of a front over a shared topology (sw_seam_select_init_shared):
+ * 11 bytes per vertex, 8 more per created vertex, 4 more per original, 5
+ * per surface. */
+size_t sw_seam_select_front_bytes(const sw_seam_graph *graph);
+
+/* A front over topology (its graph checked already), its own state from
+ * arena, at the coarsest front. SW_ERR_NO_MEMORY when the arena is too
+ * small. */
+sw_status sw_seam_select_init_shared(sw_seam_select *state, const sw_seam_topology *topology,
+                                     sw_arena *arena, sw_error *err);
 
 /* Checks graph (sw_seam_graph_check), takes the state's arrays from arena and
  * starts at the coarsest front: the roots of the hierarchy. SW_ERR_FORMAT /

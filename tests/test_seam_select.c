@@ -226,6 +226,54 @@ static void test_changed_bounds_alone_give_the_same_front(void)
     }
 }
 
+/* Two fronts over one shared topology (the instances of one part) move
+ * apart, each exactly as a front with a topology of its own under the same
+ * bounds; the shared arena holds the topology once and a front each. */
+static void test_shared_topology_fronts_move_apart(void)
+{
+    fixture own[2];
+    fixture_open(&own[0], &finned);
+    fixture_open(&own[1], &finned);
+    const sw_seam_graph *g = &own[0].g;
+    size_t bytes = sw_seam_topology_arena_bytes(g) + 2 * sw_seam_select_front_bytes(g);
+    SW_CHECK(bytes < 2 * sw_seam_select_arena_bytes(g));
+    void *block = malloc(bytes);
+    sw_arena arena;
+    sw_arena_init(&arena, block, bytes);
+    sw_seam_topology t;
+    sw_seam_select shared[2];
+    SW_CHECK(sw_seam_topology_init(&t, g, &arena, NULL) == SW_OK);
+    for (int i = 0; i < 2; i++)
+        SW_CHECK(sw_seam_select_init_shared(&shared[i], &t, &arena, NULL) == SW_OK);
+    SW_CHECK(arena.peak <= bytes);
+    float *bound[2];
+    for (int i = 0; i < 2; i++)
+        bound[i] = malloc(g->surface_count * sizeof(float));
+    uint32_t differ = 0, apart = 0;
+    for (int frame = 0; frame < 60; frame++) {
+        for (uint32_t s = 0; s < g->surface_count; s++) {
+            bound[0][s] = (float)(0.001 * pow(2.0, floor(10 * sw_test_random())));
+            bound[1][s] = 1000.0f * bound[0][s] * (frame % 2 ? 1e-3f : 1.0f);
+        }
+        for (int i = 0; i < 2; i++) {
+            sw_seam_update_result r;
+            SW_CHECK(sw_seam_select_update(&shared[i], bound[i], 0, &r, NULL) == SW_OK);
+            SW_CHECK(sw_seam_select_update(&own[i].sel, bound[i], 0, &r, NULL) == SW_OK);
+            for (uint32_t v = 0; v < g->vertex_count; v++)
+                differ += shared[i].active[v] != own[i].sel.active[v];
+            for (uint32_t o = 0; o < g->original_count; o++)
+                differ += shared[i].shown[o] != own[i].sel.shown[o];
+        }
+        for (uint32_t v = 0; v < g->vertex_count; v++)
+            apart += shared[0].active[v] != shared[1].active[v];
+    }
+    SW_CHECK_MSG(differ == 0, "%u vertices differ from the fronts of their own", differ);
+    SW_CHECK_MSG(apart > 0, "the two fronts never differed: nothing was tested");
+    for (int i = 0; i < 2; i++)
+        free(bound[i]), fixture_close(&own[i]);
+    free(block);
+}
+
 static void test_huge_bound_collapses_each_part_to_a_vertex(void)
 {
     fixture f;
@@ -485,6 +533,7 @@ int main(void)
     SW_RUN(test_full_refinement_is_the_original_graph);
     SW_RUN(test_update_meets_every_bound_and_no_more);
     SW_RUN(test_changed_bounds_alone_give_the_same_front);
+    SW_RUN(test_shared_topology_fronts_move_apart);
     SW_RUN(test_huge_bound_collapses_each_part_to_a_vertex);
     SW_RUN(test_forced_split_clears_its_blockers);
     SW_RUN(test_capped_updates_converge);
