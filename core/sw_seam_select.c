@@ -59,16 +59,32 @@ size_t sw_seam_select_front_bytes(const sw_seam_graph *g)
         return 0;
     if (!countable(g))
         return SIZE_MAX;
-    size_t v = g->vertex_count, o = g->original_count;
-    return worst(v, 1) * 3 + worst(v, 4) * 2 + worst(o, 4) +
-           worst((size_t)g->collapse_count + 1, 4) * 2 + worst(g->surface_count, 1) +
-           worst(g->surface_count, 4);
+    size_t v = g->vertex_count;
+    return worst(v, 1) * 2 + worst(v, 4) + worst((size_t)g->collapse_count + 1, 4) +
+           worst(g->surface_count, 1) + worst(g->surface_count, 4);
+}
+
+size_t sw_seam_select_shown_bytes(const sw_seam_graph *g)
+{
+    return !g ? 0 : !countable(g) ? SIZE_MAX : worst(g->original_count, 4);
+}
+
+size_t sw_seam_select_scratch_bytes(const sw_seam_graph *g)
+{
+    if (!g)
+        return 0;
+    if (!countable(g))
+        return SIZE_MAX;
+    return worst(g->vertex_count, 4) + worst(g->vertex_count, 1) +
+           worst((size_t)g->collapse_count + 1, 4);
 }
 
 size_t sw_seam_select_arena_bytes(const sw_seam_graph *g)
 {
     size_t t = sw_seam_topology_arena_bytes(g), f = sw_seam_select_front_bytes(g);
-    return t == SIZE_MAX || f == SIZE_MAX ? SIZE_MAX : t + f;
+    size_t o = sw_seam_select_shown_bytes(g), q = sw_seam_select_scratch_bytes(g);
+    return t == SIZE_MAX || f == SIZE_MAX || o == SIZE_MAX || q == SIZE_MAX ? SIZE_MAX
+                                                                           : t + f + o + q;
 }
 
 static void *take(sw_arena *arena, size_t count, size_t size, int *failed)
@@ -79,17 +95,47 @@ static void *take(sw_arena *arena, size_t count, size_t size, int *failed)
     return p;
 }
 
-static sw_status take_front(sw_seam_select *s, sw_arena *arena, sw_error *err)
+sw_status sw_seam_select_scratch_init(sw_seam_select_scratch *q, uint32_t vertex_count,
+                                      uint32_t collapse_count, sw_arena *arena, sw_error *err)
+{
+    int failed = 0;
+    *q = (sw_seam_select_scratch){ .vertex_count = vertex_count,
+                                   .collapse_count = collapse_count };
+    q->queue = take(arena, vertex_count, 4, &failed);
+    q->queued = take(arena, vertex_count, 1, &failed);
+    q->stack = take(arena, (size_t)collapse_count + 1, 4, &failed);
+    if (failed)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "seam select: arena too small for the "
+                            "scratch of %u vertices", (unsigned)vertex_count);
+    for (uint32_t v = 0; v < vertex_count; v++)
+        q->queued[v] = 0;
+    return SW_OK;
+}
+
+static sw_status take_front(sw_seam_select *s, uint32_t *shown,
+                            const sw_seam_select_scratch *scratch, sw_arena *arena,
+                            sw_error *err)
 {
     const sw_seam_graph *g = &s->graph;
     size_t v = g->vertex_count, o = g->original_count;
+    sw_seam_select_scratch own;
+    if (!scratch) {
+        sw_status st = sw_seam_select_scratch_init(&own, g->vertex_count, g->collapse_count,
+                                                   arena, err);
+        if (st != SW_OK)
+            return st;
+        scratch = &own;
+    } else if (scratch->vertex_count < g->vertex_count ||
+               scratch->collapse_count < g->collapse_count) {
+        return sw_error_set(err, SW_ERR_ARG, "seam select: scratch for %u vertices, the graph "
+                            "has %u", (unsigned)scratch->vertex_count,
+                            (unsigned)g->vertex_count);
+    }
+    s->queue = scratch->queue, s->queued = scratch->queued, s->stack = scratch->stack;
     int failed = 0;
     s->active = take(arena, v, 1, &failed);
-    s->queued = take(arena, v, 1, &failed);
     s->bound = take(arena, v, 4, &failed);
-    s->queue = take(arena, v, 4, &failed);
-    s->shown = take(arena, o, 4, &failed);
-    s->stack = take(arena, (size_t)g->collapse_count + 1, 4, &failed);
+    s->shown = shown ? shown : take(arena, o, 4, &failed);
     s->surface_changed = take(arena, g->surface_count, 1, &failed);
     s->surface_bound = take(arena, g->surface_count, 4, &failed);
     s->seeds = take(arena, (size_t)g->collapse_count + 1, 4, &failed);
@@ -97,7 +143,7 @@ static sw_status take_front(sw_seam_select *s, sw_arena *arena, sw_error *err)
     if (failed)
         return sw_error_set(err, SW_ERR_NO_MEMORY,
                             "seam select: arena too small (%zu bytes free, %zu needed)",
-                            arena->size - arena->used, sw_seam_select_front_bytes(g));
+                            arena->size - arena->used, sw_seam_select_arena_bytes(g));
     return SW_OK;
 }
 
@@ -203,6 +249,7 @@ sw_status sw_seam_select_init(sw_seam_select *s, const sw_seam_graph *graph, sw_
 }
 
 sw_status sw_seam_select_init_shared(sw_seam_select *s, const sw_seam_topology *t,
+                                     uint32_t *shown, const sw_seam_select_scratch *scratch,
                                      sw_arena *arena, sw_error *err)
 {
     if (!s || !t || !arena)
@@ -211,12 +258,12 @@ sw_status sw_seam_select_init_shared(sw_seam_select *s, const sw_seam_topology *
                           .leaf_count = t->leaf_count, .leaf_order = t->leaf_order,
                           .leaf_slots = t->leaf_slots, .slot_surface = t->slot_surface,
                           .slot_prev = t->slot_prev, .slot_next = t->slot_next};
-    sw_status st = take_front(s, arena, err);
+    sw_status st = take_front(s, shown, scratch, arena, err);
     if (st != SW_OK)
         return st;
     const sw_seam_graph *g = &s->graph;
     for (uint32_t v = 0; v < g->vertex_count; v++) {
-        s->queued[v] = s->seeded[v] = 0;
+        s->seeded[v] = 0;
         s->active[v] = g->vertices[v].child == SW_SEAM_NONE;
         if (s->active[v]) {
             s->active_count++;
@@ -239,7 +286,7 @@ sw_status sw_seam_select_init_checked(sw_seam_select *s, const sw_seam_graph *gr
      * this state points at it. */
     sw_seam_topology t;
     sw_status st = sw_seam_topology_init(&t, graph, arena, err);
-    return st != SW_OK ? st : sw_seam_select_init_shared(s, &t, arena, err);
+    return st != SW_OK ? st : sw_seam_select_init_shared(s, &t, NULL, NULL, arena, err);
 }
 
 /* Every run of x in a polyline is bounded by slots next to slots of x's

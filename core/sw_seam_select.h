@@ -71,9 +71,8 @@ typedef struct sw_seam_select {
     uint32_t *shown;           /* original_count: the active ancestor of the original at each
                                   leaf position (a split fills a contiguous range) */
     float *bound;              /* vertex_count: the smallest surface bound over v's slots (per update) */
-    uint32_t *stack;           /* collapse_count + 1: forced-split chain */
-    uint32_t *queue;           /* vertex_count: update's work list (a heap) */
-    uint8_t *queued;           /* vertex_count */
+    uint32_t *stack, *queue;   /* the scratch's (sw_seam_select_scratch: maybe shared) */
+    uint8_t *queued;
     uint8_t *surface_changed;  /* surface_count */
     /* What the next update starts from (sw_seam_select_update.c): */
     float *surface_bound;      /* surface_count: the bounds bound[] was folded from */
@@ -95,15 +94,36 @@ typedef struct sw_seam_select {
  * each, as many created vertices). */
 size_t sw_seam_select_arena_bytes(const sw_seam_graph *graph);
 
+/* What an update works in and leaves as it found it (the heap, its flags
+ * and the forced-split chain): fronts updated one after another can share
+ * one, sized for the largest graph among them. */
+typedef struct sw_seam_select_scratch {
+    uint32_t *queue;           /* vertex_count: the update's work list (a heap) */
+    uint8_t *queued;           /* vertex_count, all 0 between updates */
+    uint32_t *stack;           /* collapse_count + 1: the forced-split chain */
+    uint32_t vertex_count, collapse_count;
+} sw_seam_select_scratch;
+
 /* Arena bytes of a front over a shared topology (sw_seam_select_init_shared):
- * 11 bytes per vertex, 8 more per created vertex, 4 more per original, 5
- * per surface. */
+ * 6 bytes per vertex, 4 more per created vertex, 5 per surface; its shown
+ * vertices, 4 bytes per original, when it takes them too; and its scratch,
+ * 5 bytes per vertex and 4 per created one, when it is not shared. */
 size_t sw_seam_select_front_bytes(const sw_seam_graph *graph);
+size_t sw_seam_select_shown_bytes(const sw_seam_graph *graph);
+size_t sw_seam_select_scratch_bytes(const sw_seam_graph *graph);
+
+/* Scratch for fronts of graphs up to vertex_count vertices and
+ * collapse_count collapses. SW_ERR_NO_MEMORY when the arena is too small. */
+sw_status sw_seam_select_scratch_init(sw_seam_select_scratch *scratch, uint32_t vertex_count,
+                                      uint32_t collapse_count, sw_arena *arena, sw_error *err);
 
 /* A front over topology (its graph checked already), its own state from
- * arena, at the coarsest front. SW_ERR_NO_MEMORY when the arena is too
- * small. */
+ * arena, at the coarsest front; its shown vertices (original_count) in
+ * shown, or from arena when NULL; its scratch scratch (large enough for
+ * the graph), or from arena when NULL. SW_ERR_NO_MEMORY when the arena is
+ * too small, SW_ERR_ARG for scratch too small. */
 sw_status sw_seam_select_init_shared(sw_seam_select *state, const sw_seam_topology *topology,
+                                     uint32_t *shown, const sw_seam_select_scratch *scratch,
                                      sw_arena *arena, sw_error *err);
 
 /* Checks graph (sw_seam_graph_check), takes the state's arrays from arena and

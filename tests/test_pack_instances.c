@@ -21,6 +21,7 @@
 #include "sw_pack_signature.h"
 #include "sw_pack_write.h"
 #include "sw_seam_check.h"
+#include "sw_seam_fronts.h"
 
 /* The sample with every group (pack_sample.h), serialised. */
 static uint8_t *full_sample(size_t *size)
@@ -252,6 +253,114 @@ static void test_shared_levels_place_as_copied(void)
     free(bytes);
 }
 
+/* A loop point of the fronts and of the expanded select differ. */
+static int points_differ(const sw_trim_loops *a, const sw_trim_loops *b)
+{
+    if (a->loop_count != b->loop_count)
+        return 1;
+    for (uint32_t i = 0; i <= a->loop_count; i++)
+        if (a->loop_first[i] != b->loop_first[i])
+            return 1;
+    for (uint32_t i = 0; i < a->loop_first[a->loop_count]; i++)
+        if (a->points[i].id != b->points[i].id ||
+            memcmp(a->points[i].p, b->points[i].p, sizeof a->points[i].p) ||
+            memcmp(a->points[i].uv, b->points[i].uv, sizeof a->points[i].uv))
+            return 1;
+    return 0;
+}
+
+/* What differs between the fronts and the select over the expanded scene
+ * after an update for bound: vertices on one front and not the other,
+ * originals showing another vertex, surfaces changed in one only, surfaces
+ * whose loops differ (ids, positions, parameters). */
+static uint64_t fronts_differ(sw_seam_fronts *f, sw_seam_select *sel, const float *bound,
+                              sw_seam_surface_buffers *ba, sw_seam_surface_buffers *bb)
+{
+    sw_seam_update_result r;
+    SW_CHECK(sw_seam_fronts_update(f, bound, &r, NULL) == SW_OK && r.complete);
+    SW_CHECK(sw_seam_select_update(sel, bound, 0, &r, NULL) == SW_OK);
+    const sw_seam_graph *g = &sel->graph;
+    uint64_t differ = f->active_count != sel->active_count;
+    for (uint32_t v = 0; v < g->vertex_count; v++) {
+        uint32_t k = sw_seam_fronts_instance_at(f, v);
+        differ += f->front[k].active[sw_seam_fronts_local(f, k, v)] != sel->active[v];
+    }
+    for (uint32_t o = 0; o < g->original_count; o++)
+        differ += sw_seam_fronts_shown(f, NULL, o) != sel->shown[sel->leaf_lo[o]];
+    for (uint32_t s = 0; s < g->surface_count; s++) {
+        differ += sw_seam_fronts_surface_changed(f, s) != sw_seam_select_surface_changed(sel, s);
+        sw_trim_loops la, lb;
+        uint32_t oa = 0, ob = 0;
+        int ka = sw_seam_fronts_surface_loops(f, s, 0.0f, ba, &la, &oa);
+        int kb = sw_seam_surface_loops(sel, s, 0.0f, bb, &lb, &ob);
+        differ += ka != kb || oa != ob || (ka && points_differ(&la, &lb));
+    }
+    sw_seam_fronts_clear_changed(f);
+    sw_seam_select_clear_changed(sel);
+    return differ;
+}
+
+/* The fronts of placed pack (one per instance over its prototype's
+ * graph) against one select over its expanded scene, frames updates of
+ * bounds drawn at random from the graph's errors: what differs. */
+static uint64_t fronts_against_expanded(const sw_pack *pack, int frames)
+{
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
+    size_t expand = (size_t)sw_pack_expand_shared_bytes(counts);
+    sw_arena ea;
+    void *eb = malloc(expand);
+    sw_arena_init(&ea, eb, expand);
+    sw_pack placed;
+    sw_error err = { 0 };
+    SW_CHECK_MSG(sw_pack_expand_shared(pack, &ea, &placed, &err) == SW_OK, "%s", err.message);
+    const sw_seam_graph *g = &placed.seam;
+    size_t fb = sw_seam_fronts_arena_bytes(pack), sb = sw_seam_select_arena_bytes(g);
+    void *fm = malloc(fb), *sm = malloc(sb);
+    sw_arena fa, sa;
+    sw_arena_init(&fa, fm, fb);
+    sw_arena_init(&sa, sm, sb);
+    sw_seam_fronts f;
+    sw_seam_select sel;
+    SW_CHECK_MSG(sw_seam_fronts_init(&f, pack, g, &fa, &err) == SW_OK, "%s", err.message);
+    SW_CHECK(fa.peak <= fb);
+    SW_CHECK(sw_seam_select_init_checked(&sel, g, &sa, NULL) == SW_OK);
+    float *bound = malloc((g->surface_count + 1) * sizeof *bound), top = 0;
+    for (uint32_t v = 0; v < g->vertex_count; v++)
+        top = fmaxf(top, g->vertices[v].error);
+    sw_seam_point *sp = malloc(2 * (g->slot_count + 1) * sizeof *sp);
+    sw_trim_point *tp = malloc(2 * (g->slot_count + 1) * sizeof *tp);
+    uint32_t *first = malloc(2 * (g->loop_count + 1) * sizeof *first);
+    sw_seam_surface_buffers ba = { sp, tp, first, g->slot_count + 1 };
+    sw_seam_surface_buffers bb = { sp + g->slot_count + 1, tp + g->slot_count + 1,
+                                   first + g->loop_count + 1, g->slot_count + 1 };
+    uint64_t differ = 0;
+    for (int frame = 0; frame < frames; frame++) {
+        for (uint32_t s = 0; s < g->surface_count; s++)
+            bound[s] = top * (float)exp2(-12.0 * sw_test_random());
+        differ += fronts_differ(&f, &sel, bound, &ba, &bb);
+    }
+    free(first), free(tp), free(sp), free(bound);
+    free(sm), free(fm), free(eb);
+    return differ;
+}
+
+/* The seam fronts of the runtime (sw_seam_fronts.h), one per instance over
+ * its prototype's graph, move as one select over the expanded scene: the
+ * same front, the same loops, at the instances' scales (1, 2.5, 0.25),
+ * in less memory. */
+static void test_fronts_move_as_the_expanded_select(void)
+{
+    sw_pack_instance inst[PLACED];
+    three(inst);
+    uint8_t *bytes = NULL;
+    sw_pack pack;
+    open_placed(inst, &bytes, &pack);
+    uint64_t differ = fronts_against_expanded(&pack, 50);
+    SW_CHECK_MSG(differ == 0, "%llu differences", (unsigned long long)differ);
+    free(bytes);
+}
+
 /* Placed at the identity, a prototype's copy is its records, moved in the
  * index spaces only. */
 static void test_identity_is_a_copy(void)
@@ -467,11 +576,53 @@ static void test_merge_refuses(void)
     free(bytes);
 }
 
-int main(void)
+/* test_pack_instances PACK: the fronts against the expanded select on a
+ * placed pack from a file (a generated showroom), 20 updates; exits 1 on
+ * a difference. */
+static int fronts_of_file(const char *path)
 {
+    FILE *in = fopen(path, "rb");
+    if (!in || fseek(in, 0, SEEK_END) != 0) {
+        fprintf(stderr, "%s: cannot read\n", path);
+        return 2;
+    }
+    long size = ftell(in);
+    rewind(in);
+    void *data = aligned_alloc(64, ((size_t)size + 63) / 64 * 64);
+    size_t got = fread(data, 1, (size_t)size, in);
+    fclose(in);
+    sw_pack pack;
+    sw_error err = { 0 };
+    if (got != (size_t)size || sw_pack_open_memory(data, got, &pack, &err) != SW_OK ||
+        !pack.instances || !pack.seam_header) {
+        fprintf(stderr, "%s: not a placed pack with a Seam Graph: %s\n", path, err.message);
+        return 2;
+    }
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(pack.prototypes, pack.instances, pack.instance_count, counts);
+    sw_seam_graph placed = { .vertex_count = (uint32_t)(counts[SW_SPACE_SEAM_ORIGINALS] +
+                                                        counts[SW_SPACE_SEAM_COLLAPSES]),
+                             .original_count = (uint32_t)counts[SW_SPACE_SEAM_ORIGINALS],
+                             .slot_count = (uint32_t)counts[SW_SPACE_SEAM_SLOTS],
+                             .collapse_count = (uint32_t)counts[SW_SPACE_SEAM_COLLAPSES],
+                             .surface_count = (uint32_t)counts[SW_SPACE_SURFACES] };
+    printf("%s: %u instances of %u prototypes; fronts %zu bytes, one select over the "
+           "expanded scene %zu\n", path, pack.instance_count, pack.prototype_count,
+           sw_seam_fronts_arena_bytes(&pack), sw_seam_select_arena_bytes(&placed));
+    uint64_t differ = fronts_against_expanded(&pack, 20);
+    printf("%llu differences\n", (unsigned long long)differ);
+    free(data);
+    return differ != 0 || sw_test_failures != 0 ? 1 : 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1)
+        return fronts_of_file(argv[1]);
     SW_RUN(test_merge_expand_and_read_back);
     SW_RUN(test_shared_levels_place_as_copied);
     SW_RUN(test_identity_is_a_copy);
+    SW_RUN(test_fronts_move_as_the_expanded_select);
     SW_RUN(test_signed_placed_pack);
     SW_RUN(test_refused);
     SW_RUN(test_runtime_bytes_more);

@@ -235,7 +235,9 @@ static void test_shared_topology_fronts_move_apart(void)
     fixture_open(&own[0], &finned);
     fixture_open(&own[1], &finned);
     const sw_seam_graph *g = &own[0].g;
-    size_t bytes = sw_seam_topology_arena_bytes(g) + 2 * sw_seam_select_front_bytes(g);
+    size_t bytes = sw_seam_topology_arena_bytes(g) +
+                   2 * (sw_seam_select_front_bytes(g) + sw_seam_select_shown_bytes(g) +
+                        sw_seam_select_scratch_bytes(g));
     SW_CHECK(bytes < 2 * sw_seam_select_arena_bytes(g));
     void *block = malloc(bytes);
     sw_arena arena;
@@ -244,7 +246,7 @@ static void test_shared_topology_fronts_move_apart(void)
     sw_seam_select shared[2];
     SW_CHECK(sw_seam_topology_init(&t, g, &arena, NULL) == SW_OK);
     for (int i = 0; i < 2; i++)
-        SW_CHECK(sw_seam_select_init_shared(&shared[i], &t, &arena, NULL) == SW_OK);
+        SW_CHECK(sw_seam_select_init_shared(&shared[i], &t, NULL, NULL, &arena, NULL) == SW_OK);
     SW_CHECK(arena.peak <= bytes);
     float *bound[2];
     for (int i = 0; i < 2; i++)

@@ -1,0 +1,339 @@
+/* SPDX-License-Identifier: MIT */
+/* One seam front per instance over its prototype's shared graph
+ * (sw_seam_fronts.h). */
+#include "sw_seam_fronts.h"
+
+#include <string.h>
+
+#include "sw_pack_instances.h"
+#include "sw_pack_move.h"
+
+static size_t worst(uint64_t count, size_t size)
+{
+    return sw_arena_worst_case((size_t)count * size, 8);
+}
+
+/* Prototype p's graph, renumbered from 0: counts only (no arrays). */
+static sw_seam_graph part_counts(const sw_pack *pack, const sw_pack_prototype *p)
+{
+    const uint32_t *c = p->count;
+    return (sw_seam_graph){
+        .vertex_count = c[SW_SPACE_SEAM_ORIGINALS] + c[SW_SPACE_SEAM_COLLAPSES],
+        .original_count = c[SW_SPACE_SEAM_ORIGINALS], .slot_count = c[SW_SPACE_SEAM_SLOTS],
+        .loop_count = c[SW_SPACE_SEAM_LOOPS], .collapse_count = c[SW_SPACE_SEAM_COLLAPSES],
+        .slot_ref_count = c[SW_SPACE_SEAM_SLOT_REFS], .surface_count = c[SW_SPACE_SURFACES],
+        .tolerance = pack->seam.tolerance };
+}
+
+/* A copied graph's arrays (the edges left out: a front never reads them). */
+static size_t graph_copy_bytes(const sw_seam_graph *g)
+{
+    return worst(g->vertex_count, sizeof(sw_seam_vertex)) +
+           worst(g->slot_count, sizeof(sw_seam_slot)) +
+           worst(g->loop_count, sizeof(sw_seam_loop)) +
+           worst(g->collapse_count, sizeof(sw_seam_collapse)) + worst(g->slot_ref_count, 4) +
+           worst((uint64_t)g->surface_count + 1, 4);
+}
+
+/* The walk's tables: per instance (count), per placed surface and original. */
+static size_t table_bytes(uint64_t parts, uint64_t count, const uint64_t placed[SW_SPACE_COUNT])
+{
+    return worst(parts, sizeof(sw_seam_part_graph)) + worst(count, sizeof(sw_seam_select)) +
+           worst(count, 4) + worst(count, sizeof(double)) + 4 * worst(count + 1, 4) +
+           2 * worst(placed[SW_SPACE_SURFACES], 4) +
+           worst(placed[SW_SPACE_SEAM_ORIGINALS], 4);
+}
+
+size_t sw_seam_fronts_arena_bytes(const sw_pack *pack)
+{
+    if (!pack->seam_header)
+        return 0;
+    const sw_seam_graph *g = &pack->seam;
+    if (!pack->instances) {
+        uint64_t counts[SW_SPACE_COUNT];
+        sw_pack_space_counts(pack, counts);
+        return sw_seam_topology_arena_bytes(g) + sw_seam_select_front_bytes(g) +
+               sw_seam_select_scratch_bytes(g) + table_bytes(1, 1, counts);
+    }
+    uint64_t placed[SW_SPACE_COUNT], bytes = 0;
+    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, placed);
+    /* The largest graph: the topologies' scratch while each is built, and
+     * the fronts' shared scratch. */
+    sw_seam_graph largest = { 0 };
+    for (uint32_t p = 0; p < pack->prototype_count; p++) {
+        sw_seam_graph local = part_counts(pack, &pack->prototypes[p]);
+        bytes += graph_copy_bytes(&local) + sw_seam_topology_arena_bytes(&local);
+        if (local.original_count > largest.original_count)
+            largest.original_count = local.original_count;
+        if (local.vertex_count > largest.vertex_count)
+            largest.vertex_count = local.vertex_count;
+        if (local.collapse_count > largest.collapse_count)
+            largest.collapse_count = local.collapse_count;
+    }
+    bytes += worst(largest.original_count, 4) + sw_seam_select_scratch_bytes(&largest);
+    for (uint32_t k = 0; k < pack->instance_count; k++) {
+        sw_seam_graph local = part_counts(pack, &pack->prototypes[pack->instances[k].prototype]);
+        bytes += sw_seam_select_front_bytes(&local);
+    }
+    bytes += table_bytes(pack->prototype_count, pack->instance_count, placed);
+    return bytes > SIZE_MAX ? SIZE_MAX : (size_t)bytes;
+}
+
+static void *take(sw_arena *arena, uint64_t count, size_t size, int *failed)
+{
+    void *p = sw_arena_alloc(arena, (size_t)count * size, 8);
+    *failed |= p == NULL;
+    return p;
+}
+
+static sw_status take_tables(sw_seam_fronts *f, sw_arena *arena, sw_error *err)
+{
+    int failed = 0;
+    uint64_t n = f->count;
+    f->parts = take(arena, f->part_count, sizeof *f->parts, &failed);
+    f->front = take(arena, n, sizeof *f->front, &failed);
+    f->part_of = take(arena, n, 4, &failed);
+    f->scale = take(arena, n, sizeof(double), &failed);
+    f->first_surface = take(arena, n + 1, 4, &failed);
+    f->first_loop = take(arena, n + 1, 4, &failed);
+    f->first_original = take(arena, n + 1, 4, &failed);
+    f->first_created = take(arena, n + 1, 4, &failed);
+    f->instance_of = take(arena, f->placed.surface_count, 4, &failed);
+    f->bound = take(arena, f->placed.surface_count, 4, &failed);
+    f->shown = take(arena, f->placed.original_count, 4, &failed);
+    return failed ? sw_error_set(err, SW_ERR_NO_MEMORY, "seam fronts: the arena is too small "
+                                 "for their tables")
+                  : SW_OK;
+}
+
+/* Prototype p's graph renumbered from 0 into arena: its records moved by
+ * minus its first in each space, as the expansion moves them by an
+ * instance's first. */
+static sw_status copy_part(const sw_pack *pack, const sw_pack_prototype *p, sw_seam_graph *out,
+                           sw_arena *arena, sw_error *err)
+{
+    const sw_seam_graph *g = &pack->seam;
+    *out = part_counts(pack, p);
+    sw_pack_move m = { .src_originals = g->original_count,
+                       .dst_originals = out->original_count, .scale = 1.0 };
+    const int spaces[] = { SW_SPACE_SEAM_ORIGINALS, SW_SPACE_SEAM_COLLAPSES,
+                           SW_SPACE_SEAM_SLOTS,     SW_SPACE_SEAM_LOOPS,
+                           SW_SPACE_SEAM_SLOT_REFS, SW_SPACE_SURFACES };
+    for (size_t i = 0; i < sizeof spaces / sizeof spaces[0]; i++)
+        m.shift[spaces[i]] = -(int64_t)p->first[spaces[i]];
+    int failed = 0;
+    sw_seam_vertex *v = take(arena, out->vertex_count, sizeof *v, &failed);
+    sw_seam_slot *slots = take(arena, out->slot_count, sizeof *slots, &failed);
+    sw_seam_loop *loops = take(arena, out->loop_count, sizeof *loops, &failed);
+    sw_seam_collapse *c = take(arena, out->collapse_count, sizeof *c, &failed);
+    uint32_t *refs = take(arena, out->slot_ref_count, 4, &failed);
+    uint32_t *surface_loops = take(arena, (uint64_t)out->surface_count + 1, 4, &failed);
+    if (failed)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "seam fronts: the arena is too small for "
+                            "a part's graph");
+    sw_pack_move_seam_vertices(&m, g->vertices + p->first[SW_SPACE_SEAM_ORIGINALS],
+                               out->original_count, v);
+    sw_pack_move_seam_vertices(&m, g->vertices + g->original_count +
+                                       p->first[SW_SPACE_SEAM_COLLAPSES],
+                               out->collapse_count, v + out->original_count);
+    sw_pack_move_seam_slots(&m, g->slots + p->first[SW_SPACE_SEAM_SLOTS], out->slot_count, slots);
+    sw_pack_move_seam_loops(&m, g->loops + p->first[SW_SPACE_SEAM_LOOPS], out->loop_count, loops);
+    sw_pack_move_seam_collapses(&m, g->collapses + p->first[SW_SPACE_SEAM_COLLAPSES],
+                                out->collapse_count, c);
+    sw_pack_move_indices(&m, SW_SPACE_SEAM_SLOTS,
+                         g->slot_refs + p->first[SW_SPACE_SEAM_SLOT_REFS], out->slot_ref_count,
+                         refs);
+    sw_pack_move_indices(&m, SW_SPACE_SEAM_LOOPS, g->surface_loops + p->first[SW_SPACE_SURFACES],
+                         out->surface_count, surface_loops);
+    surface_loops[out->surface_count] = out->loop_count;
+    out->vertices = v, out->slots = slots, out->loops = loops, out->collapses = c;
+    out->slot_refs = refs, out->surface_loops = surface_loops;
+    return SW_OK;
+}
+
+/* Instance k's firsts after k - 1's, from its prototype's counts. */
+static void advance(sw_seam_fronts *f, uint32_t k, const sw_seam_graph *local)
+{
+    f->first_surface[k + 1] = f->first_surface[k] + local->surface_count;
+    f->first_loop[k + 1] = f->first_loop[k] + local->loop_count;
+    f->first_original[k + 1] = f->first_original[k] + local->original_count;
+    f->first_created[k + 1] = f->first_created[k] + local->collapse_count;
+    for (uint32_t s = f->first_surface[k]; s < f->first_surface[k + 1]; s++)
+        f->instance_of[s] = k;
+}
+
+static sw_status start_front(sw_seam_fronts *f, uint32_t k, sw_arena *arena, sw_error *err)
+{
+    const sw_seam_part_graph *part = &f->parts[f->part_of[k]];
+    advance(f, k, &part->graph);
+    sw_status st = sw_seam_select_init_shared(&f->front[k], &part->topology,
+                                              f->shown + f->first_original[k], &f->scratch,
+                                              arena, err);
+    f->active_count += f->front[k].active_count;
+    return st;
+}
+
+/* The firsts' totals are the placed graph's counts. */
+static sw_status check_placed(const sw_seam_fronts *f, sw_error *err)
+{
+    const sw_seam_graph *g = &f->placed;
+    uint32_t n = f->count;
+    if (f->first_surface[n] == g->surface_count && f->first_loop[n] == g->loop_count &&
+        f->first_original[n] == g->original_count && f->first_created[n] == g->collapse_count)
+        return SW_OK;
+    return sw_error_set(err, SW_ERR_FORMAT, "seam fronts: the instances add up to %u surfaces, "
+                        "%u loops, %u originals and %u collapses; the placed graph has %u, %u, "
+                        "%u and %u", f->first_surface[n], f->first_loop[n], f->first_original[n],
+                        f->first_created[n], g->surface_count, g->loop_count, g->original_count,
+                        g->collapse_count);
+}
+
+sw_status sw_seam_fronts_init(sw_seam_fronts *f, const sw_pack *pack, const sw_seam_graph *placed,
+                              sw_arena *arena, sw_error *err)
+{
+    memset(f, 0, sizeof *f);
+    if (!pack->seam_header || !placed)
+        return sw_error_set(err, SW_ERR_ARG, "seam fronts: the pack has no Seam Graph");
+    f->placed = *placed;
+    f->part_count = pack->instances ? pack->prototype_count : 1;
+    f->count = pack->instances ? pack->instance_count : 1;
+    sw_status st = take_tables(f, arena, err);
+    for (uint32_t p = 0; p < f->part_count && st == SW_OK; p++) {
+        sw_seam_part_graph *part = &f->parts[p];
+        if (pack->instances)
+            st = copy_part(pack, &pack->prototypes[p], &part->graph, arena, err);
+        else
+            part->graph = pack->seam;
+        if (st == SW_OK)
+            st = sw_seam_topology_init(&part->topology, &part->graph, arena, err);
+    }
+    uint32_t vertices = 0, collapses = 0;
+    for (uint32_t p = 0; p < f->part_count && st == SW_OK; p++) {
+        const sw_seam_graph *pg = &f->parts[p].graph;
+        vertices = pg->vertex_count > vertices ? pg->vertex_count : vertices;
+        collapses = pg->collapse_count > collapses ? pg->collapse_count : collapses;
+    }
+    if (st == SW_OK)
+        st = sw_seam_select_scratch_init(&f->scratch, vertices, collapses, arena, err);
+    f->first_surface[0] = f->first_loop[0] = f->first_original[0] = f->first_created[0] = 0;
+    for (uint32_t k = 0; k < f->count && st == SW_OK; k++) {
+        f->part_of[k] = pack->instances ? pack->instances[k].prototype : 0;
+        f->scale[k] = pack->instances ? sw_instance_scale(pack->instances[k].transform) : 1.0;
+        st = start_front(f, k, arena, err);
+    }
+    return st == SW_OK ? check_placed(f, err) : st;
+}
+
+sw_status sw_seam_fronts_update(sw_seam_fronts *f, const float *surface_bound,
+                                sw_seam_update_result *result, sw_error *err)
+{
+    sw_seam_update_result sum = { 0, 0, 0, 1 };
+    f->active_count = 0;
+    for (uint32_t k = 0; k < f->count; k++) {
+        uint32_t a = f->first_surface[k], b = f->first_surface[k + 1];
+        const float *bound = surface_bound + a;
+        if (f->scale[k] != 1.0) {
+            for (uint32_t s = a; s < b; s++)
+                f->bound[s] = (float)(surface_bound[s] / f->scale[k]);
+            bound = f->bound + a;
+        }
+        sw_seam_update_result r;
+        sw_status st = sw_seam_select_update(&f->front[k], bound, 0, &r, err);
+        if (st != SW_OK)
+            return st;
+        sum.splits += r.splits, sum.forced_splits += r.forced_splits;
+        sum.collapses += r.collapses, sum.complete &= r.complete;
+        f->active_count += f->front[k].active_count;
+    }
+    if (result)
+        *result = sum;
+    return SW_OK;
+}
+
+uint32_t sw_seam_fronts_instance_of(const sw_seam_fronts *f, uint32_t s)
+{
+    return f->instance_of[s];
+}
+
+int sw_seam_fronts_surface_changed(const sw_seam_fronts *f, uint32_t s)
+{
+    uint32_t k = f->instance_of[s];
+    return sw_seam_select_surface_changed(&f->front[k], s - f->first_surface[k]);
+}
+
+void sw_seam_fronts_clear_changed(sw_seam_fronts *f)
+{
+    for (uint32_t k = 0; k < f->count; k++)
+        sw_seam_select_clear_changed(&f->front[k]);
+}
+
+/* The k whose run [first[k], first[k + 1]) holds x (instances with an
+ * empty run are passed over). */
+static uint32_t run_of(const uint32_t *first, uint32_t count, uint32_t x)
+{
+    uint32_t lo = 0, hi = count;   /* first[lo] <= x < first[hi] */
+    while (hi - lo > 1) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (first[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+uint32_t sw_seam_fronts_instance_at(const sw_seam_fronts *f, uint32_t v)
+{
+    if (v < f->placed.original_count)
+        return run_of(f->first_original, f->count, v);
+    return run_of(f->first_created, f->count, v - f->placed.original_count);
+}
+
+uint32_t sw_seam_fronts_placed(const sw_seam_fronts *f, uint32_t k, uint32_t local)
+{
+    uint32_t originals = f->front[k].graph.original_count;
+    if (local < originals)
+        return f->first_original[k] + local;
+    return f->placed.original_count + f->first_created[k] + (local - originals);
+}
+
+uint32_t sw_seam_fronts_local(const sw_seam_fronts *f, uint32_t k, uint32_t placed)
+{
+    if (placed < f->placed.original_count)
+        return placed - f->first_original[k];
+    return f->front[k].graph.original_count +
+           (placed - f->placed.original_count - f->first_created[k]);
+}
+
+int sw_seam_fronts_surface_loops(const sw_seam_fronts *f, uint32_t s, float pin,
+                                 const sw_seam_surface_buffers *buf, sw_trim_loops *loops,
+                                 uint32_t *outer)
+{
+    uint32_t k = f->instance_of[s];
+    float local_pin = f->scale[k] != 1.0 ? (float)(pin / f->scale[k]) : pin;
+    if (!sw_seam_surface_loops(&f->front[k], s - f->first_surface[k], local_pin, buf, loops,
+                               outer))
+        return 0;
+    for (uint32_t i = 0; i < loops->loop_first[loops->loop_count]; i++) {
+        sw_trim_point *tp = &buf->points[i];
+        tp->id = sw_seam_fronts_placed(f, k, tp->id);
+        memcpy(tp->p, f->placed.vertices[tp->id].p, sizeof tp->p);
+    }
+    return 1;
+}
+
+uint32_t sw_seam_fronts_surfaces_at(const sw_seam_fronts *f, uint32_t o,
+                                    const uint32_t **surfaces, uint32_t *first)
+{
+    uint32_t k = sw_seam_fronts_instance_at(f, o);
+    *first = f->first_surface[k];
+    return sw_seam_select_surfaces_at(&f->front[k], o - f->first_original[k], surfaces);
+}
+
+uint32_t sw_seam_fronts_shown(const sw_seam_fronts *f, const uint32_t *shown, uint32_t o)
+{
+    uint32_t k = sw_seam_fronts_instance_at(f, o);
+    const sw_seam_select *front = &f->front[k];
+    uint32_t leaf = f->first_original[k] + front->leaf_lo[o - f->first_original[k]];
+    return sw_seam_fronts_placed(f, k, (shown ? shown : f->shown)[leaf]);
+}

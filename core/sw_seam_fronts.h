@@ -1,0 +1,104 @@
+/* SPDX-License-Identifier: MIT */
+/* The seam front of a placed scene (sw_pack_instances.h) as one front per
+ * instance: instance k's front is a sw_seam_select over its prototype's
+ * Seam Graph, renumbered from 0 (its positions and errors the prototype's,
+ * as stored), and every instance of a prototype shares that graph and its
+ * topology (sw_seam_topology). What grows with the placements is then the
+ * fronts' own state (sw_seam_select_front_bytes), not the graph, the
+ * topology and the state of every copy, as a select over the expanded
+ * scene (sw_pack_expand_shared) holds them.
+ *
+ * Ids in and out are the placed scene's, as sw_pack_expand_shared numbers
+ * them: instance k's surfaces, loops, originals and created vertices are
+ * its prototype's local ones plus k's first in each space (instance k adds
+ * its prototype's counts). An instance's errors are the prototype's, so
+ * its bounds are divided by the instance's scale. The placed graph is
+ * read only to answer in placed ids where a caller needs its positions.
+ *
+ * A front of a pack without instances is one front over the pack's own
+ * graph. Memory from the arena at init; not thread-safe: one owner, as
+ * sw_seam_select (the workers read loops between updates). */
+#ifndef SW_SEAM_FRONTS_H
+#define SW_SEAM_FRONTS_H
+
+#include <stdint.h>
+
+#include "sw_arena.h"
+#include "sw_error.h"
+#include "sw_pack.h"
+#include "sw_seam_select.h"
+#include "sw_seam_surface.h"
+
+/* A prototype's graph renumbered from 0, and its topology. */
+typedef struct sw_seam_part_graph {
+    sw_seam_graph graph;
+    sw_seam_topology topology;
+} sw_seam_part_graph;
+
+typedef struct sw_seam_fronts {
+    sw_seam_graph placed;          /* the scene's counts (and arrays, when given) */
+    uint32_t part_count;           /* prototypes (1 for a pack without instances) */
+    sw_seam_part_graph *parts;
+    sw_seam_select_scratch scratch;/* every front's: they are updated one at a time */
+    uint32_t count;                /* fronts: instances (1 without) */
+    sw_seam_select *front;         /* count; a front of an empty graph has no arrays */
+    uint32_t *part_of;             /* count: its prototype */
+    double *scale;                 /* count: its transform's scale */
+    /* count + 1 each: instance k's first surface, loop, original and
+     * created vertex (an index into the collapses) in the placed scene */
+    uint32_t *first_surface, *first_loop, *first_original, *first_created;
+    uint32_t *instance_of;         /* placed surface -> instance */
+    float *bound;                  /* placed surfaces: the bounds over the scale */
+    uint32_t *shown;               /* placed originals: every front's shown, instance by
+                                      instance (front k's from first_original[k]) */
+    uint32_t active_count;         /* on all fronts */
+} sw_seam_fronts;
+
+/* Arena bytes sw_seam_fronts_init takes for a validated pack, worst case:
+ * each prototype's graph copied and its topology, each instance's front
+ * (or, without instances, one select over the pack's graph), the tables. */
+size_t sw_seam_fronts_arena_bytes(const sw_pack *pack);
+
+/* The fronts of pack (validated, with a Seam Graph), at the coarsest
+ * front; placed: the placed scene's graph whose ids callers use (its
+ * counts must be those the instances add up to), or the pack's own graph
+ * without instances. SW_ERR_NO_MEMORY when the arena is too small,
+ * SW_ERR_FORMAT when placed does not match the instances. */
+sw_status sw_seam_fronts_init(sw_seam_fronts *f, const sw_pack *pack, const sw_seam_graph *placed,
+                              sw_arena *arena, sw_error *err);
+
+/* Moves every front for the placed surfaces' bounds (sw_seam_select_update
+ * with no cap, instance by instance); *result (may be NULL) the sums. */
+sw_status sw_seam_fronts_update(sw_seam_fronts *f, const float *surface_bound,
+                                sw_seam_update_result *result, sw_error *err);
+
+/* Placed surface s's loops changed since the last clear. */
+int sw_seam_fronts_surface_changed(const sw_seam_fronts *f, uint32_t s);
+void sw_seam_fronts_clear_changed(sw_seam_fronts *f);
+
+/* The instance of placed surface s and of placed original o. */
+uint32_t sw_seam_fronts_instance_of(const sw_seam_fronts *f, uint32_t s);
+uint32_t sw_seam_fronts_instance_at(const sw_seam_fronts *f, uint32_t o);
+
+/* A vertex of instance k: its placed id from its local one, and back. */
+uint32_t sw_seam_fronts_placed(const sw_seam_fronts *f, uint32_t k, uint32_t local);
+uint32_t sw_seam_fronts_local(const sw_seam_fronts *f, uint32_t k, uint32_t placed);
+
+/* Placed surface s's loops at its front, as sw_seam_surface_loops gives
+ * them (pin in the scene's units), each point's id and position the
+ * placed scene's vertex (f->placed's arrays). */
+int sw_seam_fronts_surface_loops(const sw_seam_fronts *f, uint32_t s, float pin,
+                                 const sw_seam_surface_buffers *buf, sw_trim_loops *loops,
+                                 uint32_t *outer);
+
+/* The placed surfaces whose loops placed original o sits in, as
+ * sw_seam_select_surfaces_at: *surfaces local to o's instance, to which
+ * *first (its first surface) is added. */
+uint32_t sw_seam_fronts_surfaces_at(const sw_seam_fronts *f, uint32_t o,
+                                    const uint32_t **surfaces, uint32_t *first);
+
+/* The vertex placed original o shows, placed: in the fronts (shown NULL),
+ * or in a copy of f->shown (placed originals, as the fronts lay it out). */
+uint32_t sw_seam_fronts_shown(const sw_seam_fronts *f, const uint32_t *shown, uint32_t o);
+
+#endif
