@@ -8,25 +8,24 @@
 #include "sw_pack_instances.h"
 #include "sw_pack_move.h"
 
-static size_t worst(uint64_t count, size_t size)
+static uint64_t worst(uint64_t count, size_t size)
 {
-    return sw_arena_worst_case((size_t)count * size, 8);
+    return (uint64_t)sw_arena_worst_case((size_t)count * size, 8);
 }
 
 /* Prototype p's graph, renumbered from 0: counts only (no arrays). */
-static sw_seam_graph part_counts(const sw_pack *pack, const sw_pack_prototype *p)
+static sw_seam_graph part_counts(const sw_pack_prototype *p)
 {
     const uint32_t *c = p->count;
     return (sw_seam_graph){
         .vertex_count = c[SW_SPACE_SEAM_ORIGINALS] + c[SW_SPACE_SEAM_COLLAPSES],
         .original_count = c[SW_SPACE_SEAM_ORIGINALS], .slot_count = c[SW_SPACE_SEAM_SLOTS],
         .loop_count = c[SW_SPACE_SEAM_LOOPS], .collapse_count = c[SW_SPACE_SEAM_COLLAPSES],
-        .slot_ref_count = c[SW_SPACE_SEAM_SLOT_REFS], .surface_count = c[SW_SPACE_SURFACES],
-        .tolerance = pack->seam.tolerance };
+        .slot_ref_count = c[SW_SPACE_SEAM_SLOT_REFS], .surface_count = c[SW_SPACE_SURFACES] };
 }
 
 /* A copied graph's arrays (the edges left out: a front never reads them). */
-static size_t graph_copy_bytes(const sw_seam_graph *g)
+static uint64_t graph_copy_bytes(const sw_seam_graph *g)
 {
     return worst(g->vertex_count, sizeof(sw_seam_vertex)) +
            worst(g->slot_count, sizeof(sw_seam_slot)) +
@@ -35,33 +34,39 @@ static size_t graph_copy_bytes(const sw_seam_graph *g)
            worst((uint64_t)g->surface_count + 1, 4);
 }
 
-/* The walk's tables: per instance (count), per placed surface and original. */
-static size_t table_bytes(uint64_t parts, uint64_t count, const uint64_t placed[SW_SPACE_COUNT])
+/* The per-instance layout's tables. */
+static uint64_t table_bytes(uint64_t parts, uint64_t count, const uint64_t placed[SW_SPACE_COUNT])
 {
     return worst(parts, sizeof(sw_seam_part_graph)) + worst(count, sizeof(sw_seam_select)) +
            worst(count, 4) + worst(count, sizeof(double)) + 4 * worst(count + 1, 4) +
-           2 * worst(placed[SW_SPACE_SURFACES], 4) +
-           worst(placed[SW_SPACE_SEAM_ORIGINALS], 4);
+           2 * worst(placed[SW_SPACE_SURFACES], 4) + worst(placed[SW_SPACE_SEAM_ORIGINALS], 4);
 }
 
-size_t sw_seam_fronts_arena_bytes(const sw_pack *pack)
+/* One select over a graph of these counts; SIZE_MAX when they do not fit. */
+static uint64_t one_front_bytes(const uint64_t c[SW_SPACE_COUNT])
 {
-    if (!pack->seam_header)
-        return 0;
-    const sw_seam_graph *g = &pack->seam;
-    if (!pack->instances) {
-        uint64_t counts[SW_SPACE_COUNT];
-        sw_pack_space_counts(pack, counts);
-        return sw_seam_topology_arena_bytes(g) + sw_seam_select_front_bytes(g) +
-               sw_seam_select_scratch_bytes(g) + table_bytes(1, 1, counts);
-    }
-    uint64_t placed[SW_SPACE_COUNT], bytes = 0;
-    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, placed);
+    uint64_t v = c[SW_SPACE_SEAM_ORIGINALS] + c[SW_SPACE_SEAM_COLLAPSES];
+    if (v >= SW_SEAM_NONE || c[SW_SPACE_SEAM_SLOTS] >= SW_SEAM_NONE ||
+        c[SW_SPACE_SURFACES] >= SW_SEAM_NONE)
+        return SIZE_MAX;
+    sw_seam_graph g = { .vertex_count = (uint32_t)v,
+                        .original_count = (uint32_t)c[SW_SPACE_SEAM_ORIGINALS],
+                        .slot_count = (uint32_t)c[SW_SPACE_SEAM_SLOTS],
+                        .collapse_count = (uint32_t)c[SW_SPACE_SEAM_COLLAPSES],
+                        .surface_count = (uint32_t)c[SW_SPACE_SURFACES] };
+    return sw_seam_select_arena_bytes(&g);
+}
+
+static uint64_t per_instance_bytes(const sw_pack_prototype *prototypes, uint32_t prototype_count,
+                                   const sw_pack_instance *instances, uint32_t instance_count,
+                                   const uint64_t placed[SW_SPACE_COUNT])
+{
     /* The largest graph: the topologies' scratch while each is built, and
      * the fronts' shared scratch. */
     sw_seam_graph largest = { 0 };
-    for (uint32_t p = 0; p < pack->prototype_count; p++) {
-        sw_seam_graph local = part_counts(pack, &pack->prototypes[p]);
+    uint64_t bytes = 0;
+    for (uint32_t p = 0; p < prototype_count; p++) {
+        sw_seam_graph local = part_counts(&prototypes[p]);
         bytes += graph_copy_bytes(&local) + sw_seam_topology_arena_bytes(&local);
         if (local.original_count > largest.original_count)
             largest.original_count = local.original_count;
@@ -71,12 +76,46 @@ size_t sw_seam_fronts_arena_bytes(const sw_pack *pack)
             largest.collapse_count = local.collapse_count;
     }
     bytes += worst(largest.original_count, 4) + sw_seam_select_scratch_bytes(&largest);
-    for (uint32_t k = 0; k < pack->instance_count; k++) {
-        sw_seam_graph local = part_counts(pack, &pack->prototypes[pack->instances[k].prototype]);
+    for (uint32_t k = 0; k < instance_count; k++) {
+        sw_seam_graph local = part_counts(&prototypes[instances[k].prototype]);
         bytes += sw_seam_select_front_bytes(&local);
     }
-    bytes += table_bytes(pack->prototype_count, pack->instance_count, placed);
+    return bytes + table_bytes(prototype_count, instance_count, placed);
+}
+
+size_t sw_seam_fronts_layout_bytes(const sw_pack_prototype *prototypes,
+                                   uint32_t prototype_count, const sw_pack_instance *instances,
+                                   uint32_t instance_count, int per_instance)
+{
+    uint64_t placed[SW_SPACE_COUNT];
+    sw_pack_placed_counts(prototypes, instances, instance_count, placed);
+    uint64_t bytes = per_instance ? per_instance_bytes(prototypes, prototype_count, instances,
+                                                       instance_count, placed)
+                                  : one_front_bytes(placed);
     return bytes > SIZE_MAX ? SIZE_MAX : (size_t)bytes;
+}
+
+size_t sw_seam_fronts_bytes(const sw_pack_prototype *prototypes, uint32_t prototype_count,
+                            const sw_pack_instance *instances, uint32_t instance_count,
+                            int *per_instance)
+{
+    size_t one = sw_seam_fronts_layout_bytes(prototypes, prototype_count, instances,
+                                             instance_count, 0);
+    size_t each = sw_seam_fronts_layout_bytes(prototypes, prototype_count, instances,
+                                              instance_count, 1);
+    if (per_instance)
+        *per_instance = each < one;
+    return each < one ? each : one;
+}
+
+size_t sw_seam_fronts_arena_bytes(const sw_pack *pack)
+{
+    if (!pack->seam_header)
+        return 0;
+    if (!pack->instances)
+        return sw_seam_select_arena_bytes(&pack->seam);
+    return sw_seam_fronts_bytes(pack->prototypes, pack->prototype_count, pack->instances,
+                                pack->instance_count, NULL);
 }
 
 static void *take(sw_arena *arena, uint64_t count, size_t size, int *failed)
@@ -90,16 +129,23 @@ static sw_status take_tables(sw_seam_fronts *f, sw_arena *arena, sw_error *err)
 {
     int failed = 0;
     uint64_t n = f->count;
-    f->parts = take(arena, f->part_count, sizeof *f->parts, &failed);
-    f->front = take(arena, n, sizeof *f->front, &failed);
-    f->part_of = take(arena, n, 4, &failed);
-    f->scale = take(arena, n, sizeof(double), &failed);
-    f->first_surface = take(arena, n + 1, 4, &failed);
-    f->first_loop = take(arena, n + 1, 4, &failed);
-    f->first_original = take(arena, n + 1, 4, &failed);
-    f->first_created = take(arena, n + 1, 4, &failed);
-    f->instance_of = take(arena, f->placed.surface_count, 4, &failed);
-    f->bound = take(arena, f->placed.surface_count, 4, &failed);
+    if (n == 1) {
+        f->parts = &f->one_part, f->front = &f->one_front, f->part_of = &f->one_part_of;
+        f->scale = &f->one_scale;
+        f->first_surface = f->one_first[0], f->first_loop = f->one_first[1];
+        f->first_original = f->one_first[2], f->first_created = f->one_first[3];
+    } else {
+        f->parts = take(arena, f->part_count, sizeof *f->parts, &failed);
+        f->front = take(arena, n, sizeof *f->front, &failed);
+        f->part_of = take(arena, n, 4, &failed);
+        f->scale = take(arena, n, sizeof(double), &failed);
+        f->first_surface = take(arena, n + 1, 4, &failed);
+        f->first_loop = take(arena, n + 1, 4, &failed);
+        f->first_original = take(arena, n + 1, 4, &failed);
+        f->first_created = take(arena, n + 1, 4, &failed);
+        f->instance_of = take(arena, f->placed.surface_count, 4, &failed);
+        f->bound = take(arena, f->placed.surface_count, 4, &failed);
+    }
     f->shown = take(arena, f->placed.original_count, 4, &failed);
     return failed ? sw_error_set(err, SW_ERR_NO_MEMORY, "seam fronts: the arena is too small "
                                  "for their tables")
@@ -113,7 +159,8 @@ static sw_status copy_part(const sw_pack *pack, const sw_pack_prototype *p, sw_s
                            sw_arena *arena, sw_error *err)
 {
     const sw_seam_graph *g = &pack->seam;
-    *out = part_counts(pack, p);
+    *out = part_counts(p);
+    out->tolerance = g->tolerance;
     sw_pack_move m = { .src_originals = g->original_count,
                        .dst_originals = out->original_count, .scale = 1.0 };
     const int spaces[] = { SW_SPACE_SEAM_ORIGINALS, SW_SPACE_SEAM_COLLAPSES,
@@ -158,7 +205,7 @@ static void advance(sw_seam_fronts *f, uint32_t k, const sw_seam_graph *local)
     f->first_loop[k + 1] = f->first_loop[k] + local->loop_count;
     f->first_original[k + 1] = f->first_original[k] + local->original_count;
     f->first_created[k + 1] = f->first_created[k] + local->collapse_count;
-    for (uint32_t s = f->first_surface[k]; s < f->first_surface[k + 1]; s++)
+    for (uint32_t s = f->first_surface[k]; f->instance_of && s < f->first_surface[k + 1]; s++)
         f->instance_of[s] = k;
 }
 
@@ -191,19 +238,33 @@ static sw_status check_placed(const sw_seam_fronts *f, sw_error *err)
 sw_status sw_seam_fronts_init(sw_seam_fronts *f, const sw_pack *pack, const sw_seam_graph *placed,
                               sw_arena *arena, sw_error *err)
 {
+    int each = 0;
+    if (pack->instances)
+        sw_seam_fronts_bytes(pack->prototypes, pack->prototype_count, pack->instances,
+                             pack->instance_count, &each);
+    return sw_seam_fronts_init_layout(f, pack, placed, each, arena, err);
+}
+
+sw_status sw_seam_fronts_init_layout(sw_seam_fronts *f, const sw_pack *pack,
+                                     const sw_seam_graph *placed, int each, sw_arena *arena,
+                                     sw_error *err)
+{
     memset(f, 0, sizeof *f);
     if (!pack->seam_header || !placed)
         return sw_error_set(err, SW_ERR_ARG, "seam fronts: the pack has no Seam Graph");
+    if (each && !pack->instances)
+        return sw_error_set(err, SW_ERR_ARG, "seam fronts: a front per instance of a pack "
+                            "without instances");
     f->placed = *placed;
-    f->part_count = pack->instances ? pack->prototype_count : 1;
-    f->count = pack->instances ? pack->instance_count : 1;
+    f->part_count = each ? pack->prototype_count : 1;
+    f->count = each ? pack->instance_count : 1;
     sw_status st = take_tables(f, arena, err);
     for (uint32_t p = 0; p < f->part_count && st == SW_OK; p++) {
         sw_seam_part_graph *part = &f->parts[p];
-        if (pack->instances)
+        if (each)
             st = copy_part(pack, &pack->prototypes[p], &part->graph, arena, err);
         else
-            part->graph = pack->seam;
+            part->graph = *placed;
         if (st == SW_OK)
             st = sw_seam_topology_init(&part->topology, &part->graph, arena, err);
     }
@@ -217,8 +278,8 @@ sw_status sw_seam_fronts_init(sw_seam_fronts *f, const sw_pack *pack, const sw_s
         st = sw_seam_select_scratch_init(&f->scratch, vertices, collapses, arena, err);
     f->first_surface[0] = f->first_loop[0] = f->first_original[0] = f->first_created[0] = 0;
     for (uint32_t k = 0; k < f->count && st == SW_OK; k++) {
-        f->part_of[k] = pack->instances ? pack->instances[k].prototype : 0;
-        f->scale[k] = pack->instances ? sw_instance_scale(pack->instances[k].transform) : 1.0;
+        f->part_of[k] = each ? pack->instances[k].prototype : 0;
+        f->scale[k] = each ? sw_instance_scale(pack->instances[k].transform) : 1.0;
         st = start_front(f, k, arena, err);
     }
     return st == SW_OK ? check_placed(f, err) : st;
@@ -252,12 +313,12 @@ sw_status sw_seam_fronts_update(sw_seam_fronts *f, const float *surface_bound,
 
 uint32_t sw_seam_fronts_instance_of(const sw_seam_fronts *f, uint32_t s)
 {
-    return f->instance_of[s];
+    return f->instance_of ? f->instance_of[s] : 0;
 }
 
 int sw_seam_fronts_surface_changed(const sw_seam_fronts *f, uint32_t s)
 {
-    uint32_t k = f->instance_of[s];
+    uint32_t k = sw_seam_fronts_instance_of(f, s);
     return sw_seam_select_surface_changed(&f->front[k], s - f->first_surface[k]);
 }
 
@@ -309,7 +370,7 @@ int sw_seam_fronts_surface_loops(const sw_seam_fronts *f, uint32_t s, float pin,
                                  const sw_seam_surface_buffers *buf, sw_trim_loops *loops,
                                  uint32_t *outer)
 {
-    uint32_t k = f->instance_of[s];
+    uint32_t k = sw_seam_fronts_instance_of(f, s);
     float local_pin = f->scale[k] != 1.0 ? (float)(pin / f->scale[k]) : pin;
     if (!sw_seam_surface_loops(&f->front[k], s - f->first_surface[k], local_pin, buf, loops,
                                outer))

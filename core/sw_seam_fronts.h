@@ -37,35 +37,63 @@ typedef struct sw_seam_part_graph {
 
 typedef struct sw_seam_fronts {
     sw_seam_graph placed;          /* the scene's counts (and arrays, when given) */
-    uint32_t part_count;           /* prototypes (1 for a pack without instances) */
+    uint32_t part_count;           /* prototypes (1 for one front) */
     sw_seam_part_graph *parts;
     sw_seam_select_scratch scratch;/* every front's: they are updated one at a time */
-    uint32_t count;                /* fronts: instances (1 without) */
-    sw_seam_select *front;         /* count; a front of an empty graph has no arrays */
+    uint32_t count;                /* fronts: instances (1 for one front) */
+    sw_seam_select *front;         /* count */
     uint32_t *part_of;             /* count: its prototype */
     double *scale;                 /* count: its transform's scale */
     /* count + 1 each: instance k's first surface, loop, original and
      * created vertex (an index into the collapses) in the placed scene */
     uint32_t *first_surface, *first_loop, *first_original, *first_created;
-    uint32_t *instance_of;         /* placed surface -> instance */
-    float *bound;                  /* placed surfaces: the bounds over the scale */
+    uint32_t *instance_of;         /* placed surface -> instance (NULL for one front) */
+    float *bound;                  /* placed surfaces: the bounds over the scale (NULL for
+                                      one front) */
     uint32_t *shown;               /* placed originals: every front's shown, instance by
                                       instance (front k's from first_original[k]) */
     uint32_t active_count;         /* on all fronts */
+    /* One front's tables, kept here rather than in the arena, so one front
+     * takes what one select takes (sw_seam_select_arena_bytes): */
+    sw_seam_part_graph one_part;
+    sw_seam_select one_front;
+    uint32_t one_part_of, one_first[4][2];
+    double one_scale;
 } sw_seam_fronts;
 
-/* Arena bytes sw_seam_fronts_init takes for a validated pack, worst case:
- * each prototype's graph copied and its topology, each instance's front
- * (or, without instances, one select over the pack's graph), the tables. */
+/* Arena bytes sw_seam_fronts_init takes for a validated pack (with a Seam
+ * Graph), worst case. For a pack without instances, one select over its
+ * graph. For a placed one, the fewer of: a front per instance (each
+ * prototype's graph copied and its topology, each instance's front state
+ * and shown vertices, one scratch, the tables) and one front over the
+ * placed graph (what a select over the expanded scene takes: a scene
+ * that repeats little pays more for the copies than it saves).
+ * *per_instance (may be NULL) says which. */
+size_t sw_seam_fronts_bytes(const sw_pack_prototype *prototypes, uint32_t prototype_count,
+                            const sw_pack_instance *instances, uint32_t instance_count,
+                            int *per_instance);
 size_t sw_seam_fronts_arena_bytes(const sw_pack *pack);
+
+/* The bytes of one layout: per_instance 1 a front per instance, 0 one
+ * front over the placed graph (tests compare the two). */
+size_t sw_seam_fronts_layout_bytes(const sw_pack_prototype *prototypes,
+                                   uint32_t prototype_count, const sw_pack_instance *instances,
+                                   uint32_t instance_count, int per_instance);
 
 /* The fronts of pack (validated, with a Seam Graph), at the coarsest
  * front; placed: the placed scene's graph whose ids callers use (its
  * counts must be those the instances add up to), or the pack's own graph
  * without instances. SW_ERR_NO_MEMORY when the arena is too small,
- * SW_ERR_FORMAT when placed does not match the instances. */
+ * SW_ERR_FORMAT when placed does not match the instances. Not to be moved
+ * or copied after (it points into itself). */
 sw_status sw_seam_fronts_init(sw_seam_fronts *f, const sw_pack *pack, const sw_seam_graph *placed,
                               sw_arena *arena, sw_error *err);
+
+/* The same in the layout per_instance says (sw_seam_fronts_layout_bytes);
+ * SW_ERR_ARG for a front per instance of a pack without instances. */
+sw_status sw_seam_fronts_init_layout(sw_seam_fronts *f, const sw_pack *pack,
+                                     const sw_seam_graph *placed, int per_instance,
+                                     sw_arena *arena, sw_error *err);
 
 /* Moves every front for the placed surfaces' bounds (sw_seam_select_update
  * with no cap, instance by instance); *result (may be NULL) the sums. */

@@ -303,7 +303,8 @@ static uint64_t fronts_differ(sw_seam_fronts *f, sw_seam_select *sel, const floa
 /* The fronts of placed pack (one per instance over its prototype's
  * graph) against one select over its expanded scene, frames updates of
  * bounds drawn at random from the graph's errors: what differs. */
-static uint64_t fronts_against_expanded(const sw_pack *pack, int frames)
+static uint64_t fronts_against_expanded(const sw_pack *pack, int frames, int per_instance,
+                                        uint32_t *fronts)
 {
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
@@ -315,15 +316,25 @@ static uint64_t fronts_against_expanded(const sw_pack *pack, int frames)
     sw_error err = { 0 };
     SW_CHECK_MSG(sw_pack_expand_shared(pack, &ea, &placed, &err) == SW_OK, "%s", err.message);
     const sw_seam_graph *g = &placed.seam;
-    size_t fb = sw_seam_fronts_arena_bytes(pack), sb = sw_seam_select_arena_bytes(g);
+    size_t fb = per_instance < 0 ? sw_seam_fronts_arena_bytes(pack)
+                                 : sw_seam_fronts_layout_bytes(pack->prototypes,
+                                                               pack->prototype_count,
+                                                               pack->instances,
+                                                               pack->instance_count,
+                                                               per_instance);
+    size_t sb = sw_seam_select_arena_bytes(g);
     void *fm = malloc(fb), *sm = malloc(sb);
     sw_arena fa, sa;
     sw_arena_init(&fa, fm, fb);
     sw_arena_init(&sa, sm, sb);
     sw_seam_fronts f;
     sw_seam_select sel;
-    SW_CHECK_MSG(sw_seam_fronts_init(&f, pack, g, &fa, &err) == SW_OK, "%s", err.message);
+    sw_status st = per_instance < 0
+                       ? sw_seam_fronts_init(&f, pack, g, &fa, &err)
+                       : sw_seam_fronts_init_layout(&f, pack, g, per_instance, &fa, &err);
+    SW_CHECK_MSG(st == SW_OK, "%s", err.message);
     SW_CHECK(fa.peak <= fb);
+    *fronts = f.count;
     SW_CHECK(sw_seam_select_init_checked(&sel, g, &sa, NULL) == SW_OK);
     float *bound = malloc((g->surface_count + 1) * sizeof *bound), top = 0;
     for (uint32_t v = 0; v < g->vertex_count; v++)
@@ -356,8 +367,19 @@ static void test_fronts_move_as_the_expanded_select(void)
     uint8_t *bytes = NULL;
     sw_pack pack;
     open_placed(inst, &bytes, &pack);
-    uint64_t differ = fronts_against_expanded(&pack, 50);
+    uint32_t fronts = 0;
+    uint64_t differ = fronts_against_expanded(&pack, 50, 1, &fronts);
     SW_CHECK_MSG(differ == 0, "%llu differences", (unsigned long long)differ);
+    SW_CHECK_MSG(fronts == PLACED, "%u fronts: not one per instance", fronts);
+    /* A scene this small repeats too little to gain: one front over the
+     * placed graph takes fewer bytes, and is the one chosen. */
+    int each = 1;
+    size_t least = sw_seam_fronts_bytes(pack.prototypes, pack.prototype_count, pack.instances,
+                                        pack.instance_count, &each);
+    SW_CHECK(!each && least == sw_seam_fronts_layout_bytes(pack.prototypes, pack.prototype_count,
+                                                           pack.instances, pack.instance_count,
+                                                           0));
+    SW_CHECK(fronts_against_expanded(&pack, 5, -1, &fronts) == 0 && fronts == 1);
     free(bytes);
 }
 
@@ -609,8 +631,9 @@ static int fronts_of_file(const char *path)
     printf("%s: %u instances of %u prototypes; fronts %zu bytes, one select over the "
            "expanded scene %zu\n", path, pack.instance_count, pack.prototype_count,
            sw_seam_fronts_arena_bytes(&pack), sw_seam_select_arena_bytes(&placed));
-    uint64_t differ = fronts_against_expanded(&pack, 20);
-    printf("%llu differences\n", (unsigned long long)differ);
+    uint32_t fronts = 0;
+    uint64_t differ = fronts_against_expanded(&pack, 20, -1, &fronts);
+    printf("%u fronts; %llu differences\n", fronts, (unsigned long long)differ);
     free(data);
     return differ != 0 || sw_test_failures != 0 ? 1 : 0;
 }
