@@ -119,11 +119,13 @@ uint64_t sw_pack_expand_shared_bytes(const uint64_t counts[SW_SPACE_COUNT])
 
 uint64_t sw_pack_instanced_runtime_bytes(const sw_seam_graph *stored,
                                          const sw_pack_surface *surfaces,
-                                         const uint64_t counts[SW_SPACE_COUNT])
+                                         const sw_walk_placed *placed)
 {
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(placed->prototypes, placed->instances, placed->instance_count, counts);
     if (counts[SW_SPACE_PATCHES] > UINT32_MAX)
         return UINT64_MAX;
-    uint64_t walk = stored ? sw_walk_arena_bytes_placed(stored, surfaces, counts) : 0;
+    uint64_t walk = stored ? sw_walk_arena_bytes_placed(stored, surfaces, placed) : 0;
     uint64_t bytes = sw_pack_runtime_bytes((uint32_t)counts[SW_SPACE_PATCHES], walk);
     uint64_t expand = sw_pack_expand_shared_bytes(counts);
     return bytes > UINT64_MAX - expand ? UINT64_MAX : bytes + expand;
@@ -135,9 +137,9 @@ uint64_t sw_pack_runtime_bytes_of(const sw_pack *pack)
     if (!pack->instances)
         return sw_pack_runtime_bytes(pack->meta->patch_count,
                                      g ? sw_walk_arena_bytes(g, pack->surfaces) : 0);
-    uint64_t counts[SW_SPACE_COUNT];
-    sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    return sw_pack_instanced_runtime_bytes(g, pack->surfaces, counts);
+    const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
+                                    pack->instance_count };
+    return sw_pack_instanced_runtime_bytes(g, pack->surfaces, &placed);
 }
 
 void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
@@ -154,8 +156,10 @@ void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
     out->patch_state = counts[SW_SPACE_PATCHES] * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
     out->placed = sw_pack_expand_shared_bytes(counts);
+    const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
+                                    pack->instance_count };
     if (g)
-        sw_walk_pools_placed(g, pack->surfaces, counts, out->walk);
+        sw_walk_pools_placed(g, pack->surfaces, &placed, out->walk);
     else
         memset(out->walk, 0, sizeof out->walk);
 }

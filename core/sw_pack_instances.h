@@ -54,7 +54,7 @@ uint64_t sw_pack_expand_shared_bytes(const uint64_t counts[SW_SPACE_COUNT]);
  * graph: no walk). */
 uint64_t sw_pack_instanced_runtime_bytes(const sw_seam_graph *stored,
                                          const sw_pack_surface *surfaces,
-                                         const uint64_t counts[SW_SPACE_COUNT]);
+                                         const sw_walk_placed *placed);
 
 /* runtime_bytes of a validated pack, placed or not. */
 uint64_t sw_pack_runtime_bytes_of(const sw_pack *pack);

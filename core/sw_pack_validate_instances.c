@@ -415,8 +415,10 @@ static sw_status check_placed(const sw_pack *pack, sw_error *err)
             return sw_error_set(err, SW_ERR_RANGE, "INSTANCES: place %llu %s, expected fewer "
                                 "than %u", (unsigned long long)counts[s], space_names[s],
                                 UINT32_MAX);
+    const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
+                                    pack->instance_count };
     uint64_t want = sw_pack_instanced_runtime_bytes(pack->seam_header ? &pack->seam : NULL,
-                                                    pack->surfaces, counts);
+                                                    pack->surfaces, &placed);
     if (pack->header->runtime_bytes < want)
         return sw_error_set(err, SW_ERR_FORMAT, "header.runtime_bytes: %llu, expected at least "
                             "%llu for the placed scene of %u instances (its seamwalk-pack's "

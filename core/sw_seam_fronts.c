@@ -398,3 +398,30 @@ uint32_t sw_seam_fronts_shown(const sw_seam_fronts *f, const uint32_t *shown, ui
     uint32_t leaf = f->first_original[k] + front->leaf_lo[o - f->first_original[k]];
     return sw_seam_fronts_placed(f, k, (shown ? shown : f->shown)[leaf]);
 }
+
+void sw_seam_fronts_set_shown(const sw_seam_fronts *f, uint32_t *shown, uint32_t o, uint32_t v)
+{
+    uint32_t k = sw_seam_fronts_instance_at(f, o);
+    uint32_t first = f->first_original[k];
+    shown[first + f->front[k].leaf_lo[o - first]] = sw_seam_fronts_local(f, k, v);
+}
+
+sw_status sw_seam_fronts_loop_slots(const sw_seam_fronts *f, const uint32_t *shown, uint32_t l,
+                                    float pin, sw_seam_point *points, uint32_t *slots,
+                                    uint32_t capacity, uint32_t *count, int *vanished,
+                                    sw_error *err)
+{
+    if (l >= f->placed.loop_count || !f->placed.loops)
+        return sw_error_set(err, SW_ERR_RANGE, "seam fronts: loop %u of %u", (unsigned)l,
+                            (unsigned)f->placed.loop_count);
+    uint32_t k = sw_seam_fronts_instance_of(f, f->placed.loops[l].surface);
+    sw_seam_select front = f->front[k];
+    if (shown)   /* the copy's, laid out as f->shown */
+        front.shown = (uint32_t *)shown + f->first_original[k];
+    float local_pin = f->scale[k] != 1.0 ? (float)(pin / f->scale[k]) : pin;
+    sw_status st = sw_seam_select_loop_slots(&front, l - f->first_loop[k], local_pin, points,
+                                             slots, capacity, count, vanished, err);
+    for (uint32_t i = 0; st == SW_OK && i < *count; i++)
+        points[i].vertex = sw_seam_fronts_placed(f, k, points[i].vertex);
+    return st;
+}

@@ -129,4 +129,15 @@ uint32_t sw_seam_fronts_surfaces_at(const sw_seam_fronts *f, uint32_t o,
  * or in a copy of f->shown (placed originals, as the fronts lay it out). */
 uint32_t sw_seam_fronts_shown(const sw_seam_fronts *f, const uint32_t *shown, uint32_t o);
 
+/* In such a copy: o shows placed vertex v (o's or an ancestor of it). */
+void sw_seam_fronts_set_shown(const sw_seam_fronts *f, uint32_t *shown, uint32_t o, uint32_t v);
+
+/* Placed loop l's polyline as sw_seam_select_loop_slots gives it (pin in
+ * the scene's units), its fronts' shown vertices, or those of a copy of
+ * f->shown; the points' vertices placed. */
+sw_status sw_seam_fronts_loop_slots(const sw_seam_fronts *f, const uint32_t *shown, uint32_t l,
+                                    float pin, sw_seam_point *points, uint32_t *slots,
+                                    uint32_t capacity, uint32_t *count, int *vanished,
+                                    sw_error *err);
+
 #endif

@@ -6,6 +6,8 @@
 #include "sw_handoff.h"
 #include "sw_normal_cone.h"
 #include "sw_seam_cache.h"
+#include "sw_pack_instances.h"
+#include "sw_seam_fronts.h"
 #include "sw_seam_select.h"
 #include "sw_trim_tess.h"
 
@@ -128,16 +130,20 @@ static int placed_graph(const uint64_t counts[SW_SPACE_COUNT], sw_seam_graph *g)
 }
 
 void sw_walk_pools_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
-                          const uint64_t counts[SW_SPACE_COUNT],
-                          uint64_t pool[SW_WALK_POOL_COUNT])
+                          const sw_walk_placed *placed, uint64_t pool[SW_WALK_POOL_COUNT])
 {
     sw_seam_graph g;
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(placed->prototypes, placed->instances, placed->instance_count, counts);
     for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
         pool[i] = 0;
     if (!stored || counts[SW_SPACE_SURFACES] == 0 || !placed_graph(counts, &g))
         return;
     sw_walk_sizes m = sw_walk_largest_surface(stored, surfaces);
     walk_pools(&g, counts[SW_SPACE_PATCHES], &m, pool);
+    pool[SW_WALK_POOL_SEAM_FRONT] =
+        sw_seam_fronts_bytes(placed->prototypes, placed->prototype_count, placed->instances,
+                             placed->instance_count, NULL);
 }
 
 void sw_walk_pools(const sw_seam_graph *g, const sw_pack_surface *surfaces,
@@ -155,14 +161,16 @@ void sw_walk_pools(const sw_seam_graph *g, const sw_pack_surface *surfaces,
 }
 
 uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
-                                    const uint64_t counts[SW_SPACE_COUNT])
+                                    const sw_walk_placed *placed)
 {
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(placed->prototypes, placed->instances, placed->instance_count, counts);
     if (!stored || counts[SW_SPACE_SURFACES] == 0)
         return 0;
     sw_seam_graph g;
     if (!placed_graph(counts, &g))
         return UINT64_MAX;
     uint64_t pool[SW_WALK_POOL_COUNT];
-    sw_walk_pools_placed(stored, surfaces, counts, pool);
+    sw_walk_pools_placed(stored, surfaces, placed, pool);
     return pool_sum(pool);
 }

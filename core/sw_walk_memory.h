@@ -48,14 +48,22 @@ sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surf
 /* Bytes of the walk, worst case (every alignment included); 0 for no graph. */
 uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces);
 
-/* The same for the placed scene of an instanced pack (sw_pack_instances.h)
- * of counts per space, whose stored graph and surfaces give the largest
- * surface; UINT64_MAX when the counts do not fit a graph. */
+/* The same for the placed scene of an instanced pack (sw_pack_instances.h):
+ * its prototypes placed by its instances (which must index them), whose
+ * stored graph and surfaces give the largest surface; the seam front as
+ * sw_seam_fronts_bytes counts it. UINT64_MAX when the placed counts do not
+ * fit a graph. */
+typedef struct sw_walk_placed {
+    const sw_pack_prototype *prototypes;
+    uint32_t prototype_count;
+    const sw_pack_instance *instances;
+    uint32_t instance_count;
+} sw_walk_placed;
 uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
-                                    const uint64_t counts[SW_SPACE_COUNT]);
+                                    const sw_walk_placed *placed);
 
 /* The same, pool by pool (each of the walk's allocations in one of them):
- * the selection's front over the Seam Graph (sw_seam_select.h), the
+ * the selection's front over the Seam Graph (sw_seam_fronts.h), the
  * per-surface state, culling (the tree, the cones), the maker's buffers
  * for one surface, one surface's output, the workers' shared hand-over
  * (sw_walk_threads_bytes) and the tessellation cache's pools. */
@@ -65,8 +73,7 @@ extern const char *const sw_walk_pool_names[SW_WALK_POOL_COUNT];
 void sw_walk_pools(const sw_seam_graph *g, const sw_pack_surface *surfaces,
                    uint64_t pool[SW_WALK_POOL_COUNT]);
 void sw_walk_pools_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
-                          const uint64_t counts[SW_SPACE_COUNT],
-                          uint64_t pool[SW_WALK_POOL_COUNT]);
+                          const sw_walk_placed *placed, uint64_t pool[SW_WALK_POOL_COUNT]);
 
 /* Of those, the state the tessellation workers share (sw_seam_workers.h),
  * whatever their number: per surface a job (two floats), the worker's

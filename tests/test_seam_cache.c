@@ -146,7 +146,7 @@ static void test_runtime_bytes_hold_pack_and_walk(const char *seed)
     SW_CHECK_MSG(sw_pack_load(seed, &a, &pack, &err) == SW_OK, "%s", err.message);
     SW_CHECK(pack.seam_header != NULL);
     sw_seam_walk w;
-    SW_CHECK_MSG(sw_seam_walk_init(&w, &pack, &a, 0.5, &err) == SW_OK, "%s", err.message);
+    SW_CHECK_MSG(sw_seam_walk_init(&w, &pack, &pack, &a, 0.5, &err) == SW_OK, "%s", err.message);
     SW_CHECK_MSG(sw_seam_walk_enable_cones(&w, &a, &err) == SW_OK, "%s", err.message);
     uint64_t walk = sw_walk_arena_bytes(&pack.seam, pack.surfaces);
     /* Against the high-water mark, cones made: the walk gives back its

@@ -229,11 +229,11 @@ static uint64_t runtime_bytes(const sw_pack_contents *c)
     for (uint32_t i = 0; i < c->instance_count; i++)
         if (c->instances[i].prototype >= c->prototype_count)
             return 0; /* the reader refuses the instance first */
-    uint64_t counts[SW_SPACE_COUNT];
-    sw_pack_placed_counts(c->prototypes, c->instances, c->instance_count, counts);
     int graph = c->seam && c->seam->surface_count == c->surface_count &&
                 sw_seam_graph_check(c->seam, NULL) == SW_OK;
-    return sw_pack_instanced_runtime_bytes(graph ? c->seam : NULL, c->surfaces, counts);
+    const sw_walk_placed placed = { c->prototypes, c->prototype_count, c->instances,
+                                    c->instance_count };
+    return sw_pack_instanced_runtime_bytes(graph ? c->seam : NULL, c->surfaces, &placed);
 }
 
 sw_status sw_pack_serialize(const sw_pack_contents *c, uint8_t **out, size_t *out_size,

@@ -364,7 +364,7 @@ static sw_status write_stats(sw_program *rt, sw_error *err)
         s->worker_busy_ms = (double)atomic_load(&p->busy_ns) * 1e-6;
         s->worker_steals = atomic_load(&p->steals);
     }
-    s->seam_arena_bytes = rt->pack.seam_header ? sw_seam_walk_arena_bytes(&rt->pack) : 0;
+    s->seam_arena_bytes = rt->pack.seam_header ? sw_seam_walk_arena_bytes(&rt->stored) : 0;
     s->seam_arena_peak_bytes = rt->walk_bytes;
     s->runtime_bytes = rt->pack.header ? rt->pack.header->runtime_bytes : 0;
     s->pack_bytes = rt->pack.header ? rt->pack.header->total_size : 0;

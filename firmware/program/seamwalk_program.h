@@ -32,7 +32,8 @@ typedef struct sw_program {
     sw_options opt;
     sw_arena arena;
     void *block;
-    sw_pack pack;
+    sw_pack pack;             /* the scene walked: a placed pack's expanded */
+    sw_pack stored;           /* the pack as read (pack itself without instances) */
     int pack_mapped;          /* the pack file mapped (sw_pack_file_mappable), else copied
                                  into the arena */
     sw_pack_mapping mapping;

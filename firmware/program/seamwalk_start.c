@@ -185,7 +185,8 @@ static sw_status init_seams(sw_program *rt, double *mark_s, sw_error *err)
                             "again with this seamwalk-pack)", rt->opt.pack_path);
     size_t before = rt->arena.used;
     rt->stats.seam_active_min = UINT32_MAX;
-    sw_status st = sw_seam_walk_init(&rt->seam, &rt->pack, &rt->arena, rt->opt.max_error_px, err);
+    sw_status st = sw_seam_walk_init(&rt->seam, &rt->pack, &rt->stored, &rt->arena,
+                                     rt->opt.max_error_px, err);
     rt->walk_bytes = rt->arena.used - before;
     rt->seam.no_cache = rt->opt.no_cache;
     rt->seam.cull_brute = rt->opt.cull_brute;
@@ -314,8 +315,8 @@ static sw_status load(sw_program *rt, sw_error *err)
                                                 rt, &rt->pack, err);
     /* A pack of placed parts is walked as the scene it places. */
     if (st == SW_OK) {
-        sw_pack stored = rt->pack;
-        if ((st = sw_pack_expand_shared(&stored, &rt->arena, &rt->pack, err)) != SW_OK)
+        rt->stored = rt->pack;
+        if ((st = sw_pack_expand_shared(&rt->stored, &rt->arena, &rt->pack, err)) != SW_OK)
             sw_error_prefix(err, "%s", rt->opt.pack_path);
     }
     if (st != SW_OK)

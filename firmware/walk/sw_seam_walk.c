@@ -6,15 +6,21 @@
 #include <string.h>
 #include <time.h>
 
+#include "sw_pack_instances.h"
 #include "sw_seam_measure.h"
 #include "sw_seam_surface.h"
 #include "sw_seam_walk_internal.h"
 #include "sw_surface_at.h"
 #include "sw_surface_cone.h"
 
-size_t sw_seam_walk_arena_bytes(const sw_pack *pack)
+size_t sw_seam_walk_arena_bytes(const sw_pack *stored)
 {
-    return (size_t)sw_walk_arena_bytes(&pack->seam, pack->surfaces);
+    sw_runtime_pools pools;
+    sw_pack_runtime_pools(stored, &pools);
+    uint64_t bytes = 0;
+    for (int i = 0; i < SW_WALK_POOL_COUNT; i++)
+        bytes += pools.walk[i];
+    return (size_t)bytes;
 }
 
 static void *take(sw_arena *a, size_t bytes, int *failed)
@@ -94,8 +100,8 @@ static void set_floors(sw_seam_walk *w)
     }
 }
 
-sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
-                            sw_error *err)
+sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, const sw_pack *stored,
+                            sw_arena *arena, double error_px, sw_error *err)
 {
     memset(w, 0, sizeof *w);
     if (!pack->seam_header)
@@ -108,7 +114,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->bound_floor = 0.1f * pack->seam.tolerance;
     w->drop_surface = UINT32_MAX;
     w->standin_silhouettes = 1;
-    sw_status st = sw_seam_select_init_checked(&w->select, &pack->seam, arena, err);
+    sw_status st = sw_seam_fronts_init(&w->fronts, stored, &pack->seam, arena, err);
     if (st != SW_OK)
         return st;
     w->largest = sw_walk_largest_surface(&pack->seam, pack->surfaces);
@@ -125,10 +131,10 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *aren
     w->cull_near = take(arena, n * sizeof(double), &failed);
     w->cull_far = take(arena, n * sizeof(double), &failed);
     w->cones = take(arena, n * sizeof(sw_normal_cone), &failed);
-    if (failed || sw_seam_maker_init(&w->maker, pack, &w->select, &w->largest, arena, err) ||
+    if (failed || sw_seam_maker_init(&w->maker, pack, &w->fronts, &w->largest, arena, err) ||
         !take_thread_state(w, arena, n))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the seam walk "
-                            "(needs %zu bytes)", sw_seam_walk_arena_bytes(pack));
+                            "(needs %zu bytes)", sw_seam_walk_arena_bytes(stored));
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     st = sw_cull_tree_build(&w->cull_tree, pack->surfaces, (uint32_t)n, pack->patches, arena, err);
@@ -336,14 +342,14 @@ static void cull_boxes(sw_seam_walk *w, const sw_view *view, sw_seam_frame *fram
 sw_status sw_seam_walk_move_front(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err)
 {
     sw_seam_update_result r;
-    sw_status st = sw_seam_select_update(&w->select, w->seam_bound, 0, &r, err);
+    sw_status st = sw_seam_fronts_update(&w->fronts, w->seam_bound, &r, err);
     if (st != SW_OK)
         return st;
     frame->seam_ops = r.splits + r.collapses;
     uint32_t n = w->pack->seam.surface_count;
     for (uint32_t s = 0; s < n; s++)
-        w->dirty[s] |= (uint8_t)sw_seam_select_surface_changed(&w->select, s);
-    sw_seam_select_clear_changed(&w->select);
+        w->dirty[s] |= (uint8_t)sw_seam_fronts_surface_changed(&w->fronts, s);
+    sw_seam_fronts_clear_changed(&w->fronts);
     return SW_OK;
 }
 
@@ -389,7 +395,7 @@ sw_status sw_seam_walk_select(sw_seam_walk *w, const sw_view *view, sw_seam_fram
     if (st == SW_OK && w->workers && !w->defer_schedule)
         st = sw_seam_walk_schedule(w, frame, err);
     /* The front's own count: sw_seam_select_count would walk every loop. */
-    frame->active_vertices = w->select.active_count;
+    frame->active_vertices = w->fronts.active_count;
     w->frame++;
     return st;
 }

@@ -92,6 +92,7 @@
 #include "sw_seam_fill.h"
 #include "sw_seam_make.h"
 #include "sw_seam_plan.h"
+#include "sw_seam_fronts.h"
 #include "sw_seam_select.h"
 #include "sw_seam_standin.h"
 #include "sw_stats.h"
@@ -199,7 +200,8 @@ typedef struct sw_seam_frame {
 
 typedef struct sw_seam_walk {
     const sw_pack *pack;
-    sw_seam_select select;
+    sw_seam_fronts fronts;        /* the seam front, one per instance where that takes less
+                                     memory (core/sw_seam_fronts.h) */
     sw_seam_cache cache;
     float *target;                /* surface_count: the bound its tessellation is (to be) made
                                      for, model units; huge for surfaces without one */
@@ -307,10 +309,16 @@ typedef struct sw_seam_walk {
 } sw_seam_walk;
 
 /* Bytes sw_seam_walk_init takes from its arena for this validated pack
- * (which must hold a Seam Graph: pack->seam_header). */
-size_t sw_seam_walk_arena_bytes(const sw_pack *pack);
-sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, sw_arena *arena, double error_px,
-                            sw_error *err);
+ * as read (which must hold a Seam Graph: pack->seam_header; placed or
+ * not). */
+size_t sw_seam_walk_arena_bytes(const sw_pack *stored);
+
+/* The walk of pack: the scene the walk draws (a placed pack's expanded,
+ * sw_pack_expand_shared), and stored, the pack as read (the same for a
+ * pack without instances): its instances' fronts share their
+ * prototypes' graphs (sw_seam_fronts.h). Both must outlive the walk. */
+sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, const sw_pack *stored,
+                            sw_arena *arena, double error_px, sw_error *err);
 
 /* A test's smaller cache: the pools cut to about vertices vertices and 6
  * x as many indices (never more than they have), so every share of them

@@ -100,8 +100,8 @@ uint32_t sw_seam_standin_coarser(const sw_pack *pack, uint32_t s, uint32_t level
 
 /* Surface s's loops at front into m; 0 when an outer loop vanished. *points
  * gets their points in all. */
-static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
-                  uint32_t *points)
+static int gather(sw_seam_standin *m, const sw_seam_fronts *fronts, const uint32_t *shown,
+                  uint32_t s, uint32_t *points)
 {
     const sw_seam_graph *g = &m->pack->seam;
     uint32_t at = 0, first = g->surface_loops[s];
@@ -109,7 +109,7 @@ static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
         uint32_t count = 0;
         int vanished = 0;
         /* Cannot fail: l is in range and the buffers hold the surface's slots. */
-        sw_seam_select_loop_slots(front, l, 0.0f, m->points + at, m->slots + at,
+        sw_seam_fronts_loop_slots(fronts, shown, l, 0.0f, m->points + at, m->slots + at,
                                   m->capacity - at, &count, &vanished, NULL);
         if (vanished && (g->loops[l].flags & SW_SEAM_LOOP_OUTER))
             return 0;
@@ -121,10 +121,10 @@ static int gather(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
     return 1;
 }
 
-int sw_seam_standin_vanishes(sw_seam_standin *m, const sw_seam_select *front, uint32_t s)
+int sw_seam_standin_vanishes(sw_seam_standin *m, const sw_seam_fronts *fronts, uint32_t s)
 {
     uint32_t points = 0;
-    return !gather(m, front, s, &points);
+    return !gather(m, fronts, NULL, s, &points);
 }
 
 _Static_assert(sizeof(sw_level_vertex) == sizeof(sw_vertex), "a level's vertices are drawn as "
@@ -245,9 +245,9 @@ void sw_seam_standin_estimate(const sw_pack *pack, uint32_t s, uint32_t level,
     *indices = idx > UINT32_MAX ? UINT32_MAX : (uint32_t)idx;
 }
 
-int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
-                         uint32_t level, sw_seam_cache *c, sw_seam_place_fn place,
-                         void *place_ctx, sw_seam_entry *e)
+int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_fronts *fronts,
+                         const uint32_t *shown, uint32_t s, uint32_t level, sw_seam_cache *c,
+                         sw_seam_place_fn place, void *place_ctx, sw_seam_entry *e)
 {
     const sw_levels *lv = &m->pack->levels;
     const sw_level *rec = &lv->levels[level];
@@ -256,7 +256,7 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32
     e->made_bound = e->error_bound = rec->error;
     uint32_t points = 0, n = 0, idx = 0, cracks = 0;
     uint8_t holes_filled = 0;
-    if (!gather(m, front, s, &points)) {
+    if (!gather(m, fronts, shown, s, &points)) {
         e->state = SW_SEAM_GONE;
         return 1;
     }

@@ -27,6 +27,7 @@
 #include "sw_pack.h"
 #include "sw_seam_cache.h"
 #include "sw_seam_make.h"
+#include "sw_seam_fronts.h"
 #include "sw_seam_select.h"
 
 typedef struct sw_seam_standin {
@@ -75,11 +76,13 @@ uint32_t sw_seam_standin_coarser(const sw_pack *pack, uint32_t s, uint32_t level
 void sw_seam_standin_estimate(const sw_pack *pack, uint32_t s, uint32_t level,
                               uint32_t *vertices, uint32_t *indices);
 
-/* 1 when an outer loop of surface s vanishes at front (m's buffers are
- * written). */
-int sw_seam_standin_vanishes(sw_seam_standin *m, const sw_seam_select *front, uint32_t s);
+/* 1 when an outer loop of surface s vanishes at the fronts (m's buffers
+ * are written). */
+int sw_seam_standin_vanishes(sw_seam_standin *m, const sw_seam_fronts *fronts, uint32_t s);
 
-/* Surface s's stand-in from level `level` and the loops front shows (a
+/* Surface s's stand-in from level `level` and the loops the fronts show
+ * with shown for their shown vertices (a copy of fronts->shown, NULL: the
+ * fronts' own; sw_seam_fronts_loop_slots) (a
  * run of slots showing one vertex is one point: only positions are drawn,
  * and repeats of one, a pole's corners kept apart, would each add a strip
  * triangle of no area), into *e with blocks from
@@ -88,8 +91,8 @@ int sw_seam_standin_vanishes(sw_seam_standin *m, const sw_seam_select *front, ui
  * FAILED when it needs more than one draw's 65536 vertices. 0 when place
  * found no room (*e EMPTY), else 1. A loop the level covers (a hole it has
  * no chain for) but the front still shows counts its points as cracks. */
-int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_select *front, uint32_t s,
-                         uint32_t level, sw_seam_cache *c, sw_seam_place_fn place,
-                         void *place_ctx, sw_seam_entry *e);
+int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_fronts *fronts,
+                         const uint32_t *shown, uint32_t s, uint32_t level, sw_seam_cache *c,
+                         sw_seam_place_fn place, void *place_ctx, sw_seam_entry *e);
 
 #endif

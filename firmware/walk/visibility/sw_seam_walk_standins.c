@@ -25,13 +25,13 @@ static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
 {
     const sw_seam_graph *g = &w->pack->seam;
     const uint32_t *at = NULL;
-    uint32_t count = sw_seam_select_surfaces_at(&w->select, o, &at);
+    uint32_t first = 0, count = sw_seam_fronts_surfaces_at(&w->fronts, o, &at, &first);
     float within = w->standin_border[s];
     for (uint32_t k = 0; k < count; k++) {
-        uint32_t t = at[k];
+        uint32_t t = first + at[k];
         if (t != s && w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t] &&
             w->visible[t] == 1)
-            return drawn[w->select.leaf_lo[o]];
+            return sw_seam_fronts_shown(&w->fronts, drawn, o);
         within = fminf(within, w->standin_border[t]);
     }
     within = isfinite(within) ? (float)SW_SEAM_SHARE * within : 0.0f;
@@ -151,10 +151,10 @@ int sw_seam_walk_leaner_keeps_neighbours(const sw_seam_walk *w, uint32_t s, floa
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             const uint32_t *at = NULL;
-            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
-            uint32_t count = sw_seam_select_surfaces_at(&w->select, o, &at);
+            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex, first = 0;
+            uint32_t count = sw_seam_fronts_surfaces_at(&w->fronts, o, &at, &first);
             for (uint32_t i = 0; i < count; i++) {
-                uint32_t t = at[i];
+                uint32_t t = first + at[i];
                 int own_mesh = w->cache.entries[t].state == SW_SEAM_READY && !w->standin[t];
                 if (t == s || t == last || own_mesh)
                     continue;
@@ -205,12 +205,13 @@ static uint32_t standin_level(sw_seam_walk *w, uint32_t s)
  * mostly gone. */
 static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
 {
-    const uint32_t *drawn = w->batch_count > 0 ? w->drawn_shown : w->select.shown;
+    const uint32_t *drawn = w->batch_count > 0 ? w->drawn_shown : w->fronts.shown;
     const sw_seam_graph *g = &w->pack->seam;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
-            w->mixed_shown[w->select.leaf_lo[o]] = standin_vertex(w, o, s, drawn);
+            sw_seam_fronts_set_shown(&w->fronts, w->mixed_shown, o,
+                                     standin_vertex(w, o, s, drawn));
         }
     return w->mixed_shown;
 }
@@ -271,7 +272,8 @@ static double joined_over_bound(const sw_seam_walk *w, uint32_t s)
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
-            worst = fmax(worst, g->vertices[w->mixed_shown[w->select.leaf_lo[o]]].error);
+            worst = fmax(worst,
+                         g->vertices[sw_seam_fronts_shown(&w->fronts, w->mixed_shown, o)].error);
         }
     return worst > within ? worst / within : 0.0;
 }
@@ -281,20 +283,19 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     uint32_t level = standin_level(w, s);
     if (level == UINT32_MAX)
         return 0;
-    sw_seam_select front = w->select;
     sw_seam_entry *e = &w->cache.entries[s];
     uint32_t last = e->last_frame;
-    front.shown = standin_front(w, s);
-    int made = sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
+    const uint32_t *front = standin_front(w, s);
+    int made = sw_seam_standin_make(w->standins, &w->fronts, front, s, level, &w->cache,
                                     sw_seam_workers_place, w->workers, e);
     if (!made && make_room(w, frame))
-        made = sw_seam_standin_make(w->standins, &front, s, level, &w->cache,
+        made = sw_seam_standin_make(w->standins, &w->fronts, front, s, level, &w->cache,
                                     sw_seam_workers_place, w->workers, e);
     /* Still no room: a coarser level, inside the same announced border (the
      * strips join the loops its neighbours were joined to), drawn coarser
      * than its target (behind, measured apart) rather than not at all. */
     for (uint32_t k = level; !made && (k = sw_seam_standin_coarser(w->pack, s, k)) != UINT32_MAX;) {
-        made = sw_seam_standin_make(w->standins, &front, s, k, &w->cache,
+        made = sw_seam_standin_make(w->standins, &w->fronts, front, s, k, &w->cache,
                                     sw_seam_workers_place, w->workers, e);
         frame->standins_coarser += (uint32_t)made;
     }
@@ -310,7 +311,7 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
      * (the paper's vanishing patch), until its mesh is made. */
     double over = e->state == SW_SEAM_GONE ? joined_over_bound(w, s) : 0;
     int vanished = e->state == SW_SEAM_GONE &&
-                   (over <= 1 || sw_seam_standin_vanishes(w->standins, &w->select, s));
+                   (over <= 1 || sw_seam_standin_vanishes(w->standins, &w->fronts, s));
     if (e->state != SW_SEAM_READY && !vanished)
         memset(e, 0, sizeof *e);
     e->last_frame = last;

@@ -65,7 +65,7 @@ sw_status sw_seam_walk_start_workers(sw_seam_walk *w, uint32_t count, double tar
     sw_seam_workers *p = sw_arena_alloc(arena, sizeof *p, 64);
     if (!p)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the workers");
-    sw_status st = sw_seam_workers_init(p, count, w->pack, &w->select, &w->cache, &w->largest,
+    sw_status st = sw_seam_workers_init(p, count, w->pack, &w->fronts, &w->cache, &w->largest,
                                         w->fill != NULL, shared, arena, err);
     if (st == SW_OK)
         st = start_standins(w, arena, err);
@@ -311,7 +311,7 @@ static sw_status open_batch(sw_seam_walk *w, sw_seam_frame *frame, sw_error *err
     /* What the drawn meshes show until the batch is swapped in: stand-ins
      * made meanwhile are made in it. */
     if (w->standins && sw_seam_walk_async(w))
-        memcpy(w->drawn_shown, w->select.shown,
+        memcpy(w->drawn_shown, w->fronts.shown,
                w->pack->seam.original_count * sizeof *w->drawn_shown);
     double new_tris = choose(w, frame), must_tris = 0;
     sw_status st = sw_seam_walk_async(w) ? follow_seams(w, frame, err) : SW_OK;
@@ -394,10 +394,11 @@ void sw_seam_walk_restitch_around(sw_seam_walk *w, uint32_t s)
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             const uint32_t *at = NULL;
-            uint32_t count = sw_seam_select_surfaces_at(
-                &w->select, g->slots[g->loops[l].first_slot + k].vertex, &at);
+            uint32_t first = 0, count = sw_seam_fronts_surfaces_at(
+                                     &w->fronts, g->slots[g->loops[l].first_slot + k].vertex,
+                                     &at, &first);
             for (uint32_t i = 0; i < count; i++)
-                w->restitch[at[i]] |= w->standin[at[i]];
+                w->restitch[first + at[i]] |= w->standin[first + at[i]];
         }
 }
 

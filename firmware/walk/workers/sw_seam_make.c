@@ -27,12 +27,12 @@ uint64_t sw_seam_maker_arena_bytes(const sw_walk_sizes *m)
            worst(v * sizeof(uint32_t)) + worst(SW_WALK_INDICES * sizeof(uint16_t));
 }
 
-sw_status sw_seam_maker_init(sw_seam_maker *k, const sw_pack *pack, const sw_seam_select *select,
+sw_status sw_seam_maker_init(sw_seam_maker *k, const sw_pack *pack, const sw_seam_fronts *fronts,
                              const sw_walk_sizes *m, sw_arena *arena, sw_error *err)
 {
     memset(k, 0, sizeof *k);
     k->pack = pack;
-    k->select = select;
+    k->fronts = fronts;
     k->max_points = m->points, k->max_patches = m->patches;
     size_t v = SW_WALK_VERTICES;
     int failed = 0;
@@ -203,7 +203,7 @@ uint64_t sw_seam_make(sw_seam_maker *k, uint32_t s, float bound, float seam_boun
                                           k->max_points };
     sw_trim_loops loops;
     uint32_t outer = 0;
-    if (!sw_seam_surface_loops(k->select, s, seam_bound, &buf, &loops, &outer)) {
+    if (!sw_seam_fronts_surface_loops(k->fronts, s, seam_bound, &buf, &loops, &outer)) {
         e->state = SW_SEAM_GONE;
         return 0;
     }

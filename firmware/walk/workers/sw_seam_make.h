@@ -22,13 +22,13 @@
 #include "sw_pack.h"
 #include "sw_seam_cache.h"
 #include "sw_seam_fill.h"
-#include "sw_seam_select.h"
+#include "sw_seam_fronts.h"
 #include "sw_trim_tess.h"
 #include "sw_walk_memory.h"
 
 typedef struct sw_seam_maker {
     const sw_pack *pack;
-    const sw_seam_select *select;
+    const sw_seam_fronts *fronts;
     sw_seam_point *loop_points;   /* the largest surface's slots */
     sw_trim_point *points;        /* the same, as the tessellator takes them */
     uint32_t *loop_first;         /* the most loops of a surface, + 1 */
@@ -45,7 +45,7 @@ typedef struct sw_seam_maker {
 /* Arena bytes of one maker for the largest surface m (fill not included:
  * sw_seam_fill_arena_bytes). */
 uint64_t sw_seam_maker_arena_bytes(const sw_walk_sizes *m);
-sw_status sw_seam_maker_init(sw_seam_maker *k, const sw_pack *pack, const sw_seam_select *select,
+sw_status sw_seam_maker_init(sw_seam_maker *k, const sw_pack *pack, const sw_seam_fronts *fronts,
                              const sw_walk_sizes *m, sw_arena *arena, sw_error *err);
 
 /* Where a mesh of n vertices and m indices goes in the cache: 1 with the

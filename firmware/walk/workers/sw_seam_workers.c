@@ -212,13 +212,13 @@ static void *worker_main(void *arg)
     return NULL;
 }
 
-static sw_status init_worker(sw_seam_workers *p, uint32_t i, const sw_seam_select *select,
+static sw_status init_worker(sw_seam_workers *p, uint32_t i, const sw_seam_fronts *fronts,
                              const sw_walk_sizes *m, int fill, sw_arena *arena, sw_error *err)
 {
     sw_seam_worker *w = &p->worker[i];
     w->pool = p;
     w->index = i;
-    sw_status st = sw_seam_maker_init(&w->maker, p->pack, select, m, arena, err);
+    sw_status st = sw_seam_maker_init(&w->maker, p->pack, fronts, m, arena, err);
     if (st == SW_OK && fill)
         st = sw_seam_fill_init(&w->fill, SW_WALK_VERTICES, SW_WALK_INDICES, arena, err);
     if (st == SW_OK)
@@ -248,7 +248,7 @@ static sw_status init_shared(sw_seam_workers *p, uint32_t n, sw_arena *arena, sw
 }
 
 sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack *pack,
-                               const sw_seam_select *select, sw_seam_cache *cache,
+                               const sw_seam_fronts *fronts, sw_seam_cache *cache,
                                const sw_walk_sizes *m, int fill, sw_arena *shared,
                                sw_arena *arena, sw_error *err)
 {
@@ -268,7 +268,7 @@ sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack
     atomic_init(&p->steals, 0);
     sw_status st = init_shared(p, cache->surface_count, shared, err);
     for (uint32_t i = 0; i < count && st == SW_OK; i++)
-        st = init_worker(p, i, select, m, fill, arena, err);
+        st = init_worker(p, i, fronts, m, fill, arena, err);
     if (st != SW_OK)
         return st;
     if (pthread_mutex_init(&p->alloc_lock, NULL) != 0 || sem_init(&p->wake, 0, 0) != 0)

@@ -97,7 +97,7 @@ uint64_t sw_seam_worker_bytes(const sw_walk_sizes *m, int fill);
  * SW_ERR_IO (a thread could not start); on error the started ones are
  * stopped. */
 sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack *pack,
-                               const sw_seam_select *select, sw_seam_cache *cache,
+                               const sw_seam_fronts *fronts, sw_seam_cache *cache,
                                const sw_walk_sizes *m, int fill, sw_arena *shared,
                                sw_arena *arena, sw_error *err);
 
