@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "sw_pack_move.h"
+#include "sw_seam_fronts.h"
 #include "sw_walk_memory.h"
 
 void sw_instance_place(const float t[16], const float p[3], float out[3])
@@ -98,10 +99,20 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int runtime, uint64_t 
         n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0, n[A_EDGES] = 0, n[A_ADJACENCY] = 0;
 }
 
-static uint64_t expand_bytes(const uint64_t counts[SW_SPACE_COUNT], int runtime)
+/* The seam arrays a placed scene leaves to the walk's fronts
+ * (sw_seam_fronts.h: per instance, they read the prototypes' graphs): the
+ * vertices, slots, collapses and slot references; its loops stay. */
+static int left_to_fronts(int a)
+{
+    return a == A_VERTICES || a == A_SLOTS || a == A_COLLAPSES || a == A_SLOT_REFS;
+}
+
+static uint64_t expand_bytes(const uint64_t counts[SW_SPACE_COUNT], int runtime, int seam_left)
 {
     uint64_t n[A_COUNT], size[A_COUNT], total = 0;
     array_sizes(counts, runtime, n, size);
+    for (int a = 0; seam_left && a < A_COUNT; a++)
+        n[a] = left_to_fronts(a) ? 0 : n[a];
     for (int a = 0; a < A_COUNT; a++)
         total += sw_arena_worst_case(n[a] * size[a] + 1, 64);
     return total;
@@ -109,12 +120,30 @@ static uint64_t expand_bytes(const uint64_t counts[SW_SPACE_COUNT], int runtime)
 
 uint64_t sw_pack_expand_bytes(const uint64_t counts[SW_SPACE_COUNT])
 {
-    return expand_bytes(counts, 0);
+    return expand_bytes(counts, 0, 0);
 }
 
 uint64_t sw_pack_expand_shared_bytes(const uint64_t counts[SW_SPACE_COUNT])
 {
-    return expand_bytes(counts, 1);
+    return expand_bytes(counts, 1, 0);
+}
+
+/* 1 when the walk's fronts read a placed pack's seams per instance, so
+ * its placed scene leaves them out. */
+static int seams_left(int graph, const sw_walk_placed *placed)
+{
+    int each = 0;
+    if (graph)
+        sw_seam_fronts_bytes(placed->prototypes, placed->prototype_count, placed->instances,
+                             placed->instance_count, &each);
+    return each;
+}
+
+uint64_t sw_pack_expand_runtime_bytes(int graph, const sw_walk_placed *placed)
+{
+    uint64_t counts[SW_SPACE_COUNT];
+    sw_pack_placed_counts(placed->prototypes, placed->instances, placed->instance_count, counts);
+    return expand_bytes(counts, 1, seams_left(graph, placed));
 }
 
 uint64_t sw_pack_instanced_runtime_bytes(const sw_seam_graph *stored,
@@ -127,7 +156,7 @@ uint64_t sw_pack_instanced_runtime_bytes(const sw_seam_graph *stored,
         return UINT64_MAX;
     uint64_t walk = stored ? sw_walk_arena_bytes_placed(stored, surfaces, placed) : 0;
     uint64_t bytes = sw_pack_runtime_bytes((uint32_t)counts[SW_SPACE_PATCHES], walk);
-    uint64_t expand = sw_pack_expand_shared_bytes(counts);
+    uint64_t expand = sw_pack_expand_runtime_bytes(stored != NULL, placed);
     return bytes > UINT64_MAX - expand ? UINT64_MAX : bytes + expand;
 }
 
@@ -155,9 +184,9 @@ void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
     out->patch_state = counts[SW_SPACE_PATCHES] * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
-    out->placed = sw_pack_expand_shared_bytes(counts);
     const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
                                     pack->instance_count };
+    out->placed = sw_pack_expand_runtime_bytes(g != NULL, &placed);
     if (g)
         sw_walk_pools_placed(g, pack->surfaces, &placed, out->walk);
     else
@@ -183,6 +212,7 @@ typedef struct placed {
     uint64_t n[A_COUNT];
     uint64_t at[SW_SPACE_COUNT];   /* records written so far per space */
     int runtime;                   /* the runtime's (array_sizes says what that leaves out) */
+    int seam_left;                 /* the seams left to the walk's fronts (left_to_fronts) */
 } placed;
 
 static sw_status take_arrays(placed *d, const uint64_t counts[SW_SPACE_COUNT], sw_arena *arena,
@@ -191,11 +221,13 @@ static sw_status take_arrays(placed *d, const uint64_t counts[SW_SPACE_COUNT], s
     uint64_t size[A_COUNT];
     array_sizes(counts, d->runtime, d->n, size);
     for (int a = 0; a < A_COUNT; a++) {
-        d->a[a] = sw_arena_alloc(arena, (size_t)(d->n[a] * size[a] + 1), 64);
+        uint64_t n = d->seam_left && left_to_fronts(a) ? 0 : d->n[a];
+        d->a[a] = sw_arena_alloc(arena, (size_t)(n * size[a] + 1), 64);
         if (!d->a[a])
             return sw_error_set(err, SW_ERR_NO_MEMORY, "the placed scene: the arena is short "
                                 "(%llu bytes needed)",
-                                (unsigned long long)expand_bytes(counts, d->runtime));
+                                (unsigned long long)expand_bytes(counts, d->runtime,
+                                                                 d->seam_left));
     }
     return SW_OK;
 }
@@ -290,6 +322,14 @@ static void place_seam(const sw_pack *pack, placed *d, const sw_pack_prototype *
                        const sw_pack_move *m)
 {
     const sw_seam_graph *g = &pack->seam;
+    sw_pack_move_seam_loops(m, g->loops + p->first[SW_SPACE_SEAM_LOOPS],
+                            p->count[SW_SPACE_SEAM_LOOPS],
+                            AT(d, A_LOOPS, sw_seam_loop, SW_SPACE_SEAM_LOOPS));
+    sw_pack_move_indices(m, SW_SPACE_SEAM_LOOPS, g->surface_loops + p->first[SW_SPACE_SURFACES],
+                         p->count[SW_SPACE_SURFACES],
+                         AT(d, A_SURFACE_LOOPS, uint32_t, SW_SPACE_SURFACES));
+    if (d->seam_left)
+        return;
     sw_seam_vertex *v = d->a[A_VERTICES];
     uint64_t originals = d->n[A_VERTICES] - d->n[A_COLLAPSES];
     sw_pack_move_seam_vertices(m, &g->vertices[p->first[SW_SPACE_SEAM_ORIGINALS]],
@@ -301,9 +341,6 @@ static void place_seam(const sw_pack *pack, placed *d, const sw_pack_prototype *
     sw_pack_move_seam_slots(m, g->slots + p->first[SW_SPACE_SEAM_SLOTS],
                             p->count[SW_SPACE_SEAM_SLOTS],
                             AT(d, A_SLOTS, sw_seam_slot, SW_SPACE_SEAM_SLOTS));
-    sw_pack_move_seam_loops(m, g->loops + p->first[SW_SPACE_SEAM_LOOPS],
-                            p->count[SW_SPACE_SEAM_LOOPS],
-                            AT(d, A_LOOPS, sw_seam_loop, SW_SPACE_SEAM_LOOPS));
     if (d->n[A_EDGES])
         sw_pack_move_seam_edges(m, g->edges + p->first[SW_SPACE_SEAM_EDGES],
                                 p->count[SW_SPACE_SEAM_EDGES],
@@ -314,9 +351,6 @@ static void place_seam(const sw_pack *pack, placed *d, const sw_pack_prototype *
     sw_pack_move_indices(m, SW_SPACE_SEAM_SLOTS, g->slot_refs + p->first[SW_SPACE_SEAM_SLOT_REFS],
                          p->count[SW_SPACE_SEAM_SLOT_REFS],
                          AT(d, A_SLOT_REFS, uint32_t, SW_SPACE_SEAM_SLOT_REFS));
-    sw_pack_move_indices(m, SW_SPACE_SEAM_LOOPS, g->surface_loops + p->first[SW_SPACE_SURFACES],
-                         p->count[SW_SPACE_SURFACES],
-                         AT(d, A_SURFACE_LOOPS, uint32_t, SW_SPACE_SURFACES));
 }
 
 static void place_levels(const sw_pack *pack, placed *d, const sw_pack_prototype *p,
@@ -420,9 +454,12 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
     if (pack->seam_header) {
         const sw_pack_seam *h = d->a[A_SEAM];
         out->seam_header = h;
+        int left = d->seam_left;
         out->seam = (sw_seam_graph){
-            .vertices = d->a[A_VERTICES], .slots = d->a[A_SLOTS], .loops = d->a[A_LOOPS],
-            .edges = h->edge_count ? d->a[A_EDGES] : NULL, .collapses = d->a[A_COLLAPSES], .slot_refs = d->a[A_SLOT_REFS],
+            .vertices = left ? NULL : d->a[A_VERTICES], .slots = left ? NULL : d->a[A_SLOTS],
+            .loops = d->a[A_LOOPS], .edges = h->edge_count ? d->a[A_EDGES] : NULL,
+            .collapses = left ? NULL : d->a[A_COLLAPSES],
+            .slot_refs = left ? NULL : d->a[A_SLOT_REFS],
             .surface_loops = d->a[A_SURFACE_LOOPS], .vertex_count = h->vertex_count,
             .original_count = h->original_count, .slot_count = h->slot_count,
             .loop_count = h->loop_count, .edge_count = h->edge_count,
@@ -468,7 +505,10 @@ static sw_status expand(const sw_pack *pack, int runtime, sw_arena *arena, sw_pa
     }
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    placed d = { .runtime = runtime };
+    const sw_walk_placed wp = { pack->prototypes, pack->prototype_count, pack->instances,
+                                pack->instance_count };
+    placed d = { .runtime = runtime,
+                 .seam_left = runtime && seams_left(pack->seam_header != NULL, &wp) };
     sw_status st = take_arrays(&d, counts, arena, err);
     if (st != SW_OK)
         return st;

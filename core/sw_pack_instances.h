@@ -48,6 +48,12 @@ void sw_pack_placed_counts(const sw_pack_prototype *prototypes, const sw_pack_in
 uint64_t sw_pack_expand_bytes(const uint64_t counts[SW_SPACE_COUNT]);
 uint64_t sw_pack_expand_shared_bytes(const uint64_t counts[SW_SPACE_COUNT]);
 
+/* The same as the runtime takes it (sw_pack_expand_shared) for placed
+ * (graph: the pack has a Seam Graph): without the seams' vertices, slots,
+ * collapses and slot references where the walk's fronts read them per
+ * instance (sw_seam_fronts_bytes chooses that layout). */
+uint64_t sw_pack_expand_runtime_bytes(int graph, const sw_walk_placed *placed);
+
 /* runtime_bytes of an instanced pack: the per-patch state, the expansion
  * and the walk over the placed scene (stored: the pack's own Seam Graph
  * and surfaces, whose largest surface sizes the walk's buffers; NULL
@@ -83,7 +89,10 @@ int sw_runtime_pool_list(const sw_runtime_pools *pools, const char *names[SW_RUN
  * short of sw_pack_expand_bytes. */
 sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_error *err);
 
-/* The same as the runtime holds it: the static and part levels' vertices
+/* The same as the runtime holds it: where the walk's fronts read the
+ * seams per instance (sw_seam_fronts.h), the placed graph keeps its
+ * counts, loops and surfaces' loops, its vertices, slots, collapses and
+ * slot references NULL (sw_pack_expand_runtime_bytes); the static and part levels' vertices
  * are not copied per instance but shared with the prototypes, in their
  * frames (out->level_vertices_local = 1; each level's first_vertex indexes
  * the pack's own LEVEL_VERTICES or PART_LEVEL_VERTICES): whoever reads them

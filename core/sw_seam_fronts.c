@@ -3,10 +3,12 @@
  * (sw_seam_fronts.h). */
 #include "sw_seam_fronts.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "sw_pack_instances.h"
 #include "sw_pack_move.h"
+#include "sw_surface_at.h"
 
 static uint64_t worst(uint64_t count, size_t size)
 {
@@ -278,6 +280,7 @@ sw_status sw_seam_fronts_init_layout(sw_seam_fronts *f, const sw_pack *pack,
         st = sw_seam_select_scratch_init(&f->scratch, vertices, collapses, arena, err);
     f->first_surface[0] = f->first_loop[0] = f->first_original[0] = f->first_created[0] = 0;
     for (uint32_t k = 0; k < f->count && st == SW_OK; k++) {
+        f->instances = each ? pack->instances : NULL;
         f->part_of[k] = each ? pack->instances[k].prototype : 0;
         f->scale[k] = each ? sw_instance_scale(pack->instances[k].transform) : 1.0;
         st = start_front(f, k, arena, err);
@@ -375,10 +378,11 @@ int sw_seam_fronts_surface_loops(const sw_seam_fronts *f, uint32_t s, float pin,
     if (!sw_seam_surface_loops(&f->front[k], s - f->first_surface[k], local_pin, buf, loops,
                                outer))
         return 0;
-    for (uint32_t i = 0; i < loops->loop_first[loops->loop_count]; i++) {
+    for (uint32_t i = 0; f->instances && i < loops->loop_first[loops->loop_count]; i++) {
         sw_trim_point *tp = &buf->points[i];
+        float p[3] = { tp->p[0], tp->p[1], tp->p[2] };
         tp->id = sw_seam_fronts_placed(f, k, tp->id);
-        memcpy(tp->p, f->placed.vertices[tp->id].p, sizeof tp->p);
+        sw_instance_place(f->instances[k].transform, p, tp->p);
     }
     return 1;
 }
@@ -424,4 +428,89 @@ sw_status sw_seam_fronts_loop_slots(const sw_seam_fronts *f, const uint32_t *sho
     for (uint32_t i = 0; st == SW_OK && i < *count; i++)
         points[i].vertex = sw_seam_fronts_placed(f, k, points[i].vertex);
     return st;
+}
+
+/* Placed vertex v's instance and its vertex in the prototype's graph. */
+static const sw_seam_vertex *local_vertex(const sw_seam_fronts *f, uint32_t v, uint32_t *k)
+{
+    *k = sw_seam_fronts_instance_at(f, v);
+    const sw_seam_graph *g = &f->parts[f->part_of[*k]].graph;
+    return &g->vertices[sw_seam_fronts_local(f, *k, v)];
+}
+
+void sw_seam_fronts_position(const sw_seam_fronts *f, uint32_t v, float out[3])
+{
+    if (!f->instances) {
+        memcpy(out, f->placed.vertices[v].p, 3 * sizeof(float));
+        return;
+    }
+    uint32_t k;
+    const sw_seam_vertex *local = local_vertex(f, v, &k);
+    sw_instance_place(f->instances[k].transform, local->p, out);
+}
+
+float sw_seam_fronts_error(const sw_seam_fronts *f, uint32_t v)
+{
+    if (!f->instances)
+        return f->placed.vertices[v].error;
+    uint32_t k;
+    float e = local_vertex(f, v, &k)->error;
+    return (float)(e * f->scale[k]);
+}
+
+uint32_t sw_seam_fronts_child(const sw_seam_fronts *f, uint32_t v)
+{
+    if (!f->instances)
+        return f->placed.vertices[v].child;
+    uint32_t k, child = local_vertex(f, v, &k)->child;
+    return child == SW_SEAM_NONE ? child : sw_seam_fronts_placed(f, k, child);
+}
+
+uint32_t sw_seam_fronts_slot_vertex(const sw_seam_fronts *f, uint32_t l, uint32_t i)
+{
+    const sw_seam_loop *loop = &f->placed.loops[l];
+    if (!f->instances)
+        return f->placed.slots[loop->first_slot + i].vertex;
+    uint32_t k = sw_seam_fronts_instance_of(f, loop->surface);
+    const sw_seam_graph *g = &f->parts[f->part_of[k]].graph;
+    const sw_seam_loop *local = &g->loops[l - f->first_loop[k]];
+    return sw_seam_fronts_placed(f, k, g->slots[local->first_slot + i].vertex);
+}
+
+typedef struct placed_loop {
+    const sw_seam_fronts *f;
+    uint32_t k;
+    const sw_seam_graph *g;
+    const sw_seam_loop *loop;
+} placed_loop;
+
+/* Slot i of a prototype's loop as instance k places it. */
+static void placed_point(const void *ctx, uint32_t i, sw_sewn_point *out)
+{
+    const placed_loop *pl = ctx;
+    const sw_seam_slot *slot = &pl->g->slots[pl->loop->first_slot + i];
+    const sw_seam_vertex *v = &pl->g->vertices[slot->vertex];
+    sw_instance_place(pl->f->instances[pl->k].transform, v->p, out->p);
+    memcpy(out->uv, slot->uv, sizeof out->uv);
+    out->error = (float)(v->error * pl->f->scale[pl->k]);
+}
+
+double sw_seam_fronts_sewing_offset(const sw_seam_fronts *f, uint32_t s,
+                                    const sw_trim_patch *patches, uint32_t patch_count)
+{
+    const sw_seam_graph *placed = &f->placed;
+    double worst = 0;
+    uint32_t k = sw_seam_fronts_instance_of(f, s);
+    for (uint32_t l = placed->surface_loops[s]; l < placed->surface_loops[s + 1]; l++) {
+        if (!f->instances) {
+            worst = fmax(worst, sw_seam_sewing_offset(placed, &placed->loops[l], patches,
+                                                      patch_count));
+            continue;
+        }
+        const sw_seam_graph *g = &f->parts[f->part_of[k]].graph;
+        const placed_loop pl = { f, k, g, &g->loops[l - f->first_loop[k]] };
+        worst = fmax(worst, sw_seam_sewing_offset_of(pl.loop->slot_count, placed_point, &pl,
+                                                     patches, patch_count));
+    }
+    return worst;
 }

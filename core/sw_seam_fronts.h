@@ -47,6 +47,8 @@ typedef struct sw_seam_fronts {
     /* count + 1 each: instance k's first surface, loop, original and
      * created vertex (an index into the collapses) in the placed scene */
     uint32_t *first_surface, *first_loop, *first_original, *first_created;
+    const sw_pack_instance *instances; /* count: where they place the prototypes' graphs
+                                      (NULL for one front: the placed graph's own) */
     uint32_t *instance_of;         /* placed surface -> instance (NULL for one front) */
     float *bound;                  /* placed surfaces: the bounds over the scale (NULL for
                                       one front) */
@@ -128,6 +130,23 @@ uint32_t sw_seam_fronts_surfaces_at(const sw_seam_fronts *f, uint32_t o,
 /* The vertex placed original o shows, placed: in the fronts (shown NULL),
  * or in a copy of f->shown (placed originals, as the fronts lay it out). */
 uint32_t sw_seam_fronts_shown(const sw_seam_fronts *f, const uint32_t *shown, uint32_t o);
+
+/* Placed vertex v as the placed scene has it, whether or not its arrays
+ * hold it (sw_pack_expand_shared leaves them to the fronts): its position
+ * (the prototype's placed by the instance, sw_instance_place), its error
+ * (the prototype's times the instance's scale) and its child (placed;
+ * SW_SEAM_NONE for a root). The same floats as the expansion's copy. */
+void sw_seam_fronts_position(const sw_seam_fronts *f, uint32_t v, float out[3]);
+float sw_seam_fronts_error(const sw_seam_fronts *f, uint32_t v);
+uint32_t sw_seam_fronts_child(const sw_seam_fronts *f, uint32_t v);
+
+/* The original sewn at slot k (0 .. slot_count - 1) of placed loop l. */
+uint32_t sw_seam_fronts_slot_vertex(const sw_seam_fronts *f, uint32_t l, uint32_t k);
+
+/* Placed surface s's sewing offset (sw_seam_sewing_offset) against its
+ * placed patches. */
+double sw_seam_fronts_sewing_offset(const sw_seam_fronts *f, uint32_t s,
+                                    const sw_trim_patch *patches, uint32_t patch_count);
 
 /* In such a copy: o shows placed vertex v (o's or an ancestor of it). */
 void sw_seam_fronts_set_shown(const sw_seam_fronts *f, uint32_t *shown, uint32_t o, uint32_t v);

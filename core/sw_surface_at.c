@@ -3,6 +3,7 @@
 #include "sw_surface_at.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "sw_bezier.h"
 
@@ -75,26 +76,48 @@ sw_vec3 sw_surface_sampler_at(sw_surface_sampler *s, double u, double v)
     return sp.p;
 }
 
-double sw_seam_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
-                             const sw_trim_patch *patches, uint32_t patch_count)
+double sw_seam_sewing_offset_of(uint32_t slot_count, sw_sewn_point_fn at, const void *ctx,
+                                const sw_trim_patch *patches, uint32_t patch_count)
 {
     double worst = 0;
-    for (uint32_t k = 0; k < loop->slot_count; k++) {
-        const sw_seam_slot *a = &g->slots[loop->first_slot + k];
-        const sw_seam_slot *b = &g->slots[loop->first_slot + (k + 1) % loop->slot_count];
-        const sw_seam_vertex *va = &g->vertices[a->vertex], *vb = &g->vertices[b->vertex];
-        if (va->error > 0)
+    sw_sewn_point a, b;
+    for (uint32_t k = 0; k < slot_count; k++) {
+        at(ctx, k, &a);
+        if (a.error > 0)
             continue;
-        const float *p = va->p, *q = vb->p;
-        sw_vec3 at = sw_surface_at(patches, patch_count, a->uv[0], a->uv[1]);
-        worst = fmax(worst, sw_v3_length(sw_v3_sub(at, sw_v3(p[0], p[1], p[2]))));
-        if (vb->error > 0)
+        at(ctx, (k + 1) % slot_count, &b);
+        const float *p = a.p, *q = b.p;
+        sw_vec3 on = sw_surface_at(patches, patch_count, a.uv[0], a.uv[1]);
+        worst = fmax(worst, sw_v3_length(sw_v3_sub(on, sw_v3(p[0], p[1], p[2]))));
+        if (b.error > 0)
             continue;
-        sw_vec3 mid = sw_surface_at(patches, patch_count, 0.5 * ((double)a->uv[0] + b->uv[0]),
-                                    0.5 * ((double)a->uv[1] + b->uv[1]));
+        sw_vec3 mid = sw_surface_at(patches, patch_count, 0.5 * ((double)a.uv[0] + b.uv[0]),
+                                    0.5 * ((double)a.uv[1] + b.uv[1]));
         sw_vec3 chord = sw_v3(0.5 * ((double)p[0] + q[0]), 0.5 * ((double)p[1] + q[1]),
                               0.5 * ((double)p[2] + q[2]));
         worst = fmax(worst, sw_v3_length(sw_v3_sub(mid, chord)));
     }
     return worst;
+}
+
+typedef struct graph_loop {
+    const sw_seam_graph *g;
+    const sw_seam_loop *loop;
+} graph_loop;
+
+static void graph_point(const void *ctx, uint32_t k, sw_sewn_point *out)
+{
+    const graph_loop *gl = ctx;
+    const sw_seam_slot *slot = &gl->g->slots[gl->loop->first_slot + k];
+    const sw_seam_vertex *v = &gl->g->vertices[slot->vertex];
+    memcpy(out->p, v->p, sizeof out->p);
+    memcpy(out->uv, slot->uv, sizeof out->uv);
+    out->error = v->error;
+}
+
+double sw_seam_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
+                             const sw_trim_patch *patches, uint32_t patch_count)
+{
+    const graph_loop gl = { g, loop };
+    return sw_seam_sewing_offset_of(loop->slot_count, graph_point, &gl, patches, patch_count);
 }

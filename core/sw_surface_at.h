@@ -46,4 +46,14 @@ sw_vec3 sw_surface_sampler_at(sw_surface_sampler *s, double u, double v);
 double sw_seam_sewing_offset(const sw_seam_graph *g, const sw_seam_loop *loop,
                              const sw_trim_patch *patches, uint32_t patch_count);
 
+/* The same for a loop of slot_count slots read through at (the walk's
+ * fronts, whose graphs are the prototypes', placed as they are read):
+ * slot k's position, parameters and vertex error. */
+typedef struct sw_sewn_point {
+    float p[3], uv[2], error;
+} sw_sewn_point;
+typedef void (*sw_sewn_point_fn)(const void *ctx, uint32_t k, sw_sewn_point *out);
+double sw_seam_sewing_offset_of(uint32_t slot_count, sw_sewn_point_fn at, const void *ctx,
+                                const sw_trim_patch *patches, uint32_t patch_count);
+
 #endif

@@ -308,13 +308,13 @@ static uint64_t fronts_against_expanded(const sw_pack *pack, int frames, int per
 {
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    size_t expand = (size_t)sw_pack_expand_shared_bytes(counts);
+    size_t expand = (size_t)sw_pack_expand_bytes(counts);   /* every seam array copied */
     sw_arena ea;
     void *eb = malloc(expand);
     sw_arena_init(&ea, eb, expand);
     sw_pack placed;
     sw_error err = { 0 };
-    SW_CHECK_MSG(sw_pack_expand_shared(pack, &ea, &placed, &err) == SW_OK, "%s", err.message);
+    SW_CHECK_MSG(sw_pack_expand(pack, &ea, &placed, &err) == SW_OK, "%s", err.message);
     const sw_seam_graph *g = &placed.seam;
     size_t fb = per_instance < 0 ? sw_seam_fronts_arena_bytes(pack)
                                  : sw_seam_fronts_layout_bytes(pack->prototypes,
@@ -335,6 +335,20 @@ static uint64_t fronts_against_expanded(const sw_pack *pack, int frames, int per
     SW_CHECK_MSG(st == SW_OK, "%s", err.message);
     SW_CHECK(fa.peak <= fb);
     *fronts = f.count;
+    /* The placed graph read through the fronts, from the prototypes'
+     * graphs and the instances: the expansion's very floats. */
+    uint64_t differ = 0;
+    for (uint32_t v = 0; v < g->vertex_count; v++) {
+        float p[3];
+        sw_seam_fronts_position(&f, v, p);
+        differ += memcmp(p, g->vertices[v].p, sizeof p) != 0;
+        differ += sw_seam_fronts_error(&f, v) != g->vertices[v].error;
+        differ += sw_seam_fronts_child(&f, v) != g->vertices[v].child;
+    }
+    for (uint32_t l = 0; l < g->loop_count; l++)
+        for (uint32_t k = 0; k < g->loops[l].slot_count; k++)
+            differ += sw_seam_fronts_slot_vertex(&f, l, k) !=
+                      g->slots[g->loops[l].first_slot + k].vertex;
     SW_CHECK(sw_seam_select_init_checked(&sel, g, &sa, NULL) == SW_OK);
     float *bound = malloc((g->surface_count + 1) * sizeof *bound), top = 0;
     for (uint32_t v = 0; v < g->vertex_count; v++)
@@ -345,7 +359,6 @@ static uint64_t fronts_against_expanded(const sw_pack *pack, int frames, int per
     sw_seam_surface_buffers ba = { sp, tp, first, g->slot_count + 1 };
     sw_seam_surface_buffers bb = { sp + g->slot_count + 1, tp + g->slot_count + 1,
                                    first + g->loop_count + 1, g->slot_count + 1 };
-    uint64_t differ = 0;
     for (int frame = 0; frame < frames; frame++) {
         for (uint32_t s = 0; s < g->surface_count; s++)
             bound[s] = top * (float)exp2(-12.0 * sw_test_random());

@@ -44,11 +44,7 @@ float sw_seam_walk_sewing_offset(const sw_seam_walk *w, uint32_t s, float *known
     uint32_t count = 0;
     if (sw_trim_patches_from_pack(w->pack, s, patches, capacity, &count, NULL))
         return 0;
-    const sw_seam_graph *g = &w->pack->seam;
-    double worst = 0;
-    for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
-        worst = fmax(worst, sw_seam_sewing_offset(g, &g->loops[l], patches, count));
-    return known[s] = (float)worst;
+    return known[s] = (float)sw_seam_fronts_sewing_offset(&w->fronts, s, patches, count);
 }
 
 /* The per-surface state of the threaded walk (counted with the rest in
@@ -95,7 +91,8 @@ static void set_floors(sw_seam_walk *w)
         float f = w->bound_floor;
         for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
             for (uint32_t k = 0; k < g->loops[l].slot_count; k++)
-                f = fmaxf(f, g->vertices[g->slots[g->loops[l].first_slot + k].vertex].error);
+                f = fmaxf(f, sw_seam_fronts_error(&w->fronts,
+                                                  sw_seam_fronts_slot_vertex(&w->fronts, l, k)));
         w->floor[s] = f;
     }
 }

@@ -282,7 +282,7 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_fronts *fronts,
             continue;
         for (uint32_t j = 0; j < m->loop_count[i]; j++) {
             sw_vertex *p = &v[base + j];
-            memcpy(p->pos, g->vertices[m->points[m->loop_at[i] + j].vertex].p, sizeof p->pos);
+            sw_seam_fronts_position(fronts, m->points[m->loop_at[i] + j].vertex, p->pos);
             memset(p->normal, 0, sizeof p->normal);
         }
         float period = (float)g->loops[g->surface_loops[s] + i].slot_count;

@@ -9,6 +9,15 @@
 #include "sw_seam_surface.h"
 #include "sw_seam_walk_internal.h"
 
+/* Original o's highest ancestor whose error is within. */
+static uint32_t ancestor_within(const sw_seam_fronts *f, uint32_t o, float within)
+{
+    uint32_t x = o, c;
+    while ((c = sw_seam_fronts_child(f, x)) != SW_SEAM_NONE && sw_seam_fronts_error(f, c) <= within)
+        x = c;
+    return x;
+}
+
 /* The vertex original o shows in a stand-in for s: where o is sewn into a
  * loop of another surface drawn this frame from a mesh of the walk's own
  * (not a stand-in), the one that mesh shows (drawn, by leaf position);
@@ -23,7 +32,6 @@
 static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
                                const uint32_t *drawn)
 {
-    const sw_seam_graph *g = &w->pack->seam;
     const uint32_t *at = NULL;
     uint32_t first = 0, count = sw_seam_fronts_surfaces_at(&w->fronts, o, &at, &first);
     float within = w->standin_border[s];
@@ -35,11 +43,7 @@ static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
         within = fminf(within, w->standin_border[t]);
     }
     within = isfinite(within) ? (float)SW_SEAM_SHARE * within : 0.0f;
-    uint32_t x = o;
-    while (g->vertices[x].child != SW_SEAM_NONE &&
-           g->vertices[g->vertices[x].child].error <= within)
-        x = g->vertices[x].child;
-    return x;
+    return ancestor_within(&w->fronts, o, within);
 }
 
 /* What s's stand-in's loops may show: its level's error or, coarser, the
@@ -70,10 +74,8 @@ static int keeps_outer_loops(const sw_seam_walk *w, uint32_t s, float border)
             continue;
         uint32_t seen[3], distinct = 0;
         for (uint32_t k = 0; k < g->loops[l].slot_count && distinct < 3; k++) {
-            uint32_t x = g->slots[g->loops[l].first_slot + k].vertex;
-            while (g->vertices[x].child != SW_SEAM_NONE &&
-                   g->vertices[g->vertices[x].child].error <= within)
-                x = g->vertices[x].child;
+            uint32_t x = ancestor_within(&w->fronts, sw_seam_fronts_slot_vertex(&w->fronts, l, k),
+                                         within);
             uint32_t i = 0;
             while (i < distinct && seen[i] != x)
                 i++;
@@ -151,7 +153,7 @@ int sw_seam_walk_leaner_keeps_neighbours(const sw_seam_walk *w, uint32_t s, floa
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             const uint32_t *at = NULL;
-            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex, first = 0;
+            uint32_t o = sw_seam_fronts_slot_vertex(&w->fronts, l, k), first = 0;
             uint32_t count = sw_seam_fronts_surfaces_at(&w->fronts, o, &at, &first);
             for (uint32_t i = 0; i < count; i++) {
                 uint32_t t = first + at[i];
@@ -209,7 +211,7 @@ static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
     const sw_seam_graph *g = &w->pack->seam;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
-            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
+            uint32_t o = sw_seam_fronts_slot_vertex(&w->fronts, l, k);
             sw_seam_fronts_set_shown(&w->fronts, w->mixed_shown, o,
                                      standin_vertex(w, o, s, drawn));
         }
@@ -271,9 +273,9 @@ static double joined_over_bound(const sw_seam_walk *w, uint32_t s)
     double within = SW_SEAM_SHARE * w->want[s], worst = 0;
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
-            uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
-            worst = fmax(worst,
-                         g->vertices[sw_seam_fronts_shown(&w->fronts, w->mixed_shown, o)].error);
+            uint32_t o = sw_seam_fronts_slot_vertex(&w->fronts, l, k);
+            worst = fmax(worst, sw_seam_fronts_error(&w->fronts, sw_seam_fronts_shown(
+                                                                     &w->fronts, w->mixed_shown, o)));
         }
     return worst > within ? worst / within : 0.0;
 }

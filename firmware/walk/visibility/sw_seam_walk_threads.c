@@ -395,7 +395,7 @@ void sw_seam_walk_restitch_around(sw_seam_walk *w, uint32_t s)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             const uint32_t *at = NULL;
             uint32_t first = 0, count = sw_seam_fronts_surfaces_at(
-                                     &w->fronts, g->slots[g->loops[l].first_slot + k].vertex,
+                                     &w->fronts, sw_seam_fronts_slot_vertex(&w->fronts, l, k),
                                      &at, &first);
             for (uint32_t i = 0; i < count; i++)
                 w->restitch[first + at[i]] |= w->standin[first + at[i]];

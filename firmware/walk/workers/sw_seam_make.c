@@ -111,7 +111,8 @@ static uint32_t count_cracks(const sw_seam_maker *k, const sw_trim_tess_result *
         *crossings += k->ids[i] == SW_TRIM_CROSSING;
         if (k->ids[i] == SW_TRIM_INTERIOR || k->ids[i] == SW_TRIM_CROSSING)
             continue;
-        const float *p = k->pack->seam.vertices[k->ids[i]].p;
+        float p[3];
+        sw_seam_fronts_position(k->fronts, k->ids[i], p);
         cracks += memcmp(p, k->positions + 3 * i, 3 * sizeof(float)) != 0;
     }
     return cracks;
