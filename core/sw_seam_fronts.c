@@ -466,6 +466,21 @@ uint32_t sw_seam_fronts_child(const sw_seam_fronts *f, uint32_t v)
     return child == SW_SEAM_NONE ? child : sw_seam_fronts_placed(f, k, child);
 }
 
+uint32_t sw_seam_fronts_ancestor_within(const sw_seam_fronts *f, uint32_t v, float within)
+{
+    if (!f->instances) {
+        const sw_seam_vertex *g = f->placed.vertices;
+        while (g[v].child != SW_SEAM_NONE && g[g[v].child].error <= within)
+            v = g[v].child;
+        return v;
+    }
+    uint32_t k = sw_seam_fronts_instance_at(f, v), x = sw_seam_fronts_local(f, k, v);
+    const sw_seam_vertex *g = f->parts[f->part_of[k]].graph.vertices;
+    while (g[x].child != SW_SEAM_NONE && (float)(g[g[x].child].error * f->scale[k]) <= within)
+        x = g[x].child;
+    return sw_seam_fronts_placed(f, k, x);
+}
+
 uint32_t sw_seam_fronts_slot_vertex(const sw_seam_fronts *f, uint32_t l, uint32_t i)
 {
     const sw_seam_loop *loop = &f->placed.loops[l];

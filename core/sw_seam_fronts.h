@@ -140,6 +140,11 @@ void sw_seam_fronts_position(const sw_seam_fronts *f, uint32_t v, float out[3]);
 float sw_seam_fronts_error(const sw_seam_fronts *f, uint32_t v);
 uint32_t sw_seam_fronts_child(const sw_seam_fronts *f, uint32_t v);
 
+/* Placed vertex v's highest ancestor whose error is within (v itself
+ * when its child's is not), placed: what sw_seam_fronts_child and _error
+ * would find step by step, with one look for v's instance. */
+uint32_t sw_seam_fronts_ancestor_within(const sw_seam_fronts *f, uint32_t v, float within);
+
 /* The original sewn at slot k (0 .. slot_count - 1) of placed loop l. */
 uint32_t sw_seam_fronts_slot_vertex(const sw_seam_fronts *f, uint32_t l, uint32_t k);
 

@@ -344,6 +344,11 @@ static uint64_t fronts_against_expanded(const sw_pack *pack, int frames, int per
         differ += memcmp(p, g->vertices[v].p, sizeof p) != 0;
         differ += sw_seam_fronts_error(&f, v) != g->vertices[v].error;
         differ += sw_seam_fronts_child(&f, v) != g->vertices[v].child;
+        float within = g->vertices[v].error * 1.5f + 1e-3f;
+        uint32_t x = v;
+        while (g->vertices[x].child != SW_SEAM_NONE && g->vertices[g->vertices[x].child].error <= within)
+            x = g->vertices[x].child;
+        differ += sw_seam_fronts_ancestor_within(&f, v, within) != x;
     }
     for (uint32_t l = 0; l < g->loop_count; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++)

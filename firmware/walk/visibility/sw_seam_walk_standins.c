@@ -9,15 +9,6 @@
 #include "sw_seam_surface.h"
 #include "sw_seam_walk_internal.h"
 
-/* Original o's highest ancestor whose error is within. */
-static uint32_t ancestor_within(const sw_seam_fronts *f, uint32_t o, float within)
-{
-    uint32_t x = o, c;
-    while ((c = sw_seam_fronts_child(f, x)) != SW_SEAM_NONE && sw_seam_fronts_error(f, c) <= within)
-        x = c;
-    return x;
-}
-
 /* The vertex original o shows in a stand-in for s: where o is sewn into a
  * loop of another surface drawn this frame from a mesh of the walk's own
  * (not a stand-in), the one that mesh shows (drawn, by leaf position);
@@ -43,7 +34,7 @@ static uint32_t standin_vertex(const sw_seam_walk *w, uint32_t o, uint32_t s,
         within = fminf(within, w->standin_border[t]);
     }
     within = isfinite(within) ? (float)SW_SEAM_SHARE * within : 0.0f;
-    return ancestor_within(&w->fronts, o, within);
+    return sw_seam_fronts_ancestor_within(&w->fronts, o, within);
 }
 
 /* What s's stand-in's loops may show: its level's error or, coarser, the
@@ -74,8 +65,8 @@ static int keeps_outer_loops(const sw_seam_walk *w, uint32_t s, float border)
             continue;
         uint32_t seen[3], distinct = 0;
         for (uint32_t k = 0; k < g->loops[l].slot_count && distinct < 3; k++) {
-            uint32_t x = ancestor_within(&w->fronts, sw_seam_fronts_slot_vertex(&w->fronts, l, k),
-                                         within);
+            uint32_t x = sw_seam_fronts_ancestor_within(
+                &w->fronts, sw_seam_fronts_slot_vertex(&w->fronts, l, k), within);
             uint32_t i = 0;
             while (i < distinct && seen[i] != x)
                 i++;
