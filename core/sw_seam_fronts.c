@@ -481,6 +481,21 @@ uint32_t sw_seam_fronts_ancestor_within(const sw_seam_fronts *f, uint32_t v, flo
     return sw_seam_fronts_placed(f, k, x);
 }
 
+float sw_seam_fronts_loop_error(const sw_seam_fronts *f, uint32_t s)
+{
+    uint32_t k = sw_seam_fronts_instance_of(f, s);
+    const sw_seam_graph *g = f->instances ? &f->parts[f->part_of[k]].graph : &f->placed;
+    uint32_t local = f->instances ? s - f->first_surface[k] : s;
+    float worst = 0;
+    for (uint32_t l = g->surface_loops[local]; l < g->surface_loops[local + 1]; l++)
+        for (uint32_t i = 0; i < g->loops[l].slot_count; i++) {
+            float e = g->vertices[g->slots[g->loops[l].first_slot + i].vertex].error;
+            e = f->instances ? (float)(e * f->scale[k]) : e;
+            worst = e > worst ? e : worst;
+        }
+    return worst;
+}
+
 uint32_t sw_seam_fronts_slot_vertex(const sw_seam_fronts *f, uint32_t l, uint32_t i)
 {
     const sw_seam_loop *loop = &f->placed.loops[l];

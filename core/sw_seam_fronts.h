@@ -145,6 +145,10 @@ uint32_t sw_seam_fronts_child(const sw_seam_fronts *f, uint32_t v);
  * would find step by step, with one look for v's instance. */
 uint32_t sw_seam_fronts_ancestor_within(const sw_seam_fronts *f, uint32_t v, float within);
 
+/* The largest error of the originals placed surface s's loops start at
+ * (placed: times the instance's scale), 0 for none. */
+float sw_seam_fronts_loop_error(const sw_seam_fronts *f, uint32_t s);
+
 /* The original sewn at slot k (0 .. slot_count - 1) of placed loop l. */
 uint32_t sw_seam_fronts_slot_vertex(const sw_seam_fronts *f, uint32_t l, uint32_t k);
 

@@ -346,14 +346,21 @@ static uint64_t fronts_against_expanded(const sw_pack *pack, int frames, int per
         differ += sw_seam_fronts_child(&f, v) != g->vertices[v].child;
         float within = g->vertices[v].error * 1.5f + 1e-3f;
         uint32_t x = v;
-        while (g->vertices[x].child != SW_SEAM_NONE && g->vertices[g->vertices[x].child].error <= within)
+        while (g->vertices[x].child != SW_SEAM_NONE &&
+               g->vertices[g->vertices[x].child].error <= within)
             x = g->vertices[x].child;
         differ += sw_seam_fronts_ancestor_within(&f, v, within) != x;
     }
-    for (uint32_t l = 0; l < g->loop_count; l++)
-        for (uint32_t k = 0; k < g->loops[l].slot_count; k++)
-            differ += sw_seam_fronts_slot_vertex(&f, l, k) !=
-                      g->slots[g->loops[l].first_slot + k].vertex;
+    for (uint32_t s = 0; s < g->surface_count; s++) {
+        float worst = 0;
+        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
+            for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
+                uint32_t o = g->slots[g->loops[l].first_slot + k].vertex;
+                differ += sw_seam_fronts_slot_vertex(&f, l, k) != o;
+                worst = fmaxf(worst, g->vertices[o].error);
+            }
+        differ += sw_seam_fronts_loop_error(&f, s) != worst;
+    }
     SW_CHECK(sw_seam_select_init_checked(&sel, g, &sa, NULL) == SW_OK);
     float *bound = malloc((g->surface_count + 1) * sizeof *bound), top = 0;
     for (uint32_t v = 0; v < g->vertex_count; v++)

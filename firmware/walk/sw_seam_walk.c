@@ -86,15 +86,8 @@ static sw_status make_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
  * at, no finer than the walk's. */
 static void set_floors(sw_seam_walk *w)
 {
-    const sw_seam_graph *g = &w->pack->seam;
-    for (uint32_t s = 0; s < g->surface_count; s++) {
-        float f = w->bound_floor;
-        for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
-            for (uint32_t k = 0; k < g->loops[l].slot_count; k++)
-                f = fmaxf(f, sw_seam_fronts_error(&w->fronts,
-                                                  sw_seam_fronts_slot_vertex(&w->fronts, l, k)));
-        w->floor[s] = f;
-    }
+    for (uint32_t s = 0; s < w->pack->seam.surface_count; s++)
+        w->floor[s] = fmaxf(w->bound_floor, sw_seam_fronts_loop_error(&w->fronts, s));
 }
 
 sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, const sw_pack *stored,

@@ -265,8 +265,8 @@ static double joined_over_bound(const sw_seam_walk *w, uint32_t s)
     for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
         for (uint32_t k = 0; k < g->loops[l].slot_count; k++) {
             uint32_t o = sw_seam_fronts_slot_vertex(&w->fronts, l, k);
-            worst = fmax(worst, sw_seam_fronts_error(&w->fronts, sw_seam_fronts_shown(
-                                                                     &w->fronts, w->mixed_shown, o)));
+            uint32_t x = sw_seam_fronts_shown(&w->fronts, w->mixed_shown, o);
+            worst = fmax(worst, sw_seam_fronts_error(&w->fronts, x));
         }
     return worst > within ? worst / within : 0.0;
 }
@@ -287,7 +287,8 @@ int sw_seam_walk_stand_in(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan, sw_se
     /* Still no room: a coarser level, inside the same announced border (the
      * strips join the loops its neighbours were joined to), drawn coarser
      * than its target (behind, measured apart) rather than not at all. */
-    for (uint32_t k = level; !made && (k = sw_seam_standin_coarser(w->pack, s, k)) != UINT32_MAX;) {
+    for (uint32_t k = sw_seam_standin_coarser(w->pack, s, level); !made && k != UINT32_MAX;
+         k = sw_seam_standin_coarser(w->pack, s, k)) {
         made = sw_seam_standin_make(w->standins, &w->fronts, front, s, k, &w->cache,
                                     sw_seam_workers_place, w->workers, e);
         frame->standins_coarser += (uint32_t)made;
