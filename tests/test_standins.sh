@@ -25,6 +25,9 @@
 #     the walk's own meshes vertex for vertex;
 #   - the mutant --static-levels 0 (no stand-ins) must show holes in some
 #     frame, or the comparison could not see a surface left out.
+# And on the showroom's pack itself, the walk's seam fronts (one per
+# instance over its prototype's graph, core/sw_seam_fronts.h) against one
+# select over the fully expanded scene (test_pack_instances PACK).
 # Exit 77 when the models are absent (CTest registers it only where they are).
 set -uo pipefail
 build=$1 src=$2 models=$3 patches=${4:-2000}
@@ -48,6 +51,12 @@ box=$(python3 -c 'import json,sys; i=json.load(open(sys.argv[1])); b=i["box"];
 print(" ".join("%.6f" % v for v in b["min"] + b["max"]), i["up_axis"].lstrip("+-"))' \
   "$work/info.json") || fail "box"
 read -r x0 y0 z0 x1 y1 z1 up <<< "$box"
+"$build/tests/test_pack_instances" "$work/room.swpack" > "$work/fronts.log" 2>&1 ||
+  fail "the seam fronts against the expanded scene: $(tail -n 3 "$work/fronts.log")"
+fronts=$(sed -n 's/^\([0-9]*\) fronts; 0 differences$/\1/p' "$work/fronts.log")
+[ "${fronts:-0}" -gt 1 ] ||
+  fail "the room took one front: no front per instance was tested ($(tail -n 1 "$work/fronts.log"))"
+echo "seam fronts: $(tail -n 1 "$work/fronts.log")"
 python3 "$src/tests/bench/walk_path.py" "$work/room.path" --box $x0 $y0 $z0 $x1 $y1 $z1 \
   --up "$up" --seconds 40 || fail "walk_path"
 
