@@ -7,7 +7,9 @@
 # the cup twice and a generated vase twice. Checks:
 #   - the placed pack stores 3 prototypes for 9 placements and is smaller
 #     than the copies' (9 prototypes), and both place the same 9 parts with
-#     the same boxes (info);
+#     the same boxes (info); the placed one's walk keeps a seam front per
+#     instance over the prototypes' graphs (fewer bytes than one over the
+#     placed graph), the copies' one front;
 #   - the walk of each, every mesh made in its frame (--workers 0, so each
 #     frame is a function of the pack alone), over an orbit of 48 frames
 #     at 320x240, every 6th frame pictured, as built and with every
@@ -54,7 +56,13 @@ assert p["total_bytes"] * 2 < c["total_bytes"], (p["total_bytes"], c["total_byte
 assert p["placed"] == c["placed"], (p["placed"], c["placed"])
 for a, b in zip(p["parts"], c["parts"]):
     assert a["name"] == b["name"] and a["box"] == b["box"], (a, b)
-print("placed: %d bytes, 3 prototypes; copies: %d bytes, 9" % (p["total_bytes"], c["total_bytes"]))
+# The walk's seam fronts: per instance where the parts repeat (fewer bytes
+# than one over the placed graph), one where nothing repeats.
+f, g = p["seam_fronts"], c["seam_fronts"]
+assert f["per_instance_bytes"] < f["one_bytes"], f
+assert g["per_instance_bytes"] > g["one_bytes"] and g["one_bytes"] == f["one_bytes"], (f, g)
+print("placed: %d bytes, 3 prototypes; copies: %d bytes, 9; seam fronts %d bytes, copies' %d"
+      % (p["total_bytes"], c["total_bytes"], f["per_instance_bytes"], g["one_bytes"]))
 EOF
 # walk NAME PACK ARGS...: the orbit into NAME/, NAME.stats.json
 walk() {

@@ -11,6 +11,7 @@
 
 #include "sw_pack_info.h"
 #include "sw_pack_instances.h"
+#include "sw_seam_fronts.h"
 
 /* Control points first .. first + n moved by t, into the box lo .. hi. */
 static void add_placed_points(const sw_pack *pack, const float *t, uint32_t first, uint32_t n,
@@ -55,6 +56,23 @@ static uint32_t *count_uses(const sw_pack *pack)
     return uses;
 }
 
+/* The walk's seam front as it will take it (sw_seam_fronts.h): a front
+ * per instance over the prototypes' graphs, or one over the placed graph
+ * where that takes fewer bytes; both sizes, so the sharing shows. */
+static void print_fronts(FILE *out, const sw_pack *pack)
+{
+    size_t each = sw_seam_fronts_layout_bytes(pack->prototypes, pack->prototype_count,
+                                              pack->instances, pack->instance_count, 1);
+    size_t one = sw_seam_fronts_layout_bytes(pack->prototypes, pack->prototype_count,
+                                             pack->instances, pack->instance_count, 0);
+    fprintf(out, "  %-16s %s: %.1f MiB (%s %.1f MiB)\n", "seam fronts",
+            each < one ? "one per instance over its prototype's graph"
+                       : "one over the placed graph",
+            (each < one ? each : one) / 1048576.0,
+            each < one ? "one over the placed graph would take" : "one per instance would take",
+            (each < one ? one : each) / 1048576.0);
+}
+
 void sw_pack_print_instances_text(FILE *out, const sw_pack *pack)
 {
     if (!pack->instances)
@@ -68,6 +86,8 @@ void sw_pack_print_instances_text(FILE *out, const sw_pack *pack)
     fprintf(out, "  %-16s %.0f bytes per placed part, %.1f per placed patch\n", "",
             (double)pack->header->total_size / pack->instance_count,
             c[SW_SPACE_PATCHES] ? (double)pack->header->total_size / c[SW_SPACE_PATCHES] : 0.0);
+    if (pack->seam_header)
+        print_fronts(out, pack);
     uint32_t *uses = count_uses(pack);
     for (uint32_t k = 0; uses && k < pack->prototype_count && k < 12; k++) {
         const sw_pack_prototype *p = &pack->prototypes[k];
@@ -103,6 +123,12 @@ void sw_pack_print_instances_json(FILE *out, const sw_pack *pack)
             c[SW_SPACE_PATCHES], c[SW_SPACE_SURFACES],
             c[SW_SPACE_SEAM_ORIGINALS] + c[SW_SPACE_SEAM_COLLAPSES], c[SW_SPACE_LEVEL_VERTICES],
             c[SW_SPACE_PART_LEVEL_VERTICES]);
+    if (pack->seam_header)
+        fprintf(out, "  \"seam_fronts\": {\"per_instance_bytes\": %zu, \"one_bytes\": %zu},\n",
+                sw_seam_fronts_layout_bytes(pack->prototypes, pack->prototype_count,
+                                            pack->instances, pack->instance_count, 1),
+                sw_seam_fronts_layout_bytes(pack->prototypes, pack->prototype_count,
+                                            pack->instances, pack->instance_count, 0));
     uint32_t *uses = count_uses(pack);
     fprintf(out, "  \"prototypes\": [");
     for (uint32_t k = 0; uses && k < pack->prototype_count; k++) {
