@@ -78,9 +78,8 @@ int sw_buddy_find_region(const sw_buddy *b, uint32_t order, sw_buddy_freeable_fn
 /* The owners of the used blocks in the region of 2^order units from first
  * (one sw_buddy_find_region gave: its blocks lie inside it, or one block
  * covers it), at most cap of them, into owners; returns how many. So the
- * caller frees what the search chose without looking through every
- * owner it has: at 4,000,000 patches that look, a pass over 1.7 million
- * surfaces for each stand-in refused, took most of a minute a frame. */
+ * caller frees what the search chose without a pass over every owner it
+ * has, which a view larger than the cache asks for many times a frame. */
 uint32_t sw_buddy_region_owners(const sw_buddy *b, uint32_t first, uint32_t order,
                                 uint32_t *owners, uint32_t cap);
 

@@ -324,7 +324,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, const sw_pack 
  * x as many indices (never more than they have), so every share of them
  * the walk keeps or reads is of that size. Before the workers start.
  * (Holding the rest in blocks no surface owned left the shares of the
- * whole: the pressure and the room kept saw a cache 25 times as large.) */
+ * whole pool, which the pressure and the room kept read.) */
 void sw_seam_walk_shrink_cache(sw_seam_walk *w, uint32_t vertices);
 
 /* Makes every surface's normal cone (its scratch from arena, given back:

@@ -198,13 +198,12 @@ void sw_seam_walk_pressure(sw_seam_walk *w, sw_seam_frame *frame);
  * the pools' blocks); when that is more than half a pool, the bound is
  * raised by the share over 3/8 (sqrt 2 to 4) and 1 returned: the caller
  * selects again. Half: while the workers make a surface's mesh its
- * stand-in is drawn, so the cache holds the view about twice over (at 7/8
- * a cache of a third of the view still left 20-120 surfaces a frame
- * undrawn; at half, 2-3). So the first frame of a view larger than the
- * cache (4,000,000 patches: 143,000 surfaces in view for a cache that
- * holds 30,000 stand-ins) is planned at a bound it can draw, where the
- * pressure above rose only after frames with holes. With stand-ins only
- * (what the walk draws while meshes are made), not with sync_work. */
+ * stand-in is drawn, so the cache holds the view about twice over (with
+ * less, a small cache's walk still left surfaces undrawn each time the
+ * eye turned). So the first frame of a view larger than the cache is
+ * planned at a bound it can draw, where the pressure above rose only
+ * after frames with holes. With stand-ins only (what the walk draws while
+ * meshes are made), not with sync_work. */
 int sw_seam_walk_pressure_ahead(sw_seam_walk *w);
 
 /* Surface s's cache entry (READY) into the plan's uploads. */

@@ -210,9 +210,9 @@ static uint32_t *standin_front(sw_seam_walk *w, uint32_t s)
 }
 
 /* Region searches for stand-ins a frame: each looks through a pool's
- * blocks, and a view larger than the cache refuses tens of thousands of
- * stand-ins a frame (4,000,000 patches: minutes a frame when each
- * searched). The rounds below go on. */
+ * blocks, and a view larger than the cache refuses stand-ins by the
+ * thousand, so searching for each held the frame up for as long as the
+ * view stayed too large. The rounds below go on. */
 #define SW_STANDIN_SEARCHES 16u
 
 /* No room for a stand-in. First the region that gives the block refused
