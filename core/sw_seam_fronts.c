@@ -257,6 +257,11 @@ sw_status sw_seam_fronts_init_layout(sw_seam_fronts *f, const sw_pack *pack,
     if (each && !pack->instances)
         return sw_error_set(err, SW_ERR_ARG, "seam fronts: a front per instance of a pack "
                             "without instances");
+    /* One front reads the placed graph's arrays, which the runtime's
+     * expansion leaves out exactly when the fronts are per instance. */
+    if (!each && placed->vertex_count > 0 && !placed->vertices)
+        return sw_error_set(err, SW_ERR_ARG, "seam fronts: one front over a placed graph "
+                            "without its vertices");
     f->placed = *placed;
     f->part_count = each ? pack->prototype_count : 1;
     f->count = each ? pack->instance_count : 1;
@@ -456,14 +461,6 @@ float sw_seam_fronts_error(const sw_seam_fronts *f, uint32_t v)
     uint32_t k;
     float e = local_vertex(f, v, &k)->error;
     return (float)(e * f->scale[k]);
-}
-
-uint32_t sw_seam_fronts_child(const sw_seam_fronts *f, uint32_t v)
-{
-    if (!f->instances)
-        return f->placed.vertices[v].child;
-    uint32_t k, child = local_vertex(f, v, &k)->child;
-    return child == SW_SEAM_NONE ? child : sw_seam_fronts_placed(f, k, child);
 }
 
 uint32_t sw_seam_fronts_ancestor_within(const sw_seam_fronts *f, uint32_t v, float within)

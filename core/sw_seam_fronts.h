@@ -133,16 +133,14 @@ uint32_t sw_seam_fronts_shown(const sw_seam_fronts *f, const uint32_t *shown, ui
 
 /* Placed vertex v as the placed scene has it, whether or not its arrays
  * hold it (sw_pack_expand_shared leaves them to the fronts): its position
- * (the prototype's placed by the instance, sw_instance_place), its error
- * (the prototype's times the instance's scale) and its child (placed;
- * SW_SEAM_NONE for a root). The same floats as the expansion's copy. */
+ * (the prototype's placed by the instance, sw_instance_place) and its
+ * error (the prototype's times the instance's scale). The same floats as
+ * the expansion's copy. */
 void sw_seam_fronts_position(const sw_seam_fronts *f, uint32_t v, float out[3]);
 float sw_seam_fronts_error(const sw_seam_fronts *f, uint32_t v);
-uint32_t sw_seam_fronts_child(const sw_seam_fronts *f, uint32_t v);
 
 /* Placed vertex v's highest ancestor whose error is within (v itself
- * when its child's is not), placed: what sw_seam_fronts_child and _error
- * would find step by step, with one look for v's instance. */
+ * when its child's is not), placed, with one look for v's instance. */
 uint32_t sw_seam_fronts_ancestor_within(const sw_seam_fronts *f, uint32_t v, float within);
 
 /* The largest error of the originals placed surface s's loops start at

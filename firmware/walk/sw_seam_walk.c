@@ -141,8 +141,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, const sw_pack 
                               err);
 }
 
-/* Pool b held, largest blocks first, until at most keep units are free. */
-/* units of pool b, at most what it has. */
+/* Pool b cut to units, at least 1 and at most what it has. */
 static void cut(sw_buddy *b, uint64_t units)
 {
     sw_buddy_shrink(b, (uint32_t)(units == 0 ? 1 : units < b->units ? units : b->units));
