@@ -83,10 +83,7 @@ int sw_buddy_alloc(sw_buddy *b, uint32_t count, uint32_t *first)
 {
     if (count == 0 || count > b->units)
         return 0;
-    uint32_t want = 0;
-    while ((1ull << want) < count)
-        want++;
-    uint32_t k = want;
+    uint32_t want = sw_buddy_order_of(count), k = want;
     while (k <= SW_BUDDY_MAX_ORDER && b->head[k] == NONE)
         k++;
     if (k > SW_BUDDY_MAX_ORDER)

@@ -40,6 +40,16 @@ sw_status sw_buddy_init(sw_buddy *b, uint32_t units, sw_arena *arena, sw_error *
  * has (nothing changes). */
 int sw_buddy_shrink(sw_buddy *b, uint32_t units);
 
+/* The order of the block a request of count units gets: the smallest k
+ * with 2^k >= count (0 for 0 or 1). */
+static inline uint32_t sw_buddy_order_of(uint64_t count)
+{
+    uint32_t k = 0;
+    while ((1ull << k) < count)
+        k++;
+    return k;
+}
+
 /* A block of at least count units (count >= 1): 1 and *first set, or 0 when
  * no free block is large enough (nothing changes). */
 int sw_buddy_alloc(sw_buddy *b, uint32_t count, uint32_t *first);

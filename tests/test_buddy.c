@@ -52,6 +52,8 @@ static void test_odd_range_and_bad_input(void)
     sw_arena_init(&a, block, 16);
     SW_CHECK(sw_buddy_init(&b, 1000, &a, NULL) == SW_ERR_NO_MEMORY);
     SW_CHECK(sw_buddy_init(&b, 0, &a, NULL) == SW_ERR_ARG);
+    SW_CHECK(sw_buddy_order_of(0) == 0 && sw_buddy_order_of(1) == 0 && sw_buddy_order_of(2) == 1);
+    SW_CHECK(sw_buddy_order_of(3) == 2 && sw_buddy_order_of(64) == 6 && sw_buddy_order_of(65) == 7);
 }
 
 /* A pool cut to fewer units hands out only those, and all of them; it is

@@ -169,13 +169,10 @@ void sw_seam_walk_pressure(sw_seam_walk *w, sw_seam_frame *frame)
 }
 
 /* Units of a block holding count items of unit each, as the buddy hands
- * it out (a power of two). */
+ * it out. */
 static uint64_t block_units(uint64_t count, uint32_t unit)
 {
-    uint64_t units = (count + unit - 1) / unit, block = 1;
-    while (block < units)
-        block *= 2;
-    return block;
+    return 1ull << sw_buddy_order_of((count + unit - 1) / unit);
 }
 
 int sw_seam_walk_pressure_ahead(sw_seam_walk *w)

@@ -24,14 +24,6 @@ static uint64_t now_ns(void)
     return (uint64_t)t.tv_sec * 1000000000ull + (uint64_t)t.tv_nsec;
 }
 
-static uint32_t order_of(uint32_t units)
-{
-    uint32_t k = 0;
-    while ((1ull << k) < units)
-        k++;
-    return k;
-}
-
 /* Under alloc_lock: retired blocks whose frames have finished go back. */
 static void take_retired(sw_seam_workers *p)
 {
@@ -46,7 +38,7 @@ static void take_retired(sw_seam_workers *p)
  * sw_seam_workers_asked. */
 static void note_asked(sw_seam_workers *p, int pool, uint32_t units, int refused)
 {
-    uint32_t k = order_of(units);
+    uint32_t k = sw_buddy_order_of(units);
     p->asked_order[pool] = k > p->asked_order[pool] ? k : p->asked_order[pool];
     if (refused)
         p->refused_order[pool] = (int)k;
