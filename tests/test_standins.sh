@@ -25,9 +25,9 @@
 #     the walk's own meshes vertex for vertex;
 #   - the mutant --static-levels 0 (no stand-ins) must show holes in some
 #     frame, or the comparison could not see a surface left out.
-# And on the showroom's pack itself, the walk's seam fronts (one per
-# instance over its prototype's graph, core/sw_seam_fronts.h) against one
-# select over the fully expanded scene (test_pack_instances PACK).
+# And on the showroom's pack itself, the seam fronts (one per instance
+# over its prototype's graph, core/sw_seam_fronts.h) against one select
+# over the fully expanded scene (test_pack_instances PACK --each).
 # Exit 77 when the models are absent (CTest registers it only where they are).
 set -uo pipefail
 build=$1 src=$2 models=$3 patches=${4:-2000}
@@ -51,12 +51,23 @@ box=$(python3 -c 'import json,sys; i=json.load(open(sys.argv[1])); b=i["box"];
 print(" ".join("%.6f" % v for v in b["min"] + b["max"]), i["up_axis"].lstrip("+-"))' \
   "$work/info.json") || fail "box"
 read -r x0 y0 z0 x1 y1 z1 up <<< "$box"
-"$build/tests/test_pack_instances" "$work/room.swpack" > "$work/fronts.log" 2>&1 ||
+"$build/tests/test_pack_instances" "$work/room.swpack" --each > "$work/fronts.log" 2>&1 ||
   fail "the seam fronts against the expanded scene: $(tail -n 3 "$work/fronts.log")"
 fronts=$(sed -n 's/^\([0-9]*\) fronts; 0 differences$/\1/p' "$work/fronts.log")
 [ "${fronts:-0}" -gt 1 ] ||
-  fail "the room took one front: no front per instance was tested ($(tail -n 1 "$work/fronts.log"))"
+  fail "no front per instance was tested ($(tail -n 1 "$work/fronts.log"))"
 echo "seam fronts: $(tail -n 1 "$work/fronts.log")"
+# Which the walk takes (info's seam_fronts): one per instance on the
+# 2,000-patch room, so its walk below draws through them; the sanitizers'
+# 400-patch room repeats too little and takes one front (instances_walk
+# walks fronts per instance there).
+layout=$(python3 -c 'import json,sys; f=json.load(open(sys.argv[1]))["seam_fronts"];
+print("each" if f["per_instance_bytes"] < f["one_bytes"] else "one")' "$work/info.json") ||
+  fail "info's seam_fronts"
+echo "the walk's seam fronts ($patches patches): $([ "$layout" = each ] &&
+  echo one per instance || echo one over the placed graph)"
+[ "$patches" -lt 2000 ] || [ "$layout" = each ] ||
+  fail "the $patches-patch room's walk takes one front: its walk tests no front per instance"
 python3 "$src/tests/bench/walk_path.py" "$work/room.path" --box $x0 $y0 $z0 $x1 $y1 $z1 \
   --up "$up" --seconds 40 || fail "walk_path"
 
