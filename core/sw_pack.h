@@ -318,6 +318,10 @@ typedef struct sw_pack {
                                                     frame: a surface's or piece's are
                                                     placed by its part's transform
                                                     (sw_pack_expand_shared) */
+    int control_local;                           /* 1: control is the prototypes'
+                                                    points, in their frames: a patch's
+                                                    are placed by its part's transform
+                                                    (sw_pack_patch_control) */
     /* The Seam Graph: views into the SEAM_* sections, every pointer NULL and
      * every count 0 when the pack has none. */
     const sw_pack_seam *seam_header;             /* NULL when absent */

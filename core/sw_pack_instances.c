@@ -52,11 +52,13 @@ void sw_pack_placed_counts(const sw_pack_prototype *prototypes, const sw_pack_in
 }
 
 /* Spaces the placed scene shares with the prototypes (parametric or local
- * to a level; for the runtime also the levels' vertices): their indices
- * are left as they are. */
+ * to a level; for the runtime also the levels' vertices and the patches'
+ * control points, placed as they are read): their indices are left as
+ * they are. */
 static int shared_space(int s, int runtime)
 {
-    if (runtime && (s == SW_SPACE_LEVEL_VERTICES || s == SW_SPACE_PART_LEVEL_VERTICES))
+    if (runtime && (s == SW_SPACE_LEVEL_VERTICES || s == SW_SPACE_PART_LEVEL_VERTICES ||
+                    s == SW_SPACE_CONTROL))
         return 1;
     return s == SW_SPACE_TRIM_LOOPS || s == SW_SPACE_TRIM_CURVES || s == SW_SPACE_TRIM_DATA ||
            s == SW_SPACE_TRIM_MASKS || s == SW_SPACE_LEVEL_INDICES || s == SW_SPACE_LEVEL_CHAINS ||
@@ -93,10 +95,12 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int runtime, uint64_t 
         sizeof(sw_level_vertex) };
     for (int a = 0; a < A_COUNT; a++)
         n[a] = counts[a], size[a] = bytes[a];
-    /* The runtime's: the levels' vertices shared, and what the walk never
-     * reads (the seam edges, the patches' adjacency) left out. */
+    /* The runtime's: the levels' vertices and the control points shared,
+     * and what the walk never reads (the seam edges, the patches'
+     * adjacency) left out. */
     if (runtime)
-        n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0, n[A_EDGES] = 0, n[A_ADJACENCY] = 0;
+        n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0, n[A_CONTROL] = 0, n[A_EDGES] = 0,
+        n[A_ADJACENCY] = 0;
 }
 
 /* The seam arrays a placed scene leaves to the walk's fronts
@@ -167,7 +171,7 @@ uint64_t sw_pack_runtime_bytes_of(const sw_pack *pack)
         return sw_pack_runtime_bytes(pack->meta->patch_count,
                                      g ? sw_walk_arena_bytes(g, pack->surfaces) : 0);
     const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
-                                    pack->instance_count };
+                                    pack->instance_count, pack->patches };
     return sw_pack_instanced_runtime_bytes(g, pack->surfaces, &placed);
 }
 
@@ -185,7 +189,7 @@ void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
     out->patch_state = counts[SW_SPACE_PATCHES] * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
     const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
-                                    pack->instance_count };
+                                    pack->instance_count, pack->patches };
     out->placed = sw_pack_expand_runtime_bytes(g != NULL, &placed);
     if (g)
         sw_walk_pools_placed(g, pack->surfaces, &placed, out->walk);
@@ -252,6 +256,20 @@ void sw_pack_level_vertices(const sw_pack *pack, uint32_t s, const sw_level *rec
     sw_pack_move_level_vertices(&place, src, rec->vertex_count, out);
 }
 
+const float *sw_pack_patch_control(const sw_pack *pack, uint32_t i, float *room)
+{
+    const sw_pack_patch *p = &pack->patches[i];
+    const float *src = pack->control + 4 * (size_t)p->first_control;
+    if (!pack->control_local)
+        return src;
+    const float *t = pack->part_transforms + 16 * (size_t)p->part;
+    if (!moves(t))
+        return src;
+    const sw_pack_move place = { .transform = t, .scale = sw_instance_scale(t) };
+    sw_pack_move_control(&place, src, (uint32_t)(p->degree_u + 1) * (p->degree_v + 1), room);
+    return room;
+}
+
 /* The move of prototype p to where instance inst's copy goes. */
 static sw_pack_move move_for(const sw_pack *pack, const placed *d, const sw_pack_prototype *p,
                              const sw_pack_instance *inst)
@@ -298,11 +316,13 @@ static void place_model(const sw_pack *pack, placed *d, const sw_pack_prototype 
     sw_pack_move_parts(m, &pack->parts[p->first[SW_SPACE_PARTS]], parts, to);
     name_parts(inst, &pack->parts[p->first[SW_SPACE_PARTS]], parts, to,
                (float *)d->a[A_TRANSFORMS] + 16 * d->at[SW_SPACE_PARTS]);
-    sw_pack_move_control(m, &pack->control[4 * (size_t)p->first[SW_SPACE_CONTROL]],
-                         p->count[SW_SPACE_CONTROL],
-                         (float *)d->a[A_CONTROL] + 4 * d->at[SW_SPACE_CONTROL]);
+    if (!d->runtime)
+        sw_pack_move_control(m, &pack->control[4 * (size_t)p->first[SW_SPACE_CONTROL]],
+                             p->count[SW_SPACE_CONTROL],
+                             (float *)d->a[A_CONTROL] + 4 * d->at[SW_SPACE_CONTROL]);
+    /* The runtime reads no second-derivative bound: the boxes alone. */
     sw_pack_move_patches(m, &pack->patches[p->first[SW_SPACE_PATCHES]],
-                         p->count[SW_SPACE_PATCHES], d->a[A_CONTROL],
+                         p->count[SW_SPACE_PATCHES], pack->control, !d->runtime,
                          AT(d, A_PATCHES, sw_pack_patch, SW_SPACE_PATCHES));
     if (pack->adjacency && d->n[A_ADJACENCY])
         sw_pack_move_adjacency(m, pack->adjacency + p->first[SW_SPACE_ADJACENCY],
@@ -406,7 +426,7 @@ static void fill_headers(const sw_pack *pack, placed *d, float tolerance)
     *meta = *pack->meta;
     meta->part_count = (uint32_t)d->n[A_PARTS];
     meta->patch_count = (uint32_t)d->n[A_PATCHES];
-    meta->control_count = (uint32_t)(d->n[A_CONTROL]);
+    meta->control_count = d->runtime ? pack->meta->control_count : (uint32_t)d->n[A_CONTROL];
     meta->adjacency_count = (uint32_t)d->n[A_ADJACENCY];
     sw_pack_patches_box(d->a[A_PATCHES], 0, meta->patch_count, meta->box_min, meta->box_max);
     if (pack->seam_header) {
@@ -443,7 +463,8 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
     out->part_transforms = d->a[A_TRANSFORMS];
     out->level_vertices_local = d->runtime;
     out->patches = d->a[A_PATCHES];
-    out->control = d->a[A_CONTROL];
+    out->control = d->runtime ? pack->control : d->a[A_CONTROL];
+    out->control_local = d->runtime;
     out->adjacency = d->n[A_ADJACENCY] ? d->a[A_ADJACENCY] : NULL;
     uint32_t surfaces = (uint32_t)d->n[A_SURFACES];
     if (pack->surfaces) {
@@ -506,7 +527,7 @@ static sw_status expand(const sw_pack *pack, int runtime, sw_arena *arena, sw_pa
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
     const sw_walk_placed wp = { pack->prototypes, pack->prototype_count, pack->instances,
-                                pack->instance_count };
+                                pack->instance_count, pack->patches };
     placed d = { .runtime = runtime,
                  .seam_left = runtime && seams_left(pack->seam_header != NULL, &wp) };
     sw_status st = take_arrays(&d, counts, arena, err);

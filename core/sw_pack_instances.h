@@ -99,7 +99,12 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
  * places a surface's or a piece's with its part's transform
  * (out->part_transforms), as the stand-ins are made
  * (firmware/walk/visibility/sw_seam_standin.c) and the part levels drawn
- * (the GL thread's model matrix). What the walk never reads is left out:
+ * (the GL thread's model matrix). The patches' control points are shared
+ * so too (out->control_local = 1, out->control the pack's own CONTROL,
+ * which each patch's first_control indexes): whoever reads them places a
+ * patch's with sw_pack_patch_control; the patches' boxes are the placed
+ * points' and their second-derivative bounds INFINITY (the walk takes
+ * none). What the walk never reads is left out:
  * the seam edges and the patches' adjacency (their counts 0, their
  * pointers NULL). A pack without instances is copied as it is, its
  * vertices placed already. */
@@ -113,6 +118,14 @@ sw_status sw_pack_expand_shared(const sw_pack *pack, sw_arena *arena, sw_pack *o
  * as stored. */
 void sw_pack_level_vertices(const sw_pack *pack, uint32_t s, const sw_level *rec,
                             sw_level_vertex *out);
+
+/* The control points of patch i as drawn ((degree_u + 1) (degree_v + 1)
+ * of them, 4 floats each): where pack shares them with its prototype
+ * (control_local), placed by the patch's part's transform into room
+ * (which must hold them; SW_BEZIER_MAX_ORDER^2 points at most) with the
+ * mover the expansion uses, so the same floats as sw_pack_expand's copy;
+ * else the pack's own (room untouched, may be NULL). */
+const float *sw_pack_patch_control(const sw_pack *pack, uint32_t i, float *room);
 
 /* The name of a prototype's part placed by an instance: the instance's
  * name, followed by "/" and the part's when the part has one (a product of

@@ -70,23 +70,26 @@ static float float_up(double d)
     return (double)f < d ? nextafterf(f, INFINITY) : f;
 }
 
-/* The box and second-derivative bounds of a patch from its (moved) control
- * points, as the pack writer makes them for the points it stores. */
-static void remake_bounds(sw_pack_patch *p, const float *control)
+/* The box of a patch, and with bounds its second-derivative bounds, from
+ * its source points moved (sw_pack_move_control's floats), as the pack
+ * writer makes them for the points it stores. */
+static void remake_bounds(const sw_pack_move *m, sw_pack_patch *p, const float *src, int bounds)
 {
     enum { MAX = SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER };
+    float moved[4 * MAX];
     double ctrl[4 * MAX];
     size_t points = (size_t)(p->degree_u + 1) * (p->degree_v + 1);
+    sw_pack_move_control(m, src, (uint32_t)points, moved);
     for (size_t k = 0; k < 4 * points; k++)
-        ctrl[k] = control[4 * (size_t)p->first_control + k];
+        ctrl[k] = moved[k];
     sw_bezier_patch view = { p->degree_u, p->degree_v, (p->flags & SW_PATCH_RATIONAL) != 0,
                              ctrl };
     sw_box box = sw_bezier_control_box(&view);
     const double lo[3] = { box.min.x, box.min.y, box.min.z };
     const double hi[3] = { box.max.x, box.max.y, box.max.z };
     sw_deriv_bounds d2;
-    int bounded = sw_bezier_second_deriv_bounds(&view, &d2, NULL) == SW_OK;
-    const double bound[3] = { d2.uu, d2.uv, d2.vv };
+    int bounded = bounds && sw_bezier_second_deriv_bounds(&view, &d2, NULL) == SW_OK;
+    const double bound[3] = { bounded ? d2.uu : 0, bounded ? d2.uv : 0, bounded ? d2.vv : 0 };
     for (int k = 0; k < 3; k++) {
         p->box_min[k] = (float)lo[k];
         p->box_max[k] = (float)hi[k];
@@ -95,14 +98,14 @@ static void remake_bounds(sw_pack_patch *p, const float *control)
 }
 
 void sw_pack_move_patches(const sw_pack_move *m, const sw_pack_patch *src, uint32_t n,
-                          const float *dst_control, sw_pack_patch *dst)
+                          const float *src_control, int bounds, sw_pack_patch *dst)
 {
     for (uint32_t i = 0; i < n; i++) {
         dst[i] = src[i];
         dst[i].first_control = shifted(m, SW_SPACE_CONTROL, src[i].first_control);
         dst[i].part = shifted(m, SW_SPACE_PARTS, src[i].part);
         if (m->transform)
-            remake_bounds(&dst[i], dst_control);
+            remake_bounds(m, &dst[i], src_control + 4 * (size_t)src[i].first_control, bounds);
     }
 }
 

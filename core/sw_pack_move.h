@@ -34,10 +34,13 @@ uint32_t sw_pack_move_vertex(const sw_pack_move *m, uint32_t v);
 void sw_pack_move_parts(const sw_pack_move *m, const sw_pack_part *src, uint32_t n,
                         sw_pack_part *dst);
 void sw_pack_move_control(const sw_pack_move *m, const float *src, uint32_t n, float *dst);
-/* dst_control: the destination's whole CONTROL, the moved points already in
- * it (a transformed patch's box and bounds are made again from them). */
+/* src_control: the source's whole CONTROL, which src's first_control
+ * index. A transformed patch's box is made again from its points moved as
+ * sw_pack_move_control moves them (the same floats), and with bounds its
+ * second-derivative bounds too; without, they are left INFINITY (no bound),
+ * for a reader that takes none (the runtime's placed scene). */
 void sw_pack_move_patches(const sw_pack_move *m, const sw_pack_patch *src, uint32_t n,
-                          const float *dst_control, sw_pack_patch *dst);
+                          const float *src_control, int bounds, sw_pack_patch *dst);
 void sw_pack_move_adjacency(const sw_pack_move *m, const sw_pack_adjacency *src, uint32_t n,
                             sw_pack_adjacency *dst);
 void sw_pack_move_surfaces(const sw_pack_move *m, const sw_pack_surface *src, uint32_t n,

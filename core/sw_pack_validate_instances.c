@@ -416,7 +416,7 @@ static sw_status check_placed(const sw_pack *pack, sw_error *err)
                                 "than %u", (unsigned long long)counts[s], space_names[s],
                                 UINT32_MAX);
     const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
-                                    pack->instance_count };
+                                    pack->instance_count, pack->patches };
     uint64_t want = sw_pack_instanced_runtime_bytes(pack->seam_header ? &pack->seam : NULL,
                                                     pack->surfaces, &placed);
     if (pack->header->runtime_bytes < want)

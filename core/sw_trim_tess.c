@@ -23,6 +23,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "sw_pack_instances.h"
 #include "sw_trim_tess_internal.h"
 
 static uint32_t max_vertices_of(const sw_trim_tess_options *opt, uint32_t base)
@@ -474,6 +475,16 @@ sw_status sw_trim_tess_sizes(const sw_trim_patch *patches, uint32_t patch_count,
 sw_status sw_trim_patches_from_pack(const sw_pack *pack, uint32_t surface, sw_trim_patch *out,
                                     uint32_t capacity, uint32_t *count, sw_error *err)
 {
+    const sw_trim_patch_room room = { out, capacity, NULL, 0 };
+    return sw_trim_patches_placed(pack, surface, &room, count, err);
+}
+
+sw_status sw_trim_patches_placed(const sw_pack *pack, uint32_t surface,
+                                 const sw_trim_patch_room *room, uint32_t *count, sw_error *err)
+{
+    sw_trim_patch *out = room->patches;
+    float *control = room->control;
+    uint32_t capacity = room->capacity, control_capacity = room->control_capacity;
     *count = 0;
     if (!pack || !pack->surfaces || !pack->patch_domains || surface >= pack->surface_count)
         return sw_error_set(err, SW_ERR_RANGE, "trim tess: surface %u: the pack has %u surfaces"
@@ -486,13 +497,21 @@ sw_status sw_trim_patches_from_pack(const sw_pack *pack, uint32_t surface, sw_tr
         return sw_error_set(err, SW_ERR_NO_MEMORY, "trim tess: surface %u has %u patches, room "
                             "for %u", (unsigned)surface, (unsigned)s->patch_count,
                             (unsigned)capacity);
+    uint32_t used = 0;   /* points of control placed so far */
     for (uint32_t i = 0; i < s->patch_count; i++) {
         uint32_t p = s->first_patch + i;
         const sw_pack_patch *pp = &pack->patches[p];
+        uint32_t points = (uint32_t)(pp->degree_u + 1) * (pp->degree_v + 1);
+        if (pack->control_local && (!control || points > control_capacity - used))
+            return sw_error_set(err, SW_ERR_NO_MEMORY, "trim tess: surface %u: its patches' "
+                                "control points are placed as they are read, room for %u "
+                                "of them", (unsigned)surface, (unsigned)control_capacity);
         out[i].patch.degree_u = pp->degree_u;
         out[i].patch.degree_v = pp->degree_v;
         out[i].patch.rational = (pp->flags & SW_PATCH_RATIONAL) != 0;
-        out[i].patch.ctrl = pack->control + 4 * (size_t)pp->first_control;
+        out[i].patch.ctrl = sw_pack_patch_control(pack, p, control ? control + 4 * (size_t)used
+                                                                    : NULL);
+        used += pack->control_local ? points : 0;
         memcpy(out[i].domain, pack->patch_domains[p].domain, sizeof out[i].domain);
     }
     return SW_OK;

@@ -102,6 +102,24 @@ typedef struct sw_trim_patch {
 sw_status sw_trim_patches_from_pack(const sw_pack *pack, uint32_t surface, sw_trim_patch *out,
                                     uint32_t capacity, uint32_t *count, sw_error *err);
 
+/* A reader's room for one surface's patches: the patches, and the
+ * control points placed as they are read (4 floats each, for a pack whose
+ * points are in their parts' frames: control_local; NULL otherwise). */
+typedef struct sw_trim_patch_room {
+    sw_trim_patch *patches;
+    uint32_t capacity;           /* patches */
+    float *control;
+    uint32_t control_capacity;   /* points, the surface's patches' together */
+} sw_trim_patch_room;
+
+/* The same for a pack whose control points may be placed as they are read
+ * (the runtime's placed scene: sw_pack_patch_control), into room->control,
+ * which the patches then view; SW_ERR_NO_MEMORY when either part of room
+ * is short. sw_trim_patches_from_pack is this with no control room, for a
+ * pack whose points are its own. */
+sw_status sw_trim_patches_placed(const sw_pack *pack, uint32_t surface,
+                                 const sw_trim_patch_room *room, uint32_t *count, sw_error *err);
+
 /* One point of a trimming polyline: its parameters in this surface, the
  * position to draw there (the Seam Graph vertex's) and the caller's id for it
  * (the Seam Graph vertex index), reported back per output vertex. */

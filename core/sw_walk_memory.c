@@ -13,7 +13,7 @@
 
 sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surface *surfaces)
 {
-    sw_walk_sizes m = { 0, 0, 0 };
+    sw_walk_sizes m = { 0, 0, 0, 0 };
     for (uint32_t s = 0; s < g->surface_count; s++) {
         uint32_t points = 0, l0 = g->surface_loops[s], l1 = g->surface_loops[s + 1];
         for (uint32_t l = l0; l < l1; l++)
@@ -23,6 +23,35 @@ sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surf
         m.patches = surfaces[s].patch_count > m.patches ? surfaces[s].patch_count : m.patches;
     }
     return m;
+}
+
+uint32_t sw_walk_surface_control(const sw_pack_surface *surfaces, uint32_t surface_count,
+                                 const sw_pack_patch *patches)
+{
+    uint64_t most = 0;
+    for (uint32_t s = 0; s < surface_count; s++) {
+        uint64_t points = 0;
+        for (uint32_t i = 0; i < surfaces[s].patch_count; i++) {
+            const sw_pack_patch *p = &patches[surfaces[s].first_patch + i];
+            points += (uint64_t)(p->degree_u + 1) * (p->degree_v + 1);
+        }
+        most = points > most ? points : most;
+    }
+    return most > UINT32_MAX ? UINT32_MAX : (uint32_t)most;
+}
+
+sw_walk_sizes sw_walk_largest_in_pack(const sw_pack *pack)
+{
+    sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    if (pack->control_local)
+        m.control = sw_walk_surface_control(pack->surfaces, pack->seam.surface_count,
+                                            pack->patches);
+    return m;
+}
+
+uint64_t sw_walk_control_bytes(const sw_walk_sizes *m)
+{
+    return m->control ? sw_arena_worst_case(4ull * m->control * sizeof(float) + 1, 64) : 0;
 }
 
 uint32_t sw_walk_cache_vertices_for(uint64_t patches)
@@ -85,7 +114,7 @@ static void walk_pools(const sw_seam_graph *g, uint64_t patches, const sw_walk_s
                                take((m->points + 1ull) * sizeof(sw_trim_point)) +
                                take((m->loops + 1ull) * sizeof(uint32_t)) +
                                take((m->patches + 1ull) * sizeof(sw_trim_patch)) +
-                               take(sw_walk_scratch_bytes(m));
+                               take(sw_walk_scratch_bytes(m)) + sw_walk_control_bytes(m);
     pool[SW_WALK_POOL_OUTPUT] = 2 * take(v * 3 * sizeof(float)) + take(v * 2 * sizeof(float)) +
                                 take(v * sizeof(uint32_t)) +
                                 take(SW_WALK_INDICES * sizeof(uint16_t));
@@ -140,6 +169,7 @@ void sw_walk_pools_placed(const sw_seam_graph *stored, const sw_pack_surface *su
     if (!stored || counts[SW_SPACE_SURFACES] == 0 || !placed_graph(counts, &g))
         return;
     sw_walk_sizes m = sw_walk_largest_surface(stored, surfaces);
+    m.control = sw_walk_surface_control(surfaces, stored->surface_count, placed->patches);
     walk_pools(&g, counts[SW_SPACE_PATCHES], &m, pool);
     pool[SW_WALK_POOL_SEAM_FRONT] =
         sw_seam_fronts_bytes(placed->prototypes, placed->prototype_count, placed->instances,

@@ -37,13 +37,28 @@ uint32_t sw_walk_cache_vertices_for(uint64_t patches);
 static inline uint32_t sw_walk_cache_indices(uint32_t vertices) { return 6u * vertices; }
 
 /* The largest surface in loop points (slots), loops and patches, each on
- * its own: the walk's per-surface buffers hold any surface. */
+ * its own: the walk's per-surface buffers hold any surface. control: the
+ * most control points a surface's patches hold together where they are
+ * placed as they are read (a placed pack's: sw_pack_patch_control), else
+ * 0 (no room is taken for them). */
 typedef struct sw_walk_sizes {
-    uint32_t points, loops, patches;
+    uint32_t points, loops, patches, control;
 } sw_walk_sizes;
 
-/* g and surfaces must be validated (their indices are followed). */
+/* g and surfaces must be validated (their indices are followed); control 0. */
 sw_walk_sizes sw_walk_largest_surface(const sw_seam_graph *g, const sw_pack_surface *surfaces);
+
+/* The most control points of one surface's patches, over surface_count
+ * surfaces (validated, with their patches). */
+uint32_t sw_walk_surface_control(const sw_pack_surface *surfaces, uint32_t surface_count,
+                                 const sw_pack_patch *patches);
+
+/* The largest surface of a validated pack with a Seam Graph as the walk
+ * reads it: with control where its points are placed as they are read. */
+sw_walk_sizes sw_walk_largest_in_pack(const sw_pack *pack);
+
+/* Bytes of a room for m->control placed control points: 0 without. */
+uint64_t sw_walk_control_bytes(const sw_walk_sizes *m);
 
 /* Bytes of the walk, worst case (every alignment included); 0 for no graph. */
 uint64_t sw_walk_arena_bytes(const sw_seam_graph *g, const sw_pack_surface *surfaces);
@@ -58,6 +73,7 @@ typedef struct sw_walk_placed {
     uint32_t prototype_count;
     const sw_pack_instance *instances;
     uint32_t instance_count;
+    const sw_pack_patch *patches;     /* the prototypes' (the stored pack's) */
 } sw_walk_placed;
 uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,
                                     const sw_walk_placed *placed);

@@ -362,7 +362,7 @@ static uint64_t check_sampled_normals(const sw_pack *pack)
             continue;
         const sw_pack_surface *ps = &pack->surfaces[s];
         for (uint32_t i = ps->first_patch; i < ps->first_patch + ps->patch_count; i++) {
-            const sw_bezier_patchf pf = sw_pack_patch_view(pack, i);
+            const sw_bezier_patchf pf = sw_pack_patch_view(pack, i, NULL);
             sw_bezier_patch bp = sw_bezier_patch_from_float(&pf, ctrl);
             for (int k = 0; k < 64; k++) {
                 sw_surface_point sp;

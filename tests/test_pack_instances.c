@@ -22,6 +22,7 @@
 #include "sw_pack_write.h"
 #include "sw_seam_check.h"
 #include "sw_seam_fronts.h"
+#include "sw_trim_tess.h"
 
 /* The sample with every group (pack_sample.h), serialised. */
 static uint8_t *full_sample(size_t *size)
@@ -169,6 +170,49 @@ static void test_merge_expand_and_read_back(void)
     free(bytes);
 }
 
+/* The runtime's placed scene (shared) against the copying expansion
+ * (whole): no control point copied, every patch's placed as read
+ * (sw_pack_patch_control, sw_trim_patches_placed) the same floats as the
+ * copy's, and the boxes made from them the same. */
+static void control_placed_as_copied(const sw_pack *shared, const sw_pack *whole)
+{
+    SW_CHECK(shared->control_local && !whole->control_local);
+    SW_CHECK(shared->meta->patch_count == whole->meta->patch_count);
+    uint32_t differ = 0, moved = 0;
+    float room[4 * SW_BEZIER_MAX_ORDER * SW_BEZIER_MAX_ORDER];
+    for (uint32_t i = 0; i < shared->meta->patch_count; i++) {
+        const sw_pack_patch *ps = &shared->patches[i], *pw = &whole->patches[i];
+        size_t points = (size_t)(ps->degree_u + 1) * (ps->degree_v + 1);
+        const float *c = sw_pack_patch_control(shared, i, room);
+        differ += memcmp(c, whole->control + 4 * (size_t)pw->first_control,
+                         4 * points * sizeof(float)) != 0;
+        differ += memcmp(ps->box_min, pw->box_min, sizeof ps->box_min) != 0 ||
+                  memcmp(ps->box_max, pw->box_max, sizeof ps->box_max) != 0;
+        moved += c == room;
+    }
+    SW_CHECK_MSG(differ == 0 && moved > 0, "%u of %u patches placed otherwise (%u moved)", differ,
+                 shared->meta->patch_count, moved);
+    /* A surface's patches as the walk's maker reads them: from the room,
+     * and refused without one (never the prototype's points unplaced). */
+    uint32_t s = shared->surfaces[0].patch_count ? 0 : 1, count = 0;
+    sw_trim_patch patches[64];
+    float control[4 * 64 * 16];
+    const sw_trim_patch_room fits = { patches, 64, control, 64 * 16 };
+    SW_CHECK(shared->surfaces[s].patch_count <= 64);
+    SW_CHECK(sw_trim_patches_placed(shared, s, &fits, &count, NULL) == SW_OK);
+    for (uint32_t k = 0; k < count; k++) {
+        const sw_pack_patch *pw = &whole->patches[shared->surfaces[s].first_patch + k];
+        size_t points = (size_t)(pw->degree_u + 1) * (pw->degree_v + 1);
+        SW_CHECK(memcmp(patches[k].patch.ctrl, whole->control + 4 * (size_t)pw->first_control,
+                        4 * points * sizeof(float)) == 0);
+    }
+    sw_error err = { 0 };
+    SW_CHECK(sw_trim_patches_from_pack(shared, s, patches, 64, &count, &err) == SW_ERR_NO_MEMORY &&
+             strstr(err.message, "placed as they are read"));
+    const sw_trim_patch_room short_room = { patches, 64, control, 1 };
+    SW_CHECK(sw_trim_patches_placed(shared, s, &short_room, &count, NULL) == SW_ERR_NO_MEMORY);
+}
+
 /* The runtime's expansion shares the static and part levels' vertices
  * with the prototypes, and places them as the stand-ins and the GL thread
  * read them (sw_pack_level_vertices, the part's transform): the same
@@ -248,6 +292,7 @@ static void test_shared_levels_place_as_copied(void)
     }
     SW_CHECK_MSG(compared > 0 && differ == 0, "%u coordinates of %u part levels placed otherwise",
                  differ, compared);
+    control_placed_as_copied(&shared, &whole);
     free(a);
     free(b);
     free(bytes);

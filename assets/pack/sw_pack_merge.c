@@ -98,7 +98,7 @@ static void move_model(sw_pack_merged *m, const sw_pack *p, const sw_pack_move *
     sw_pack_move_parts(mv, p->parts, pm->part_count, AT(m, M_PARTS, sw_pack_part, b, SW_SPACE_PARTS));
     memcpy((float *)m->arrays[M_CONTROL] + 4 * b[SW_SPACE_CONTROL], p->control,
            (size_t)pm->control_count * 4 * sizeof(float));
-    sw_pack_move_patches(mv, p->patches, pm->patch_count, m->arrays[M_CONTROL],
+    sw_pack_move_patches(mv, p->patches, pm->patch_count, p->control, 1,
                          AT(m, M_PATCHES, sw_pack_patch, b, SW_SPACE_PATCHES));
     if (p->adjacency)
         sw_pack_move_adjacency(mv, p->adjacency, pm->adjacency_count,

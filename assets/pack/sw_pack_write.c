@@ -232,7 +232,7 @@ static uint64_t runtime_bytes(const sw_pack_contents *c)
     int graph = c->seam && c->seam->surface_count == c->surface_count &&
                 sw_seam_graph_check(c->seam, NULL) == SW_OK;
     const sw_walk_placed placed = { c->prototypes, c->prototype_count, c->instances,
-                                    c->instance_count };
+                                    c->instance_count, c->patches };
     return sw_pack_instanced_runtime_bytes(graph ? c->seam : NULL, c->surfaces, &placed);
 }
 

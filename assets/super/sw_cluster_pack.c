@@ -18,7 +18,7 @@ sw_status sw_cluster_surface_cones(const sw_pack *pack, sw_normal_cone *cones, s
         return sw_error_set(err, SW_ERR_NO_MEMORY, "clustering: out of memory for the cones' "
                             "scratch");
     for (uint32_t s = 0; s < pack->surface_count; s++)
-        cones[s] = sw_surface_normal_cone(pack, s, 1, scratch);
+        cones[s] = sw_surface_normal_cone(pack, s, 1, NULL, scratch);
     free(scratch);
     return SW_OK;
 }

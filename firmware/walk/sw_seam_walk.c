@@ -33,18 +33,18 @@ static void *take(sw_arena *a, size_t bytes, int *failed)
 /* Surface s's sewing offset, worked out the first time a thread asks for
  * it and kept in its own array (known: V's for cone culling, P's for
  * measuring; neither thread writes the other's). Done for all surfaces at
- * init it took 40% of the 40,000-patch showroom's start. patches: the
- * asking thread's scratch for capacity patches; 0 when s's patches do not
- * fit it (they always do: it is sized for the largest surface). */
+ * init it took 40% of the 40,000-patch showroom's start. room: the asking
+ * thread's for s's patches; 0 when they do not fit it (they always do: it
+ * is sized for the largest surface). */
 float sw_seam_walk_sewing_offset(const sw_seam_walk *w, uint32_t s, float *known,
-                                 sw_trim_patch *patches, uint32_t capacity)
+                                 const sw_trim_patch_room *room)
 {
     if (known[s] >= 0)
         return known[s];
     uint32_t count = 0;
-    if (sw_trim_patches_from_pack(w->pack, s, patches, capacity, &count, NULL))
+    if (sw_trim_patches_placed(w->pack, s, room, &count, NULL))
         return 0;
-    return known[s] = (float)sw_seam_fronts_sewing_offset(&w->fronts, s, patches, count);
+    return known[s] = (float)sw_seam_fronts_sewing_offset(&w->fronts, s, room->patches, count);
 }
 
 /* The per-surface state of the threaded walk (counted with the rest in
@@ -66,7 +66,7 @@ static int take_thread_state(sw_seam_walk *w, sw_arena *arena, size_t n)
 }
 
 /* Every surface's normal cone, the union of its patches' (scratch from the
- * arena, given back). */
+ * arena, given back; placed control points in V's maker's room). */
 static sw_status make_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
 {
     size_t mark = sw_arena_mark(arena);
@@ -77,7 +77,7 @@ static sw_status make_cones(sw_seam_walk *w, sw_arena *arena, sw_error *err)
                             "scratch (%zu bytes)", doubles * sizeof(double));
     const sw_pack *pack = w->pack;
     for (uint32_t s = 0; s < pack->seam.surface_count; s++)
-        w->cones[s] = sw_surface_normal_cone(pack, s, 0, scratch);
+        w->cones[s] = sw_surface_normal_cone(pack, s, 0, w->maker.room.control, scratch);
     sw_arena_reset_to(arena, mark);
     return SW_OK;
 }
@@ -107,7 +107,7 @@ sw_status sw_seam_walk_init(sw_seam_walk *w, const sw_pack *pack, const sw_pack 
     sw_status st = sw_seam_fronts_init(&w->fronts, stored, &pack->seam, arena, err);
     if (st != SW_OK)
         return st;
-    w->largest = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    w->largest = sw_walk_largest_in_pack(pack);
     size_t n = pack->seam.surface_count;
     int failed = 0;
     w->target = take(arena, n * sizeof(float), &failed);
@@ -221,8 +221,7 @@ static int choose_target(sw_seam_walk *w, uint32_t s, double bound, double ahead
  * yet: such boxes shrank by one model unit.) */
 static int facing_away(sw_seam_walk *w, const sw_view *view, uint32_t s, const sw_box *box)
 {
-    double grow = sw_seam_walk_sewing_offset(w, s, w->sew_offset, w->maker.patches,
-                                             w->maker.max_patches);
+    double grow = sw_seam_walk_sewing_offset(w, s, w->sew_offset, &w->maker.room);
     sw_box b = { sw_v3_sub(box->min, sw_v3(grow, grow, grow)),
                  sw_v3_add(box->max, sw_v3(grow, grow, grow)) };
     return sw_normal_cone_back_facing(&w->cones[s], &b, view->eye, SW_SEAM_CONE_MARGIN_RAD);

@@ -219,8 +219,7 @@ typedef struct sw_seam_walk {
                                      file's gaps; no level of detail makes that smaller);
                                      -1 until V first needs it (cone culling) */
     /* P's own, for measuring what it draws (sw_seam_walk_init_frames): */
-    sw_trim_patch *measure_patches;
-    uint32_t measure_max_patches;
+    sw_trim_patch_room measure;   /* the largest surface's patches */
     float *measure_sew_offset;    /* surface_count: as sew_offset, P's copy */
     float *depth;                 /* surface_count: this frame's nearest depth */
     sw_cull_tree cull_tree;       /* over the surfaces and their patches, built at init */

@@ -211,7 +211,7 @@ void sw_seam_walk_plan_upload(sw_seam_walk *w, uint32_t s, sw_seam_plan *plan);
 
 /* Surface s's sewing offset into known[s] the first time (sw_seam_walk.c). */
 float sw_seam_walk_sewing_offset(const sw_seam_walk *w, uint32_t s, float *known,
-                                 sw_trim_patch *patches, uint32_t capacity);
+                                 const sw_trim_patch_room *room);
 
 double sw_seam_walk_ms_since(const struct timespec *a);
 

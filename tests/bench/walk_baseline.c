@@ -197,25 +197,35 @@ static int load_pack(wb_run *r, sw_error *err)
     return 1;
 }
 
-/* Every patch as the measure takes it, and each surface's sewing offset,
- * as seamwalk measures them at start. */
+/* Every patch as the measure takes it (a placed pack's control points
+ * placed, all of them kept), and each surface's sewing offset, as seamwalk
+ * measures them at start. */
 static int load_patches(wb_run *r, sw_error *err)
 {
     const sw_pack *p = &r->pack;
     const sw_seam_graph *g = &p->seam;
     wb_walk *w = &r->walk;
+    size_t points = 0;
+    for (uint32_t i = 0; p->control_local && i < p->meta->patch_count; i++)
+        points += (size_t)(p->patches[i].degree_u + 1) * (p->patches[i].degree_v + 1);
     w->patches = malloc((p->meta->patch_count + 1) * sizeof *w->patches);
+    w->control = malloc((4 * points + 1) * sizeof *w->control);
     w->surface_first = malloc((g->surface_count + 1) * sizeof *w->surface_first);
     r->sew_offset = malloc((g->surface_count + 1) * sizeof *r->sew_offset);
-    if (!w->patches || !w->surface_first || !r->sew_offset)
+    if (!w->patches || !w->control || !w->surface_first || !r->sew_offset)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for the patches"), 0;
+    size_t used = 0;
     for (uint32_t s = 0; s < g->surface_count; s++) {
         const sw_pack_surface *ps = &p->surfaces[s];
         uint32_t count = 0;
         w->surface_first[s] = ps->first_patch;
-        if (sw_trim_patches_from_pack(p, s, w->patches + ps->first_patch, ps->patch_count,
-                                      &count, err) != SW_OK)
+        const sw_trim_patch_room room = { w->patches + ps->first_patch, ps->patch_count,
+                                          w->control + 4 * used, (uint32_t)(points - used) };
+        if (sw_trim_patches_placed(p, s, &room, &count, err) != SW_OK)
             return 0;
+        for (uint32_t i = 0; p->control_local && i < count; i++)
+            used += (size_t)(room.patches[i].patch.degree_u + 1) *
+                    (room.patches[i].patch.degree_v + 1);
         double worst = 0;
         for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
             worst = fmax(worst, sw_seam_sewing_offset(g, &g->loops[l],
@@ -401,7 +411,7 @@ int main(int argc, char **argv)
                r.opt.glu ? "glu" : "uniform", r.opt.segments, r.opt.tolerance_px, r.frames_run,
                r.opt.every, r.stopped_early, r.glu_skipped, r.failed_max, r.stats.walk_s);
     wb_glu_free(&r.walk);
-    free(r.walk.patches), free(r.walk.surface_first), free(r.sew_offset);
+    free(r.walk.patches), free(r.walk.control), free(r.walk.surface_first), free(r.sew_offset);
     free(r.walk.batch.verts), free(r.walk.batch.uvs), free(r.walk.batch.indices);
     free(r.keys), free(r.block);
     if (r.renderer_up)

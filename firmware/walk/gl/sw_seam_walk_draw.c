@@ -25,12 +25,10 @@ static void measure_item(sw_seam_walk *w, const sw_seam_draw_item *it, const sw_
             sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
         return;
     }
-    if (sw_trim_patches_from_pack(w->pack, s, w->measure_patches, w->measure_max_patches,
-                                  &patch_count, NULL))
+    if (sw_trim_patches_placed(w->pack, s, &w->measure, &patch_count, NULL))
         return;
-    float offset = sw_seam_walk_sewing_offset(w, s, w->measure_sew_offset, w->measure_patches,
-                                              w->measure_max_patches);
-    const sw_seam_exact exact = { w->measure_patches, patch_count, offset, it->depth,
+    float offset = sw_seam_walk_sewing_offset(w, s, w->measure_sew_offset, &w->measure);
+    const sw_seam_exact exact = { w->measure.patches, patch_count, offset, it->depth,
                                   w->error_px, w->floor[s] };
     sw_seam_measure_mesh(&mesh, &exact, view, stats, acc);
     if (w->drawn)

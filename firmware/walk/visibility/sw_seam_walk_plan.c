@@ -11,11 +11,12 @@
 size_t sw_seam_walk_frame_bytes(const sw_pack *pack, uint32_t workers, int fill)
 {
     uint32_t n = pack->seam.surface_count;
-    sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    sw_walk_sizes m = sw_walk_largest_in_pack(pack);
     size_t pieces = (size_t)pack->part_levels.piece_count + 1;
     size_t parts = (size_t)pack->meta->part_count + 1;
     size_t bytes = 2 * sw_seam_plan_bytes(n) +
                    sw_arena_worst_case(((size_t)m.patches + 1) * sizeof(sw_trim_patch), 64) +
+                   (size_t)sw_walk_control_bytes(&m) +
                    sw_arena_worst_case(((size_t)n + 1) * sizeof(float), 64) +
                    2 * sw_arena_worst_case(pieces * sizeof(uint32_t), 64) +
                    sw_arena_worst_case(pieces * sizeof(double), 64) +
@@ -32,11 +33,13 @@ sw_status sw_seam_walk_init_frames(sw_seam_walk *w, sw_seam_plan plans[2], sw_ar
         if (st != SW_OK)
             return st;
     }
-    w->measure_max_patches = w->largest.patches;
-    w->measure_patches = sw_arena_alloc(arena, ((size_t)w->largest.patches + 1) *
-                                        sizeof(sw_trim_patch), 64);
+    const sw_walk_sizes *m = &w->largest;
+    w->measure = (sw_trim_patch_room){
+        sw_arena_alloc(arena, ((size_t)m->patches + 1) * sizeof(sw_trim_patch), 64), m->patches,
+        m->control ? sw_arena_alloc(arena, 4 * (size_t)m->control * sizeof(float) + 1, 64) : NULL,
+        m->control };
     w->measure_sew_offset = sw_arena_alloc(arena, ((size_t)n + 1) * sizeof(float), 64);
-    if (!w->measure_patches || !w->measure_sew_offset)
+    if (!w->measure.patches || !w->measure_sew_offset || (m->control && !w->measure.control))
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the measurement's "
                             "scratch");
     for (uint32_t s = 0; s < n; s++)

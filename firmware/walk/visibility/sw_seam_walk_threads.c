@@ -25,7 +25,7 @@ static size_t standin_bytes(const sw_pack *pack)
 
 size_t sw_seam_walk_worker_bytes(const sw_pack *pack, uint32_t count, int fill)
 {
-    sw_walk_sizes m = sw_walk_largest_surface(&pack->seam, pack->surfaces);
+    sw_walk_sizes m = sw_walk_largest_in_pack(pack);
     return sw_arena_worst_case(sizeof(sw_seam_workers), 64) +
            (size_t)count * (size_t)sw_seam_worker_bytes(&m, fill) + standin_bytes(pack);
 }

@@ -23,6 +23,7 @@ uint64_t sw_seam_maker_arena_bytes(const sw_walk_sizes *m)
            worst((m->points + 1ull) * sizeof(sw_trim_point)) +
            worst((m->loops + 1ull) * sizeof(uint32_t)) +
            worst((m->patches + 1ull) * sizeof(sw_trim_patch)) + worst(sw_walk_scratch_bytes(m)) +
+           sw_walk_control_bytes(m) +
            2 * worst(v * 3 * sizeof(float)) + worst(v * 2 * sizeof(float)) +
            worst(v * sizeof(uint32_t)) + worst(SW_WALK_INDICES * sizeof(uint16_t));
 }
@@ -33,15 +34,20 @@ sw_status sw_seam_maker_init(sw_seam_maker *k, const sw_pack *pack, const sw_sea
     memset(k, 0, sizeof *k);
     k->pack = pack;
     k->fronts = fronts;
-    k->max_points = m->points, k->max_patches = m->patches;
+    k->max_points = m->points;
     size_t v = SW_WALK_VERTICES;
     int failed = 0;
     k->loop_points = take(arena, (m->points + 1) * sizeof(sw_seam_point), &failed);
     k->points = take(arena, (m->points + 1) * sizeof(sw_trim_point), &failed);
     k->loop_first = take(arena, (m->loops + 1) * sizeof(uint32_t), &failed);
-    k->patches = take(arena, (m->patches + 1) * sizeof(sw_trim_patch), &failed);
+    k->room.patches = take(arena, (m->patches + 1) * sizeof(sw_trim_patch), &failed);
+    k->room.capacity = m->patches;
     size_t scratch_bytes = (size_t)sw_walk_scratch_bytes(m);
     void *scratch = take(arena, scratch_bytes, &failed);
+    if (m->control) {   /* as sw_walk_control_bytes counts it */
+        k->room.control = take(arena, 4 * (size_t)m->control * sizeof(float), &failed);
+        k->room.control_capacity = m->control;
+    }
     k->positions = take(arena, v * 3 * sizeof(float), &failed);
     k->normals = take(arena, v * 3 * sizeof(float), &failed);
     k->uvs = take(arena, v * 2 * sizeof(float), &failed);
@@ -61,8 +67,7 @@ static sw_status tessellate(sw_seam_maker *k, uint32_t s, const sw_trim_loops *l
                             double bound, sw_trim_tess_result *result, int *capped)
 {
     uint32_t patch_count = 0;
-    sw_status st = sw_trim_patches_from_pack(k->pack, s, k->patches, k->max_patches,
-                                             &patch_count, NULL);
+    sw_status st = sw_trim_patches_placed(k->pack, s, &k->room, &patch_count, NULL);
     k->patch_count = st == SW_OK ? patch_count : 0;
     if (st != SW_OK)
         return st;
@@ -73,7 +78,7 @@ static sw_status tessellate(sw_seam_maker *k, uint32_t s, const sw_trim_loops *l
     const sw_trim_tess_options opt = sw_seam_surface_tess_options();
     *capped = 0;
     for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
-        st = sw_trim_tess(k->patches, patch_count, loops, bound, &opt, &k->scratch, &out, result,
+        st = sw_trim_tess(k->room.patches, patch_count, loops, bound, &opt, &k->scratch, &out, result,
                           NULL);
         if (st != SW_ERR_RANGE)
             break;
@@ -146,7 +151,7 @@ static sw_status attempt(sw_seam_maker *k, uint32_t s, sw_trim_loops *loops, uin
     sw_status st = tessellate(k, s, loops, bound, t, &capped);
     if (st == SW_ERR_FORMAT &&
         sw_seam_surface_untangle(loops, k->points, k->loop_first, outer,
-                                 sw_trim_tess_shrink(k->patches, k->patch_count),
+                                 sw_trim_tess_shrink(k->room.patches, k->patch_count),
                                  &k->scratch) > 0) {
         e->untangled = 1;
         st = tessellate(k, s, loops, bound, t, &capped);

@@ -32,9 +32,10 @@ typedef struct sw_seam_maker {
     sw_seam_point *loop_points;   /* the largest surface's slots */
     sw_trim_point *points;        /* the same, as the tessellator takes them */
     uint32_t *loop_first;         /* the most loops of a surface, + 1 */
-    sw_trim_patch *patches;       /* the most patches of a surface */
+    sw_trim_patch_room room;      /* the most patches of a surface, and their control
+                                     points where they are placed as read */
     uint32_t patch_count;         /* the surface's, as tessellate last read them */
-    uint32_t max_points, max_patches;
+    uint32_t max_points;
     sw_arena scratch;             /* the tessellator's */
     float *positions, *normals, *uvs;
     uint32_t *ids;
