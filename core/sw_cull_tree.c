@@ -143,14 +143,33 @@ static uint32_t build_node(builder *b, uint32_t *items, uint32_t count, uint32_t
 /* Each allocation as sw_cull_tree_build makes it. */
 static uint64_t take_bytes(uint64_t bytes) { return sw_arena_worst_case(bytes + 1, 64); }
 
-uint64_t sw_cull_tree_arena_bytes(uint32_t surface_count, uint64_t patch_count)
+uint64_t sw_cull_tree_patch_nodes(uint32_t patch_count)
+{
+    if (patch_count <= SW_CULL_LEAF_PATCHES)
+        return patch_count ? 1 : 0;
+    uint32_t half = patch_count / 2;   /* as build_node splits */
+    return 1 + sw_cull_tree_patch_nodes(half) + sw_cull_tree_patch_nodes(patch_count - half);
+}
+
+uint64_t sw_cull_tree_arena_bytes(uint32_t surface_count, uint64_t patch_count,
+                                  uint64_t patch_nodes)
 {
     uint64_t n = surface_count;
     return take_bytes(2 * n * sizeof(sw_cull_node)) +          /* top */
-           take_bytes(2 * patch_count * sizeof(sw_cull_node)) + /* patch_nodes */
+           take_bytes(patch_nodes * sizeof(sw_cull_node)) +    /* patch_nodes */
            take_bytes(n * sizeof(uint32_t)) +                   /* surface_root */
            take_bytes(patch_count * sizeof(uint32_t)) +         /* patch_order */
            take_bytes(n * sizeof(uint32_t));                    /* scratch: the surfaces */
+}
+
+uint64_t sw_cull_tree_bytes_of(const sw_pack_surface *surfaces, uint32_t surface_count)
+{
+    uint64_t patches = 0, nodes = 0;
+    for (uint32_t s = 0; s < surface_count; s++) {
+        patches += surfaces[s].patch_count;
+        nodes += sw_cull_tree_patch_nodes(surfaces[s].patch_count);
+    }
+    return sw_cull_tree_arena_bytes(surface_count, patches, nodes);
 }
 
 static void *take(sw_arena *a, uint64_t bytes, int *failed)
@@ -192,12 +211,14 @@ sw_status sw_cull_tree_build(sw_cull_tree *t, const sw_pack_surface *surfaces,
                              sw_error *err)
 {
     memset(t, 0, sizeof *t);
-    uint64_t patch_count = 0, n = surface_count;
-    for (uint32_t s = 0; s < surface_count; s++)
+    uint64_t patch_count = 0, nodes = 0, n = surface_count;
+    for (uint32_t s = 0; s < surface_count; s++) {
         patch_count += surfaces[s].patch_count;
+        nodes += sw_cull_tree_patch_nodes(surfaces[s].patch_count);
+    }
     int failed = 0;
     t->top = take(arena, 2 * n * sizeof(sw_cull_node), &failed);
-    t->patch_nodes = take(arena, 2 * patch_count * sizeof(sw_cull_node), &failed);
+    t->patch_nodes = take(arena, nodes * sizeof(sw_cull_node), &failed);
     t->surface_root = take(arena, n * sizeof(uint32_t), &failed);
     t->patch_order = take(arena, patch_count * sizeof(uint32_t), &failed);
     size_t mark = sw_arena_mark(arena);
@@ -206,7 +227,7 @@ sw_status sw_cull_tree_build(sw_cull_tree *t, const sw_pack_surface *surfaces,
         return sw_error_set(err, SW_ERR_NO_MEMORY, "arena too small for the culling tree over "
                             "%u surfaces (needs %llu bytes)", surface_count,
                             (unsigned long long)sw_cull_tree_arena_bytes(surface_count,
-                                                                         patch_count));
+                                                                         patch_count, nodes));
     t->patches = patches;
     t->surfaces = surfaces;
     t->surface_count = surface_count;

@@ -86,9 +86,18 @@ typedef struct sw_cull_counts {
     uint64_t depth_tests;          /* boxes whose depth range was computed */
 } sw_cull_counts;
 
+/* Nodes of one surface's tree over patch_count patches (0 for none): the
+ * build halves the count until a leaf holds SW_CULL_LEAF_PATCHES, so the
+ * count alone decides it. */
+uint64_t sw_cull_tree_patch_nodes(uint32_t patch_count);
+
 /* Arena bytes sw_cull_tree_build takes, worst case, for surface_count
- * surfaces holding patch_count patches in all (its scratch included). */
-uint64_t sw_cull_tree_arena_bytes(uint32_t surface_count, uint64_t patch_count);
+ * surfaces holding patch_count patches in all, whose trees hold
+ * patch_nodes nodes in all (sw_cull_tree_patch_nodes summed; its scratch
+ * included); sw_cull_tree_bytes_of counts those from the surfaces. */
+uint64_t sw_cull_tree_arena_bytes(uint32_t surface_count, uint64_t patch_count,
+                                  uint64_t patch_nodes);
+uint64_t sw_cull_tree_bytes_of(const sw_pack_surface *surfaces, uint32_t surface_count);
 
 /* Builds the tree over surfaces[0 .. surface_count) and their patch ranges
  * (validated: every range within patches, every box min <= max). Splits at

@@ -95,9 +95,10 @@ const char *const sw_walk_pool_names[SW_WALK_POOL_COUNT] = {
     "worker hand-over", "mesh cache" };
 
 /* The walk over a graph of g's counts (its arrays are not read), of
- * patches patches, whose largest surface is m, pool by pool. */
-static void walk_pools(const sw_seam_graph *g, uint64_t patches, const sw_walk_sizes *m,
-                       uint64_t pool[SW_WALK_POOL_COUNT])
+ * patches patches whose culling trees hold patch_nodes nodes, whose
+ * largest surface is m, pool by pool. */
+static void walk_pools(const sw_seam_graph *g, uint64_t patches, uint64_t patch_nodes,
+                       const sw_walk_sizes *m, uint64_t pool[SW_WALK_POOL_COUNT])
 {
     uint64_t n = g->surface_count, v = SW_WALK_VERTICES;
     uint32_t cache = sw_walk_cache_vertices_for(patches);
@@ -105,7 +106,7 @@ static void walk_pools(const sw_seam_graph *g, uint64_t patches, const sw_walk_s
     pool[SW_WALK_POOL_SURFACES] = 5 * take(n * sizeof(float)) + 3 * take(n); /* target, seam
         bound, offset, floor, depth; visible, evictable, dirty */
     pool[SW_WALK_POOL_CULL] = 2 * take(n * sizeof(double)) +             /* cull_near, cull_far */
-                              sw_cull_tree_arena_bytes((uint32_t)n, patches) +
+                              sw_cull_tree_arena_bytes((uint32_t)n, patches, patch_nodes) +
                               take(n * sizeof(sw_normal_cone)) +         /* the cones, scratch */
                               sw_arena_worst_case(sizeof(double) * sw_normal_cone_scratch_doubles(
                                                       SW_BEZIER_MAX_DEGREE, SW_BEZIER_MAX_DEGREE),
@@ -170,7 +171,14 @@ void sw_walk_pools_placed(const sw_seam_graph *stored, const sw_pack_surface *su
         return;
     sw_walk_sizes m = sw_walk_largest_surface(stored, surfaces);
     m.control = sw_walk_surface_control(surfaces, stored->surface_count, placed->patches);
-    walk_pools(&g, counts[SW_SPACE_PATCHES], &m, pool);
+    uint64_t nodes = 0;   /* each instance's surfaces' culling trees */
+    for (uint32_t k = 0; k < placed->instance_count; k++) {
+        const sw_pack_prototype *p = &placed->prototypes[placed->instances[k].prototype];
+        const sw_pack_surface *own = surfaces + p->first[SW_SPACE_SURFACES];
+        for (uint32_t s = 0; s < p->count[SW_SPACE_SURFACES]; s++)
+            nodes += sw_cull_tree_patch_nodes(own[s].patch_count);
+    }
+    walk_pools(&g, counts[SW_SPACE_PATCHES], nodes, &m, pool);
     pool[SW_WALK_POOL_SEAM_FRONT] =
         sw_seam_fronts_bytes(placed->prototypes, placed->prototype_count, placed->instances,
                              placed->instance_count, NULL);
@@ -184,10 +192,12 @@ void sw_walk_pools(const sw_seam_graph *g, const sw_pack_surface *surfaces,
     if (!g || g->surface_count == 0)
         return;
     sw_walk_sizes m = sw_walk_largest_surface(g, surfaces);
-    uint64_t patches = 0;
-    for (uint32_t s = 0; s < g->surface_count; s++)
+    uint64_t patches = 0, nodes = 0;
+    for (uint32_t s = 0; s < g->surface_count; s++) {
         patches += surfaces[s].patch_count;
-    walk_pools(g, patches, &m, pool);
+        nodes += sw_cull_tree_patch_nodes(surfaces[s].patch_count);
+    }
+    walk_pools(g, patches, nodes, &m, pool);
 }
 
 uint64_t sw_walk_arena_bytes_placed(const sw_seam_graph *stored, const sw_pack_surface *surfaces,

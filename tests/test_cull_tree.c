@@ -76,9 +76,9 @@ static int compare(const sw_cull_tree *t, const sw_pack_surface *surfaces, uint3
     return differ;
 }
 
-static sw_status build(sw_cull_tree *t, uint32_t n, uint32_t patches, void **block)
+static sw_status build(sw_cull_tree *t, uint32_t n, void **block)
 {
-    size_t bytes = (size_t)sw_cull_tree_arena_bytes(n, patches);
+    size_t bytes = (size_t)sw_cull_tree_bytes_of(g_surfaces, n);
     *block = malloc(bytes);
     sw_arena a;
     sw_arena_init(&a, *block, bytes);
@@ -92,10 +92,11 @@ static void test_tree_equals_brute_force_on_generated_scenes(void)
     sw_cull_counts tree = { 0, 0 }, brute = { 0, 0 };
     int differ = 0, views = 0;
     for (int scene = 0; scene < 12; scene++) {
-        uint32_t n = 1 + (uint32_t)uniform(0, MAX_SURFACES - 1), patches = make_scene(n);
+        uint32_t n = 1 + (uint32_t)uniform(0, MAX_SURFACES - 1);
+        make_scene(n);
         sw_cull_tree t;
         void *block;
-        SW_CHECK(build(&t, n, patches, &block) == SW_OK);
+        SW_CHECK(build(&t, n, &block) == SW_OK);
         for (int k = 0; k < 100; k++, views++) {
             sw_vec3 eye = sw_v3(uniform(-120, 120), uniform(-120, 120), uniform(-120, 120));
             sw_vec3 target = sw_v3(uniform(-60, 60), uniform(-60, 60), uniform(-60, 60));
@@ -120,7 +121,7 @@ static void test_all_or_nothing_costs_one_test(void)
     uint32_t n = 300, patches = make_scene(n);
     sw_cull_tree t;
     void *block;
-    SW_CHECK(build(&t, n, patches, &block) == SW_OK);
+    SW_CHECK(build(&t, n, &block) == SW_OK);
     sw_cull_counts tree = { 0, 0 }, brute = { 0, 0 };
     sw_cull_view all = make_view(sw_v3(0, 0, 400), sw_v3(0, 0, 0), 0.8, 1, 1000);
     SW_CHECK(compare(&t, g_surfaces, n, g_patches, &all, &tree, &brute, nearest, farthest) == 0);
@@ -160,14 +161,23 @@ static void test_depth_range_is_the_corners_extremes(void)
 
 static void test_build_fits_its_bytes_and_refuses_less(void)
 {
-    uint32_t n = 200, patches = make_scene(n);
-    size_t bytes = (size_t)sw_cull_tree_arena_bytes(n, patches);
+    uint32_t n = 200;
+    make_scene(n);
+    size_t bytes = (size_t)sw_cull_tree_bytes_of(g_surfaces, n);
     void *block = malloc(bytes);
     sw_arena a;
     sw_error err;
     sw_cull_tree t;
     sw_arena_init(&a, block, bytes);
     SW_CHECK(sw_cull_tree_build(&t, g_surfaces, n, g_patches, &a, &err) == SW_OK);
+    /* The nodes the bytes count are the nodes the build made. */
+    uint64_t nodes = 0;
+    for (uint32_t s = 0; s < n; s++)
+        nodes += sw_cull_tree_patch_nodes(g_surfaces[s].patch_count);
+    SW_CHECK_MSG(t.patch_node_count == nodes, "%u nodes built, %llu counted", t.patch_node_count,
+                 (unsigned long long)nodes);
+    SW_CHECK(sw_cull_tree_patch_nodes(0) == 0 && sw_cull_tree_patch_nodes(4) == 1 &&
+             sw_cull_tree_patch_nodes(5) == 3 && sw_cull_tree_patch_nodes(40) == 31);
     /* Median splits: at most ceil(log2) + 1 levels over the surfaces with
      * patches, and as many over the 40 patches of one (in leaves of 4). */
     SW_CHECK_MSG(t.depth <= 9 + 5, "depth %u", t.depth);
@@ -199,7 +209,7 @@ static void check_pack(const char *path)
         return;
     }
     uint32_t n = pack.surface_count;
-    size_t tree_bytes = (size_t)sw_cull_tree_arena_bytes(n, pack.meta->patch_count);
+    size_t tree_bytes = (size_t)sw_cull_tree_bytes_of(pack.surfaces, n);
     void *tree_block = malloc(tree_bytes + 4 * n * sizeof(double));
     sw_arena ta;
     sw_arena_init(&ta, tree_block, tree_bytes);
