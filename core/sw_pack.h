@@ -110,7 +110,7 @@ typedef struct sw_pack_header {       /* at offset 0, 64 bytes */
     uint32_t version;                 /* SW_PACK_VERSION */
     uint32_t byte_order;              /* SW_PACK_BYTE_ORDER_MARK */
     uint64_t total_size;              /* bytes in the file */
-    uint64_t runtime_bytes;           /* sw_pack_runtime_bytes(patch_count, walk): the arena
+    uint64_t runtime_bytes;           /* sw_pack_runtime_bytes(walk): the arena
                                          the runtime needs beside the pack's own bytes */
     uint32_t section_count;           /* 1..SW_PACK_MAX_SECTIONS */
     uint32_t section_table_offset;    /* 64: the table follows the header */
@@ -283,10 +283,6 @@ typedef struct sw_pack_instance {     /* 144 bytes */
     char name[56];                    /* NUL-terminated UTF-8 */
 } sw_pack_instance;
 
-/* Arena bytes the runtime keeps per patch beyond the pack itself (tessellation
- * level, visibility); the runtime asserts its per-patch state fits. */
-#define SW_RUNTIME_BYTES_PER_PATCH 16u
-
 /* A validated pack: typed views into the caller's bytes (not copied). */
 typedef struct sw_pack {
     const uint8_t *data;
@@ -374,13 +370,13 @@ static inline double sw_pack_patches_diagonal(const sw_pack_patch *patches, uint
     return sqrt(d);
 }
 
-/* runtime_bytes for a pack of patch_count patches whose walk takes
- * walk_bytes (sw_walk_arena_bytes of its Seam Graph, 0 without one): the
- * per-patch state and the walk, and 64 bytes of alignment. Not the pack's
+/* runtime_bytes for a pack whose walk takes walk_bytes (sw_walk_arena_bytes
+ * of its Seam Graph, 0 without one; every per-patch and per-surface state
+ * is in its pools), and 64 bytes of alignment. Not the pack's
  * own bytes: the runtime maps the file (sw_pack_map_checked) and copies it
  * into the arena only when it cannot (sw_pack_arena_bytes). Writer, signer
  * and reader all use it (PACK_FORMAT.md, runtime_bytes). */
-uint64_t sw_pack_runtime_bytes(uint32_t patch_count, uint64_t walk_bytes);
+uint64_t sw_pack_runtime_bytes(uint64_t walk_bytes);
 
 /* Arena bytes a pack of total_size bytes takes when it is copied into the
  * arena (sw_pack_load): the file, 64-byte aligned, and the alignment. */

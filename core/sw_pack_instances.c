@@ -159,7 +159,7 @@ uint64_t sw_pack_instanced_runtime_bytes(const sw_seam_graph *stored,
     if (counts[SW_SPACE_PATCHES] > UINT32_MAX)
         return UINT64_MAX;
     uint64_t walk = stored ? sw_walk_arena_bytes_placed(stored, surfaces, placed) : 0;
-    uint64_t bytes = sw_pack_runtime_bytes((uint32_t)counts[SW_SPACE_PATCHES], walk);
+    uint64_t bytes = sw_pack_runtime_bytes(walk);
     uint64_t expand = sw_pack_expand_runtime_bytes(stored != NULL, placed);
     return bytes > UINT64_MAX - expand ? UINT64_MAX : bytes + expand;
 }
@@ -168,8 +168,7 @@ uint64_t sw_pack_runtime_bytes_of(const sw_pack *pack)
 {
     const sw_seam_graph *g = pack->seam_header ? &pack->seam : NULL;
     if (!pack->instances)
-        return sw_pack_runtime_bytes(pack->meta->patch_count,
-                                     g ? sw_walk_arena_bytes(g, pack->surfaces) : 0);
+        return sw_pack_runtime_bytes(g ? sw_walk_arena_bytes(g, pack->surfaces) : 0);
     const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
                                     pack->instance_count, pack->patches };
     return sw_pack_instanced_runtime_bytes(g, pack->surfaces, &placed);
@@ -179,15 +178,14 @@ void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
 {
     const sw_seam_graph *g = pack->seam_header ? &pack->seam : NULL;
     if (!pack->instances) {
-        out->patch_state =
-            (uint64_t)pack->meta->patch_count * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
+        out->alignment = SW_PACK_ALIGN;
         out->placed = 0;
         sw_walk_pools(g, pack->surfaces, out->walk);
         return;
     }
     uint64_t counts[SW_SPACE_COUNT];
     sw_pack_placed_counts(pack->prototypes, pack->instances, pack->instance_count, counts);
-    out->patch_state = counts[SW_SPACE_PATCHES] * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN;
+    out->alignment = SW_PACK_ALIGN;
     const sw_walk_placed placed = { pack->prototypes, pack->prototype_count, pack->instances,
                                     pack->instance_count, pack->patches };
     out->placed = sw_pack_expand_runtime_bytes(g != NULL, &placed);
@@ -200,8 +198,8 @@ void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out)
 int sw_runtime_pool_list(const sw_runtime_pools *p, const char *names[SW_RUNTIME_POOL_COUNT],
                          uint64_t bytes[SW_RUNTIME_POOL_COUNT])
 {
-    const char *fixed[2] = { "patch state", "placed scene" };
-    const uint64_t sizes[2] = { p->patch_state, p->placed };
+    const char *fixed[2] = { "alignment", "placed scene" };
+    const uint64_t sizes[2] = { p->alignment, p->placed };
     int n = 0;
     for (int i = 0; i < 2; i++)
         names[n] = fixed[i], bytes[n++] = sizes[i];

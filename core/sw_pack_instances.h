@@ -65,18 +65,17 @@ uint64_t sw_pack_instanced_runtime_bytes(const sw_seam_graph *stored,
 /* runtime_bytes of a validated pack, placed or not. */
 uint64_t sw_pack_runtime_bytes_of(const sw_pack *pack);
 
-/* A validated pack's runtime_bytes pool by pool (they add up to it): each
- * placed patch's state (and the 64 bytes of alignment), the placed scene's
- * expansion (version 2; 0 otherwise) and the walk's pools
- * (sw_walk_memory.h). */
+/* A validated pack's runtime_bytes pool by pool (they add up to it): the
+ * 64 bytes of alignment, the placed scene's expansion (version 2; 0
+ * otherwise) and the walk's pools (sw_walk_memory.h). */
 typedef struct sw_runtime_pools {
-    uint64_t patch_state, placed;
+    uint64_t alignment, placed;
     uint64_t walk[SW_WALK_POOL_COUNT];
 } sw_runtime_pools;
 void sw_pack_runtime_pools(const sw_pack *pack, sw_runtime_pools *out);
 
 /* Those pools as a list of names and bytes, in runtime_bytes' order (the
- * patch state, the placed scene, then the walk's): returns
+ * alignment, the placed scene, then the walk's): returns
  * SW_RUNTIME_POOL_COUNT. */
 enum { SW_RUNTIME_POOL_COUNT = 2 + SW_WALK_POOL_COUNT };
 int sw_runtime_pool_list(const sw_runtime_pools *pools, const char *names[SW_RUNTIME_POOL_COUNT],

@@ -178,11 +178,11 @@ sw_status sw_pack_find_group(const sw_pack *pack, const uint32_t *types,
     return SW_OK;
 }
 
-uint64_t sw_pack_runtime_bytes(uint32_t patch_count, uint64_t walk_bytes)
+uint64_t sw_pack_runtime_bytes(uint64_t walk_bytes)
 {
     if (walk_bytes > UINT64_MAX / 4)
         return UINT64_MAX; /* no real pack; saturate instead of wrapping */
-    return (uint64_t)patch_count * SW_RUNTIME_BYTES_PER_PATCH + SW_PACK_ALIGN + walk_bytes;
+    return SW_PACK_ALIGN + walk_bytes;
 }
 
 uint64_t sw_pack_arena_bytes(uint64_t total_size)
@@ -724,16 +724,15 @@ static sw_status check_runtime_bytes(const sw_pack *pack, sw_error *err)
             pack->sections[i].type == SW_SECTION_INSTANCES)
             return SW_OK;
     uint64_t walk = pack->seam_header ? sw_walk_arena_bytes(&pack->seam, pack->surfaces) : 0;
-    uint64_t expected = sw_pack_runtime_bytes(pack->meta->patch_count, walk);
+    uint64_t expected = sw_pack_runtime_bytes(walk);
     uint64_t got = pack->header->runtime_bytes;
     if (got < expected)
         return sw_error_set(err, SW_ERR_FORMAT,
-                            "header.runtime_bytes: %llu, expected at least %llu for %u "
-                            "patches and a walk of %llu bytes (its seamwalk-pack's "
-                            "runtime took less than this one: build it again)",
+                            "header.runtime_bytes: %llu, expected at least %llu for a walk "
+                            "of %llu bytes (its seamwalk-pack's runtime took less than this "
+                            "one: build it again)",
                             (unsigned long long)pack->header->runtime_bytes,
-                            (unsigned long long)expected, (unsigned)pack->meta->patch_count,
-                            (unsigned long long)walk);
+                            (unsigned long long)expected, (unsigned long long)walk);
     return SW_OK;
 }
 

@@ -496,7 +496,7 @@ static inline uint8_t *add_unknown_section(const uint8_t *bytes, size_t size, si
         .type = 99, .offset = at, .size = 64, .checksum = XXH3_64bits(out + at, 64) };
     h->section_count++;
     h->total_size = *new_size;
-    h->runtime_bytes = sw_pack_runtime_bytes(3, 0); /* the sample has no graph */
+    h->runtime_bytes = sw_pack_runtime_bytes(0); /* the sample has no graph */
     reseal(out);
     return out;
 }

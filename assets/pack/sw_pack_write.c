@@ -225,7 +225,7 @@ static uint64_t walk_bytes(const sw_pack_contents *c)
 static uint64_t runtime_bytes(const sw_pack_contents *c)
 {
     if (!c->instances)
-        return sw_pack_runtime_bytes(c->meta.patch_count, walk_bytes(c));
+        return sw_pack_runtime_bytes(walk_bytes(c));
     for (uint32_t i = 0; i < c->instance_count; i++)
         if (c->instances[i].prototype >= c->prototype_count)
             return 0; /* the reader refuses the instance first */
