@@ -77,7 +77,17 @@ uint64_t sw_walk_scratch_bytes(const sw_walk_sizes *m)
 /* Each allocation as sw_seam_walk_init makes it: bytes + 1, 64-aligned. */
 static uint64_t take(uint64_t bytes) { return sw_arena_worst_case(bytes + 1, 64); }
 
-uint64_t sw_walk_threads_bytes(uint32_t surface_count)
+uint32_t sw_walk_retire_capacity(uint32_t surface_count, uint32_t cache_vertices)
+{
+    uint64_t meshes = 2ull * surface_count + 2, units = cache_vertices / SW_SEAM_CACHE_VERTEX_UNIT;
+    meshes = units < meshes ? units : meshes;
+    uint32_t c = 1;
+    while (c < meshes)
+        c *= 2;
+    return c;
+}
+
+uint64_t sw_walk_threads_bytes(uint32_t surface_count, uint32_t cache_vertices)
 {
     uint64_t n = surface_count + 1ull;
     /* The walk's: this frame's bound, busy, since when, the batch, the
@@ -87,7 +97,7 @@ uint64_t sw_walk_threads_bytes(uint32_t surface_count)
     return walk + sw_arena_worst_case(n * 2 * sizeof(float), 64) +
            sw_arena_worst_case(n * sizeof(sw_seam_entry), 64) + sw_arena_worst_case(n, 64) +
            sw_arena_worst_case(n * sizeof(sw_publish_slot), 64) +
-           sw_retire_ring_arena_bytes(sw_walk_retire_capacity(surface_count));
+           sw_retire_ring_arena_bytes(sw_walk_retire_capacity(surface_count, cache_vertices));
 }
 
 const char *const sw_walk_pool_names[SW_WALK_POOL_COUNT] = {
@@ -119,7 +129,7 @@ static void walk_pools(const sw_seam_graph *g, uint64_t patches, uint64_t patch_
     pool[SW_WALK_POOL_OUTPUT] = 2 * take(v * 3 * sizeof(float)) + take(v * 2 * sizeof(float)) +
                                 take(v * sizeof(uint32_t)) +
                                 take(SW_WALK_INDICES * sizeof(uint16_t));
-    pool[SW_WALK_POOL_THREADS] = sw_walk_threads_bytes((uint32_t)n);
+    pool[SW_WALK_POOL_THREADS] = sw_walk_threads_bytes((uint32_t)n, cache);
     pool[SW_WALK_POOL_CACHE] = sw_seam_cache_arena_bytes((uint32_t)n, cache,
                                                          sw_walk_cache_indices(cache));
 }

@@ -94,17 +94,16 @@ void sw_walk_pools_placed(const sw_seam_graph *stored, const sw_pack_surface *su
 /* Of those, the state the tessellation workers share (sw_seam_workers.h),
  * whatever their number: per surface a job (two floats), the worker's
  * result entry, its no-room flag and a publish slot (one atomic pointer),
- * and the ring of retired meshes (two per surface at most: the drawn one
- * and the one replacing it). Each worker's own buffers depend on the
+ * and the ring of retired meshes (sw_walk_retire_capacity), over a cache
+ * of cache_vertices vertices. Each worker's own buffers depend on the
  * option --workers and are counted by the runtime on top. */
-uint64_t sw_walk_threads_bytes(uint32_t surface_count);
-static inline uint32_t sw_walk_retire_capacity(uint32_t surface_count)
-{
-    uint32_t c = 1;
-    while (c < 2u * surface_count + 2u)
-        c *= 2;
-    return c;
-}
+uint64_t sw_walk_threads_bytes(uint32_t surface_count, uint32_t cache_vertices);
+
+/* The ring of retired meshes: a power of two no smaller than the meshes
+ * that can wait in it, two per surface at most (the drawn one and the one
+ * replacing it) and no more than the vertex pool's units (a retired mesh
+ * keeps its block, of a unit at least, until it is freed). */
+uint32_t sw_walk_retire_capacity(uint32_t surface_count, uint32_t cache_vertices);
 
 /* Of those: the tessellator's scratch, for its own sub-arena. */
 uint64_t sw_walk_scratch_bytes(const sw_walk_sizes *m);

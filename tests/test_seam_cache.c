@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_handoff.h"
 #include "sw_pack.h"
 #include "sw_seam_cache.h"
 #include "sw_seam_walk.h"
@@ -128,6 +129,29 @@ static void test_cache_size_follows_the_patches(void)
     }
 }
 
+/* The retire ring holds every mesh that can wait in it: with more
+ * surfaces than the vertex pool has units, as many as it has units (each
+ * waiting mesh keeps its block), the smallest meshes all retired at once. */
+static void test_retire_ring_holds_every_block(void)
+{
+    sw_seam_cache c;
+    sw_arena a;
+    uint32_t surfaces = 1000, vertices = 1024;
+    init(&c, &a, surfaces, vertices);
+    uint32_t capacity = sw_walk_retire_capacity(surfaces, vertices);
+    SW_CHECK_MSG(capacity == vertices / SW_SEAM_CACHE_VERTEX_UNIT, "capacity %u", capacity);
+    SW_CHECK(sw_walk_retire_capacity(10, vertices) == 32);   /* two a surface, and 2 */
+    sw_retire_ring r;
+    SW_CHECK(sw_retire_ring_init(&r, capacity, &a, NULL) == SW_OK);
+    uint32_t vb, ib, meshes = 0, refused = 0;
+    while (sw_buddy_alloc(&c.vertex_pool, 1, &vb)) {
+        SW_CHECK(sw_buddy_alloc(&c.index_pool, 1, &ib));
+        refused += !sw_retire_ring_put(&r, (sw_retired){ vb, ib, 1 });
+        meshes++;
+    }
+    SW_CHECK_MSG(meshes == capacity && refused == 0, "%u meshes, %u refused", meshes, refused);
+}
+
 /* The fuzz seed with a Seam Graph: copied into an arena of exactly its
  * runtime_bytes and the copy's sw_pack_arena_bytes, and walked there. */
 static void test_runtime_bytes_hold_pack_and_walk(const char *seed)
@@ -165,6 +189,7 @@ int main(int argc, char **argv)
     SW_RUN(test_surfaces_in_view_are_never_evicted);
     SW_RUN(test_every_surface_fits_at_once);
     SW_RUN(test_cache_size_follows_the_patches);
+    SW_RUN(test_retire_ring_holds_every_block);
     if (argc == 2)
         test_runtime_bytes_hold_pack_and_walk(argv[1]);
     else

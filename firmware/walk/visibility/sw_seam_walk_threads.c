@@ -110,8 +110,9 @@ static double estimate_tris(const sw_seam_walk *w, uint32_t s, float bound)
 
 /* Surface s's mesh given up with the last frame that drew it (its blocks
  * are free once that frame has finished: at once, or through the retire
- * ring) and the entry left empty. The ring holds two meshes a surface, so
- * it cannot be full. */
+ * ring) and the entry left empty. The ring holds two meshes a surface, or
+ * as many as the vertex pool has units (each waiting mesh keeps a block),
+ * so it cannot be full. */
 static void retire_mesh(sw_seam_walk *w, uint32_t s)
 {
     sw_seam_entry *e = &w->cache.entries[s];

@@ -236,7 +236,8 @@ static sw_status init_shared(sw_seam_workers *p, uint32_t n, sw_arena *arena, sw
     memset(p->no_room, 0, n + 1ull);
     for (uint32_t s = 0; s <= n; s++)
         atomic_init(&p->slots[s], NULL);
-    return sw_retire_ring_init(&p->retire, sw_walk_retire_capacity(n), arena, err);
+    return sw_retire_ring_init(&p->retire, sw_walk_retire_capacity(n, p->cache->vertices), arena,
+                               err);
 }
 
 sw_status sw_seam_workers_init(sw_seam_workers *p, uint32_t count, const sw_pack *pack,
