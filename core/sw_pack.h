@@ -318,6 +318,13 @@ typedef struct sw_pack {
                                                     points, in their frames: a patch's
                                                     are placed by its part's transform
                                                     (sw_pack_patch_control) */
+    const uint32_t *stored_surface;              /* surface_count, or NULL: surface s is its
+                                                    prototype's stored surface
+                                                    stored_surface[s], whose static levels
+                                                    it shares (levels.surface_levels NULL,
+                                                    levels.levels the stored records:
+                                                    sw_pack_surface_levels) */
+    const uint32_t *stored_surface_levels;       /* the stored surfaces' surface_levels */
     /* The Seam Graph: views into the SEAM_* sections, every pointer NULL and
      * every count 0 when the pack has none. */
     const sw_pack_seam *seam_header;             /* NULL when absent */

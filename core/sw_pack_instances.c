@@ -70,7 +70,7 @@ enum { A_META, A_SEAM, A_LEVELS, A_PARTS, A_TRANSFORMS, A_PATCHES, A_CONTROL, A_
        A_SURFACES, A_DOMAINS, A_VERTICES, A_SLOTS, A_LOOPS, A_EDGES, A_COLLAPSES, A_SLOT_REFS,
        A_SURFACE_LOOPS, A_LEVEL_RECORDS, A_SURFACE_LEVELS, A_LEVEL_VERTICES, A_SUPERS,
        A_MEMBERS, A_SUPER_OF, A_PART_LEVELS, A_PIECE_LEVELS, A_PIECE_OF, A_PL_VERTICES,
-       A_COUNT };
+       A_STORED_SURFACE, A_COUNT };
 
 static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int runtime, uint64_t n[A_COUNT],
                         uint64_t size[A_COUNT])
@@ -83,7 +83,8 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int runtime, uint64_t 
         c[SW_SPACE_SEAM_LOOPS], c[SW_SPACE_SEAM_EDGES], c[SW_SPACE_SEAM_COLLAPSES],
         c[SW_SPACE_SEAM_SLOT_REFS], surfaces + 1, c[SW_SPACE_LEVELS], surfaces + 1,
         c[SW_SPACE_LEVEL_VERTICES], c[SW_SPACE_SUPERS], c[SW_SPACE_SUPER_MEMBERS], surfaces,
-        c[SW_SPACE_PART_LEVELS], c[SW_SPACE_PIECES] + 1, surfaces, c[SW_SPACE_PART_LEVEL_VERTICES] };
+        c[SW_SPACE_PART_LEVELS], c[SW_SPACE_PIECES] + 1, surfaces, c[SW_SPACE_PART_LEVEL_VERTICES],
+        surfaces };
     const uint64_t bytes[A_COUNT] = {
         sizeof(sw_pack_meta), sizeof(sw_pack_seam), sizeof(sw_pack_levels), sizeof(sw_pack_part),
         16 * sizeof(float), sizeof(sw_pack_patch), 4 * sizeof(float), sizeof(sw_pack_adjacency),
@@ -92,15 +93,18 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int runtime, uint64_t 
         sizeof(sw_seam_collapse), sizeof(uint32_t), sizeof(uint32_t), sizeof(sw_level),
         sizeof(uint32_t), sizeof(sw_level_vertex), sizeof(sw_super_surface), sizeof(uint32_t),
         sizeof(uint32_t), sizeof(sw_part_level), sizeof(uint32_t), sizeof(uint32_t),
-        sizeof(sw_level_vertex) };
+        sizeof(sw_level_vertex), sizeof(uint32_t) };
     for (int a = 0; a < A_COUNT; a++)
         n[a] = counts[a], size[a] = bytes[a];
-    /* The runtime's: the levels' vertices and the control points shared,
+    /* The runtime's: the levels' vertices, the static levels' records and
+     * the control points shared (a surface's stored one named instead),
      * and what the walk never reads (the seam edges, the patches'
-     * adjacency) left out. */
+     * adjacency) left out; the tools' name no stored surface. */
     if (runtime)
         n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0, n[A_CONTROL] = 0, n[A_EDGES] = 0,
-        n[A_ADJACENCY] = 0;
+        n[A_ADJACENCY] = 0, n[A_LEVEL_RECORDS] = 0, n[A_SURFACE_LEVELS] = 0;
+    else
+        n[A_STORED_SURFACE] = 0;
 }
 
 /* The seam arrays a placed scene leaves to the walk's fronts
@@ -254,6 +258,32 @@ void sw_pack_level_vertices(const sw_pack *pack, uint32_t s, const sw_level *rec
     sw_pack_move_level_vertices(&place, src, rec->vertex_count, out);
 }
 
+void sw_pack_surface_levels(const sw_pack *pack, uint32_t s, uint32_t *first, uint32_t *end)
+{
+    const uint32_t *by_surface = pack->stored_surface ? pack->stored_surface_levels
+                                                      : pack->levels.surface_levels;
+    *first = *end = 0;
+    if (!by_surface || s >= pack->levels.surface_count)
+        return;
+    uint32_t at = pack->stored_surface ? pack->stored_surface[s] : s;
+    *first = by_surface[at], *end = by_surface[at + 1];
+}
+
+sw_level sw_pack_level(const sw_pack *pack, uint32_t s, uint32_t k)
+{
+    sw_level rec = pack->levels.levels[k];
+    if (!pack->stored_surface)
+        return rec;
+    const float *t = pack->part_transforms + 16 * (size_t)pack->surfaces[s].part;
+    if (moves(t)) {   /* sw_pack_move_levels' arithmetic: the same floats */
+        double scale = sw_instance_scale(t);
+        rec.error = (float)(rec.error * scale);
+        rec.made_bound = (float)(rec.made_bound * scale);
+    }
+    rec.surface = s;
+    return rec;
+}
+
 const float *sw_pack_patch_control(const sw_pack *pack, uint32_t i, float *room)
 {
     const sw_pack_patch *p = &pack->patches[i];
@@ -328,6 +358,10 @@ static void place_model(const sw_pack *pack, placed *d, const sw_pack_prototype 
                                AT(d, A_ADJACENCY, sw_pack_adjacency, SW_SPACE_ADJACENCY));
     if (!pack->surfaces)
         return;
+    uint32_t *stored = d->n[A_STORED_SURFACE] ? AT(d, A_STORED_SURFACE, uint32_t, SW_SPACE_SURFACES)
+                                               : NULL;
+    for (uint32_t s = 0; stored && s < p->count[SW_SPACE_SURFACES]; s++)
+        stored[s] = p->first[SW_SPACE_SURFACES] + s;
     sw_pack_move_surfaces(m, &pack->surfaces[p->first[SW_SPACE_SURFACES]],
                           p->count[SW_SPACE_SURFACES],
                           AT(d, A_SURFACES, sw_pack_surface, SW_SPACE_SURFACES));
@@ -375,17 +409,16 @@ static void place_levels(const sw_pack *pack, placed *d, const sw_pack_prototype
                          const sw_pack_move *m)
 {
     const sw_levels *l = &pack->levels;
-    if (l->levels) {
+    if (l->levels && !d->runtime) {   /* the runtime shares them: sw_pack_level */
         sw_pack_move_levels(m, l->levels + p->first[SW_SPACE_LEVELS], p->count[SW_SPACE_LEVELS],
                             AT(d, A_LEVEL_RECORDS, sw_level, SW_SPACE_LEVELS));
         sw_pack_move_indices(m, SW_SPACE_LEVELS, l->surface_levels + p->first[SW_SPACE_SURFACES],
                              p->count[SW_SPACE_SURFACES],
                              AT(d, A_SURFACE_LEVELS, uint32_t, SW_SPACE_SURFACES));
-        if (!d->runtime)
-            sw_pack_move_level_vertices(m, l->vertices + p->first[SW_SPACE_LEVEL_VERTICES],
-                                        p->count[SW_SPACE_LEVEL_VERTICES],
-                                        AT(d, A_LEVEL_VERTICES, sw_level_vertex,
-                                           SW_SPACE_LEVEL_VERTICES));
+        sw_pack_move_level_vertices(m, l->vertices + p->first[SW_SPACE_LEVEL_VERTICES],
+                                    p->count[SW_SPACE_LEVEL_VERTICES],
+                                    AT(d, A_LEVEL_VERTICES, sw_level_vertex,
+                                       SW_SPACE_LEVEL_VERTICES));
     }
     const sw_supers *su = &pack->supers;
     if (su->supers) {
@@ -443,7 +476,7 @@ static void fill_headers(const sw_pack *pack, placed *d, float tolerance)
     if (pack->levels_header) {
         sw_pack_levels *l = d->a[A_LEVELS];
         *l = *pack->levels_header;
-        l->level_count = (uint32_t)d->n[A_LEVEL_RECORDS];
+        l->level_count = d->runtime ? pack->levels.level_count : (uint32_t)d->n[A_LEVEL_RECORDS];
         l->vertex_count = d->runtime ? pack->levels.vertex_count
                                           : (uint32_t)d->n[A_LEVEL_VERTICES];
         l->surface_count = (uint32_t)d->n[A_SURFACES];
@@ -463,6 +496,10 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
     out->patches = d->a[A_PATCHES];
     out->control = d->runtime ? pack->control : d->a[A_CONTROL];
     out->control_local = d->runtime;
+    if (d->runtime && pack->surfaces) {
+        out->stored_surface = d->a[A_STORED_SURFACE];
+        out->stored_surface_levels = pack->levels.surface_levels;
+    }
     out->adjacency = d->n[A_ADJACENCY] ? d->a[A_ADJACENCY] : NULL;
     uint32_t surfaces = (uint32_t)d->n[A_SURFACES];
     if (pack->surfaces) {
@@ -487,10 +524,12 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
     }
     if (pack->levels_header) {
         out->levels_header = d->a[A_LEVELS];
-        out->levels.levels = d->a[A_LEVEL_RECORDS];
-        out->levels.surface_levels = d->a[A_SURFACE_LEVELS];
+        /* The runtime's share the stored records: sw_pack_surface_levels. */
+        out->levels.levels = d->runtime ? pack->levels.levels : d->a[A_LEVEL_RECORDS];
+        out->levels.surface_levels = d->runtime ? NULL : d->a[A_SURFACE_LEVELS];
         out->levels.vertices = d->runtime ? pack->levels.vertices : d->a[A_LEVEL_VERTICES];
-        out->levels.level_count = (uint32_t)d->n[A_LEVEL_RECORDS];
+        out->levels.level_count = d->runtime ? pack->levels.level_count
+                                             : (uint32_t)d->n[A_LEVEL_RECORDS];
         out->levels.vertex_count = d->runtime ? pack->levels.vertex_count
                                                    : (uint32_t)d->n[A_LEVEL_VERTICES];
         out->levels.surface_count = surfaces;
@@ -546,7 +585,8 @@ static sw_status expand(const sw_pack *pack, int runtime, sw_arena *arena, sw_pa
             d.at[s] += shared_space(s, runtime) ? 0 : p->count[s];
     }
     ((uint32_t *)d.a[A_SURFACE_LOOPS])[d.n[A_SURFACES]] = (uint32_t)d.n[A_LOOPS];
-    ((uint32_t *)d.a[A_SURFACE_LEVELS])[d.n[A_SURFACES]] = (uint32_t)d.n[A_LEVEL_RECORDS];
+    if (!runtime)
+        ((uint32_t *)d.a[A_SURFACE_LEVELS])[d.n[A_SURFACES]] = (uint32_t)d.n[A_LEVEL_RECORDS];
     ((uint32_t *)d.a[A_PIECE_LEVELS])[d.n[A_PIECE_LEVELS] - 1] = (uint32_t)d.n[A_PART_LEVELS];
     fill_headers(pack, &d, tolerance);
     fill_view(pack, &d, out);

@@ -98,7 +98,10 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
  * places a surface's or a piece's with its part's transform
  * (out->part_transforms), as the stand-ins are made
  * (firmware/walk/visibility/sw_seam_standin.c) and the part levels drawn
- * (the GL thread's model matrix). The patches' control points are shared
+ * (the GL thread's model matrix). So are the static levels' records
+ * (out->stored_surface names each surface's stored one, whose records
+ * sw_pack_surface_levels and sw_pack_level read, scaled as drawn;
+ * out->levels.surface_levels is NULL). The patches' control points are shared
  * so too (out->control_local = 1, out->control the pack's own CONTROL,
  * which each patch's first_control indexes): whoever reads them places a
  * patch's with sw_pack_patch_control; the patches' boxes are the placed
@@ -117,6 +120,17 @@ sw_status sw_pack_expand_shared(const sw_pack *pack, sw_arena *arena, sw_pack *o
  * as stored. */
 void sw_pack_level_vertices(const sw_pack *pack, uint32_t s, const sw_level *rec,
                             sw_level_vertex *out);
+
+/* Surface s's static levels: the records [*first, *end) of
+ * pack->levels.levels, none when it has none. Where pack shares them with
+ * its prototype (stored_surface), they are the prototype's surface's
+ * stored records, read with sw_pack_level; else the pack's own. */
+void sw_pack_surface_levels(const sw_pack *pack, uint32_t s, uint32_t *first, uint32_t *end);
+
+/* Record k of surface s's levels as drawn: where shared, its error and
+ * made_bound scaled by s's part's transform as sw_pack_expand scales them
+ * (the same floats) and its surface s; else the pack's record. */
+sw_level sw_pack_level(const sw_pack *pack, uint32_t s, uint32_t k);
 
 /* The control points of patch i as drawn ((degree_u + 1) (degree_v + 1)
  * of them, 4 floats each): where pack shares them with its prototype

@@ -240,7 +240,12 @@ static void test_shared_levels_place_as_copied(void)
     SW_CHECK(sw_pack_expand(&pack, &wa, &whole, &err) == SW_OK && !whole.level_vertices_local);
     SW_CHECK_MSG(sw_pack_expand_shared(&pack, &sa, &shared, &err) == SW_OK, "%s", err.message);
     SW_CHECK(shared.level_vertices_local && shared.levels.vertices == pack.levels.vertices);
-    SW_CHECK(shared.levels.level_count == whole.levels.level_count);
+    /* The static levels' records are the prototypes' (a surface names its
+     * stored one), not copied per instance. */
+    SW_CHECK(shared.levels.levels == pack.levels.levels && !shared.levels.surface_levels &&
+             shared.stored_surface && !whole.stored_surface);
+    SW_CHECK(shared.levels.level_count == pack.levels.level_count &&
+             whole.levels.level_count > pack.levels.level_count);
     /* What the walk never reads is left out; the rest of the graph is the
      * copying expansion's. */
     SW_CHECK(whole.seam.edge_count > 0 && whole.meta->adjacency_count > 0);
@@ -251,21 +256,32 @@ static void test_shared_levels_place_as_copied(void)
                     whole.seam.vertex_count * sizeof *whole.seam.vertices) == 0 &&
              memcmp(shared.seam.slots, whole.seam.slots,
                     whole.seam.slot_count * sizeof *whole.seam.slots) == 0);
-    uint32_t compared = 0, differ = 0;
+    uint32_t compared = 0, differ = 0, scaled = 0;
     sw_level_vertex out[256];
-    for (uint32_t s = 0; s < shared.surface_count; s++)
-        for (uint32_t k = shared.levels.surface_levels[s]; k < shared.levels.surface_levels[s + 1];
-             k++) {
-            const sw_level *rs = &shared.levels.levels[k], *rw = &whole.levels.levels[k];
-            SW_CHECK(rs->vertex_count == rw->vertex_count && rs->error == rw->error);
-            if (rs->vertex_count > 256)
+    for (uint32_t s = 0; s < shared.surface_count; s++) {
+        uint32_t fs, es, fw, ew;
+        sw_pack_surface_levels(&shared, s, &fs, &es);
+        sw_pack_surface_levels(&whole, s, &fw, &ew);
+        SW_CHECK(es - fs == ew - fw && es > fs);
+        for (uint32_t j = 0; j < es - fs && j < ew - fw; j++) {
+            const sw_level rs = sw_pack_level(&shared, s, fs + j);
+            const sw_level *rw = &whole.levels.levels[fw + j];
+            /* the placed record's every field but where its vertices are */
+            SW_CHECK(rs.surface == rw->surface && rs.error == rw->error &&
+                     rs.made_bound == rw->made_bound && rs.vertex_count == rw->vertex_count &&
+                     rs.first_index == rw->first_index && rs.index_count == rw->index_count &&
+                     rs.first_chain == rw->first_chain);
+            scaled += rs.error != shared.levels.levels[fs + j].error;
+            if (rs.vertex_count > 256)
                 continue;
-            sw_pack_level_vertices(&shared, s, rs, out);
+            sw_pack_level_vertices(&shared, s, &rs, out);
             differ += memcmp(out, whole.levels.vertices + rw->first_vertex,
-                             rs->vertex_count * sizeof *out) != 0;
+                             rs.vertex_count * sizeof *out) != 0;
             compared++;
         }
-    SW_CHECK_MSG(compared > 0 && differ == 0, "%u of %u levels placed otherwise", differ, compared);
+    }
+    SW_CHECK_MSG(compared > 0 && differ == 0 && scaled > 0,
+                 "%u of %u levels placed otherwise (%u scaled)", differ, compared, scaled);
     /* The part levels' too, placed by their piece's part's transform (the
      * GL thread's model matrix does it on the unit). */
     SW_CHECK(shared.part_levels.vertices == pack.part_levels.vertices &&

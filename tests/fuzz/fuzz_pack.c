@@ -104,9 +104,13 @@ static float walk_levels(const sw_pack *pack)
     const sw_levels *l = &pack->levels;
     float sum = 0;
     static uint32_t tris[3 * 2 * 64];
-    for (uint32_t s = 0; l->surface_levels && s < l->surface_count; s++)
-        for (uint32_t k = l->surface_levels[s]; k < l->surface_levels[s + 1]; k++) {
-            const sw_level *lv = &l->levels[k];
+    for (uint32_t s = 0; l->levels && s < l->surface_count; s++) {
+        uint32_t first, end;
+        sw_pack_surface_levels(pack, s, &first, &end);   /* shared where the runtime's */
+        for (uint32_t k = first; k < end; k++) {
+            const sw_level placed = sw_pack_level(pack, s, k);
+            const sw_level *lv = &placed;
+            sum += lv->error;
             const sw_level_vertex *v = &l->vertices[lv->first_vertex];
             for (uint32_t i = 0; i < lv->index_count; i++)
                 sum += v[l->indices[lv->first_index + i]].p[0];
@@ -122,6 +126,7 @@ static float walk_levels(const sw_pack *pack)
                                                   period, tris);
             }
         }
+    }
     return sum;
 }
 

@@ -71,16 +71,16 @@ float sw_seam_standin_worth(const sw_level *level, int silhouette)
 
 uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound, int silhouette)
 {
-    const sw_levels *lv = &pack->levels;
-    if (!lv->surface_levels || s >= lv->surface_count)
-        return UINT32_MAX;
-    uint32_t first = lv->surface_levels[s], end = lv->surface_levels[s + 1];
-    uint32_t loops = pack->seam.surface_loops[s + 1] - pack->seam.surface_loops[s];
+    uint32_t first, end;
+    sw_pack_surface_levels(pack, s, &first, &end);
+    uint32_t loops = first < end ? pack->seam.surface_loops[s + 1] - pack->seam.surface_loops[s]
+                                 : 0;
     uint32_t best = UINT32_MAX;
     for (uint32_t k = first; k < end; k++) {
-        if (!whole(lv, k, loops))
+        if (!whole(&pack->levels, k, loops))
             continue;
-        if (best == UINT32_MAX || sw_seam_standin_worth(&lv->levels[k], silhouette) <= bound)
+        sw_level rec = sw_pack_level(pack, s, k);
+        if (best == UINT32_MAX || sw_seam_standin_worth(&rec, silhouette) <= bound)
             best = k;
     }
     return best != UINT32_MAX ? best : first < end ? first : UINT32_MAX;
@@ -88,12 +88,12 @@ uint32_t sw_seam_standin_level(const sw_pack *pack, uint32_t s, float bound, int
 
 uint32_t sw_seam_standin_coarser(const sw_pack *pack, uint32_t s, uint32_t level)
 {
-    const sw_levels *lv = &pack->levels;
-    if (!lv->surface_levels || s >= lv->surface_count)
-        return UINT32_MAX;
-    uint32_t loops = pack->seam.surface_loops[s + 1] - pack->seam.surface_loops[s];
-    for (uint32_t k = level + 1; k < lv->surface_levels[s + 1]; k++)
-        if (k > lv->surface_levels[s] && whole(lv, k, loops))
+    uint32_t first, end;
+    sw_pack_surface_levels(pack, s, &first, &end);
+    uint32_t loops = first < end ? pack->seam.surface_loops[s + 1] - pack->seam.surface_loops[s]
+                                 : 0;
+    for (uint32_t k = level + 1; k < end; k++)
+        if (k > first && whole(&pack->levels, k, loops))
             return k;
     return UINT32_MAX;
 }
@@ -235,7 +235,7 @@ void sw_seam_standin_estimate(const sw_pack *pack, uint32_t s, uint32_t level,
                               uint32_t *vertices, uint32_t *indices)
 {
     const sw_seam_graph *g = &pack->seam;
-    const sw_level *rec = &pack->levels.levels[level];
+    const sw_level *rec = &pack->levels.levels[level];   /* counts alone: not placed */
     uint64_t n = rec->vertex_count, idx = rec->index_count;
     for (uint32_t i = 0; i < g->surface_loops[s + 1] - g->surface_loops[s]; i++) {
         uint32_t points = pack->levels.chains[rec->first_chain + i].point_count;
@@ -250,7 +250,8 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_fronts *fronts,
                          sw_seam_place_fn place, void *place_ctx, sw_seam_entry *e)
 {
     const sw_levels *lv = &m->pack->levels;
-    const sw_level *rec = &lv->levels[level];
+    const sw_level placed = sw_pack_level(m->pack, s, level);
+    const sw_level *rec = &placed;
     const sw_seam_graph *g = &m->pack->seam;
     memset(e, 0, sizeof *e);
     e->made_bound = e->error_bound = rec->error;

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "sw_pack_instances.h"
 #include "sw_seam_surface.h"
 #include "sw_seam_walk_internal.h"
 
@@ -121,10 +122,11 @@ static uint32_t level_for_target(const sw_seam_walk *w, uint32_t s)
 /* The level announced for s (w->standin_error), or UINT32_MAX. */
 static uint32_t announced_level(const sw_seam_walk *w, uint32_t s)
 {
-    const sw_levels *lv = &w->pack->levels;
-    if (s < lv->surface_count && isfinite(w->standin_error[s]))
-        for (uint32_t k = lv->surface_levels[s]; k < lv->surface_levels[s + 1]; k++)
-            if (lv->levels[k].error == w->standin_error[s])
+    uint32_t first, end;
+    sw_pack_surface_levels(w->pack, s, &first, &end);
+    if (isfinite(w->standin_error[s]))
+        for (uint32_t k = first; k < end; k++)
+            if (sw_pack_level(w->pack, s, k).error == w->standin_error[s])
                 return k;
     return UINT32_MAX;
 }
@@ -132,9 +134,10 @@ static uint32_t announced_level(const sw_seam_walk *w, uint32_t s)
 float sw_seam_walk_standin_worth(const sw_seam_walk *w, uint32_t s)
 {
     uint32_t k = announced_level(w, s);
-    return k != UINT32_MAX
-               ? sw_seam_standin_worth(&w->pack->levels.levels[k], may_show_silhouette(w, s))
-               : INFINITY;
+    if (k == UINT32_MAX)
+        return INFINITY;
+    sw_level rec = sw_pack_level(w->pack, s, k);
+    return sw_seam_standin_worth(&rec, may_show_silhouette(w, s));
 }
 
 int sw_seam_walk_leaner_keeps_neighbours(const sw_seam_walk *w, uint32_t s, float bound)
@@ -169,7 +172,7 @@ void sw_seam_walk_standin_announce(sw_seam_walk *w, uint32_t s)
     uint32_t level = level_for_target(w, s);
     if (level == UINT32_MAX)
         return;
-    float error = w->pack->levels.levels[level].error;
+    float error = sw_pack_level(w->pack, s, level).error;
     float border = standin_border(w, s, error);
     if (error == w->standin_error[s] && border == w->standin_border[s])
         return;
