@@ -323,8 +323,12 @@ typedef struct sw_pack {
                                                     stored_surface[s], whose static levels
                                                     it shares (levels.surface_levels NULL,
                                                     levels.levels the stored records:
-                                                    sw_pack_surface_levels) */
-    const uint32_t *stored_surface_levels;       /* the stored surfaces' surface_levels */
+                                                    sw_pack_surface_levels) and whose
+                                                    patches' domains (patch_domains NULL:
+                                                    sw_pack_domain_of) */
+    const uint32_t *stored_surface_levels;       /* the stored surfaces' surface_levels, */
+    const sw_pack_surface *stored_surfaces;      /* the stored surfaces, */
+    const sw_pack_patch_domain *stored_domains;  /* and their patches' domains */
     /* The Seam Graph: views into the SEAM_* sections, every pointer NULL and
      * every count 0 when the pack has none. */
     const sw_pack_seam *seam_header;             /* NULL when absent */

@@ -96,13 +96,14 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int runtime, uint64_t 
         sizeof(sw_level_vertex), sizeof(uint32_t) };
     for (int a = 0; a < A_COUNT; a++)
         n[a] = counts[a], size[a] = bytes[a];
-    /* The runtime's: the levels' vertices, the static levels' records and
-     * the control points shared (a surface's stored one named instead),
+    /* The runtime's: the levels' vertices, the static levels' records, the
+     * patches' domains and control points shared (a surface's stored one
+     * named instead),
      * and what the walk never reads (the seam edges, the patches'
      * adjacency) left out; the tools' name no stored surface. */
     if (runtime)
         n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0, n[A_CONTROL] = 0, n[A_EDGES] = 0,
-        n[A_ADJACENCY] = 0, n[A_LEVEL_RECORDS] = 0, n[A_SURFACE_LEVELS] = 0;
+        n[A_ADJACENCY] = 0, n[A_LEVEL_RECORDS] = 0, n[A_SURFACE_LEVELS] = 0, n[A_DOMAINS] = 0;
     else
         n[A_STORED_SURFACE] = 0;
 }
@@ -269,6 +270,15 @@ void sw_pack_surface_levels(const sw_pack *pack, uint32_t s, uint32_t *first, ui
     *first = by_surface[at], *end = by_surface[at + 1];
 }
 
+const sw_pack_patch_domain *sw_pack_domain_of(const sw_pack *pack, uint32_t s, uint32_t i)
+{
+    if (!pack->stored_surface)
+        return pack->patch_domains ? &pack->patch_domains[pack->surfaces[s].first_patch + i]
+                                   : NULL;
+    const sw_pack_surface *own = &pack->stored_surfaces[pack->stored_surface[s]];
+    return &pack->stored_domains[own->first_patch + i];
+}
+
 sw_level sw_pack_level(const sw_pack *pack, uint32_t s, uint32_t k)
 {
     sw_level rec = pack->levels.levels[k];
@@ -365,9 +375,10 @@ static void place_model(const sw_pack *pack, placed *d, const sw_pack_prototype 
     sw_pack_move_surfaces(m, &pack->surfaces[p->first[SW_SPACE_SURFACES]],
                           p->count[SW_SPACE_SURFACES],
                           AT(d, A_SURFACES, sw_pack_surface, SW_SPACE_SURFACES));
-    sw_pack_move_patch_domains(m, &pack->patch_domains[p->first[SW_SPACE_PATCHES]],
-                               p->count[SW_SPACE_PATCHES],
-                               AT(d, A_DOMAINS, sw_pack_patch_domain, SW_SPACE_PATCHES));
+    if (!d->runtime)   /* the runtime reads the prototypes': sw_pack_domain_of */
+        sw_pack_move_patch_domains(m, &pack->patch_domains[p->first[SW_SPACE_PATCHES]],
+                                   p->count[SW_SPACE_PATCHES],
+                                   AT(d, A_DOMAINS, sw_pack_patch_domain, SW_SPACE_PATCHES));
 }
 
 static void place_seam(const sw_pack *pack, placed *d, const sw_pack_prototype *p,
@@ -499,13 +510,15 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
     if (d->runtime && pack->surfaces) {
         out->stored_surface = d->a[A_STORED_SURFACE];
         out->stored_surface_levels = pack->levels.surface_levels;
+        out->stored_surfaces = pack->surfaces;
+        out->stored_domains = pack->patch_domains;
     }
     out->adjacency = d->n[A_ADJACENCY] ? d->a[A_ADJACENCY] : NULL;
     uint32_t surfaces = (uint32_t)d->n[A_SURFACES];
     if (pack->surfaces) {
         out->surfaces = d->a[A_SURFACES];
         out->surface_count = surfaces;
-        out->patch_domains = d->a[A_DOMAINS];
+        out->patch_domains = d->runtime ? NULL : d->a[A_DOMAINS];   /* sw_pack_domain_of */
     }
     if (pack->seam_header) {
         const sw_pack_seam *h = d->a[A_SEAM];

@@ -101,7 +101,8 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
  * (the GL thread's model matrix). So are the static levels' records
  * (out->stored_surface names each surface's stored one, whose records
  * sw_pack_surface_levels and sw_pack_level read, scaled as drawn;
- * out->levels.surface_levels is NULL). The patches' control points are shared
+ * out->levels.surface_levels is NULL), and the patches' domains
+ * (sw_pack_domain_of; out->patch_domains is NULL). The patches' control points are shared
  * so too (out->control_local = 1, out->control the pack's own CONTROL,
  * which each patch's first_control indexes): whoever reads them places a
  * patch's with sw_pack_patch_control; the patches' boxes are the placed
@@ -126,6 +127,12 @@ void sw_pack_level_vertices(const sw_pack *pack, uint32_t s, const sw_level *rec
  * its prototype (stored_surface), they are the prototype's surface's
  * stored records, read with sw_pack_level; else the pack's own. */
 void sw_pack_surface_levels(const sw_pack *pack, uint32_t s, uint32_t *first, uint32_t *end);
+
+/* The domain of surface s's patch i (of its patch_count): where pack
+ * shares them (stored_surface), its prototype's surface's stored one
+ * (the same: a domain is parametric); else the pack's own; NULL without
+ * PATCH_DOMAINS. */
+const sw_pack_patch_domain *sw_pack_domain_of(const sw_pack *pack, uint32_t s, uint32_t i);
 
 /* Record k of surface s's levels as drawn: where shared, its error and
  * made_bound scaled by s's part's transform as sw_pack_expand scales them

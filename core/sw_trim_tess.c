@@ -486,11 +486,11 @@ sw_status sw_trim_patches_placed(const sw_pack *pack, uint32_t surface,
     float *control = room->control;
     uint32_t capacity = room->capacity, control_capacity = room->control_capacity;
     *count = 0;
-    if (!pack || !pack->surfaces || !pack->patch_domains || surface >= pack->surface_count)
+    int domains = pack && (pack->patch_domains || pack->stored_domains);
+    if (!pack || !pack->surfaces || !domains || surface >= pack->surface_count)
         return sw_error_set(err, SW_ERR_RANGE, "trim tess: surface %u: the pack has %u surfaces"
                             "%s", (unsigned)surface, pack ? (unsigned)pack->surface_count : 0u,
-                            pack && pack->surfaces && !pack->patch_domains
-                                ? " and no PATCH_DOMAINS" : "");
+                            pack && pack->surfaces && !domains ? " and no PATCH_DOMAINS" : "");
     const sw_pack_surface *s = &pack->surfaces[surface];
     *count = s->patch_count;
     if (s->patch_count > capacity)
@@ -512,7 +512,8 @@ sw_status sw_trim_patches_placed(const sw_pack *pack, uint32_t surface,
         out[i].patch.ctrl = sw_pack_patch_control(pack, p, control ? control + 4 * (size_t)used
                                                                     : NULL);
         used += pack->control_local ? points : 0;
-        memcpy(out[i].domain, pack->patch_domains[p].domain, sizeof out[i].domain);
+        memcpy(out[i].domain, sw_pack_domain_of(pack, surface, i)->domain,
+               sizeof out[i].domain);
     }
     return SW_OK;
 }

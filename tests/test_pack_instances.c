@@ -192,6 +192,15 @@ static void control_placed_as_copied(const sw_pack *shared, const sw_pack *whole
     }
     SW_CHECK_MSG(differ == 0 && moved > 0, "%u of %u patches placed otherwise (%u moved)", differ,
                  shared->meta->patch_count, moved);
+    /* The domains are the prototypes' too, read through the surface. */
+    SW_CHECK(!shared->patch_domains && whole->patch_domains);
+    differ = 0;
+    for (uint32_t s = 0; s < shared->surface_count; s++)
+        for (uint32_t i = 0; i < shared->surfaces[s].patch_count; i++)
+            differ += memcmp(sw_pack_domain_of(shared, s, i)->domain,
+                             whole->patch_domains[whole->surfaces[s].first_patch + i].domain,
+                             sizeof whole->patch_domains[0].domain) != 0;
+    SW_CHECK_MSG(differ == 0, "%u patches' domains differ", differ);
     /* A surface's patches as the walk's maker reads them: from the room,
      * and refused without one (never the prototype's points unplaced). */
     uint32_t s = shared->surfaces[0].patch_count ? 0 : 1, count = 0;

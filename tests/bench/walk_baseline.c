@@ -53,6 +53,7 @@ typedef struct wb_run {
     int egl_up, renderer_up;
     sw_renderer renderer;
     void *block;
+    void *placed_block;        /* a placed pack's scene, every array copied */
     sw_arena arena;
     sw_pack pack;
     sw_box box;
@@ -184,8 +185,20 @@ static int load_pack(wb_run *r, sw_error *err)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes", bytes), 0;
     sw_arena_init(&r->arena, r->block, bytes);
     sw_pack stored;
-    if (sw_pack_load(r->opt.pack_path, &r->arena, &stored, err) != SW_OK ||
-        sw_pack_expand_shared(&stored, &r->arena, &r->pack, err) != SW_OK)
+    if (sw_pack_load(r->opt.pack_path, &r->arena, &stored, err) != SW_OK)
+        return 0;
+    /* The tools' expansion (every placed array copied, as the pack of
+     * copies would hold them), beside the arena: the baseline reads the
+     * patches' domains and masks by patch, which the runtime's shares. */
+    uint64_t counts[SW_SPACE_COUNT] = { 0 };
+    if (stored.instances)
+        sw_pack_placed_counts(stored.prototypes, stored.instances, stored.instance_count, counts);
+    size_t placed = stored.instances ? (size_t)sw_pack_expand_bytes(counts) : 0;
+    if (placed && !(r->placed_block = malloc(placed)))
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "cannot take %zu bytes", placed), 0;
+    sw_arena pa;
+    sw_arena_init(&pa, r->placed_block, placed);
+    if (sw_pack_expand(&stored, &pa, &r->pack, err) != SW_OK)
         return 0;
     if (!r->pack.seam_header || !r->pack.patch_domains || !r->pack.meta->patch_count)
         return sw_error_set(err, SW_ERR_FORMAT, "%s: no patches, or no Seam Graph",
@@ -197,35 +210,25 @@ static int load_pack(wb_run *r, sw_error *err)
     return 1;
 }
 
-/* Every patch as the measure takes it (a placed pack's control points
- * placed, all of them kept), and each surface's sewing offset, as seamwalk
- * measures them at start. */
+/* Every patch as the measure takes it, and each surface's sewing offset,
+ * as seamwalk measures them at start. */
 static int load_patches(wb_run *r, sw_error *err)
 {
     const sw_pack *p = &r->pack;
     const sw_seam_graph *g = &p->seam;
     wb_walk *w = &r->walk;
-    size_t points = 0;
-    for (uint32_t i = 0; p->control_local && i < p->meta->patch_count; i++)
-        points += (size_t)(p->patches[i].degree_u + 1) * (p->patches[i].degree_v + 1);
     w->patches = malloc((p->meta->patch_count + 1) * sizeof *w->patches);
-    w->control = malloc((4 * points + 1) * sizeof *w->control);
     w->surface_first = malloc((g->surface_count + 1) * sizeof *w->surface_first);
     r->sew_offset = malloc((g->surface_count + 1) * sizeof *r->sew_offset);
-    if (!w->patches || !w->control || !w->surface_first || !r->sew_offset)
+    if (!w->patches || !w->surface_first || !r->sew_offset)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "out of memory for the patches"), 0;
-    size_t used = 0;
     for (uint32_t s = 0; s < g->surface_count; s++) {
         const sw_pack_surface *ps = &p->surfaces[s];
         uint32_t count = 0;
         w->surface_first[s] = ps->first_patch;
-        const sw_trim_patch_room room = { w->patches + ps->first_patch, ps->patch_count,
-                                          w->control + 4 * used, (uint32_t)(points - used) };
-        if (sw_trim_patches_placed(p, s, &room, &count, err) != SW_OK)
+        if (sw_trim_patches_from_pack(p, s, w->patches + ps->first_patch, ps->patch_count,
+                                      &count, err) != SW_OK)
             return 0;
-        for (uint32_t i = 0; p->control_local && i < count; i++)
-            used += (size_t)(room.patches[i].patch.degree_u + 1) *
-                    (room.patches[i].patch.degree_v + 1);
         double worst = 0;
         for (uint32_t l = g->surface_loops[s]; l < g->surface_loops[s + 1]; l++)
             worst = fmax(worst, sw_seam_sewing_offset(g, &g->loops[l],
@@ -411,9 +414,9 @@ int main(int argc, char **argv)
                r.opt.glu ? "glu" : "uniform", r.opt.segments, r.opt.tolerance_px, r.frames_run,
                r.opt.every, r.stopped_early, r.glu_skipped, r.failed_max, r.stats.walk_s);
     wb_glu_free(&r.walk);
-    free(r.walk.patches), free(r.walk.control), free(r.walk.surface_first), free(r.sew_offset);
+    free(r.walk.patches), free(r.walk.surface_first), free(r.sew_offset);
     free(r.walk.batch.verts), free(r.walk.batch.uvs), free(r.walk.batch.indices);
-    free(r.keys), free(r.block);
+    free(r.keys), free(r.block), free(r.placed_block);
     if (r.renderer_up)
         sw_renderer_destroy(&r.renderer);
     if (r.egl_up)

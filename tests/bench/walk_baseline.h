@@ -56,8 +56,7 @@ typedef struct wb_walk {
     const float *sew_offset;   /* per surface, as seamwalk measures it */
     float bound_floor;         /* seamwalk's: a tenth of the sewing tolerance */
     double error_px;           /* uniform: the bound the measure scales by; glu: its tolerance */
-    sw_trim_patch *patches;    /* every patch of the pack, as sw_trim_patches_placed */
-    float *control;            /* a placed pack's control points, placed, which they view */
+    sw_trim_patch *patches;    /* every patch of the pack, as sw_trim_patches_from_pack */
     uint32_t *surface_first;   /* surface s's patches start at patches + surface_first[s] */
     uint32_t segments;         /* uniform: S */
     void *glu;                 /* glu: walk_glu.c's state */
