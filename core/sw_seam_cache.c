@@ -13,8 +13,25 @@ size_t sw_seam_cache_arena_bytes(uint32_t surface_count, uint32_t vertices, uint
     return sw_arena_worst_case(((size_t)surface_count + 1) * sizeof(sw_seam_entry), 8) +
            sw_buddy_arena_bytes(vu) + sw_buddy_arena_bytes(iu) +
            sw_arena_worst_case(v * sizeof(sw_vertex), 64) +
-           sw_arena_worst_case(v * 2 * sizeof(float), 64) +
            sw_arena_worst_case(i * sizeof(uint16_t), 64);
+}
+
+size_t sw_seam_cache_uv_bytes(uint32_t vertices)
+{
+    size_t v = (size_t)units_of(vertices, SW_SEAM_CACHE_VERTEX_UNIT) * SW_SEAM_CACHE_VERTEX_UNIT;
+    return sw_arena_worst_case(v * 2 * sizeof(float), 64);
+}
+
+sw_status sw_seam_cache_keep_uvs(sw_seam_cache *c, sw_arena *arena, sw_error *err)
+{
+    if (c->uvs)
+        return SW_OK;
+    c->uvs = sw_arena_alloc(arena, (size_t)c->vertices * 2 * sizeof *c->uvs, 64);
+    if (!c->uvs)
+        return sw_error_set(err, SW_ERR_NO_MEMORY, "tessellation cache: arena too small for "
+                            "the (u, v) of %u vertices, which measuring reads",
+                            (unsigned)c->vertices);
+    return SW_OK;
 }
 
 sw_status sw_seam_cache_init(sw_seam_cache *c, uint32_t surface_count, uint32_t vertices,
@@ -33,9 +50,8 @@ sw_status sw_seam_cache_init(sw_seam_cache *c, uint32_t surface_count, uint32_t 
     c->indices = iu * SW_SEAM_CACHE_INDEX_UNIT;
     c->entries = sw_arena_alloc(arena, ((size_t)surface_count + 1) * sizeof *c->entries, 8);
     c->verts = sw_arena_alloc(arena, (size_t)c->vertices * sizeof *c->verts, 64);
-    c->uvs = sw_arena_alloc(arena, (size_t)c->vertices * 2 * sizeof *c->uvs, 64);
     c->index_data = sw_arena_alloc(arena, (size_t)c->indices * sizeof *c->index_data, 64);
-    if (!c->entries || !c->verts || !c->uvs || !c->index_data)
+    if (!c->entries || !c->verts || !c->index_data)
         return sw_error_set(err, SW_ERR_NO_MEMORY, "tessellation cache: arena too small for "
                             "%u vertices and %u indices", (unsigned)c->vertices,
                             (unsigned)c->indices);

@@ -55,7 +55,8 @@ typedef struct sw_seam_cache {
     uint32_t vertices, indices;  /* pool capacities */
     sw_buddy vertex_pool, index_pool;
     sw_vertex *verts;            /* vertices */
-    float *uvs;                  /* 2 * vertices */
+    float *uvs;                  /* 2 * vertices, or NULL: kept only for measuring
+                                    (sw_seam_cache_keep_uvs) */
     uint16_t *index_data;        /* indices, local to their mesh */
     uint32_t evictions;          /* since init */
 } sw_seam_cache;
@@ -65,6 +66,13 @@ typedef struct sw_seam_cache {
 size_t sw_seam_cache_arena_bytes(uint32_t surface_count, uint32_t vertices, uint32_t indices);
 sw_status sw_seam_cache_init(sw_seam_cache *c, uint32_t surface_count, uint32_t vertices,
                              uint32_t indices, sw_arena *arena, sw_error *err);
+
+/* The meshes' (u, v) beside their vertices, which only measuring reads
+ * (the error of what is drawn, at the parameters it was made for): a walk
+ * that measures keeps them, sw_seam_cache_uv_bytes(vertices) more, taken
+ * from arena; without, the cache's uvs stay NULL and no one writes them. */
+size_t sw_seam_cache_uv_bytes(uint32_t vertices);
+sw_status sw_seam_cache_keep_uvs(sw_seam_cache *c, sw_arena *arena, sw_error *err);
 
 /* Room for surface s's new mesh of n vertices and m indices: its old blocks
  * are given back first, then while it does not fit the least recently drawn

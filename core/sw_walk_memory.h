@@ -18,8 +18,9 @@
 #define SW_WALK_VERTICES 65536u
 #define SW_WALK_INDICES (6u * 65536u)
 
-/* The cache's pools: vertices (16 bytes as drawn, 8 of (u, v)) and six
- * indices a vertex (12 bytes), the same again in GL buffers. They hold the
+/* The cache's pools: vertices (16 bytes as drawn; 8 more of (u, v) in a
+ * walk that measures, counted with its options: sw_seam_cache_keep_uvs)
+ * and six indices a vertex (12 bytes), the same again in GL buffers. They hold the
  * meshes a frame draws, beside them the batch replacing them (a move of
  * the seam front remakes most of what is in view), stand-ins, and meshes
  * out of view kept until the room is needed: 32 vertices a patch, from

@@ -177,7 +177,7 @@ static void test_runtime_bytes_hold_pack_and_walk(const char *seed)
      * start-up scratch (the culling tree's surface list, the normal
      * cones'), which the arena must still have held. */
     SW_CHECK(a.peak <= size);
-    SW_CHECK_MSG(size - a.peak < 16384 && walk > (uint64_t)SW_WALK_CACHE_MIN * 24,
+    SW_CHECK_MSG(size - a.peak < 16384 && walk > (uint64_t)SW_WALK_CACHE_MIN * 16,
                  "arena %zu, peak %zu, walk %llu", size, a.peak, (unsigned long long)walk);
     free(mem);
 }

@@ -40,6 +40,7 @@
 #include "sw_png.h"
 #include "sw_thread_name.h"
 #include "sw_up_axis.h"
+#include "sw_walk_memory.h"
 
 double sw_program_now_s(void)
 {
@@ -82,6 +83,8 @@ static size_t arena_bytes_needed(const sw_program *rt, const sw_pack_header *h,
         bytes += (size_t)sw_pack_arena_bytes(h->total_size);
     if (rt->opt.fill_crossings)
         bytes += sw_seam_fill_arena_bytes(SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES);
+    if (rt->opt.measure_every > 0)   /* the largest cache's (u, v): the header has no more */
+        bytes += sw_seam_cache_uv_bytes(SW_WALK_CACHE_MAX);
     bytes += sw_arena_worst_case(path_bytes + 1, 8) +
              sw_arena_worst_case(path_keys * sizeof(sw_camera_key) + 1, 8);
     return bytes + 4096;
@@ -204,6 +207,8 @@ static sw_status init_seams(sw_program *rt, double *mark_s, sw_error *err)
     if (st == SW_OK && rt->opt.fill_crossings)
         st = sw_seam_fill_init(&rt->fill, SW_SEAM_WALK_VERTICES, SW_SEAM_WALK_INDICES,
                                &rt->arena, err);
+    if (st == SW_OK && rt->opt.measure_every > 0)
+        st = sw_seam_cache_keep_uvs(&rt->seam.cache, &rt->arena, err);
     rt->seam.drawn = &rt->drawn;
     rt->seam.fill = rt->opt.fill_crossings ? &rt->fill : NULL;
     rt->seam.standin_silhouettes = rt->opt.standin_silhouettes;

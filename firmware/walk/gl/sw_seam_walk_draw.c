@@ -17,7 +17,7 @@ static void measure_item(sw_seam_walk *w, const sw_seam_draw_item *it, const sw_
     if (it->part_level)   /* its error is its level's, measured on the host */
         return;
     const sw_seam_mesh mesh = { c->verts + it->first_vertex,
-                                c->uvs + 2 * (size_t)it->first_vertex,
+                                c->uvs ? c->uvs + 2 * (size_t)it->first_vertex : NULL,
                                 c->index_data + it->first_index, it->vertex_count,
                                 it->index_count };
     if (it->standin) {   /* seams as drawn, yes; its error is its level's */
@@ -25,8 +25,8 @@ static void measure_item(sw_seam_walk *w, const sw_seam_draw_item *it, const sw_
             sw_seam_drawn_add_mesh(w->drawn, s, &mesh);
         return;
     }
-    if (sw_trim_patches_placed(w->pack, s, &w->measure, &patch_count, NULL))
-        return;
+    if (!mesh.uvs || sw_trim_patches_placed(w->pack, s, &w->measure, &patch_count, NULL))
+        return;   /* no (u, v) kept: the program keeps them when it measures */
     float offset = sw_seam_walk_sewing_offset(w, s, w->measure_sew_offset, &w->measure);
     const sw_seam_exact exact = { w->measure.patches, patch_count, offset, it->depth,
                                   w->error_px, w->floor[s] };

@@ -272,7 +272,6 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_fronts *fronts,
         return 0;
     }
     sw_vertex *v = c->verts + (size_t)e->vertex_block * SW_SEAM_CACHE_VERTEX_UNIT;
-    float *uv = c->uvs + 2 * (size_t)e->vertex_block * SW_SEAM_CACHE_VERTEX_UNIT;
     uint16_t *out = c->index_data + (size_t)e->index_block * SW_SEAM_CACHE_INDEX_UNIT;
     sw_pack_level_vertices(m->pack, s, rec, (sw_level_vertex *)v);
     memcpy(out, lv->indices + rec->first_index, rec->index_count * sizeof *out);
@@ -290,7 +289,9 @@ int sw_seam_standin_make(sw_seam_standin *m, const sw_seam_fronts *fronts,
         written += strip(m, i, base, ch, period, v, out + written);
         base += m->loop_count[i];
     }
-    for (uint32_t i = 0; i < 2 * n; i++)
+    /* A stand-in has no parameters: measuring, which keeps them, skips it. */
+    float *uv = c->uvs ? c->uvs + 2 * (size_t)e->vertex_block * SW_SEAM_CACHE_VERTEX_UNIT : NULL;
+    for (uint32_t i = 0; uv && i < 2 * n; i++)
         uv[i] = NAN;
     e->vertex_count = n, e->index_count = written;
     e->cracks = cracks;

@@ -135,7 +135,8 @@ static void copy_out(const sw_seam_maker *k, sw_seam_cache *c, const sw_seam_ent
             v->normal[j] = snorm8(k->normals[3 * i + j]);
         v->normal[3] = 0;
     }
-    memcpy(c->uvs + 2 * (size_t)v0, k->uvs, 2 * sizeof(float) * e->vertex_count);
+    if (c->uvs)   /* kept for measuring alone */
+        memcpy(c->uvs + 2 * (size_t)v0, k->uvs, 2 * sizeof(float) * e->vertex_count);
     memcpy(c->index_data + i0, k->indices, sizeof(uint16_t) * e->index_count);
 }
 
