@@ -98,12 +98,13 @@ static void array_sizes(const uint64_t c[SW_SPACE_COUNT], int runtime, uint64_t 
         n[a] = counts[a], size[a] = bytes[a];
     /* The runtime's: the levels' vertices, the static levels' records, the
      * patches' domains and control points shared (a surface's stored one
-     * named instead),
-     * and what the walk never reads (the seam edges, the patches'
-     * adjacency) left out; the tools' name no stored surface. */
+     * named instead), and what the walk never reads (the seam edges, the
+     * patches' adjacency, the super-surfaces) left out; the tools' name no
+     * stored surface. */
     if (runtime)
         n[A_LEVEL_VERTICES] = 0, n[A_PL_VERTICES] = 0, n[A_CONTROL] = 0, n[A_EDGES] = 0,
-        n[A_ADJACENCY] = 0, n[A_LEVEL_RECORDS] = 0, n[A_SURFACE_LEVELS] = 0, n[A_DOMAINS] = 0;
+        n[A_ADJACENCY] = 0, n[A_LEVEL_RECORDS] = 0, n[A_SURFACE_LEVELS] = 0, n[A_DOMAINS] = 0,
+        n[A_SUPERS] = 0, n[A_MEMBERS] = 0, n[A_SUPER_OF] = 0;
     else
         n[A_STORED_SURFACE] = 0;
 }
@@ -432,7 +433,7 @@ static void place_levels(const sw_pack *pack, placed *d, const sw_pack_prototype
                                        SW_SPACE_LEVEL_VERTICES));
     }
     const sw_supers *su = &pack->supers;
-    if (su->supers) {
+    if (su->supers && !d->runtime) {
         sw_pack_move_supers(m, su->supers + p->first[SW_SPACE_SUPERS], p->count[SW_SPACE_SUPERS],
                             AT(d, A_SUPERS, sw_super_surface, SW_SPACE_SUPERS));
         sw_pack_move_indices(m, SW_SPACE_SURFACES, su->members + p->first[SW_SPACE_SUPER_MEMBERS],
@@ -547,12 +548,13 @@ static void fill_view(const sw_pack *pack, const placed *d, sw_pack *out)
                                                    : (uint32_t)d->n[A_LEVEL_VERTICES];
         out->levels.surface_count = surfaces;
     }
-    if (pack->supers.supers) {
+    if (d->runtime)   /* the walk reads no super-surface */
+        out->supers = (sw_supers){ 0 };
+    else if (pack->supers.supers)
         out->supers = (sw_supers){ .supers = d->a[A_SUPERS], .members = d->a[A_MEMBERS],
                                    .super_of = d->a[A_SUPER_OF],
                                    .super_count = (uint32_t)d->n[A_SUPERS],
                                    .surface_count = surfaces };
-    }
     if (pack->part_levels.levels) {
         out->part_levels.levels = d->a[A_PART_LEVELS];
         out->part_levels.piece_levels = d->a[A_PIECE_LEVELS];

@@ -108,8 +108,8 @@ sw_status sw_pack_expand(const sw_pack *pack, sw_arena *arena, sw_pack *out, sw_
  * patch's with sw_pack_patch_control; the patches' boxes are the placed
  * points' and their second-derivative bounds INFINITY (the walk takes
  * none). What the walk never reads is left out:
- * the seam edges and the patches' adjacency (their counts 0, their
- * pointers NULL). A pack without instances is copied as it is, its
+ * the seam edges, the patches' adjacency and the super-surfaces (their
+ * counts 0, their pointers NULL). A pack without instances is copied as it is, its
  * vertices placed already. */
 sw_status sw_pack_expand_shared(const sw_pack *pack, sw_arena *arena, sw_pack *out,
                                 sw_error *err);

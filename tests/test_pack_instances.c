@@ -192,6 +192,9 @@ static void control_placed_as_copied(const sw_pack *shared, const sw_pack *whole
     }
     SW_CHECK_MSG(differ == 0 && moved > 0, "%u of %u patches placed otherwise (%u moved)", differ,
                  shared->meta->patch_count, moved);
+    /* The super-surfaces, which the walk does not read, are left out. */
+    SW_CHECK(whole->supers.super_count > 0 && shared->supers.super_count == 0 &&
+             !shared->supers.supers && !shared->supers.super_of);
     /* The domains are the prototypes' too, read through the surface. */
     SW_CHECK(!shared->patch_domains && whole->patch_domains);
     differ = 0;

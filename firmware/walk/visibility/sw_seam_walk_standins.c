@@ -93,22 +93,16 @@ static float standin_border(const sw_seam_walk *w, uint32_t s, float level_error
 }
 
 /* 1 when a silhouette may cross s from this frame's eye: not every normal
- * of it (its own cone when cone culling made them, else its
- * super-surface's, a bound of every member's) faces the eye over its box. */
+ * of it (its own cone, when cone culling made them) faces the eye over its
+ * box; without cones, every surface may show one. */
 #define SW_STANDIN_FACING_MARGIN_RAD 0.05
 static int may_show_silhouette(const sw_seam_walk *w, uint32_t s)
 {
     if (!w->standin_silhouettes)
         return 0;
-    sw_normal_cone cone = { sw_v3(0, 0, 0), SW_CONE_FULL };
-    const sw_supers *sp = &w->pack->supers;
-    if (w->cones) {
-        cone = w->cones[s];
-    } else if (sp->super_count > 0 && s < sp->surface_count) {
-        const sw_super_surface *c = &sp->supers[sp->super_of[s]];
-        if (c->span < SW_SUPER_SPAN_FULL)
-            cone = (sw_normal_cone){ sw_v3(c->axis[0], c->axis[1], c->axis[2]), c->span };
-    }
+    if (!w->cone_cull)
+        return 1;
+    sw_normal_cone cone = w->cones[s];
     cone.axis = sw_v3_scale(cone.axis, -1.0);   /* facing the eye: its reverse faces away */
     sw_box box = sw_cull_tree_surface_box(&w->cull_tree, s);
     return !sw_normal_cone_back_facing(&cone, &box, w->eye, SW_STANDIN_FACING_MARGIN_RAD);
