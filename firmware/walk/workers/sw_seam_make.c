@@ -78,8 +78,8 @@ static sw_status tessellate(sw_seam_maker *k, uint32_t s, const sw_trim_loops *l
     const sw_trim_tess_options opt = sw_seam_surface_tess_options();
     *capped = 0;
     for (int attempt = 0; attempt < 4; attempt++, bound *= 4.0) {
-        st = sw_trim_tess(k->room.patches, patch_count, loops, bound, &opt, &k->scratch, &out, result,
-                          NULL);
+        st = sw_trim_tess(k->room.patches, patch_count, loops, bound, &opt, &k->scratch, &out,
+                          result, NULL);
         if (st != SW_ERR_RANGE)
             break;
         *capped = 1;
