@@ -2,6 +2,7 @@
 #include "sw_cull_tree.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 /* Deep enough for any tree the median split builds: ceil(log2(2^32)) + 1
@@ -40,24 +41,29 @@ typedef struct builder {
     const uint32_t *roots;            /* their boxes roots_nodes[roots[item]] */
 } builder;
 
+_Static_assert(offsetof(sw_pack_patch, box_max) == offsetof(sw_pack_patch, box_min) +
+                   3 * sizeof(float), "a patch's box corners follow each other");
+_Static_assert(offsetof(sw_cull_node, max) == offsetof(sw_cull_node, min) + 3 * sizeof(float),
+               "a node's box corners follow each other");
+
+/* An item's box: its low corner, its high one 3 floats on (a patch's
+ * box_min then box_max, a node's min then max). */
+static const float *item_corners(const builder *b, uint32_t item)
+{
+    return b->patches ? b->patches[item].box_min : b->roots_nodes[b->roots[item]].min;
+}
+
 static void item_box(const builder *b, uint32_t item, float min[3], float max[3])
 {
-    const float *lo, *hi;
-    if (b->patches) {
-        lo = b->patches[item].box_min, hi = b->patches[item].box_max;
-    } else {
-        const sw_cull_node *n = &b->roots_nodes[b->roots[item]];
-        lo = n->min, hi = n->max;
-    }
-    memcpy(min, lo, 3 * sizeof(float));
-    memcpy(max, hi, 3 * sizeof(float));
+    const float *c = item_corners(b, item);
+    memcpy(min, c, 3 * sizeof(float));
+    memcpy(max, c + 3, 3 * sizeof(float));
 }
 
 static double item_centre(const builder *b, uint32_t item, int axis)
 {
-    float min[3], max[3];
-    item_box(b, item, min, max);
-    return (double)min[axis] + (double)max[axis];
+    const float *c = item_corners(b, item);
+    return (double)c[axis] + (double)c[3 + axis];
 }
 
 /* The widest axis of the items' box centres: the split that halves space
@@ -65,11 +71,13 @@ static double item_centre(const builder *b, uint32_t item, int axis)
 static int widest_axis(const builder *b, const uint32_t *items, uint32_t count)
 {
     double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
-    for (uint32_t i = 0; i < count; i++)
+    for (uint32_t i = 0; i < count; i++) {
+        const float *corners = item_corners(b, items[i]);
         for (int k = 0; k < 3; k++) {
-            double c = item_centre(b, items[i], k);
-            lo[k] = fmin(lo[k], c), hi[k] = fmax(hi[k], c);
+            double c = (double)corners[k] + (double)corners[3 + k];
+            lo[k] = c < lo[k] ? c : lo[k], hi[k] = c > hi[k] ? c : hi[k];
         }
+    }
     int axis = 0;
     for (int k = 1; k < 3; k++)
         if (hi[k] - lo[k] > hi[axis] - lo[axis])
