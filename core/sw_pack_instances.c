@@ -240,8 +240,7 @@ static sw_status take_arrays(placed *d, const uint64_t counts[SW_SPACE_COUNT], s
     return SW_OK;
 }
 
-/* A transform that moves nothing is not applied (the expansion copies). */
-static int moves(const float *t)
+int sw_instance_moves(const float *t)
 {
     int moved = 0;
     for (int k = 0; t && k < 16; k++)
@@ -255,8 +254,8 @@ void sw_pack_level_vertices(const sw_pack *pack, uint32_t s, const sw_level *rec
     const sw_level_vertex *src = pack->levels.vertices + rec->first_vertex;
     const float *t = pack->level_vertices_local
                          ? pack->part_transforms + 16 * (size_t)pack->surfaces[s].part : NULL;
-    const sw_pack_move place = { .transform = moves(t) ? t : NULL,
-                                 .scale = moves(t) ? sw_instance_scale(t) : 1 };
+    const sw_pack_move place = { .transform = sw_instance_moves(t) ? t : NULL,
+                                 .scale = sw_instance_moves(t) ? sw_instance_scale(t) : 1 };
     sw_pack_move_level_vertices(&place, src, rec->vertex_count, out);
 }
 
@@ -286,7 +285,7 @@ sw_level sw_pack_level(const sw_pack *pack, uint32_t s, uint32_t k)
     if (!pack->stored_surface)
         return rec;
     const float *t = pack->part_transforms + 16 * (size_t)pack->surfaces[s].part;
-    if (moves(t)) {   /* sw_pack_move_levels' arithmetic: the same floats */
+    if (sw_instance_moves(t)) {   /* sw_pack_move_levels' arithmetic: the same floats */
         double scale = sw_instance_scale(t);
         rec.error = (float)(rec.error * scale);
         rec.made_bound = (float)(rec.made_bound * scale);
@@ -302,7 +301,7 @@ const float *sw_pack_patch_control(const sw_pack *pack, uint32_t i, float *room)
     if (!pack->control_local)
         return src;
     const float *t = pack->part_transforms + 16 * (size_t)p->part;
-    if (!moves(t))
+    if (!sw_instance_moves(t))
         return src;
     const sw_pack_move place = { .transform = t, .scale = sw_instance_scale(t) };
     sw_pack_move_control(&place, src, (uint32_t)(p->degree_u + 1) * (p->degree_v + 1), room);
@@ -313,7 +312,7 @@ const float *sw_pack_patch_control(const sw_pack *pack, uint32_t i, float *room)
 static sw_pack_move move_for(const sw_pack *pack, const placed *d, const sw_pack_prototype *p,
                              const sw_pack_instance *inst)
 {
-    int moved = moves(inst->transform);
+    int moved = sw_instance_moves(inst->transform);
     sw_pack_move m = { .src_originals = pack->seam.original_count,
                        .dst_originals = (uint32_t)d->n[A_VERTICES] -
                                         (uint32_t)d->n[A_COLLAPSES],

@@ -156,6 +156,10 @@ void sw_instance_part_name(const char *instance, const char *part, char out[56])
  * expansion's arithmetic: doubles, rounded once), and the transform's
  * scale. */
 void sw_instance_place(const float transform[16], const float p[3], float out[3]);
+/* 1 when transform (or NULL: none) moves anything: one that does not is
+ * not applied, the expansion copies (-0.0 stays -0.0), and so must whoever
+ * places as it does. */
+int sw_instance_moves(const float *transform);
 double sw_instance_scale(const float transform[16]);
 
 #endif

@@ -36,12 +36,25 @@ static uint64_t graph_copy_bytes(const sw_seam_graph *g)
            worst((uint64_t)g->surface_count + 1, 4);
 }
 
-/* The per-instance layout's tables. */
-static uint64_t table_bytes(uint64_t parts, uint64_t count, const uint64_t placed[SW_SPACE_COUNT])
+/* The per-instance layout's tables; largest: the most surfaces of a
+ * prototype (the scaled bounds' scratch). */
+static uint64_t table_bytes(uint64_t parts, uint64_t count, const uint64_t placed[SW_SPACE_COUNT],
+                            uint64_t largest)
 {
     return worst(parts, sizeof(sw_seam_part_graph)) + worst(count, sizeof(sw_seam_select)) +
            worst(count, 4) + worst(count, sizeof(double)) + 4 * worst(count + 1, 4) +
-           2 * worst(placed[SW_SPACE_SURFACES], 4) + worst(placed[SW_SPACE_SEAM_ORIGINALS], 4);
+           worst(placed[SW_SPACE_SURFACES], 4) + worst(largest, 4) +
+           worst(placed[SW_SPACE_SEAM_ORIGINALS], 4);
+}
+
+/* The most surfaces of one prototype. */
+static uint32_t largest_surfaces(const sw_pack_prototype *prototypes, uint32_t prototype_count)
+{
+    uint32_t most = 0;
+    for (uint32_t p = 0; p < prototype_count; p++)
+        most = prototypes[p].count[SW_SPACE_SURFACES] > most
+                   ? prototypes[p].count[SW_SPACE_SURFACES] : most;
+    return most;
 }
 
 /* One select over a graph of these counts; SIZE_MAX when they do not fit. */
@@ -82,7 +95,8 @@ static uint64_t per_instance_bytes(const sw_pack_prototype *prototypes, uint32_t
         sw_seam_graph local = part_counts(&prototypes[instances[k].prototype]);
         bytes += sw_seam_select_front_bytes(&local);
     }
-    return bytes + table_bytes(prototype_count, instance_count, placed);
+    return bytes + table_bytes(prototype_count, instance_count, placed,
+                               largest_surfaces(prototypes, prototype_count));
 }
 
 size_t sw_seam_fronts_layout_bytes(const sw_pack_prototype *prototypes,
@@ -127,7 +141,8 @@ static void *take(sw_arena *arena, uint64_t count, size_t size, int *failed)
     return p;
 }
 
-static sw_status take_tables(sw_seam_fronts *f, sw_arena *arena, sw_error *err)
+static sw_status take_tables(sw_seam_fronts *f, const sw_pack *pack, sw_arena *arena,
+                             sw_error *err)
 {
     int failed = 0;
     uint64_t n = f->count;
@@ -146,7 +161,10 @@ static sw_status take_tables(sw_seam_fronts *f, sw_arena *arena, sw_error *err)
         f->first_original = take(arena, n + 1, 4, &failed);
         f->first_created = take(arena, n + 1, 4, &failed);
         f->instance_of = take(arena, f->placed.surface_count, 4, &failed);
-        f->bound = take(arena, f->placed.surface_count, 4, &failed);
+        /* Instances are updated one after another: their scaled bounds
+         * share one prototype's worth. */
+        f->bound = take(arena, largest_surfaces(pack->prototypes, pack->prototype_count), 4,
+                        &failed);
     }
     f->shown = take(arena, f->placed.original_count, 4, &failed);
     return failed ? sw_error_set(err, SW_ERR_NO_MEMORY, "seam fronts: the arena is too small "
@@ -265,7 +283,7 @@ sw_status sw_seam_fronts_init_layout(sw_seam_fronts *f, const sw_pack *pack,
     f->placed = *placed;
     f->part_count = each ? pack->prototype_count : 1;
     f->count = each ? pack->instance_count : 1;
-    sw_status st = take_tables(f, arena, err);
+    sw_status st = take_tables(f, pack, arena, err);
     for (uint32_t p = 0; p < f->part_count && st == SW_OK; p++) {
         sw_seam_part_graph *part = &f->parts[p];
         if (each)
@@ -284,8 +302,8 @@ sw_status sw_seam_fronts_init_layout(sw_seam_fronts *f, const sw_pack *pack,
     if (st == SW_OK)
         st = sw_seam_select_scratch_init(&f->scratch, vertices, collapses, arena, err);
     f->first_surface[0] = f->first_loop[0] = f->first_original[0] = f->first_created[0] = 0;
+    f->instances = each ? pack->instances : NULL;
     for (uint32_t k = 0; k < f->count && st == SW_OK; k++) {
-        f->instances = each ? pack->instances : NULL;
         f->part_of[k] = each ? pack->instances[k].prototype : 0;
         f->scale[k] = each ? sw_instance_scale(pack->instances[k].transform) : 1.0;
         st = start_front(f, k, arena, err);
@@ -303,8 +321,8 @@ sw_status sw_seam_fronts_update(sw_seam_fronts *f, const float *surface_bound,
         const float *bound = surface_bound + a;
         if (f->scale[k] != 1.0) {
             for (uint32_t s = a; s < b; s++)
-                f->bound[s] = (float)(surface_bound[s] / f->scale[k]);
-            bound = f->bound + a;
+                f->bound[s - a] = (float)(surface_bound[s] / f->scale[k]);
+            bound = f->bound;
         }
         sw_seam_update_result r;
         sw_status st = sw_seam_select_update(&f->front[k], bound, 0, &r, err);
@@ -374,6 +392,17 @@ uint32_t sw_seam_fronts_local(const sw_seam_fronts *f, uint32_t k, uint32_t plac
            (placed - f->placed.original_count - f->first_created[k]);
 }
 
+/* Point p of instance k's prototype where the instance places it, as the
+ * expansion places it (a transform that moves nothing copies). */
+static void place(const sw_seam_fronts *f, uint32_t k, const float p[3], float out[3])
+{
+    const float *t = f->instances[k].transform;
+    if (sw_instance_moves(t))
+        sw_instance_place(t, p, out);
+    else
+        memcpy(out, p, 3 * sizeof(float));
+}
+
 int sw_seam_fronts_surface_loops(const sw_seam_fronts *f, uint32_t s, float pin,
                                  const sw_seam_surface_buffers *buf, sw_trim_loops *loops,
                                  uint32_t *outer)
@@ -387,7 +416,7 @@ int sw_seam_fronts_surface_loops(const sw_seam_fronts *f, uint32_t s, float pin,
         sw_trim_point *tp = &buf->points[i];
         float p[3] = { tp->p[0], tp->p[1], tp->p[2] };
         tp->id = sw_seam_fronts_placed(f, k, tp->id);
-        sw_instance_place(f->instances[k].transform, p, tp->p);
+        place(f, k, p, tp->p);
     }
     return 1;
 }
@@ -451,7 +480,7 @@ void sw_seam_fronts_position(const sw_seam_fronts *f, uint32_t v, float out[3])
     }
     uint32_t k;
     const sw_seam_vertex *local = local_vertex(f, v, &k);
-    sw_instance_place(f->instances[k].transform, local->p, out);
+    place(f, k, local->p, out);
 }
 
 float sw_seam_fronts_error(const sw_seam_fronts *f, uint32_t v)
@@ -517,7 +546,7 @@ static void placed_point(const void *ctx, uint32_t i, sw_sewn_point *out)
     const placed_loop *pl = ctx;
     const sw_seam_slot *slot = &pl->g->slots[pl->loop->first_slot + i];
     const sw_seam_vertex *v = &pl->g->vertices[slot->vertex];
-    sw_instance_place(pl->f->instances[pl->k].transform, v->p, out->p);
+    place(pl->f, pl->k, v->p, out->p);
     memcpy(out->uv, slot->uv, sizeof out->uv);
     out->error = (float)(v->error * pl->f->scale[pl->k]);
 }

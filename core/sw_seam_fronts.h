@@ -50,8 +50,9 @@ typedef struct sw_seam_fronts {
     const sw_pack_instance *instances; /* count: where they place the prototypes' graphs
                                       (NULL for one front: the placed graph's own) */
     uint32_t *instance_of;         /* placed surface -> instance (NULL for one front) */
-    float *bound;                  /* placed surfaces: the bounds over the scale (NULL for
-                                      one front) */
+    float *bound;                  /* the largest prototype's surfaces: an instance's bounds
+                                      over its scale while it is updated (NULL for one
+                                      front) */
     uint32_t *shown;               /* placed originals: every front's shown, instance by
                                       instance (front k's from first_original[k]) */
     uint32_t active_count;         /* on all fronts */

@@ -510,6 +510,11 @@ static void test_identity_is_a_copy(void)
                     (size_t)pack.levels.vertex_count * sizeof(sw_level_vertex)) == 0);
     for (uint32_t p = 0; p < pack.meta->patch_count; p++)
         SW_CHECK(memcmp(&placed.patches[p], &pack.patches[p], sizeof(sw_pack_patch)) == 0);
+    /* The fronts per instance copy as the expansion does (a transform that
+     * moves nothing is not applied: -0.0 stays -0.0). */
+    SW_CHECK(!sw_instance_moves(inst[0].transform) && !sw_instance_moves(NULL));
+    uint32_t fronts = 0;
+    SW_CHECK(fronts_against_expanded(&pack, 5, 1, &fronts) == 0 && fronts == 2);
     free(block);
     free(bytes);
 }
