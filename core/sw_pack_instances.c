@@ -303,7 +303,7 @@ const float *sw_pack_patch_control(const sw_pack *pack, uint32_t i, float *room)
     const float *t = pack->part_transforms + 16 * (size_t)p->part;
     if (!sw_instance_moves(t))
         return src;
-    const sw_pack_move place = { .transform = t, .scale = sw_instance_scale(t) };
+    const sw_pack_move place = { .transform = t };   /* points: no length to scale */
     sw_pack_move_control(&place, src, (uint32_t)(p->degree_u + 1) * (p->degree_v + 1), room);
     return room;
 }
