@@ -125,8 +125,9 @@ EOF
 # A cache smaller than the view (--test-cache-vertices, about a third of
 # what the walk draws at most here): the walk raises its bound for room
 # and says so on the summary line; the mutant that never raises it leaves
-# surfaces undrawn, at least twice as many as the walk. (Not yet
-# asserted: no holes with the pressure. It leaves 2-80 in a frame, from
+# surfaces undrawn, at least twice as many as the walk (on the
+# 2,000-patch room: below). (Not yet
+# asserted: no holes with the pressure. It leaves 2-88 in a frame, from
 # run to run as the worker's timing falls, where the mutant leaves
 # 260-313: in the first frames the stand-ins and the batch making their
 # meshes take the whole cache, with nothing out of view to give up.)
@@ -135,9 +136,10 @@ walk small_mutant --workers 1 --sync-work 0 --measure-every 0 --test-cache-verti
   --test-pressure 0
 grep -q "bound raised in [1-9][0-9]* frames" "$work/small.log" ||
   fail "a cache smaller than the view: the bound was not raised: $(head -n 1 "$work/small.log")"
-python3 - "$work/small.json" "$work/small_mutant.json" <<'EOF' || fail "stats, small cache"
+python3 - "$work/small.json" "$work/small_mutant.json" "$patches" <<'EOF' || fail "stats, small cache"
 import json, sys
 s, m = (json.load(open(p))["threads"] for p in sys.argv[1:3])
+patches = int(sys.argv[3])
 print("a cache of 20,000 vertices: bound raised in %d frames, by up to %.2fx; undrawn max %d "
       "(%d without the pressure); %d stand-ins from a coarser level for room"
       % (s["pressure_frames"], s["pressure_max"], s["waiting_surfaces_max"],
@@ -145,9 +147,16 @@ print("a cache of 20,000 vertices: bound raised in %d frames, by up to %.2fx; un
 assert s["pressure_frames"] > 0 and s["pressure_max"] > 1, s
 assert m["pressure_frames"] == 0 and m["pressure_max"] == 1, m
 assert m["waiting_surfaces_max"] > 0, "the mutant's cache held the view: nothing was tested"
-assert 2 * s["waiting_surfaces_max"] <= m["waiting_surfaces_max"], \
-    "the pressure left %d undrawn, the mutant %d" % (s["waiting_surfaces_max"],
-                                                    m["waiting_surfaces_max"])
+# The pressure's gain is judged on the 2,000-patch room, where the cache
+# is a third of the view (the mutant leaves 260-313 undrawn). The
+# sanitizers' 400-patch room is hardly short of room at 20,000 vertices
+# (the mutant leaves 8-82), and beside other tests the slowed worker left
+# the pressure's walk 28 and 46 against the mutant's 12 and 11 in two of
+# six runs: a figure of timing there, not of the pressure.
+if patches >= 2000:
+    assert 2 * s["waiting_surfaces_max"] <= m["waiting_surfaces_max"], \
+        "the pressure left %d undrawn, the mutant %d" % (s["waiting_surfaces_max"],
+                                                        m["waiting_surfaces_max"])
 assert 0 <= s["standins_coarser"] <= s["standins_made"], s
 EOF
 echo "ok: stand-ins"
