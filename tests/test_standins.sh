@@ -129,7 +129,7 @@ EOF
 # 2,000-patch room: below). (Not yet
 # asserted: no holes with the pressure. It leaves 2-88 in a frame, from
 # run to run as the worker's timing falls, where the mutant leaves
-# 260-313: in the first frames the stand-ins and the batch making their
+# 260-316: in the first frames the stand-ins and the batch making their
 # meshes take the whole cache, with nothing out of view to give up.)
 walk small --workers 1 --sync-work 0 --measure-every 0 --test-cache-vertices 20000
 walk small_mutant --workers 1 --sync-work 0 --measure-every 0 --test-cache-vertices 20000 \
